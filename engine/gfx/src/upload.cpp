@@ -1,0 +1,100 @@
+#include "engine/gfx/upload.h"
+
+#include <cstring>
+
+#include "engine/core/error.h"
+#include "engine/gfx/formats.h"
+
+namespace engine::gfx {
+namespace {
+
+VkDeviceSize imageBytes(const Image& image) {
+  const VkExtent3D e = image.extent();
+  return VkDeviceSize{texelBytes(image.format())} * e.width * e.height * e.depth;
+}
+
+VkBufferImageCopy wholeMip0(const Image& image) {
+  VkBufferImageCopy region{};
+  region.imageSubresource = {aspectMask(image.format()) & ~VkImageAspectFlags{VK_IMAGE_ASPECT_STENCIL_BIT}, 0, 0, 1};
+  region.imageExtent = image.extent();
+  return region;
+}
+
+}  // namespace
+
+void uploadToBuffer(Device& device, const Buffer& destination, std::span<const std::byte> data,
+                    VkDeviceSize destinationOffset) {
+  require(destinationOffset + data.size() <= destination.size(), "uploadToBuffer",
+          "data does not fit the destination buffer");
+  if (data.empty()) return;
+  Buffer staging(device, BufferDesc{data.size(), VK_BUFFER_USAGE_TRANSFER_SRC_BIT,
+                                    MemoryUsage::Upload, "staging upload"});
+  std::memcpy(staging.mapped(), data.data(), data.size());
+  device.immediateSubmit([&](VkCommandBuffer cmd) {
+    const VkBufferCopy copy{0, destinationOffset, data.size()};
+    vkCmdCopyBuffer(cmd, staging.vk(), destination.vk(), 1, &copy);
+    bufferBarrier(cmd, destination.vk(), VK_PIPELINE_STAGE_2_TRANSFER_BIT,
+                  VK_ACCESS_2_TRANSFER_WRITE_BIT, VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT,
+                  VK_ACCESS_2_MEMORY_READ_BIT);
+  });
+}
+
+void uploadToImage(Device& device, const Image& destination, std::span<const std::byte> texels,
+                   const ImageState& finalState) {
+  const VkDeviceSize bytes = imageBytes(destination);
+  require(texels.size() == bytes, "uploadToImage '" + destination.desc().debugName + "'",
+          "expected " + std::to_string(bytes) + " bytes, got " + std::to_string(texels.size()));
+  Buffer staging(device, BufferDesc{bytes, VK_BUFFER_USAGE_TRANSFER_SRC_BIT, MemoryUsage::Upload,
+                                    "staging image upload"});
+  std::memcpy(staging.mapped(), texels.data(), texels.size());
+  device.immediateSubmit([&](VkCommandBuffer cmd) {
+    imageBarrier(cmd, destination.vk(), destination.fullRange(), kUndefined, kTransferDst);
+    const VkBufferImageCopy region = wholeMip0(destination);
+    vkCmdCopyBufferToImage(cmd, staging.vk(), destination.vk(),
+                           VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1, &region);
+    imageBarrier(cmd, destination.vk(), destination.fullRange(), kTransferDst, finalState);
+  });
+}
+
+std::vector<std::byte> readbackImage(Device& device, const Image& source,
+                                     const ImageState& currentState) {
+  const VkDeviceSize bytes = imageBytes(source);
+  Buffer staging(device, BufferDesc{bytes, VK_BUFFER_USAGE_TRANSFER_DST_BIT,
+                                    MemoryUsage::Readback, "staging image readback"});
+  device.immediateSubmit([&](VkCommandBuffer cmd) {
+    imageBarrier(cmd, source.vk(), source.fullRange(), currentState, kTransferSrc);
+    const VkBufferImageCopy region = wholeMip0(source);
+    vkCmdCopyImageToBuffer(cmd, source.vk(), VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, staging.vk(),
+                           1, &region);
+    // Back to the caller's layout; an undefined "current" state has no layout to return to.
+    ImageState back = currentState;
+    if (back.layout == VK_IMAGE_LAYOUT_UNDEFINED) back = kTransferSrc;
+    imageBarrier(cmd, source.vk(), source.fullRange(), kTransferSrc, back);
+    bufferBarrier(cmd, staging.vk(), VK_PIPELINE_STAGE_2_TRANSFER_BIT,
+                  VK_ACCESS_2_TRANSFER_WRITE_BIT, VK_PIPELINE_STAGE_2_HOST_BIT,
+                  VK_ACCESS_2_HOST_READ_BIT);
+  });
+  std::vector<std::byte> out(bytes);
+  std::memcpy(out.data(), staging.mapped(), bytes);
+  return out;
+}
+
+std::vector<std::byte> readbackBuffer(Device& device, const Buffer& source) {
+  Buffer staging(device, BufferDesc{source.size(), VK_BUFFER_USAGE_TRANSFER_DST_BIT,
+                                    MemoryUsage::Readback, "staging buffer readback"});
+  device.immediateSubmit([&](VkCommandBuffer cmd) {
+    bufferBarrier(cmd, source.vk(), VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT,
+                  VK_ACCESS_2_MEMORY_WRITE_BIT, VK_PIPELINE_STAGE_2_TRANSFER_BIT,
+                  VK_ACCESS_2_TRANSFER_READ_BIT);
+    const VkBufferCopy copy{0, 0, source.size()};
+    vkCmdCopyBuffer(cmd, source.vk(), staging.vk(), 1, &copy);
+    bufferBarrier(cmd, staging.vk(), VK_PIPELINE_STAGE_2_TRANSFER_BIT,
+                  VK_ACCESS_2_TRANSFER_WRITE_BIT, VK_PIPELINE_STAGE_2_HOST_BIT,
+                  VK_ACCESS_2_HOST_READ_BIT);
+  });
+  std::vector<std::byte> out(source.size());
+  std::memcpy(out.data(), staging.mapped(), out.size());
+  return out;
+}
+
+}  // namespace engine::gfx
