@@ -1,0 +1,38 @@
+#include "options.h"
+
+#include <CLI/CLI.hpp>
+
+namespace sample {
+
+ParseResult parseOptions(int argc, char** argv) {
+  Options options;
+  CLI::App cli{"cloudscape sample: fly over terrain under Nubis-style volumetric clouds"};
+  cli.add_flag("--headless", options.headless,
+               "Render offscreen without a window (the default when no display is available)");
+  cli.add_option("--frames", options.frames, "Frames to render, then exit (0: until closed)")
+      ->check(CLI::Range(0u, 1000000u));
+  std::string captureDir;
+  cli.add_option("--capture", captureDir, "Write captured frames (PNG + EXR) into this folder");
+  cli.add_flag("--capture-all", options.captureEveryFrame,
+               "Capture every frame instead of only the last");
+  cli.add_option("--width", options.width, "Render width in pixels")->check(CLI::Range(16u, 7680u));
+  cli.add_option("--height", options.height, "Render height in pixels")
+      ->check(CLI::Range(16u, 4320u));
+  cli.add_option("--fixed-dt", options.fixedDtSeconds,
+                 "Fixed simulation step in seconds (deterministic runs)")
+      ->check(CLI::Range(0.0, 10.0));
+  cli.add_flag("--validation", options.validation, "Enable Vulkan validation layers");
+  cli.add_option("--device", options.device, "Vulkan device: cpu, gpu or a name substring");
+  bool noVsync = false;
+  cli.add_flag("--no-vsync", noVsync, "Present without waiting for vertical blank");
+  try {
+    cli.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    return ParseResult{std::nullopt, cli.exit(e)};
+  }
+  if (!captureDir.empty()) options.captureDir = captureDir;
+  options.vsync = !noVsync;
+  return ParseResult{options, 0};
+}
+
+}  // namespace sample

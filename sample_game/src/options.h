@@ -1,0 +1,31 @@
+#pragma once
+// The sample's command line.
+#include <cstdint>
+#include <filesystem>
+#include <optional>
+#include <string>
+
+namespace sample {
+
+struct Options {
+  bool headless = false;               // render offscreen, never touch GLFW
+  std::uint32_t frames = 0;            // frames to render; 0 = until the window closes
+  std::optional<std::filesystem::path> captureDir;  // write PNG + EXR captures here
+  bool captureEveryFrame = false;      // every frame instead of only the last
+  std::uint32_t width = 640;
+  std::uint32_t height = 360;
+  double fixedDtSeconds = 0.0;         // > 0: simulation steps by this much per frame
+  bool validation = false;             // Vulkan validation layers (also CLOUDSCAPE_VALIDATION=1)
+  std::string device;                  // "cpu", "gpu" or a device-name substring
+  bool vsync = true;
+};
+
+// Parses argv. Returns the options, or an exit code when parsing ended the run (--help, or an
+// error already printed with the offending option and value).
+struct ParseResult {
+  std::optional<Options> options;
+  int exitCode = 0;
+};
+ParseResult parseOptions(int argc, char** argv);
+
+}  // namespace sample
