@@ -129,6 +129,36 @@ void Image::reset() {
   allocation_ = {};
 }
 
+// --- ImageView ---------------------------------------------------------------------------
+
+ImageView::ImageView(Device& device, const Image& image, const ImageViewDesc& desc)
+    : device_(&device) {
+  VkImageViewCreateInfo info{VK_STRUCTURE_TYPE_IMAGE_VIEW_CREATE_INFO};
+  info.image = image.vk();
+  info.viewType = desc.type;
+  info.format = desc.format == VK_FORMAT_UNDEFINED ? image.format() : desc.format;
+  info.subresourceRange = desc.range;
+  GFX_CHECK(vkCreateImageView(device.vk(), &info, nullptr, &view_));
+  setName(device, view_, desc.debugName.c_str());
+}
+
+ImageView& ImageView::operator=(ImageView&& other) noexcept {
+  if (this != &other) {
+    reset();
+    device_ = std::exchange(other.device_, nullptr);
+    view_ = std::exchange(other.view_, VK_NULL_HANDLE);
+  }
+  return *this;
+}
+
+void ImageView::reset() {
+  if (device_ != nullptr && view_ != VK_NULL_HANDLE) {
+    device_->release(VK_OBJECT_TYPE_IMAGE_VIEW, handleBits(view_));
+  }
+  device_ = nullptr;
+  view_ = VK_NULL_HANDLE;
+}
+
 // --- Sampler -----------------------------------------------------------------------------
 
 Sampler::Sampler(Device& device, const SamplerDesc& desc) : device_(&device) {

@@ -71,4 +71,17 @@ TEST_F(Memory, MovedFromResourcesReleaseNothing) {
   EXPECT_EQ(device().memory().stats().allocationCount, before);
 }
 
+TEST_F(Memory, ExtraViewsOfOneMipAreValid) {
+  Image image(device(), ImageDesc{VK_IMAGE_TYPE_2D, VK_FORMAT_R8G8B8A8_UNORM, {64, 64, 1}, 4, 1,
+                                  VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_STORAGE_BIT,
+                                  "mipped image"});
+  std::vector<ImageView> mips;
+  for (std::uint32_t mip = 0; mip < 4; ++mip) {
+    mips.emplace_back(device(), image,
+                      ImageViewDesc{VK_IMAGE_VIEW_TYPE_2D, VK_FORMAT_UNDEFINED,
+                                    {VK_IMAGE_ASPECT_COLOR_BIT, mip, 1, 0, 1}, "mip view"});
+    EXPECT_NE(mips.back().vk(), VK_NULL_HANDLE);
+  }
+}
+
 }  // namespace

@@ -87,6 +87,33 @@ class Image {
   ImageDesc desc_;
 };
 
+// An extra view of an image (one mip, one layer, another type); the default view comes with
+// the Image. The image must outlive the view.
+struct ImageViewDesc {
+  VkImageViewType type = VK_IMAGE_VIEW_TYPE_2D;
+  VkFormat format = VK_FORMAT_UNDEFINED;  // UNDEFINED: the image's format
+  VkImageSubresourceRange range{};
+  std::string debugName;
+};
+
+class ImageView {
+ public:
+  ImageView() = default;
+  ImageView(Device& device, const Image& image, const ImageViewDesc& desc);
+  ~ImageView() { reset(); }
+  ImageView(ImageView&& other) noexcept { *this = std::move(other); }
+  ImageView& operator=(ImageView&& other) noexcept;
+  ImageView(const ImageView&) = delete;
+  ImageView& operator=(const ImageView&) = delete;
+
+  void reset();
+  VkImageView vk() const { return view_; }
+
+ private:
+  Device* device_ = nullptr;
+  VkImageView view_ = VK_NULL_HANDLE;
+};
+
 struct SamplerDesc {
   VkFilter filter = VK_FILTER_LINEAR;
   VkSamplerMipmapMode mipmapMode = VK_SAMPLER_MIPMAP_MODE_LINEAR;

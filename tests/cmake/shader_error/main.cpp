@@ -1,0 +1,1 @@
+int shaderErrorCheck() { return 0; }
