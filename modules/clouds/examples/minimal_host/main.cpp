@@ -1,0 +1,535 @@
+// clouds minimal host: the smallest complete integration of the clouds module, with raw
+// Vulkan and no engine. It
+//   1. creates its own instance and device (Vulkan 1.3, synchronization2),
+//   2. builds a synthetic scene on the CPU: a ground plane and three tall boxes, as a
+//      reversed-Z depth buffer and a lit HDR colour image, and uploads them,
+//   3. records clouds::Context::dispatch() and composite() into its own command buffer,
+//   4. submits, reads the colour back, tonemaps it and writes a PNG.
+// Usage: clouds_minimal_host [--output FILE.png] [--width W] [--height H] [--validation]
+// With --validation (or CLOUDSCAPE_VALIDATION=1) any validation message makes it exit 3.
+#include <vulkan/vulkan.h>
+
+#include <OpenImageIO/imageio.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <glm/glm.hpp>
+#include <glm/gtc/packing.hpp>
+#include <string>
+#include <vector>
+
+#include "clouds/clouds.h"
+
+namespace {
+
+// --- Errors and validation -------------------------------------------------------------------
+
+void vkCheck(VkResult result, const char* what) {
+  if (result != VK_SUCCESS) {
+    std::fprintf(stderr, "minimal_host: %s failed (VkResult %d)\n", what, static_cast<int>(result));
+    std::exit(1);
+  }
+}
+
+int gValidationMessages = 0;
+
+VKAPI_ATTR VkBool32 VKAPI_CALL onValidation(VkDebugUtilsMessageSeverityFlagBitsEXT,
+                                            VkDebugUtilsMessageTypeFlagsEXT,
+                                            const VkDebugUtilsMessengerCallbackDataEXT* data,
+                                            void*) {
+  ++gValidationMessages;
+  std::fprintf(stderr, "validation: %s\n", data->pMessage);
+  return VK_FALSE;
+}
+
+// --- Vulkan setup ------------------------------------------------------------------------------
+
+struct Gpu {
+  VkInstance instance = VK_NULL_HANDLE;
+  VkDebugUtilsMessengerEXT messenger = VK_NULL_HANDLE;
+  VkPhysicalDevice physical = VK_NULL_HANDLE;
+  VkDevice device = VK_NULL_HANDLE;
+  std::uint32_t queueFamily = 0;
+  VkQueue queue = VK_NULL_HANDLE;
+  VkPhysicalDeviceMemoryProperties memory{};
+};
+
+Gpu createGpu(bool validation) {
+  Gpu gpu;
+  VkApplicationInfo app{VK_STRUCTURE_TYPE_APPLICATION_INFO};
+  app.pApplicationName = "clouds minimal host";
+  app.apiVersion = VK_API_VERSION_1_3;
+  const char* layer = "VK_LAYER_KHRONOS_validation";
+  const char* debugUtils = VK_EXT_DEBUG_UTILS_EXTENSION_NAME;
+  VkInstanceCreateInfo instanceInfo{VK_STRUCTURE_TYPE_INSTANCE_CREATE_INFO};
+  instanceInfo.pApplicationInfo = &app;
+  if (validation) {
+    instanceInfo.enabledLayerCount = 1;
+    instanceInfo.ppEnabledLayerNames = &layer;
+    instanceInfo.enabledExtensionCount = 1;
+    instanceInfo.ppEnabledExtensionNames = &debugUtils;
+  }
+  vkCheck(vkCreateInstance(&instanceInfo, nullptr, &gpu.instance), "vkCreateInstance");
+  if (validation) {
+    VkDebugUtilsMessengerCreateInfoEXT messengerInfo{
+        VK_STRUCTURE_TYPE_DEBUG_UTILS_MESSENGER_CREATE_INFO_EXT};
+    messengerInfo.messageSeverity = VK_DEBUG_UTILS_MESSAGE_SEVERITY_WARNING_BIT_EXT |
+                                    VK_DEBUG_UTILS_MESSAGE_SEVERITY_ERROR_BIT_EXT;
+    messengerInfo.messageType = VK_DEBUG_UTILS_MESSAGE_TYPE_VALIDATION_BIT_EXT |
+                                VK_DEBUG_UTILS_MESSAGE_TYPE_GENERAL_BIT_EXT |
+                                VK_DEBUG_UTILS_MESSAGE_TYPE_PERFORMANCE_BIT_EXT;
+    messengerInfo.pfnUserCallback = &onValidation;
+    auto create = reinterpret_cast<PFN_vkCreateDebugUtilsMessengerEXT>(
+        vkGetInstanceProcAddr(gpu.instance, "vkCreateDebugUtilsMessengerEXT"));
+    vkCheck(create(gpu.instance, &messengerInfo, nullptr, &gpu.messenger), "debug messenger");
+  }
+
+  // Any device with Vulkan 1.3 and a graphics+compute queue; real GPUs first.
+  std::uint32_t count = 0;
+  vkEnumeratePhysicalDevices(gpu.instance, &count, nullptr);
+  std::vector<VkPhysicalDevice> devices(count);
+  vkEnumeratePhysicalDevices(gpu.instance, &count, devices.data());
+  int bestScore = -1;
+  for (VkPhysicalDevice candidate : devices) {
+    VkPhysicalDeviceProperties props{};
+    vkGetPhysicalDeviceProperties(candidate, &props);
+    if (props.apiVersion < VK_API_VERSION_1_3) continue;
+    const int score = props.deviceType == VK_PHYSICAL_DEVICE_TYPE_CPU ? 0 : 1;
+    if (score > bestScore) {
+      bestScore = score;
+      gpu.physical = candidate;
+    }
+  }
+  if (gpu.physical == VK_NULL_HANDLE) {
+    std::fprintf(stderr, "minimal_host: no Vulkan 1.3 device\n");
+    std::exit(1);
+  }
+  std::uint32_t familyCount = 0;
+  vkGetPhysicalDeviceQueueFamilyProperties(gpu.physical, &familyCount, nullptr);
+  std::vector<VkQueueFamilyProperties> families(familyCount);
+  vkGetPhysicalDeviceQueueFamilyProperties(gpu.physical, &familyCount, families.data());
+  for (std::uint32_t i = 0; i < familyCount; ++i) {
+    if ((families[i].queueFlags & (VK_QUEUE_GRAPHICS_BIT | VK_QUEUE_COMPUTE_BIT)) ==
+        (VK_QUEUE_GRAPHICS_BIT | VK_QUEUE_COMPUTE_BIT)) {
+      gpu.queueFamily = i;
+      break;
+    }
+  }
+
+  // The module needs synchronization2 and storage images of extended formats (RG32F).
+  VkPhysicalDeviceVulkan13Features features13{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_3_FEATURES};
+  features13.synchronization2 = VK_TRUE;
+  VkPhysicalDeviceFeatures2 features{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_FEATURES_2};
+  features.pNext = &features13;
+  features.features.shaderStorageImageExtendedFormats = VK_TRUE;
+  const float priority = 1.0f;
+  VkDeviceQueueCreateInfo queueInfo{VK_STRUCTURE_TYPE_DEVICE_QUEUE_CREATE_INFO};
+  queueInfo.queueFamilyIndex = gpu.queueFamily;
+  queueInfo.queueCount = 1;
+  queueInfo.pQueuePriorities = &priority;
+  VkDeviceCreateInfo deviceInfo{VK_STRUCTURE_TYPE_DEVICE_CREATE_INFO};
+  deviceInfo.pNext = &features;
+  deviceInfo.queueCreateInfoCount = 1;
+  deviceInfo.pQueueCreateInfos = &queueInfo;
+  vkCheck(vkCreateDevice(gpu.physical, &deviceInfo, nullptr, &gpu.device), "vkCreateDevice");
+  vkGetDeviceQueue(gpu.device, gpu.queueFamily, 0, &gpu.queue);
+  vkGetPhysicalDeviceMemoryProperties(gpu.physical, &gpu.memory);
+  return gpu;
+}
+
+std::uint32_t memoryType(const Gpu& gpu, std::uint32_t bits, VkMemoryPropertyFlags flags) {
+  for (std::uint32_t i = 0; i < gpu.memory.memoryTypeCount; ++i) {
+    if ((bits & (1u << i)) && (gpu.memory.memoryTypes[i].propertyFlags & flags) == flags) return i;
+  }
+  std::fprintf(stderr, "minimal_host: no suitable memory type\n");
+  std::exit(1);
+}
+
+struct Image {
+  VkImage image = VK_NULL_HANDLE;
+  VkDeviceMemory memory = VK_NULL_HANDLE;
+  VkImageView view = VK_NULL_HANDLE;
+};
+
+Image createImage(const Gpu& gpu, VkFormat format, VkExtent2D extent, VkImageUsageFlags usage,
+                  VkImageAspectFlags aspect) {
+  Image image;
+  VkImageCreateInfo info{VK_STRUCTURE_TYPE_IMAGE_CREATE_INFO};
+  info.imageType = VK_IMAGE_TYPE_2D;
+  info.format = format;
+  info.extent = {extent.width, extent.height, 1};
+  info.mipLevels = 1;
+  info.arrayLayers = 1;
+  info.samples = VK_SAMPLE_COUNT_1_BIT;
+  info.usage = usage;
+  vkCheck(vkCreateImage(gpu.device, &info, nullptr, &image.image), "vkCreateImage");
+  VkMemoryRequirements req{};
+  vkGetImageMemoryRequirements(gpu.device, image.image, &req);
+  VkMemoryAllocateInfo alloc{VK_STRUCTURE_TYPE_MEMORY_ALLOCATE_INFO};
+  alloc.allocationSize = req.size;
+  alloc.memoryTypeIndex = memoryType(gpu, req.memoryTypeBits, VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT);
+  vkCheck(vkAllocateMemory(gpu.device, &alloc, nullptr, &image.memory), "vkAllocateMemory");
+  vkBindImageMemory(gpu.device, image.image, image.memory, 0);
+  VkImageViewCreateInfo viewInfo{VK_STRUCTURE_TYPE_IMAGE_VIEW_CREATE_INFO};
+  viewInfo.image = image.image;
+  viewInfo.viewType = VK_IMAGE_VIEW_TYPE_2D;
+  viewInfo.format = format;
+  viewInfo.subresourceRange = {aspect, 0, 1, 0, 1};
+  vkCheck(vkCreateImageView(gpu.device, &viewInfo, nullptr, &image.view), "vkCreateImageView");
+  return image;
+}
+
+struct HostBuffer {
+  VkBuffer buffer = VK_NULL_HANDLE;
+  VkDeviceMemory memory = VK_NULL_HANDLE;
+  void* mapped = nullptr;
+};
+
+HostBuffer createHostBuffer(const Gpu& gpu, VkDeviceSize size, VkBufferUsageFlags usage) {
+  HostBuffer b;
+  VkBufferCreateInfo info{VK_STRUCTURE_TYPE_BUFFER_CREATE_INFO};
+  info.size = size;
+  info.usage = usage;
+  vkCheck(vkCreateBuffer(gpu.device, &info, nullptr, &b.buffer), "vkCreateBuffer");
+  VkMemoryRequirements req{};
+  vkGetBufferMemoryRequirements(gpu.device, b.buffer, &req);
+  VkMemoryAllocateInfo alloc{VK_STRUCTURE_TYPE_MEMORY_ALLOCATE_INFO};
+  alloc.allocationSize = req.size;
+  alloc.memoryTypeIndex = memoryType(
+      gpu, req.memoryTypeBits,
+      VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT | VK_MEMORY_PROPERTY_HOST_COHERENT_BIT);
+  vkCheck(vkAllocateMemory(gpu.device, &alloc, nullptr, &b.memory), "vkAllocateMemory");
+  vkBindBufferMemory(gpu.device, b.buffer, b.memory, 0);
+  vkMapMemory(gpu.device, b.memory, 0, VK_WHOLE_SIZE, 0, &b.mapped);
+  return b;
+}
+
+void imageBarrier(VkCommandBuffer cmd, VkImage image, VkImageAspectFlags aspect,
+                  VkImageLayout from, VkImageLayout to, VkPipelineStageFlags2 srcStage,
+                  VkAccessFlags2 srcAccess, VkPipelineStageFlags2 dstStage,
+                  VkAccessFlags2 dstAccess) {
+  VkImageMemoryBarrier2 b{VK_STRUCTURE_TYPE_IMAGE_MEMORY_BARRIER_2};
+  b.srcStageMask = srcStage;
+  b.srcAccessMask = srcAccess;
+  b.dstStageMask = dstStage;
+  b.dstAccessMask = dstAccess;
+  b.oldLayout = from;
+  b.newLayout = to;
+  b.srcQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
+  b.dstQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
+  b.image = image;
+  b.subresourceRange = {aspect, 0, 1, 0, 1};
+  VkDependencyInfo dep{VK_STRUCTURE_TYPE_DEPENDENCY_INFO};
+  dep.imageMemoryBarrierCount = 1;
+  dep.pImageMemoryBarriers = &b;
+  vkCmdPipelineBarrier2(cmd, &dep);
+}
+
+// --- The synthetic scene -------------------------------------------------------------------------
+
+struct Camera {
+  glm::vec3 position{0.0f, 250.0f, 0.0f};
+  glm::vec3 forward = glm::normalize(glm::vec3(0.0f, 0.14f, -1.0f));
+  float verticalFov = glm::radians(70.0f);
+  float nearPlane = 0.5f;
+};
+
+glm::mat4 viewMatrix(const Camera& c) {
+  const glm::vec3 r = glm::normalize(glm::cross(c.forward, glm::vec3(0, 1, 0)));
+  const glm::vec3 u = glm::cross(r, c.forward);
+  glm::mat4 v(1.0f);
+  v[0][0] = r.x; v[1][0] = r.y; v[2][0] = r.z;
+  v[0][1] = u.x; v[1][1] = u.y; v[2][1] = u.z;
+  v[0][2] = -c.forward.x; v[1][2] = -c.forward.y; v[2][2] = -c.forward.z;
+  v[3][0] = -glm::dot(r, c.position);
+  v[3][1] = -glm::dot(u, c.position);
+  v[3][2] = glm::dot(c.forward, c.position);
+  return v;
+}
+
+// Reversed-Z, infinite far plane, Vulkan clip space (y down).
+glm::mat4 projectionMatrix(const Camera& c, float aspect) {
+  const float f = 1.0f / std::tan(c.verticalFov * 0.5f);
+  glm::mat4 p(0.0f);
+  p[0][0] = f / aspect;
+  p[1][1] = -f;
+  p[3][2] = c.nearPlane;
+  p[2][3] = -1.0f;
+  return p;
+}
+
+struct Box {
+  glm::vec3 min;
+  glm::vec3 max;
+};
+
+// Ray/box slab test: distance to the entry point or a negative value.
+float hitBox(const glm::vec3& o, const glm::vec3& d, const Box& b) {
+  const glm::vec3 inv = 1.0f / d;
+  const glm::vec3 t0 = (b.min - o) * inv;
+  const glm::vec3 t1 = (b.max - o) * inv;
+  const glm::vec3 lo = glm::min(t0, t1);
+  const glm::vec3 hi = glm::max(t0, t1);
+  const float enter = std::max(std::max(lo.x, lo.y), lo.z);
+  const float exit = std::min(std::min(hi.x, hi.y), hi.z);
+  return exit >= std::max(enter, 0.0f) ? enter : -1.0f;
+}
+
+// Casts every pixel's ray against the ground and the boxes: reversed-Z depth (0 = sky) and a
+// lit HDR colour (a sky gradient where nothing is hit).
+void buildScene(const Camera& camera, VkExtent2D extent, const glm::vec3& sun,
+                std::vector<float>& depth, std::vector<std::uint16_t>& colour) {
+  const Box boxes[] = {{{-700, 0, -3600}, {-100, 1500, -3000}},
+                       {{400, 0, -2600}, {900, 900, -2200}},
+                       {{-2400, 0, -6000}, {-1200, 2600, -5200}}};
+  const glm::mat4 inverseProjection =
+      glm::inverse(projectionMatrix(camera, float(extent.width) / float(extent.height)));
+  const glm::mat3 viewToWorld = glm::transpose(glm::mat3(viewMatrix(camera)));
+  for (std::uint32_t y = 0; y < extent.height; ++y) {
+    for (std::uint32_t x = 0; x < extent.width; ++x) {
+      const glm::vec2 ndc = (glm::vec2(x, y) + 0.5f) / glm::vec2(extent.width, extent.height) * 2.0f - 1.0f;
+      const glm::vec4 v = inverseProjection * glm::vec4(ndc, 1.0f, 1.0f);
+      const glm::vec3 dir = glm::normalize(viewToWorld * (glm::vec3(v) / v.w));
+      float t = dir.y < 0.0f ? -camera.position.y / dir.y : -1.0f;
+      glm::vec3 normal(0, 1, 0);
+      glm::vec3 albedo(0.12f, 0.16f, 0.08f);
+      for (const Box& box : boxes) {
+        const float tb = hitBox(camera.position, dir, box);
+        if (tb > 0.0f && (t < 0.0f || tb < t)) {
+          t = tb;
+          const glm::vec3 p = camera.position + dir * t;
+          const glm::vec3 c = (box.min + box.max) * 0.5f;
+          const glm::vec3 h = (box.max - box.min) * 0.5f;
+          const glm::vec3 q = (p - c) / h;
+          const glm::vec3 a = glm::abs(q);
+          normal = a.x > a.y && a.x > a.z ? glm::vec3(glm::sign(q.x), 0, 0)
+                   : a.y > a.z            ? glm::vec3(0, glm::sign(q.y), 0)
+                                          : glm::vec3(0, 0, glm::sign(q.z));
+          albedo = glm::vec3(0.25f, 0.22f, 0.2f);
+        }
+      }
+      const std::size_t i = std::size_t{y} * extent.width + x;
+      glm::vec3 radiance;
+      if (t > 0.0f) {
+        const float viewZ = t * glm::dot(dir, camera.forward);
+        depth[i] = camera.nearPlane / viewZ;
+        radiance = albedo * (3.0f * std::max(glm::dot(normal, sun), 0.0f) + 0.6f);
+      } else {
+        depth[i] = 0.0f;
+        radiance = glm::mix(glm::vec3(0.9f, 1.0f, 1.15f), glm::vec3(0.25f, 0.45f, 1.0f),
+                            std::sqrt(std::max(dir.y, 0.0f)));
+      }
+      for (std::size_t c = 0; c < 3; ++c) {
+        colour[4 * i + c] = glm::packHalf1x16(radiance[static_cast<int>(c)]);
+      }
+      colour[4 * i + 3] = glm::packHalf1x16(1.0f);
+    }
+  }
+}
+
+bool writePng(const std::string& path, VkExtent2D extent, const std::uint16_t* halves) {
+  std::vector<std::uint8_t> pixels(std::size_t{4} * extent.width * extent.height);
+  for (std::size_t i = 0; i < pixels.size(); ++i) {
+    if (i % 4 == 3) {
+      pixels[i] = 255;
+      continue;
+    }
+    // Exposure, Reinhard and an sRGB-like gamma: enough for a preview.
+    const float hdr = std::max(glm::unpackHalf1x16(halves[i]), 0.0f) * 0.6f;
+    const float ldr = std::pow(hdr / (1.0f + hdr), 1.0f / 2.2f);
+    pixels[i] = static_cast<std::uint8_t>(std::clamp(ldr, 0.0f, 1.0f) * 255.0f + 0.5f);
+  }
+  auto out = OIIO::ImageOutput::create(path);
+  if (!out) return false;
+  OIIO::ImageSpec spec(static_cast<int>(extent.width), static_cast<int>(extent.height), 4,
+                       OIIO::TypeDesc::UINT8);
+  return out->open(path, spec) && out->write_image(OIIO::TypeDesc::UINT8, pixels.data()) &&
+         out->close();
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  std::string outputPath = "clouds_minimal_host.png";
+  VkExtent2D extent{320, 180};
+  const char* env = std::getenv("CLOUDSCAPE_VALIDATION");
+  bool validation = env != nullptr && env[0] != '\0' && env[0] != '0';
+  for (int i = 1; i < argc; ++i) {
+    const std::string arg = argv[i];
+    if (arg == "--output" && i + 1 < argc) {
+      outputPath = argv[++i];
+    } else if (arg == "--width" && i + 1 < argc) {
+      extent.width = static_cast<std::uint32_t>(std::atoi(argv[++i]));
+    } else if (arg == "--height" && i + 1 < argc) {
+      extent.height = static_cast<std::uint32_t>(std::atoi(argv[++i]));
+    } else if (arg == "--validation") {
+      validation = true;
+    } else {
+      std::fprintf(stderr, "usage: %s [--output FILE.png] [--width W] [--height H] [--validation]\n",
+                   argv[0]);
+      return 2;
+    }
+  }
+  if (extent.width < 8 || extent.height < 8 || extent.width > 8192 || extent.height > 8192) {
+    std::fprintf(stderr, "minimal_host: --width/--height must be in [8, 8192]\n");
+    return 2;
+  }
+
+  Gpu gpu = createGpu(validation);
+
+  // The host's images: a reversed-Z depth buffer and an HDR colour image the module composites
+  // into (STORAGE usage, RGBA16F as CreateInfo::compositeColorFormat says).
+  Image depth = createImage(gpu, VK_FORMAT_D32_SFLOAT, extent,
+                            VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT,
+                            VK_IMAGE_ASPECT_DEPTH_BIT);
+  Image colour = createImage(gpu, VK_FORMAT_R16G16B16A16_SFLOAT, extent,
+                             VK_IMAGE_USAGE_STORAGE_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT |
+                                 VK_IMAGE_USAGE_TRANSFER_SRC_BIT,
+                             VK_IMAGE_ASPECT_COLOR_BIT);
+  const std::size_t pixels = std::size_t{extent.width} * extent.height;
+  HostBuffer depthUpload = createHostBuffer(gpu, pixels * 4, VK_BUFFER_USAGE_TRANSFER_SRC_BIT);
+  HostBuffer colourUpload = createHostBuffer(gpu, pixels * 8, VK_BUFFER_USAGE_TRANSFER_SRC_BIT);
+  HostBuffer readback = createHostBuffer(gpu, pixels * 8, VK_BUFFER_USAGE_TRANSFER_DST_BIT);
+
+  Camera camera;
+  const glm::vec3 sun = glm::normalize(glm::vec3(-0.4f, 0.45f, -0.8f));
+  {
+    std::vector<float> depthValues(pixels);
+    std::vector<std::uint16_t> colourValues(pixels * 4);
+    buildScene(camera, extent, sun, depthValues, colourValues);
+    std::memcpy(depthUpload.mapped, depthValues.data(), pixels * 4);
+    std::memcpy(colourUpload.mapped, colourValues.data(), pixels * 8);
+  }
+
+  // The clouds module: created from the host's handles and entry points.
+  clouds::CreateInfo info;
+  info.instance = gpu.instance;
+  info.physicalDevice = gpu.physical;
+  info.device = gpu.device;
+  info.getInstanceProcAddr = vkGetInstanceProcAddr;
+  info.getDeviceProcAddr = vkGetDeviceProcAddr;
+  info.depthFormat = VK_FORMAT_D32_SFLOAT;
+  info.compositeColorFormat = VK_FORMAT_R16G16B16A16_SFLOAT;
+  info.maxRenderExtent = extent;
+  info.maxFramesInFlight = 1;
+  info.reversedZ = true;
+  std::string error;
+  std::unique_ptr<clouds::Context> clouds = clouds::Context::create(info, &error);
+  if (!clouds) {
+    std::fprintf(stderr, "minimal_host: %s\n", error.c_str());
+    return 1;
+  }
+
+  VkCommandPool pool = VK_NULL_HANDLE;
+  VkCommandPoolCreateInfo poolInfo{VK_STRUCTURE_TYPE_COMMAND_POOL_CREATE_INFO};
+  poolInfo.queueFamilyIndex = gpu.queueFamily;
+  vkCheck(vkCreateCommandPool(gpu.device, &poolInfo, nullptr, &pool), "vkCreateCommandPool");
+  VkCommandBuffer cmd = VK_NULL_HANDLE;
+  VkCommandBufferAllocateInfo cmdInfo{VK_STRUCTURE_TYPE_COMMAND_BUFFER_ALLOCATE_INFO};
+  cmdInfo.commandPool = pool;
+  cmdInfo.commandBufferCount = 1;
+  vkCheck(vkAllocateCommandBuffers(gpu.device, &cmdInfo, &cmd), "vkAllocateCommandBuffers");
+  VkCommandBufferBeginInfo begin{VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO};
+  begin.flags = VK_COMMAND_BUFFER_USAGE_ONE_TIME_SUBMIT_BIT;
+  vkBeginCommandBuffer(cmd, &begin);
+
+  // Upload the scene, then hand depth (read-only) and colour (GENERAL) to compute shaders.
+  VkBufferImageCopy region{};
+  region.imageExtent = {extent.width, extent.height, 1};
+  region.imageSubresource = {VK_IMAGE_ASPECT_DEPTH_BIT, 0, 0, 1};
+  imageBarrier(cmd, depth.image, VK_IMAGE_ASPECT_DEPTH_BIT, VK_IMAGE_LAYOUT_UNDEFINED,
+               VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, VK_PIPELINE_STAGE_2_NONE, 0,
+               VK_PIPELINE_STAGE_2_TRANSFER_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT);
+  vkCmdCopyBufferToImage(cmd, depthUpload.buffer, depth.image, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
+                         1, &region);
+  imageBarrier(cmd, depth.image, VK_IMAGE_ASPECT_DEPTH_BIT, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
+               VK_IMAGE_LAYOUT_DEPTH_READ_ONLY_OPTIMAL, VK_PIPELINE_STAGE_2_TRANSFER_BIT,
+               VK_ACCESS_2_TRANSFER_WRITE_BIT, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
+               VK_ACCESS_2_SHADER_SAMPLED_READ_BIT);
+  region.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
+  imageBarrier(cmd, colour.image, VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_UNDEFINED,
+               VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, VK_PIPELINE_STAGE_2_NONE, 0,
+               VK_PIPELINE_STAGE_2_TRANSFER_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT);
+  vkCmdCopyBufferToImage(cmd, colourUpload.buffer, colour.image,
+                         VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1, &region);
+  imageBarrier(cmd, colour.image, VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
+               VK_IMAGE_LAYOUT_GENERAL, VK_PIPELINE_STAGE_2_TRANSFER_BIT,
+               VK_ACCESS_2_TRANSFER_WRITE_BIT, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
+               VK_ACCESS_2_SHADER_STORAGE_READ_BIT | VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT);
+
+  // One frame of clouds over the scene.
+  clouds::FrameInputs inputs;
+  inputs.commandBuffer = cmd;
+  inputs.renderExtent = extent;
+  inputs.depthView = depth.view;
+  inputs.depthLayout = VK_IMAGE_LAYOUT_DEPTH_READ_ONLY_OPTIMAL;
+  inputs.view = viewMatrix(camera);
+  inputs.projection = projectionMatrix(camera, float(extent.width) / float(extent.height));
+  inputs.cameraPosition = glm::dvec3(camera.position);
+  inputs.previousView = inputs.view;
+  inputs.previousProjection = inputs.projection;
+  inputs.previousCameraPosition = inputs.cameraPosition;
+  inputs.sunDirection = sun;
+  inputs.sunIlluminance = glm::vec3(12.0f, 11.5f, 10.5f);
+  inputs.ambientTop = glm::vec3(0.45f, 0.6f, 0.95f);
+  inputs.ambientBottom = glm::vec3(0.3f, 0.32f, 0.35f);
+  inputs.timeSeconds = 0.0;
+  inputs.frameIndex = 0;
+  inputs.reset = true;
+  clouds::Settings settings;  // the defaults: scattered cumulus
+  if (!clouds->dispatch(inputs, settings, &error) ||
+      !clouds->composite(cmd, colour.view, extent, &error)) {
+    std::fprintf(stderr, "minimal_host: %s\n", error.c_str());
+    return 1;
+  }
+
+  imageBarrier(cmd, colour.image, VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_GENERAL,
+               VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
+               VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT, VK_PIPELINE_STAGE_2_TRANSFER_BIT,
+               VK_ACCESS_2_TRANSFER_READ_BIT);
+  vkCmdCopyImageToBuffer(cmd, colour.image, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, readback.buffer,
+                         1, &region);
+  vkEndCommandBuffer(cmd);
+
+  VkFence fence = VK_NULL_HANDLE;
+  VkFenceCreateInfo fenceInfo{VK_STRUCTURE_TYPE_FENCE_CREATE_INFO};
+  vkCreateFence(gpu.device, &fenceInfo, nullptr, &fence);
+  VkSubmitInfo submit{VK_STRUCTURE_TYPE_SUBMIT_INFO};
+  submit.commandBufferCount = 1;
+  submit.pCommandBuffers = &cmd;
+  vkCheck(vkQueueSubmit(gpu.queue, 1, &submit, fence), "vkQueueSubmit");
+  vkCheck(vkWaitForFences(gpu.device, 1, &fence, VK_TRUE, UINT64_MAX), "vkWaitForFences");
+
+  const bool written =
+      writePng(outputPath, extent, static_cast<const std::uint16_t*>(readback.mapped));
+  if (written) std::printf("minimal_host: wrote %s\n", outputPath.c_str());
+
+  // Teardown: the GPU is idle (fence waited), so the module can go first.
+  clouds.reset();
+  vkDestroyFence(gpu.device, fence, nullptr);
+  vkDestroyCommandPool(gpu.device, pool, nullptr);
+  for (HostBuffer* b : {&depthUpload, &colourUpload, &readback}) {
+    vkDestroyBuffer(gpu.device, b->buffer, nullptr);
+    vkFreeMemory(gpu.device, b->memory, nullptr);
+  }
+  for (Image* image : {&depth, &colour}) {
+    vkDestroyImageView(gpu.device, image->view, nullptr);
+    vkDestroyImage(gpu.device, image->image, nullptr);
+    vkFreeMemory(gpu.device, image->memory, nullptr);
+  }
+  vkDestroyDevice(gpu.device, nullptr);
+  if (gpu.messenger != VK_NULL_HANDLE) {
+    auto destroy = reinterpret_cast<PFN_vkDestroyDebugUtilsMessengerEXT>(
+        vkGetInstanceProcAddr(gpu.instance, "vkDestroyDebugUtilsMessengerEXT"));
+    destroy(gpu.instance, gpu.messenger, nullptr);
+  }
+  vkDestroyInstance(gpu.instance, nullptr);
+  if (!written) {
+    std::fprintf(stderr, "minimal_host: cannot write %s\n", outputPath.c_str());
+    return 1;
+  }
+  return gValidationMessages > 0 ? 3 : 0;
+}

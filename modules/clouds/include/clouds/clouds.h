@@ -1,0 +1,222 @@
+#pragma once
+// clouds: Nubis-style real-time volumetric clouds as a drop-in Vulkan module.
+//
+// Shaped like a FidelityFX effect:
+//   1. clouds::Context::create(CreateInfo)       once, with the host's device and formats;
+//   2. context->dispatch(FrameInputs, Settings)  every frame: records compute work into the
+//      host's command buffer (never submits, waits or presents);
+//   3. context->outputs()                        the module's images for the host to read, or
+//      context->composite(...)                   to apply the clouds over a host colour image.
+//
+// Ownership: the host owns the instance, device, queue, command buffers, submission, its depth
+// and colour images. The module owns its pipelines, noise textures, weather map, uniform
+// buffers and output images, and allocates their memory itself (a dozen allocations).
+//
+// Conventions: metres; Y up; right-handed; world directions as unit vectors; the sun direction
+// points towards the sun; Vulkan clip space (y down, depth in [0, 1]), reversed-Z or not per
+// CreateInfo. The cloud layer is a spherical shell around a planet whose centre lies straight
+// below the camera, so the host's world is a flat map with y = altitude above sea level.
+//
+// Requirements: Vulkan 1.3 with synchronization2 and shaderStorageImageExtendedFormats
+// enabled. Thread safety: a Context is used from one thread at a time.
+#include <vulkan/vulkan.h>
+
+#include <cstdint>
+#include <glm/glm.hpp>
+#include <memory>
+#include <string>
+
+namespace clouds {
+
+struct CreateInfo {
+  VkInstance instance = VK_NULL_HANDLE;
+  VkPhysicalDevice physicalDevice = VK_NULL_HANDLE;
+  VkDevice device = VK_NULL_HANDLE;
+  // Entry points: the module loads every function it uses through these, so it works with
+  // any loader setup (static linking, volk, ...).
+  PFN_vkGetInstanceProcAddr getInstanceProcAddr = nullptr;
+  PFN_vkGetDeviceProcAddr getDeviceProcAddr = nullptr;
+
+  // Format of the depth views passed in FrameInputs (sampled with texelFetch).
+  VkFormat depthFormat = VK_FORMAT_D32_SFLOAT;
+  // Format of the colour image composite() writes (needs STORAGE usage); UNDEFINED: no
+  // composite helper. One of R16G16B16A16_SFLOAT, R32G32B32A32_SFLOAT.
+  VkFormat compositeColorFormat = VK_FORMAT_R16G16B16A16_SFLOAT;
+  // The largest FrameInputs::renderExtent that will be used; outputs are allocated for it.
+  VkExtent2D maxRenderExtent{1920, 1080};
+  // Frames the host may have in flight: per-frame descriptors and uniforms are ring-buffered
+  // over this many slots by FrameInputs::frameIndex. The host must have waited for frame
+  // (frameIndex - maxFramesInFlight) before recording frameIndex. [1, 8]
+  std::uint32_t maxFramesInFlight = 2;
+  // Depth convention of the host: reversed-Z means near = 1 and sky/far = 0.
+  bool reversedZ = true;
+  // Seed of the procedural noise textures and weather map (same seed, same clouds).
+  std::uint32_t noiseSeed = 1;
+};
+
+enum class Jitter : std::uint32_t {
+  None = 0,         // every ray starts at the segment start (banding at low step counts)
+  BayerHalton = 1,  // 4x4 Bayer per pixel plus a Halton offset per frame
+};
+
+// Plain settings with defaults; ranges are checked by validateSettings() and dispatch().
+struct Settings {
+  // --- Cloud layer -----------------------------------------------------------------------
+  float layerBottomMetres = 1500.0f;        // [0, 20000] altitude of the cloud base
+  float layerTopMetres = 4000.0f;           // (layerBottom, 30000] altitude of the tops
+  float planetRadiusMetres = 6360000.0f;    // [1e5, 1e8]
+
+  // --- Weather -----------------------------------------------------------------------------
+  float coverage = 0.5f;             // [0, 1] 0 clear sky, 0.5 the weather map as is, 1 overcast
+  float cloudType = 0.75f;           // [0, 1] 0 stratus, 0.5 stratocumulus, 1 cumulus
+  float typeVariation = 0.5f;        // [0, 2] how far the weather map moves the type
+  float densityVariation = 0.3f;     // [0, 1] how far the weather map scales the density
+  float weatherTileMetres = 50000.0f;  // [1000, 1e7] one weather-map tile covers this square
+  float weatherEvolutionPerSecond = 0.0005f;  // [0, 1] rate the procedural weather evolves
+  float weatherUpdateSeconds = 1.0f;  // [0, 3600] regenerate the procedural map this often
+
+  // --- Shape ---------------------------------------------------------------------------
+  float densityMultiplier = 1.0f;     // [0, 1e6] scales the extinction of all clouds
+  float extinctionPerMetre = 0.12f;   // [0, 100] extinction (1/m) at density 1
+  float anvilBias = 0.0f;             // [0, 1] inflates cumulus tops into anvils
+  float shapeTileMetres = 6250.0f;    // [100, 1e7] the low-frequency noise repeats this often
+  float detailTileMetres = 1250.0f;   // [10, 1e6] the high-frequency noise repeats this often
+  float detailErosion = 0.45f;        // [0, 1] how deeply detail noise carves edges
+  float detailDistanceMetres = 30000.0f;  // [0, 1e7] no detail erosion beyond this distance
+  float curlTileMetres = 12500.0f;    // [100, 1e7] the curl noise repeats this often
+  float curlStrengthMetres = 120.0f;  // [0, 10000] swirl of the detail noise at the cloud base
+
+  // --- Wind --------------------------------------------------------------------------------
+  glm::vec2 windDirection{1.0f, 0.0f};    // world (x, z), any non-zero length
+  float windSpeedMetresPerSecond = 10.0f;  // [0, 500] noise scroll; coverage stays put
+  float skewMetres = 500.0f;               // [0, 20000] downwind lean across the layer
+
+  // --- Lighting ----------------------------------------------------------------------------
+  float albedo = 0.99f;                 // [0, 1] single-scattering albedo
+  float phaseForwardG = 0.8f;           // [-1, 1] forward HG lobe (silver lining); clamped 0.99
+  float phaseBackwardG = -0.3f;         // [-1, 1] backward HG lobe
+  float phaseBackwardWeight = 0.3f;     // [0, 1] blend towards the backward lobe
+  bool multipleScattering = true;       // octave approximation of multiple scattering
+  std::uint32_t multipleScatteringOctaves = 4;  // [1, 8]
+  float msExtinctionScale = 0.3f;       // [0, 1] a: extinction factor per octave
+  float msContribution = 0.7f;          // [0, 1] b: energy factor per octave
+  float msEccentricityScale = 0.5f;     // [0, 1] c: phase g factor per octave
+  float inScatterStrength = 1.0f;       // [0, 1] Nubis dark edges and bases (0: off)
+  float inScatterDepthMetres = 60.0f;   // [0, 10000] the coarse cloud over this distance
+                                        //   counts as "dense" for the dark-edge term
+  float ambientOcclusionStrength = 1.0f;  // [0, 1] darkening of ambient inside dense cloud
+  float ambientStrength = 1.0f;         // [0, 100] scales the ambient sky term
+  float sunStrength = 1.0f;             // [0, 100] scales the direct sun term
+
+  // --- Ray-march ---------------------------------------------------------------------------
+  std::uint32_t maxViewSteps = 128;     // [1, 16384] samples along a view ray at most
+  float viewStepMetres = 60.0f;         // [0.5, 10000] step length at the camera
+  float viewStepGrowth = 0.004f;        // [0, 1] extra step length per metre of distance
+  std::uint32_t lightSteps = 6;         // [0, 64] samples towards the sun per cloudy sample
+  float lightConeMetres = 1800.0f;      // [1, 100000] reach of the light samples
+  float lightConeSpread = 0.25f;        // [0, 2] sideways spread of the cone
+  float maxDistanceMetres = 60000.0f;   // [100, 1e7] nothing is marched beyond this
+  float transmittanceCutoff = 0.005f;   // [0, 0.5] early exit below this transmittance
+  bool cheapSampling = true;            // coarse cheap steps in empty space (Nubis switch)
+  float coarseStepFactor = 2.5f;        // [1, 16] coarse step = factor x fine step
+  std::uint32_t emptySamplesToCoarse = 6;  // [1, 1000] empty fine samples before going coarse
+  bool detail = true;                   // high-frequency erosion
+  Jitter jitter = Jitter::BayerHalton;
+};
+
+// Empty when every field is in range, else "Settings.<field> = <value>: <reason>" for the
+// first field at fault.
+std::string validateSettings(const Settings& settings);
+
+// The converged reference mode of the same shader: short steps, many light samples, no
+// coarse sampling and no early exit worth mentioning. Ground truth for accuracy-versus-cost.
+Settings referenceSettings(const Settings& base);
+
+struct FrameInputs {
+  VkCommandBuffer commandBuffer = VK_NULL_HANDLE;
+  VkExtent2D renderExtent{0, 0};  // <= CreateInfo::maxRenderExtent; size of depth and outputs
+
+  // The host's depth buffer (optional). Must be in `depthLayout` (a read-only or GENERAL
+  // layout) with its writes made visible to compute-shader reads before these commands.
+  // Clouds behind geometry are not marched; clouds in front cover it.
+  VkImageView depthView = VK_NULL_HANDLE;
+  VkImageLayout depthLayout = VK_IMAGE_LAYOUT_DEPTH_READ_ONLY_OPTIMAL;
+
+  // Camera: world->view and view->clip as the host renders with them (only the rotation of
+  // `view` is used; the position comes from cameraPosition, in double precision).
+  glm::mat4 view{1.0f};
+  glm::mat4 projection{1.0f};
+  glm::dvec3 cameraPosition{0.0, 0.0, 0.0};  // metres; y = altitude above sea level
+  glm::mat4 previousView{1.0f};              // last frame's, for temporal reuse
+  glm::mat4 previousProjection{1.0f};
+  glm::dvec3 previousCameraPosition{0.0, 0.0, 0.0};
+
+  // Lighting in the host's radiometric units (outputs are in the same units, unclamped HDR).
+  glm::vec3 sunDirection{0.0f, 1.0f, 0.0f};  // unit, towards the sun
+  glm::vec3 sunIlluminance{10.0f};
+  glm::vec3 ambientTop{1.0f};     // sky radiance lighting cloud tops
+  glm::vec3 ambientBottom{0.5f};  // radiance lighting cloud bases
+  // Optional sky radiance as an equirectangular image (u = azimuth, v = 0 at the zenith),
+  // sampled in `skyLayout`; when set it replaces ambientTop/ambientBottom.
+  VkImageView skyView = VK_NULL_HANDLE;
+  VkImageLayout skyLayout = VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL;
+
+  // Optional painted weather map (R coverage, G type, B density; any size, sampled with
+  // bilinear filtering in `weatherLayout`) replacing the procedural one.
+  VkImageView weatherView = VK_NULL_HANDLE;
+  VkImageLayout weatherLayout = VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL;
+
+  double timeSeconds = 0.0;      // drives wind and weather evolution
+  std::uint64_t frameIndex = 0;  // increments by one per frame; picks per-frame slots and jitter
+  bool reset = false;            // camera cut: drop temporal history
+};
+
+struct OutputImage {
+  VkImage image = VK_NULL_HANDLE;
+  VkImageView view = VK_NULL_HANDLE;
+  VkFormat format = VK_FORMAT_UNDEFINED;
+};
+
+// After dispatch() the outputs are in VK_IMAGE_LAYOUT_GENERAL with their writes visible to
+// compute- and fragment-shader reads. Only the renderExtent of the last dispatch is valid.
+struct Outputs {
+  // RGBA16F: rgb in-scattered radiance towards the camera (premultiplied), a transmittance.
+  // Composite: colour = scene * a + rgb.
+  OutputImage radiance;
+  // RG32F: r distance (m) to the first cloud along the pixel's ray, g transmittance-weighted
+  // mean distance (m) of the cloud (for haze blending and reprojection); 0 where no cloud.
+  OutputImage depth;
+  VkExtent2D extent{0, 0};
+};
+
+class Context {
+ public:
+  // Returns nullptr and fills `error` when the device lacks something or creation fails.
+  static std::unique_ptr<Context> create(const CreateInfo& info, std::string* error);
+  // The host must ensure the GPU no longer uses the module's objects (e.g. after
+  // vkDeviceWaitIdle or its frame fences).
+  ~Context();
+  Context(const Context&) = delete;
+  Context& operator=(const Context&) = delete;
+
+  // Records this frame's work: first use also records the noise generation. Returns false and
+  // fills `error` (naming the field) for invalid inputs or settings; nothing is recorded then.
+  bool dispatch(const FrameInputs& inputs, const Settings& settings, std::string* error);
+
+  // Applies the last dispatch's clouds over `color` (format CreateInfo::compositeColorFormat,
+  // STORAGE usage, in VK_IMAGE_LAYOUT_GENERAL, writes visible to compute shaders):
+  // color = color * transmittance + radiance. Records into `commandBuffer`.
+  bool composite(VkCommandBuffer commandBuffer, VkImageView color, VkExtent2D extent,
+                 std::string* error);
+
+  Outputs outputs() const;
+
+  class Impl;
+  Impl& impl() { return *impl_; }  // for the module's own tests and tools
+
+ private:
+  explicit Context(std::unique_ptr<Impl> impl);
+  std::unique_ptr<Impl> impl_;
+};
+
+}  // namespace clouds

@@ -1,0 +1,76 @@
+// The Nubis vertical-profile density model (Schneider 2015/2017, Schneider 2022): a weather
+// map gives coverage, cloud type and a density scale; type picks a height gradient; coverage
+// erodes the low-frequency Perlin-Worley/Worley shape by a remap (an anvil bias inflates it
+// near the top); high-frequency Worley noise erodes the edges, wispy at the base and billowy at
+// the top. All inputs are plain values so GPU and CPU evaluate the same function.
+#ifndef CLOUDS_CLOUD_DENSITY_H
+#define CLOUDS_CLOUD_DENSITY_H
+
+#include "cloud_math.h"
+#include "cloud_types.h"
+
+CLOUDS_SHADER_BEGIN
+
+struct WeatherSample {
+  float coverage;  // [0, 1]: fraction of the sky this column can fill
+  float type;      // 0 stratus, 0.5 stratocumulus, 1 cumulus
+  float density;   // density scale (wetness), [0, 1]
+};
+
+// Height-gradient ramps (up start, up end, down start, down end) as fractions of the layer.
+CLOUDS_INLINE vec4 typeProfile(float type) {
+  const vec4 stratus = vec4(0.0f, 0.06f, 0.16f, 0.28f);
+  const vec4 stratocumulus = vec4(0.02f, 0.16f, 0.42f, 0.62f);
+  const vec4 cumulus = vec4(0.0f, 0.12f, 0.72f, 1.0f);
+  const float t = saturate(type);
+  return t < 0.5f ? mix(stratus, stratocumulus, t * 2.0f)
+                  : mix(stratocumulus, cumulus, t * 2.0f - 1.0f);
+}
+
+// Probability of cloud at `heightFraction` (0 = layer bottom, 1 = top) for a cloud type.
+CLOUDS_INLINE float heightGradient(float heightFraction, float type) {
+  const vec4 r = typeProfile(type);
+  return remapClamped(heightFraction, r.x, r.y, 0.0f, 1.0f) *
+         remapClamped(heightFraction, r.z, r.w, 1.0f, 0.0f);
+}
+
+// Decodes an RGBA8 weather texel under the global settings: coverage = texel + 2 c - 1 (so
+// c = 0 is a clear sky, c = 1 overcast, 0.5 the map as painted), type = settings type moved by
+// the map's variation, density = mix(1, texel density, variation).
+CLOUDS_INLINE WeatherSample decodeWeather(vec4 texel, IN(CloudUniforms) u) {
+  WeatherSample w;
+  w.coverage = saturate(texel.x + 2.0f * u.density.y - 1.0f);
+  w.type = saturate(u.density.z + (texel.y - 0.5f) * u.density.w);
+  w.density = mix(1.0f, saturate(texel.z), saturate(u.shape.w));
+  return w;
+}
+
+// Density from the low-frequency shape noise alone (the "cheap" sample), in [0, 1].
+CLOUDS_INLINE float baseDensity(vec4 shapeNoise, float heightFraction, IN(WeatherSample) w,
+                                float anvilBias) {
+  if (heightFraction < 0.0f || heightFraction > 1.0f) return 0.0f;
+  const float lowFrequencyFbm = dot(vec3(shapeNoise.y, shapeNoise.z, shapeNoise.w),
+                                    vec3(0.625f, 0.25f, 0.125f));
+  float base = remap(shapeNoise.x, lowFrequencyFbm - 1.0f, 1.0f, 0.0f, 1.0f);
+  base *= heightGradient(heightFraction, w.type);
+  // Anvil: raise coverage towards the top of the layer.
+  const float anvilExponent = remapClamped(heightFraction, 0.7f, 0.8f, 1.0f,
+                                           mix(1.0f, 0.5f, saturate(anvilBias)));
+  const float coverage = pow(saturate(w.coverage), anvilExponent);
+  // Coverage as erosion: only noise above (1 - coverage) survives, rescaled.
+  base = remap(base, 1.0f - coverage, 1.0f, 0.0f, 1.0f) * coverage;
+  return saturate(base);
+}
+
+// Erodes a base density by the high-frequency detail noise (wispy low, billowy high).
+CLOUDS_INLINE float erodeDensity(float base, vec4 detailNoise, float heightFraction,
+                                 float erosion) {
+  const float fbm = dot(vec3(detailNoise.x, detailNoise.y, detailNoise.z),
+                        vec3(0.625f, 0.25f, 0.125f));
+  const float modifier = mix(fbm, 1.0f - fbm, saturate(heightFraction * 10.0f));
+  return saturate(remap(base, modifier * erosion, 1.0f, 0.0f, 1.0f));
+}
+
+CLOUDS_SHADER_END
+
+#endif

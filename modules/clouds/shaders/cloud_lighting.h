@@ -1,0 +1,75 @@
+// The Nubis lighting terms (Schneider 2017, 2022), written to stay physically bounded where
+// the tests check physics: light energy = direct scattering + ambient scattering.
+//  - direct: sun illuminance x phase x transmittance towards the sun, with a multiple-
+//    scattering approximation (Wrenninge 2013 octaves: extinction scaled by a^n, contribution
+//    by b^n, eccentricity by c^n) and the in-scatter probability that darkens edges and bases;
+//  - ambient: sky radiance blended from base to top, attenuated inside dense cloud.
+// The art terms (in-scatter probability, ambient occlusion) are strengths in [0, 1], so a
+// white-furnace configuration can switch them off and test the integrator alone.
+#ifndef CLOUDS_CLOUD_LIGHTING_H
+#define CLOUDS_CLOUD_LIGHTING_H
+
+#include "cloud_math.h"
+#include "cloud_types.h"
+
+CLOUDS_SHADER_BEGIN
+
+// Sun light reaching a sample and scattered towards the viewer (1/sr), per unit illuminance.
+CLOUDS_INLINE float directScattering(float lightOpticalDepth, float cosTheta, IN(CloudUniforms) u,
+                                     uint multipleScattering) {
+  const float forwardG = u.phase.x;
+  const float backwardG = u.phase.y;
+  const float blend = u.phase.z;
+  if (multipleScattering == 0u) {
+    return beerLambert(lightOpticalDepth) * dualLobePhase(cosTheta, forwardG, backwardG, blend);
+  }
+  const int octaves = int(clamp(u.multipleScattering.x, 1.0f, 8.0f));
+  const float a = u.multipleScattering.y;
+  const float b = u.multipleScattering.z;
+  const float c = u.multipleScattering.w;
+  float extinctionScale = 1.0f;
+  float contribution = 1.0f;
+  float eccentricity = 1.0f;
+  float sum = 0.0f;
+  for (int n = 0; n < octaves; ++n) {
+    sum += contribution * beerLambert(lightOpticalDepth * extinctionScale) *
+           dualLobePhase(cosTheta, forwardG * eccentricity, backwardG * eccentricity, blend);
+    extinctionScale *= a;
+    contribution *= b;
+    eccentricity *= c;
+  }
+  return sum;
+}
+
+// Nubis 2017 in-scatter probability: few scattering contributors at cloud edges (thin coarse
+// cloud around the sample) and at cloud bases. `localOpticalDepth` is the coarse extinction
+// times a short distance (CloudUniforms.inScatter.x): ~0 at edges, >= 1 inside. In [0, 1].
+CLOUDS_INLINE float inScatterProbability(float localOpticalDepth, float heightFraction) {
+  const float depthProbability =
+      0.05f + pow(saturate(localOpticalDepth), remapClamped(heightFraction, 0.3f, 0.85f, 0.5f, 2.0f));
+  const float verticalProbability =
+      pow(remapClamped(heightFraction, 0.07f, 0.14f, 0.1f, 1.0f), 0.8f);
+  return saturate(depthProbability * verticalProbability);
+}
+
+// Radiance scattered towards the viewer at a sample, per unit scattering coefficient (before
+// the albedo). `coarseDensity` is the low-frequency density in [0, 1], `coarseExtinction` its
+// extinction (1/m).
+CLOUDS_INLINE vec3 sampleRadiance(float lightOpticalDepth, float cosTheta, float coarseDensity,
+                                  float coarseExtinction, float heightFraction,
+                                  IN(CloudUniforms) u, uint multipleScattering) {
+  const float direct = directScattering(lightOpticalDepth, cosTheta, u, multipleScattering);
+  const float localOpticalDepth = coarseExtinction * u.inScatter.x;
+  const float inScatter = mix(1.0f, inScatterProbability(localOpticalDepth, heightFraction),
+                              saturate(u.artistic.x));
+  const vec3 sun = vec3(u.sunIlluminance) * (direct * inScatter * u.artistic.w);
+  const vec3 sky = mix(vec3(u.ambientBottom), vec3(u.ambientTop), saturate(heightFraction));
+  // Nubis 2022 ambient scattering: pow(1 - profile, 0.5) darkens the inside of dense cloud.
+  const float occlusion = sqrt(saturate(1.0f - coarseDensity));
+  const vec3 ambient = sky * (u.artistic.z * mix(1.0f, occlusion, saturate(u.artistic.y)));
+  return sun + ambient;
+}
+
+CLOUDS_SHADER_END
+
+#endif

@@ -1,0 +1,274 @@
+// The cloud ray-march, shared by the GPU march shader and the CPU reference renderer.
+//
+// The layer is a spherical shell around a planet whose centre is always straight below the
+// camera: the world is a flat map (x, z) with y the altitude, and the sky curves away from the
+// viewer, so a frame 100 km from the origin is computed exactly like one at the origin (the
+// host-side offsets into the tiling textures are computed in double precision). The march:
+//  - finds the segment of the view ray inside the shell (camera below, inside or above), stops
+//    at the host's scene depth and at the maximum distance, and skips rays that hit the ground;
+//  - steps with a length that grows with distance (Schneider 2022: near step + growth x t);
+//  - takes coarse steps on cheap low-frequency samples in empty space and steps back into fine
+//    steps with full detail on a hit, returning to coarse steps after a run of empty samples;
+//  - marches towards the sun only where there is cloud (a cone of samples with growing spacing
+//    and no detail), integrates each step energy-conservingly, and exits early once the
+//    transmittance is negligible (renormalising, so no energy is lost).
+// lavapipe executes the body of an `if` whenever it is reached, even when no lane takes it, so
+// data-dependent work sits in loops whose trip count is 0 when there is nothing to do
+// (CLOUDS_WHEN below), and feature toggles arrive as compile-time constants (MarchOptions).
+#ifndef CLOUDS_CLOUD_MARCH_H
+#define CLOUDS_CLOUD_MARCH_H
+
+#include "cloud_density.h"
+#include "cloud_lighting.h"
+#include "cloud_math.h"
+#include "cloud_noise.h"
+#include "cloud_sampling.h"
+
+// Runs the following statement or block only when `condition` holds, as a loop of 0 or 1 trips.
+#define CLOUDS_WHEN(condition) for (int whenOnce_ = 0; whenOnce_ < ((condition) ? 1 : 0); ++whenOnce_)
+
+CLOUDS_SHADER_BEGIN
+
+const float kInfiniteDistance = 1e30f;
+
+struct MarchOptions {
+  uint detail;              // high-frequency erosion
+  uint cheapSampling;       // coarse steps in empty space
+  uint multipleScattering;  // octave approximation
+  uint lightSteps;          // samples towards the sun per cloudy view sample
+};
+
+struct MarchResult {
+  vec3 radiance;         // in-scattered radiance towards the camera (premultiplied)
+  float transmittance;   // of the whole ray through the layer
+  float frontDepth;      // distance (m) to the first cloudy sample; 0 when none
+  float weightedDepth;   // transmittance-weighted mean distance (m) of the cloud; 0 when none
+  float viewSamples;     // density samples taken along the view ray
+  float lightSamples;    // density samples taken towards the sun
+};
+
+// Altitude after travelling `t` along a ray from `altitude` whose cosine with the local up is
+// `cosZenith`. Written as altitude + delta / (sqrt(r0^2 + delta) + r0) to avoid subtracting
+// two planet radii in float.
+CLOUDS_INLINE float altitudeAlongRay(float t, float cosZenith, float altitude, float radius) {
+  const float r0 = radius + altitude;
+  const float delta = t * (t + 2.0f * r0 * cosZenith);
+  return altitude + delta / (sqrt(max(r0 * r0 + delta, 0.0f)) + r0);
+}
+
+// The [start, end) distances of a view ray inside the cloud shell; end <= start when the ray
+// misses it or hits the ground first.
+CLOUDS_INLINE vec2 layerSegment(float altitude, float cosZenith, IN(CloudUniforms) u) {
+  const float radius = u.planet.y;
+  const float bottom = u.planet.z;
+  const float top = u.planet.w;
+  const vec2 ground = raySphere(max(altitude, 0.0f), cosZenith, 0.0f, radius);
+  const float tGround = ground.x > 0.0f ? ground.x : kInfiniteDistance;
+  const vec2 inner = raySphere(altitude, cosZenith, bottom, radius);
+  const vec2 outer = raySphere(altitude, cosZenith, top, radius);
+  float start = 0.0f;
+  float end = 0.0f;
+  if (altitude < bottom) {
+    start = inner.y;  // leaving the inner sphere from inside
+    end = outer.y;
+  } else if (altitude <= top) {
+    start = 0.0f;
+    end = outer.y;
+    if (inner.x > 0.0f) end = min(end, inner.x);  // looking down through the base
+  } else {
+    start = max(outer.x, 0.0f);
+    end = inner.x > 0.0f ? inner.x : outer.y;
+    if (outer.y < 0.0f) end = start;  // the shell is not hit at all
+  }
+  end = min(end, tGround);
+  return vec2(start, end);
+}
+
+CLOUDS_INLINE float viewStepLength(float t, IN(CloudUniforms) u) {
+  return u.march.x + u.march.y * t;
+}
+
+// One cloud-field evaluation at a point given camera-relative (flat) offset and altitude.
+struct FieldSample {
+  float heightFraction;
+  float base;        // low-frequency density in [0, 1]
+  float density;     // final density in [0, 1] (base, eroded by detail when enabled)
+  float sigmaT;      // extinction (1/m)
+  float baseSigmaT;  // extinction of the low-frequency density alone (1/m)
+};
+
+CLOUDS_INLINE vec3 noisePosition(vec3 flatOffset, float altitude, float heightFraction,
+                                 IN(CloudUniforms) u) {
+  // Skew the shape downwind with height (Nubis: clouds lean with the wind as they rise).
+  const vec2 skew = vec2(u.wind.x, u.wind.y) * (u.wind.z * saturate(heightFraction));
+  return vec3(flatOffset.x + skew.x, altitude, flatOffset.z + skew.y);
+}
+
+CLOUDS_INLINE FieldSample sampleField(vec3 flatOffset, float altitude, float distance,
+                                      uint wantDetail, IN(CloudUniforms) u) {
+  FieldSample s;
+  const float bottom = u.planet.z;
+  const float top = u.planet.w;
+  s.heightFraction = (altitude - bottom) / max(top - bottom, 1.0f);
+  s.base = 0.0f;
+  s.density = 0.0f;
+  s.sigmaT = 0.0f;
+  s.baseSigmaT = 0.0f;
+  if (s.heightFraction < 0.0f || s.heightFraction > 1.0f) return s;
+  // Coverage is held still (the weather map is not scrolled); the noise moves with the wind.
+  const vec2 weatherUv = (vec2(u.weather.x, u.weather.y) + vec2(flatOffset.x, flatOffset.z)) /
+                         u.weather.z;
+  const WeatherSample w = decodeWeather(sampleWeather(weatherUv), u);
+  const vec3 p = noisePosition(flatOffset, altitude, s.heightFraction, u);
+  const vec3 shapeUvw = (vec3(u.shapeNoise) + p) / u.shapeNoise.w;
+  s.base = baseDensity(sampleShapeNoise(shapeUvw), s.heightFraction, w, u.shape.x);
+  s.density = s.base;
+  // Detail only where there is a base shape and the sample is near enough to show it.
+  CLOUDS_WHEN(wantDetail != 0u && s.base > 0.0f && distance < u.shape.z) {
+    const vec2 curlUv = (vec2(u.curl.x, u.curl.y) + vec2(p.x, p.z)) / u.curl.z;
+    const vec2 curl = sampleCurl(curlUv) * (u.curl.w * (1.0f - s.heightFraction));
+    const vec3 detailUvw =
+        (vec3(u.detailNoise) + p + vec3(curl.x, 0.0f, curl.y)) / u.detailNoise.w;
+    s.density = erodeDensity(s.base, sampleDetailNoise(detailUvw), s.heightFraction, u.shape.y);
+  }
+  s.sigmaT = s.density * w.density * u.density.x;
+  s.baseSigmaT = s.base * w.density * u.density.x;
+  return s;
+}
+
+// A fixed unit vector per light sample: the cone kernel (deterministic, no arrays).
+CLOUDS_INLINE vec3 coneKernel(uint index) {
+  const vec3 h = hashCell(ivec3(int(index), 17, 29), 977u) * 2.0f - 1.0f;
+  return h / max(length(h), 1e-3f);
+}
+
+// Optical depth towards the sun from a cloudy sample; `steps` samples at distances growing
+// quadratically over the cone length, each spread sideways by the cone kernel.
+CLOUDS_INLINE float lightOpticalDepth(vec3 flatOffset, float altitude, float distance,
+                                      uint steps, IN(CloudUniforms) u, INOUT(float) samples) {
+  const vec3 sun = vec3(u.sunDirection);
+  const float coneLength = u.light.x;
+  const float spread = u.light.y;
+  float tau = 0.0f;
+  for (uint j = 0u; j < steps; ++j) {
+    const float s0 = float(j) / float(steps);
+    const float s1 = float(j + 1u) / float(steps);
+    const float d0 = coneLength * s0 * s0;
+    const float d1 = coneLength * s1 * s1;
+    const float d = 0.5f * (d0 + d1);
+    const vec3 offset = sun * d + coneKernel(j) * (d * spread);
+    // Over a few kilometres the curvature drop (d^2 / 2R, ~0.2 m) is negligible.
+    const FieldSample s =
+        sampleField(flatOffset + vec3(offset.x, 0.0f, offset.z), altitude + offset.y,
+                    distance + d, 0u, u);
+    tau += s.sigmaT * (d1 - d0);
+    samples += 1.0f;
+  }
+  return tau;
+}
+
+// World-space unit direction of the view ray through a pixel centre (pixel units, y down).
+CLOUDS_INLINE vec3 pixelRayDirection(vec2 pixelCentre, vec2 extent, IN(CloudUniforms) u) {
+  const vec2 ndc = pixelCentre / extent * 2.0f - 1.0f;
+  // A point on the near plane: depth 1 with reversed-Z, 0 otherwise; finite either way.
+  const float nearDepth = (u.frame.z & kFlagReversedZ) != 0u ? 1.0f : 0.0f;
+  const vec4 view = u.inverseProjection * vec4(ndc.x, ndc.y, nearDepth, 1.0f);
+  const vec3 direction = vec3(u.viewToWorld * vec4(vec3(view) / view.w, 0.0f));
+  return direction / max(length(direction), 1e-20f);
+}
+
+// Distance along the pixel's ray to the host geometry for a depth-buffer value; the sky
+// (far plane, or depth 0 with reversed-Z) is kInfiniteDistance.
+CLOUDS_INLINE float sceneDistanceFromDepth(float depth, vec2 pixelCentre, vec2 extent,
+                                           IN(CloudUniforms) u) {
+  const bool reversed = (u.frame.z & kFlagReversedZ) != 0u;
+  if ((u.frame.z & kFlagHasDepth) == 0u) return kInfiniteDistance;
+  if (reversed ? depth <= 0.0f : depth >= 1.0f) return kInfiniteDistance;
+  const vec2 ndc = pixelCentre / extent * 2.0f - 1.0f;
+  const vec4 view = u.inverseProjection * vec4(ndc.x, ndc.y, depth, 1.0f);
+  if (abs(view.w) < 1e-30f) return kInfiniteDistance;
+  return length(vec3(view) / view.w);
+}
+
+// Ray-start jitter in [0, 1): a 4x4 Bayer pattern per pixel, moved by a Halton sequence per
+// frame so temporal accumulation sees different offsets.
+CLOUDS_INLINE float rayJitter(uvec2 pixel, uint frameIndex, uint mode) {
+  if (mode == 0u) return 0.5f;
+  return fract(bayer4x4(pixel) + halton(frameIndex % 16u + 1u, 2u));
+}
+
+// Marches one view ray. `rayDirection` is a unit world-space vector (y up), `sceneDistance`
+// the distance to the host's geometry along it (kInfiniteDistance for sky), `jitter` in [0, 1).
+CLOUDS_INLINE MarchResult marchClouds(vec3 rayDirection, float sceneDistance, float jitter,
+                                      IN(CloudUniforms) u, IN(MarchOptions) o) {
+  MarchResult r;
+  r.radiance = vec3(0.0f);
+  r.transmittance = 1.0f;
+  r.frontDepth = 0.0f;
+  r.weightedDepth = 0.0f;
+  r.viewSamples = 0.0f;
+  r.lightSamples = 0.0f;
+
+  const float altitude = u.planet.x;
+  const float cosZenith = rayDirection.y;
+  const vec2 segment = layerSegment(altitude, cosZenith, u);
+  const float start = segment.x;
+  const float end = min(min(segment.y, sceneDistance), u.march.z);
+  const float cosTheta = dot(rayDirection, vec3(u.sunDirection));
+  const float albedo = u.phase.w;
+  const float cutoff = u.march.w;
+  const float coarseFactor = max(u.light.z, 1.0f);
+  const int zeroRunToCoarse = int(u.light.w);
+  const int maxSteps = int(u.frame.y);
+
+  float weightedDepthSum = 0.0f;
+  float t = start;  // boundary of the current step; the sample sits at t + jitter * step
+  bool fine = o.cheapSampling == 0u;
+  int emptyRun = 0;
+  for (int i = 0; i < maxSteps; ++i) {
+    if (t >= end || r.transmittance < cutoff) break;
+    const float stepLength = min(viewStepLength(t, u) * (fine ? 1.0f : coarseFactor), end - t);
+    const float sampleDistance = t + jitter * stepLength;
+    const vec3 flatOffset = rayDirection * sampleDistance;
+    const float sampleAltitude = altitudeAlongRay(sampleDistance, cosZenith, altitude, u.planet.y);
+    const FieldSample field =
+        sampleField(flatOffset, sampleAltitude, sampleDistance, fine ? o.detail : 0u, u);
+    r.viewSamples += 1.0f;
+    if (!fine && field.base > 0.0f) {
+      // A coarse sample found cloud: go back one coarse step and resample it finely.
+      fine = true;
+      emptyRun = 0;
+      continue;
+    }
+    CLOUDS_WHEN(field.sigmaT > 0.0f) {
+      const float tau = lightOpticalDepth(flatOffset, sampleAltitude, sampleDistance,
+                                          o.lightSteps, u, r.lightSamples);
+      const vec3 light = sampleRadiance(tau, cosTheta, field.base, field.baseSigmaT,
+                                        field.heightFraction, u, o.multipleScattering);
+      const float stepTransmittance = beerLambert(field.sigmaT * stepLength);
+      // Energy-conserving step (Hillaire 2016): the scattered light of a homogeneous step is
+      // S (1 - exp(-sigma d)) / sigma with S = albedo sigma L, weighted by the transmittance.
+      const float absorbed = r.transmittance * (1.0f - stepTransmittance);
+      r.radiance += light * (albedo * absorbed);
+      weightedDepthSum += sampleDistance * absorbed;
+      if (r.frontDepth == 0.0f) r.frontDepth = sampleDistance;
+      r.transmittance *= stepTransmittance;
+    }
+    emptyRun = field.sigmaT > 0.0f ? 0 : emptyRun + 1;
+    if (o.cheapSampling != 0u && fine && emptyRun >= zeroRunToCoarse) fine = false;
+    t += stepLength;
+  }
+
+  const float opacity = 1.0f - r.transmittance;
+  if (r.transmittance < cutoff) {
+    // Early exit: extrapolate the remaining light as more of the same and call it opaque.
+    r.radiance /= max(opacity, 1e-6f);
+    r.transmittance = 0.0f;
+  }
+  r.weightedDepth = opacity > 1e-6f ? weightedDepthSum / opacity : 0.0f;
+  return r;
+}
+
+CLOUDS_SHADER_END
+
+#endif

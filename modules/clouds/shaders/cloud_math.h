@@ -1,0 +1,104 @@
+// Cloud-model math shared by the GPU shaders and the CPU reference: remapping, phase
+// functions, transmittance, energy-conserving integration and planet-scale ray/sphere tests.
+// References: Schneider & Vos 2017 (Nubis, remap); Henyey & Greenstein 1941; Hillaire 2016
+// "Physically based sky, atmosphere and cloud rendering in Frostbite" (integration).
+#ifndef CLOUDS_CLOUD_MATH_H
+#define CLOUDS_CLOUD_MATH_H
+
+#include "clouds_interop.h"
+
+CLOUDS_SHADER_BEGIN
+
+const float kPi = 3.14159265358979f;
+// g beyond this makes HG a delta peak whose float evaluation overflows (g = 1 gives 0/0).
+const float kMaxPhaseG = 0.99f;
+
+CLOUDS_INLINE float saturate(float x) { return clamp(x, 0.0f, 1.0f); }
+
+// Maps `value` from [oldMin, oldMax] to [newMin, newMax] (no clamping), as in Nubis. A
+// degenerate source range maps everything to newMin instead of dividing by zero.
+CLOUDS_INLINE float remap(float value, float oldMin, float oldMax, float newMin, float newMax) {
+  const float range = oldMax - oldMin;
+  const float t = abs(range) > 1e-7f ? (value - oldMin) / range : 0.0f;
+  return newMin + t * (newMax - newMin);
+}
+
+CLOUDS_INLINE float remapClamped(float value, float oldMin, float oldMax, float newMin,
+                                 float newMax) {
+  return mix(newMin, newMax, saturate(remap(value, oldMin, oldMax, 0.0f, 1.0f)));
+}
+
+// Henyey-Greenstein phase function, normalised over the sphere (units 1/sr). g is clamped to
+// [-0.99, 0.99] so g = +-1 cannot produce 0/0, and the base is kept positive.
+CLOUDS_INLINE float henyeyGreenstein(float cosTheta, float g) {
+  const float gc = clamp(g, -kMaxPhaseG, kMaxPhaseG);
+  const float c = clamp(cosTheta, -1.0f, 1.0f);
+  const float g2 = gc * gc;
+  const float denominator = max(1.0f + g2 - 2.0f * gc * c, 1e-6f);
+  return (1.0f - g2) / (4.0f * kPi * denominator * sqrt(denominator));
+}
+
+// Two HG lobes blended so the result stays normalised: a strong forward lobe gives the silver
+// lining towards the sun, a weak backward lobe keeps clouds facing away from the sun lit.
+CLOUDS_INLINE float dualLobePhase(float cosTheta, float forwardG, float backwardG, float blend) {
+  const float w = saturate(blend);
+  return mix(henyeyGreenstein(cosTheta, forwardG), henyeyGreenstein(cosTheta, backwardG), w);
+}
+
+// Beer-Lambert transmittance for an optical depth (>= 0). exp(-x) of a huge x is 0, never NaN.
+CLOUDS_INLINE float beerLambert(float opticalDepth) { return exp(-max(opticalDepth, 0.0f)); }
+
+// (1 - exp(-sigma * d)) / sigma, the in-scattering weight of a homogeneous step of length d
+// (Hillaire 2016), written so sigma = 0 gives d instead of 0/0.
+CLOUDS_INLINE float stepScatteringWeight(float sigmaT, float stepLength) {
+  const float x = max(sigmaT, 0.0f) * stepLength;
+  if (x < 1e-4f) return stepLength * (1.0f - 0.5f * x);
+  return (1.0f - exp(-x)) / max(sigmaT, 1e-30f);
+}
+
+// Distance along a unit ray from a point at `altitude` above a planet of radius `radius` to
+// the sphere at `sphereAltitude` (both altitudes above the planet surface), given the cosine
+// of the ray with the local up. The altitude-difference form keeps float precision at planet
+// scale (a textbook |o - c|^2 - r^2 loses metres near the horizon). Returns the near and far
+// roots in x and y; y < 0 when the sphere is not hit at all (x = y = -1).
+CLOUDS_INLINE vec2 raySphere(float altitude, float cosZenith, float sphereAltitude, float radius) {
+  const float distanceToCentre = radius + altitude;
+  const float b = distanceToCentre * cosZenith;  // dot(origin - centre, direction)
+  // c = |origin - centre|^2 - r^2, from the altitude difference.
+  const float c = (altitude - sphereAltitude) * (2.0f * radius + altitude + sphereAltitude);
+  const float discriminant = b * b - c;
+  if (discriminant < 0.0f) return vec2(-1.0f, -1.0f);
+  const float s = sqrt(discriminant);
+  // Stable roots: q has the sign of -b so no cancellation; t0 * t1 = c.
+  const float q = b > 0.0f ? -(b + s) : (s - b);
+  const float t0 = q;
+  const float t1 = abs(q) > 1e-30f ? c / q : 0.0f;
+  return vec2(min(t0, t1), max(t0, t1));
+}
+
+// Halton radical inverse, base 2 or 3 (jitter sequences).
+CLOUDS_INLINE float halton(uint index, uint base) {
+  float f = 1.0f;
+  float result = 0.0f;
+  uint i = index;
+  for (int k = 0; k < 16 && i > 0u; ++k) {
+    f /= float(base);
+    result += f * float(i % base);
+    i /= base;
+  }
+  return result;
+}
+
+// 4x4 Bayer threshold in [0, 1) for a pixel.
+CLOUDS_INLINE float bayer4x4(uvec2 pixel) {
+  const uint x = pixel.x & 3u;
+  const uint y = pixel.y & 3u;
+  // Interleave the bits of x ^ y and y: the classic recursive Bayer construction.
+  const uint v = x ^ y;
+  const uint index = ((v & 1u) << 3u) | ((y & 1u) << 2u) | ((v & 2u) >> 0u) | ((y & 2u) >> 1u);
+  return (float(index) + 0.5f) / 16.0f;
+}
+
+CLOUDS_SHADER_END
+
+#endif

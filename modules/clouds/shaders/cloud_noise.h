@@ -1,0 +1,146 @@
+// Tileable procedural noise for the cloud textures, deterministic from a seed: integer hashing,
+// periodic gradient (Perlin) noise, periodic cellular (Worley) noise on a stratified grid, and
+// their fractal sums. "Periodic" means the noise repeats every `period` lattice cells, so the
+// textures tile. References: Perlin 2002 (improved noise fade); Worley 1996; Schneider 2015/2017
+// (Perlin-Worley); Jarzynski & Olano 2020 (pcg3d hash).
+#ifndef CLOUDS_CLOUD_NOISE_H
+#define CLOUDS_CLOUD_NOISE_H
+
+#include "cloud_math.h"
+
+CLOUDS_SHADER_BEGIN
+
+CLOUDS_INLINE uvec3 pcg3d(uvec3 v) {
+  v = v * 1664525u + 1013904223u;
+  v.x += v.y * v.z;
+  v.y += v.z * v.x;
+  v.z += v.x * v.y;
+  v ^= v >> 16u;
+  v.x += v.y * v.z;
+  v.y += v.z * v.x;
+  v.z += v.x * v.y;
+  return v;
+}
+
+// Three uniform values in [0, 1) for an integer lattice cell and a seed.
+CLOUDS_INLINE vec3 hashCell(ivec3 cell, uint seed) {
+  const uvec3 h = pcg3d(uvec3(cell) + uvec3(seed, seed * 7919u, seed * 104729u));
+  return vec3(h >> 8u) * (1.0f / 16777216.0f);
+}
+
+// Wraps a lattice coordinate into [0, period); valid for coordinates >= -period.
+CLOUDS_INLINE ivec3 wrapCell(ivec3 cell, int period) { return (cell + ivec3(period)) % period; }
+
+CLOUDS_INLINE float fade(float t) { return t * t * t * (t * (t * 6.0f - 15.0f) + 10.0f); }
+
+CLOUDS_INLINE float gradientDot(ivec3 cell, vec3 offset, int period, uint seed) {
+  const vec3 g = hashCell(wrapCell(cell, period), seed) * 2.0f - 1.0f;
+  return dot(g, offset);
+}
+
+// Periodic gradient noise, period `period` cells, p in cell units (>= 0). Output about [-1, 1].
+CLOUDS_INLINE float perlinNoise(vec3 p, int period, uint seed) {
+  const vec3 cellFloor = floor(p);
+  const ivec3 i = ivec3(cellFloor);
+  const vec3 f = p - cellFloor;
+  const float n000 = gradientDot(i + ivec3(0, 0, 0), f - vec3(0.0f, 0.0f, 0.0f), period, seed);
+  const float n100 = gradientDot(i + ivec3(1, 0, 0), f - vec3(1.0f, 0.0f, 0.0f), period, seed);
+  const float n010 = gradientDot(i + ivec3(0, 1, 0), f - vec3(0.0f, 1.0f, 0.0f), period, seed);
+  const float n110 = gradientDot(i + ivec3(1, 1, 0), f - vec3(1.0f, 1.0f, 0.0f), period, seed);
+  const float n001 = gradientDot(i + ivec3(0, 0, 1), f - vec3(0.0f, 0.0f, 1.0f), period, seed);
+  const float n101 = gradientDot(i + ivec3(1, 0, 1), f - vec3(1.0f, 0.0f, 1.0f), period, seed);
+  const float n011 = gradientDot(i + ivec3(0, 1, 1), f - vec3(0.0f, 1.0f, 1.0f), period, seed);
+  const float n111 = gradientDot(i + ivec3(1, 1, 1), f - vec3(1.0f, 1.0f, 1.0f), period, seed);
+  const vec3 u = vec3(fade(f.x), fade(f.y), fade(f.z));
+  const float x00 = mix(n000, n100, u.x);
+  const float x10 = mix(n010, n110, u.x);
+  const float x01 = mix(n001, n101, u.x);
+  const float x11 = mix(n011, n111, u.x);
+  return mix(mix(x00, x10, u.y), mix(x01, x11, u.y), u.z) * 1.5f;
+}
+
+// Fractal sum of `octaves` periodic Perlin octaves starting at `period` cells over the tile;
+// `uvw` in [0, 1) tile units. Output in [0, 1].
+CLOUDS_INLINE float perlinFbm(vec3 uvw, int period, int octaves, uint seed) {
+  float sum = 0.0f;
+  float amplitude = 1.0f;
+  float total = 0.0f;
+  int p = period;
+  for (int o = 0; o < octaves; ++o) {
+    sum += amplitude * perlinNoise(uvw * float(p), p, seed + uint(o) * 31u);
+    total += amplitude;
+    amplitude *= 0.5f;
+    p *= 2;
+  }
+  return saturate(sum / total * 0.5f + 0.5f);
+}
+
+// Periodic cellular noise with one feature point per cell (stratified, so only the 27
+// neighbouring cells can hold the nearest point). Returns 1 - F1 in [0, 1] (inverted: cloud
+// "puffs" are bright), with F1 in cell units.
+CLOUDS_INLINE float worleyNoise(vec3 uvw, int cells, uint seed) {
+  const vec3 p = uvw * float(cells);
+  const vec3 cellFloor = floor(p);
+  const ivec3 base = ivec3(cellFloor);
+  const vec3 f = p - cellFloor;
+  float nearest = 1e9f;
+  for (int z = -1; z <= 1; ++z) {
+    for (int y = -1; y <= 1; ++y) {
+      for (int x = -1; x <= 1; ++x) {
+        const ivec3 offset = ivec3(x, y, z);
+        const vec3 feature = vec3(offset) + hashCell(wrapCell(base + offset, cells), seed);
+        const vec3 d = feature - f;
+        nearest = min(nearest, dot(d, d));
+      }
+    }
+  }
+  return saturate(1.0f - sqrt(nearest));
+}
+
+// Worley fBm over three octaves (cells, 2 cells, 4 cells) with Nubis' 0.625 / 0.25 / 0.125.
+CLOUDS_INLINE float worleyFbm(vec3 uvw, int cells, uint seed) {
+  return worleyNoise(uvw, cells, seed) * 0.625f + worleyNoise(uvw, cells * 2, seed + 1u) * 0.25f +
+         worleyNoise(uvw, cells * 4, seed + 2u) * 0.125f;
+}
+
+// Low-frequency shape texel (128^3 texture): R Perlin-Worley, G/B/A Worley fBm at increasing
+// frequency. Perlin-Worley as in Schneider 2017, remap(perlin, 1 - worley, 1, 0, 1): the web
+// of Worley cells is subtracted from the low regions of connected Perlin noise, leaving round
+// shapes. (The dilating form of Hillaire's generator, remap(perlin, 0, 1, worley, 1), leaves
+// so little empty space that coverage 0.5 is already overcast.)
+CLOUDS_INLINE vec4 lowFrequencyNoiseTexel(vec3 uvw, uint seed) {
+  const float perlin = perlinFbm(uvw, 4, 3, seed);
+  const float worley4 = worleyNoise(uvw, 4, seed + 10u);
+  const float worley8 = worleyNoise(uvw, 8, seed + 11u);
+  const float worley16 = worleyNoise(uvw, 16, seed + 12u);
+  const float worley32 = worleyNoise(uvw, 32, seed + 13u);
+  const float worley64 = worleyNoise(uvw, 64, seed + 14u);
+  const float fbm4 = worley4 * 0.625f + worley8 * 0.25f + worley16 * 0.125f;
+  const float fbm8 = worley8 * 0.625f + worley16 * 0.25f + worley32 * 0.125f;
+  const float fbm16 = worley16 * 0.625f + worley32 * 0.25f + worley64 * 0.125f;
+  const float perlinWorley = saturate(remap(perlin, 1.0f - fbm4, 1.0f, 0.0f, 1.0f));
+  return vec4(perlinWorley, fbm4, fbm8, fbm16);
+}
+
+// High-frequency detail texel (32^3 texture): Worley fBm at three frequencies; A unused (1).
+CLOUDS_INLINE vec4 highFrequencyNoiseTexel(vec3 uvw, uint seed) {
+  return vec4(worleyFbm(uvw, 2, seed + 20u), worleyFbm(uvw, 4, seed + 23u),
+              worleyFbm(uvw, 8, seed + 26u), 1.0f);
+}
+
+// Curl of a periodic 2D potential (Perlin fBm), by central differences; unit-range output
+// encoded as 0.5 + 0.5 * curl in RG. Used to swirl the detail noise.
+CLOUDS_INLINE vec2 curlNoiseTexel(vec2 uv, float texelSize, uint seed) {
+  const float e = texelSize;
+  const float n1 = perlinFbm(vec3(uv + vec2(0.0f, e), 0.0f), 4, 3, seed + 40u);
+  const float n2 = perlinFbm(vec3(uv - vec2(0.0f, e), 0.0f), 4, 3, seed + 40u);
+  const float n3 = perlinFbm(vec3(uv + vec2(e, 0.0f), 0.0f), 4, 3, seed + 40u);
+  const float n4 = perlinFbm(vec3(uv - vec2(e, 0.0f), 0.0f), 4, 3, seed + 40u);
+  // Normalise by a typical gradient magnitude so the field uses the 8-bit range.
+  const vec2 curl = vec2(n1 - n2, n4 - n3) / (2.0f * e) * 0.05f;
+  return clamp(curl, vec2(-1.0f), vec2(1.0f)) * 0.5f + 0.5f;
+}
+
+CLOUDS_SHADER_END
+
+#endif

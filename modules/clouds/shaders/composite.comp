@@ -1,0 +1,19 @@
+#version 460
+// Composite helper: applies the clouds over the host's colour image in place,
+// colour = colour * transmittance + radiance. The march already stopped at the host's depth,
+// so clouds behind geometry are absent and clouds in front cover it.
+#extension GL_GOOGLE_include_directive : require
+#include "cloud_types.h"
+
+layout(local_size_x = 8, local_size_y = 8) in;
+layout(binding = 0, rgba16f) uniform image2D hostColor;
+layout(binding = 1, rgba16f) uniform readonly image2D cloudRadiance;
+layout(push_constant) uniform Constants { CompositeConstants constants; };
+
+void main() {
+  const uvec2 pixel = gl_GlobalInvocationID.xy;
+  if (any(greaterThanEqual(pixel, constants.extent.xy))) return;
+  const vec4 clouds = imageLoad(cloudRadiance, ivec2(pixel));
+  const vec4 color = imageLoad(hostColor, ivec2(pixel));
+  imageStore(hostColor, ivec2(pixel), vec4(color.rgb * clouds.a + clouds.rgb, color.a));
+}

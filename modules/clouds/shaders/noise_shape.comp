@@ -1,0 +1,18 @@
+#version 460
+// Generates the low-frequency shape noise (128^3 RGBA8, tiling): R Perlin-Worley, G/B/A Worley
+// fBm at 4/8/16 cells (cloud_noise.h). One invocation per texel. Push constants: seed, size.
+#extension GL_GOOGLE_include_directive : require
+#include "cloud_noise.h"
+#include "cloud_types.h"
+
+layout(local_size_x = 4, local_size_y = 4, local_size_z = 4) in;
+layout(binding = 0, rgba8) uniform writeonly image3D target;
+layout(push_constant) uniform Constants { NoiseConstants constants; };
+
+void main() {
+  const uvec3 texel = gl_GlobalInvocationID;
+  const uint size = constants.params.y;
+  if (any(greaterThanEqual(texel, uvec3(size)))) return;
+  const vec3 uvw = (vec3(texel) + 0.5f) / float(size);
+  imageStore(target, ivec3(texel), lowFrequencyNoiseTexel(uvw, constants.params.x));
+}

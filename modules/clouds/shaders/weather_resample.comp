@@ -1,0 +1,16 @@
+#version 460
+// Resamples a host-painted weather map (any size, bilinear) into the module's 512^2 map, so
+// an artist can paint coverage/type/density ("put a hole here").
+#extension GL_GOOGLE_include_directive : require
+#include "cloud_types.h"
+
+layout(local_size_x = 8, local_size_y = 8) in;
+layout(binding = 0, rgba8) uniform writeonly image2D target;
+layout(binding = 1) uniform sampler2D source;
+
+void main() {
+  const uvec2 texel = gl_GlobalInvocationID.xy;
+  if (any(greaterThanEqual(texel, uvec2(kWeatherMapSize)))) return;
+  const vec2 uv = (vec2(texel) + 0.5f) / float(kWeatherMapSize);
+  imageStore(target, ivec2(texel), clamp(textureLod(source, uv, 0.0f), 0.0f, 1.0f));
+}

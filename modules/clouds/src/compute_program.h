@@ -1,0 +1,78 @@
+#pragma once
+// A compute shader with its descriptor set layout (set 0), push constants and pipeline
+// variants keyed by specialization constants (constant ids 0..n-1), created on first use:
+// feature toggles are compiled out rather than branched over at run time.
+#include <vulkan/vulkan.h>
+
+#include <array>
+#include <map>
+#include <span>
+#include <string>
+#include <vector>
+
+#include "device_context.h"
+
+namespace clouds::detail {
+
+// Specialization constant values (constant ids 0..count-1); fixed size so looking up a
+// variant every frame allocates nothing.
+struct SpecializationKey {
+  std::array<std::uint32_t, 8> values{};
+  std::uint32_t count = 0;
+  auto operator<=>(const SpecializationKey&) const = default;
+};
+
+class ComputeProgram {
+ public:
+  ComputeProgram(const DeviceContext& context, std::span<const std::uint32_t> spirv,
+                 std::vector<VkDescriptorType> bindings, std::uint32_t pushConstantBytes,
+                 std::string name);
+  ~ComputeProgram();
+  ComputeProgram(const ComputeProgram&) = delete;
+  ComputeProgram& operator=(const ComputeProgram&) = delete;
+
+  VkPipeline variant(const SpecializationKey& specialization = {});
+  VkPipelineLayout layout() const { return layout_; }
+  VkDescriptorSetLayout setLayout() const { return setLayout_; }
+  const std::vector<VkDescriptorType>& bindings() const { return bindings_; }
+  std::size_t variantCount() const { return variants_.size(); }
+
+ private:
+  const DeviceContext& context_;
+  std::string name_;
+  std::vector<VkDescriptorType> bindings_;
+  VkShaderModule module_ = VK_NULL_HANDLE;
+  VkDescriptorSetLayout setLayout_ = VK_NULL_HANDLE;
+  VkPipelineLayout layout_ = VK_NULL_HANDLE;
+  std::map<SpecializationKey, VkPipeline> variants_;
+};
+
+// Fills and writes a descriptor set binding by binding (image infos or buffer infos).
+class SetWriter {
+ public:
+  SetWriter(const DeviceContext& context, VkDescriptorSet set) : context_(context), set_(set) {}
+  SetWriter& storageImage(std::uint32_t binding, VkImageView view);
+  SetWriter& sampledImage(std::uint32_t binding, VkImageView view, VkSampler sampler,
+                          VkImageLayout layout);
+  SetWriter& uniformBuffer(std::uint32_t binding, VkBuffer buffer, VkDeviceSize size);
+  SetWriter& storageBuffer(std::uint32_t binding, VkBuffer buffer, VkDeviceSize size);
+  void commit();
+
+ private:
+  struct Entry {
+    std::uint32_t binding;
+    VkDescriptorType type;
+    VkDescriptorImageInfo image;
+    VkDescriptorBufferInfo buffer;
+  };
+  Entry& add(std::uint32_t binding, VkDescriptorType type);
+
+  // Fixed capacity: descriptor updates happen every frame and must not allocate.
+  static constexpr std::size_t kMaxEntries = 12;
+  const DeviceContext& context_;
+  VkDescriptorSet set_;
+  std::array<Entry, kMaxEntries> entries_{};
+  std::size_t count_ = 0;
+};
+
+}  // namespace clouds::detail

@@ -1,0 +1,495 @@
+// clouds::Context: the public API, recording the module's passes into the host's command
+// buffer. Order within a frame: [first frame: noise generation] -> weather map (when due) ->
+// uniforms -> [sky ambient] -> march. Barriers are compute-to-compute except the outputs,
+// which end visible to the host's compute and fragment shaders.
+#include <cmath>
+#include <cstring>
+
+#include "clouds_shaders/cloud_march.comp.spv.h"
+#include "clouds_shaders/composite.comp.spv.h"
+#include "clouds_shaders/noise_curl.comp.spv.h"
+#include "clouds_shaders/noise_detail.comp.spv.h"
+#include "clouds_shaders/noise_shape.comp.spv.h"
+#include "clouds_shaders/sky_ambient.comp.spv.h"
+#include "clouds_shaders/weather_procedural.comp.spv.h"
+#include "clouds_shaders/weather_resample.comp.spv.h"
+#include "context_impl.h"
+
+namespace clouds {
+
+using detail::bits;
+using detail::check;
+
+namespace {
+
+constexpr VkFormat kNoiseFormat = VK_FORMAT_R8G8B8A8_UNORM;
+constexpr VkFormat kRadianceFormat = VK_FORMAT_R16G16B16A16_SFLOAT;
+constexpr VkFormat kDepthOutputFormat = VK_FORMAT_R32G32_SFLOAT;
+constexpr VkPipelineStageFlags2 kCompute = VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT;
+constexpr VkAccessFlags2 kStorageWrite = VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT;
+constexpr VkAccessFlags2 kStorageRead = VK_ACCESS_2_SHADER_STORAGE_READ_BIT;
+// Where host passes may read the outputs.
+constexpr VkPipelineStageFlags2 kHostReadStages =
+    VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT | VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT;
+constexpr VkAccessFlags2 kHostReadAccess =
+    VK_ACCESS_2_SHADER_STORAGE_READ_BIT | VK_ACCESS_2_SHADER_SAMPLED_READ_BIT;
+
+std::uint32_t groups(std::uint32_t size, std::uint32_t group) { return (size + group - 1) / group; }
+
+VkSampler createSampler(const detail::DeviceContext& device, VkFilter filter,
+                        VkSamplerAddressMode address, const char* name) {
+  VkSamplerCreateInfo info{VK_STRUCTURE_TYPE_SAMPLER_CREATE_INFO};
+  info.magFilter = filter;
+  info.minFilter = filter;
+  info.mipmapMode = VK_SAMPLER_MIPMAP_MODE_NEAREST;
+  info.addressModeU = address;
+  info.addressModeV = VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE;
+  info.addressModeW = VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE;
+  VkSampler sampler = VK_NULL_HANDLE;
+  check(device.fn().vkCreateSampler(device.device(), &info, nullptr, &sampler), "vkCreateSampler");
+  device.name(VK_OBJECT_TYPE_SAMPLER, bits(sampler), name);
+  return sampler;
+}
+
+}  // namespace
+
+Context::Impl::Impl(const CreateInfo& info, const detail::VulkanFunctions& functions)
+    : info_(info), device_(info, functions) {
+  using detail::OwnedImage;
+  const VkImageUsageFlags storage = VK_IMAGE_USAGE_STORAGE_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT;
+  const auto s = static_cast<std::uint32_t>(shader::kShapeNoiseSize);
+  const auto d = static_cast<std::uint32_t>(shader::kDetailNoiseSize);
+  const auto c = static_cast<std::uint32_t>(shader::kCurlNoiseSize);
+  const auto w = static_cast<std::uint32_t>(shader::kWeatherMapSize);
+  shapeNoise_ = OwnedImage(device_, VK_IMAGE_TYPE_3D, kNoiseFormat, {s, s, s}, storage, "shape noise");
+  detailNoise_ = OwnedImage(device_, VK_IMAGE_TYPE_3D, kNoiseFormat, {d, d, d}, storage, "detail noise");
+  curlNoise_ = OwnedImage(device_, VK_IMAGE_TYPE_2D, kNoiseFormat, {c, c, 1}, storage, "curl noise");
+  weatherMap_ = OwnedImage(device_, VK_IMAGE_TYPE_2D, kNoiseFormat, {w, w, 1}, storage, "weather map");
+  const VkExtent3D maxExtent{info.maxRenderExtent.width, info.maxRenderExtent.height, 1};
+  const VkImageUsageFlags output = storage | VK_IMAGE_USAGE_SAMPLED_BIT;
+  radiance_ = OwnedImage(device_, VK_IMAGE_TYPE_2D, kRadianceFormat, maxExtent, output, "radiance");
+  depth_ = OwnedImage(device_, VK_IMAGE_TYPE_2D, kDepthOutputFormat, maxExtent, output, "cloud depth");
+  placeholder_ = OwnedImage(device_, VK_IMAGE_TYPE_2D, VK_FORMAT_R32_SFLOAT, {1, 1, 1},
+                            VK_IMAGE_USAGE_SAMPLED_BIT, "placeholder input");
+
+  nearestSampler_ = createSampler(device_, VK_FILTER_NEAREST, VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE,
+                                  "nearest sampler");
+  linearSampler_ = createSampler(device_, VK_FILTER_LINEAR, VK_SAMPLER_ADDRESS_MODE_REPEAT,
+                                 "linear sampler");
+
+  using detail::ComputeProgram;
+  const VkDescriptorType img = VK_DESCRIPTOR_TYPE_STORAGE_IMAGE;
+  const VkDescriptorType tex = VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER;
+  shapeProgram_ = std::make_unique<ComputeProgram>(device_, noise_shape_comp_spv,
+      std::vector{img}, sizeof(shader::NoiseConstants), "shape noise generator");
+  detailProgram_ = std::make_unique<ComputeProgram>(device_, noise_detail_comp_spv,
+      std::vector{img}, sizeof(shader::NoiseConstants), "detail noise generator");
+  curlProgram_ = std::make_unique<ComputeProgram>(device_, noise_curl_comp_spv,
+      std::vector{img}, sizeof(shader::NoiseConstants), "curl noise generator");
+  weatherProgram_ = std::make_unique<ComputeProgram>(device_, weather_procedural_comp_spv,
+      std::vector{img}, sizeof(shader::WeatherConstants), "weather generator");
+  resampleProgram_ = std::make_unique<ComputeProgram>(device_, weather_resample_comp_spv,
+      std::vector{img, tex}, 0u, "weather resample");
+  skyAmbientProgram_ = std::make_unique<ComputeProgram>(device_, sky_ambient_comp_spv,
+      std::vector{VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, tex}, 0u, "sky ambient");
+  march_ = std::make_unique<ComputeProgram>(device_, cloud_march_comp_spv,
+      std::vector{VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, img, img, img, img, tex, img, img}, 0u,
+      "march");
+  compositeProgram_ = std::make_unique<ComputeProgram>(device_, composite_comp_spv,
+      std::vector{img, img}, sizeof(shader::CompositeConstants), "composite");
+
+  const std::uint32_t frames = info.maxFramesInFlight;
+  const VkDescriptorPoolSize sizes[] = {
+      {VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, 16 + 16 * frames},
+      {VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 4 + 4 * frames},
+      {VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 2 * frames},
+      {VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 2 * frames},
+  };
+  VkDescriptorPoolCreateInfo poolInfo{VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO};
+  poolInfo.maxSets = 8 + 4 * frames;
+  poolInfo.poolSizeCount = static_cast<std::uint32_t>(std::size(sizes));
+  poolInfo.pPoolSizes = sizes;
+  check(device_.fn().vkCreateDescriptorPool(device_.device(), &poolInfo, nullptr, &pool_),
+        "vkCreateDescriptorPool");
+  device_.name(VK_OBJECT_TYPE_DESCRIPTOR_POOL, bits(pool_), "descriptor pool");
+
+  shapeSet_ = allocateSet(shapeProgram_->setLayout());
+  detailSet_ = allocateSet(detailProgram_->setLayout());
+  curlSet_ = allocateSet(curlProgram_->setLayout());
+  weatherSet_ = allocateSet(weatherProgram_->setLayout());
+  detail::SetWriter(device_, shapeSet_).storageImage(0, shapeNoise_.view()).commit();
+  detail::SetWriter(device_, detailSet_).storageImage(0, detailNoise_.view()).commit();
+  detail::SetWriter(device_, curlSet_).storageImage(0, curlNoise_.view()).commit();
+  detail::SetWriter(device_, weatherSet_).storageImage(0, weatherMap_.view()).commit();
+
+  slots_.resize(frames);
+  for (std::uint32_t i = 0; i < frames; ++i) {
+    Slot& slot = slots_[i];
+    slot.uniforms = detail::OwnedBuffer(
+        device_, sizeof(shader::CloudUniforms),
+        VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT | VK_BUFFER_USAGE_STORAGE_BUFFER_BIT |
+            VK_BUFFER_USAGE_TRANSFER_DST_BIT | VK_BUFFER_USAGE_TRANSFER_SRC_BIT,
+        "uniforms " + std::to_string(i));
+    slot.march = allocateSet(march_->setLayout());
+    slot.composite = allocateSet(compositeProgram_->setLayout());
+    slot.skyAmbient = allocateSet(skyAmbientProgram_->setLayout());
+    slot.weatherResample = allocateSet(resampleProgram_->setLayout());
+  }
+}
+
+Context::Impl::~Impl() {
+  const auto& fn = device_.fn();
+  fn.vkDestroyDescriptorPool(device_.device(), pool_, nullptr);
+  fn.vkDestroySampler(device_.device(), nearestSampler_, nullptr);
+  fn.vkDestroySampler(device_.device(), linearSampler_, nullptr);
+}
+
+VkDescriptorSet Context::Impl::allocateSet(VkDescriptorSetLayout layout) {
+  VkDescriptorSetAllocateInfo info{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_ALLOCATE_INFO};
+  info.descriptorPool = pool_;
+  info.descriptorSetCount = 1;
+  info.pSetLayouts = &layout;
+  VkDescriptorSet set = VK_NULL_HANDLE;
+  check(device_.fn().vkAllocateDescriptorSets(device_.device(), &info, &set),
+        "vkAllocateDescriptorSets");
+  return set;
+}
+
+void Context::Impl::recordInitialisation(VkCommandBuffer cmd) {
+  const auto& fn = device_.fn();
+  device_.beginLabel(cmd, "clouds: noise generation");
+  for (const detail::OwnedImage* image : {&shapeNoise_, &detailNoise_, &curlNoise_, &weatherMap_,
+                                          &radiance_, &depth_}) {
+    detail::barrier(device_, cmd, image->image(), VK_IMAGE_ASPECT_COLOR_BIT,
+                    VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_GENERAL,
+                    VK_PIPELINE_STAGE_2_NONE, VK_ACCESS_2_NONE, kCompute,
+                    kStorageRead | kStorageWrite);
+  }
+  detail::barrier(device_, cmd, placeholder_.image(), VK_IMAGE_ASPECT_COLOR_BIT,
+                  VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL,
+                  VK_PIPELINE_STAGE_2_NONE, VK_ACCESS_2_NONE, kCompute,
+                  VK_ACCESS_2_SHADER_SAMPLED_READ_BIT);
+
+  struct Job {
+    detail::ComputeProgram* program;
+    VkDescriptorSet set;
+    std::uint32_t size;
+    bool volume;
+  };
+  const Job jobs[] = {
+      {shapeProgram_.get(), shapeSet_, static_cast<std::uint32_t>(shader::kShapeNoiseSize), true},
+      {detailProgram_.get(), detailSet_, static_cast<std::uint32_t>(shader::kDetailNoiseSize), true},
+      {curlProgram_.get(), curlSet_, static_cast<std::uint32_t>(shader::kCurlNoiseSize), false},
+  };
+  for (const Job& job : jobs) {
+    fn.vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, job.program->variant());
+    fn.vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, job.program->layout(), 0, 1,
+                               &job.set, 0, nullptr);
+    const shader::NoiseConstants constants{glm::uvec4(info_.noiseSeed, job.size, 0u, 0u)};
+    fn.vkCmdPushConstants(cmd, job.program->layout(), VK_SHADER_STAGE_COMPUTE_BIT, 0,
+                          sizeof(constants), &constants);
+    if (job.volume) {
+      const std::uint32_t n = groups(job.size, shader::kWorkgroupSize3D);
+      fn.vkCmdDispatch(cmd, n, n, n);
+    } else {
+      const std::uint32_t n = groups(job.size, shader::kWorkgroupSize2D);
+      fn.vkCmdDispatch(cmd, n, n, 1);
+    }
+  }
+  detail::memoryBarrier(device_, cmd, kCompute, kStorageWrite, kCompute, kStorageRead);
+  device_.endLabel(cmd);
+  initialised_ = true;
+}
+
+void Context::Impl::recordWeather(VkCommandBuffer cmd, const FrameInputs& inputs,
+                                  const Settings& settings, Slot& slot) {
+  const auto& fn = device_.fn();
+  const std::uint32_t n = groups(static_cast<std::uint32_t>(shader::kWeatherMapSize),
+                                 shader::kWorkgroupSize2D);
+  if (inputs.weatherView != VK_NULL_HANDLE) {
+    // A painted map: resampled every frame (the host may repaint it at any time).
+    device_.beginLabel(cmd, "clouds: weather resample");
+    detail::SetWriter(device_, slot.weatherResample)
+        .storageImage(0, weatherMap_.view())
+        .sampledImage(1, inputs.weatherView, linearSampler_, inputs.weatherLayout)
+        .commit();
+    detail::memoryBarrier(device_, cmd, kCompute, kStorageRead, kCompute, kStorageWrite);
+    fn.vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, resampleProgram_->variant());
+    fn.vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, resampleProgram_->layout(), 0,
+                               1, &slot.weatherResample, 0, nullptr);
+    fn.vkCmdDispatch(cmd, n, n, 1);
+    detail::memoryBarrier(device_, cmd, kCompute, kStorageWrite, kCompute, kStorageRead);
+    device_.endLabel(cmd);
+    weatherKey_.reset();  // returning to the procedural map regenerates it
+    ++weatherUpdates_;
+    return;
+  }
+  // The procedural map evolves slowly; it is regenerated once per update period, at the
+  // period's start time, so a frame's weather depends only on the time (deterministic).
+  const double period = settings.weatherUpdateSeconds;
+  const std::int64_t key =
+      period > 0.0 ? static_cast<std::int64_t>(std::floor(inputs.timeSeconds / period))
+                   : static_cast<std::int64_t>(inputs.frameIndex);
+  if (weatherKey_ && *weatherKey_ == key) return;
+  const double time = period > 0.0 ? static_cast<double>(key) * period : inputs.timeSeconds;
+  const double phase = time * settings.weatherEvolutionPerSecond;
+  shader::WeatherConstants constants{};
+  constants.params = glm::vec4(static_cast<float>(phase - std::floor(phase)), 0.0f, 0.0f, 0.0f);
+  constants.seed = glm::uvec4(info_.noiseSeed, 0u, 0u, 0u);
+  device_.beginLabel(cmd, "clouds: weather map");
+  detail::memoryBarrier(device_, cmd, kCompute, kStorageRead, kCompute, kStorageWrite);
+  fn.vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, weatherProgram_->variant());
+  fn.vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, weatherProgram_->layout(), 0, 1,
+                             &weatherSet_, 0, nullptr);
+  fn.vkCmdPushConstants(cmd, weatherProgram_->layout(), VK_SHADER_STAGE_COMPUTE_BIT, 0,
+                        sizeof(constants), &constants);
+  fn.vkCmdDispatch(cmd, n, n, 1);
+  detail::memoryBarrier(device_, cmd, kCompute, kStorageWrite, kCompute, kStorageRead);
+  device_.endLabel(cmd);
+  weatherKey_ = key;
+  ++weatherUpdates_;
+}
+
+void Context::Impl::recordUniforms(VkCommandBuffer cmd, Slot& slot,
+                                   const shader::CloudUniforms& uniforms) {
+  // The previous frame of this slot has completed (host contract), but earlier commands in
+  // this queue may still read it: order the update after them.
+  detail::memoryBarrier(device_, cmd, kCompute, VK_ACCESS_2_UNIFORM_READ_BIT | kStorageRead,
+                        VK_PIPELINE_STAGE_2_TRANSFER_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT);
+  device_.fn().vkCmdUpdateBuffer(cmd, slot.uniforms.buffer(), 0, sizeof(uniforms), &uniforms);
+  detail::memoryBarrier(device_, cmd, VK_PIPELINE_STAGE_2_TRANSFER_BIT,
+                        VK_ACCESS_2_TRANSFER_WRITE_BIT, kCompute,
+                        VK_ACCESS_2_UNIFORM_READ_BIT | kStorageRead | kStorageWrite);
+}
+
+void Context::Impl::recordSkyAmbient(VkCommandBuffer cmd, const FrameInputs& inputs, Slot& slot) {
+  const auto& fn = device_.fn();
+  device_.beginLabel(cmd, "clouds: sky ambient");
+  detail::SetWriter(device_, slot.skyAmbient)
+      .storageBuffer(0, slot.uniforms.buffer(), sizeof(shader::CloudUniforms))
+      .sampledImage(1, inputs.skyView, linearSampler_, inputs.skyLayout)
+      .commit();
+  fn.vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, skyAmbientProgram_->variant());
+  fn.vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, skyAmbientProgram_->layout(), 0,
+                             1, &slot.skyAmbient, 0, nullptr);
+  fn.vkCmdDispatch(cmd, 1, 1, 1);
+  detail::memoryBarrier(device_, cmd, kCompute, kStorageWrite, kCompute,
+                        VK_ACCESS_2_UNIFORM_READ_BIT);
+  device_.endLabel(cmd);
+}
+
+void Context::Impl::recordMarch(VkCommandBuffer cmd, const FrameInputs& inputs,
+                                const Settings& settings, Slot& slot) {
+  const auto& fn = device_.fn();
+  const detail::MarchVariant v = detail::marchVariant(settings);
+  detail::SpecializationKey key;
+  key.values = {v.jitter, v.detail, v.cheapSampling, v.multipleScattering, v.lightSteps};
+  key.count = 5;
+  const VkPipeline pipeline = march_->variant(key);
+
+  const bool hasDepth = inputs.depthView != VK_NULL_HANDLE;
+  detail::SetWriter(device_, slot.march)
+      .uniformBuffer(0, slot.uniforms.buffer(), sizeof(shader::CloudUniforms))
+      .storageImage(1, shapeNoise_.view())
+      .storageImage(2, detailNoise_.view())
+      .storageImage(3, weatherMap_.view())
+      .storageImage(4, curlNoise_.view())
+      .sampledImage(5, hasDepth ? inputs.depthView : placeholder_.view(), nearestSampler_,
+                    hasDepth ? inputs.depthLayout : VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL)
+      .storageImage(6, radiance_.view())
+      .storageImage(7, depth_.view())
+      .commit();
+
+  device_.beginLabel(cmd, "clouds: march");
+  // The host may still be reading last frame's outputs.
+  for (const detail::OwnedImage* image : {&radiance_, &depth_}) {
+    detail::barrier(device_, cmd, image->image(), VK_IMAGE_ASPECT_COLOR_BIT,
+                    VK_IMAGE_LAYOUT_GENERAL, VK_IMAGE_LAYOUT_GENERAL, kHostReadStages,
+                    kHostReadAccess, kCompute, kStorageWrite);
+  }
+  fn.vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pipeline);
+  fn.vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, march_->layout(), 0, 1,
+                             &slot.march, 0, nullptr);
+  fn.vkCmdDispatch(cmd, groups(inputs.renderExtent.width, shader::kWorkgroupSize2D),
+                   groups(inputs.renderExtent.height, shader::kWorkgroupSize2D), 1);
+  for (const detail::OwnedImage* image : {&radiance_, &depth_}) {
+    detail::barrier(device_, cmd, image->image(), VK_IMAGE_ASPECT_COLOR_BIT,
+                    VK_IMAGE_LAYOUT_GENERAL, VK_IMAGE_LAYOUT_GENERAL, kCompute, kStorageWrite,
+                    kHostReadStages, kHostReadAccess);
+  }
+  device_.endLabel(cmd);
+}
+
+void Context::Impl::dispatch(const FrameInputs& inputs, const Settings& settings) {
+  const VkCommandBuffer cmd = inputs.commandBuffer;
+  const auto slotIndex = static_cast<std::uint32_t>(inputs.frameIndex % slots_.size());
+  Slot& slot = slots_[slotIndex];
+  device_.beginLabel(cmd, "clouds");
+  if (!initialised_) recordInitialisation(cmd);
+  recordWeather(cmd, inputs, settings, slot);
+  detail::UniformContext uniformContext;
+  uniformContext.reversedZ = info_.reversedZ;
+  uniformContext.hasDepth = inputs.depthView != VK_NULL_HANDLE;
+  uniformContext.traceExtent = inputs.renderExtent;
+  uniformContext.fullExtent = inputs.renderExtent;
+  lastUniforms_ = detail::buildUniforms(inputs, settings, uniformContext);
+  recordUniforms(cmd, slot, lastUniforms_);
+  if (inputs.skyView != VK_NULL_HANDLE) recordSkyAmbient(cmd, inputs, slot);
+  recordMarch(cmd, inputs, settings, slot);
+  device_.endLabel(cmd);
+  lastSlot_ = slotIndex;
+  lastExtent_ = inputs.renderExtent;
+}
+
+void Context::Impl::composite(VkCommandBuffer cmd, VkImageView color, VkExtent2D extent) {
+  const auto& fn = device_.fn();
+  Slot& slot = slots_[lastSlot_];
+  detail::SetWriter(device_, slot.composite)
+      .storageImage(0, color)
+      .storageImage(1, radiance_.view())
+      .commit();
+  device_.beginLabel(cmd, "clouds: composite");
+  fn.vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, compositeProgram_->variant());
+  fn.vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, compositeProgram_->layout(), 0,
+                             1, &slot.composite, 0, nullptr);
+  const shader::CompositeConstants constants{glm::uvec4(extent.width, extent.height, 0u, 0u)};
+  fn.vkCmdPushConstants(cmd, compositeProgram_->layout(), VK_SHADER_STAGE_COMPUTE_BIT, 0,
+                        sizeof(constants), &constants);
+  fn.vkCmdDispatch(cmd, groups(extent.width, shader::kWorkgroupSize2D),
+                   groups(extent.height, shader::kWorkgroupSize2D), 1);
+  device_.endLabel(cmd);
+}
+
+Outputs Context::Impl::outputs() const {
+  Outputs out;
+  out.radiance = {radiance_.image(), radiance_.view(), radiance_.format()};
+  out.depth = {depth_.image(), depth_.view(), depth_.format()};
+  out.extent = lastExtent_;
+  return out;
+}
+
+// --- Public API ------------------------------------------------------------------------
+
+namespace {
+
+bool fail(std::string* error, const std::string& message) {
+  if (error != nullptr) *error = message;
+  return false;
+}
+
+bool finite(const glm::mat4& m) {
+  for (int c = 0; c < 4; ++c) {
+    for (int r = 0; r < 4; ++r) {
+      if (!std::isfinite(m[c][r])) return false;
+    }
+  }
+  return true;
+}
+
+std::string checkInputs(const FrameInputs& in, const CreateInfo& info) {
+  if (in.commandBuffer == VK_NULL_HANDLE) return "FrameInputs.commandBuffer: must not be null";
+  if (in.renderExtent.width == 0 || in.renderExtent.height == 0 ||
+      in.renderExtent.width > info.maxRenderExtent.width ||
+      in.renderExtent.height > info.maxRenderExtent.height) {
+    return "FrameInputs.renderExtent = " + std::to_string(in.renderExtent.width) + "x" +
+           std::to_string(in.renderExtent.height) + ": must be non-zero and within " +
+           "CreateInfo.maxRenderExtent (" + std::to_string(info.maxRenderExtent.width) + "x" +
+           std::to_string(info.maxRenderExtent.height) + ")";
+  }
+  if (!finite(in.view) || !finite(in.projection)) {
+    return "FrameInputs.view/projection: must be finite";
+  }
+  if (std::abs(glm::determinant(in.projection)) < 1e-30f) {
+    return "FrameInputs.projection: must be invertible";
+  }
+  for (double c : {in.cameraPosition.x, in.cameraPosition.y, in.cameraPosition.z}) {
+    if (!std::isfinite(c)) return "FrameInputs.cameraPosition: must be finite";
+  }
+  for (const glm::vec3& v : {in.sunDirection, in.sunIlluminance, in.ambientTop, in.ambientBottom}) {
+    if (!std::isfinite(v.x) || !std::isfinite(v.y) || !std::isfinite(v.z)) {
+      return "FrameInputs: sun and ambient values must be finite";
+    }
+  }
+  if (in.sunIlluminance.x < 0 || in.sunIlluminance.y < 0 || in.sunIlluminance.z < 0 ||
+      in.ambientTop.x < 0 || in.ambientTop.y < 0 || in.ambientTop.z < 0 ||
+      in.ambientBottom.x < 0 || in.ambientBottom.y < 0 || in.ambientBottom.z < 0) {
+    return "FrameInputs: sun illuminance and ambient radiance must not be negative";
+  }
+  if (!std::isfinite(in.timeSeconds) || in.timeSeconds < 0.0) {
+    return "FrameInputs.timeSeconds = " + std::to_string(in.timeSeconds) + ": must be >= 0";
+  }
+  return {};
+}
+
+}  // namespace
+
+std::unique_ptr<Context> Context::create(const CreateInfo& info, std::string* error) {
+  if (info.device == VK_NULL_HANDLE || info.physicalDevice == VK_NULL_HANDLE ||
+      info.instance == VK_NULL_HANDLE || info.getDeviceProcAddr == nullptr ||
+      info.getInstanceProcAddr == nullptr) {
+    fail(error, "CreateInfo: instance, physicalDevice, device and both proc-addr functions are required");
+    return nullptr;
+  }
+  if (info.maxFramesInFlight < 1 || info.maxFramesInFlight > 8) {
+    fail(error, "CreateInfo.maxFramesInFlight = " + std::to_string(info.maxFramesInFlight) +
+                    ": must be in [1, 8]");
+    return nullptr;
+  }
+  if (info.maxRenderExtent.width == 0 || info.maxRenderExtent.height == 0 ||
+      info.maxRenderExtent.width > 16384 || info.maxRenderExtent.height > 16384) {
+    fail(error, "CreateInfo.maxRenderExtent: must be in [1, 16384] per side");
+    return nullptr;
+  }
+  if (info.compositeColorFormat != VK_FORMAT_UNDEFINED &&
+      info.compositeColorFormat != VK_FORMAT_R16G16B16A16_SFLOAT) {
+    fail(error, "CreateInfo.compositeColorFormat: only R16G16B16A16_SFLOAT (or UNDEFINED) is supported");
+    return nullptr;
+  }
+  detail::VulkanFunctions functions;
+  if (!functions.load(info, error)) return nullptr;
+  try {
+    auto impl = std::make_unique<Impl>(info, functions);
+    return std::unique_ptr<Context>(new Context(std::move(impl)));
+  } catch (const detail::ModuleError& e) {
+    fail(error, e.what());
+    return nullptr;
+  }
+}
+
+Context::Context(std::unique_ptr<Impl> impl) : impl_(std::move(impl)) {}
+Context::~Context() = default;
+
+bool Context::dispatch(const FrameInputs& inputs, const Settings& settings, std::string* error) {
+  if (const std::string problem = checkInputs(inputs, impl_->createInfo()); !problem.empty()) {
+    return fail(error, problem);
+  }
+  if (const std::string problem = validateSettings(settings); !problem.empty()) {
+    return fail(error, problem);
+  }
+  try {
+    impl_->dispatch(inputs, settings);
+  } catch (const detail::ModuleError& e) {
+    return fail(error, e.what());
+  }
+  return true;
+}
+
+bool Context::composite(VkCommandBuffer commandBuffer, VkImageView color, VkExtent2D extent,
+                        std::string* error) {
+  if (impl_->createInfo().compositeColorFormat == VK_FORMAT_UNDEFINED) {
+    return fail(error, "composite: CreateInfo.compositeColorFormat was UNDEFINED");
+  }
+  if (commandBuffer == VK_NULL_HANDLE || color == VK_NULL_HANDLE) {
+    return fail(error, "composite: command buffer and colour view are required");
+  }
+  const Outputs out = impl_->outputs();
+  if (extent.width != out.extent.width || extent.height != out.extent.height) {
+    return fail(error, "composite: extent must equal the last dispatch's renderExtent");
+  }
+  impl_->composite(commandBuffer, color, extent);
+  return true;
+}
+
+Outputs Context::outputs() const { return impl_->outputs(); }
+
+}  // namespace clouds

@@ -1,0 +1,102 @@
+// Settings validation and the reference mode.
+#include <cmath>
+#include <sstream>
+#include <string>
+
+#include "clouds/clouds.h"
+
+namespace clouds {
+namespace {
+
+struct Checker {
+  std::string error;
+
+  template <typename T>
+  void range(const char* field, T value, T lo, T hi) {
+    if (!error.empty()) return;
+    const bool finite = std::isfinite(static_cast<double>(value));
+    if (!finite || value < lo || value > hi) {
+      std::ostringstream out;
+      out << "Settings." << field << " = " << value << ": must be in [" << lo << ", " << hi << "]";
+      error = out.str();
+    }
+  }
+  void require(bool condition, const std::string& message) {
+    if (error.empty() && !condition) error = message;
+  }
+};
+
+}  // namespace
+
+std::string validateSettings(const Settings& s) {
+  Checker c;
+  c.range("layerBottomMetres", s.layerBottomMetres, 0.0f, 20000.0f);
+  c.range("layerTopMetres", s.layerTopMetres, 0.0f, 30000.0f);
+  c.require(s.layerTopMetres > s.layerBottomMetres + 1.0f,
+            "Settings.layerTopMetres = " + std::to_string(s.layerTopMetres) +
+                ": must be above layerBottomMetres (" + std::to_string(s.layerBottomMetres) +
+                ") by at least 1 m");
+  c.range("planetRadiusMetres", s.planetRadiusMetres, 1e5f, 1e8f);
+  c.range("coverage", s.coverage, 0.0f, 1.0f);
+  c.range("cloudType", s.cloudType, 0.0f, 1.0f);
+  c.range("typeVariation", s.typeVariation, 0.0f, 2.0f);
+  c.range("densityVariation", s.densityVariation, 0.0f, 1.0f);
+  c.range("weatherTileMetres", s.weatherTileMetres, 1000.0f, 1e7f);
+  c.range("weatherEvolutionPerSecond", s.weatherEvolutionPerSecond, 0.0f, 1.0f);
+  c.range("weatherUpdateSeconds", s.weatherUpdateSeconds, 0.0f, 3600.0f);
+  c.range("densityMultiplier", s.densityMultiplier, 0.0f, 1e6f);
+  c.range("extinctionPerMetre", s.extinctionPerMetre, 0.0f, 100.0f);
+  c.range("anvilBias", s.anvilBias, 0.0f, 1.0f);
+  c.range("shapeTileMetres", s.shapeTileMetres, 100.0f, 1e7f);
+  c.range("detailTileMetres", s.detailTileMetres, 10.0f, 1e6f);
+  c.range("detailErosion", s.detailErosion, 0.0f, 1.0f);
+  c.range("detailDistanceMetres", s.detailDistanceMetres, 0.0f, 1e7f);
+  c.range("curlTileMetres", s.curlTileMetres, 100.0f, 1e7f);
+  c.range("curlStrengthMetres", s.curlStrengthMetres, 0.0f, 10000.0f);
+  c.range("windDirection.x", s.windDirection.x, -1e6f, 1e6f);
+  c.range("windDirection.y", s.windDirection.y, -1e6f, 1e6f);
+  c.require(glm::length(s.windDirection) > 1e-6f, "Settings.windDirection: must not be zero");
+  c.range("windSpeedMetresPerSecond", s.windSpeedMetresPerSecond, 0.0f, 500.0f);
+  c.range("skewMetres", s.skewMetres, 0.0f, 20000.0f);
+  c.range("albedo", s.albedo, 0.0f, 1.0f);
+  c.range("phaseForwardG", s.phaseForwardG, -1.0f, 1.0f);
+  c.range("phaseBackwardG", s.phaseBackwardG, -1.0f, 1.0f);
+  c.range("phaseBackwardWeight", s.phaseBackwardWeight, 0.0f, 1.0f);
+  c.range("multipleScatteringOctaves", s.multipleScatteringOctaves, 1u, 8u);
+  c.range("msExtinctionScale", s.msExtinctionScale, 0.0f, 1.0f);
+  c.range("msContribution", s.msContribution, 0.0f, 1.0f);
+  c.range("msEccentricityScale", s.msEccentricityScale, 0.0f, 1.0f);
+  c.range("inScatterStrength", s.inScatterStrength, 0.0f, 1.0f);
+  c.range("inScatterDepthMetres", s.inScatterDepthMetres, 0.0f, 10000.0f);
+  c.range("ambientOcclusionStrength", s.ambientOcclusionStrength, 0.0f, 1.0f);
+  c.range("ambientStrength", s.ambientStrength, 0.0f, 100.0f);
+  c.range("sunStrength", s.sunStrength, 0.0f, 100.0f);
+  c.range("maxViewSteps", s.maxViewSteps, 1u, 16384u);
+  c.range("viewStepMetres", s.viewStepMetres, 0.5f, 10000.0f);
+  c.range("viewStepGrowth", s.viewStepGrowth, 0.0f, 1.0f);
+  c.range("lightSteps", s.lightSteps, 0u, 64u);
+  c.range("lightConeMetres", s.lightConeMetres, 1.0f, 100000.0f);
+  c.range("lightConeSpread", s.lightConeSpread, 0.0f, 2.0f);
+  c.range("maxDistanceMetres", s.maxDistanceMetres, 100.0f, 1e7f);
+  c.range("transmittanceCutoff", s.transmittanceCutoff, 0.0f, 0.5f);
+  c.range("coarseStepFactor", s.coarseStepFactor, 1.0f, 16.0f);
+  c.range("emptySamplesToCoarse", s.emptySamplesToCoarse, 1u, 1000u);
+  c.require(s.jitter == Jitter::None || s.jitter == Jitter::BayerHalton,
+            "Settings.jitter: unknown mode " + std::to_string(static_cast<unsigned>(s.jitter)));
+  return c.error;
+}
+
+Settings referenceSettings(const Settings& base) {
+  Settings s = base;
+  s.maxViewSteps = 8192;
+  s.viewStepMetres = 12.0f;
+  s.viewStepGrowth = 0.0015f;
+  s.lightSteps = 24;
+  s.cheapSampling = false;
+  s.transmittanceCutoff = 1e-4f;
+  s.detailDistanceMetres = std::max(base.detailDistanceMetres, base.maxDistanceMetres);
+  s.jitter = Jitter::BayerHalton;
+  return s;
+}
+
+}  // namespace clouds

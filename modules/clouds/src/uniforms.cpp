@@ -1,0 +1,77 @@
+#include "uniforms.h"
+
+#include <cmath>
+
+namespace clouds::detail {
+
+double wrapToTile(double x, double tile) {
+  const double r = std::fmod(x, tile);
+  return r < 0.0 ? r + tile : r;
+}
+
+shader::CloudUniforms buildUniforms(const FrameInputs& in, const Settings& s,
+                                    const UniformContext& context) {
+  shader::CloudUniforms u{};
+  u.inverseProjection = glm::inverse(in.projection);
+  // The view's rotation only: the module is camera-relative. Transposing the upper 3x3 of a
+  // rigid world->view transform gives view->world.
+  u.viewToWorld = glm::mat4(glm::transpose(glm::mat3(in.view)));
+
+  u.planet = glm::vec4(static_cast<float>(in.cameraPosition.y), s.planetRadiusMetres,
+                       s.layerBottomMetres, s.layerTopMetres);
+  glm::vec3 sun = in.sunDirection;
+  const float sunLength = glm::length(sun);
+  sun = sunLength > 1e-6f && std::isfinite(sunLength) ? sun / sunLength : glm::vec3(0, 1, 0);
+  u.sunDirection = glm::vec4(sun, 0.0f);
+  u.sunIlluminance = glm::vec4(in.sunIlluminance, 0.0f);
+  u.ambientTop = glm::vec4(in.ambientTop, 0.0f);
+  u.ambientBottom = glm::vec4(in.ambientBottom, 0.0f);
+
+  const glm::dvec2 wind = glm::normalize(glm::dvec2(s.windDirection));
+  const glm::dvec2 camera(in.cameraPosition.x, in.cameraPosition.z);
+  // The noise moves with the wind; the weather map (coverage) stays where it is.
+  const glm::dvec2 scrolled = camera + wind * (static_cast<double>(s.windSpeedMetresPerSecond) *
+                                               in.timeSeconds);
+  auto offset = [&](const glm::dvec2& p, double tile) {
+    return glm::vec2(static_cast<float>(wrapToTile(p.x, tile)),
+                     static_cast<float>(wrapToTile(p.y, tile)));
+  };
+  const glm::vec2 shape = offset(scrolled, s.shapeTileMetres);
+  const glm::vec2 detail = offset(scrolled, s.detailTileMetres);
+  const glm::vec2 curl = offset(scrolled, s.curlTileMetres);
+  const glm::vec2 weather = offset(camera, s.weatherTileMetres);
+  u.shapeNoise = glm::vec4(shape.x, 0.0f, shape.y, s.shapeTileMetres);
+  u.detailNoise = glm::vec4(detail.x, 0.0f, detail.y, s.detailTileMetres);
+  u.weather = glm::vec4(weather.x, weather.y, s.weatherTileMetres, 0.0f);
+  u.curl = glm::vec4(curl.x, curl.y, s.curlTileMetres, s.curlStrengthMetres);
+  u.wind = glm::vec4(static_cast<float>(wind.x), static_cast<float>(wind.y), s.skewMetres, 0.0f);
+
+  u.density = glm::vec4(s.extinctionPerMetre * s.densityMultiplier, s.coverage, s.cloudType,
+                        s.typeVariation);
+  u.shape = glm::vec4(s.anvilBias, s.detailErosion, s.detailDistanceMetres, s.densityVariation);
+  u.phase = glm::vec4(s.phaseForwardG, s.phaseBackwardG, s.phaseBackwardWeight, s.albedo);
+  u.multipleScattering = glm::vec4(static_cast<float>(s.multipleScatteringOctaves),
+                                   s.msExtinctionScale, s.msContribution, s.msEccentricityScale);
+  u.artistic = glm::vec4(s.inScatterStrength, s.ambientOcclusionStrength, s.ambientStrength,
+                         s.sunStrength);
+  u.inScatter = glm::vec4(s.inScatterDepthMetres, 0.0f, 0.0f, 0.0f);
+  u.march = glm::vec4(s.viewStepMetres, s.viewStepGrowth, s.maxDistanceMetres,
+                      s.transmittanceCutoff);
+  u.light = glm::vec4(s.lightConeMetres, s.lightConeSpread, s.coarseStepFactor,
+                      static_cast<float>(s.emptySamplesToCoarse));
+  std::uint32_t flags = 0;
+  if (context.reversedZ) flags |= shader::kFlagReversedZ;
+  if (context.hasDepth) flags |= shader::kFlagHasDepth;
+  u.frame = glm::uvec4(static_cast<std::uint32_t>(in.frameIndex & 0xffffffffu), s.maxViewSteps,
+                       flags, 0u);
+  u.extent = glm::uvec4(context.traceExtent.width, context.traceExtent.height,
+                        context.fullExtent.width, context.fullExtent.height);
+  return u;
+}
+
+MarchVariant marchVariant(const Settings& s) {
+  return MarchVariant{static_cast<std::uint32_t>(s.jitter), s.detail ? 1u : 0u,
+                      s.cheapSampling ? 1u : 0u, s.multipleScattering ? 1u : 0u, s.lightSteps};
+}
+
+}  // namespace clouds::detail

@@ -1,0 +1,33 @@
+#pragma once
+// Building the march's uniforms from the host's inputs and the settings. Offsets into the
+// tiling textures are computed here in double precision (camera position modulo each tile),
+// so the GPU only ever sees small camera-relative numbers.
+#include "clouds/clouds.h"
+#include "cloud_types.h"
+
+namespace clouds::detail {
+
+struct UniformContext {
+  bool reversedZ = true;
+  bool hasDepth = false;
+  VkExtent2D traceExtent{0, 0};
+  VkExtent2D fullExtent{0, 0};
+};
+
+shader::CloudUniforms buildUniforms(const FrameInputs& inputs, const Settings& settings,
+                                    const UniformContext& context);
+
+// The specialization constants of the march shader for these settings.
+struct MarchVariant {
+  std::uint32_t jitter;
+  std::uint32_t detail;
+  std::uint32_t cheapSampling;
+  std::uint32_t multipleScattering;
+  std::uint32_t lightSteps;
+};
+MarchVariant marchVariant(const Settings& settings);
+
+// x modulo tile into [0, tile).
+double wrapToTile(double x, double tile);
+
+}  // namespace clouds::detail

@@ -1,0 +1,68 @@
+#pragma once
+// The Vulkan entry points the module uses, loaded through the host's vkGet*ProcAddr so the
+// module never links the loader and works with any host setup.
+#include <vulkan/vulkan.h>
+
+#include <string>
+
+#include "clouds/clouds.h"
+
+namespace clouds::detail {
+
+#define CLOUDS_INSTANCE_FUNCTIONS(X)        \
+  X(vkGetPhysicalDeviceMemoryProperties)    \
+  X(vkGetPhysicalDeviceProperties)          \
+  X(vkGetPhysicalDeviceFormatProperties)
+
+#define CLOUDS_DEVICE_FUNCTIONS(X) \
+  X(vkCreateImage)                 \
+  X(vkDestroyImage)                \
+  X(vkGetImageMemoryRequirements)  \
+  X(vkBindImageMemory)             \
+  X(vkCreateImageView)             \
+  X(vkDestroyImageView)            \
+  X(vkCreateBuffer)                \
+  X(vkDestroyBuffer)               \
+  X(vkGetBufferMemoryRequirements) \
+  X(vkBindBufferMemory)            \
+  X(vkAllocateMemory)              \
+  X(vkFreeMemory)                  \
+  X(vkCreateSampler)               \
+  X(vkDestroySampler)              \
+  X(vkCreateShaderModule)          \
+  X(vkDestroyShaderModule)         \
+  X(vkCreateDescriptorSetLayout)   \
+  X(vkDestroyDescriptorSetLayout)  \
+  X(vkCreatePipelineLayout)        \
+  X(vkDestroyPipelineLayout)       \
+  X(vkCreateComputePipelines)      \
+  X(vkDestroyPipeline)             \
+  X(vkCreateDescriptorPool)        \
+  X(vkDestroyDescriptorPool)       \
+  X(vkAllocateDescriptorSets)      \
+  X(vkUpdateDescriptorSets)        \
+  X(vkCmdBindPipeline)             \
+  X(vkCmdBindDescriptorSets)       \
+  X(vkCmdPushConstants)            \
+  X(vkCmdDispatch)                 \
+  X(vkCmdPipelineBarrier2)         \
+  X(vkCmdUpdateBuffer)
+
+// Present only when the host enabled VK_EXT_debug_utils; used for names and labels.
+#define CLOUDS_OPTIONAL_DEVICE_FUNCTIONS(X) \
+  X(vkSetDebugUtilsObjectNameEXT)           \
+  X(vkCmdBeginDebugUtilsLabelEXT)           \
+  X(vkCmdEndDebugUtilsLabelEXT)
+
+struct VulkanFunctions {
+#define CLOUDS_DECLARE(name) PFN_##name name = nullptr;
+  CLOUDS_INSTANCE_FUNCTIONS(CLOUDS_DECLARE)
+  CLOUDS_DEVICE_FUNCTIONS(CLOUDS_DECLARE)
+  CLOUDS_OPTIONAL_DEVICE_FUNCTIONS(CLOUDS_DECLARE)
+#undef CLOUDS_DECLARE
+
+  // Returns false and fills `error` naming the first missing required function.
+  bool load(const CreateInfo& info, std::string* error);
+};
+
+}  // namespace clouds::detail

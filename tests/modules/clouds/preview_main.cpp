@@ -1,0 +1,113 @@
+// clouds_preview: renders one view through the clouds module with key=value overrides and
+// writes a preview PNG (development aid; not a test).
+// Usage: clouds_preview OUT.png [width=320 height=180 frames=1 altitude=300 pitch=10 yaw=0
+//        sunElevation=35 sunAzimuth=200 coverage=... extinction=... reference=0 ground=0 ...]
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <cstdlib>
+#include <map>
+#include <string>
+
+#include "cloud_harness.h"
+#include "engine/core/error.h"
+#include "engine/gfx/instance.h"
+
+int main(int argc, char** argv) {
+  if (argc < 2) {
+    std::fprintf(stderr, "usage: clouds_preview OUT.png [key=value ...]\n");
+    return 2;
+  }
+  std::map<std::string, double> kv;
+  for (int i = 2; i < argc; ++i) {
+    const std::string arg = argv[i];
+    const auto eq = arg.find('=');
+    if (eq == std::string::npos) continue;
+    kv[arg.substr(0, eq)] = std::atof(arg.substr(eq + 1).c_str());
+  }
+  auto get = [&](const char* key, double fallback) { return kv.count(key) ? kv[key] : fallback; };
+  try {
+    engine::gfx::InstanceDesc instanceDesc;
+    instanceDesc.validation = get("validation", 0) != 0;
+    engine::gfx::Instance instance(instanceDesc);
+    engine::gfx::Device device(instance, engine::gfx::DeviceDesc{});
+    const VkExtent2D extent{static_cast<std::uint32_t>(get("width", 320)),
+                            static_cast<std::uint32_t>(get("height", 180))};
+    test::CloudHarness harness(device, extent);
+    test::CloudView view;
+    view.position = {get("x", 0), get("altitude", 300), get("z", 0)};
+    view.pitchDegrees = get("pitch", 10);
+    view.yawDegrees = get("yaw", 0);
+    view.sunElevationDegrees = get("sunElevation", 35);
+    view.sunAzimuthDegrees = get("sunAzimuth", 200);
+    view.groundDepth = get("ground", 0) != 0;
+    view.timeSeconds = get("time", 0);
+    clouds::Settings s;
+    s.coverage = static_cast<float>(get("coverage", s.coverage));
+    s.cloudType = static_cast<float>(get("type", s.cloudType));
+    s.extinctionPerMetre = static_cast<float>(get("extinction", s.extinctionPerMetre));
+    s.densityMultiplier = static_cast<float>(get("density", s.densityMultiplier));
+    s.detailErosion = static_cast<float>(get("erosion", s.detailErosion));
+    s.shapeTileMetres = static_cast<float>(get("shapeTile", s.shapeTileMetres));
+    s.maxViewSteps = static_cast<std::uint32_t>(get("steps", s.maxViewSteps));
+    s.lightSteps = static_cast<std::uint32_t>(get("lightSteps", s.lightSteps));
+    s.inScatterStrength = static_cast<float>(get("inScatter", s.inScatterStrength));
+    s.ambientStrength = static_cast<float>(get("ambient", s.ambientStrength));
+    s.detailTileMetres = static_cast<float>(get("detailTile", s.detailTileMetres));
+    s.msExtinctionScale = static_cast<float>(get("msA", s.msExtinctionScale));
+    s.msContribution = static_cast<float>(get("msB", s.msContribution));
+    s.msEccentricityScale = static_cast<float>(get("msC", s.msEccentricityScale));
+    s.multipleScatteringOctaves = static_cast<std::uint32_t>(get("msN", s.multipleScatteringOctaves));
+    s.phaseForwardG = static_cast<float>(get("g", s.phaseForwardG));
+    s.layerBottomMetres = static_cast<float>(get("bottom", s.layerBottomMetres));
+    s.layerTopMetres = static_cast<float>(get("top", s.layerTopMetres));
+    s.viewStepMetres = static_cast<float>(get("step", s.viewStepMetres));
+    s.anvilBias = static_cast<float>(get("anvil", s.anvilBias));
+    if (get("reference", 0) != 0) s = clouds::referenceSettings(s);
+    const auto start = std::chrono::steady_clock::now();
+    const test::CloudFrame frame =
+        harness.render(view, s, extent, static_cast<std::uint32_t>(get("frames", 1)));
+    const double ms =
+        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+    engine::assets::writePng(argv[1], test::previewImage(frame, view,
+                                                         static_cast<float>(get("exposure", 1))));
+    if (get("dumpTextures", 0) != 0) {
+      // Weather map (RGB) and slice 0 of the shape and detail noise (R, G, B, A side by side).
+      const auto weather = harness.readWeatherMap();
+      engine::assets::writePng(std::string(argv[1]) + ".weather.png",
+                               engine::assets::ImageRgba8{512, 512, weather});
+      auto slices = [&](const std::vector<std::uint8_t>& texels, std::uint32_t size) {
+        engine::assets::ImageRgba8 image{size * 4, size, {}};
+        image.pixels.resize(std::size_t{16} * size * size);
+        for (std::uint32_t y = 0; y < size; ++y) {
+          for (std::uint32_t c = 0; c < 4; ++c) {
+            for (std::uint32_t x = 0; x < size; ++x) {
+              const std::uint8_t v = texels[4 * (std::size_t{y} * size + x) + c];
+              std::uint8_t* out = &image.pixels[4 * (std::size_t{y} * size * 4 + c * size + x)];
+              out[0] = out[1] = out[2] = v;
+              out[3] = 255;
+            }
+          }
+        }
+        return image;
+      };
+      engine::assets::writePng(std::string(argv[1]) + ".shape.png", slices(harness.readShapeNoise(), 128));
+      engine::assets::writePng(std::string(argv[1]) + ".detail.png", slices(harness.readDetailNoise(), 32));
+    }
+    double coverage = 0.0;
+    for (const auto& p : frame.radiance) coverage += 1.0 - p.a;
+    float minT = 1.0f;
+    float maxL = 0.0f;
+    for (const auto& p : frame.radiance) {
+      minT = std::min(minT, p.a);
+      maxL = std::max(maxL, std::max(p.r, std::max(p.g, p.b)));
+    }
+    std::printf("wrote %s (%.0f ms wall incl. noise generation; mean opacity %.3f, min T %.3f, "
+                "max radiance %.2f)\n",
+                argv[1], ms, coverage / double(frame.radiance.size()), minT, maxL);
+  } catch (const engine::Error& e) {
+    std::fprintf(stderr, "error: %s\n", e.what());
+    return 1;
+  }
+  return 0;
+}

@@ -1,0 +1,279 @@
+#include "cloud_harness.h"
+
+#include "context_impl.h"
+
+#include <cmath>
+#include <cstring>
+#include <glm/gtc/packing.hpp>
+
+#include "engine/core/error.h"
+#include "engine/gfx/barriers.h"
+#include "engine/gfx/upload.h"
+#include "engine/render/camera_math.h"
+#include "tonemap_operator.h"
+
+namespace test {
+
+using namespace engine;
+
+glm::vec3 sunDirection(const CloudView& v) {
+  const double e = glm::radians(v.sunElevationDegrees);
+  const double a = glm::radians(v.sunAzimuthDegrees);
+  return glm::vec3(glm::dvec3(-std::sin(a) * std::cos(e), std::sin(e), -std::cos(a) * std::cos(e)));
+}
+
+glm::vec3 forwardDirection(const CloudView& v) {
+  const double y = glm::radians(v.yawDegrees);
+  const double p = glm::radians(v.pitchDegrees);
+  return glm::vec3(glm::dvec3(-std::sin(y) * std::cos(p), std::sin(p), -std::cos(y) * std::cos(p)));
+}
+
+glm::mat4 viewMatrix(const CloudView& v) {
+  // Camera-relative world: the module only uses the rotation; the position goes in double.
+  return render::lookTo(glm::vec3(0.0f), forwardDirection(v), {0, 1, 0});
+}
+
+glm::mat4 projectionMatrix(const CloudView& v, VkExtent2D extent) {
+  return render::perspectiveReversedZ(glm::radians(v.verticalFovDegrees),
+                                      float(extent.width) / float(extent.height), 0.5f);
+}
+
+CloudHarness::CloudHarness(gfx::Device& device, VkExtent2D maxExtent, std::uint32_t noiseSeed)
+    : device_(device) {
+  clouds::CreateInfo info;
+  info.instance = device.vkInstance();
+  info.physicalDevice = device.physical();
+  info.device = device.vk();
+  info.getInstanceProcAddr = vkGetInstanceProcAddr;
+  info.getDeviceProcAddr = vkGetDeviceProcAddr;
+  info.depthFormat = VK_FORMAT_D32_SFLOAT;
+  info.maxRenderExtent = maxExtent;
+  info.maxFramesInFlight = 2;
+  info.reversedZ = true;
+  info.noiseSeed = noiseSeed;
+  std::string error;
+  context_ = clouds::Context::create(info, &error);
+  if (!context_) throw Error("clouds::Context::create: " + error);
+}
+
+CloudHarness::~CloudHarness() { device_.waitIdle(); }
+
+void CloudHarness::prepareDepth(const CloudView& view, VkExtent2D extent) {
+  if (!depth_ || depth_.extent().width != extent.width || depth_.extent().height != extent.height) {
+    depth_ = gfx::Image(device_, gfx::ImageDesc{VK_IMAGE_TYPE_2D, VK_FORMAT_D32_SFLOAT,
+                                                 {extent.width, extent.height, 1}, 1, 1,
+                                                 VK_IMAGE_USAGE_SAMPLED_BIT |
+                                                     VK_IMAGE_USAGE_TRANSFER_DST_BIT,
+                                                 "harness depth"});
+  }
+  // A flat ground at y = 0, ray-cast on the CPU: reversed-Z depth = near / view z.
+  const glm::mat4 inverseProjection = glm::inverse(projectionMatrix(view, extent));
+  const glm::mat3 viewToWorld = glm::transpose(glm::mat3(viewMatrix(view)));
+  const glm::vec3 forward = forwardDirection(view);
+  std::vector<float> depth(std::size_t{extent.width} * extent.height);
+  for (std::uint32_t y = 0; y < extent.height; ++y) {
+    for (std::uint32_t x = 0; x < extent.width; ++x) {
+      const glm::vec2 ndc =
+          (glm::vec2(x, y) + 0.5f) / glm::vec2(extent.width, extent.height) * 2.0f - 1.0f;
+      const glm::vec4 p = inverseProjection * glm::vec4(ndc, 1.0f, 1.0f);
+      const glm::vec3 dir = glm::normalize(viewToWorld * (glm::vec3(p) / p.w));
+      float value = 0.0f;
+      if (dir.y < -1e-4f) {
+        const double t = view.position.y / -double(dir.y);
+        value = static_cast<float>(0.5 / (t * double(glm::dot(dir, forward))));
+      }
+      depth[std::size_t{y} * extent.width + x] = value;
+    }
+  }
+  gfx::uploadToImage(device_, depth_,
+                     std::span(reinterpret_cast<const std::byte*>(depth.data()), depth.size() * 4),
+                     gfx::ImageState{VK_IMAGE_LAYOUT_DEPTH_READ_ONLY_OPTIMAL,
+                                     VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
+                                     VK_ACCESS_2_SHADER_SAMPLED_READ_BIT});
+}
+
+clouds::FrameInputs CloudHarness::makeInputs(const CloudView& view, VkExtent2D extent,
+                                             VkCommandBuffer cmd) {
+  clouds::FrameInputs in;
+  in.commandBuffer = cmd;
+  in.renderExtent = extent;
+  in.depthView = view.groundDepth ? depth_.view() : VK_NULL_HANDLE;
+  in.view = viewMatrix(view);
+  in.projection = projectionMatrix(view, extent);
+  in.cameraPosition = view.position;
+  in.previousView = in.view;
+  in.previousProjection = in.projection;
+  in.previousCameraPosition = in.cameraPosition;
+  in.sunDirection = sunDirection(view);
+  in.sunIlluminance = view.sunIlluminance;
+  in.ambientTop = view.ambientTop;
+  in.ambientBottom = view.ambientBottom;
+  in.timeSeconds = view.timeSeconds;
+  in.frameIndex = frameIndex_;
+  in.reset = frameIndex_ == 0;
+  return in;
+}
+
+std::string CloudHarness::tryRender(const CloudView& view, const clouds::Settings& settings,
+                                    VkExtent2D extent) {
+  if (view.groundDepth) prepareDepth(view, extent);
+  std::string error;
+  bool ok = true;
+  device_.immediateSubmit([&](VkCommandBuffer cmd) {
+    lastInputs_ = makeInputs(view, extent, cmd);
+    ok = context_->dispatch(lastInputs_, settings, &error);
+  });
+  if (ok) ++frameIndex_;
+  return ok ? std::string() : error;
+}
+
+CloudFrame CloudHarness::render(const CloudView& view, const clouds::Settings& settings,
+                                VkExtent2D extent, std::uint32_t frames) {
+  for (std::uint32_t i = 0; i < frames; ++i) {
+    const std::string error = tryRender(view, settings, extent);
+    if (!error.empty()) throw Error("clouds dispatch: " + error);
+  }
+  const clouds::Outputs out = context_->outputs();
+  const gfx::ImageState general{VK_IMAGE_LAYOUT_GENERAL, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
+                                VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT};
+  // Read through a temporary image copy would need the module's images as gfx::Image; copy
+  // directly with a buffer instead.
+  CloudFrame frame;
+  frame.extent = extent;
+  const std::size_t pixels = std::size_t{extent.width} * extent.height;
+  gfx::Buffer radiance(device_, gfx::BufferDesc{pixels * 8, VK_BUFFER_USAGE_TRANSFER_DST_BIT,
+                                                gfx::MemoryUsage::Readback, "harness radiance"});
+  gfx::Buffer depth(device_, gfx::BufferDesc{pixels * 8, VK_BUFFER_USAGE_TRANSFER_DST_BIT,
+                                             gfx::MemoryUsage::Readback, "harness depth readback"});
+  device_.immediateSubmit([&](VkCommandBuffer cmd) {
+    VkBufferImageCopy region{};
+    region.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
+    region.imageExtent = {extent.width, extent.height, 1};
+    const VkImageSubresourceRange range{VK_IMAGE_ASPECT_COLOR_BIT, 0, 1, 0, 1};
+    for (VkImage image : {out.radiance.image, out.depth.image}) {
+      gfx::imageBarrier(cmd, image, range, general,
+                        {VK_IMAGE_LAYOUT_GENERAL, VK_PIPELINE_STAGE_2_TRANSFER_BIT,
+                         VK_ACCESS_2_TRANSFER_READ_BIT});
+    }
+    vkCmdCopyImageToBuffer(cmd, out.radiance.image, VK_IMAGE_LAYOUT_GENERAL, radiance.vk(), 1,
+                           &region);
+    vkCmdCopyImageToBuffer(cmd, out.depth.image, VK_IMAGE_LAYOUT_GENERAL, depth.vk(), 1, &region);
+    for (VkImage image : {out.radiance.image, out.depth.image}) {
+      gfx::imageBarrier(cmd, image, range,
+                        {VK_IMAGE_LAYOUT_GENERAL, VK_PIPELINE_STAGE_2_TRANSFER_BIT,
+                         VK_ACCESS_2_TRANSFER_READ_BIT},
+                        {VK_IMAGE_LAYOUT_GENERAL, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
+                         VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT});
+    }
+    gfx::bufferBarrier(cmd, radiance.vk(), VK_PIPELINE_STAGE_2_TRANSFER_BIT,
+                       VK_ACCESS_2_TRANSFER_WRITE_BIT, VK_PIPELINE_STAGE_2_HOST_BIT,
+                       VK_ACCESS_2_HOST_READ_BIT);
+    gfx::bufferBarrier(cmd, depth.vk(), VK_PIPELINE_STAGE_2_TRANSFER_BIT,
+                       VK_ACCESS_2_TRANSFER_WRITE_BIT, VK_PIPELINE_STAGE_2_HOST_BIT,
+                       VK_ACCESS_2_HOST_READ_BIT);
+  });
+  frame.radiance.resize(pixels);
+  frame.depth.resize(pixels);
+  const auto* halves = reinterpret_cast<const std::uint16_t*>(radiance.mapped());
+  for (std::size_t i = 0; i < pixels; ++i) {
+    frame.radiance[i] = glm::vec4(glm::unpackHalf1x16(halves[4 * i + 0]),
+                                  glm::unpackHalf1x16(halves[4 * i + 1]),
+                                  glm::unpackHalf1x16(halves[4 * i + 2]),
+                                  glm::unpackHalf1x16(halves[4 * i + 3]));
+  }
+  std::memcpy(frame.depth.data(), depth.mapped(), pixels * 8);
+  return frame;
+}
+
+namespace {
+
+std::vector<std::uint8_t> readTexels(gfx::Device& device, VkImage image, VkExtent3D extent) {
+  const std::size_t bytes = std::size_t{4} * extent.width * extent.height * extent.depth;
+  gfx::Buffer buffer(device, gfx::BufferDesc{bytes, VK_BUFFER_USAGE_TRANSFER_DST_BIT,
+                                             gfx::MemoryUsage::Readback, "harness texels"});
+  device.immediateSubmit([&](VkCommandBuffer cmd) {
+    const VkImageSubresourceRange range{VK_IMAGE_ASPECT_COLOR_BIT, 0, 1, 0, 1};
+    const gfx::ImageState general{VK_IMAGE_LAYOUT_GENERAL, VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT,
+                                  VK_ACCESS_2_MEMORY_WRITE_BIT};
+    gfx::imageBarrier(cmd, image, range, general,
+                      {VK_IMAGE_LAYOUT_GENERAL, VK_PIPELINE_STAGE_2_TRANSFER_BIT,
+                       VK_ACCESS_2_TRANSFER_READ_BIT});
+    VkBufferImageCopy region{};
+    region.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
+    region.imageExtent = extent;
+    vkCmdCopyImageToBuffer(cmd, image, VK_IMAGE_LAYOUT_GENERAL, buffer.vk(), 1, &region);
+    gfx::imageBarrier(cmd, image, range,
+                      {VK_IMAGE_LAYOUT_GENERAL, VK_PIPELINE_STAGE_2_TRANSFER_BIT,
+                       VK_ACCESS_2_TRANSFER_READ_BIT},
+                      {VK_IMAGE_LAYOUT_GENERAL, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
+                       VK_ACCESS_2_SHADER_STORAGE_READ_BIT | VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT});
+    gfx::bufferBarrier(cmd, buffer.vk(), VK_PIPELINE_STAGE_2_TRANSFER_BIT,
+                       VK_ACCESS_2_TRANSFER_WRITE_BIT, VK_PIPELINE_STAGE_2_HOST_BIT,
+                       VK_ACCESS_2_HOST_READ_BIT);
+  });
+  std::vector<std::uint8_t> texels(bytes);
+  std::memcpy(texels.data(), buffer.mapped(), bytes);
+  return texels;
+}
+
+}  // namespace
+
+std::vector<std::uint8_t> CloudHarness::readShapeNoise() {
+  const auto& image = context_->impl().shapeNoise();
+  return readTexels(device_, image.image(), image.extent());
+}
+std::vector<std::uint8_t> CloudHarness::readDetailNoise() {
+  const auto& image = context_->impl().detailNoise();
+  return readTexels(device_, image.image(), image.extent());
+}
+std::vector<std::uint8_t> CloudHarness::readCurlNoise() {
+  const auto& image = context_->impl().curlNoise();
+  return readTexels(device_, image.image(), image.extent());
+}
+std::vector<std::uint8_t> CloudHarness::readWeatherMap() {
+  const auto& image = context_->impl().weatherMap();
+  return readTexels(device_, image.image(), image.extent());
+}
+
+assets::ImageRgba8 previewImage(const CloudFrame& frame, const CloudView& view, float exposure) {
+  assets::ImageRgba8 image{frame.extent.width, frame.extent.height, {}};
+  image.pixels.resize(std::size_t{4} * frame.extent.width * frame.extent.height);
+  const glm::mat4 inverseProjection = glm::inverse(projectionMatrix(view, frame.extent));
+  const glm::mat3 viewToWorld = glm::transpose(glm::mat3(viewMatrix(view)));
+  for (std::uint32_t y = 0; y < frame.extent.height; ++y) {
+    for (std::uint32_t x = 0; x < frame.extent.width; ++x) {
+      const std::size_t i = std::size_t{y} * frame.extent.width + x;
+      const glm::vec2 ndc = (glm::vec2(x, y) + 0.5f) /
+                                glm::vec2(frame.extent.width, frame.extent.height) * 2.0f - 1.0f;
+      const glm::vec4 p = inverseProjection * glm::vec4(ndc, 1.0f, 1.0f);
+      const glm::vec3 dir = glm::normalize(viewToWorld * (glm::vec3(p) / p.w));
+      const glm::vec3 background =
+          dir.y > 0.0f ? glm::mix(glm::vec3(0.55f, 0.62f, 0.75f), glm::vec3(0.15f, 0.28f, 0.65f),
+                                  std::sqrt(dir.y))
+                       : glm::vec3(0.08f, 0.09f, 0.07f);
+      const glm::vec4 c = frame.radiance[i];
+      const glm::vec3 hdr = background * c.a + glm::vec3(c);
+      const glm::vec3 mapped = engine::shaders::tonemap(hdr, exposure);
+      for (int k = 0; k < 3; ++k) {
+        image.pixels[4 * i + static_cast<std::size_t>(k)] = static_cast<std::uint8_t>(
+            std::clamp(engine::shaders::linearToSrgb(mapped[k]), 0.0f, 1.0f) * 255.0f + 0.5f);
+      }
+      image.pixels[4 * i + 3] = 255;
+    }
+  }
+  return image;
+}
+
+double psnr(const std::vector<glm::vec4>& a, const std::vector<glm::vec4>& b, double peak) {
+  if (a.size() != b.size() || a.empty()) return 0.0;
+  double sum = 0.0;
+  for (std::size_t i = 0; i < a.size(); ++i) {
+    const glm::dvec4 d = glm::dvec4(a[i]) - glm::dvec4(b[i]);
+    sum += glm::dot(d, d);
+  }
+  const double mse = sum / (4.0 * static_cast<double>(a.size()));
+  if (mse <= 0.0) return 200.0;
+  return 10.0 * std::log10(peak * peak / mse);
+}
+
+}  // namespace test
