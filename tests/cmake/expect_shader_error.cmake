@@ -2,7 +2,7 @@
 # output names broken.comp:3.
 file(REMOVE_RECURSE ${BINARY_DIR})
 execute_process(COMMAND ${CMAKE_COMMAND} -S ${SOURCE_DIR} -B ${BINARY_DIR} -G Ninja
-                        -DCLOUDSCAPE_CMAKE_DIR=${CLOUDSCAPE_CMAKE_DIR}
+                        -DCLOUDS_MODULE_DIR=${CLOUDS_MODULE_DIR}
                 RESULT_VARIABLE configure_result OUTPUT_QUIET)
 if(NOT configure_result EQUAL 0)
   message(FATAL_ERROR "configuring the check project failed")

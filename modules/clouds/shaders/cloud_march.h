@@ -115,6 +115,14 @@ CLOUDS_INLINE FieldSample sampleField(vec3 flatOffset, float altitude, float dis
   s.sigmaT = 0.0f;
   s.baseSigmaT = 0.0f;
   if (s.heightFraction < 0.0f || s.heightFraction > 1.0f) return s;
+  if ((u.frame.z & kFlagHomogeneous) != 0u) {
+    // Test mode: a homogeneous slab with extinction u.density.x, for analytic comparisons.
+    s.base = 1.0f;
+    s.density = 1.0f;
+    s.sigmaT = u.density.x;
+    s.baseSigmaT = u.density.x;
+    return s;
+  }
   // Coverage is held still (the weather map is not scrolled); the noise moves with the wind.
   const vec2 weatherUv = (vec2(u.weather.x, u.weather.y) + vec2(flatOffset.x, flatOffset.z)) /
                          u.weather.z;

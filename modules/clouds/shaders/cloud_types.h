@@ -19,6 +19,7 @@ const uint kWorkgroupSize3D = 4u;  // 4x4x4 threads for volume generation
 // Flags in CloudUniforms.frame.z.
 const uint kFlagReversedZ = 1u;      // host depth: near = 1, far/sky = 0
 const uint kFlagHasDepth = 2u;       // a depth buffer is bound (else: nothing occludes)
+const uint kFlagHomogeneous = 4u;    // tests: density 1 everywhere inside the layer
 
 // Specialization constant ids of the march shader.
 const uint kSpecJitter = 0u;            // 0 none, 1 Bayer 4x4 + Halton frame offset

@@ -333,6 +333,7 @@ void Context::Impl::dispatch(const FrameInputs& inputs, const Settings& settings
   uniformContext.traceExtent = inputs.renderExtent;
   uniformContext.fullExtent = inputs.renderExtent;
   lastUniforms_ = detail::buildUniforms(inputs, settings, uniformContext);
+  lastUniforms_.frame.z |= debugFlags_;
   recordUniforms(cmd, slot, lastUniforms_);
   if (inputs.skyView != VK_NULL_HANDLE) recordSkyAmbient(cmd, inputs, slot);
   recordMarch(cmd, inputs, settings, slot);

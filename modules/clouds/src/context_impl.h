@@ -34,6 +34,8 @@ class Context::Impl {
   std::size_t pipelineVariantCount() const { return march_->variantCount(); }
   // How many times the weather map has been (re)generated or resampled.
   std::uint64_t weatherUpdates() const { return weatherUpdates_; }
+  // Test-only uniform flags (e.g. shader::kFlagHomogeneous) ORed into every frame.
+  void setDebugFlags(std::uint32_t flags) { debugFlags_ = flags; }
 
  private:
   struct Slot {
@@ -88,6 +90,7 @@ class Context::Impl {
   std::uint32_t lastSlot_ = 0;
   VkExtent2D lastExtent_{0, 0};
   shader::CloudUniforms lastUniforms_{};
+  std::uint32_t debugFlags_ = 0;
 };
 
 }  // namespace clouds

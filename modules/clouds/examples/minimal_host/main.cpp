@@ -6,6 +6,7 @@
 //   3. records clouds::Context::dispatch() and composite() into its own command buffer,
 //   4. submits, reads the colour back, tonemaps it and writes a PNG.
 // Usage: clouds_minimal_host [--output FILE.png] [--width W] [--height H] [--validation]
+//                            [--no-clouds]   (the scene alone, for comparison)
 // With --validation (or CLOUDSCAPE_VALIDATION=1) any validation message makes it exit 3.
 #include <vulkan/vulkan.h>
 
@@ -357,6 +358,7 @@ int main(int argc, char** argv) {
   VkExtent2D extent{320, 180};
   const char* env = std::getenv("CLOUDSCAPE_VALIDATION");
   bool validation = env != nullptr && env[0] != '\0' && env[0] != '0';
+  bool withClouds = true;
   for (int i = 1; i < argc; ++i) {
     const std::string arg = argv[i];
     if (arg == "--output" && i + 1 < argc) {
@@ -367,8 +369,12 @@ int main(int argc, char** argv) {
       extent.height = static_cast<std::uint32_t>(std::atoi(argv[++i]));
     } else if (arg == "--validation") {
       validation = true;
+    } else if (arg == "--no-clouds") {
+      withClouds = false;
     } else {
-      std::fprintf(stderr, "usage: %s [--output FILE.png] [--width W] [--height H] [--validation]\n",
+      std::fprintf(stderr,
+                   "usage: %s [--output FILE.png] [--width W] [--height H] [--validation] "
+                   "[--no-clouds]\n",
                    argv[0]);
       return 2;
     }
@@ -479,9 +485,10 @@ int main(int argc, char** argv) {
   inputs.timeSeconds = 0.0;
   inputs.frameIndex = 0;
   inputs.reset = true;
-  clouds::Settings settings;  // the defaults: scattered cumulus
-  if (!clouds->dispatch(inputs, settings, &error) ||
-      !clouds->composite(cmd, colour.view, extent, &error)) {
+  clouds::Settings settings;  // the defaults, with a little more coverage: broken cumulus
+  settings.coverage = 0.62f;
+  if (withClouds && (!clouds->dispatch(inputs, settings, &error) ||
+                     !clouds->composite(cmd, colour.view, extent, &error))) {
     std::fprintf(stderr, "minimal_host: %s\n", error.c_str());
     return 1;
   }

@@ -85,6 +85,7 @@ void CloudHarness::prepareDepth(const CloudView& view, VkExtent2D extent) {
       depth[std::size_t{y} * extent.width + x] = value;
     }
   }
+  depthValues_ = depth;
   gfx::uploadToImage(device_, depth_,
                      std::span(reinterpret_cast<const std::byte*>(depth.data()), depth.size() * 4),
                      gfx::ImageState{VK_IMAGE_LAYOUT_DEPTH_READ_ONLY_OPTIMAL,
@@ -109,6 +110,8 @@ clouds::FrameInputs CloudHarness::makeInputs(const CloudView& view, VkExtent2D e
   in.ambientTop = view.ambientTop;
   in.ambientBottom = view.ambientBottom;
   in.timeSeconds = view.timeSeconds;
+  in.weatherView = view.weatherView;
+  in.skyView = view.skyView;
   in.frameIndex = frameIndex_;
   in.reset = frameIndex_ == 0;
   return in;
@@ -116,7 +119,11 @@ clouds::FrameInputs CloudHarness::makeInputs(const CloudView& view, VkExtent2D e
 
 std::string CloudHarness::tryRender(const CloudView& view, const clouds::Settings& settings,
                                     VkExtent2D extent) {
-  if (view.groundDepth) prepareDepth(view, extent);
+  if (view.groundDepth) {
+    prepareDepth(view, extent);
+  } else {
+    depthValues_.clear();
+  }
   std::string error;
   bool ok = true;
   device_.immediateSubmit([&](VkCommandBuffer cmd) {
@@ -136,8 +143,6 @@ CloudFrame CloudHarness::render(const CloudView& view, const clouds::Settings& s
   const clouds::Outputs out = context_->outputs();
   const gfx::ImageState general{VK_IMAGE_LAYOUT_GENERAL, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
                                 VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT};
-  // Read through a temporary image copy would need the module's images as gfx::Image; copy
-  // directly with a buffer instead.
   CloudFrame frame;
   frame.extent = extent;
   const std::size_t pixels = std::size_t{extent.width} * extent.height;
@@ -150,20 +155,18 @@ CloudFrame CloudHarness::render(const CloudView& view, const clouds::Settings& s
     region.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
     region.imageExtent = {extent.width, extent.height, 1};
     const VkImageSubresourceRange range{VK_IMAGE_ASPECT_COLOR_BIT, 0, 1, 0, 1};
+    const gfx::ImageState source{VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
+                                 VK_PIPELINE_STAGE_2_TRANSFER_BIT, VK_ACCESS_2_TRANSFER_READ_BIT};
     for (VkImage image : {out.radiance.image, out.depth.image}) {
-      gfx::imageBarrier(cmd, image, range, general,
-                        {VK_IMAGE_LAYOUT_GENERAL, VK_PIPELINE_STAGE_2_TRANSFER_BIT,
-                         VK_ACCESS_2_TRANSFER_READ_BIT});
+      gfx::imageBarrier(cmd, image, range, general, source);
     }
-    vkCmdCopyImageToBuffer(cmd, out.radiance.image, VK_IMAGE_LAYOUT_GENERAL, radiance.vk(), 1,
-                           &region);
-    vkCmdCopyImageToBuffer(cmd, out.depth.image, VK_IMAGE_LAYOUT_GENERAL, depth.vk(), 1, &region);
+    vkCmdCopyImageToBuffer(cmd, out.radiance.image, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
+                           radiance.vk(), 1, &region);
+    vkCmdCopyImageToBuffer(cmd, out.depth.image, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, depth.vk(),
+                           1, &region);
+    // Back to GENERAL, as the module expects its outputs between frames.
     for (VkImage image : {out.radiance.image, out.depth.image}) {
-      gfx::imageBarrier(cmd, image, range,
-                        {VK_IMAGE_LAYOUT_GENERAL, VK_PIPELINE_STAGE_2_TRANSFER_BIT,
-                         VK_ACCESS_2_TRANSFER_READ_BIT},
-                        {VK_IMAGE_LAYOUT_GENERAL, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
-                         VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT});
+      gfx::imageBarrier(cmd, image, range, source, general);
     }
     gfx::bufferBarrier(cmd, radiance.vk(), VK_PIPELINE_STAGE_2_TRANSFER_BIT,
                        VK_ACCESS_2_TRANSFER_WRITE_BIT, VK_PIPELINE_STAGE_2_HOST_BIT,
@@ -195,16 +198,15 @@ std::vector<std::uint8_t> readTexels(gfx::Device& device, VkImage image, VkExten
     const VkImageSubresourceRange range{VK_IMAGE_ASPECT_COLOR_BIT, 0, 1, 0, 1};
     const gfx::ImageState general{VK_IMAGE_LAYOUT_GENERAL, VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT,
                                   VK_ACCESS_2_MEMORY_WRITE_BIT};
-    gfx::imageBarrier(cmd, image, range, general,
-                      {VK_IMAGE_LAYOUT_GENERAL, VK_PIPELINE_STAGE_2_TRANSFER_BIT,
-                       VK_ACCESS_2_TRANSFER_READ_BIT});
+    const gfx::ImageState source{VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
+                                 VK_PIPELINE_STAGE_2_TRANSFER_BIT, VK_ACCESS_2_TRANSFER_READ_BIT};
+    gfx::imageBarrier(cmd, image, range, general, source);
     VkBufferImageCopy region{};
     region.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
     region.imageExtent = extent;
-    vkCmdCopyImageToBuffer(cmd, image, VK_IMAGE_LAYOUT_GENERAL, buffer.vk(), 1, &region);
-    gfx::imageBarrier(cmd, image, range,
-                      {VK_IMAGE_LAYOUT_GENERAL, VK_PIPELINE_STAGE_2_TRANSFER_BIT,
-                       VK_ACCESS_2_TRANSFER_READ_BIT},
+    vkCmdCopyImageToBuffer(cmd, image, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, buffer.vk(), 1,
+                           &region);
+    gfx::imageBarrier(cmd, image, range, source,
                       {VK_IMAGE_LAYOUT_GENERAL, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
                        VK_ACCESS_2_SHADER_STORAGE_READ_BIT | VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT});
     gfx::bufferBarrier(cmd, buffer.vk(), VK_PIPELINE_STAGE_2_TRANSFER_BIT,

@@ -31,6 +31,9 @@ struct CloudView {
   glm::vec3 ambientBottom{0.25f, 0.27f, 0.3f};
   bool groundDepth = false;  // a flat ground at y = 0 in the host depth buffer
   double timeSeconds = 0.0;
+  // Optional host images (sampled, SHADER_READ_ONLY_OPTIMAL): painted weather, sky radiance.
+  VkImageView weatherView = VK_NULL_HANDLE;
+  VkImageView skyView = VK_NULL_HANDLE;
 };
 
 glm::vec3 sunDirection(const CloudView& view);
@@ -57,6 +60,8 @@ class CloudHarness {
   std::string tryRender(const CloudView& view, const clouds::Settings& settings, VkExtent2D extent);
 
   clouds::Context& context() { return *context_; }
+  // The host depth values of the last render with groundDepth (reversed-Z), else empty.
+  const std::vector<float>& lastDepth() const { return depthValues_; }
   const clouds::FrameInputs& lastInputs() const { return lastInputs_; }
 
   // Read-backs of the module's textures as RGBA8 texels (valid after a render).
@@ -72,6 +77,7 @@ class CloudHarness {
   engine::gfx::Device& device_;
   std::unique_ptr<clouds::Context> context_;
   engine::gfx::Image depth_;
+  std::vector<float> depthValues_;
   std::uint64_t frameIndex_ = 0;
   clouds::FrameInputs lastInputs_{};
 };

@@ -1,0 +1,29 @@
+#pragma once
+// The CPU reference renderer: the module's shared cloud model (shaders/cloud_march.h and the
+// headers it includes) compiled as C++, sampling CPU copies of the very texels the GPU used.
+// Given the same uniforms it computes what the march shader should have written.
+#include <cstdint>
+#include <vector>
+
+#include "cloud_harness.h"
+#include "cloud_types.h"
+
+namespace test {
+
+struct CpuTextures {
+  std::vector<std::uint8_t> shape;    // 128^3 RGBA8
+  std::vector<std::uint8_t> detail;   // 32^3 RGBA8
+  std::vector<std::uint8_t> curl;     // 128^2 RGBA8
+  std::vector<std::uint8_t> weather;  // 512^2 RGBA8
+};
+
+CpuTextures readTextures(CloudHarness& harness);
+
+// Renders with the uniforms and options of a GPU frame. `depth`, when non-empty, holds the
+// host depth values the GPU sampled (reversed-Z), one per pixel.
+CloudFrame renderCpuReference(const CpuTextures& textures,
+                              const clouds::shader::CloudUniforms& uniforms,
+                              const clouds::Settings& settings, const std::vector<float>& depth,
+                              unsigned threads = 2);
+
+}  // namespace test
