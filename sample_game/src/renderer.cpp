@@ -12,13 +12,15 @@ namespace sample {
 
 using namespace engine;
 
-Renderer::Renderer(gfx::Device& device, render::PresentTarget& target)
+Renderer::Renderer(gfx::Device& device, render::PresentTarget& target, VkExtent2D maxExtent)
     : device_(device),
       target_(target),
       ring_(device),
       tonemapper_(device, kHdrFormat, target.format()),
       firstFrame_(device, kHdrFormat, kDepthFormat),
+      clouds_(device, maxExtent, kDepthFormat, /*noiseSeed=*/1, gfx::FrameRing::kFramesInFlight),
       capture_(device) {
+  clouds_.settings().coverage = 0.62f;
   const gfx::Pipeline* pipelines[] = {&tonemapper_.pipeline(), &firstFrame_.sky(),
                                       &firstFrame_.pattern()};
   const double ms = gfx::warmUpPipelines(device, pipelines);
@@ -37,9 +39,11 @@ void Renderer::rebuildGraph(VkExtent2D extent) {
   hdrDesc.format = kHdrFormat;
   const render::TextureHandle hdr = addSkyGradientPass(graph, firstFrame_, hdrDesc, &params_);
   const SceneTargets scene = addTestPatternPass(graph, firstFrame_, hdr, kDepthFormat, &params_);
+  const clouds::ecs::CloudPassOutputs clouds =
+      clouds::ecs::addCloudPasses(graph, clouds_, scene.depth, scene.hdr);
   const render::TextureHandle display =
-      render::addTonemapPass(graph, tonemapper_, scene.hdr, targetHandle_, &tonemap_);
-  capture_.addToGraph(graph, scene.hdr, display);
+      render::addTonemapPass(graph, tonemapper_, clouds.hdr, targetHandle_, &tonemap_);
+  capture_.addToGraph(graph, clouds.hdr, display);
   graph.compile();
   graphExtent_ = extent;
 }
@@ -69,6 +73,20 @@ void Renderer::updateParams(ecs::World& world, VkExtent2D extent) {
       render::perspectiveReversedZ(camera.verticalFovRadians, aspect, 0.1f);
   params_.pattern.viewProjection = projection * view;
   params_.pattern.params = glm::vec4(static_cast<float>(time.elapsedSeconds), 0, 0, 0);
+
+  clouds::FrameInputs& in = clouds_.frameInputs();
+  in.previousView = in.view;
+  in.previousProjection = in.projection;
+  in.previousCameraPosition = in.cameraPosition;
+  in.view = view;
+  in.projection = projection;
+  in.cameraPosition = camera.position;
+  in.sunDirection = glm::vec3(directionOf(sun));
+  in.sunIlluminance = glm::vec3(10.0f, 9.6f, 9.0f) * sun.illuminance;
+  in.ambientTop = glm::vec3(0.35f, 0.5f, 0.85f);
+  in.ambientBottom = glm::vec3(0.25f, 0.27f, 0.3f);
+  in.timeSeconds = time.elapsedSeconds;
+  in.reset = time.frameIndex == 0;
 }
 
 void Renderer::renderFrame(ecs::World& world) {

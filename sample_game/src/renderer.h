@@ -11,6 +11,7 @@
 #include "engine/render/frame_graph.h"
 #include "engine/render/present_target.h"
 #include "engine/render/tonemap_pass.h"
+#include "clouds/ecs/cloud_renderer.h"
 #include "first_frame_passes.h"
 
 namespace sample {
@@ -20,7 +21,9 @@ class Renderer {
   static constexpr VkFormat kHdrFormat = VK_FORMAT_R16G16B16A16_SFLOAT;
   static constexpr VkFormat kDepthFormat = VK_FORMAT_D32_SFLOAT;
 
-  Renderer(engine::gfx::Device& device, engine::render::PresentTarget& target);
+  // `maxExtent` bounds the render size (windows larger than it are rejected by the clouds).
+  Renderer(engine::gfx::Device& device, engine::render::PresentTarget& target,
+           VkExtent2D maxExtent);
   ~Renderer();
 
   // Records and submits the frame for the world's current state. Skips rendering (but keeps
@@ -42,6 +45,7 @@ class Renderer {
   engine::gfx::FrameRing ring_;
   engine::render::Tonemapper tonemapper_;
   FirstFramePipelines firstFrame_;
+  clouds::ecs::CloudRenderer clouds_;
   engine::render::FrameCapture capture_;
   std::unique_ptr<engine::render::FrameGraph> graph_;
   engine::render::TextureHandle targetHandle_;

@@ -1,5 +1,6 @@
 #include "runtime.h"
 
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <memory>
@@ -81,7 +82,8 @@ int run(Options options) {
     ecs::App app;
     populateWorld(app.world());
     installCameraControls(app.scheduler());
-    Renderer renderer(device, *target);
+    Renderer renderer(device, *target, VkExtent2D{std::max(options.width, 3840u),
+                                                  std::max(options.height, 2160u)});
     app.scheduler().add(ecs::Phase::Render, "render frame",
                         [&renderer](ecs::World& world) { renderer.renderFrame(world); });
 

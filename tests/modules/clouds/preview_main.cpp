@@ -7,6 +7,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <map>
+#include <vector>
 #include <string>
 
 #include "cloud_harness.h"
@@ -71,6 +72,18 @@ int main(int argc, char** argv) {
         std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
     engine::assets::writePng(argv[1], test::previewImage(frame, view,
                                                          static_cast<float>(get("exposure", 1))));
+    if (const int repeats = static_cast<int>(get("timing", 0)); repeats > 0) {
+      // Median GPU time of the module's frame after the first (JIT and noise) frames.
+      std::vector<double> times;
+      for (int i = 0; i < repeats; ++i) {
+        harness.render(view, s, extent);
+        times.push_back(harness.lastGpuMilliseconds());
+      }
+      std::sort(times.begin(), times.end());
+      std::printf("GPU time %ux%u: median %.1f ms, min %.1f, max %.1f over %d frames\n",
+                  extent.width, extent.height, times[times.size() / 2], times.front(),
+                  times.back(), repeats);
+    }
     if (get("dumpTextures", 0) != 0) {
       // Weather map (RGB) and slice 0 of the shape and detail noise (R, G, B, A side by side).
       const auto weather = harness.readWeatherMap();

@@ -126,10 +126,16 @@ std::string CloudHarness::tryRender(const CloudView& view, const clouds::Setting
   }
   std::string error;
   bool ok = true;
+  if (!timer_) timer_ = std::make_unique<gfx::GpuTimer>(device_, 1, "harness timer");
+  timer_->reset();
   device_.immediateSubmit([&](VkCommandBuffer cmd) {
     lastInputs_ = makeInputs(view, extent, cmd);
+    const std::uint32_t scope = timer_->begin(cmd, "clouds");
     ok = context_->dispatch(lastInputs_, settings, &error);
+    timer_->end(cmd, scope);
   });
+  const auto scopes = timer_->resolve();
+  lastGpuMilliseconds_ = scopes.empty() ? 0.0 : scopes[0].milliseconds;
   if (ok) ++frameIndex_;
   return ok ? std::string() : error;
 }

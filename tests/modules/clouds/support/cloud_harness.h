@@ -14,6 +14,7 @@
 #include "clouds/clouds.h"
 #include "engine/assets/image_io.h"
 #include "engine/gfx/device.h"
+#include "engine/gfx/gpu_timer.h"
 #include "engine/gfx/resources.h"
 
 namespace test {
@@ -63,6 +64,8 @@ class CloudHarness {
   // The host depth values of the last render with groundDepth (reversed-Z), else empty.
   const std::vector<float>& lastDepth() const { return depthValues_; }
   const clouds::FrameInputs& lastInputs() const { return lastInputs_; }
+  // GPU time of the module's work in the last render's final frame (timestamps), in ms.
+  double lastGpuMilliseconds() const { return lastGpuMilliseconds_; }
 
   // Read-backs of the module's textures as RGBA8 texels (valid after a render).
   std::vector<std::uint8_t> readShapeNoise();
@@ -79,6 +82,8 @@ class CloudHarness {
   engine::gfx::Image depth_;
   std::vector<float> depthValues_;
   std::uint64_t frameIndex_ = 0;
+  std::unique_ptr<engine::gfx::GpuTimer> timer_;
+  double lastGpuMilliseconds_ = 0.0;
   clouds::FrameInputs lastInputs_{};
 };
 
