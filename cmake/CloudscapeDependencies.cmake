@@ -12,11 +12,11 @@ target_compile_definitions(glm::glm INTERFACE GLM_FORCE_DEPTH_ZERO_TO_ONE GLM_FO
                                                GLM_ENABLE_EXPERIMENTAL)
 
 find_program(GLSLANG_VALIDATOR glslangValidator REQUIRED)
+find_package(nlohmann_json 3.10 REQUIRED)
 
 if(CLOUDSCAPE_BUILD_SAMPLE OR CLOUDSCAPE_BUILD_TESTS)
   find_package(glfw3 3.3 REQUIRED)
   find_package(TinyGLTF REQUIRED)
-  find_package(nlohmann_json 3.10 REQUIRED)
   # OpenImageIO through pkg-config: Debian's CMake package config references files from other
   # packages (/usr/bin/iconvert, the PyImath module, /usr/include/opencv4) and fails to load.
   find_package(PkgConfig REQUIRED)

@@ -23,6 +23,16 @@ ParseResult parseOptions(int argc, char** argv) {
       ->check(CLI::Range(0.0, 10.0));
   cli.add_flag("--validation", options.validation, "Enable Vulkan validation layers");
   cli.add_option("--device", options.device, "Vulkan device: cpu, gpu or a name substring");
+  std::string scene;
+  cli.add_option("--scene", scene, "Scene JSON (default: assets_src/scenes/default.json)");
+  std::string terrain;
+  cli.add_option("--terrain", terrain, "Fly over this .gltf/.glb instead of the scene's terrain");
+  std::string script;
+  cli.add_option("--script", script, "Frame-indexed input/events script (JSON) for headless runs");
+  cli.add_flag("--describe", options.describe,
+               "Print the frame graph's passes and the pipelines created, then exit");
+  bool noHud = false;
+  cli.add_flag("--no-hud", noHud, "Hide the on-screen help and frame rate");
   bool noVsync = false;
   cli.add_flag("--no-vsync", noVsync, "Present without waiting for vertical blank");
   try {
@@ -31,7 +41,11 @@ ParseResult parseOptions(int argc, char** argv) {
     return ParseResult{std::nullopt, cli.exit(e)};
   }
   if (!captureDir.empty()) options.captureDir = captureDir;
+  if (!scene.empty()) options.scene = scene;
+  if (!terrain.empty()) options.terrain = terrain;
+  if (!script.empty()) options.script = script;
   options.vsync = !noVsync;
+  options.hud = !noHud;
   return ParseResult{options, 0};
 }
 

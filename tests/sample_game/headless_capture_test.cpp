@@ -1,11 +1,15 @@
-// Runs the sample binary headless, as a user would, and checks what it wrote: the exit code
-// (non-zero on any validation message), the image sizes and the content (sky above, ground
-// below, the test pattern in the middle, HDR values above 1 in the EXR, nothing non-finite).
+// Runs the sample binary headless, as a user would, and checks what it writes: the exit code
+// (non-zero on any validation message), image sizes and content (sky above, terrain below,
+// clouds, HDR in the EXR, nothing non-finite), determinism, the pass list each kind of scene
+// gets, flying over a user's glTF, and clear failures for bad arguments and scenes.
 #include <gtest/gtest.h>
 
+#include <array>
 #include <cmath>
+#include <cstdio>
 #include <cstdlib>
 #include <filesystem>
+#include <memory>
 #include <string>
 
 #include "engine/assets/image_io.h"
@@ -21,66 +25,118 @@ int runSample(const std::string& arguments) {
   return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
 }
 
+std::string runSampleOutput(const std::string& arguments) {
+  const std::string command = std::string(SAMPLE_GAME_EXE) + " " + arguments + " 2>/dev/null";
+  std::unique_ptr<FILE, int (*)(FILE*)> pipe(popen(command.c_str(), "r"), pclose);
+  std::string out;
+  std::array<char, 512> buffer{};
+  while (pipe && std::fgets(buffer.data(), buffer.size(), pipe.get()) != nullptr) out += buffer.data();
+  return out;
+}
+
 fs::path freshDir(const char* name) {
   const fs::path dir = fs::temp_directory_path() / "cloudscape_sample_tests" / name;
   fs::remove_all(dir);
   return dir;
 }
 
+std::string scene(const char* name) { return std::string(SAMPLE_TEST_DIR) + "/scenes/" + name; }
+
 TEST(HeadlessCapture, WritesPngAndExrOfTheLastFrame) {
   const fs::path dir = freshDir("last");
-  ASSERT_EQ(runSample("--headless --frames 3 --width 160 --height 90 --validation --capture " +
+  ASSERT_EQ(runSample("--headless --frames 2 --width 160 --height 90 --validation --capture " +
                       dir.string()),
             0);
   ASSERT_FALSE(fs::exists(dir / "frame_0000.png")) << "only the last frame by default";
-  const ImageRgba32f png = engine::assets::readImage(dir / "frame_0002.png");
-  const ImageRgba32f exr = engine::assets::readImage(dir / "frame_0002.exr");
+  const ImageRgba32f png = engine::assets::readImage(dir / "frame_0001.png");
+  const ImageRgba32f exr = engine::assets::readImage(dir / "frame_0001.exr");
   ASSERT_EQ(png.width, 160u);
   ASSERT_EQ(png.height, 90u);
   ASSERT_EQ(exr.width, 160u);
   ASSERT_EQ(exr.height, 90u);
+  for (float v : exr.pixels) ASSERT_TRUE(std::isfinite(v));
 
-  // Sky at the top: blue dominates. Ground at the bottom corners: darker than the sky.
-  const float* top = png.at(5, 2);
-  EXPECT_GT(top[2], top[0]) << "top-left should be sky blue";
-  const float* bottom = png.at(5, 88);
-  EXPECT_LT(bottom[0] + bottom[1] + bottom[2], top[0] + top[1] + top[2]);
-
-  // The test pattern: somewhere in the middle band a strongly red, a green and a blue quad.
-  bool red = false, green = false, blue = false;
-  for (std::uint32_t y = 45; y < 90; ++y) {
-    for (std::uint32_t x = 40; x < 120; ++x) {
-      const float* p = exr.at(x, y);
-      red = red || (p[0] > 1.5f && p[0] > 3 * p[1]);
-      green = green || (p[1] > 1.5f && p[1] > 3 * p[0]);
-      blue = blue || (p[2] > 1.5f && p[2] > 3 * p[0]);
+  // The default scene: terrain fills the bottom rows (darker, green-dominant), the top row is
+  // sky or cloud (bright), and somewhere there are white clouds (near-grey, bright).
+  double topBrightness = 0.0, bottomBrightness = 0.0;
+  for (std::uint32_t x = 0; x < png.width; ++x) {
+    const float* top = png.at(x, 1);
+    const float* bottom = png.at(x, png.height - 2);
+    topBrightness += top[0] + top[1] + top[2];
+    bottomBrightness += bottom[0] + bottom[1] + bottom[2];
+    EXPECT_GT(bottom[1], bottom[2]) << "the ground in front should be terrain, not sky";
+  }
+  EXPECT_GT(topBrightness, bottomBrightness);
+  int cloudy = 0;
+  for (std::uint32_t y = 0; y < png.height / 2; ++y) {
+    for (std::uint32_t x = 0; x < png.width; ++x) {
+      const float* p = png.at(x, y);
+      const bool grey = std::abs(p[0] - p[2]) < 0.08f && p[0] > 0.55f;
+      cloudy += grey ? 1 : 0;
     }
   }
-  EXPECT_TRUE(red && green && blue) << "red " << red << " green " << green << " blue " << blue;
-
-  for (float v : exr.pixels) ASSERT_TRUE(std::isfinite(v));
+  EXPECT_GT(cloudy, 200) << "no white clouds in the upper half";
 }
 
 TEST(HeadlessCapture, CaptureAllWritesEveryFrameAndRunsAreDeterministic) {
   const fs::path a = freshDir("all_a");
   const fs::path b = freshDir("all_b");
-  const std::string common = "--headless --frames 2 --fixed-dt 0.5 --width 96 --height 64 --capture-all --capture ";
+  const std::string common = "--headless --frames 2 --fixed-dt 0.5 --width 96 --height 54 --capture-all --capture ";
   ASSERT_EQ(runSample(common + a.string()), 0);
   ASSERT_EQ(runSample(common + b.string()), 0);
-  for (const char* name : {"frame_0000.png", "frame_0001.png"}) {
+  for (const char* name : {"frame_0000.png", "frame_0001.png", "frame_0001.exr"}) {
     const ImageRgba32f x = engine::assets::readImage(a / name);
     const ImageRgba32f y = engine::assets::readImage(b / name);
     ASSERT_EQ(x.pixels, y.pixels) << name << " differs between identical runs";
   }
-  // The pattern spins with time: consecutive frames differ.
+  // The aircraft flies: consecutive frames differ.
   EXPECT_NE(engine::assets::readImage(a / "frame_0000.png").pixels,
             engine::assets::readImage(a / "frame_0001.png").pixels);
 }
 
-TEST(HeadlessCapture, BadArgumentsFailWithAMessage) {
+TEST(HeadlessCapture, EachSceneGetsOnlyThePassesAndPipelinesItNeeds) {
+  struct Case {
+    std::string scene;
+    std::string passes;
+    std::string pipelines;
+    std::string modules;
+  };
+  const Case cases[] = {
+      {scene("sky_only.json"), R"("passes": ["sky", "tonemap", "capture"])",
+       R"("pipelines": ["tonemap", "sky"])", R"("modules": [])"},
+      {scene("terrain_only.json"), R"("passes": ["sky", "terrain", "tonemap", "capture"])",
+       R"("pipelines": ["tonemap", "sky", "terrain"])", R"("modules": [])"},
+      {scene("clouds_only.json"),
+       R"("passes": ["sky", "clouds", "clouds composite", "tonemap", "capture"])",
+       R"("pipelines": ["tonemap", "sky", "clouds module"])", R"("modules": ["clouds"])"},
+      {std::string(SAMPLE_ASSET_DIR) + "/scenes/default.json",
+       R"("passes": ["sky", "terrain", "clouds", "clouds composite", "tonemap", "capture"])",
+       R"("pipelines": ["tonemap", "sky", "terrain", "clouds module"])", R"("modules": ["clouds"])"},
+  };
+  for (const Case& c : cases) {
+    const std::string out = runSampleOutput("--headless --describe --width 64 --height 36 --scene " + c.scene);
+    EXPECT_NE(out.find(c.passes), std::string::npos) << c.scene << "\n" << out;
+    EXPECT_NE(out.find(c.pipelines), std::string::npos) << c.scene << "\n" << out;
+    EXPECT_NE(out.find(c.modules), std::string::npos) << c.scene << "\n" << out;
+  }
+}
+
+TEST(HeadlessCapture, FliesOverAUserSuppliedTerrain) {
+  const fs::path dir = freshDir("user_terrain");
+  ASSERT_EQ(runSample("--headless --frames 1 --width 96 --height 54 --validation --terrain " +
+                      std::string(HILLS_TERRAIN) + " --scene " + scene("terrain_only.json") +
+                      " --capture " + dir.string()),
+            0);
+  EXPECT_TRUE(fs::exists(dir / "frame_0000.png"));
+}
+
+TEST(HeadlessCapture, BadArgumentsAndScenesFailWithAMessage) {
   EXPECT_NE(runSample("--headless --width 0 2>/dev/null"), 0);
   EXPECT_NE(runSample("--headless --frames banana 2>/dev/null"), 0);
   EXPECT_NE(runSample("--no-such-option 2>/dev/null"), 0);
+  EXPECT_EQ(runSample("--headless --scene /no/such/scene.json 2>/dev/null"), 1);
+  EXPECT_EQ(runSample("--headless --terrain /no/such/terrain.glb 2>/dev/null"), 1);
+  EXPECT_EQ(runSample("--headless --script /no/such/script.json 2>/dev/null"), 1);
 }
 
 }  // namespace

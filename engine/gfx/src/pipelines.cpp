@@ -155,7 +155,8 @@ Pipeline::Pipeline(Device& device, const GraphicsPipelineDesc& desc)
                               VK_COLOR_COMPONENT_B_BIT | VK_COLOR_COMPONENT_A_BIT;
   if (desc.blend != BlendMode::Opaque) {
     blendState.blendEnable = VK_TRUE;
-    blendState.srcColorBlendFactor = VK_BLEND_FACTOR_ONE;
+    blendState.srcColorBlendFactor =
+        desc.blend == BlendMode::Alpha ? VK_BLEND_FACTOR_SRC_ALPHA : VK_BLEND_FACTOR_ONE;
     blendState.dstColorBlendFactor = desc.blend == BlendMode::Additive
                                          ? VK_BLEND_FACTOR_ONE
                                          : VK_BLEND_FACTOR_ONE_MINUS_SRC_ALPHA;

@@ -85,13 +85,15 @@ CloudPassOutputs addCloudPasses(FrameGraph& graph, CloudRenderer& renderer, Text
   const MarchData& march = graph.addPass<MarchData>(
       "clouds", PassType::Compute,
       [&](PassBuilder& builder, MarchData& d) {
-        d.sceneDepth = builder.read(sceneDepth, Access::SampledRead);
+        if (sceneDepth.valid()) d.sceneDepth = builder.read(sceneDepth, Access::SampledRead);
         d.radiance = builder.write(radiance, Access::StorageWrite);
         d.depth = builder.write(depth, Access::StorageWrite);
       },
       [&renderer](const MarchData& d, PassContext& context) {
         const VkExtent3D extent = context.extent(d.radiance);
-        renderer.dispatch(context.cmd(), {extent.width, extent.height}, context.view(d.sceneDepth),
+        const VkImageView sceneDepthView =
+            d.sceneDepth.valid() ? context.view(d.sceneDepth) : VK_NULL_HANDLE;
+        renderer.dispatch(context.cmd(), {extent.width, extent.height}, sceneDepthView,
                           context.frameIndex());
       });
 

@@ -39,7 +39,7 @@ struct ComputePipelineDesc {
   std::string debugName;
 };
 
-enum class BlendMode { Opaque, PremultipliedAlpha, Additive };
+enum class BlendMode { Opaque, Alpha, PremultipliedAlpha, Additive };
 
 struct GraphicsPipelineDesc {
   std::span<const std::uint32_t> vertexSpirv;

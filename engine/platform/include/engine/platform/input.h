@@ -3,6 +3,7 @@
 // or by a script in headless runs: both feed the same InputState into the game.
 #include <array>
 #include <cstdint>
+#include <string_view>
 
 namespace engine::platform {
 
@@ -15,6 +16,11 @@ enum class Key : std::uint8_t {
   F1, F2, F3, F4, F5, F12,
   Count
 };
+
+// "W", "Up", "LeftShift", "F12", "1", "[" ... (the names scripts use). Returns false for names
+// that are not keys.
+bool keyFromName(std::string_view name, Key& key);
+const char* keyName(Key key);
 
 struct InputState {
   std::array<bool, static_cast<std::size_t>(Key::Count)> down{};

@@ -52,7 +52,8 @@ struct CloudPassOutputs {
   engine::render::TextureHandle depth;     // the module's cloud depths
 };
 
-// `sceneDepth` is the host depth (sampled); `hdr` the scene colour (RGBA16F, gets STORAGE).
+// `sceneDepth` is the host depth (sampled; an invalid handle when the scene has no geometry);
+// `hdr` the scene colour (RGBA16F, gets STORAGE).
 CloudPassOutputs addCloudPasses(engine::render::FrameGraph& graph, CloudRenderer& renderer,
                                 engine::render::TextureHandle sceneDepth,
                                 engine::render::TextureHandle hdr);

@@ -1,0 +1,186 @@
+#include "engine/core/json_reader.h"
+
+#include <cmath>
+#include <sstream>
+
+#include "engine/core/error.h"
+#include "engine/core/file_io.h"
+
+namespace engine {
+namespace {
+
+std::string describe(const nlohmann::json& value) {
+  switch (value.type()) {
+    case nlohmann::json::value_t::null: return "null";
+    case nlohmann::json::value_t::boolean: return "a boolean";
+    case nlohmann::json::value_t::string: return "a string";
+    case nlohmann::json::value_t::array: return "an array";
+    case nlohmann::json::value_t::object: return "an object";
+    default: return "a number";
+  }
+}
+
+std::string format(double value) {
+  std::ostringstream out;
+  out << value;
+  return out.str();
+}
+
+}  // namespace
+
+nlohmann::json JsonReader::parseFile(const std::filesystem::path& path) {
+  const std::string text = readTextFile(path, std::size_t{16} << 20);
+  try {
+    return nlohmann::json::parse(text);
+  } catch (const nlohmann::json::parse_error& e) {
+    throw Error(path.string() + ": not valid JSON (at byte " + std::to_string(e.byte) + ")");
+  }
+}
+
+JsonReader::JsonReader(const nlohmann::json& value, std::string file, std::string path)
+    : value_(&value), file_(std::move(file)), path_(std::move(path)) {
+  if (!value.is_object()) {
+    throw Error(file_ + ": " + (path_.empty() ? std::string("(root)") : path_) +
+                ": must be an object, got " + describe(value));
+  }
+}
+
+std::string JsonReader::pathOf(const std::string& key) const {
+  return path_.empty() ? key : path_ + "." + key;
+}
+
+void JsonReader::fail(const std::string& key, const std::string& reason) const {
+  throw Error(file_ + ": " + (key.empty() ? path_ : pathOf(key)) + ": " + reason);
+}
+
+bool JsonReader::has(const std::string& key) const { return value_->contains(key); }
+
+const nlohmann::json& JsonReader::child(const std::string& key) const {
+  read_.insert(key);
+  const auto it = value_->find(key);
+  if (it == value_->end()) fail(key, "is required");
+  return *it;
+}
+
+JsonReader JsonReader::object(const std::string& key) const {
+  const nlohmann::json& value = child(key);
+  if (!value.is_object()) fail(key, "must be an object, got " + describe(value));
+  return JsonReader(value, file_, pathOf(key));
+}
+
+std::vector<JsonReader> JsonReader::objects(const std::string& key) const {
+  const nlohmann::json& value = child(key);
+  if (!value.is_array()) fail(key, "must be an array, got " + describe(value));
+  std::vector<JsonReader> readers;
+  for (std::size_t i = 0; i < value.size(); ++i) {
+    const std::string path = pathOf(key) + "[" + std::to_string(i) + "]";
+    if (!value[i].is_object()) {
+      throw Error(file_ + ": " + path + ": must be an object, got " + describe(value[i]));
+    }
+    readers.emplace_back(value[i], file_, path);
+  }
+  return readers;
+}
+
+double JsonReader::number(const std::string& key, double min, double max) const {
+  const nlohmann::json& value = child(key);
+  if (!value.is_number()) fail(key, "must be a number, got " + describe(value));
+  const double v = value.get<double>();
+  if (!std::isfinite(v) || v < min || v > max) {
+    fail(key, "must be in [" + format(min) + ", " + format(max) + "], got " + format(v));
+  }
+  return v;
+}
+
+double JsonReader::number(const std::string& key, double min, double max, double fallback) const {
+  return has(key) ? number(key, min, max) : fallback;
+}
+
+std::int64_t JsonReader::integer(const std::string& key, std::int64_t min,
+                                 std::int64_t max) const {
+  const nlohmann::json& value = child(key);
+  if (!value.is_number_integer()) fail(key, "must be an integer, got " + describe(value));
+  const std::int64_t v = value.get<std::int64_t>();
+  if (v < min || v > max) {
+    fail(key, "must be in [" + std::to_string(min) + ", " + std::to_string(max) + "], got " +
+                  std::to_string(v));
+  }
+  return v;
+}
+
+std::int64_t JsonReader::integer(const std::string& key, std::int64_t min, std::int64_t max,
+                                 std::int64_t fallback) const {
+  return has(key) ? integer(key, min, max) : fallback;
+}
+
+bool JsonReader::boolean(const std::string& key, bool fallback) const {
+  if (!has(key)) return fallback;
+  const nlohmann::json& value = child(key);
+  if (!value.is_boolean()) fail(key, "must be true or false, got " + describe(value));
+  return value.get<bool>();
+}
+
+std::string JsonReader::string(const std::string& key) const {
+  const nlohmann::json& value = child(key);
+  if (!value.is_string()) fail(key, "must be a string, got " + describe(value));
+  return value.get<std::string>();
+}
+
+std::string JsonReader::string(const std::string& key, const std::string& fallback) const {
+  return has(key) ? string(key) : fallback;
+}
+
+std::string JsonReader::choice(const std::string& key, const std::vector<std::string>& allowed,
+                               const std::string& fallback) const {
+  if (!has(key)) return fallback;
+  const std::string value = string(key);
+  for (const auto& a : allowed) {
+    if (a == value) return value;
+  }
+  std::string list;
+  for (const auto& a : allowed) list += (list.empty() ? "" : ", ") + a;
+  fail(key, "must be one of " + list + ", got \"" + value + "\"");
+}
+
+glm::dvec3 JsonReader::vec3(const std::string& key, double min, double max) const {
+  const nlohmann::json& value = child(key);
+  if (!value.is_array() || value.size() != 3) {
+    fail(key, "must be an array of 3 numbers, got " + describe(value));
+  }
+  glm::dvec3 v;
+  for (int i = 0; i < 3; ++i) {
+    const auto& e = value[static_cast<std::size_t>(i)];
+    if (!e.is_number()) fail(key, "element " + std::to_string(i) + " must be a number");
+    v[i] = e.get<double>();
+    if (!std::isfinite(v[i]) || v[i] < min || v[i] > max) {
+      fail(key, "element " + std::to_string(i) + " must be in [" + format(min) + ", " +
+                    format(max) + "], got " + format(v[i]));
+    }
+  }
+  return v;
+}
+
+glm::dvec3 JsonReader::vec3(const std::string& key, double min, double max,
+                            const glm::dvec3& fallback) const {
+  return has(key) ? vec3(key, min, max) : fallback;
+}
+
+std::vector<std::string> JsonReader::strings(const std::string& key) const {
+  const nlohmann::json& value = child(key);
+  if (!value.is_array()) fail(key, "must be an array of strings, got " + describe(value));
+  std::vector<std::string> out;
+  for (const auto& e : value) {
+    if (!e.is_string()) fail(key, "must contain only strings");
+    out.push_back(e.get<std::string>());
+  }
+  return out;
+}
+
+void JsonReader::finish() const {
+  for (const auto& [key, value] : value_->items()) {
+    (void)value;
+    if (read_.count(key) == 0) fail(key, "unknown key");
+  }
+}
+
+}  // namespace engine

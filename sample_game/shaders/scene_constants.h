@@ -1,0 +1,41 @@
+// GPU structs of the sample's scene passes (sky and terrain), shared by shaders and C++.
+#ifndef SAMPLE_SHADERS_SCENE_CONSTANTS_H
+#define SAMPLE_SHADERS_SCENE_CONSTANTS_H
+
+#include "interop.h"
+
+SHADER_NAMESPACE_BEGIN
+
+// Per-frame lighting and camera for the scene passes (a uniform buffer).
+struct SceneFrame {
+  mat4 viewProjection;    // camera-relative world -> clip (reversed-Z)
+  vec4 cameraPosition;    // xyz world position (m), w unused
+  vec4 cameraRight;       // xyz; w = tan(horizontal fov / 2)
+  vec4 cameraUp;          // xyz; w = tan(vertical fov / 2)
+  vec4 cameraForward;     // xyz; w unused
+  vec4 sunDirection;      // xyz towards the sun; w = sun disc radiance scale
+  vec4 sunIlluminance;    // rgb
+  vec4 skyZenith;         // rgb sky radiance straight up
+  vec4 skyHorizon;        // rgb at the horizon
+  vec4 skyGround;         // rgb bounced light from below
+  vec4 fog;               // x density (1/m), yzw unused
+  uvec4 extent;           // xy output size (px)
+};
+SHADER_STATIC_ASSERT(sizeof(SceneFrame) == 64 + 11 * 16);
+
+// Sky radiance along a view direction: a zenith-to-horizon blend, ground below, a sun disc and
+// its glow. Shared so the terrain's fog fades to exactly the sky behind it.
+SHADER_INLINE vec3 skyRadiance(vec3 direction, vec3 sun, vec3 zenith, vec3 horizon, vec3 ground,
+                               vec3 sunColour, float discScale) {
+  const float up = direction.y;
+  vec3 colour = up >= 0.0f ? mix(horizon, zenith, pow(clamp(up, 0.0f, 1.0f), 0.5f))
+                           : mix(horizon, ground, clamp(-up * 8.0f, 0.0f, 1.0f));
+  const float sunCos = dot(direction, sun);
+  const float glow = pow(max(sunCos, 0.0f), 48.0f) * 0.15f;
+  const float disc = smoothstep(0.99985f, 0.99995f, sunCos) * discScale;
+  return colour + sunColour * (glow + disc);
+}
+
+SHADER_NAMESPACE_END
+
+#endif

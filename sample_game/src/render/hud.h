@@ -1,0 +1,54 @@
+#pragma once
+// On-screen help and frame rate for windowed runs: Dear ImGui (Debian's libimgui) lays out the
+// text; this draws its vertices with one small pipeline of our own in a graphics pass after
+// tonemapping (ImGui's own Vulkan backend in that version needs a render pass object).
+#include <array>
+#include <memory>
+#include <span>
+
+#include "engine/ecs/world.h"
+#include "engine/gfx/frame_ring.h"
+#include "engine/gfx/gpu_timer.h"
+#include "engine/gfx/pipelines.h"
+#include "engine/gfx/resources.h"
+#include "engine/render/frame_graph.h"
+
+struct ImGuiContext;
+
+namespace sample {
+
+class Hud {
+ public:
+  Hud(engine::gfx::Device& device, VkFormat targetFormat);
+  ~Hud();
+
+  const engine::gfx::Pipeline& pipeline() const { return pipeline_; }
+  // Lays out this frame's text and uploads its vertices into the frame slot's buffers.
+  void prepare(engine::ecs::World& world, VkExtent2D extent,
+               std::span<const engine::gfx::TimedScope> gpuTimings,
+               const engine::gfx::FrameRing::Frame& frame);
+  void record(VkCommandBuffer cmd, engine::gfx::DescriptorArena& descriptors,
+              const engine::gfx::Device& device) const;
+  bool visible() const { return visible_; }
+
+ private:
+  engine::gfx::Device& device_;
+  ImGuiContext* context_ = nullptr;
+  engine::gfx::Image font_;
+  engine::gfx::Sampler sampler_;
+  engine::gfx::Pipeline pipeline_;
+  struct SlotBuffers {
+    engine::gfx::Buffer vertices;
+    engine::gfx::Buffer indices;
+  };
+  std::array<SlotBuffers, engine::gfx::FrameRing::kFramesInFlight> buffers_;
+  std::uint32_t slot_ = 0;
+  VkExtent2D extent_{0, 0};
+  bool visible_ = true;
+  double smoothedFrameSeconds_ = 0.0;
+};
+
+engine::render::TextureHandle addHudPass(engine::render::FrameGraph& graph, const Hud& hud,
+                                         engine::render::TextureHandle display);
+
+}  // namespace sample

@@ -1,0 +1,196 @@
+#include "render/renderer.h"
+
+#include <cmath>
+
+#include "clouds/ecs/cloud_components.h"
+#include "clouds/ecs/cloud_renderer.h"
+#include "engine/assets/image_io.h"
+#include "engine/core/log.h"
+#include "engine/ecs/frame_time.h"
+#include "engine/gfx/upload.h"
+#include "engine/render/camera_math.h"
+#include "engine/render/scene_components.h"
+#include "render/hud.h"
+#include "render/terrain_renderer.h"
+#include "scene/scene_loader.h"
+
+namespace sample {
+
+using namespace engine;
+
+namespace {
+
+std::unique_ptr<gfx::Image> loadWeatherMap(gfx::Device& device, const std::filesystem::path& path) {
+  const assets::ImageRgba32f image = assets::readImage(path);
+  std::vector<std::uint8_t> texels(image.pixels.size());
+  for (std::size_t i = 0; i < texels.size(); ++i) {
+    texels[i] = static_cast<std::uint8_t>(std::clamp(image.pixels[i], 0.0f, 1.0f) * 255.0f + 0.5f);
+  }
+  auto gpu = std::make_unique<gfx::Image>(
+      device, gfx::ImageDesc{VK_IMAGE_TYPE_2D, VK_FORMAT_R8G8B8A8_UNORM,
+                             {image.width, image.height, 1}, 1, 1,
+                             VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT,
+                             "painted weather map"});
+  gfx::uploadToImage(device, *gpu, std::as_bytes(std::span(texels)),
+                     gfx::ImageState{VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL,
+                                     VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
+                                     VK_ACCESS_2_SHADER_SAMPLED_READ_BIT});
+  return gpu;
+}
+
+}  // namespace
+
+Renderer::Renderer(gfx::Device& device, render::PresentTarget& target, ecs::World& world,
+                   const RendererOptions& options)
+    : device_(device),
+      target_(target),
+      options_(options),
+      ring_(device),
+      tonemapper_(device, kHdrFormat, target.format()),
+      sky_(device, kHdrFormat),
+      capture_(device) {
+  std::vector<const gfx::Pipeline*> pipelines = {&tonemapper_.pipeline(), &sky_.pipeline()};
+  if (const auto* mesh = world.ctx().tryGet<TerrainMesh>()) {
+    terrain_ = std::make_unique<TerrainRenderer>(device, *mesh->mesh, kHdrFormat, kDepthFormat);
+    pipelines.push_back(&terrain_->pipeline());
+  }
+  world.view<const clouds::ecs::CloudLayer>().each([&](const clouds::ecs::CloudLayer& layer) {
+    clouds_ = std::make_unique<clouds::ecs::CloudRenderer>(device, options.maxExtent, kDepthFormat,
+                                                           layer.noiseSeed,
+                                                           gfx::FrameRing::kFramesInFlight);
+    clouds_->settings() = layer.settings;
+    if (layer.weatherMap) {
+      weatherMap_ = loadWeatherMap(device, *layer.weatherMap);
+      clouds_->frameInputs().weatherView = weatherMap_->view();
+      clouds_->frameInputs().weatherLayout = VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL;
+    }
+  });
+  if (clouds_) {
+    if (auto* ref = world.ctx().tryGet<clouds::ecs::CloudRendererRef>()) ref->renderer = clouds_.get();
+  }
+  if (options.hud) {
+    hud_ = std::make_unique<Hud>(device, target.format());
+    pipelines.push_back(&hud_->pipeline());
+  }
+  const double ms = gfx::warmUpPipelines(device, pipelines);
+  log::info("pipelines warmed up in " + std::to_string(static_cast<int>(ms)) + " ms");
+}
+
+Renderer::~Renderer() { finish(); }
+
+void Renderer::rebuildGraph(VkExtent2D extent) {
+  graph_ = std::make_unique<render::FrameGraph>(&device_);
+  render::FrameGraph& graph = *graph_;
+  targetHandle_ = graph.importTexture("present target", target_.describe());
+
+  render::TextureDesc hdrDesc;
+  hdrDesc.extent = {extent.width, extent.height, 1};
+  hdrDesc.format = kHdrFormat;
+  render::TextureHandle hdr = addSkyPass(graph, sky_, hdrDesc, &sceneFrame_);
+  render::TextureHandle depth;
+  if (terrain_) {
+    const SceneTargets scene = addTerrainPass(graph, *terrain_, hdr, kDepthFormat, &sceneFrame_);
+    hdr = scene.hdr;
+    depth = scene.depth;
+  }
+  if (clouds_) hdr = clouds::ecs::addCloudPasses(graph, *clouds_, depth, hdr).hdr;
+  render::TextureHandle display = render::addTonemapPass(graph, tonemapper_, hdr, targetHandle_, &tonemap_);
+  if (hud_) display = addHudPass(graph, *hud_, display);
+  capture_.addToGraph(graph, hdr, display);
+  graph.compile();
+  graphExtent_ = extent;
+}
+
+void Renderer::updateFrameConstants(ecs::World& world, VkExtent2D extent) {
+  render::Camera camera;
+  world.view<const render::Camera>().each([&](const render::Camera& c) { camera = c; });
+  render::Sun sun;
+  world.view<const render::Sun>().each([&](const render::Sun& s) { sun = s; });
+  const render::SkyLight sky = world.ctx().get<render::SkyLight>();
+  const render::Atmosphere atmosphere = world.ctx().get<render::Atmosphere>();
+
+  const float aspect = float(extent.width) / float(extent.height);
+  const glm::mat4 view = render::viewRotation(camera);
+  const glm::mat4 projection =
+      render::perspectiveReversedZ(camera.verticalFovRadians, aspect, camera.nearMetres);
+  const glm::vec3 forward = glm::vec3(render::forwardOf(camera));
+  const glm::vec3 up = glm::vec3(render::upOf(camera));
+  const glm::vec3 right = glm::normalize(glm::cross(forward, up));
+  const float tanY = std::tan(camera.verticalFovRadians * 0.5f);
+
+  shaders::SceneFrame& f = sceneFrame_.data;
+  f.viewProjection = projection * view;
+  f.cameraPosition = glm::vec4(glm::vec3(camera.position), 0.0f);
+  f.cameraRight = glm::vec4(right, tanY * aspect);
+  f.cameraUp = glm::vec4(up, tanY);
+  f.cameraForward = glm::vec4(forward, 0.0f);
+  f.sunDirection = glm::vec4(glm::vec3(sun.direction), 8.0f);
+  f.sunIlluminance = glm::vec4(sun.illuminance, 0.0f);
+  f.skyZenith = glm::vec4(sky.zenith, 0.0f);
+  f.skyHorizon = glm::vec4(sky.horizon, 0.0f);
+  f.skyGround = glm::vec4(sky.ground, 0.0f);
+  f.fog = glm::vec4(atmosphere.fogDensityPerMetre, 0.0f, 0.0f, 0.0f);
+  f.extent = glm::uvec4(extent.width, extent.height, 0u, 0u);
+  tonemap_.exposure = atmosphere.exposure;
+
+  if (terrain_) terrain_->cull(f.viewProjection, camera.position);
+  if (clouds_) clouds_->frameInputs().projection = projection;
+}
+
+std::optional<std::filesystem::path> Renderer::takeCaptureRequest(ecs::World& world) {
+  std::optional<std::filesystem::path> stem;
+  for (const CaptureFrame& e : captureReader_.read(world.events<CaptureFrame>())) {
+    stem = options_.captureDirectory / e.name;
+  }
+  auto& request = world.ctx().get<CaptureRequest>();
+  if (request.stem) stem = std::exchange(request.stem, std::nullopt);
+  return stem;
+}
+
+void Renderer::renderFrame(ecs::World& world) {
+  gfx::FrameRing::Frame& frame = ring_.begin();
+  const std::optional<std::filesystem::path> captureStem = takeCaptureRequest(world);
+  if (!target_.acquire(frame.slot)) {
+    ring_.submit();  // nothing to draw into (minimized): keep the ring's bookkeeping going
+    return;
+  }
+  const VkExtent2D extent = target_.extent();
+  if (!graph_ || extent.width != graphExtent_.width || extent.height != graphExtent_.height) {
+    rebuildGraph(extent);
+  }
+  graph_->updateImportedTexture(targetHandle_, target_.image(), target_.view());
+  updateFrameConstants(world, extent);
+  sceneFrame_.slice = frame.constants->push(sceneFrame_.data);
+  if (hud_) hud_->prepare(world, extent, ring_.lastTimings(), frame);
+  if (captureStem) capture_.arm(*captureStem);
+  graph_->execute(frame);
+  ring_.submit(target_.submitWaits(), target_.submitSignals());
+  target_.present();
+  if (captureStem) {
+    ring_.drain();
+    if (auto png = capture_.writePending()) log::info("captured " + png->string());
+  }
+}
+
+void Renderer::finish() {
+  ring_.drain();
+  capture_.writePending();
+}
+
+std::vector<std::string> Renderer::passNames() const {
+  std::vector<std::string> names;
+  if (graph_) {
+    for (const char* name : graph_->executionOrder()) names.emplace_back(name);
+  }
+  return names;
+}
+
+std::vector<std::string> Renderer::pipelineNames() const {
+  std::vector<std::string> names = {tonemapper_.pipeline().name(), sky_.pipeline().name()};
+  if (terrain_) names.push_back(terrain_->pipeline().name());
+  if (hud_) names.push_back(hud_->pipeline().name());
+  if (clouds_) names.emplace_back("clouds module");
+  return names;
+}
+
+}  // namespace sample

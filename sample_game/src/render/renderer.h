@@ -1,0 +1,83 @@
+#pragma once
+// The sample's renderer. It looks at the world once to decide which passes the scene needs:
+//   sky -> [terrain] -> [clouds, clouds composite] -> tonemap -> [hud] -> capture
+// (terrain only with a terrain, clouds only with a cloud layer; their pipelines are not even
+// created otherwise), rebuilds the frame graph when the output size changes, and each frame
+// fills the per-frame constants from the world, records, submits and presents. Windowed and
+// headless runs use it identically; only the PresentTarget differs.
+#include <filesystem>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "engine/ecs/events.h"
+#include "engine/ecs/world.h"
+#include "engine/gfx/device.h"
+#include "engine/gfx/frame_ring.h"
+#include "engine/render/frame_capture.h"
+#include "engine/render/frame_graph.h"
+#include "engine/render/present_target.h"
+#include "engine/render/tonemap_pass.h"
+#include "game/game_components.h"
+#include "render/sky_pass.h"
+
+namespace clouds::ecs {
+class CloudRenderer;
+}
+
+namespace sample {
+
+class TerrainRenderer;
+class Hud;
+
+struct RendererOptions {
+  VkExtent2D maxExtent{3840, 2160};           // largest output size the clouds allocate for
+  std::filesystem::path captureDirectory = "out";  // where named (script) captures go
+  bool hud = false;                           // on-screen help and frame rate (windowed runs)
+};
+
+class Renderer {
+ public:
+  static constexpr VkFormat kHdrFormat = VK_FORMAT_R16G16B16A16_SFLOAT;
+  static constexpr VkFormat kDepthFormat = VK_FORMAT_D32_SFLOAT;
+
+  Renderer(engine::gfx::Device& device, engine::render::PresentTarget& target,
+           engine::ecs::World& world, const RendererOptions& options);
+  ~Renderer();
+
+  void renderFrame(engine::ecs::World& world);
+  // Waits for every frame in flight and writes any pending capture.
+  void finish();
+
+  std::vector<std::string> passNames() const;
+  std::vector<std::string> pipelineNames() const;
+  std::span<const engine::gfx::TimedScope> lastGpuTimings() const { return ring_.lastTimings(); }
+  const engine::render::FrameCapture& capture() const { return capture_; }
+  Hud* hud() { return hud_.get(); }
+
+ private:
+  void rebuildGraph(VkExtent2D extent);
+  void updateFrameConstants(engine::ecs::World& world, VkExtent2D extent);
+  std::optional<std::filesystem::path> takeCaptureRequest(engine::ecs::World& world);
+
+  engine::gfx::Device& device_;
+  engine::render::PresentTarget& target_;
+  RendererOptions options_;
+  engine::gfx::FrameRing ring_;
+  engine::render::Tonemapper tonemapper_;
+  SkyPass sky_;
+  std::unique_ptr<TerrainRenderer> terrain_;
+  std::unique_ptr<clouds::ecs::CloudRenderer> clouds_;
+  std::unique_ptr<engine::gfx::Image> weatherMap_;
+  std::unique_ptr<Hud> hud_;
+  engine::render::FrameCapture capture_;
+  std::unique_ptr<engine::render::FrameGraph> graph_;
+  engine::render::TextureHandle targetHandle_;
+  VkExtent2D graphExtent_{0, 0};
+  SceneFrameBinding sceneFrame_{};
+  engine::render::TonemapSettings tonemap_{};
+  engine::ecs::EventReader<CaptureFrame> captureReader_;
+};
+
+}  // namespace sample

@@ -1,0 +1,130 @@
+#include "scene/scene_description.h"
+
+#include <glm/gtc/constants.hpp>
+
+#include "engine/core/error.h"
+#include "engine/core/json_reader.h"
+
+namespace sample {
+namespace {
+
+using engine::JsonReader;
+
+CameraDescription readCamera(const JsonReader& r) {
+  CameraDescription c;
+  c.position = r.vec3("position", -1e7, 1e7);
+  if (c.position.y < 0.0 || c.position.y > 50000.0) {
+    r.fail("position", "altitude (y) must be in [0, 50000] m");
+  }
+  c.yawDegrees = r.number("yawDegrees", -360.0, 360.0, c.yawDegrees);
+  c.pitchDegrees = r.number("pitchDegrees", -89.0, 89.0, c.pitchDegrees);
+  c.verticalFovDegrees = r.number("verticalFovDegrees", 10.0, 120.0, c.verticalFovDegrees);
+  c.speedMetresPerSecond = r.number("speedMetresPerSecond", 0.0, 1000.0, c.speedMetresPerSecond);
+  r.finish();
+  return c;
+}
+
+SunDescription readSun(const JsonReader& r) {
+  SunDescription s;
+  s.timeOfDayHours = r.number("timeOfDayHours", 0.0, 24.0, s.timeOfDayHours);
+  s.hoursPerSecond = r.number("hoursPerSecond", 0.0, 10.0, s.hoursPerSecond);
+  s.maxElevationDegrees = r.number("maxElevationDegrees", 5.0, 90.0, s.maxElevationDegrees);
+  s.azimuthOffsetDegrees = r.number("azimuthOffsetDegrees", -360.0, 360.0, s.azimuthOffsetDegrees);
+  s.illuminance = r.number("illuminance", 0.0, 1000.0, s.illuminance);
+  r.finish();
+  return s;
+}
+
+std::filesystem::path resolveFile(const JsonReader& r, const std::string& key,
+                                  const std::filesystem::path& sceneDir) {
+  const std::filesystem::path path = sceneDir / r.string(key);
+  if (!std::filesystem::is_regular_file(path)) {
+    r.fail(key, "file not found: " + path.string());
+  }
+  return path;
+}
+
+TerrainDescription readTerrain(const JsonReader& r, const std::filesystem::path& sceneDir) {
+  TerrainDescription t;
+  const std::string gltf = r.string("gltf");
+  t.gltf = gltf == "default" ? std::filesystem::path("default") : resolveFile(r, "gltf", sceneDir);
+  r.finish();
+  return t;
+}
+
+CloudDescription readClouds(const JsonReader& r, const std::filesystem::path& sceneDir) {
+  CloudDescription c;
+  clouds::Settings& s = c.settings;
+  s.layerBottomMetres = float(r.number("layerBottomMetres", 0.0, 20000.0, s.layerBottomMetres));
+  s.layerTopMetres = float(r.number("layerTopMetres", 0.0, 30000.0, s.layerTopMetres));
+  s.coverage = float(r.number("coverage", 0.0, 1.0, s.coverage));
+  s.cloudType = float(r.number("cloudType", 0.0, 1.0, s.cloudType));
+  s.typeVariation = float(r.number("typeVariation", 0.0, 2.0, s.typeVariation));
+  s.densityVariation = float(r.number("densityVariation", 0.0, 1.0, s.densityVariation));
+  s.densityMultiplier = float(r.number("densityMultiplier", 0.0, 1e6, s.densityMultiplier));
+  s.extinctionPerMetre = float(r.number("extinctionPerMetre", 0.0, 100.0, s.extinctionPerMetre));
+  s.anvilBias = float(r.number("anvilBias", 0.0, 1.0, s.anvilBias));
+  s.detailErosion = float(r.number("detailErosion", 0.0, 1.0, s.detailErosion));
+  s.weatherTileMetres = float(r.number("weatherTileMetres", 1000.0, 1e7, s.weatherTileMetres));
+  s.weatherEvolutionPerSecond =
+      float(r.number("weatherEvolutionPerSecond", 0.0, 1.0, s.weatherEvolutionPerSecond));
+  s.shapeTileMetres = float(r.number("shapeTileMetres", 100.0, 1e7, s.shapeTileMetres));
+  s.detailTileMetres = float(r.number("detailTileMetres", 10.0, 1e6, s.detailTileMetres));
+  if (r.has("wind")) {
+    const JsonReader wind = r.object("wind");
+    const double direction =
+        glm::radians(wind.number("directionDegrees", -360.0, 360.0, 0.0));
+    s.windDirection = glm::vec2(float(std::cos(direction)), float(-std::sin(direction)));
+    s.windSpeedMetresPerSecond =
+        float(wind.number("speedMetresPerSecond", 0.0, 500.0, s.windSpeedMetresPerSecond));
+    s.skewMetres = float(wind.number("skewMetres", 0.0, 20000.0, s.skewMetres));
+    wind.finish();
+  }
+  if (r.has("lighting")) {
+    const JsonReader l = r.object("lighting");
+    s.albedo = float(l.number("albedo", 0.0, 1.0, s.albedo));
+    s.phaseForwardG = float(l.number("phaseForwardG", -1.0, 1.0, s.phaseForwardG));
+    s.phaseBackwardG = float(l.number("phaseBackwardG", -1.0, 1.0, s.phaseBackwardG));
+    s.phaseBackwardWeight = float(l.number("phaseBackwardWeight", 0.0, 1.0, s.phaseBackwardWeight));
+    s.inScatterStrength = float(l.number("inScatterStrength", 0.0, 1.0, s.inScatterStrength));
+    s.ambientStrength = float(l.number("ambientStrength", 0.0, 100.0, s.ambientStrength));
+    s.sunStrength = float(l.number("sunStrength", 0.0, 100.0, s.sunStrength));
+    l.finish();
+  }
+  c.noiseSeed = static_cast<std::uint32_t>(r.integer("noiseSeed", 0, 0xffffffffLL, c.noiseSeed));
+  if (r.has("weatherMap")) c.weatherMap = resolveFile(r, "weatherMap", sceneDir);
+  r.finish();
+  // Cross-field rules (layer top above bottom, ...) are the module's; report them here too.
+  if (const std::string problem = clouds::validateSettings(s); !problem.empty()) {
+    throw engine::Error(r.file() + ": clouds: " + problem);
+  }
+  return c;
+}
+
+AtmosphereDescription readAtmosphere(const JsonReader& r) {
+  AtmosphereDescription a;
+  a.fogDensityPerMetre = r.number("fogDensityPerMetre", 0.0, 0.01, a.fogDensityPerMetre);
+  a.exposure = r.number("exposure", 0.01, 100.0, a.exposure);
+  r.finish();
+  return a;
+}
+
+}  // namespace
+
+SceneDescription loadSceneDescription(const std::filesystem::path& file) {
+  const nlohmann::json json = JsonReader::parseFile(file);
+  const JsonReader root(json, file.string());
+  const std::filesystem::path dir = file.parent_path();
+  SceneDescription scene;
+  scene.file = file;
+  scene.name = root.string("name");
+  scene.camera = readCamera(root.object("camera"));
+  if (root.has("sun")) scene.sun = readSun(root.object("sun"));
+  if (root.has("terrain")) scene.terrain = readTerrain(root.object("terrain"), dir);
+  if (root.has("clouds")) scene.clouds = readClouds(root.object("clouds"), dir);
+  if (root.has("atmosphere")) scene.atmosphere = readAtmosphere(root.object("atmosphere"));
+  root.finish();
+  return scene;
+}
+
+}  // namespace sample

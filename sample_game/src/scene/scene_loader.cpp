@@ -1,0 +1,94 @@
+#include "scene/scene_loader.h"
+
+#include "clouds/ecs/cloud_components.h"
+#include "clouds/ecs/clouds_module.h"
+#include "engine/core/log.h"
+#include "engine/ecs/frame_time.h"
+#include "engine/platform/input.h"
+#include "engine/render/scene_components.h"
+#include "game/flight.h"
+#include "game/game_components.h"
+#include "game/terrain_height.h"
+#include "game/terrain_placement.h"
+#include "game/time_of_day.h"
+
+namespace sample {
+
+using namespace engine;
+
+namespace {
+
+glm::dquat orientationFrom(double yawDegrees, double pitchDegrees) {
+  return glm::angleAxis(glm::radians(yawDegrees), glm::dvec3(0, 1, 0)) *
+         glm::angleAxis(glm::radians(pitchDegrees), glm::dvec3(1, 0, 0));
+}
+
+}  // namespace
+
+void populateScene(ecs::App& app, const SceneDescription& scene,
+                   const std::filesystem::path& defaultTerrain,
+                   const std::optional<std::filesystem::path>& terrainOverride) {
+  ecs::World& world = app.world();
+  world.ctx().emplaceOrReplace<ecs::FrameTime>();
+  world.ctx().emplaceOrReplace<platform::InputState>();
+  world.ctx().emplaceOrReplace<CaptureRequest>();
+  world.ctx().emplaceOrReplace<ExitRequest>();
+  render::Atmosphere atmosphere;
+  atmosphere.fogDensityPerMetre = static_cast<float>(scene.atmosphere.fogDensityPerMetre);
+  atmosphere.exposure = static_cast<float>(scene.atmosphere.exposure);
+  world.ctx().emplaceOrReplace<render::Atmosphere>(atmosphere);
+
+  // The player: a camera flown like an aircraft.
+  const ecs::Entity player = world.create();
+  render::Camera camera;
+  camera.position = scene.camera.position;
+  camera.orientation = orientationFrom(scene.camera.yawDegrees, scene.camera.pitchDegrees);
+  camera.verticalFovRadians = static_cast<float>(glm::radians(scene.camera.verticalFovDegrees));
+  world.emplace<render::Camera>(player, camera);
+  Aircraft aircraft;
+  aircraft.speedMetresPerSecond = scene.camera.speedMetresPerSecond;
+  world.emplace<Aircraft>(player, aircraft);
+
+  // The sun and its clock.
+  const ecs::Entity sun = world.create();
+  TimeOfDay time;
+  time.hours = scene.sun.timeOfDayHours;
+  time.hoursPerSecond = scene.sun.hoursPerSecond;
+  time.maxElevationDegrees = scene.sun.maxElevationDegrees;
+  time.azimuthOffsetDegrees = scene.sun.azimuthOffsetDegrees;
+  time.illuminance = scene.sun.illuminance;
+  world.emplace<TimeOfDay>(sun, time);
+  world.emplace<render::Sun>(sun, sunLightFor(time));
+  world.ctx().emplaceOrReplace<render::SkyLight>(skyLightFor(sunDirectionAt(time)));
+
+  // The terrain: loaded once here, for both the renderer and the ground collision.
+  std::optional<std::filesystem::path> terrain = terrainOverride;
+  if (!terrain && scene.terrain) {
+    terrain = scene.terrain->gltf == "default" ? defaultTerrain : scene.terrain->gltf;
+  }
+  if (terrain) {
+    auto mesh = std::make_shared<assets::MeshData>(assets::loadGltfMesh(*terrain));
+    const double scale = placeTerrain(*mesh);
+    log::info("terrain " + terrain->string() + ": " + std::to_string(mesh->positions.size()) +
+              " vertices, " + std::to_string(mesh->indices.size() / 3) + " triangles" +
+              (scale != 1.0 ? ", scaled by " + std::to_string(scale) : std::string()));
+    world.ctx().emplaceOrReplace<TerrainHeightField>(*mesh);
+    world.ctx().emplaceOrReplace<TerrainMesh>(TerrainMesh{mesh});
+    const ecs::Entity entity = world.create();
+    world.emplace<TerrainInstance>(entity, TerrainInstance{*terrain});
+  }
+
+  // The clouds, as data; the module below installs only when this exists.
+  if (scene.clouds) {
+    const ecs::Entity layer = world.create();
+    world.emplace<clouds::ecs::CloudLayer>(
+        layer, clouds::ecs::CloudLayer{scene.clouds->settings, scene.clouds->noiseSeed,
+                                       scene.clouds->weatherMap});
+  }
+
+  installTimeOfDay(app.scheduler());
+  installFlight(app.scheduler());
+  app.addModule<clouds::ecs::CloudsModule>();
+}
+
+}  // namespace sample

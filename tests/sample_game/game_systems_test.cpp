@@ -1,0 +1,225 @@
+// The sample's systems in a world without a GPU: flying with the keyboard, staying above the
+// terrain, teleports, the sun's daily arc, terrain chunking and frustum culling.
+#include <gtest/gtest.h>
+
+#include <glm/gtc/constants.hpp>
+
+#include "engine/ecs/app.h"
+#include "engine/ecs/frame_time.h"
+#include "engine/platform/input.h"
+#include "engine/render/camera_math.h"
+#include "engine/render/scene_components.h"
+#include "game/flight.h"
+#include "game/game_components.h"
+#include "game/terrain_height.h"
+#include "game/terrain_placement.h"
+#include "game/time_of_day.h"
+#include "render/terrain_renderer.h"
+
+namespace {
+
+using engine::platform::Key;
+using engine::render::Camera;
+
+// A 2 x 2 km ramp rising from 0 m at x = -1000 to 1000 m at x = +1000.
+engine::assets::MeshData ramp() {
+  engine::assets::MeshData mesh;
+  const int n = 11;
+  for (int j = 0; j < n; ++j) {
+    for (int i = 0; i < n; ++i) {
+      const float x = -1000.0f + 200.0f * float(i);
+      const float z = -1000.0f + 200.0f * float(j);
+      mesh.positions.emplace_back(x, (x + 1000.0f) * 0.5f, z);
+      mesh.normals.emplace_back(0, 1, 0);
+      mesh.colors.emplace_back(1.0f);
+      mesh.uvs.emplace_back(0.0f);
+    }
+  }
+  for (int j = 0; j + 1 < n; ++j) {
+    for (int i = 0; i + 1 < n; ++i) {
+      const auto a = std::uint32_t(j * n + i);
+      for (std::uint32_t v : {a, a + std::uint32_t(n), a + 1, a + 1, a + std::uint32_t(n), a + std::uint32_t(n) + 1}) {
+        mesh.indices.push_back(v);
+      }
+    }
+  }
+  mesh.boundsMin = {-1000, 0, -1000};
+  mesh.boundsMax = {1000, 1000, 1000};
+  return mesh;
+}
+
+struct FlightWorld {
+  engine::ecs::App app;
+  engine::ecs::Entity player;
+  explicit FlightWorld(const glm::dvec3& position) {
+    auto& world = app.world();
+    world.ctx().emplace<engine::ecs::FrameTime>();
+    world.ctx().emplace<engine::platform::InputState>();
+    player = world.create();
+    Camera camera;
+    camera.position = position;
+    world.emplace<Camera>(player, camera);
+    sample::Aircraft aircraft;
+    aircraft.speedMetresPerSecond = 50.0;
+    world.emplace<sample::Aircraft>(player, aircraft);
+    sample::installFlight(app.scheduler());
+  }
+  void step(double dt, int frames) {
+    auto& time = app.world().ctx().get<engine::ecs::FrameTime>();
+    for (int i = 0; i < frames; ++i) {
+      time = time.next(dt);
+      app.runFrame();
+    }
+  }
+  Camera& camera() { return app.world().get<Camera>(player); }
+  sample::Aircraft& aircraft() { return app.world().get<sample::Aircraft>(player); }
+  engine::platform::InputState& input() { return app.world().ctx().get<engine::platform::InputState>(); }
+};
+
+TEST(Flight, FliesForwardAndThrottles) {
+  FlightWorld w({0, 500, 0});
+  w.step(0.1, 10);  // 1 s at 50 m/s along -Z
+  EXPECT_NEAR(w.camera().position.z, -50.0, 1e-6);
+  EXPECT_NEAR(w.camera().position.y, 500.0, 1e-6);
+  w.input().press(Key::W);
+  w.step(0.1, 10);
+  EXPECT_GT(w.aircraft().speedMetresPerSecond, 100.0);
+  w.input().release(Key::W);
+  w.input().press(Key::S);
+  w.step(0.1, 100);
+  EXPECT_EQ(w.aircraft().speedMetresPerSecond, 0.0) << "slows down to a standstill (a camera)";
+}
+
+TEST(Flight, PitchRollAndYawTurnTheAircraft) {
+  FlightWorld w({0, 500, 0});
+  w.input().press(Key::Down);  // pull up
+  w.step(0.1, 5);
+  EXPECT_GT(engine::render::forwardOf(w.camera()).y, 0.3);
+  w.input().release(Key::Down);
+  const glm::dvec3 before = engine::render::forwardOf(w.camera());
+  w.input().press(Key::A);
+  w.step(0.1, 5);
+  EXPECT_LT(glm::dot(before, engine::render::forwardOf(w.camera())), 0.99);
+}
+
+TEST(Flight, NeverGoesThroughTheGroundAndCanClimbAboveTheClouds) {
+  FlightWorld w({500, 900, 0});  // over the ramp where the ground is at 750 m
+  auto mesh = ramp();
+  w.app.world().ctx().emplace<sample::TerrainHeightField>(mesh, 64u);
+  w.input().press(Key::Up);  // dive
+  w.aircraft().speedMetresPerSecond = 300.0;
+  for (int i = 0; i < 50; ++i) {
+    w.step(0.05, 1);
+    const glm::dvec3 p = w.camera().position;
+    const double ground = (std::clamp(p.x, -1000.0, 1000.0) + 1000.0) * 0.5;
+    if (std::abs(p.x) <= 1000.0 && std::abs(p.z) <= 1000.0) {
+      ASSERT_GE(p.y, ground + 4.9) << "below the terrain at frame " << i;
+    }
+    ASSERT_GE(p.y, 4.9);
+  }
+  w.app.world().events<sample::SetCameraPose>().send(
+      sample::SetCameraPose{{0, 100, 0}, 0.0, 80.0, 0.0, 400.0});
+  w.input().release(Key::Up);
+  w.step(0.1, 150);
+  EXPECT_GT(w.camera().position.y, 5000.0) << "climbs above a 1.5-4 km cloud layer";
+}
+
+TEST(Flight, TeleportsSetThePoseAndMarkACameraCut) {
+  FlightWorld w({0, 500, 0});
+  w.app.world().events<sample::SetCameraPose>().send(
+      sample::SetCameraPose{{100, 2000, -300}, 90.0, 10.0, 0.0, 0.0});
+  w.step(0.1, 1);
+  EXPECT_EQ(w.camera().position, glm::dvec3(100, 2000, -300));
+  EXPECT_TRUE(w.camera().cut);
+  const glm::dvec3 f = engine::render::forwardOf(w.camera());
+  EXPECT_NEAR(f.x, -std::cos(glm::radians(10.0)), 1e-9);  // yaw 90: looking along -X
+  w.step(0.1, 1);
+  EXPECT_FALSE(w.camera().cut);
+}
+
+TEST(TimeOfDay, TheSunFollowsADailyArc) {
+  sample::TimeOfDay t;
+  t.maxElevationDegrees = 60.0;
+  t.hours = 12.0;
+  EXPECT_NEAR(std::asin(sample::sunDirectionAt(t).y), glm::radians(60.0), 1e-9);
+  t.hours = 6.0;
+  EXPECT_NEAR(sample::sunDirectionAt(t).y, 0.0, 1e-9);
+  EXPECT_GT(sample::sunDirectionAt(t).x, 0.99);  // rises in the east (+X)
+  t.hours = 18.0;
+  EXPECT_LT(sample::sunDirectionAt(t).x, -0.99);
+  t.hours = 0.0;
+  EXPECT_LT(sample::sunDirectionAt(t).y, -0.5);
+  EXPECT_LT(glm::length(sample::sunLightFor(t).illuminance), 1e-3f) << "no sun at night";
+  t.hours = 12.0;
+  const glm::vec3 noon = sample::sunLightFor(t).illuminance;
+  t.hours = 18.2;
+  const glm::vec3 dusk = sample::sunLightFor(t).illuminance;
+  EXPECT_GT(noon.b, dusk.b * 3.0f);
+  EXPECT_GT(dusk.r / dusk.b, noon.r / noon.b) << "redder near the horizon";
+}
+
+TEST(Terrain, PlacementCentresSmallMeshesAndScalesThemUp) {
+  engine::assets::MeshData mesh = ramp();
+  for (auto& p : mesh.positions) p = p * 0.001f + glm::vec3(5, 7, 9);  // a 2 m model off-centre
+  mesh.boundsMin = mesh.boundsMin * 0.001f + glm::vec3(5, 7, 9);
+  mesh.boundsMax = mesh.boundsMax * 0.001f + glm::vec3(5, 7, 9);
+  const double scale = sample::placeTerrain(mesh);
+  EXPECT_NEAR(scale, 10000.0, 1e-6);
+  EXPECT_NEAR(mesh.boundsMin.y, 0.0f, 1e-3f);
+  EXPECT_NEAR(mesh.boundsMin.x, -10000.0f, 1e-1f);
+  EXPECT_NEAR(mesh.boundsMax.z, 10000.0f, 1e-1f);
+  engine::assets::MeshData big = ramp();
+  for (auto& p : big.positions) p *= 20.0f;
+  big.boundsMin *= 20.0f;
+  big.boundsMax *= 20.0f;
+  EXPECT_EQ(sample::placeTerrain(big), 1.0) << "terrain-sized meshes keep their metres";
+}
+
+TEST(Terrain, HeightFieldIsConservative) {
+  const engine::assets::MeshData mesh = ramp();
+  const sample::TerrainHeightField field(mesh, 64);
+  // Never below the surface; above it by at most the rise across one triangle plus two cells
+  // (200 m + 2 x 31.25 m at slope 0.5), the price of being conservative.
+  for (double x = -990.0; x < 990.0; x += 37.0) {
+    EXPECT_GE(field.heightAt(x, 0.0), (x + 1000.0) * 0.5 - 1e-3);
+    EXPECT_LE(field.heightAt(x, 0.0), (x + 1000.0) * 0.5 + 0.5 * (200.0 + 2.0 * 31.25) + 1e-3);
+  }
+  EXPECT_EQ(field.heightAt(5000.0, 0.0), 0.0);
+}
+
+TEST(Terrain, ChunksPartitionEveryTriangleOnceAndCoarserLevelsHaveFewer) {
+  const engine::assets::MeshData mesh = ramp();
+  std::vector<std::uint32_t> indices;
+  const auto chunks = sample::buildChunks(mesh, indices, 4, {0.0f, 450.0f, 1100.0f});
+  EXPECT_EQ(chunks.size(), 16u);
+  std::array<std::uint64_t, sample::kTerrainLods> totals{};
+  for (const auto& c : chunks) {
+    EXPECT_LE(c.boundsMax.x - c.boundsMin.x, 700.0f);
+    for (std::size_t l = 0; l < sample::kTerrainLods; ++l) {
+      totals[l] += c.lods[l].indexCount;
+      ASSERT_LE(c.lods[l].firstIndex + c.lods[l].indexCount, indices.size());
+      for (std::uint32_t i = 0; i < c.lods[l].indexCount; ++i) {
+        ASSERT_LT(indices[c.lods[l].firstIndex + i], mesh.positions.size());
+      }
+    }
+  }
+  EXPECT_EQ(totals[0], mesh.indices.size()) << "level 0 is the whole mesh";
+  EXPECT_LT(totals[1], totals[0] / 2);
+  EXPECT_LT(totals[2], totals[1]);
+  EXPECT_GT(totals[2], 0u);
+  EXPECT_EQ(sample::lodForDistance(100.0f), 0u);
+  EXPECT_EQ(sample::lodForDistance(20000.0f), 2u);
+}
+
+TEST(Terrain, FrustumCullingKeepsWhatIsInFrontOnly) {
+  const glm::mat4 viewProjection =
+      engine::render::perspectiveReversedZ(glm::radians(60.0f), 16.0f / 9.0f, 0.5f) *
+      engine::render::lookTo(glm::vec3(0), glm::vec3(0, 0, -1), glm::vec3(0, 1, 0));
+  EXPECT_TRUE(sample::boxInFrustum(viewProjection, {-10, -10, -110}, {10, 10, -90}));
+  EXPECT_FALSE(sample::boxInFrustum(viewProjection, {-10, -10, 90}, {10, 10, 110})) << "behind";
+  EXPECT_FALSE(sample::boxInFrustum(viewProjection, {500, -10, -110}, {520, 10, -90})) << "right";
+  EXPECT_TRUE(sample::boxInFrustum(viewProjection, {-1, -1, -1}, {1, 1, 1})) << "around the eye";
+  EXPECT_TRUE(sample::boxInFrustum(viewProjection, {-10, -10, -1e6}, {10, 10, -9e5})) << "far";
+}
+
+}  // namespace

@@ -1,0 +1,91 @@
+// Golden frames: the sample renders a handful of small views headless from a script (ground
+// view of clouds over mountains, terrain hiding clouds, a cloud in front of a mountain, above
+// the layer, inside a cloud) and each is compared with its committed golden image by the
+// tolerance tree in golden_compare.h. Every run writes the actual images to
+// build/golden_output/ (what tools/promote_goldens.sh copies into tests/goldens/); a failing
+// view also gets <name>_actual/_expected/_diff.png in build/golden_failures/.
+#include <gtest/gtest.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <string>
+
+#include "engine/assets/image_io.h"
+#include "engine/core/json_reader.h"
+#include "golden_compare.h"
+
+namespace {
+
+namespace fs = std::filesystem;
+
+std::vector<std::string> captureNames(const fs::path& script) {
+  const nlohmann::json json = engine::JsonReader::parseFile(script);
+  std::vector<std::string> names;
+  for (const auto& e : json.at("events")) {
+    if (e.contains("capture")) names.push_back(e.at("capture").get<std::string>());
+  }
+  return names;
+}
+
+TEST(GoldenFrames, ScriptedViewsMatchTheirGoldens) {
+  const fs::path script = fs::path(SAMPLE_TEST_DIR) / "scripts/golden_views.json";
+  const fs::path output = GOLDEN_OUTPUT_DIR;
+  const fs::path failures = GOLDEN_FAILURE_DIR;
+  fs::remove_all(output);
+  fs::remove_all(failures);
+  const std::string command = std::string(SAMPLE_GAME_EXE) +
+                              " --headless --validation --width 256 --height 144 --fixed-dt 0.05"
+                              " --scene " + std::string(SAMPLE_TEST_DIR) + "/scenes/golden.json" +
+                              " --script " + script.string() + " --capture " + output.string();
+  ASSERT_EQ(std::system(command.c_str()), 0) << command;
+
+  const test::GoldenTolerance tolerance;
+  const std::vector<std::string> names = captureNames(script);
+  ASSERT_GE(names.size(), 5u);
+  for (const std::string& name : names) {
+    const fs::path actualPath = output / (name + ".png");
+    const fs::path goldenPath = fs::path(GOLDEN_DIR) / (name + ".png");
+    ASSERT_TRUE(fs::exists(actualPath)) << "the run did not capture " << name;
+    if (!fs::exists(goldenPath)) {
+      ADD_FAILURE() << "no golden for " << name << ": review " << actualPath
+                    << " and promote it with tools/promote_goldens.sh";
+      continue;
+    }
+    const auto actual = engine::assets::readImage(actualPath);
+    const auto expected = engine::assets::readImage(goldenPath);
+    const test::GoldenResult result = test::compareImages(actual, expected, tolerance);
+    if (!result.passed(tolerance)) {
+      fs::create_directories(failures);
+      fs::copy_file(actualPath, failures / (name + "_actual.png"), fs::copy_options::overwrite_existing);
+      fs::copy_file(goldenPath, failures / (name + "_expected.png"), fs::copy_options::overwrite_existing);
+      engine::assets::writePng(failures / (name + "_diff.png"),
+                               test::diffImage(actual, expected, tolerance));
+      ADD_FAILURE() << name << ": " << result.describe() << "\n  actual   " << failures / (name + "_actual.png")
+                    << "\n  expected " << failures / (name + "_expected.png") << "\n  diff     "
+                    << failures / (name + "_diff.png");
+    }
+  }
+}
+
+TEST(GoldenFrames, TheComparisonCatchesAChangedImage) {
+  // Negative control for the tolerance tree: a small bright square (0.4% of the pixels) passes,
+  // a larger one fails, and a global shift below the pixel threshold still passes.
+  engine::assets::ImageRgba32f a{64, 36, std::vector<float>(64 * 36 * 4, 0.5f)};
+  engine::assets::ImageRgba32f b = a;
+  const test::GoldenTolerance t;
+  for (std::uint32_t y = 0; y < 3; ++y) {
+    for (std::uint32_t x = 0; x < 3; ++x) b.at(x, y)[0] = 1.0f;
+  }
+  EXPECT_TRUE(test::compareImages(b, a, t).passed(t)) << test::compareImages(b, a, t).describe();
+  for (std::uint32_t y = 0; y < 10; ++y) {
+    for (std::uint32_t x = 0; x < 10; ++x) b.at(x, y)[0] = 1.0f;
+  }
+  EXPECT_FALSE(test::compareImages(b, a, t).passed(t));
+  engine::assets::ImageRgba32f shifted = a;
+  for (float& v : shifted.pixels) v += 2.0f / 255.0f;
+  EXPECT_TRUE(test::compareImages(shifted, a, t).passed(t));
+  engine::assets::ImageRgba32f smaller{32, 36, std::vector<float>(32 * 36 * 4, 0.5f)};
+  EXPECT_FALSE(test::compareImages(smaller, a, t).passed(t));
+}
+
+}  // namespace

@@ -1,0 +1,100 @@
+// Scenes as data: every shipped scene loads, and malformed scenes are rejected with the file,
+// the JSON path and the reason, before anything is created.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+
+#include "engine/core/error.h"
+#include "scene/scene_description.h"
+
+namespace {
+
+namespace fs = std::filesystem;
+using sample::loadSceneDescription;
+
+fs::path writeScene(const std::string& name, const std::string& json) {
+  const fs::path dir = fs::temp_directory_path() / "cloudscape_scene_tests";
+  fs::create_directories(dir);
+  const fs::path path = dir / name;
+  std::ofstream(path) << json;
+  return path;
+}
+
+std::string errorOf(const fs::path& path) {
+  try {
+    loadSceneDescription(path);
+  } catch (const engine::Error& e) {
+    return e.what();
+  }
+  return "";
+}
+
+TEST(Scenes, EveryShippedSceneLoads) {
+  int count = 0;
+  for (const auto& entry : fs::directory_iterator(fs::path(CLOUDSCAPE_ASSET_SOURCE_DIR) / "scenes")) {
+    if (entry.path().extension() != ".json") continue;
+    const sample::SceneDescription scene = loadSceneDescription(entry.path());
+    EXPECT_FALSE(scene.name.empty()) << entry.path();
+    EXPECT_TRUE(scene.terrain.has_value()) << entry.path();
+    EXPECT_TRUE(scene.clouds.has_value()) << entry.path();
+    ++count;
+  }
+  EXPECT_GE(count, 4);
+}
+
+TEST(Scenes, ValuesArriveInTheDescription) {
+  const sample::SceneDescription s = loadSceneDescription(writeScene("values.json", R"({
+    "name": "v", "camera": {"position": [1, 2, 3], "yawDegrees": 45},
+    "sun": {"timeOfDayHours": 18.5},
+    "clouds": {"coverage": 0.3, "cloudType": 0.1, "wind": {"directionDegrees": 90, "speedMetresPerSecond": 20}}
+  })"));
+  EXPECT_EQ(s.camera.position, glm::dvec3(1, 2, 3));
+  EXPECT_DOUBLE_EQ(s.camera.yawDegrees, 45.0);
+  EXPECT_DOUBLE_EQ(s.sun.timeOfDayHours, 18.5);
+  ASSERT_TRUE(s.clouds.has_value());
+  EXPECT_FLOAT_EQ(s.clouds->settings.coverage, 0.3f);
+  EXPECT_FLOAT_EQ(s.clouds->settings.windSpeedMetresPerSecond, 20.0f);
+  EXPECT_NEAR(s.clouds->settings.windDirection.y, -1.0f, 1e-6f);  // 90 degrees: towards -Z
+  EXPECT_FALSE(s.terrain.has_value());
+}
+
+TEST(Scenes, MalformedScenesNameFilePathAndReason) {
+  struct Case {
+    const char* file;
+    const char* json;
+    const char* expected;  // substring after "<file>: "
+  };
+  const Case cases[] = {
+      {"unknown.json", R"({"name": "x", "camera": {"position": [0, 1, 0]}, "clods": {}})",
+       "clods: unknown key"},
+      {"nested_unknown.json",
+       R"({"name": "x", "camera": {"position": [0, 1, 0], "fov": 60}})", "camera.fov: unknown key"},
+      {"type.json", R"({"name": "x", "camera": {"position": [0, 1, 0]}, "clouds": {"coverage": "lots"}})",
+       "clouds.coverage: must be a number, got a string"},
+      {"range.json", R"({"name": "x", "camera": {"position": [0, 1, 0]}, "clouds": {"coverage": 1.5}})",
+       "clouds.coverage: must be in [0, 1], got 1.5"},
+      {"layer.json",
+       R"({"name": "x", "camera": {"position": [0, 1, 0]}, "clouds": {"layerBottomMetres": 3000, "layerTopMetres": 2000}})",
+       "clouds: Settings.layerTopMetres"},
+      {"missing.json", R"({"name": "x"})", "camera: is required"},
+      {"vector.json", R"({"name": "x", "camera": {"position": [0, 1]}})",
+       "camera.position: must be an array of 3 numbers"},
+      {"terrain.json",
+       R"({"name": "x", "camera": {"position": [0, 1, 0]}, "terrain": {"gltf": "nowhere.glb"}})",
+       "terrain.gltf: file not found"},
+      {"syntax.json", R"({"name": "x", )", "not valid JSON"},
+      {"root.json", R"([1, 2, 3])", "(root): must be an object"},
+      {"altitude.json", R"({"name": "x", "camera": {"position": [0, -5, 0]}})",
+       "camera.position: altitude (y) must be in [0, 50000] m"},
+  };
+  for (const Case& c : cases) {
+    const fs::path path = writeScene(c.file, c.json);
+    const std::string error = errorOf(path);
+    EXPECT_NE(error.find(path.string() + ": "), std::string::npos) << c.file << ": " << error;
+    EXPECT_NE(error.find(c.expected), std::string::npos) << c.file << ": " << error;
+  }
+  EXPECT_NE(errorOf("/no/such/scene.json").find("/no/such/scene.json"), std::string::npos);
+}
+
+}  // namespace
