@@ -1,11 +1,14 @@
 #version 460
-// Cloud ray-march (compute): one invocation per output pixel. Builds the pixel's view ray,
-// reads the host depth to stop at geometry, marches the cloud layer with the shared model
-// (cloud_march.h) and writes radiance + transmittance and the cloud depths.
-// Inputs: binding 0 CloudUniforms (UBO); 1-4 shape noise, detail noise, weather map, curl
-// noise (RGBA8 storage images, read with imageLoad); 5 host depth (texelFetch).
-// Outputs: 6 RGBA16F radiance (rgb premultiplied) + transmittance (a); 7 RG32F front depth
-// and transmittance-weighted depth (m). Feature toggles are specialization constants.
+// Cloud ray-march (compute), at the trace resolution. With temporal reconstruction only one
+// pixel per k x k tile is marched each frame (the pattern in CloudUniforms.pattern), so the
+// dispatch covers exactly those pixels. Each builds its view ray, stops at the conservative
+// scene distance (depth_downsample.comp), marches the layer with the shared model
+// (cloud_march.h) and writes radiance + transmittance and the cloud depths into the trace
+// images; reconstruct.comp turns them into a full picture.
+// Inputs: binding 0 CloudUniforms; 1-4 shape noise, detail noise, weather map, curl noise
+// (RGBA8, imageLoad); 5 scene distance (R32F, trace res); 8-9 weather maxima (empty-space
+// skipping). Outputs: 6 RGBA16F radiance + transmittance; 7 RG32F front and weighted depth
+// (m); 10 work counters. Feature toggles are specialization constants.
 // References: Schneider & Vos 2017 (Nubis); Schneider 2022 (Nubis Evolved); Hillaire 2016.
 #extension GL_GOOGLE_include_directive : require
 
@@ -18,41 +21,57 @@ layout(constant_id = 1) const uint kDetailEnabled = 1u;
 layout(constant_id = 2) const uint kCheapSampling = 1u;
 layout(constant_id = 3) const uint kMultipleScattering = 1u;
 layout(constant_id = 4) const uint kLightSteps = 6u;
+layout(constant_id = 5) const uint kCounters = 0u;
+layout(constant_id = 6) const uint kEmptySpace = 1u;
 
-layout(binding = 0, std140) uniform Uniforms { CloudUniforms u; };
+#include "frame_uniforms.glsl"
 layout(binding = 1, rgba8) uniform readonly image3D shapeNoise;
 layout(binding = 2, rgba8) uniform readonly image3D detailNoise;
 layout(binding = 3, rgba8) uniform readonly image2D weatherMap;
 layout(binding = 4, rgba8) uniform readonly image2D curlNoise;
-layout(binding = 5) uniform sampler2D sceneDepth;
+layout(binding = 5, r32f) uniform readonly image2D sceneDistance;
 layout(binding = 6, rgba16f) uniform writeonly image2D outRadiance;
 layout(binding = 7, rg32f) uniform writeonly image2D outDepth;
+layout(binding = 8, rgba8) uniform readonly image2D weatherMaxFine;
+layout(binding = 9, rgba8) uniform readonly image2D weatherMaxCoarse;
+layout(binding = 10, std430) buffer Counters { uint counters[]; };
 
 vec4 fetchShapeNoise(ivec3 texel) { return imageLoad(shapeNoise, texel); }
 vec4 fetchDetailNoise(ivec3 texel) { return imageLoad(detailNoise, texel); }
 vec4 fetchWeather(ivec2 texel) { return imageLoad(weatherMap, texel); }
 vec4 fetchCurl(ivec2 texel) { return imageLoad(curlNoise, texel); }
+vec4 fetchWeatherMaxFine(ivec2 texel) { return imageLoad(weatherMaxFine, texel); }
+vec4 fetchWeatherMaxCoarse(ivec2 texel) { return imageLoad(weatherMaxCoarse, texel); }
 
 #include "cloud_march.h"
 
 void main() {
-  const uvec2 pixel = gl_GlobalInvocationID.xy;
+  loadFrameUniforms();
+  const uvec2 tile = gl_GlobalInvocationID.xy;
+  const uvec2 pixel = tile * u.pattern.x + u.pattern.yz;
   const uvec2 extent = u.extent.xy;
   if (any(greaterThanEqual(pixel, extent))) return;
 
-  const vec2 centre = vec2(pixel) + 0.5f;
+  const vec2 centre = vec2(pixel) + 0.5f + (kJitterMode == 2u ? vec2(u.subpixel) : vec2(0.0f));
   const vec3 direction = pixelRayDirection(centre, vec2(extent), u);
-  const float depth = texelFetch(sceneDepth, ivec2(pixel), 0).r;
-  const float sceneDistance = sceneDistanceFromDepth(depth, centre, vec2(extent), u);
+  const float distance = imageLoad(sceneDistance, ivec2(pixel)).r;
 
   MarchOptions options;
   options.detail = kDetailEnabled;
   options.cheapSampling = kCheapSampling;
   options.multipleScattering = kMultipleScattering;
   options.lightSteps = kLightSteps;
+  options.emptySpace = kEmptySpace;
   const float jitter = rayJitter(pixel, u.frame.x, kJitterMode);
-  const MarchResult result = marchClouds(direction, sceneDistance, jitter, u, options);
+  const MarchResult result = marchClouds(direction, distance, jitter, u, options);
 
   imageStore(outRadiance, ivec2(pixel), vec4(result.radiance, result.transmittance));
   imageStore(outDepth, ivec2(pixel), vec4(result.frontDepth, result.weightedDepth, 0.0f, 0.0f));
+  if (kCounters != 0u) {
+    atomicAdd(counters[kCounterViewSamples], uint(result.viewSamples));
+    atomicAdd(counters[kCounterLightSamples], uint(result.lightSamples));
+    atomicAdd(counters[kCounterTracedPixels], 1u);
+    atomicAdd(counters[kCounterEarlyExits], result.earlyExit);
+    atomicAdd(counters[kCounterSkippedCells], uint(result.skippedCells));
+  }
 }

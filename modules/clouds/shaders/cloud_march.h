@@ -30,12 +30,14 @@
 CLOUDS_SHADER_BEGIN
 
 const float kInfiniteDistance = 1e30f;
+const int kMaxSkips = 96;  // empty weather cells a view ray may jump over
 
 struct MarchOptions {
   uint detail;              // high-frequency erosion
   uint cheapSampling;       // coarse steps in empty space
   uint multipleScattering;  // octave approximation
   uint lightSteps;          // samples towards the sun per cloudy view sample
+  uint emptySpace;          // jump over weather cells without cloud
 };
 
 struct MarchResult {
@@ -45,6 +47,8 @@ struct MarchResult {
   float weightedDepth;   // transmittance-weighted mean distance (m) of the cloud; 0 when none
   float viewSamples;     // density samples taken along the view ray
   float lightSamples;    // density samples taken towards the sun
+  float skippedCells;    // empty weather cells jumped over
+  uint earlyExit;        // 1 when the transmittance cutoff ended the ray
 };
 
 // Altitude after travelling `t` along a ray from `altitude` whose cosine with the local up is
@@ -144,6 +148,49 @@ CLOUDS_INLINE FieldSample sampleField(vec3 flatOffset, float altitude, float dis
   return s;
 }
 
+// Distance along the flat (x, z) direction `d` from `p` to the boundary of its `cell`-metre
+// grid cell, a little beyond so the next query lands in the next cell; 1e30 when d is vertical.
+CLOUDS_INLINE float cellExitDistance(vec2 p, vec2 d, float cell) {
+  const vec2 base = floor(p / cell) * cell;
+  float exitX = kInfiniteDistance;
+  float exitZ = kInfiniteDistance;
+  if (d.x > 1e-7f) exitX = (base.x + cell - p.x) / d.x;
+  if (d.x < -1e-7f) exitX = (base.x - p.x) / d.x;
+  if (d.y > 1e-7f) exitZ = (base.y + cell - p.y) / d.y;
+  if (d.y < -1e-7f) exitZ = (base.y - p.y) / d.y;
+  return min(exitX, exitZ) + 0.01f;
+}
+
+// True when a weather cell's maxima (R coverage, G type) leave no cloud at `altitude`: zero
+// coverage, or (for a ray whose altitude only grows) above the tallest cloud type's top.
+CLOUDS_INLINE bool weatherCellEmpty(vec4 maxima, float altitude, bool ascending,
+                                    IN(CloudUniforms) u) {
+  const float coverage = saturate(maxima.x + 2.0f * u.density.y - 1.0f);
+  const float type = saturate(u.density.z + (maxima.y - 0.5f) * u.density.w);
+  const float top = u.planet.z + typeProfile(type).w * (u.planet.w - u.planet.z);
+  return coverage <= 0.0f || (ascending && altitude > top);
+}
+
+// Empty-space skipping: the distance to jump to from `t` (t itself when the sample's cell may
+// hold cloud), from the coarse then the fine grid of weather maxima.
+CLOUDS_INLINE float emptySpaceSkip(float t, vec3 rayDirection, float altitude,
+                                   IN(CloudUniforms) u) {
+  const vec2 d = vec2(rayDirection.x, rayDirection.z);
+  const vec2 p = vec2(u.weather.x, u.weather.y) + d * t;
+  const bool ascending = rayDirection.y >= 0.0f;
+  const float coarse = u.emptySpace.y;
+  const ivec2 coarseCell = ivec2(floor(p / coarse)) & (kWeatherMaxCoarseSize - 1);
+  if (weatherCellEmpty(fetchWeatherMaxCoarse(coarseCell), altitude, ascending, u)) {
+    return t + cellExitDistance(p, d, coarse);
+  }
+  const float fine = u.emptySpace.x;
+  const ivec2 fineCell = ivec2(floor(p / fine)) & (kWeatherMaxFineSize - 1);
+  if (weatherCellEmpty(fetchWeatherMaxFine(fineCell), altitude, ascending, u)) {
+    return t + cellExitDistance(p, d, fine);
+  }
+  return t;
+}
+
 // A fixed unit vector per light sample: the cone kernel (deterministic, no arrays).
 CLOUDS_INLINE vec3 coneKernel(uint index) {
   const vec3 h = hashCell(ivec3(int(index), 17, 29), 977u) * 2.0f - 1.0f;
@@ -198,11 +245,11 @@ CLOUDS_INLINE float sceneDistanceFromDepth(float depth, vec2 pixelCentre, vec2 e
   return length(vec3(view) / view.w);
 }
 
-// Ray-start jitter in [0, 1): a 4x4 Bayer pattern per pixel, moved by a Halton sequence per
-// frame so temporal accumulation sees different offsets.
-CLOUDS_INLINE float rayJitter(uvec2 pixel, uint frameIndex, uint mode) {
+// Ray-start jitter in [0, 1): a 4x4 Bayer pattern per pixel, moved by a Halton sequence over
+// the temporal index (frames since the history was reset) so accumulation sees new offsets.
+CLOUDS_INLINE float rayJitter(uvec2 pixel, uint temporalIndex, uint mode) {
   if (mode == 0u) return 0.5f;
-  return fract(bayer4x4(pixel) + halton(frameIndex % 16u + 1u, 2u));
+  return fract(bayer4x4(pixel) + halton(temporalIndex % 64u + 1u, 2u));
 }
 
 // Marches one view ray. `rayDirection` is a unit world-space vector (y up), `sceneDistance`
@@ -216,6 +263,8 @@ CLOUDS_INLINE MarchResult marchClouds(vec3 rayDirection, float sceneDistance, fl
   r.weightedDepth = 0.0f;
   r.viewSamples = 0.0f;
   r.lightSamples = 0.0f;
+  r.skippedCells = 0.0f;
+  r.earlyExit = 0u;
 
   const float altitude = u.planet.x;
   const float cosZenith = rayDirection.y;
@@ -233,8 +282,20 @@ CLOUDS_INLINE MarchResult marchClouds(vec3 rayDirection, float sceneDistance, fl
   float t = start;  // boundary of the current step; the sample sits at t + jitter * step
   bool fine = o.cheapSampling == 0u;
   int emptyRun = 0;
-  for (int i = 0; i < maxSteps; ++i) {
-    if (t >= end || r.transmittance < cutoff) break;
+  int samples = 0;
+  // Jumps over empty cells do not spend the sample budget (a long ray over clear sky must
+  // still reach the clouds behind it); kMaxSkips bounds them.
+  for (int i = 0; i < maxSteps + kMaxSkips; ++i) {
+    if (t >= end || r.transmittance < cutoff || samples >= maxSteps) break;
+    if (o.emptySpace != 0u) {
+      const float skipTo = emptySpaceSkip(
+          t, rayDirection, altitudeAlongRay(t, cosZenith, altitude, u.planet.y), u);
+      if (skipTo > t) {
+        t = skipTo;
+        r.skippedCells += 1.0f;
+        continue;
+      }
+    }
     const float stepLength = min(viewStepLength(t, u) * (fine ? 1.0f : coarseFactor), end - t);
     const float sampleDistance = t + jitter * stepLength;
     const vec3 flatOffset = rayDirection * sampleDistance;
@@ -242,6 +303,7 @@ CLOUDS_INLINE MarchResult marchClouds(vec3 rayDirection, float sceneDistance, fl
     const FieldSample field =
         sampleField(flatOffset, sampleAltitude, sampleDistance, fine ? o.detail : 0u, u);
     r.viewSamples += 1.0f;
+    ++samples;
     if (!fine && field.base > 0.0f) {
       // A coarse sample found cloud: go back one coarse step and resample it finely.
       fine = true;
@@ -269,6 +331,7 @@ CLOUDS_INLINE MarchResult marchClouds(vec3 rayDirection, float sceneDistance, fl
 
   const float opacity = 1.0f - r.transmittance;
   if (r.transmittance < cutoff) {
+    r.earlyExit = 1u;
     // Early exit: extrapolate the remaining light as more of the same and call it opaque.
     r.radiance /= max(opacity, 1e-6f);
     r.transmittance = 0.0f;

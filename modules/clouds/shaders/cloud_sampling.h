@@ -15,6 +15,8 @@ vec4 fetchShapeNoise(ivec3 texel);
 vec4 fetchDetailNoise(ivec3 texel);
 vec4 fetchWeather(ivec2 texel);
 vec4 fetchCurl(ivec2 texel);
+vec4 fetchWeatherMaxFine(ivec2 texel);    // kWeatherMaxFineSize^2
+vec4 fetchWeatherMaxCoarse(ivec2 texel);  // kWeatherMaxCoarseSize^2
 
 CLOUDS_INLINE vec4 sampleShapeNoise(vec3 uvw) {
   const int mask = kShapeNoiseSize - 1;

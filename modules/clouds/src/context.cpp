@@ -1,16 +1,19 @@
 // clouds::Context: the public API, recording the module's passes into the host's command
-// buffer. Order within a frame: [first frame: noise generation] -> weather map (when due) ->
-// uniforms -> [sky ambient] -> march. Barriers are compute-to-compute except the outputs,
+// buffer (order in context_impl.h). Barriers are compute-to-compute except for the outputs,
 // which end visible to the host's compute and fragment shaders.
 #include <cmath>
 #include <cstring>
 
 #include "clouds_shaders/cloud_march.comp.spv.h"
 #include "clouds_shaders/composite.comp.spv.h"
+#include "clouds_shaders/depth_downsample.comp.spv.h"
 #include "clouds_shaders/noise_curl.comp.spv.h"
 #include "clouds_shaders/noise_detail.comp.spv.h"
 #include "clouds_shaders/noise_shape.comp.spv.h"
+#include "clouds_shaders/reconstruct.comp.spv.h"
 #include "clouds_shaders/sky_ambient.comp.spv.h"
+#include "clouds_shaders/upsample.comp.spv.h"
+#include "clouds_shaders/weather_max.comp.spv.h"
 #include "clouds_shaders/weather_procedural.comp.spv.h"
 #include "clouds_shaders/weather_resample.comp.spv.h"
 #include "context_impl.h"
@@ -65,10 +68,31 @@ Context::Impl::Impl(const CreateInfo& info, const detail::VulkanFunctions& funct
   detailNoise_ = OwnedImage(device_, VK_IMAGE_TYPE_3D, kNoiseFormat, {d, d, d}, storage, "detail noise");
   curlNoise_ = OwnedImage(device_, VK_IMAGE_TYPE_2D, kNoiseFormat, {c, c, 1}, storage, "curl noise");
   weatherMap_ = OwnedImage(device_, VK_IMAGE_TYPE_2D, kNoiseFormat, {w, w, 1}, storage, "weather map");
+  const auto fine = static_cast<std::uint32_t>(shader::kWeatherMaxFineSize);
+  const auto coarse = static_cast<std::uint32_t>(shader::kWeatherMaxCoarseSize);
+  weatherMaxFine_ = OwnedImage(device_, VK_IMAGE_TYPE_2D, kNoiseFormat, {fine, fine, 1}, storage,
+                               "weather maxima (fine)");
+  weatherMaxCoarse_ = OwnedImage(device_, VK_IMAGE_TYPE_2D, kNoiseFormat, {coarse, coarse, 1},
+                                 storage, "weather maxima (coarse)");
   const VkExtent3D maxExtent{info.maxRenderExtent.width, info.maxRenderExtent.height, 1};
   const VkImageUsageFlags output = storage | VK_IMAGE_USAGE_SAMPLED_BIT;
   radiance_ = OwnedImage(device_, VK_IMAGE_TYPE_2D, kRadianceFormat, maxExtent, output, "radiance");
   depth_ = OwnedImage(device_, VK_IMAGE_TYPE_2D, kDepthOutputFormat, maxExtent, output, "cloud depth");
+  // The trace resolution never exceeds the output's (traceScale <= 1).
+  sceneDistance_ = OwnedImage(device_, VK_IMAGE_TYPE_2D, VK_FORMAT_R32_SFLOAT, maxExtent, storage,
+                              "scene distance (trace)");
+  traceRadiance_ = OwnedImage(device_, VK_IMAGE_TYPE_2D, kRadianceFormat, maxExtent, storage,
+                              "marched radiance (trace)");
+  traceDepth_ = OwnedImage(device_, VK_IMAGE_TYPE_2D, kDepthOutputFormat, maxExtent, storage,
+                           "marched depth (trace)");
+  // History images also take transfers in, so the module's tests can poison them.
+  const VkImageUsageFlags history = storage | VK_IMAGE_USAGE_TRANSFER_DST_BIT;
+  for (std::uint32_t i = 0; i < 2; ++i) {
+    historyRadiance_[i] = OwnedImage(device_, VK_IMAGE_TYPE_2D, kRadianceFormat, maxExtent, history,
+                                     "history radiance " + std::to_string(i));
+    historyDepth_[i] = OwnedImage(device_, VK_IMAGE_TYPE_2D, kDepthOutputFormat, maxExtent, history,
+                                  "history depth " + std::to_string(i));
+  }
   placeholder_ = OwnedImage(device_, VK_IMAGE_TYPE_2D, VK_FORMAT_R32_SFLOAT, {1, 1, 1},
                             VK_IMAGE_USAGE_SAMPLED_BIT, "placeholder input");
 
@@ -92,21 +116,30 @@ Context::Impl::Impl(const CreateInfo& info, const detail::VulkanFunctions& funct
       std::vector{img, tex}, 0u, "weather resample");
   skyAmbientProgram_ = std::make_unique<ComputeProgram>(device_, sky_ambient_comp_spv,
       std::vector{VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, tex}, 0u, "sky ambient");
+  const VkDescriptorType ubo = VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER;  // frame_uniforms.glsl
+  const VkDescriptorType ssbo = VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
+  weatherMaxProgram_ = std::make_unique<ComputeProgram>(device_, weather_max_comp_spv,
+      std::vector{img, img}, 16u, "weather maxima");
+  downsample_ = std::make_unique<ComputeProgram>(device_, depth_downsample_comp_spv,
+      std::vector{ubo, tex, img}, 0u, "depth downsample");
   march_ = std::make_unique<ComputeProgram>(device_, cloud_march_comp_spv,
-      std::vector{VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, img, img, img, img, tex, img, img}, 0u,
-      "march");
+      std::vector{ubo, img, img, img, img, img, img, img, img, img, ssbo}, 0u, "march");
+  reconstruct_ = std::make_unique<ComputeProgram>(device_, reconstruct_comp_spv,
+      std::vector{ubo, img, img, img, img, img, img}, 0u, "reconstruct");
+  upsample_ = std::make_unique<ComputeProgram>(device_, upsample_comp_spv,
+      std::vector{ubo, img, img, tex, img, img}, 0u, "upsample");
   compositeProgram_ = std::make_unique<ComputeProgram>(device_, composite_comp_spv,
       std::vector{img, img}, sizeof(shader::CompositeConstants), "composite");
 
   const std::uint32_t frames = info.maxFramesInFlight;
   const VkDescriptorPoolSize sizes[] = {
-      {VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, 16 + 16 * frames},
-      {VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 4 + 4 * frames},
-      {VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 2 * frames},
-      {VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 2 * frames},
+      {VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, 16 + 32 * frames},
+      {VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 4 + 8 * frames},
+      {VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 8 * frames},
+      {VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 4 * frames},
   };
   VkDescriptorPoolCreateInfo poolInfo{VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO};
-  poolInfo.maxSets = 8 + 4 * frames;
+  poolInfo.maxSets = 8 + 8 * frames;
   poolInfo.poolSizeCount = static_cast<std::uint32_t>(std::size(sizes));
   poolInfo.pPoolSizes = sizes;
   check(device_.fn().vkCreateDescriptorPool(device_.device(), &poolInfo, nullptr, &pool_),
@@ -121,6 +154,16 @@ Context::Impl::Impl(const CreateInfo& info, const detail::VulkanFunctions& funct
   detail::SetWriter(device_, detailSet_).storageImage(0, detailNoise_.view()).commit();
   detail::SetWriter(device_, curlSet_).storageImage(0, curlNoise_.view()).commit();
   detail::SetWriter(device_, weatherSet_).storageImage(0, weatherMap_.view()).commit();
+  weatherMaxFineSet_ = allocateSet(weatherMaxProgram_->setLayout());
+  weatherMaxCoarseSet_ = allocateSet(weatherMaxProgram_->setLayout());
+  detail::SetWriter(device_, weatherMaxFineSet_)
+      .storageImage(0, weatherMap_.view())
+      .storageImage(1, weatherMaxFine_.view())
+      .commit();
+  detail::SetWriter(device_, weatherMaxCoarseSet_)
+      .storageImage(0, weatherMaxFine_.view())
+      .storageImage(1, weatherMaxCoarse_.view())
+      .commit();
 
   slots_.resize(frames);
   for (std::uint32_t i = 0; i < frames; ++i) {
@@ -130,7 +173,14 @@ Context::Impl::Impl(const CreateInfo& info, const detail::VulkanFunctions& funct
         VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT | VK_BUFFER_USAGE_STORAGE_BUFFER_BIT |
             VK_BUFFER_USAGE_TRANSFER_DST_BIT | VK_BUFFER_USAGE_TRANSFER_SRC_BIT,
         "uniforms " + std::to_string(i));
+    slot.counters = detail::OwnedBuffer(
+        device_, shader::kCounterCount * sizeof(std::uint32_t),
+        VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT,
+        "work counters " + std::to_string(i), /*hostVisible=*/true);
+    slot.downsample = allocateSet(downsample_->setLayout());
     slot.march = allocateSet(march_->setLayout());
+    slot.reconstruct = allocateSet(reconstruct_->setLayout());
+    slot.upsample = allocateSet(upsample_->setLayout());
     slot.composite = allocateSet(compositeProgram_->setLayout());
     slot.skyAmbient = allocateSet(skyAmbientProgram_->setLayout());
     slot.weatherResample = allocateSet(resampleProgram_->setLayout());
@@ -158,8 +208,10 @@ VkDescriptorSet Context::Impl::allocateSet(VkDescriptorSetLayout layout) {
 void Context::Impl::recordInitialisation(VkCommandBuffer cmd) {
   const auto& fn = device_.fn();
   device_.beginLabel(cmd, "clouds: noise generation");
-  for (const detail::OwnedImage* image : {&shapeNoise_, &detailNoise_, &curlNoise_, &weatherMap_,
-                                          &radiance_, &depth_}) {
+  for (const detail::OwnedImage* image :
+       {&shapeNoise_, &detailNoise_, &curlNoise_, &weatherMap_, &weatherMaxFine_,
+        &weatherMaxCoarse_, &radiance_, &depth_, &sceneDistance_, &traceRadiance_, &traceDepth_,
+        &historyRadiance_[0], &historyRadiance_[1], &historyDepth_[0], &historyDepth_[1]}) {
     detail::barrier(device_, cmd, image->image(), VK_IMAGE_ASPECT_COLOR_BIT,
                     VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_GENERAL,
                     VK_PIPELINE_STAGE_2_NONE, VK_ACCESS_2_NONE, kCompute,
@@ -219,6 +271,7 @@ void Context::Impl::recordWeather(VkCommandBuffer cmd, const FrameInputs& inputs
                                1, &slot.weatherResample, 0, nullptr);
     fn.vkCmdDispatch(cmd, n, n, 1);
     detail::memoryBarrier(device_, cmd, kCompute, kStorageWrite, kCompute, kStorageRead);
+    recordWeatherMaxima(cmd);
     device_.endLabel(cmd);
     weatherKey_.reset();  // returning to the procedural map regenerates it
     ++weatherUpdates_;
@@ -245,9 +298,32 @@ void Context::Impl::recordWeather(VkCommandBuffer cmd, const FrameInputs& inputs
                         sizeof(constants), &constants);
   fn.vkCmdDispatch(cmd, n, n, 1);
   detail::memoryBarrier(device_, cmd, kCompute, kStorageWrite, kCompute, kStorageRead);
+  recordWeatherMaxima(cmd);
   device_.endLabel(cmd);
   weatherKey_ = key;
   ++weatherUpdates_;
+}
+
+void Context::Impl::recordWeatherMaxima(VkCommandBuffer cmd) {
+  const auto& fn = device_.fn();
+  const auto weather = static_cast<std::uint32_t>(shader::kWeatherMapSize);
+  const auto fine = static_cast<std::uint32_t>(shader::kWeatherMaxFineSize);
+  const auto coarse = static_cast<std::uint32_t>(shader::kWeatherMaxCoarseSize);
+  fn.vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, weatherMaxProgram_->variant());
+  const struct {
+    VkDescriptorSet set;
+    glm::uvec4 params;  // source size, cell, target size
+  } levels[] = {{weatherMaxFineSet_, {weather, weather / fine, fine, 0u}},
+                {weatherMaxCoarseSet_, {fine, fine / coarse, coarse, 0u}}};
+  for (const auto& level : levels) {
+    fn.vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, weatherMaxProgram_->layout(), 0,
+                               1, &level.set, 0, nullptr);
+    fn.vkCmdPushConstants(cmd, weatherMaxProgram_->layout(), VK_SHADER_STAGE_COMPUTE_BIT, 0,
+                          sizeof(level.params), &level.params);
+    const std::uint32_t n = groups(level.params.z, shader::kWorkgroupSize2D);
+    fn.vkCmdDispatch(cmd, n, n, 1);
+    detail::memoryBarrier(device_, cmd, kCompute, kStorageWrite, kCompute, kStorageRead);
+  }
 }
 
 void Context::Impl::recordUniforms(VkCommandBuffer cmd, Slot& slot,
@@ -278,46 +354,115 @@ void Context::Impl::recordSkyAmbient(VkCommandBuffer cmd, const FrameInputs& inp
   device_.endLabel(cmd);
 }
 
-void Context::Impl::recordMarch(VkCommandBuffer cmd, const FrameInputs& inputs,
-                                const Settings& settings, Slot& slot) {
+void Context::Impl::bindAndDispatch(VkCommandBuffer cmd, detail::ComputeProgram& program,
+                                    VkPipeline pipeline, VkDescriptorSet set, std::uint32_t width,
+                                    std::uint32_t height) {
   const auto& fn = device_.fn();
-  const detail::MarchVariant v = detail::marchVariant(settings);
-  detail::SpecializationKey key;
-  key.values = {v.jitter, v.detail, v.cheapSampling, v.multipleScattering, v.lightSteps};
-  key.count = 5;
-  const VkPipeline pipeline = march_->variant(key);
+  fn.vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pipeline);
+  fn.vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, program.layout(), 0, 1, &set, 0,
+                             nullptr);
+  fn.vkCmdDispatch(cmd, groups(width, shader::kWorkgroupSize2D),
+                   groups(height, shader::kWorkgroupSize2D), 1);
+}
 
+void Context::Impl::recordTrace(VkCommandBuffer cmd, const FrameInputs& inputs,
+                                const Settings& settings, const detail::TemporalFrame& temporal,
+                                VkExtent2D traceExtent, Slot& slot) {
+  const auto& fn = device_.fn();
   const bool hasDepth = inputs.depthView != VK_NULL_HANDLE;
+  const VkImageView depthView = hasDepth ? inputs.depthView : placeholder_.view();
+  const VkImageLayout depthLayout =
+      hasDepth ? inputs.depthLayout : VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL;
+  const VkDeviceSize uniformBytes = sizeof(shader::CloudUniforms);
+  const detail::OwnedImage& historyIn = historyRadiance_[temporal.readHistory];
+  const detail::OwnedImage& historyDepthIn = historyDepth_[temporal.readHistory];
+  const detail::OwnedImage& historyOut = historyRadiance_[temporal.writeHistory];
+  const detail::OwnedImage& historyDepthOut = historyDepth_[temporal.writeHistory];
+
+  detail::SetWriter(device_, slot.downsample)
+      .uniformBuffer(0, slot.uniforms.buffer(), uniformBytes)
+      .sampledImage(1, depthView, nearestSampler_, depthLayout)
+      .storageImage(2, sceneDistance_.view())
+      .commit();
   detail::SetWriter(device_, slot.march)
-      .uniformBuffer(0, slot.uniforms.buffer(), sizeof(shader::CloudUniforms))
+      .uniformBuffer(0, slot.uniforms.buffer(), uniformBytes)
       .storageImage(1, shapeNoise_.view())
       .storageImage(2, detailNoise_.view())
       .storageImage(3, weatherMap_.view())
       .storageImage(4, curlNoise_.view())
-      .sampledImage(5, hasDepth ? inputs.depthView : placeholder_.view(), nearestSampler_,
-                    hasDepth ? inputs.depthLayout : VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL)
-      .storageImage(6, radiance_.view())
-      .storageImage(7, depth_.view())
+      .storageImage(5, sceneDistance_.view())
+      .storageImage(6, traceRadiance_.view())
+      .storageImage(7, traceDepth_.view())
+      .storageImage(8, weatherMaxFine_.view())
+      .storageImage(9, weatherMaxCoarse_.view())
+      .storageBuffer(10, slot.counters.buffer(), slot.counters.size())
+      .commit();
+  detail::SetWriter(device_, slot.reconstruct)
+      .uniformBuffer(0, slot.uniforms.buffer(), uniformBytes)
+      .storageImage(1, traceRadiance_.view())
+      .storageImage(2, traceDepth_.view())
+      .storageImage(3, historyIn.view())
+      .storageImage(4, historyDepthIn.view())
+      .storageImage(5, historyOut.view())
+      .storageImage(6, historyDepthOut.view())
+      .commit();
+  detail::SetWriter(device_, slot.upsample)
+      .uniformBuffer(0, slot.uniforms.buffer(), uniformBytes)
+      .storageImage(1, historyOut.view())
+      .storageImage(2, historyDepthOut.view())
+      .sampledImage(3, depthView, nearestSampler_, depthLayout)
+      .storageImage(4, radiance_.view())
+      .storageImage(5, depth_.view())
       .commit();
 
-  device_.beginLabel(cmd, "clouds: march");
-  // The host may still be reading last frame's outputs.
-  for (const detail::OwnedImage* image : {&radiance_, &depth_}) {
-    detail::barrier(device_, cmd, image->image(), VK_IMAGE_ASPECT_COLOR_BIT,
-                    VK_IMAGE_LAYOUT_GENERAL, VK_IMAGE_LAYOUT_GENERAL, kHostReadStages,
-                    kHostReadAccess, kCompute, kStorageWrite);
+  // Everything these passes write may still be read by earlier commands (last frame's
+  // reconstruction and upsample, the host's reads of the outputs).
+  detail::memoryBarrier(device_, cmd, kHostReadStages, kHostReadAccess | kStorageRead, kCompute,
+                        kStorageWrite);
+  if (info_.workCounters) {
+    fn.vkCmdFillBuffer(cmd, slot.counters.buffer(), 0, VK_WHOLE_SIZE, 0u);
+    detail::memoryBarrier(device_, cmd, VK_PIPELINE_STAGE_2_TRANSFER_BIT,
+                          VK_ACCESS_2_TRANSFER_WRITE_BIT, kCompute, kStorageRead | kStorageWrite);
   }
-  fn.vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pipeline);
-  fn.vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, march_->layout(), 0, 1,
-                             &slot.march, 0, nullptr);
-  fn.vkCmdDispatch(cmd, groups(inputs.renderExtent.width, shader::kWorkgroupSize2D),
-                   groups(inputs.renderExtent.height, shader::kWorkgroupSize2D), 1);
+
+  device_.beginLabel(cmd, "clouds: scene distance");
+  bindAndDispatch(cmd, *downsample_, downsample_->variant(), slot.downsample, traceExtent.width,
+                  traceExtent.height);
+  device_.endLabel(cmd);
+  detail::memoryBarrier(device_, cmd, kCompute, kStorageWrite, kCompute, kStorageRead);
+
+  const detail::MarchVariant v = detail::marchVariant(settings);
+  detail::SpecializationKey key;
+  key.values = {v.jitter, v.detail, v.cheapSampling, v.multipleScattering, v.lightSteps,
+                info_.workCounters ? 1u : 0u, v.emptySpace};
+  key.count = 7;
+  const std::uint32_t k = temporal.tileSize;
+  device_.beginLabel(cmd, "clouds: march");
+  // One invocation per tile: only the pixels marched this frame.
+  bindAndDispatch(cmd, *march_, march_->variant(key), slot.march, (traceExtent.width + k - 1) / k,
+                  (traceExtent.height + k - 1) / k);
+  device_.endLabel(cmd);
+  detail::memoryBarrier(device_, cmd, kCompute, kStorageWrite, kCompute, kStorageRead);
+
+  if (info_.workCounters) {
+    detail::memoryBarrier(device_, cmd, kCompute, kStorageWrite, VK_PIPELINE_STAGE_2_HOST_BIT,
+                          VK_ACCESS_2_HOST_READ_BIT);
+  }
+  device_.beginLabel(cmd, "clouds: reconstruct");
+  bindAndDispatch(cmd, *reconstruct_, reconstruct_->variant(), slot.reconstruct, traceExtent.width,
+                  traceExtent.height);
+  device_.endLabel(cmd);
+  detail::memoryBarrier(device_, cmd, kCompute, kStorageWrite, kCompute, kStorageRead);
+
+  device_.beginLabel(cmd, "clouds: upsample");
+  bindAndDispatch(cmd, *upsample_, upsample_->variant(), slot.upsample, inputs.renderExtent.width,
+                  inputs.renderExtent.height);
+  device_.endLabel(cmd);
   for (const detail::OwnedImage* image : {&radiance_, &depth_}) {
     detail::barrier(device_, cmd, image->image(), VK_IMAGE_ASPECT_COLOR_BIT,
                     VK_IMAGE_LAYOUT_GENERAL, VK_IMAGE_LAYOUT_GENERAL, kCompute, kStorageWrite,
                     kHostReadStages, kHostReadAccess);
   }
-  device_.endLabel(cmd);
 }
 
 void Context::Impl::dispatch(const FrameInputs& inputs, const Settings& settings) {
@@ -327,19 +472,48 @@ void Context::Impl::dispatch(const FrameInputs& inputs, const Settings& settings
   device_.beginLabel(cmd, "clouds");
   if (!initialised_) recordInitialisation(cmd);
   recordWeather(cmd, inputs, settings, slot);
+
+  const VkExtent2D traceExtent = detail::traceExtentFor(inputs.renderExtent, settings.traceScale);
+  const detail::TemporalFrame temporal = temporal_.plan(inputs, settings, traceExtent);
   detail::UniformContext uniformContext;
   uniformContext.reversedZ = info_.reversedZ;
   uniformContext.hasDepth = inputs.depthView != VK_NULL_HANDLE;
-  uniformContext.traceExtent = inputs.renderExtent;
+  uniformContext.traceExtent = traceExtent;
   uniformContext.fullExtent = inputs.renderExtent;
+  uniformContext.temporalIndex = temporal.temporalIndex;
+  uniformContext.tileSize = temporal.tileSize;
+  uniformContext.phase = temporal.phase;
+  uniformContext.useHistory = temporal.useHistory;
+  uniformContext.cameraDelta = temporal.cameraDelta;
+  uniformContext.deltaSeconds = temporal.deltaSeconds;
   lastUniforms_ = detail::buildUniforms(inputs, settings, uniformContext);
   lastUniforms_.frame.z |= debugFlags_;
   recordUniforms(cmd, slot, lastUniforms_);
   if (inputs.skyView != VK_NULL_HANDLE) recordSkyAmbient(cmd, inputs, slot);
-  recordMarch(cmd, inputs, settings, slot);
+  recordTrace(cmd, inputs, settings, temporal, traceExtent, slot);
   device_.endLabel(cmd);
+
+  temporal_.commit(temporal, inputs, settings, traceExtent);
+  report_.traceExtent = traceExtent;
+  report_.tileSize = temporal.tileSize;
+  report_.historyUsed = temporal.useHistory;
+  report_.insideLayer = temporal.insideLayer;
+  report_.resetReason = temporal.resetReason;
   lastSlot_ = slotIndex;
   lastExtent_ = inputs.renderExtent;
+}
+
+WorkCounters Context::Impl::workCounters(std::uint64_t frameIndex) const {
+  const Slot& slot = slots_[frameIndex % slots_.size()];
+  const auto* values = static_cast<const std::uint32_t*>(slot.counters.mapped());
+  WorkCounters counters;
+  if (values == nullptr || !info_.workCounters) return counters;
+  counters.viewSamples = values[shader::kCounterViewSamples];
+  counters.lightSamples = values[shader::kCounterLightSamples];
+  counters.tracedPixels = values[shader::kCounterTracedPixels];
+  counters.earlyExits = values[shader::kCounterEarlyExits];
+  counters.skippedCells = values[shader::kCounterSkippedCells];
+  return counters;
 }
 
 void Context::Impl::composite(VkCommandBuffer cmd, VkImageView color, VkExtent2D extent) {
@@ -492,5 +666,9 @@ bool Context::composite(VkCommandBuffer commandBuffer, VkImageView color, VkExte
 }
 
 Outputs Context::outputs() const { return impl_->outputs(); }
+FrameReport Context::lastFrameReport() const { return impl_->lastFrameReport(); }
+WorkCounters Context::workCounters(std::uint64_t frameIndex) const {
+  return impl_->workCounters(frameIndex);
+}
 
 }  // namespace clouds

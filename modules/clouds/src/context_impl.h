@@ -1,6 +1,10 @@
 #pragma once
 // The module's implementation behind clouds::Context. Also the internal interface the module's
-// own tests and tools use (noise textures, the weather map, the last uniforms).
+// own tests and tools use (noise textures, weather map, last uniforms, debug flags).
+//
+// A frame: [first: noise generation] -> weather map and its maxima (when due) -> uniforms ->
+// [sky ambient] -> conservative scene distance at trace resolution -> march (one pixel per
+// tile) -> temporal reconstruction -> depth-aware upsample into the outputs.
 #include <array>
 #include <memory>
 #include <optional>
@@ -10,6 +14,7 @@
 #include "cloud_types.h"
 #include "compute_program.h"
 #include "device_context.h"
+#include "temporal_state.h"
 #include "uniforms.h"
 
 namespace clouds {
@@ -22,6 +27,8 @@ class Context::Impl {
   void dispatch(const FrameInputs& inputs, const Settings& settings);
   void composite(VkCommandBuffer cmd, VkImageView color, VkExtent2D extent);
   Outputs outputs() const;
+  FrameReport lastFrameReport() const { return report_; }
+  WorkCounters workCounters(std::uint64_t frameIndex) const;
 
   // --- Internal access (tests, tools) --------------------------------------------------
   const detail::DeviceContext& device() const { return device_; }
@@ -29,10 +36,12 @@ class Context::Impl {
   const detail::OwnedImage& detailNoise() const { return detailNoise_; }
   const detail::OwnedImage& curlNoise() const { return curlNoise_; }
   const detail::OwnedImage& weatherMap() const { return weatherMap_; }
+  const detail::OwnedImage& weatherMaxFine() const { return weatherMaxFine_; }
+  const detail::OwnedImage& history(std::uint32_t i) const { return historyRadiance_[i]; }
+  const detail::OwnedImage& historyDepth(std::uint32_t i) const { return historyDepth_[i]; }
   const shader::CloudUniforms& lastUniforms() const { return lastUniforms_; }
   const CreateInfo& createInfo() const { return info_; }
   std::size_t pipelineVariantCount() const { return march_->variantCount(); }
-  // How many times the weather map has been (re)generated or resampled.
   std::uint64_t weatherUpdates() const { return weatherUpdates_; }
   // Test-only uniform flags (e.g. shader::kFlagHomogeneous) ORed into every frame.
   void setDebugFlags(std::uint32_t flags) { debugFlags_ = flags; }
@@ -40,7 +49,11 @@ class Context::Impl {
  private:
   struct Slot {
     detail::OwnedBuffer uniforms;
+    detail::OwnedBuffer counters;  // host-visible, CreateInfo::workCounters
+    VkDescriptorSet downsample = VK_NULL_HANDLE;
     VkDescriptorSet march = VK_NULL_HANDLE;
+    VkDescriptorSet reconstruct = VK_NULL_HANDLE;
+    VkDescriptorSet upsample = VK_NULL_HANDLE;
     VkDescriptorSet composite = VK_NULL_HANDLE;
     VkDescriptorSet skyAmbient = VK_NULL_HANDLE;
     VkDescriptorSet weatherResample = VK_NULL_HANDLE;
@@ -50,10 +63,13 @@ class Context::Impl {
   void recordInitialisation(VkCommandBuffer cmd);
   void recordWeather(VkCommandBuffer cmd, const FrameInputs& inputs, const Settings& settings,
                      Slot& slot);
+  void recordWeatherMaxima(VkCommandBuffer cmd);
   void recordUniforms(VkCommandBuffer cmd, Slot& slot, const shader::CloudUniforms& uniforms);
   void recordSkyAmbient(VkCommandBuffer cmd, const FrameInputs& inputs, Slot& slot);
-  void recordMarch(VkCommandBuffer cmd, const FrameInputs& inputs, const Settings& settings,
-                   Slot& slot);
+  void recordTrace(VkCommandBuffer cmd, const FrameInputs& inputs, const Settings& settings,
+                   const detail::TemporalFrame& temporal, VkExtent2D traceExtent, Slot& slot);
+  void bindAndDispatch(VkCommandBuffer cmd, detail::ComputeProgram& program, VkPipeline pipeline,
+                       VkDescriptorSet set, std::uint32_t width, std::uint32_t height);
 
   CreateInfo info_;
   detail::DeviceContext device_;
@@ -65,23 +81,36 @@ class Context::Impl {
   detail::OwnedImage detailNoise_;
   detail::OwnedImage curlNoise_;
   detail::OwnedImage weatherMap_;
-  detail::OwnedImage radiance_;
+  detail::OwnedImage weatherMaxFine_;
+  detail::OwnedImage weatherMaxCoarse_;
+  detail::OwnedImage sceneDistance_;  // trace resolution, R32F
+  detail::OwnedImage traceRadiance_;  // this frame's marched pixels
+  detail::OwnedImage traceDepth_;
+  std::array<detail::OwnedImage, 2> historyRadiance_;  // reconstructed frames, ping-pong
+  std::array<detail::OwnedImage, 2> historyDepth_;
+  detail::OwnedImage radiance_;       // outputs, output resolution
   detail::OwnedImage depth_;
-  detail::OwnedImage placeholder_;  // 1x1 sampled stand-in for absent optional inputs
+  detail::OwnedImage placeholder_;    // 1x1 sampled stand-in for absent optional inputs
 
   std::unique_ptr<detail::ComputeProgram> shapeProgram_;
   std::unique_ptr<detail::ComputeProgram> detailProgram_;
   std::unique_ptr<detail::ComputeProgram> curlProgram_;
   std::unique_ptr<detail::ComputeProgram> weatherProgram_;
+  std::unique_ptr<detail::ComputeProgram> weatherMaxProgram_;
   std::unique_ptr<detail::ComputeProgram> resampleProgram_;
   std::unique_ptr<detail::ComputeProgram> skyAmbientProgram_;
+  std::unique_ptr<detail::ComputeProgram> downsample_;
   std::unique_ptr<detail::ComputeProgram> march_;
+  std::unique_ptr<detail::ComputeProgram> reconstruct_;
+  std::unique_ptr<detail::ComputeProgram> upsample_;
   std::unique_ptr<detail::ComputeProgram> compositeProgram_;
 
   VkDescriptorSet shapeSet_ = VK_NULL_HANDLE;
   VkDescriptorSet detailSet_ = VK_NULL_HANDLE;
   VkDescriptorSet curlSet_ = VK_NULL_HANDLE;
   VkDescriptorSet weatherSet_ = VK_NULL_HANDLE;
+  VkDescriptorSet weatherMaxFineSet_ = VK_NULL_HANDLE;
+  VkDescriptorSet weatherMaxCoarseSet_ = VK_NULL_HANDLE;
   std::vector<Slot> slots_;
 
   bool initialised_ = false;
@@ -89,6 +118,8 @@ class Context::Impl {
   std::uint64_t weatherUpdates_ = 0;
   std::uint32_t lastSlot_ = 0;
   VkExtent2D lastExtent_{0, 0};
+  detail::TemporalState temporal_;
+  FrameReport report_{};
   shader::CloudUniforms lastUniforms_{};
   std::uint32_t debugFlags_ = 0;
 };

@@ -115,7 +115,7 @@ void OwnedImage::reset() {
 }
 
 OwnedBuffer::OwnedBuffer(const DeviceContext& context, VkDeviceSize size, VkBufferUsageFlags usage,
-                         const std::string& name)
+                         const std::string& name, bool hostVisible)
     : context_(&context), size_(size) {
   const auto& fn = context.fn();
   VkBufferCreateInfo info{VK_STRUCTURE_TYPE_BUFFER_CREATE_INFO};
@@ -127,11 +127,14 @@ OwnedBuffer::OwnedBuffer(const DeviceContext& context, VkDeviceSize size, VkBuff
   fn.vkGetBufferMemoryRequirements(context.device(), buffer_, &requirements);
   VkMemoryAllocateInfo allocation{VK_STRUCTURE_TYPE_MEMORY_ALLOCATE_INFO};
   allocation.allocationSize = requirements.size;
-  allocation.memoryTypeIndex =
-      context.memoryType(requirements.memoryTypeBits, VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT);
+  allocation.memoryTypeIndex = context.memoryType(
+      requirements.memoryTypeBits,
+      hostVisible ? VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT | VK_MEMORY_PROPERTY_HOST_COHERENT_BIT
+                  : VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT);
   check(fn.vkAllocateMemory(context.device(), &allocation, nullptr, &memory_), "vkAllocateMemory");
   context.name(VK_OBJECT_TYPE_DEVICE_MEMORY, bits(memory_), name + " memory");
   check(fn.vkBindBufferMemory(context.device(), buffer_, memory_, 0), "vkBindBufferMemory");
+  if (hostVisible) check(fn.vkMapMemory(context.device(), memory_, 0, VK_WHOLE_SIZE, 0, &mapped_), "vkMapMemory");
 }
 
 OwnedBuffer& OwnedBuffer::operator=(OwnedBuffer&& other) noexcept {
@@ -141,6 +144,7 @@ OwnedBuffer& OwnedBuffer::operator=(OwnedBuffer&& other) noexcept {
     buffer_ = std::exchange(other.buffer_, VK_NULL_HANDLE);
     memory_ = std::exchange(other.memory_, VK_NULL_HANDLE);
     size_ = other.size_;
+    mapped_ = std::exchange(other.mapped_, nullptr);
   }
   return *this;
 }
@@ -153,6 +157,7 @@ void OwnedBuffer::reset() {
   context_ = nullptr;
   buffer_ = VK_NULL_HANDLE;
   memory_ = VK_NULL_HANDLE;
+  mapped_ = nullptr;
 }
 
 void barrier(const DeviceContext& context, VkCommandBuffer cmd, VkImage image,

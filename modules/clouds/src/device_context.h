@@ -73,8 +73,9 @@ class OwnedImage {
 class OwnedBuffer {
  public:
   OwnedBuffer() = default;
+  // `hostVisible`: host-visible, coherent and persistently mapped (mapped() is non-null).
   OwnedBuffer(const DeviceContext& context, VkDeviceSize size, VkBufferUsageFlags usage,
-              const std::string& name);
+              const std::string& name, bool hostVisible = false);
   ~OwnedBuffer() { reset(); }
   OwnedBuffer(OwnedBuffer&& other) noexcept { *this = std::move(other); }
   OwnedBuffer& operator=(OwnedBuffer&& other) noexcept;
@@ -84,12 +85,14 @@ class OwnedBuffer {
 
   VkBuffer buffer() const { return buffer_; }
   VkDeviceSize size() const { return size_; }
+  const void* mapped() const { return mapped_; }
 
  private:
   const DeviceContext* context_ = nullptr;
   VkBuffer buffer_ = VK_NULL_HANDLE;
   VkDeviceMemory memory_ = VK_NULL_HANDLE;
   VkDeviceSize size_ = 0;
+  void* mapped_ = nullptr;
 };
 
 // One image barrier in GENERAL layout or a transition, for compute-only module work.

@@ -1,4 +1,6 @@
-// Settings validation and the reference mode.
+// Settings validation, the reference mode and the quality presets.
+#include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <sstream>
 #include <string>
@@ -81,13 +83,30 @@ std::string validateSettings(const Settings& s) {
   c.range("transmittanceCutoff", s.transmittanceCutoff, 0.0f, 0.5f);
   c.range("coarseStepFactor", s.coarseStepFactor, 1.0f, 16.0f);
   c.range("emptySamplesToCoarse", s.emptySamplesToCoarse, 1u, 1000u);
-  c.require(s.jitter == Jitter::None || s.jitter == Jitter::BayerHalton,
+  c.require(s.traceScale == 1.0f || s.traceScale == 0.5f || s.traceScale == 0.25f,
+            "Settings.traceScale = " + std::to_string(s.traceScale) + ": must be 1, 0.5 or 0.25");
+  c.require(s.updateInterval == 1 || s.updateInterval == 4 || s.updateInterval == 16,
+            "Settings.updateInterval = " + std::to_string(s.updateInterval) + ": must be 1, 4 or 16");
+  c.range("temporalFreshWeight", s.temporalFreshWeight, 0.05f, 1.0f);
+  c.range("historyClampMargin", s.historyClampMargin, 0.0f, 1.0f);
+  c.range("historyClampSpreadPixels", s.historyClampSpreadPixels, 0.01f, 100.0f);
+  c.range("insideLayerMarginMetres", s.insideLayerMarginMetres, 0.0f, 5000.0f);
+  c.range("historyResetDistanceMetres", s.historyResetDistanceMetres, 1.0f, 1e6f);
+  c.range("historyResetAngleDegrees", s.historyResetAngleDegrees, 0.1f, 180.0f);
+  c.range("relightResetDegrees", s.relightResetDegrees, 0.01f, 180.0f);
+  c.range("relightResetRatio", s.relightResetRatio, 0.001f, 10.0f);
+  c.require(s.jitter == Jitter::None || s.jitter == Jitter::BayerHalton ||
+                s.jitter == Jitter::BayerHaltonSubpixel,
             "Settings.jitter: unknown mode " + std::to_string(static_cast<unsigned>(s.jitter)));
   return c.error;
 }
 
 Settings referenceSettings(const Settings& base) {
   Settings s = base;
+  s.traceScale = 1.0f;
+  s.updateInterval = 1;
+  s.temporalReuse = false;
+  s.emptySpaceSkipping = false;
   s.maxViewSteps = 8192;
   s.viewStepMetres = 12.0f;
   s.viewStepGrowth = 0.0015f;
@@ -95,7 +114,91 @@ Settings referenceSettings(const Settings& base) {
   s.cheapSampling = false;
   s.transmittanceCutoff = 1e-4f;
   s.detailDistanceMetres = std::max(base.detailDistanceMetres, base.maxDistanceMetres);
+  s.jitter = Jitter::BayerHaltonSubpixel;
+  return s;
+}
+
+const char* qualityName(Quality quality) {
+  switch (quality) {
+    case Quality::Low: return "Low";
+    case Quality::Medium: return "Medium";
+    case Quality::High: return "High";
+    case Quality::Ultra: return "Ultra";
+    case Quality::Reference: return "Reference";
+  }
+  return "?";
+}
+
+bool parseQuality(std::string_view name, Quality* quality) {
+  for (Quality q : {Quality::Low, Quality::Medium, Quality::High, Quality::Ultra,
+                    Quality::Reference}) {
+    const std::string_view candidate = qualityName(q);
+    const bool same = std::equal(name.begin(), name.end(), candidate.begin(), candidate.end(),
+                                 [](char a, char b) {
+                                   return std::tolower(static_cast<unsigned char>(a)) ==
+                                          std::tolower(static_cast<unsigned char>(b));
+                                 });
+    if (same) {
+      *quality = q;
+      return true;
+    }
+  }
+  return false;
+}
+
+Settings settingsFor(Quality quality, const Settings& base) {
+  if (quality == Quality::Reference) return referenceSettings(base);
+  Settings s = base;
+  s.temporalReuse = true;
+  s.emptySpaceSkipping = true;
+  s.cheapSampling = true;
   s.jitter = Jitter::BayerHalton;
+  s.transmittanceCutoff = 0.01f;
+  switch (quality) {
+    case Quality::Low:
+      s.traceScale = 0.25f;
+      s.updateInterval = 16;
+      s.maxViewSteps = 48;
+      s.viewStepMetres = 100.0f;
+      s.viewStepGrowth = 0.006f;
+      s.lightSteps = 3;
+      s.multipleScatteringOctaves = 2;
+      s.detailDistanceMetres = 8000.0f;
+      break;
+    case Quality::Medium:
+      s.traceScale = 0.5f;
+      s.updateInterval = 16;
+      s.maxViewSteps = 64;
+      s.viewStepMetres = 80.0f;
+      s.viewStepGrowth = 0.005f;
+      s.lightSteps = 4;
+      s.multipleScatteringOctaves = 3;
+      s.detailDistanceMetres = 15000.0f;
+      break;
+    case Quality::High:
+      s.traceScale = 0.5f;
+      s.updateInterval = 16;
+      s.maxViewSteps = 96;
+      s.viewStepMetres = 60.0f;
+      s.viewStepGrowth = 0.004f;
+      s.lightSteps = 6;
+      s.multipleScatteringOctaves = 4;
+      s.detailDistanceMetres = 30000.0f;
+      s.transmittanceCutoff = 0.005f;
+      break;
+    case Quality::Ultra:
+      s.traceScale = 1.0f;
+      s.updateInterval = 4;
+      s.maxViewSteps = 160;
+      s.viewStepMetres = 40.0f;
+      s.viewStepGrowth = 0.003f;
+      s.lightSteps = 10;
+      s.multipleScatteringOctaves = 4;
+      s.detailDistanceMetres = 60000.0f;
+      s.transmittanceCutoff = 0.002f;
+      break;
+    case Quality::Reference: break;
+  }
   return s;
 }
 

@@ -1,6 +1,9 @@
 #include "uniforms.h"
 
+#include <algorithm>
 #include <cmath>
+
+#include "cloud_math.h"
 
 namespace clouds::detail {
 
@@ -62,16 +65,42 @@ shader::CloudUniforms buildUniforms(const FrameInputs& in, const Settings& s,
   std::uint32_t flags = 0;
   if (context.reversedZ) flags |= shader::kFlagReversedZ;
   if (context.hasDepth) flags |= shader::kFlagHasDepth;
-  u.frame = glm::uvec4(static_cast<std::uint32_t>(in.frameIndex & 0xffffffffu), s.maxViewSteps,
-                       flags, 0u);
+  u.frame = glm::uvec4(context.temporalIndex, s.maxViewSteps, flags, 0u);
   u.extent = glm::uvec4(context.traceExtent.width, context.traceExtent.height,
                         context.fullExtent.width, context.fullExtent.height);
+
+  // Reprojection: a point at `rel` from the camera now was at rel + (camera move) - (wind drift
+  // of the clouds) from last frame's camera, seen through last frame's rotation and projection.
+  u.previousViewProjection =
+      in.previousProjection * glm::mat4(glm::mat3(in.previousView));
+  const glm::dvec2 drift = wind * (static_cast<double>(s.windSpeedMetresPerSecond) * context.deltaSeconds);
+  const glm::dvec3 moved = context.cameraDelta - glm::dvec3(drift.x, 0.0, drift.y);
+  u.reprojection = glm::vec4(glm::vec3(moved), context.useHistory ? 1.0f : 0.0f);
+  u.temporal = glm::vec4(s.temporalFreshWeight, s.historyClampMargin, s.traceScale,
+                         s.historyClampSpreadPixels);
+  u.pattern = glm::uvec4(context.tileSize, context.phase.x, context.phase.y, 0u);
+  if (s.jitter == Jitter::BayerHaltonSubpixel) {
+    const std::uint32_t n = context.temporalIndex % 64u + 1u;
+    u.subpixel = glm::vec4(shader::halton(n, 2u) - 0.5f, shader::halton(n, 3u) - 0.5f, 0.0f, 0.0f);
+  }
+  const float weatherTexel = s.weatherTileMetres / float(shader::kWeatherMapSize);
+  u.emptySpace = glm::vec4(weatherTexel * float(shader::kWeatherMapSize / shader::kWeatherMaxFineSize),
+                           weatherTexel * float(shader::kWeatherMapSize / shader::kWeatherMaxCoarseSize),
+                           0.0f, 0.0f);
   return u;
 }
 
 MarchVariant marchVariant(const Settings& s) {
   return MarchVariant{static_cast<std::uint32_t>(s.jitter), s.detail ? 1u : 0u,
-                      s.cheapSampling ? 1u : 0u, s.multipleScattering ? 1u : 0u, s.lightSteps};
+                      s.cheapSampling ? 1u : 0u, s.multipleScattering ? 1u : 0u, s.lightSteps,
+                      s.emptySpaceSkipping ? 1u : 0u};
+}
+
+VkExtent2D traceExtentFor(VkExtent2D full, float traceScale) {
+  const auto scaled = [&](std::uint32_t v) {
+    return std::max(1u, static_cast<std::uint32_t>(std::ceil(double(v) * double(traceScale))));
+  };
+  return {scaled(full.width), scaled(full.height)};
 }
 
 }  // namespace clouds::detail

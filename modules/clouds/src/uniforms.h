@@ -12,6 +12,13 @@ struct UniformContext {
   bool hasDepth = false;
   VkExtent2D traceExtent{0, 0};
   VkExtent2D fullExtent{0, 0};
+  // Temporal reconstruction (defaults: a single self-contained frame, every pixel marched).
+  std::uint32_t temporalIndex = 0;
+  std::uint32_t tileSize = 1;
+  glm::uvec2 phase{0, 0};
+  bool useHistory = false;
+  glm::dvec3 cameraDelta{0.0};  // camera position now minus last frame's (m)
+  double deltaSeconds = 0.0;    // time since last frame (s), for the wind's drift
 };
 
 shader::CloudUniforms buildUniforms(const FrameInputs& inputs, const Settings& settings,
@@ -24,8 +31,12 @@ struct MarchVariant {
   std::uint32_t cheapSampling;
   std::uint32_t multipleScattering;
   std::uint32_t lightSteps;
+  std::uint32_t emptySpace;
 };
 MarchVariant marchVariant(const Settings& settings);
+
+// The trace resolution for an output extent: ceil(extent x scale), at least 1.
+VkExtent2D traceExtentFor(VkExtent2D full, float traceScale);
 
 // x modulo tile into [0, tile).
 double wrapToTile(double x, double tile);

@@ -46,7 +46,9 @@ namespace clouds::detail {
   X(vkCmdPushConstants)            \
   X(vkCmdDispatch)                 \
   X(vkCmdPipelineBarrier2)         \
-  X(vkCmdUpdateBuffer)
+  X(vkCmdUpdateBuffer)             \
+  X(vkCmdFillBuffer)               \
+  X(vkMapMemory)
 
 // Present only when the host enabled VK_EXT_debug_utils; used for names and labels.
 #define CLOUDS_OPTIONAL_DEVICE_FUNCTIONS(X) \

@@ -29,6 +29,8 @@ test::CpuTextures syntheticTextures() {
   fill(t.detail, 32u * 32u * 32u, 2);
   fill(t.curl, 128u * 128u, 3);
   fill(t.weather, 512u * 512u, 4);
+  t.weatherMaxFine = test::weatherMaxima(t.weather, kWeatherMapSize, kWeatherMaxFineSize);
+  t.weatherMaxCoarse = test::weatherMaxima(t.weatherMaxFine, kWeatherMaxFineSize, kWeatherMaxCoarseSize);
   return t;
 }
 
@@ -71,6 +73,7 @@ clouds::Settings slabSettings(float sigma, float stepMetres) {
   s.inScatterStrength = 0.0f;
   s.ambientOcclusionStrength = 0.0f;
   s.jitter = clouds::Jitter::None;
+  s.emptySpaceSkipping = false;  // the homogeneous test slab ignores the weather map
   return s;
 }
 

@@ -54,7 +54,10 @@ TEST_F(CloudMarch, HomogeneousSlabTransmittanceMatchesBeerLambert) {
   const DebugFlags homogeneous(kFlagHomogeneous);
   for (double tau : {0.0, 0.01, 1.0, 5.0, 1e4}) {
     for (double pitch : {89.0, 30.0, 8.0}) {
-      clouds::Settings s;
+      // One full-resolution frame (per-pixel rays are checked), no weather cells skipped (the
+      // homogeneous test slab ignores the weather map).
+      clouds::Settings s = test::singleFrame({});
+      s.emptySpaceSkipping = false;
       s.extinctionPerMetre = static_cast<float>(tau / 2500.0);
       s.viewStepGrowth = 0.0f;
       s.viewStepMetres = 100.0f;
@@ -91,7 +94,8 @@ TEST_F(CloudMarch, WhiteFurnaceConservesEnergy) {
         view.position.y = altitude;
         view.ambientTop = glm::vec3(1.0f);
         view.ambientBottom = glm::vec3(1.0f);
-        const test::CloudFrame frame = harness().render(view, furnaceSettings(density, steps), extent);
+        const test::CloudFrame frame =
+            harness().render(view, test::singleFrame(furnaceSettings(density, steps)), extent);
         for (const glm::vec4& p : frame.radiance) {
           for (int c = 0; c < 3; ++c) {
             ASSERT_NEAR(p[c] + p.a, 1.0f, 1e-3f)
@@ -164,10 +168,11 @@ std::vector<CanonicalView> canonicalViews() {
 TEST_F(CloudMarch, MatchesTheCpuReferenceOnCanonicalViews) {
   const VkExtent2D extent{128, 72};
   for (const CanonicalView& c : canonicalViews()) {
-    const test::CloudFrame gpu = harness().render(c.view, c.settings, extent);
+    const clouds::Settings settings = test::singleFrame(c.settings);
+    const test::CloudFrame gpu = harness().render(c.view, settings, extent);
     const test::CpuTextures textures = test::readTextures(harness());
     const test::CloudFrame cpu = test::renderCpuReference(
-        textures, harness().context().impl().lastUniforms(), c.settings, harness().lastDepth());
+        textures, harness().context().impl().lastUniforms(), settings, harness().lastDepth());
     float peak = 1.0f;
     for (const glm::vec4& p : cpu.radiance) peak = std::max({peak, p.r, p.g, p.b});
     const double psnr = test::psnr(gpu.radiance, cpu.radiance, peak);
@@ -319,7 +324,7 @@ TEST_F(CloudMarch, FramesFarFromTheOriginMatchTheOrigin) {
   // 100 km and 10,000 km, so the same clouds must appear; float world coordinates would not
   // even place the samples correctly out there.
   const VkExtent2D extent{96, 54};
-  clouds::Settings s;
+  clouds::Settings s = test::singleFrame({});
   s.coverage = 0.65f;
   s.jitter = clouds::Jitter::None;  // the frame index changes between renders
   CloudView origin;

@@ -1,7 +1,8 @@
 // clouds_preview: renders one view through the clouds module with key=value overrides and
 // writes a preview PNG (development aid; not a test).
 // Usage: clouds_preview OUT.png [width=320 height=180 frames=1 altitude=300 pitch=10 yaw=0
-//        sunElevation=35 sunAzimuth=200 coverage=... extinction=... reference=0 ground=0 ...]
+//        sunElevation=35 sunAzimuth=200 coverage=... extinction=... quality=0..4 reference=0
+//        compare=0 ground=0 ...]
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
@@ -64,6 +65,7 @@ int main(int argc, char** argv) {
     s.layerTopMetres = static_cast<float>(get("top", s.layerTopMetres));
     s.viewStepMetres = static_cast<float>(get("step", s.viewStepMetres));
     s.anvilBias = static_cast<float>(get("anvil", s.anvilBias));
+    if (kv.count("quality")) s = clouds::settingsFor(static_cast<clouds::Quality>(get("quality", 2)), s);
     if (get("reference", 0) != 0) s = clouds::referenceSettings(s);
     const auto start = std::chrono::steady_clock::now();
     const test::CloudFrame frame =
@@ -106,6 +108,16 @@ int main(int argc, char** argv) {
       };
       engine::assets::writePng(std::string(argv[1]) + ".shape.png", slices(harness.readShapeNoise(), 128));
       engine::assets::writePng(std::string(argv[1]) + ".detail.png", slices(harness.readDetailNoise(), 32));
+    }
+    if (get("compare", 0) != 0) {
+      // Error against the Reference mode of the same view (a fresh renderer).
+      test::CloudHarness reference(device, extent);
+      const test::CloudFrame truth = reference.render(view, clouds::referenceSettings(s), extent);
+      engine::assets::writePng(std::string(argv[1]) + ".reference.png", test::previewImage(truth, view));
+      const test::ImageError e = test::imageError(test::tonemappedPixels(frame, view),
+                                                  test::tonemappedPixels(truth, view));
+      std::printf("vs reference: PSNR %.2f dB, mean abs %.4f, max abs %.4f\n", e.psnr, e.meanAbs,
+                  e.maxAbs);
     }
     double coverage = 0.0;
     for (const auto& p : frame.radiance) coverage += 1.0 - p.a;

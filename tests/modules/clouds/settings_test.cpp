@@ -1,8 +1,14 @@
 #include <gtest/gtest.h>
 
+#include <array>
+
 #include "clouds/clouds.h"
 
 namespace {
+
+using clouds::Quality;
+constexpr std::array kPresets = {Quality::Low, Quality::Medium, Quality::High, Quality::Ultra,
+                                 Quality::Reference};
 
 TEST(CloudSettings, DefaultsAndReferenceAreValid) {
   EXPECT_EQ(clouds::validateSettings(clouds::Settings{}), "");
@@ -43,6 +49,103 @@ TEST(CloudSettings, OutOfRangeValuesNameTheField) {
     EXPECT_NE(error.find(std::string("Settings.") + c.field), std::string::npos)
         << c.field << ": got '" << error << "'";
   }
+}
+
+TEST(CloudPresets, EveryPresetIsValidAndNamed) {
+  for (Quality q : kPresets) {
+    EXPECT_EQ(clouds::validateSettings(clouds::settingsFor(q)), "") << clouds::qualityName(q);
+    Quality parsed{};
+    ASSERT_TRUE(clouds::parseQuality(clouds::qualityName(q), &parsed)) << clouds::qualityName(q);
+    EXPECT_EQ(parsed, q);
+  }
+  Quality parsed = Quality::Low;
+  EXPECT_TRUE(clouds::parseQuality("ultra", &parsed));  // case-insensitive
+  EXPECT_EQ(parsed, Quality::Ultra);
+  EXPECT_FALSE(clouds::parseQuality("extreme", &parsed));
+  EXPECT_FALSE(clouds::parseQuality("", &parsed));
+}
+
+TEST(CloudPresets, TheFunctionsOutputs) {
+  // The documented table (modules/clouds/README.md, "Quality presets").
+  struct Row {
+    Quality quality;
+    float traceScale;
+    std::uint32_t updateInterval, maxViewSteps;
+    float viewStepMetres;
+    std::uint32_t lightSteps;
+    bool temporalReuse, emptySpaceSkipping, cheapSampling;
+  };
+  const Row rows[] = {
+      {Quality::Low, 0.25f, 16, 48, 100.0f, 3, true, true, true},
+      {Quality::Medium, 0.5f, 16, 64, 80.0f, 4, true, true, true},
+      {Quality::High, 0.5f, 16, 96, 60.0f, 6, true, true, true},
+      {Quality::Ultra, 1.0f, 4, 160, 40.0f, 10, true, true, true},
+      {Quality::Reference, 1.0f, 1, 8192, 12.0f, 24, false, false, false},
+  };
+  for (const Row& r : rows) {
+    const clouds::Settings s = clouds::settingsFor(r.quality);
+    SCOPED_TRACE(clouds::qualityName(r.quality));
+    EXPECT_EQ(s.traceScale, r.traceScale);
+    EXPECT_EQ(s.updateInterval, r.updateInterval);
+    EXPECT_EQ(s.maxViewSteps, r.maxViewSteps);
+    EXPECT_EQ(s.viewStepMetres, r.viewStepMetres);
+    EXPECT_EQ(s.lightSteps, r.lightSteps);
+    EXPECT_EQ(s.temporalReuse, r.temporalReuse);
+    EXPECT_EQ(s.emptySpaceSkipping, r.emptySpaceSkipping);
+    EXPECT_EQ(s.cheapSampling, r.cheapSampling);
+  }
+}
+
+TEST(CloudPresets, EachPresetSpendsAtLeastAsMuchAsTheOneBelowOnEveryKnob) {
+  for (std::size_t i = 1; i < kPresets.size(); ++i) {
+    const clouds::Settings lo = clouds::settingsFor(kPresets[i - 1]);
+    const clouds::Settings hi = clouds::settingsFor(kPresets[i]);
+    SCOPED_TRACE(clouds::qualityName(kPresets[i]));
+    EXPECT_GE(hi.traceScale, lo.traceScale);
+    EXPECT_LE(hi.updateInterval, lo.updateInterval);
+    EXPECT_GE(hi.maxViewSteps, lo.maxViewSteps);
+    EXPECT_LE(hi.viewStepMetres, lo.viewStepMetres);
+    EXPECT_LE(hi.viewStepGrowth, lo.viewStepGrowth);
+    EXPECT_GE(hi.lightSteps, lo.lightSteps);
+    EXPECT_GE(hi.multipleScatteringOctaves, lo.multipleScatteringOctaves);
+    EXPECT_GE(hi.detailDistanceMetres, lo.detailDistanceMetres);
+    EXPECT_LE(hi.transmittanceCutoff, lo.transmittanceCutoff);
+  }
+}
+
+TEST(CloudPresets, PresetsKeepTheLookOfTheBase) {
+  clouds::Settings base;
+  base.coverage = 0.83f;
+  base.cloudType = 0.2f;
+  base.windSpeedMetresPerSecond = 31.0f;
+  base.phaseForwardG = 0.6f;
+  base.layerBottomMetres = 900.0f;
+  for (Quality q : kPresets) {
+    const clouds::Settings s = clouds::settingsFor(q, base);
+    SCOPED_TRACE(clouds::qualityName(q));
+    EXPECT_EQ(s.coverage, base.coverage);
+    EXPECT_EQ(s.cloudType, base.cloudType);
+    EXPECT_EQ(s.windSpeedMetresPerSecond, base.windSpeedMetresPerSecond);
+    EXPECT_EQ(s.phaseForwardG, base.phaseForwardG);
+    EXPECT_EQ(s.layerBottomMetres, base.layerBottomMetres);
+  }
+  // Pure: the same input gives the same output; Reference is referenceSettings().
+  EXPECT_EQ(clouds::settingsFor(Quality::High, base).maxViewSteps,
+            clouds::settingsFor(Quality::High, base).maxViewSteps);
+  EXPECT_EQ(clouds::settingsFor(Quality::Reference, base).lightSteps,
+            clouds::referenceSettings(base).lightSteps);
+}
+
+TEST(CloudSettings, TemporalKnobsAreChecked) {
+  clouds::Settings s;
+  s.traceScale = 0.3f;
+  EXPECT_NE(clouds::validateSettings(s).find("Settings.traceScale"), std::string::npos);
+  s = {};
+  s.updateInterval = 8;
+  EXPECT_NE(clouds::validateSettings(s).find("Settings.updateInterval"), std::string::npos);
+  s = {};
+  s.temporalFreshWeight = 0.0f;
+  EXPECT_NE(clouds::validateSettings(s).find("Settings.temporalFreshWeight"), std::string::npos);
 }
 
 }  // namespace

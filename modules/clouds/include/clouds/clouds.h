@@ -25,6 +25,7 @@
 #include <glm/glm.hpp>
 #include <memory>
 #include <string>
+#include <string_view>
 
 namespace clouds {
 
@@ -52,11 +53,34 @@ struct CreateInfo {
   bool reversedZ = true;
   // Seed of the procedural noise textures and weather map (same seed, same clouds).
   std::uint32_t noiseSeed = 1;
+  // Count the march's work (samples, rays, early exits) for workCounters(); costs atomics.
+  bool workCounters = false;
+};
+
+// What the march did in one frame (CreateInfo::workCounters).
+struct WorkCounters {
+  std::uint64_t viewSamples = 0;   // density samples along view rays
+  std::uint64_t lightSamples = 0;  // density samples towards the sun
+  std::uint64_t tracedPixels = 0;  // rays marched
+  std::uint64_t earlyExits = 0;    // rays ended by the transmittance cutoff
+  std::uint64_t skippedCells = 0;  // empty weather cells jumped over
+};
+
+// How the last dispatch reconstructed the frame.
+struct FrameReport {
+  VkExtent2D traceExtent{0, 0};
+  std::uint32_t tileSize = 1;       // one pixel per tileSize x tileSize tile was marched
+  bool historyUsed = false;         // last frame's result was reprojected
+  bool insideLayer = false;         // the camera was in or near the cloud layer
+  const char* resetReason = "";     // why the history was not used ("" when it was)
 };
 
 enum class Jitter : std::uint32_t {
   None = 0,         // every ray starts at the segment start (banding at low step counts)
   BayerHalton = 1,  // 4x4 Bayer per pixel plus a Halton offset per frame
+  // Also moves each frame's rays inside their pixels (Halton 2, 3): frames averaged by the
+  // host converge to a supersampled image. The Reference mode's jitter.
+  BayerHaltonSubpixel = 2,
 };
 
 // Plain settings with defaults; ranges are checked by validateSettings() and dispatch().
@@ -122,14 +146,46 @@ struct Settings {
   std::uint32_t emptySamplesToCoarse = 6;  // [1, 1000] empty fine samples before going coarse
   bool detail = true;                   // high-frequency erosion
   Jitter jitter = Jitter::BayerHalton;
+  bool emptySpaceSkipping = true;       // jump over weather cells without cloud (exact)
+
+  // --- Resolution and temporal reconstruction ----------------------------------------------
+  // The march runs at traceScale x the output resolution (per axis); each frame it refreshes
+  // one pixel in every k x k tile (k * k = updateInterval) and reprojects last frame's result
+  // for the rest; a depth-aware upsample produces the output. Where reprojection cannot work
+  // (camera cut, resize, big jumps or relighting, the camera in or near the layer) the frame
+  // falls back to a denser tile of at most 2 x 2, rebuilt from this frame's samples alone.
+  float traceScale = 0.5f;              // {1, 0.5, 0.25} trace resolution / output resolution
+  std::uint32_t updateInterval = 16;    // {1, 4, 16} frames between refreshes of a pixel
+  bool temporalReuse = true;            // reproject history (off: every frame stands alone)
+  float temporalFreshWeight = 0.6f;     // [0.05, 1] weight of a fresh sample over its history
+  float historyClampMargin = 0.1f;      // [0, 1] slack of the history clamp (x neighbourhood range)
+  // The history is clamped to this frame's fresh neighbourhood only as far as its reprojection
+  // is uncertain: fully where the nearest cloud and the far distance reproject this many trace
+  // pixels apart (a moving camera near cloud), not at all for a static or turning camera.
+  float historyClampSpreadPixels = 1.0f;  // [0.01, 100]
+  float insideLayerMarginMetres = 150.0f;   // [0, 5000] no reprojection this close to the layer
+  float historyResetDistanceMetres = 2000.0f;  // [1, 1e6] camera move in one frame that resets
+  float historyResetAngleDegrees = 30.0f;      // [0.1, 180] camera turn in one frame that resets
+  float relightResetDegrees = 2.0f;            // [0.01, 180] sun turn in one frame that resets
+  float relightResetRatio = 0.2f;              // [0.001, 10] relative change of sun illuminance
 };
+
+// Quality presets, cheapest first; Reference is referenceSettings().
+enum class Quality : std::uint32_t { Low, Medium, High, Ultra, Reference };
+const char* qualityName(Quality quality);
+// Parses a qualityName() case-insensitively; false (and *quality untouched) when unknown.
+bool parseQuality(std::string_view name, Quality* quality);
+// Pure function: `base` with the cost knobs of `quality` (look settings such as coverage,
+// lighting and wind are kept).
+Settings settingsFor(Quality quality, const Settings& base = {});
 
 // Empty when every field is in range, else "Settings.<field> = <value>: <reason>" for the
 // first field at fault.
 std::string validateSettings(const Settings& settings);
 
-// The converged reference mode of the same shader: short steps, many light samples, no
-// coarse sampling and no early exit worth mentioning. Ground truth for accuracy-versus-cost.
+// The converged reference mode of the same shader: full resolution, no temporal reuse, short
+// steps, many light samples, no coarse sampling or empty-space skipping, and no early exit
+// worth mentioning. Ground truth for accuracy-versus-cost.
 Settings referenceSettings(const Settings& base);
 
 struct FrameInputs {
@@ -210,6 +266,10 @@ class Context {
                  std::string* error);
 
   Outputs outputs() const;
+  FrameReport lastFrameReport() const;
+  // The counters of frame `frameIndex`, which must have completed on the GPU and be one of
+  // the last maxFramesInFlight frames; zeros unless CreateInfo::workCounters.
+  WorkCounters workCounters(std::uint64_t frameIndex) const;
 
   class Impl;
   Impl& impl() { return *impl_; }  // for the module's own tests and tools

@@ -38,7 +38,15 @@ glm::mat4 projectionMatrix(const CloudView& v, VkExtent2D extent) {
                                       float(extent.width) / float(extent.height), 0.5f);
 }
 
-CloudHarness::CloudHarness(gfx::Device& device, VkExtent2D maxExtent, std::uint32_t noiseSeed)
+clouds::Settings singleFrame(clouds::Settings settings) {
+  settings.traceScale = 1.0f;
+  settings.updateInterval = 1;
+  settings.temporalReuse = false;
+  return settings;
+}
+
+CloudHarness::CloudHarness(gfx::Device& device, VkExtent2D maxExtent, std::uint32_t noiseSeed,
+                           bool workCounters)
     : device_(device) {
   clouds::CreateInfo info;
   info.instance = device.vkInstance();
@@ -51,6 +59,7 @@ CloudHarness::CloudHarness(gfx::Device& device, VkExtent2D maxExtent, std::uint3
   info.maxFramesInFlight = 2;
   info.reversedZ = true;
   info.noiseSeed = noiseSeed;
+  info.workCounters = workCounters;
   std::string error;
   context_ = clouds::Context::create(info, &error);
   if (!context_) throw Error("clouds::Context::create: " + error);
@@ -102,9 +111,10 @@ clouds::FrameInputs CloudHarness::makeInputs(const CloudView& view, VkExtent2D e
   in.view = viewMatrix(view);
   in.projection = projectionMatrix(view, extent);
   in.cameraPosition = view.position;
-  in.previousView = in.view;
-  in.previousProjection = in.projection;
-  in.previousCameraPosition = in.cameraPosition;
+  in.previousView = previousInputs_ ? previousInputs_->view : in.view;
+  in.previousProjection = previousInputs_ ? previousInputs_->projection : in.projection;
+  in.previousCameraPosition =
+      previousInputs_ ? previousInputs_->cameraPosition : in.cameraPosition;
   in.sunDirection = sunDirection(view);
   in.sunIlluminance = view.sunIlluminance;
   in.ambientTop = view.ambientTop;
@@ -113,8 +123,31 @@ clouds::FrameInputs CloudHarness::makeInputs(const CloudView& view, VkExtent2D e
   in.weatherView = view.weatherView;
   in.skyView = view.skyView;
   in.frameIndex = frameIndex_;
-  in.reset = frameIndex_ == 0;
+  in.reset = cutNext_;
   return in;
+}
+
+CloudFrame CloudHarness::renderAveraged(const CloudView& view, const clouds::Settings& settings,
+                                        VkExtent2D extent, std::uint32_t frames) {
+  cut();
+  CloudFrame sum;
+  for (std::uint32_t i = 0; i < frames; ++i) {
+    const CloudFrame frame = render(view, settings, extent);
+    if (i == 0) {
+      sum = frame;
+      continue;
+    }
+    for (std::size_t p = 0; p < frame.radiance.size(); ++p) {
+      sum.radiance[p] += frame.radiance[p];
+      sum.depth[p] += frame.depth[p];
+    }
+  }
+  const float scale = 1.0f / static_cast<float>(std::max(frames, 1u));
+  for (std::size_t p = 0; p < sum.radiance.size(); ++p) {
+    sum.radiance[p] *= scale;
+    sum.depth[p] *= scale;
+  }
+  return sum;
 }
 
 std::string CloudHarness::tryRender(const CloudView& view, const clouds::Settings& settings,
@@ -136,8 +169,11 @@ std::string CloudHarness::tryRender(const CloudView& view, const clouds::Setting
   });
   const auto scopes = timer_->resolve();
   lastGpuMilliseconds_ = scopes.empty() ? 0.0 : scopes[0].milliseconds;
-  if (ok) ++frameIndex_;
-  return ok ? std::string() : error;
+  if (!ok) return error;
+  previousInputs_ = lastInputs_;
+  cutNext_ = false;
+  ++frameIndex_;
+  return {};
 }
 
 CloudFrame CloudHarness::render(const CloudView& view, const clouds::Settings& settings,
@@ -238,14 +274,43 @@ std::vector<std::uint8_t> CloudHarness::readCurlNoise() {
   const auto& image = context_->impl().curlNoise();
   return readTexels(device_, image.image(), image.extent());
 }
+std::vector<std::uint8_t> CloudHarness::readWeatherMaxFine() {
+  const auto& image = context_->impl().weatherMaxFine();
+  return readTexels(device_, image.image(), image.extent());
+}
+
+void CloudHarness::poisonHistory() {
+  device_.immediateSubmit([&](VkCommandBuffer cmd) {
+    const VkImageSubresourceRange range{VK_IMAGE_ASPECT_COLOR_BIT, 0, 1, 0, 1};
+    const gfx::ImageState general{VK_IMAGE_LAYOUT_GENERAL, VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT,
+                                  VK_ACCESS_2_MEMORY_READ_BIT | VK_ACCESS_2_MEMORY_WRITE_BIT};
+    const gfx::ImageState transfer{VK_IMAGE_LAYOUT_GENERAL, VK_PIPELINE_STAGE_2_CLEAR_BIT,
+                                   VK_ACCESS_2_TRANSFER_WRITE_BIT};
+    VkClearColorValue nan{};
+    for (float& c : nan.float32) c = std::nanf("");
+    for (std::uint32_t i = 0; i < 2; ++i) {
+      for (VkImage image : {context_->impl().history(i).image(),
+                            context_->impl().historyDepth(i).image()}) {
+        gfx::imageBarrier(cmd, image, range, general, transfer);
+        vkCmdClearColorImage(cmd, image, VK_IMAGE_LAYOUT_GENERAL, &nan, 1, &range);
+        gfx::imageBarrier(cmd, image, range, transfer, general);
+      }
+    }
+  });
+}
+
+clouds::WorkCounters CloudHarness::lastWorkCounters() const {
+  return frameIndex_ == 0 ? clouds::WorkCounters{} : context_->workCounters(frameIndex_ - 1);
+}
+
 std::vector<std::uint8_t> CloudHarness::readWeatherMap() {
   const auto& image = context_->impl().weatherMap();
   return readTexels(device_, image.image(), image.extent());
 }
 
-assets::ImageRgba8 previewImage(const CloudFrame& frame, const CloudView& view, float exposure) {
-  assets::ImageRgba8 image{frame.extent.width, frame.extent.height, {}};
-  image.pixels.resize(std::size_t{4} * frame.extent.width * frame.extent.height);
+std::vector<glm::vec3> tonemappedPixels(const CloudFrame& frame, const CloudView& view,
+                                        float exposure) {
+  std::vector<glm::vec3> pixels(std::size_t{frame.extent.width} * frame.extent.height);
   const glm::mat4 inverseProjection = glm::inverse(projectionMatrix(view, frame.extent));
   const glm::mat3 viewToWorld = glm::transpose(glm::mat3(viewMatrix(view)));
   for (std::uint32_t y = 0; y < frame.extent.height; ++y) {
@@ -263,13 +328,45 @@ assets::ImageRgba8 previewImage(const CloudFrame& frame, const CloudView& view, 
       const glm::vec3 hdr = background * c.a + glm::vec3(c);
       const glm::vec3 mapped = engine::shaders::tonemap(hdr, exposure);
       for (int k = 0; k < 3; ++k) {
-        image.pixels[4 * i + static_cast<std::size_t>(k)] = static_cast<std::uint8_t>(
-            std::clamp(engine::shaders::linearToSrgb(mapped[k]), 0.0f, 1.0f) * 255.0f + 0.5f);
+        pixels[i][k] = std::clamp(engine::shaders::linearToSrgb(mapped[k]), 0.0f, 1.0f);
       }
-      image.pixels[4 * i + 3] = 255;
     }
   }
+  return pixels;
+}
+
+assets::ImageRgba8 previewImage(const CloudFrame& frame, const CloudView& view, float exposure) {
+  const std::vector<glm::vec3> pixels = tonemappedPixels(frame, view, exposure);
+  assets::ImageRgba8 image{frame.extent.width, frame.extent.height, {}};
+  image.pixels.resize(4 * pixels.size());
+  for (std::size_t i = 0; i < pixels.size(); ++i) {
+    for (int k = 0; k < 3; ++k) {
+      image.pixels[4 * i + static_cast<std::size_t>(k)] =
+          static_cast<std::uint8_t>(pixels[i][k] * 255.0f + 0.5f);
+    }
+    image.pixels[4 * i + 3] = 255;
+  }
   return image;
+}
+
+ImageError imageError(const std::vector<glm::vec3>& image, const std::vector<glm::vec3>& reference) {
+  ImageError error;
+  if (image.size() != reference.size() || image.empty()) return error;
+  double squares = 0.0;
+  double sum = 0.0;
+  for (std::size_t i = 0; i < image.size(); ++i) {
+    for (int k = 0; k < 3; ++k) {
+      const double d = std::abs(double(image[i][k]) - double(reference[i][k]));
+      squares += d * d;
+      sum += d;
+      error.maxAbs = std::max(error.maxAbs, d);
+    }
+  }
+  const double count = 3.0 * static_cast<double>(image.size());
+  error.meanAbs = sum / count;
+  const double mse = squares / count;
+  error.psnr = mse <= 0.0 ? 200.0 : 10.0 * std::log10(1.0 / mse);
+  return error;
 }
 
 double psnr(const std::vector<glm::vec4>& a, const std::vector<glm::vec4>& b, double peak) {

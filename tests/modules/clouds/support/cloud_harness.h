@@ -48,17 +48,36 @@ struct CloudFrame {
   std::vector<glm::vec2> depth;     // front depth, weighted depth (m)
 };
 
+// `settings` rendered as one self-contained frame: every pixel marched at full resolution, no
+// history. What the CPU reference computes, and what analytic tests compare against.
+clouds::Settings singleFrame(clouds::Settings settings);
+
 class CloudHarness {
  public:
-  CloudHarness(engine::gfx::Device& device, VkExtent2D maxExtent, std::uint32_t noiseSeed = 1);
+  CloudHarness(engine::gfx::Device& device, VkExtent2D maxExtent, std::uint32_t noiseSeed = 1,
+               bool workCounters = false);
   ~CloudHarness();
 
-  // Renders `frames` frames of `view` (frame indices continue across calls unless reset) and
-  // returns the last one. Throws engine::Error when the module rejects the inputs.
+  // Renders `frames` frames of `view` and returns the last one. Frames form one sequence
+  // across calls, as a game's would: each passes the previous call's camera as the previous
+  // camera, and only the first frame (or the one after cut()) is a camera cut. Throws
+  // engine::Error when the module rejects the inputs.
   CloudFrame render(const CloudView& view, const clouds::Settings& settings, VkExtent2D extent,
                     std::uint32_t frames = 1);
+  // The mean of `frames` frames of `view` rendered after a cut. With the Reference mode's
+  // jitter (rays move inside their pixels frame to frame) this is a converged, supersampled
+  // image: the ground truth of the accuracy measurements.
+  CloudFrame renderAveraged(const CloudView& view, const clouds::Settings& settings,
+                            VkExtent2D extent, std::uint32_t frames);
   // Records one frame, returning the module's error message instead of throwing.
   std::string tryRender(const CloudView& view, const clouds::Settings& settings, VkExtent2D extent);
+
+  // Marks the next frame as a camera cut (FrameInputs::reset).
+  void cut() { cutNext_ = true; }
+  // Overwrites both temporal history images with NaN (tests: poisoned history must not leak).
+  void poisonHistory();
+  // The work counters of the last rendered frame (zeros unless created with workCounters).
+  clouds::WorkCounters lastWorkCounters() const;
 
   clouds::Context& context() { return *context_; }
   // The host depth values of the last render with groundDepth (reversed-Z), else empty.
@@ -72,6 +91,7 @@ class CloudHarness {
   std::vector<std::uint8_t> readDetailNoise();
   std::vector<std::uint8_t> readCurlNoise();
   std::vector<std::uint8_t> readWeatherMap();
+  std::vector<std::uint8_t> readWeatherMaxFine();
 
  private:
   void prepareDepth(const CloudView& view, VkExtent2D extent);
@@ -82,14 +102,27 @@ class CloudHarness {
   engine::gfx::Image depth_;
   std::vector<float> depthValues_;
   std::uint64_t frameIndex_ = 0;
+  bool cutNext_ = true;
+  std::optional<clouds::FrameInputs> previousInputs_;
   std::unique_ptr<engine::gfx::GpuTimer> timer_;
   double lastGpuMilliseconds_ = 0.0;
   clouds::FrameInputs lastInputs_{};
 };
 
-// Display helpers: composite over a plain sky gradient, tonemap, write PNG.
+// Display helpers: the clouds composited over a plain sky gradient (and dark ground below the
+// horizon), tonemapped, in sRGB [0, 1] per channel; and that as an 8-bit image.
+std::vector<glm::vec3> tonemappedPixels(const CloudFrame& frame, const CloudView& view,
+                                        float exposure = 1.0f);
 engine::assets::ImageRgba8 previewImage(const CloudFrame& frame, const CloudView& view,
                                         float exposure = 1.0f);
+
+// Error of an image against a reference, both as tonemappedPixels() (values in [0, 1]).
+struct ImageError {
+  double psnr = 0.0;     // dB, peak 1; 200 for identical images
+  double meanAbs = 0.0;  // mean absolute difference per channel
+  double maxAbs = 0.0;   // largest absolute difference of any channel
+};
+ImageError imageError(const std::vector<glm::vec3>& image, const std::vector<glm::vec3>& reference);
 double psnr(const std::vector<glm::vec4>& a, const std::vector<glm::vec4>& b, double peak);
 
 }  // namespace test

@@ -1,5 +1,6 @@
 #include "cpu_reference.h"
 
+#include <algorithm>
 #include <thread>
 
 #include "cloud_march.h"
@@ -30,6 +31,13 @@ vec4 fetchWeather(ivec2 t) {
 vec4 fetchCurl(ivec2 t) {
   return texel(gTextures->curl, std::size_t(t.y) * kCurlNoiseSize + std::size_t(t.x));
 }
+vec4 fetchWeatherMaxFine(ivec2 t) {
+  return texel(gTextures->weatherMaxFine, std::size_t(t.y) * kWeatherMaxFineSize + std::size_t(t.x));
+}
+vec4 fetchWeatherMaxCoarse(ivec2 t) {
+  return texel(gTextures->weatherMaxCoarse,
+               std::size_t(t.y) * kWeatherMaxCoarseSize + std::size_t(t.x));
+}
 
 }  // namespace clouds::shader
 
@@ -37,9 +45,35 @@ namespace test {
 
 using namespace clouds::shader;
 
+std::vector<std::uint8_t> weatherMaxima(const std::vector<std::uint8_t>& source, int sourceSize,
+                                        int targetSize) {
+  const int cell = sourceSize / targetSize;
+  std::vector<std::uint8_t> maxima(std::size_t(4) * std::size_t(targetSize * targetSize), 0);
+  for (int cy = 0; cy < targetSize; ++cy) {
+    for (int cx = 0; cx < targetSize; ++cx) {
+      std::uint8_t* out = &maxima[4 * std::size_t(cy * targetSize + cx)];
+      for (int y = -1; y <= cell; ++y) {
+        for (int x = -1; x <= cell; ++x) {
+          const int sx = (cx * cell + x + sourceSize) % sourceSize;
+          const int sy = (cy * cell + y + sourceSize) % sourceSize;
+          const std::uint8_t* in = &source[4 * std::size_t(sy * sourceSize + sx)];
+          out[0] = std::max(out[0], in[0]);
+          out[1] = std::max(out[1], in[1]);
+        }
+      }
+      out[3] = 255;
+    }
+  }
+  return maxima;
+}
+
 CpuTextures readTextures(CloudHarness& harness) {
-  return CpuTextures{harness.readShapeNoise(), harness.readDetailNoise(), harness.readCurlNoise(),
-                     harness.readWeatherMap()};
+  CpuTextures textures{harness.readShapeNoise(), harness.readDetailNoise(),
+                       harness.readCurlNoise(), harness.readWeatherMap(), {}, {}};
+  textures.weatherMaxFine = weatherMaxima(textures.weather, kWeatherMapSize, kWeatherMaxFineSize);
+  textures.weatherMaxCoarse =
+      weatherMaxima(textures.weatherMaxFine, kWeatherMaxFineSize, kWeatherMaxCoarseSize);
+  return textures;
 }
 
 CloudFrame renderCpuReference(const CpuTextures& textures, const CloudUniforms& u,
@@ -48,7 +82,7 @@ CloudFrame renderCpuReference(const CpuTextures& textures, const CloudUniforms& 
   gTextures = &textures;
   const clouds::detail::MarchVariant variant = clouds::detail::marchVariant(settings);
   MarchOptions options{variant.detail, variant.cheapSampling, variant.multipleScattering,
-                       variant.lightSteps};
+                       variant.lightSteps, variant.emptySpace};
   CloudFrame frame;
   frame.extent = {u.extent.x, u.extent.y};
   const std::size_t pixels = std::size_t{u.extent.x} * u.extent.y;
@@ -57,7 +91,8 @@ CloudFrame renderCpuReference(const CpuTextures& textures, const CloudUniforms& 
   auto work = [&](unsigned first) {
     for (std::size_t i = first; i < pixels; i += threads) {
       const uvec2 pixel(static_cast<uint>(i % u.extent.x), static_cast<uint>(i / u.extent.x));
-      const vec2 centre = vec2(pixel) + 0.5f;
+      const vec2 centre = vec2(pixel) + 0.5f +
+                          (variant.jitter == 2u ? vec2(u.subpixel) : vec2(0.0f));
       const vec2 extent = vec2(u.extent.x, u.extent.y);
       const vec3 direction = pixelRayDirection(centre, extent, u);
       const float sceneDistance =

@@ -15,9 +15,17 @@ struct CpuTextures {
   std::vector<std::uint8_t> detail;   // 32^3 RGBA8
   std::vector<std::uint8_t> curl;     // 128^2 RGBA8
   std::vector<std::uint8_t> weather;  // 512^2 RGBA8
+  // Empty-space-skipping maxima computed on the CPU from `weather` (see weatherMaxima).
+  std::vector<std::uint8_t> weatherMaxFine;    // 64^2 RGBA8
+  std::vector<std::uint8_t> weatherMaxCoarse;  // 8^2 RGBA8
 };
 
 CpuTextures readTextures(CloudHarness& harness);
+
+// The module's weather_max.comp on the CPU: each `targetSize`^2 cell holds the maximum R and G
+// of the source texels it covers plus a one-texel apron, wrapping (B = 0, A = 255).
+std::vector<std::uint8_t> weatherMaxima(const std::vector<std::uint8_t>& source, int sourceSize,
+                                        int targetSize);
 
 // Renders with the uniforms and options of a GPU frame. `depth`, when non-empty, holds the
 // host depth values the GPU sampled (reversed-Z), one per pixel.

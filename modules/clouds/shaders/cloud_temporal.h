@@ -1,0 +1,64 @@
+// Temporal reconstruction at the trace resolution, shared by reconstruct.comp (and readable by
+// tests): which pixels are fresh this frame, the spatial estimate from this frame's fresh
+// samples, reprojection of last frame's result through the cloud's depth, and the clamp of
+// that history to the fresh neighbourhood (so moving and relit clouds do not ghost).
+#ifndef CLOUDS_CLOUD_TEMPORAL_H
+#define CLOUDS_CLOUD_TEMPORAL_H
+
+#include "cloud_math.h"
+#include "cloud_types.h"
+
+CLOUDS_SHADER_BEGIN
+
+CLOUDS_INLINE bool isFreshPixel(uvec2 pixel, IN(CloudUniforms) u) {
+  const uint k = u.pattern.x;
+  return (pixel.x % k) == u.pattern.y && (pixel.y % k) == u.pattern.z;
+}
+
+// Bilinear weights and the four fresh pixels around `pixel` on this frame's k-grid.
+CLOUDS_INLINE void freshNeighbours(uvec2 pixel, IN(CloudUniforms) u, OUT(ivec2) p00, OUT(vec2) f) {
+  const float k = float(u.pattern.x);
+  const vec2 phase = vec2(float(u.pattern.y), float(u.pattern.z));
+  const vec2 grid = (vec2(pixel) - phase) / k;
+  const vec2 g0 = floor(grid);
+  f = grid - g0;
+  p00 = ivec2(g0 * k + phase);
+}
+
+// Blending cloud depths. A pixel without cloud has depth 0, which must not be averaged in:
+// half a cloud at 20 km next to clear sky is a cloud at 20 km, not at 10 km. The blend keeps
+// the nearest front depth of the contributing pixels (so "all of this cloud is behind that
+// geometry" stays conservative) and the opacity-weighted mean of their weighted depths.
+struct DepthBlend {
+  float front;        // nearest front depth so far (m); 0 before any cloud
+  float weightedSum;  // sum of weight x opacity x weighted depth
+  float opacitySum;   // sum of weight x opacity
+};
+
+CLOUDS_INLINE DepthBlend depthBlendStart() {
+  DepthBlend b;
+  b.front = 0.0f;
+  b.weightedSum = 0.0f;
+  b.opacitySum = 0.0f;
+  return b;
+}
+
+CLOUDS_INLINE void depthBlendAdd(INOUT(DepthBlend) b, float weight, float transmittance,
+                                 vec2 depth) {
+  if (weight > 0.0f && depth.x > 0.0f) b.front = b.front > 0.0f ? min(b.front, depth.x) : depth.x;
+  const float opacity = weight * saturate(1.0f - transmittance);
+  b.weightedSum += opacity * depth.y;
+  b.opacitySum += opacity;
+}
+
+CLOUDS_INLINE vec2 depthBlendResult(DepthBlend b) {
+  return vec2(b.front, b.opacitySum > 1e-6f ? b.weightedSum / b.opacitySum : 0.0f);
+}
+
+CLOUDS_INLINE bool finiteVec4(vec4 v) {
+  return !(any(isnan(v)) || any(isinf(v)));
+}
+
+CLOUDS_SHADER_END
+
+#endif

@@ -1,0 +1,33 @@
+#version 460
+// Conservative scene distance at the trace resolution: each trace pixel keeps the farthest
+// host geometry among the output pixels it covers (the sky is "infinitely far"), so clouds are
+// marched wherever any covered pixel could see them; the upsample pass then hides them again,
+// per output pixel, behind nearer geometry. Without a host depth every distance is infinite.
+// Inputs: binding 0 CloudUniforms, 1 host depth (texelFetch). Output: 2 R32F distance (m).
+#extension GL_GOOGLE_include_directive : require
+#include "cloud_types.h"
+
+layout(local_size_x = 8, local_size_y = 8) in;
+#include "frame_uniforms.glsl"
+layout(binding = 1) uniform sampler2D hostDepth;
+layout(binding = 2, r32f) uniform writeonly image2D outDistance;
+
+#include "cloud_march.h"
+
+void main() {
+  loadFrameUniforms();
+  const uvec2 pixel = gl_GlobalInvocationID.xy;
+  if (any(greaterThanEqual(pixel, u.extent.xy))) return;
+  const uvec2 full = u.extent.zw;
+  // The output pixels whose centres fall in this trace pixel.
+  const uvec2 first = uvec2(floor(vec2(pixel) * vec2(full) / vec2(u.extent.xy)));
+  const uvec2 last = min(uvec2(ceil(vec2(pixel + 1u) * vec2(full) / vec2(u.extent.xy))), full) - 1u;
+  float farthest = 0.0f;
+  for (uint y = first.y; y <= last.y; ++y) {
+    for (uint x = first.x; x <= last.x; ++x) {
+      const float depth = texelFetch(hostDepth, ivec2(x, y), 0).r;
+      farthest = max(farthest, sceneDistanceFromDepth(depth, vec2(x, y) + 0.5f, vec2(full), u));
+    }
+  }
+  imageStore(outDistance, ivec2(pixel), vec4(farthest, 0.0f, 0.0f, 0.0f));
+}

@@ -1,0 +1,146 @@
+#include "temporal_state.h"
+
+#include <algorithm>
+#include <cmath>
+#include <iterator>
+
+namespace clouds::detail {
+namespace {
+
+constexpr const char* kInsideLayer = "inside the layer";
+constexpr const char* kReuseOff = "temporal reuse off";
+
+// Bayer order of a 4x4 tile: the offsets in increasing threshold (0, 8, 2, 10 / 12, 4, ...).
+constexpr std::uint32_t kBayer4[16][2] = {{0, 0}, {2, 2}, {2, 0}, {0, 2}, {1, 1}, {3, 3},
+                                          {3, 1}, {1, 3}, {1, 0}, {3, 2}, {3, 0}, {1, 2},
+                                          {0, 1}, {2, 3}, {2, 1}, {0, 3}};
+constexpr std::uint32_t kBayer2[4][2] = {{0, 0}, {1, 1}, {1, 0}, {0, 1}};
+
+float angleDegrees(const glm::vec3& a, const glm::vec3& b) {
+  const float la = glm::length(a);
+  const float lb = glm::length(b);
+  if (la < 1e-6f || lb < 1e-6f) return 0.0f;
+  return glm::degrees(std::acos(std::clamp(glm::dot(a / la, b / lb), -1.0f, 1.0f)));
+}
+
+glm::vec3 forwardOf(const glm::mat4& view) {
+  // World -> view maps the forward direction to -Z: it is minus the third row of the rotation.
+  return -glm::vec3(view[0][2], view[1][2], view[2][2]);
+}
+
+}  // namespace
+
+glm::uvec2 tilePhase(std::uint32_t k, std::uint32_t n) {
+  if (k == 4) return {kBayer4[n % 16][0], kBayer4[n % 16][1]};
+  if (k == 2) return {kBayer2[n % 4][0], kBayer2[n % 4][1]};
+  return {0, 0};
+}
+
+bool cloudsLookDifferent(const Settings& a, const Settings& b) {
+  const auto differ = [](float x, float y) {
+    return std::abs(x - y) > 0.01f * std::max(std::abs(x), std::abs(y)) + 1e-6f;
+  };
+  const float floatsA[] = {
+      a.layerBottomMetres, a.layerTopMetres, a.planetRadiusMetres, a.coverage, a.cloudType,
+      a.typeVariation, a.densityVariation, a.weatherTileMetres, a.densityMultiplier,
+      a.extinctionPerMetre, a.anvilBias, a.shapeTileMetres, a.detailTileMetres, a.detailErosion,
+      a.detailDistanceMetres, a.curlTileMetres, a.curlStrengthMetres, a.windDirection.x,
+      a.windDirection.y, a.windSpeedMetresPerSecond, a.skewMetres, a.albedo, a.phaseForwardG,
+      a.phaseBackwardG, a.phaseBackwardWeight, a.msExtinctionScale, a.msContribution,
+      a.msEccentricityScale, a.inScatterStrength, a.inScatterDepthMetres,
+      a.ambientOcclusionStrength, a.ambientStrength, a.sunStrength, a.viewStepMetres,
+      a.viewStepGrowth, a.lightConeMetres, a.lightConeSpread, a.maxDistanceMetres,
+      a.transmittanceCutoff, a.coarseStepFactor};
+  const float floatsB[] = {
+      b.layerBottomMetres, b.layerTopMetres, b.planetRadiusMetres, b.coverage, b.cloudType,
+      b.typeVariation, b.densityVariation, b.weatherTileMetres, b.densityMultiplier,
+      b.extinctionPerMetre, b.anvilBias, b.shapeTileMetres, b.detailTileMetres, b.detailErosion,
+      b.detailDistanceMetres, b.curlTileMetres, b.curlStrengthMetres, b.windDirection.x,
+      b.windDirection.y, b.windSpeedMetresPerSecond, b.skewMetres, b.albedo, b.phaseForwardG,
+      b.phaseBackwardG, b.phaseBackwardWeight, b.msExtinctionScale, b.msContribution,
+      b.msEccentricityScale, b.inScatterStrength, b.inScatterDepthMetres,
+      b.ambientOcclusionStrength, b.ambientStrength, b.sunStrength, b.viewStepMetres,
+      b.viewStepGrowth, b.lightConeMetres, b.lightConeSpread, b.maxDistanceMetres,
+      b.transmittanceCutoff, b.coarseStepFactor};
+  static_assert(std::size(floatsA) == std::size(floatsB));
+  for (std::size_t i = 0; i < std::size(floatsA); ++i) {
+    if (differ(floatsA[i], floatsB[i])) return true;
+  }
+  return a.multipleScattering != b.multipleScattering ||
+         a.multipleScatteringOctaves != b.multipleScatteringOctaves ||
+         a.maxViewSteps != b.maxViewSteps || a.lightSteps != b.lightSteps ||
+         a.cheapSampling != b.cheapSampling || a.emptySamplesToCoarse != b.emptySamplesToCoarse ||
+         a.detail != b.detail || a.jitter != b.jitter ||
+         a.emptySpaceSkipping != b.emptySpaceSkipping;
+}
+
+TemporalFrame TemporalState::plan(const FrameInputs& in, const Settings& s, VkExtent2D traceExtent) {
+  TemporalFrame frame;
+  const double altitude = in.cameraPosition.y;
+  frame.insideLayer = altitude > s.layerBottomMetres - s.insideLayerMarginMetres &&
+                      altitude < s.layerTopMetres + s.insideLayerMarginMetres;
+  if (!havePrevious_) {
+    frame.resetReason = "first frame";
+  } else if (in.reset) {
+    frame.resetReason = "camera cut";
+  } else if (traceExtent.width != traceExtent_.width || traceExtent.height != traceExtent_.height) {
+    frame.resetReason = "resize";
+  } else if (glm::length(in.cameraPosition - cameraPosition_) > s.historyResetDistanceMetres) {
+    frame.resetReason = "camera jump";
+  } else if (angleDegrees(forwardOf(in.view), forward_) > s.historyResetAngleDegrees) {
+    frame.resetReason = "camera turn";
+  } else if (angleDegrees(in.sunDirection, sunDirection_) > s.relightResetDegrees ||
+             glm::length(in.sunIlluminance - sunIlluminance_) >
+                 s.relightResetRatio * std::max(glm::length(sunIlluminance_), 1e-3f)) {
+    frame.resetReason = "relighting";
+  } else if (cloudsLookDifferent(s, settings_)) {
+    frame.resetReason = "settings changed";
+  } else if (in.weatherView != weatherView_) {
+    // A different painted map (or back to the procedural one). A host repainting the same
+    // image in place should set FrameInputs::reset.
+    frame.resetReason = "weather map changed";
+  } else if (!s.temporalReuse) {
+    frame.resetReason = kReuseOff;
+  } else if (frame.insideLayer) {
+    // A single cloud depth per pixel cannot describe the cloud around the camera: flying
+    // through it would smear, so production engines turn reprojection off here.
+    frame.resetReason = kInsideLayer;
+  } else {
+    frame.useHistory = true;
+    frame.resetReason = "";
+  }
+  // Inside the layer, or with reuse off, the history is not used but the sequence goes on (new
+  // jitter each frame, so a host may average frames); any other reason starts it again, so
+  // the frame after a cut equals a fresh renderer's.
+  const bool keepSequence =
+      frame.useHistory || frame.resetReason == kInsideLayer || frame.resetReason == kReuseOff;
+  const bool restart = !keepSequence;
+  frame.temporalIndex = restart ? 0 : temporalIndex_ + 1;
+  const std::uint32_t k = s.updateInterval == 16 ? 4u : s.updateInterval == 4 ? 2u : 1u;
+  // Without history every pixel must come from this frame: at most 2 x 2 tiles, filled in
+  // spatially (4x the march of a 1-in-16 frame, for the frames that need it only).
+  frame.tileSize = frame.useHistory ? k : std::min(k, 2u);
+  frame.phase = tilePhase(frame.tileSize, frame.temporalIndex);
+  frame.readHistory = latestHistory_;
+  frame.writeHistory = 1u - latestHistory_;
+  frame.cameraDelta = havePrevious_ ? in.cameraPosition - cameraPosition_ : glm::dvec3(0.0);
+  frame.deltaSeconds = havePrevious_ ? std::max(in.timeSeconds - timeSeconds_, 0.0) : 0.0;
+  return frame;
+}
+
+void TemporalState::commit(const TemporalFrame& frame, const FrameInputs& in,
+                           const Settings& settings, VkExtent2D traceExtent) {
+  havePrevious_ = true;
+  temporalIndex_ = frame.temporalIndex;
+  latestHistory_ = frame.writeHistory;
+  traceExtent_ = traceExtent;
+  cameraPosition_ = in.cameraPosition;
+  forward_ = forwardOf(in.view);
+  sunDirection_ = in.sunDirection;
+  sunIlluminance_ = in.sunIlluminance;
+  timeSeconds_ = in.timeSeconds;
+  settings_ = settings;
+  weatherView_ = in.weatherView;
+}
+
+}  // namespace clouds::detail

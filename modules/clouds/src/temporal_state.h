@@ -1,0 +1,57 @@
+#pragma once
+// The temporal reconstruction's bookkeeping, as plain logic (unit-tested without a GPU): per
+// frame it decides whether last frame's result can be reprojected (or why not: reset, resize,
+// a jump or turn of the camera, relighting, new settings or weather map, the camera in or
+// near the cloud layer), which
+// pixel of each tile the march refreshes, and which history image is read and written.
+#include <glm/glm.hpp>
+
+#include <cstdint>
+
+#include "clouds/clouds.h"
+
+namespace clouds::detail {
+
+struct TemporalFrame {
+  bool useHistory = false;
+  const char* resetReason = "first frame";
+  bool insideLayer = false;
+  std::uint32_t tileSize = 1;        // k: one pixel per k x k tile is marched
+  glm::uvec2 phase{0, 0};            // that pixel's offset in its tile
+  std::uint32_t temporalIndex = 0;   // frames since the history was last reset
+  std::uint32_t readHistory = 0;     // history image holding last frame's result
+  std::uint32_t writeHistory = 1;    // history image this frame writes
+  glm::dvec3 cameraDelta{0.0};       // camera position now minus last frame's (m)
+  double deltaSeconds = 0.0;
+};
+
+// Tile offset of the n-th refresh in a k x k tile: the Bayer order, so consecutive frames
+// refresh pixels far apart (k in {1, 2, 4}).
+glm::uvec2 tilePhase(std::uint32_t k, std::uint32_t n);
+
+// True when `a` and `b` render visibly different clouds: a look or march setting differs by
+// more than 1% (a flag or count at all). The temporal knobs themselves do not count.
+bool cloudsLookDifferent(const Settings& a, const Settings& b);
+
+class TemporalState {
+ public:
+  // Decides this frame; call commit() once its commands are recorded.
+  TemporalFrame plan(const FrameInputs& inputs, const Settings& settings, VkExtent2D traceExtent);
+  void commit(const TemporalFrame& frame, const FrameInputs& inputs, const Settings& settings,
+              VkExtent2D traceExtent);
+
+ private:
+  bool havePrevious_ = false;
+  std::uint32_t temporalIndex_ = 0;
+  std::uint32_t latestHistory_ = 0;  // which of the two history images holds the last result
+  VkExtent2D traceExtent_{0, 0};
+  glm::dvec3 cameraPosition_{0.0};
+  glm::vec3 forward_{0.0f, 0.0f, -1.0f};
+  glm::vec3 sunDirection_{0.0f, 1.0f, 0.0f};
+  glm::vec3 sunIlluminance_{0.0f};
+  double timeSeconds_ = 0.0;
+  Settings settings_{};
+  VkImageView weatherView_ = VK_NULL_HANDLE;
+};
+
+}  // namespace clouds::detail
