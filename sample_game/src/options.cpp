@@ -31,6 +31,16 @@ ParseResult parseOptions(int argc, char** argv) {
   cli.add_option("--script", script, "Frame-indexed input/events script (JSON) for headless runs");
   cli.add_flag("--describe", options.describe,
                "Print the frame graph's passes and the pipelines created, then exit");
+  std::string quality;
+  cli.add_option("--quality", quality,
+                 "Cloud quality preset: low, medium, high, ultra or reference (default: the "
+                 "scene's, else medium)")
+      ->check([](const std::string& name) {
+        clouds::Quality parsed{};
+        return clouds::parseQuality(name, &parsed)
+                   ? std::string()
+                   : "unknown quality '" + name + "' (low, medium, high, ultra, reference)";
+      });
   bool noHud = false;
   cli.add_flag("--no-hud", noHud, "Hide the on-screen help and frame rate");
   bool noVsync = false;
@@ -44,6 +54,11 @@ ParseResult parseOptions(int argc, char** argv) {
   if (!scene.empty()) options.scene = scene;
   if (!terrain.empty()) options.terrain = terrain;
   if (!script.empty()) options.script = script;
+  if (!quality.empty()) {
+    clouds::Quality parsed{};
+    clouds::parseQuality(quality, &parsed);
+    options.cloudQuality = parsed;
+  }
   options.vsync = !noVsync;
   options.hud = !noHud;
   return ParseResult{options, 0};

@@ -5,6 +5,8 @@
 #include <optional>
 #include <string>
 
+#include "clouds/clouds.h"
+
 namespace sample {
 
 struct Options {
@@ -23,6 +25,7 @@ struct Options {
   std::optional<std::filesystem::path> script;   // frame-indexed input and events (headless)
   bool describe = false;               // print the frame graph's passes and pipelines, exit
   bool hud = true;                     // on-screen help and fps in windowed runs
+  std::optional<clouds::Quality> cloudQuality;  // overrides the scene camera's preset
 };
 
 // Parses argv. Returns the options, or an exit code when parsing ended the run (--help, or an

@@ -6,6 +6,8 @@
 #include <memory>
 #include <thread>
 
+#include "clouds/ecs/cloud_components.h"
+#include "clouds/ecs/cloud_renderer.h"
 #include "engine/core/error.h"
 #include "engine/core/log.h"
 #include "engine/ecs/app.h"
@@ -49,7 +51,8 @@ int run(Options options) {
     if (!options.captureDir) options.captureDir = "out";
   }
   if (options.scene.empty()) options.scene = std::filesystem::path(CLOUDSCAPE_ASSET_SOURCE_DIR) / "scenes/default.json";
-  const SceneDescription scene = loadSceneDescription(options.scene);
+  SceneDescription scene = loadSceneDescription(options.scene);
+  if (options.cloudQuality) scene.camera.cloudQuality = *options.cloudQuality;
   std::optional<InputScript> script;
   if (options.script) script = InputScript::load(*options.script);
   if (!windowed && options.frames == 0) {
@@ -171,6 +174,23 @@ int run(Options options) {
         timings += entry;
       }
       log::info("GPU time of the last frame: " + timings);
+      const auto* clouds = world.ctx().tryGet<clouds::ecs::CloudRendererRef>();
+      if (clouds != nullptr && clouds->renderer != nullptr) {
+        const ::clouds::FrameReport r = clouds->renderer->context().lastFrameReport();
+        log::info("clouds, last frame: trace " + std::to_string(r.traceExtent.width) + "x" +
+                  std::to_string(r.traceExtent.height) + ", 1 in " +
+                  std::to_string(r.tileSize * r.tileSize) + " pixels marched, " +
+                  (r.historyUsed ? std::string("history reprojected")
+                                 : "no history: " + std::string(r.resetReason)));
+        std::string cloudPasses;
+        for (const auto& p : clouds->renderer->context().passTimings(time.frameIndex)) {
+          char entry[96];
+          std::snprintf(entry, sizeof(entry), "%s%s %.2f ms", cloudPasses.empty() ? "" : ", ",
+                        p.name, p.milliseconds);
+          cloudPasses += entry;
+        }
+        if (!cloudPasses.empty()) log::info("clouds passes, last frame: " + cloudPasses);
+      }
     }
     if (options.captureDir) {
       std::printf("captured frames are in %s\n",

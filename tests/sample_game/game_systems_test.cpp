@@ -9,6 +9,8 @@
 #include "engine/platform/input.h"
 #include "engine/render/camera_math.h"
 #include "engine/render/scene_components.h"
+#include "clouds/ecs/cloud_components.h"
+#include "game/cloud_quality_controls.h"
 #include "game/flight.h"
 #include "game/game_components.h"
 #include "game/terrain_height.h"
@@ -135,6 +137,23 @@ TEST(Flight, TeleportsSetThePoseAndMarkACameraCut) {
   EXPECT_NEAR(f.x, -std::cos(glm::radians(10.0)), 1e-9);  // yaw 90: looking along -X
   w.step(0.1, 1);
   EXPECT_FALSE(w.camera().cut);
+}
+
+TEST(CloudQuality, NumberKeysPickTheCameraPreset) {
+  FlightWorld w({0, 500, 0});
+  auto& world = w.app.world();
+  world.emplace<clouds::ecs::CloudQuality>(w.player, clouds::ecs::CloudQuality{});
+  sample::installCloudQualityControls(w.app.scheduler());
+  const std::pair<Key, clouds::Quality> presses[] = {{Key::Num4, clouds::Quality::Ultra},
+                                                     {Key::Num1, clouds::Quality::Low},
+                                                     {Key::Num5, clouds::Quality::Reference}};
+  for (const auto& [key, preset] : presses) {
+    w.input().beginFrame();
+    w.input().press(key);
+    w.step(0.016, 1);
+    w.input().release(key);
+    EXPECT_EQ(world.get<clouds::ecs::CloudQuality>(w.player).preset, preset);
+  }
 }
 
 TEST(TimeOfDay, TheSunFollowsADailyArc) {

@@ -134,6 +134,7 @@ TEST(HeadlessCapture, BadArgumentsAndScenesFailWithAMessage) {
   EXPECT_NE(runSample("--headless --width 0 2>/dev/null"), 0);
   EXPECT_NE(runSample("--headless --frames banana 2>/dev/null"), 0);
   EXPECT_NE(runSample("--no-such-option 2>/dev/null"), 0);
+  EXPECT_NE(runSample("--headless --quality extreme 2>/dev/null"), 0);
   EXPECT_EQ(runSample("--headless --scene /no/such/scene.json 2>/dev/null"), 1);
   EXPECT_EQ(runSample("--headless --terrain /no/such/terrain.glb 2>/dev/null"), 1);
   EXPECT_EQ(runSample("--headless --script /no/such/script.json 2>/dev/null"), 1);

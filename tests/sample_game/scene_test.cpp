@@ -57,6 +57,10 @@ TEST(Scenes, ValuesArriveInTheDescription) {
   EXPECT_FLOAT_EQ(s.clouds->settings.windSpeedMetresPerSecond, 20.0f);
   EXPECT_NEAR(s.clouds->settings.windDirection.y, -1.0f, 1e-6f);  // 90 degrees: towards -Z
   EXPECT_FALSE(s.terrain.has_value());
+  EXPECT_EQ(s.camera.cloudQuality, clouds::Quality::Medium) << "the default preset";
+  const sample::SceneDescription ultra = loadSceneDescription(writeScene("quality.json", R"({
+    "name": "q", "camera": {"position": [0, 10, 0], "cloudQuality": "ultra"}})"));
+  EXPECT_EQ(ultra.camera.cloudQuality, clouds::Quality::Ultra);
 }
 
 TEST(Scenes, MalformedScenesNameFilePathAndReason) {
@@ -87,6 +91,9 @@ TEST(Scenes, MalformedScenesNameFilePathAndReason) {
       {"root.json", R"([1, 2, 3])", "(root): must be an object"},
       {"altitude.json", R"({"name": "x", "camera": {"position": [0, -5, 0]}})",
        "camera.position: altitude (y) must be in [0, 50000] m"},
+      {"quality.json",
+       R"({"name": "x", "camera": {"position": [0, 1, 0], "cloudQuality": "extreme"}})",
+       "camera.cloudQuality: must be one of low, medium, high, ultra, reference"},
   };
   for (const Case& c : cases) {
     const fs::path path = writeScene(c.file, c.json);

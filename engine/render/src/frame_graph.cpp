@@ -269,6 +269,21 @@ void FrameGraph::beginRendering(VkCommandBuffer cmd, Pass& pass) const {
   vkCmdSetScissor(cmd, 0, 1, &scissor);
 }
 
+namespace {
+
+// An execution dependency from everything recorded so far to everything after.
+void waitForPriorWork(VkCommandBuffer cmd) {
+  VkMemoryBarrier2 barrier{VK_STRUCTURE_TYPE_MEMORY_BARRIER_2};
+  barrier.srcStageMask = VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT;
+  barrier.dstStageMask = VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT;
+  VkDependencyInfo dependency{VK_STRUCTURE_TYPE_DEPENDENCY_INFO};
+  dependency.memoryBarrierCount = 1;
+  dependency.pMemoryBarriers = &barrier;
+  vkCmdPipelineBarrier2(cmd, &dependency);
+}
+
+}  // namespace
+
 void FrameGraph::execute(const gfx::FrameRing::Frame& frame) {
   require(compiled_, "FrameGraph::execute", "compile() first");
   require(device_ != nullptr, "FrameGraph::execute", "the graph was built without a device");
@@ -282,13 +297,18 @@ void FrameGraph::execute(const gfx::FrameRing::Frame& frame) {
     // preallocated barrier structs.
     refreshBarrierHandles(pass.barriers, pass.imageBarriers, pass.bufferBarriers);
     device_->beginLabel(frame.cmd, pass.name);
+    if (exactPassTimes_) waitForPriorWork(frame.cmd);
     const std::uint32_t scope = frame.timer->begin(frame.cmd, pass.name);
+    // lavapipe realises a timestamp at its next synchronisation: make that now.
+    if (exactPassTimes_) waitForPriorWork(frame.cmd);
     recordBarriers(frame.cmd, pass.imageBarriers, pass.bufferBarriers);
     const bool rendering = pass.type == PassType::Graphics && !pass.attachments.empty();
     if (rendering) beginRendering(frame.cmd, pass);
     pass.executor->run(context);
     if (rendering) vkCmdEndRendering(frame.cmd);
+    if (exactPassTimes_) waitForPriorWork(frame.cmd);
     frame.timer->end(frame.cmd, scope);
+    if (exactPassTimes_) waitForPriorWork(frame.cmd);
     device_->endLabel(frame.cmd);
   }
   refreshBarrierHandles(finalBarriers_, finalImageBarriers_, finalBufferBarriers_);

@@ -6,9 +6,10 @@
 // (cloud_march.h) and writes radiance + transmittance and the cloud depths into the trace
 // images; reconstruct.comp turns them into a full picture.
 // Inputs: binding 0 CloudUniforms; 1-4 shape noise, detail noise, weather map, curl noise
-// (RGBA8, imageLoad); 5 scene distance (R32F, trace res); 8-9 weather maxima (empty-space
-// skipping). Outputs: 6 RGBA16F radiance + transmittance; 7 RG32F front and weighted depth
-// (m); 10 work counters. Feature toggles are specialization constants.
+// (RGBA8, imageLoad); 5 scene distance (R32F, trace res); 7-8 weather maxima (empty-space
+// skipping). Outputs: 6 the marched samples (radiance, transmittance, front and weighted
+// depth in metres; packed, cloud_temporal.h); 9 work counters. Feature toggles are
+// specialization constants.
 // References: Schneider & Vos 2017 (Nubis); Schneider 2022 (Nubis Evolved); Hillaire 2016.
 #extension GL_GOOGLE_include_directive : require
 
@@ -30,11 +31,10 @@ layout(binding = 2, rgba8) uniform readonly image3D detailNoise;
 layout(binding = 3, rgba8) uniform readonly image2D weatherMap;
 layout(binding = 4, rgba8) uniform readonly image2D curlNoise;
 layout(binding = 5, r32f) uniform readonly image2D sceneDistance;
-layout(binding = 6, rgba16f) uniform writeonly image2D outRadiance;
-layout(binding = 7, rg32f) uniform writeonly image2D outDepth;
-layout(binding = 8, rgba8) uniform readonly image2D weatherMaxFine;
-layout(binding = 9, rgba8) uniform readonly image2D weatherMaxCoarse;
-layout(binding = 10, std430) buffer Counters { uint counters[]; };
+layout(binding = 6, rgba32ui) uniform writeonly uimage2D outSamples;
+layout(binding = 7, rgba8) uniform readonly image2D weatherMaxFine;
+layout(binding = 8, rgba8) uniform readonly image2D weatherMaxCoarse;
+layout(binding = 9, std430) buffer Counters { uint counters[]; };
 
 vec4 fetchShapeNoise(ivec3 texel) { return imageLoad(shapeNoise, texel); }
 vec4 fetchDetailNoise(ivec3 texel) { return imageLoad(detailNoise, texel); }
@@ -44,6 +44,7 @@ vec4 fetchWeatherMaxFine(ivec2 texel) { return imageLoad(weatherMaxFine, texel);
 vec4 fetchWeatherMaxCoarse(ivec2 texel) { return imageLoad(weatherMaxCoarse, texel); }
 
 #include "cloud_march.h"
+#include "cloud_temporal.h"
 
 void main() {
   loadFrameUniforms();
@@ -65,8 +66,9 @@ void main() {
   const float jitter = rayJitter(pixel, u.frame.x, kJitterMode);
   const MarchResult result = marchClouds(direction, distance, jitter, u, options);
 
-  imageStore(outRadiance, ivec2(pixel), vec4(result.radiance, result.transmittance));
-  imageStore(outDepth, ivec2(pixel), vec4(result.frontDepth, result.weightedDepth, 0.0f, 0.0f));
+  imageStore(outSamples, ivec2(pixel),
+             packCloudSample(vec4(result.radiance, result.transmittance),
+                             vec2(result.frontDepth, result.weightedDepth)));
   if (kCounters != 0u) {
     atomicAdd(counters[kCounterViewSamples], uint(result.viewSamples));
     atomicAdd(counters[kCounterLightSamples], uint(result.lightSamples));

@@ -11,8 +11,9 @@
 CLOUDS_SHADER_BEGIN
 
 CLOUDS_INLINE bool isFreshPixel(uvec2 pixel, IN(CloudUniforms) u) {
-  const uint k = u.pattern.x;
-  return (pixel.x % k) == u.pattern.y && (pixel.y % k) == u.pattern.z;
+  // k is a power of two: a mask, not a modulo (integer division is scalarised on a CPU).
+  const uint mask = u.pattern.x - 1u;
+  return (pixel.x & mask) == u.pattern.y && (pixel.y & mask) == u.pattern.z;
 }
 
 // Bilinear weights and the four fresh pixels around `pixel` on this frame's k-grid.
@@ -53,6 +54,25 @@ CLOUDS_INLINE void depthBlendAdd(INOUT(DepthBlend) b, float weight, float transm
 
 CLOUDS_INLINE vec2 depthBlendResult(DepthBlend b) {
   return vec2(b.front, b.opacitySum > 1e-6f ? b.weightedSum / b.opacitySum : 0.0f);
+}
+
+// A marched or reconstructed pixel in one RGBA32UI texel, so the passes that read several
+// neighbours (reconstruction, upsample) take one image load per neighbour instead of two:
+// x = half2(r, g), y = half2(b, transmittance), z = front depth, w = weighted depth (float).
+CLOUDS_INLINE uvec4 packCloudSample(vec4 radiance, vec2 depth) {
+  return uvec4(packHalf2x16(vec2(radiance.x, radiance.y)),
+               packHalf2x16(vec2(radiance.z, radiance.w)), floatBitsToUint(depth.x),
+               floatBitsToUint(depth.y));
+}
+
+CLOUDS_INLINE vec4 unpackCloudRadiance(uvec4 texel) {
+  const vec2 rg = unpackHalf2x16(texel.x);
+  const vec2 ba = unpackHalf2x16(texel.y);
+  return vec4(rg.x, rg.y, ba.x, ba.y);
+}
+
+CLOUDS_INLINE vec2 unpackCloudDepth(uvec4 texel) {
+  return vec2(uintBitsToFloat(texel.z), uintBitsToFloat(texel.w));
 }
 
 CLOUDS_INLINE bool finiteVec4(vec4 v) {

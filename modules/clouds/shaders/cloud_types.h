@@ -76,8 +76,10 @@ struct CloudUniforms {
   vec4 temporal;           // x weight of a fresh sample over its history, y clamp margin,
                            //   z trace scale (trace px per output px), w reprojection spread
                            //   (trace px) at which the history is fully clamped
-  uvec4 pattern;           // x tile size k: one pixel per k x k tile is traced each frame;
-                           //   y, z: that pixel's offset in the tile; w unused
+  uvec4 pattern;           // x tile size k (1, 2 or 4): one pixel per k x k tile is traced
+                           //   each frame; y, z: that pixel's offset in the tile; w: the
+                           //   last such pixel of the image, x | y << 16 (edge tiles may
+                           //   have none)
   vec4 emptySpace;         // x fine cell (m), y coarse cell (m), zw unused
   vec4 subpixel;           // xy this frame's offset of the rays inside their pixels (pixels,
                            //   jitter mode 2; accumulating frames supersamples), zw unused

@@ -28,6 +28,9 @@ namespace {
 constexpr VkFormat kNoiseFormat = VK_FORMAT_R8G8B8A8_UNORM;
 constexpr VkFormat kRadianceFormat = VK_FORMAT_R16G16B16A16_SFLOAT;
 constexpr VkFormat kDepthOutputFormat = VK_FORMAT_R32G32_SFLOAT;
+// Trace-resolution samples: radiance, transmittance and both depths packed in one texel
+// (cloud_temporal.h).
+constexpr VkFormat kSampleFormat = VK_FORMAT_R32G32B32A32_UINT;
 constexpr VkPipelineStageFlags2 kCompute = VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT;
 constexpr VkAccessFlags2 kStorageWrite = VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT;
 constexpr VkAccessFlags2 kStorageRead = VK_ACCESS_2_SHADER_STORAGE_READ_BIT;
@@ -81,17 +84,13 @@ Context::Impl::Impl(const CreateInfo& info, const detail::VulkanFunctions& funct
   // The trace resolution never exceeds the output's (traceScale <= 1).
   sceneDistance_ = OwnedImage(device_, VK_IMAGE_TYPE_2D, VK_FORMAT_R32_SFLOAT, maxExtent, storage,
                               "scene distance (trace)");
-  traceRadiance_ = OwnedImage(device_, VK_IMAGE_TYPE_2D, kRadianceFormat, maxExtent, storage,
-                              "marched radiance (trace)");
-  traceDepth_ = OwnedImage(device_, VK_IMAGE_TYPE_2D, kDepthOutputFormat, maxExtent, storage,
-                           "marched depth (trace)");
+  traceSamples_ = OwnedImage(device_, VK_IMAGE_TYPE_2D, kSampleFormat, maxExtent, storage,
+                             "marched samples (trace)");
   // History images also take transfers in, so the module's tests can poison them.
   const VkImageUsageFlags history = storage | VK_IMAGE_USAGE_TRANSFER_DST_BIT;
   for (std::uint32_t i = 0; i < 2; ++i) {
-    historyRadiance_[i] = OwnedImage(device_, VK_IMAGE_TYPE_2D, kRadianceFormat, maxExtent, history,
-                                     "history radiance " + std::to_string(i));
-    historyDepth_[i] = OwnedImage(device_, VK_IMAGE_TYPE_2D, kDepthOutputFormat, maxExtent, history,
-                                  "history depth " + std::to_string(i));
+    history_[i] = OwnedImage(device_, VK_IMAGE_TYPE_2D, kSampleFormat, maxExtent, history,
+                             "history " + std::to_string(i));
   }
   placeholder_ = OwnedImage(device_, VK_IMAGE_TYPE_2D, VK_FORMAT_R32_SFLOAT, {1, 1, 1},
                             VK_IMAGE_USAGE_SAMPLED_BIT, "placeholder input");
@@ -123,11 +122,11 @@ Context::Impl::Impl(const CreateInfo& info, const detail::VulkanFunctions& funct
   downsample_ = std::make_unique<ComputeProgram>(device_, depth_downsample_comp_spv,
       std::vector{ubo, tex, img}, 0u, "depth downsample");
   march_ = std::make_unique<ComputeProgram>(device_, cloud_march_comp_spv,
-      std::vector{ubo, img, img, img, img, img, img, img, img, img, ssbo}, 0u, "march");
+      std::vector{ubo, img, img, img, img, img, img, img, img, ssbo}, 0u, "march");
   reconstruct_ = std::make_unique<ComputeProgram>(device_, reconstruct_comp_spv,
-      std::vector{ubo, img, img, img, img, img, img}, 0u, "reconstruct");
+      std::vector{ubo, img, img, img}, 0u, "reconstruct");
   upsample_ = std::make_unique<ComputeProgram>(device_, upsample_comp_spv,
-      std::vector{ubo, img, img, tex, img, img}, 0u, "upsample");
+      std::vector{ubo, img, tex, img, img}, 0u, "upsample");
   compositeProgram_ = std::make_unique<ComputeProgram>(device_, composite_comp_spv,
       std::vector{img, img}, sizeof(shader::CompositeConstants), "composite");
 
@@ -165,6 +164,7 @@ Context::Impl::Impl(const CreateInfo& info, const detail::VulkanFunctions& funct
       .storageImage(1, weatherMaxCoarse_.view())
       .commit();
 
+  if (info.passTimings) timer_ = std::make_unique<detail::PassTimer>(device_, info.physicalDevice, frames);
   slots_.resize(frames);
   for (std::uint32_t i = 0; i < frames; ++i) {
     Slot& slot = slots_[i];
@@ -205,13 +205,23 @@ VkDescriptorSet Context::Impl::allocateSet(VkDescriptorSetLayout layout) {
   return set;
 }
 
+void Context::Impl::beginPass(VkCommandBuffer cmd, detail::Pass pass, const char* label) {
+  device_.beginLabel(cmd, label);
+  if (timer_) timer_->begin(cmd, pass);
+}
+
+void Context::Impl::endPass(VkCommandBuffer cmd, detail::Pass pass) {
+  if (timer_) timer_->end(cmd, pass);
+  device_.endLabel(cmd);
+}
+
 void Context::Impl::recordInitialisation(VkCommandBuffer cmd) {
   const auto& fn = device_.fn();
-  device_.beginLabel(cmd, "clouds: noise generation");
+  beginPass(cmd, detail::Pass::Noise, "clouds: noise generation");
   for (const detail::OwnedImage* image :
        {&shapeNoise_, &detailNoise_, &curlNoise_, &weatherMap_, &weatherMaxFine_,
-        &weatherMaxCoarse_, &radiance_, &depth_, &sceneDistance_, &traceRadiance_, &traceDepth_,
-        &historyRadiance_[0], &historyRadiance_[1], &historyDepth_[0], &historyDepth_[1]}) {
+        &weatherMaxCoarse_, &radiance_, &depth_, &sceneDistance_, &traceSamples_,
+        &history_[0], &history_[1]}) {
     detail::barrier(device_, cmd, image->image(), VK_IMAGE_ASPECT_COLOR_BIT,
                     VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_GENERAL,
                     VK_PIPELINE_STAGE_2_NONE, VK_ACCESS_2_NONE, kCompute,
@@ -249,7 +259,7 @@ void Context::Impl::recordInitialisation(VkCommandBuffer cmd) {
     }
   }
   detail::memoryBarrier(device_, cmd, kCompute, kStorageWrite, kCompute, kStorageRead);
-  device_.endLabel(cmd);
+  endPass(cmd, detail::Pass::Noise);
   initialised_ = true;
 }
 
@@ -260,7 +270,7 @@ void Context::Impl::recordWeather(VkCommandBuffer cmd, const FrameInputs& inputs
                                  shader::kWorkgroupSize2D);
   if (inputs.weatherView != VK_NULL_HANDLE) {
     // A painted map: resampled every frame (the host may repaint it at any time).
-    device_.beginLabel(cmd, "clouds: weather resample");
+    beginPass(cmd, detail::Pass::Weather, "clouds: weather resample");
     detail::SetWriter(device_, slot.weatherResample)
         .storageImage(0, weatherMap_.view())
         .sampledImage(1, inputs.weatherView, linearSampler_, inputs.weatherLayout)
@@ -272,7 +282,7 @@ void Context::Impl::recordWeather(VkCommandBuffer cmd, const FrameInputs& inputs
     fn.vkCmdDispatch(cmd, n, n, 1);
     detail::memoryBarrier(device_, cmd, kCompute, kStorageWrite, kCompute, kStorageRead);
     recordWeatherMaxima(cmd);
-    device_.endLabel(cmd);
+    endPass(cmd, detail::Pass::Weather);
     weatherKey_.reset();  // returning to the procedural map regenerates it
     ++weatherUpdates_;
     return;
@@ -289,7 +299,7 @@ void Context::Impl::recordWeather(VkCommandBuffer cmd, const FrameInputs& inputs
   shader::WeatherConstants constants{};
   constants.params = glm::vec4(static_cast<float>(phase - std::floor(phase)), 0.0f, 0.0f, 0.0f);
   constants.seed = glm::uvec4(info_.noiseSeed, 0u, 0u, 0u);
-  device_.beginLabel(cmd, "clouds: weather map");
+  beginPass(cmd, detail::Pass::Weather, "clouds: weather map");
   detail::memoryBarrier(device_, cmd, kCompute, kStorageRead, kCompute, kStorageWrite);
   fn.vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, weatherProgram_->variant());
   fn.vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, weatherProgram_->layout(), 0, 1,
@@ -299,7 +309,7 @@ void Context::Impl::recordWeather(VkCommandBuffer cmd, const FrameInputs& inputs
   fn.vkCmdDispatch(cmd, n, n, 1);
   detail::memoryBarrier(device_, cmd, kCompute, kStorageWrite, kCompute, kStorageRead);
   recordWeatherMaxima(cmd);
-  device_.endLabel(cmd);
+  endPass(cmd, detail::Pass::Weather);
   weatherKey_ = key;
   ++weatherUpdates_;
 }
@@ -340,7 +350,7 @@ void Context::Impl::recordUniforms(VkCommandBuffer cmd, Slot& slot,
 
 void Context::Impl::recordSkyAmbient(VkCommandBuffer cmd, const FrameInputs& inputs, Slot& slot) {
   const auto& fn = device_.fn();
-  device_.beginLabel(cmd, "clouds: sky ambient");
+  beginPass(cmd, detail::Pass::SkyAmbient, "clouds: sky ambient");
   detail::SetWriter(device_, slot.skyAmbient)
       .storageBuffer(0, slot.uniforms.buffer(), sizeof(shader::CloudUniforms))
       .sampledImage(1, inputs.skyView, linearSampler_, inputs.skyLayout)
@@ -351,7 +361,7 @@ void Context::Impl::recordSkyAmbient(VkCommandBuffer cmd, const FrameInputs& inp
   fn.vkCmdDispatch(cmd, 1, 1, 1);
   detail::memoryBarrier(device_, cmd, kCompute, kStorageWrite, kCompute,
                         VK_ACCESS_2_UNIFORM_READ_BIT);
-  device_.endLabel(cmd);
+  endPass(cmd, detail::Pass::SkyAmbient);
 }
 
 void Context::Impl::bindAndDispatch(VkCommandBuffer cmd, detail::ComputeProgram& program,
@@ -374,10 +384,8 @@ void Context::Impl::recordTrace(VkCommandBuffer cmd, const FrameInputs& inputs,
   const VkImageLayout depthLayout =
       hasDepth ? inputs.depthLayout : VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL;
   const VkDeviceSize uniformBytes = sizeof(shader::CloudUniforms);
-  const detail::OwnedImage& historyIn = historyRadiance_[temporal.readHistory];
-  const detail::OwnedImage& historyDepthIn = historyDepth_[temporal.readHistory];
-  const detail::OwnedImage& historyOut = historyRadiance_[temporal.writeHistory];
-  const detail::OwnedImage& historyDepthOut = historyDepth_[temporal.writeHistory];
+  const detail::OwnedImage& historyIn = history_[temporal.readHistory];
+  const detail::OwnedImage& historyOut = history_[temporal.writeHistory];
 
   detail::SetWriter(device_, slot.downsample)
       .uniformBuffer(0, slot.uniforms.buffer(), uniformBytes)
@@ -391,28 +399,23 @@ void Context::Impl::recordTrace(VkCommandBuffer cmd, const FrameInputs& inputs,
       .storageImage(3, weatherMap_.view())
       .storageImage(4, curlNoise_.view())
       .storageImage(5, sceneDistance_.view())
-      .storageImage(6, traceRadiance_.view())
-      .storageImage(7, traceDepth_.view())
-      .storageImage(8, weatherMaxFine_.view())
-      .storageImage(9, weatherMaxCoarse_.view())
-      .storageBuffer(10, slot.counters.buffer(), slot.counters.size())
+      .storageImage(6, traceSamples_.view())
+      .storageImage(7, weatherMaxFine_.view())
+      .storageImage(8, weatherMaxCoarse_.view())
+      .storageBuffer(9, slot.counters.buffer(), slot.counters.size())
       .commit();
   detail::SetWriter(device_, slot.reconstruct)
       .uniformBuffer(0, slot.uniforms.buffer(), uniformBytes)
-      .storageImage(1, traceRadiance_.view())
-      .storageImage(2, traceDepth_.view())
-      .storageImage(3, historyIn.view())
-      .storageImage(4, historyDepthIn.view())
-      .storageImage(5, historyOut.view())
-      .storageImage(6, historyDepthOut.view())
+      .storageImage(1, traceSamples_.view())
+      .storageImage(2, historyIn.view())
+      .storageImage(3, historyOut.view())
       .commit();
   detail::SetWriter(device_, slot.upsample)
       .uniformBuffer(0, slot.uniforms.buffer(), uniformBytes)
       .storageImage(1, historyOut.view())
-      .storageImage(2, historyDepthOut.view())
-      .sampledImage(3, depthView, nearestSampler_, depthLayout)
-      .storageImage(4, radiance_.view())
-      .storageImage(5, depth_.view())
+      .sampledImage(2, depthView, nearestSampler_, depthLayout)
+      .storageImage(3, radiance_.view())
+      .storageImage(4, depth_.view())
       .commit();
 
   // Everything these passes write may still be read by earlier commands (last frame's
@@ -425,11 +428,13 @@ void Context::Impl::recordTrace(VkCommandBuffer cmd, const FrameInputs& inputs,
                           VK_ACCESS_2_TRANSFER_WRITE_BIT, kCompute, kStorageRead | kStorageWrite);
   }
 
-  device_.beginLabel(cmd, "clouds: scene distance");
+  beginPass(cmd, detail::Pass::SceneDistance, "clouds: scene distance");
   bindAndDispatch(cmd, *downsample_, downsample_->variant(), slot.downsample, traceExtent.width,
                   traceExtent.height);
-  device_.endLabel(cmd);
+  // The barrier is part of the pass: on lavapipe a dispatch only starts the work, and the
+  // barrier waits for it.
   detail::memoryBarrier(device_, cmd, kCompute, kStorageWrite, kCompute, kStorageRead);
+  endPass(cmd, detail::Pass::SceneDistance);
 
   const detail::MarchVariant v = detail::marchVariant(settings);
   detail::SpecializationKey key;
@@ -437,32 +442,32 @@ void Context::Impl::recordTrace(VkCommandBuffer cmd, const FrameInputs& inputs,
                 info_.workCounters ? 1u : 0u, v.emptySpace};
   key.count = 7;
   const std::uint32_t k = temporal.tileSize;
-  device_.beginLabel(cmd, "clouds: march");
+  beginPass(cmd, detail::Pass::March, "clouds: march");
   // One invocation per tile: only the pixels marched this frame.
   bindAndDispatch(cmd, *march_, march_->variant(key), slot.march, (traceExtent.width + k - 1) / k,
                   (traceExtent.height + k - 1) / k);
-  device_.endLabel(cmd);
   detail::memoryBarrier(device_, cmd, kCompute, kStorageWrite, kCompute, kStorageRead);
+  endPass(cmd, detail::Pass::March);
 
   if (info_.workCounters) {
     detail::memoryBarrier(device_, cmd, kCompute, kStorageWrite, VK_PIPELINE_STAGE_2_HOST_BIT,
                           VK_ACCESS_2_HOST_READ_BIT);
   }
-  device_.beginLabel(cmd, "clouds: reconstruct");
+  beginPass(cmd, detail::Pass::Reconstruct, "clouds: reconstruct");
   bindAndDispatch(cmd, *reconstruct_, reconstruct_->variant(), slot.reconstruct, traceExtent.width,
                   traceExtent.height);
-  device_.endLabel(cmd);
   detail::memoryBarrier(device_, cmd, kCompute, kStorageWrite, kCompute, kStorageRead);
+  endPass(cmd, detail::Pass::Reconstruct);
 
-  device_.beginLabel(cmd, "clouds: upsample");
+  beginPass(cmd, detail::Pass::Upsample, "clouds: upsample");
   bindAndDispatch(cmd, *upsample_, upsample_->variant(), slot.upsample, inputs.renderExtent.width,
                   inputs.renderExtent.height);
-  device_.endLabel(cmd);
   for (const detail::OwnedImage* image : {&radiance_, &depth_}) {
     detail::barrier(device_, cmd, image->image(), VK_IMAGE_ASPECT_COLOR_BIT,
                     VK_IMAGE_LAYOUT_GENERAL, VK_IMAGE_LAYOUT_GENERAL, kCompute, kStorageWrite,
                     kHostReadStages, kHostReadAccess);
   }
+  endPass(cmd, detail::Pass::Upsample);
 }
 
 void Context::Impl::dispatch(const FrameInputs& inputs, const Settings& settings) {
@@ -470,6 +475,7 @@ void Context::Impl::dispatch(const FrameInputs& inputs, const Settings& settings
   const auto slotIndex = static_cast<std::uint32_t>(inputs.frameIndex % slots_.size());
   Slot& slot = slots_[slotIndex];
   device_.beginLabel(cmd, "clouds");
+  if (timer_) timer_->beginFrame(cmd, slotIndex);
   if (!initialised_) recordInitialisation(cmd);
   recordWeather(cmd, inputs, settings, slot);
 
@@ -514,6 +520,11 @@ WorkCounters Context::Impl::workCounters(std::uint64_t frameIndex) const {
   counters.earlyExits = values[shader::kCounterEarlyExits];
   counters.skippedCells = values[shader::kCounterSkippedCells];
   return counters;
+}
+
+std::vector<PassTiming> Context::Impl::passTimings(std::uint64_t frameIndex) const {
+  if (!timer_) return {};
+  return timer_->read(static_cast<std::uint32_t>(frameIndex % slots_.size()));
 }
 
 void Context::Impl::composite(VkCommandBuffer cmd, VkImageView color, VkExtent2D extent) {
@@ -666,6 +677,9 @@ bool Context::composite(VkCommandBuffer commandBuffer, VkImageView color, VkExte
 }
 
 Outputs Context::outputs() const { return impl_->outputs(); }
+std::vector<PassTiming> Context::passTimings(std::uint64_t frameIndex) const {
+  return impl_->passTimings(frameIndex);
+}
 FrameReport Context::lastFrameReport() const { return impl_->lastFrameReport(); }
 WorkCounters Context::workCounters(std::uint64_t frameIndex) const {
   return impl_->workCounters(frameIndex);

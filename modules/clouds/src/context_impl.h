@@ -14,6 +14,7 @@
 #include "cloud_types.h"
 #include "compute_program.h"
 #include "device_context.h"
+#include "pass_timer.h"
 #include "temporal_state.h"
 #include "uniforms.h"
 
@@ -29,6 +30,7 @@ class Context::Impl {
   Outputs outputs() const;
   FrameReport lastFrameReport() const { return report_; }
   WorkCounters workCounters(std::uint64_t frameIndex) const;
+  std::vector<PassTiming> passTimings(std::uint64_t frameIndex) const;
 
   // --- Internal access (tests, tools) --------------------------------------------------
   const detail::DeviceContext& device() const { return device_; }
@@ -37,8 +39,7 @@ class Context::Impl {
   const detail::OwnedImage& curlNoise() const { return curlNoise_; }
   const detail::OwnedImage& weatherMap() const { return weatherMap_; }
   const detail::OwnedImage& weatherMaxFine() const { return weatherMaxFine_; }
-  const detail::OwnedImage& history(std::uint32_t i) const { return historyRadiance_[i]; }
-  const detail::OwnedImage& historyDepth(std::uint32_t i) const { return historyDepth_[i]; }
+  const detail::OwnedImage& history(std::uint32_t i) const { return history_[i]; }
   const shader::CloudUniforms& lastUniforms() const { return lastUniforms_; }
   const CreateInfo& createInfo() const { return info_; }
   std::size_t pipelineVariantCount() const { return march_->variantCount(); }
@@ -60,6 +61,9 @@ class Context::Impl {
   };
 
   VkDescriptorSet allocateSet(VkDescriptorSetLayout layout);
+  // A debug label and, with CreateInfo::passTimings, timestamps around a pass.
+  void beginPass(VkCommandBuffer cmd, detail::Pass pass, const char* label);
+  void endPass(VkCommandBuffer cmd, detail::Pass pass);
   void recordInitialisation(VkCommandBuffer cmd);
   void recordWeather(VkCommandBuffer cmd, const FrameInputs& inputs, const Settings& settings,
                      Slot& slot);
@@ -84,10 +88,8 @@ class Context::Impl {
   detail::OwnedImage weatherMaxFine_;
   detail::OwnedImage weatherMaxCoarse_;
   detail::OwnedImage sceneDistance_;  // trace resolution, R32F
-  detail::OwnedImage traceRadiance_;  // this frame's marched pixels
-  detail::OwnedImage traceDepth_;
-  std::array<detail::OwnedImage, 2> historyRadiance_;  // reconstructed frames, ping-pong
-  std::array<detail::OwnedImage, 2> historyDepth_;
+  detail::OwnedImage traceSamples_;  // this frame's marched pixels (packed samples)
+  std::array<detail::OwnedImage, 2> history_;  // reconstructed frames, ping-pong
   detail::OwnedImage radiance_;       // outputs, output resolution
   detail::OwnedImage depth_;
   detail::OwnedImage placeholder_;    // 1x1 sampled stand-in for absent optional inputs
@@ -112,6 +114,7 @@ class Context::Impl {
   VkDescriptorSet weatherMaxFineSet_ = VK_NULL_HANDLE;
   VkDescriptorSet weatherMaxCoarseSet_ = VK_NULL_HANDLE;
   std::vector<Slot> slots_;
+  std::unique_ptr<detail::PassTimer> timer_;  // CreateInfo::passTimings
 
   bool initialised_ = false;
   std::optional<std::int64_t> weatherKey_;  // time bucket of the procedural map

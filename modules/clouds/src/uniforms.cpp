@@ -78,7 +78,13 @@ shader::CloudUniforms buildUniforms(const FrameInputs& in, const Settings& s,
   u.reprojection = glm::vec4(glm::vec3(moved), context.useHistory ? 1.0f : 0.0f);
   u.temporal = glm::vec4(s.temporalFreshWeight, s.historyClampMargin, s.traceScale,
                          s.historyClampSpreadPixels);
-  u.pattern = glm::uvec4(context.tileSize, context.phase.x, context.phase.y, 0u);
+  const std::uint32_t k = context.tileSize;
+  const auto lastFresh = [&](std::uint32_t extent, std::uint32_t phase) {
+    return extent > phase ? (extent - 1 - phase) / k * k + phase : phase;
+  };
+  u.pattern = glm::uvec4(k, context.phase.x, context.phase.y,
+                         lastFresh(context.traceExtent.width, context.phase.x) |
+                             lastFresh(context.traceExtent.height, context.phase.y) << 16u);
   if (s.jitter == Jitter::BayerHaltonSubpixel) {
     const std::uint32_t n = context.temporalIndex % 64u + 1u;
     u.subpixel = glm::vec4(shader::halton(n, 2u) - 0.5f, shader::halton(n, 3u) - 0.5f, 0.0f, 0.0f);

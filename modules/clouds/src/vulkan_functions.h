@@ -48,7 +48,12 @@ namespace clouds::detail {
   X(vkCmdPipelineBarrier2)         \
   X(vkCmdUpdateBuffer)             \
   X(vkCmdFillBuffer)               \
-  X(vkMapMemory)
+  X(vkMapMemory)                   \
+  X(vkCreateQueryPool)             \
+  X(vkDestroyQueryPool)            \
+  X(vkCmdResetQueryPool)           \
+  X(vkCmdWriteTimestamp2)          \
+  X(vkGetQueryPoolResults)
 
 // Present only when the host enabled VK_EXT_debug_utils; used for names and labels.
 #define CLOUDS_OPTIONAL_DEVICE_FUNCTIONS(X) \

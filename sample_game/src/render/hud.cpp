@@ -6,6 +6,8 @@
 #include <cstdio>
 #include <cstring>
 
+#include "clouds/ecs/cloud_components.h"
+#include "clouds/ecs/cloud_renderer.h"
 #include "engine/ecs/frame_time.h"
 #include "engine/gfx/descriptors.h"
 #include "engine/gfx/upload.h"
@@ -116,6 +118,15 @@ void Hud::prepare(ecs::World& world, VkExtent2D extent,
           ImGui::Text("speed %.0f m/s  altitude %.0f m", aircraft.speedMetresPerSecond,
                       camera.position.y);
         });
+    world.view<const clouds::ecs::CloudQuality>().each([&](const clouds::ecs::CloudQuality& q) {
+      const auto* ref = world.ctx().tryGet<clouds::ecs::CloudRendererRef>();
+      if (ref == nullptr || ref->renderer == nullptr) return;
+      const clouds::FrameReport report = ref->renderer->context().lastFrameReport();
+      ImGui::Text("clouds %s: trace %ux%u, 1 in %u px/frame, %s", clouds::qualityName(q.preset),
+                  report.traceExtent.width, report.traceExtent.height,
+                  report.tileSize * report.tileSize,
+                  report.historyUsed ? "reprojected" : report.resetReason);
+    });
     world.view<const TimeOfDay>().each([&](const TimeOfDay& t) {
       const int minutes = int(std::fmod(t.hours, 24.0) * 60.0);
       ImGui::Text("time of day %02d:%02d%s", minutes / 60, minutes % 60,
@@ -124,7 +135,8 @@ void Hud::prepare(ecs::World& world, VkExtent2D extent,
     ImGui::Separator();
     ImGui::TextUnformatted("W/S throttle   Shift boost   Up/Down pitch   Left/Right roll");
     ImGui::TextUnformatted("A/D yaw   M mouse look   [ ] time of day   T run time");
-    ImGui::TextUnformatted("F12 screenshot   F1 hide help   Esc quit");
+    ImGui::TextUnformatted("1-5 cloud quality (Low .. Reference)   F12 screenshot");
+    ImGui::TextUnformatted("F1 hide help   Esc quit");
   }
   ImGui::End();
   ImGui::Render();

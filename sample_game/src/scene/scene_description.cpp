@@ -20,6 +20,9 @@ CameraDescription readCamera(const JsonReader& r) {
   c.pitchDegrees = r.number("pitchDegrees", -89.0, 89.0, c.pitchDegrees);
   c.verticalFovDegrees = r.number("verticalFovDegrees", 10.0, 120.0, c.verticalFovDegrees);
   c.speedMetresPerSecond = r.number("speedMetresPerSecond", 0.0, 1000.0, c.speedMetresPerSecond);
+  const std::string quality =
+      r.choice("cloudQuality", {"low", "medium", "high", "ultra", "reference"}, "medium");
+  clouds::parseQuality(quality, &c.cloudQuality);
   r.finish();
   return c;
 }

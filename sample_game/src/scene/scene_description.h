@@ -17,6 +17,9 @@ struct CameraDescription {
   double pitchDegrees = 0.0;
   double verticalFovDegrees = 65.0;
   double speedMetresPerSecond = 120.0;
+  // Cost/accuracy preset of this camera's clouds ("low", "medium", "high", "ultra",
+  // "reference"); --quality and the number keys 1-5 override it.
+  clouds::Quality cloudQuality = clouds::Quality::Medium;
 };
 
 struct SunDescription {

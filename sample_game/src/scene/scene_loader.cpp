@@ -6,6 +6,7 @@
 #include "engine/ecs/frame_time.h"
 #include "engine/platform/input.h"
 #include "engine/render/scene_components.h"
+#include "game/cloud_quality_controls.h"
 #include "game/flight.h"
 #include "game/game_components.h"
 #include "game/terrain_height.h"
@@ -48,6 +49,7 @@ void populateScene(ecs::App& app, const SceneDescription& scene,
   Aircraft aircraft;
   aircraft.speedMetresPerSecond = scene.camera.speedMetresPerSecond;
   world.emplace<Aircraft>(player, aircraft);
+  world.emplace<clouds::ecs::CloudQuality>(player, clouds::ecs::CloudQuality{scene.camera.cloudQuality});
 
   // The sun and its clock.
   const ecs::Entity sun = world.create();
@@ -88,6 +90,7 @@ void populateScene(ecs::App& app, const SceneDescription& scene,
 
   installTimeOfDay(app.scheduler());
   installFlight(app.scheduler());
+  installCloudQualityControls(app.scheduler());
   app.addModule<clouds::ecs::CloudsModule>();
 }
 

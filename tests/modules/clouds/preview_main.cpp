@@ -35,7 +35,9 @@ int main(int argc, char** argv) {
     engine::gfx::Device device(instance, engine::gfx::DeviceDesc{});
     const VkExtent2D extent{static_cast<std::uint32_t>(get("width", 320)),
                             static_cast<std::uint32_t>(get("height", 180))};
-    test::CloudHarness harness(device, extent);
+    test::HarnessOptions harnessOptions;
+    harnessOptions.passTimings = true;
+    test::CloudHarness harness(device, extent, harnessOptions);
     test::CloudView view;
     view.position = {get("x", 0), get("altitude", 300), get("z", 0)};
     view.pitchDegrees = get("pitch", 10);
@@ -77,14 +79,23 @@ int main(int argc, char** argv) {
     if (const int repeats = static_cast<int>(get("timing", 0)); repeats > 0) {
       // Median GPU time of the module's frame after the first (JIT and noise) frames.
       std::vector<double> times;
+      std::map<std::string, std::vector<double>> passes;
       for (int i = 0; i < repeats; ++i) {
         harness.render(view, s, extent);
         times.push_back(harness.lastGpuMilliseconds());
+        for (const clouds::PassTiming& t : harness.lastPassTimings()) passes[t.name].push_back(t.milliseconds);
       }
+      auto median = [](std::vector<double> v) {
+        std::sort(v.begin(), v.end());
+        return v[v.size() / 2];
+      };
       std::sort(times.begin(), times.end());
       std::printf("GPU time %ux%u: median %.1f ms, min %.1f, max %.1f over %d frames\n",
                   extent.width, extent.height, times[times.size() / 2], times.front(),
                   times.back(), repeats);
+      std::printf("median per pass:");
+      for (const auto& [name, values] : passes) std::printf(" %s %.2f ms;", name.c_str(), median(values));
+      std::printf("\n");
     }
     if (get("dumpTextures", 0) != 0) {
       // Weather map (RGB) and slice 0 of the shape and detail noise (R, G, B, A side by side).

@@ -21,7 +21,10 @@ class CloudTemporal : public test::GpuTest {
  protected:
   // A renderer that counts its work; created per test, so each starts with no history.
   static std::unique_ptr<test::CloudHarness> renderer() {
-    return std::make_unique<test::CloudHarness>(device(), kExtent, 1, /*workCounters=*/true);
+    test::HarnessOptions options;
+    options.workCounters = true;
+    options.passTimings = true;
+    return std::make_unique<test::CloudHarness>(device(), kExtent, options);
   }
 };
 
@@ -246,6 +249,28 @@ TEST_F(CloudTemporal, EachPresetCostsMoreThanTheOneBelowIt) {
     EXPECT_GT(work.tracedPixels, 0u);
     previous = samples(work);
   }
+}
+
+TEST_F(CloudTemporal, PassTimingsAccountForTheFrame) {
+  auto r = renderer();
+  const clouds::Settings high = clouds::settingsFor(clouds::Quality::High);
+  r->render(cumulusView(), high, kExtent, 1);
+  std::vector<std::string> first;
+  for (const clouds::PassTiming& t : r->lastPassTimings()) first.emplace_back(t.name);
+  EXPECT_EQ(first.front(), "noise") << "the first frame generates the noise";
+  r->render(cumulusView(), high, kExtent, 1);
+  std::vector<std::string> names;
+  double sum = 0.0;
+  for (const clouds::PassTiming& t : r->lastPassTimings()) {
+    names.emplace_back(t.name);
+    EXPECT_GT(t.milliseconds, 0.0) << t.name;
+    sum += t.milliseconds;
+  }
+  const std::vector<std::string> expected = {"scene distance", "march", "reconstruct", "upsample"};
+  EXPECT_EQ(names, expected) << "same time of day: the weather map is not regenerated";
+  // The passes are the frame: together at most the whole dispatch, and most of it.
+  EXPECT_LE(sum, r->lastGpuMilliseconds() * 1.02 + 0.05);
+  EXPECT_GE(sum, r->lastGpuMilliseconds() * 0.5);
 }
 
 }  // namespace

@@ -23,6 +23,7 @@ CloudRenderer::CloudRenderer(engine::gfx::Device& device, VkExtent2D maxExtent,
   info.maxFramesInFlight = framesInFlight;
   info.reversedZ = true;
   info.noiseSeed = noiseSeed;
+  info.passTimings = true;  // a few timestamps: where the clouds' time goes, for HUD and logs
   std::string error;
   context_ = clouds::Context::create(info, &error);
   if (!context_) throw engine::Error("clouds module: " + error);

@@ -26,6 +26,7 @@
 #include <memory>
 #include <string>
 #include <string_view>
+#include <vector>
 
 namespace clouds {
 
@@ -55,6 +56,15 @@ struct CreateInfo {
   std::uint32_t noiseSeed = 1;
   // Count the march's work (samples, rays, early exits) for workCounters(); costs atomics.
   bool workCounters = false;
+  // Timestamp each pass (weather, scene distance, march, reconstruct, upsample) for
+  // passTimings(); a few timestamp queries per frame.
+  bool passTimings = false;
+};
+
+// GPU time of one of the module's passes in a frame (CreateInfo::passTimings).
+struct PassTiming {
+  const char* name = "";
+  double milliseconds = 0.0;
 };
 
 // What the march did in one frame (CreateInfo::workCounters).
@@ -163,7 +173,10 @@ struct Settings {
   // is uncertain: fully where the nearest cloud and the far distance reproject this many trace
   // pixels apart (a moving camera near cloud), not at all for a static or turning camera.
   float historyClampSpreadPixels = 1.0f;  // [0.01, 100]
-  float insideLayerMarginMetres = 150.0f;   // [0, 5000] no reprojection this close to the layer
+  // No reprojection inside the layer or this close to it: one depth per pixel cannot describe
+  // cloud all around the camera. Below or above it, near cloud is handled by the parallax
+  // clamp (historyClampSpreadPixels) instead.
+  float insideLayerMarginMetres = 50.0f;    // [0, 5000]
   float historyResetDistanceMetres = 2000.0f;  // [1, 1e6] camera move in one frame that resets
   float historyResetAngleDegrees = 30.0f;      // [0.1, 180] camera turn in one frame that resets
   float relightResetDegrees = 2.0f;            // [0.01, 180] sun turn in one frame that resets
@@ -270,6 +283,9 @@ class Context {
   // The counters of frame `frameIndex`, which must have completed on the GPU and be one of
   // the last maxFramesInFlight frames; zeros unless CreateInfo::workCounters.
   WorkCounters workCounters(std::uint64_t frameIndex) const;
+  // The pass times of frame `frameIndex` (same conditions); empty unless
+  // CreateInfo::passTimings and the device has compute timestamps.
+  std::vector<PassTiming> passTimings(std::uint64_t frameIndex) const;
 
   class Impl;
   Impl& impl() { return *impl_; }  // for the module's own tests and tools

@@ -45,8 +45,7 @@ clouds::Settings singleFrame(clouds::Settings settings) {
   return settings;
 }
 
-CloudHarness::CloudHarness(gfx::Device& device, VkExtent2D maxExtent, std::uint32_t noiseSeed,
-                           bool workCounters)
+CloudHarness::CloudHarness(gfx::Device& device, VkExtent2D maxExtent, HarnessOptions options)
     : device_(device) {
   clouds::CreateInfo info;
   info.instance = device.vkInstance();
@@ -58,8 +57,9 @@ CloudHarness::CloudHarness(gfx::Device& device, VkExtent2D maxExtent, std::uint3
   info.maxRenderExtent = maxExtent;
   info.maxFramesInFlight = 2;
   info.reversedZ = true;
-  info.noiseSeed = noiseSeed;
-  info.workCounters = workCounters;
+  info.noiseSeed = options.noiseSeed;
+  info.workCounters = options.workCounters;
+  info.passTimings = options.passTimings;
   std::string error;
   context_ = clouds::Context::create(info, &error);
   if (!context_) throw Error("clouds::Context::create: " + error);
@@ -286,11 +286,12 @@ void CloudHarness::poisonHistory() {
                                   VK_ACCESS_2_MEMORY_READ_BIT | VK_ACCESS_2_MEMORY_WRITE_BIT};
     const gfx::ImageState transfer{VK_IMAGE_LAYOUT_GENERAL, VK_PIPELINE_STAGE_2_CLEAR_BIT,
                                    VK_ACCESS_2_TRANSFER_WRITE_BIT};
+    // Packed samples (cloud_temporal.h): half-float NaN radiance, float NaN depths.
     VkClearColorValue nan{};
-    for (float& c : nan.float32) c = std::nanf("");
+    nan.uint32[0] = nan.uint32[1] = 0x7E007E00u;
+    nan.uint32[2] = nan.uint32[3] = 0x7FC00000u;
     for (std::uint32_t i = 0; i < 2; ++i) {
-      for (VkImage image : {context_->impl().history(i).image(),
-                            context_->impl().historyDepth(i).image()}) {
+      for (VkImage image : {context_->impl().history(i).image()}) {
         gfx::imageBarrier(cmd, image, range, general, transfer);
         vkCmdClearColorImage(cmd, image, VK_IMAGE_LAYOUT_GENERAL, &nan, 1, &range);
         gfx::imageBarrier(cmd, image, range, transfer, general);
@@ -301,6 +302,11 @@ void CloudHarness::poisonHistory() {
 
 clouds::WorkCounters CloudHarness::lastWorkCounters() const {
   return frameIndex_ == 0 ? clouds::WorkCounters{} : context_->workCounters(frameIndex_ - 1);
+}
+
+std::vector<clouds::PassTiming> CloudHarness::lastPassTimings() const {
+  return frameIndex_ == 0 ? std::vector<clouds::PassTiming>{}
+                          : context_->passTimings(frameIndex_ - 1);
 }
 
 std::vector<std::uint8_t> CloudHarness::readWeatherMap() {

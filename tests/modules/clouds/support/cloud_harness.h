@@ -52,10 +52,15 @@ struct CloudFrame {
 // history. What the CPU reference computes, and what analytic tests compare against.
 clouds::Settings singleFrame(clouds::Settings settings);
 
+struct HarnessOptions {
+  std::uint32_t noiseSeed = 1;
+  bool workCounters = false;  // CreateInfo::workCounters
+  bool passTimings = false;   // CreateInfo::passTimings
+};
+
 class CloudHarness {
  public:
-  CloudHarness(engine::gfx::Device& device, VkExtent2D maxExtent, std::uint32_t noiseSeed = 1,
-               bool workCounters = false);
+  CloudHarness(engine::gfx::Device& device, VkExtent2D maxExtent, HarnessOptions options = {});
   ~CloudHarness();
 
   // Renders `frames` frames of `view` and returns the last one. Frames form one sequence
@@ -76,8 +81,10 @@ class CloudHarness {
   void cut() { cutNext_ = true; }
   // Overwrites both temporal history images with NaN (tests: poisoned history must not leak).
   void poisonHistory();
-  // The work counters of the last rendered frame (zeros unless created with workCounters).
+  // The work counters and pass times of the last rendered frame (zeros / empty unless
+  // created with workCounters / passTimings).
   clouds::WorkCounters lastWorkCounters() const;
+  std::vector<clouds::PassTiming> lastPassTimings() const;
 
   clouds::Context& context() { return *context_; }
   // The host depth values of the last render with groundDepth (reversed-Z), else empty.

@@ -154,6 +154,12 @@ class FrameGraph {
   void compile();
   void execute(const gfx::FrameRing::Frame& frame);
 
+  // Exact per-pass GPU times (default on): each pass's end timestamp waits behind a full
+  // execution barrier, so a pass's time is its own work. Without it, work a device defers
+  // (lavapipe rasterises a render pass at the next synchronisation) is billed to whichever
+  // later pass waits for it. Costs the overlap of consecutive passes on GPUs that overlap.
+  void setExactPassTimes(bool exact) { exactPassTimes_ = exact; }
+
   // --- Introspection (tests, debugging, the sample's pass list) -------------------------
   std::vector<const char*> executionOrder() const;
   std::vector<const char*> culledPasses() const;
@@ -260,6 +266,7 @@ class FrameGraph {
   std::vector<VkImageMemoryBarrier2> finalImageBarriers_;
   std::vector<VkBufferMemoryBarrier2> finalBufferBarriers_;
   bool compiled_ = false;
+  bool exactPassTimes_ = true;
 };
 
 template <typename Data, typename Setup, typename Execute>

@@ -15,6 +15,12 @@ struct CloudLayer {
   std::optional<std::filesystem::path> weatherMap;  // painted weather (PNG), else procedural
 };
 
+// On a camera entity: the quality preset its clouds render with, settingsFor(preset) over the
+// layer's look. A camera without one renders the layer's settings as they are.
+struct CloudQuality {
+  clouds::Quality preset = clouds::Quality::Medium;
+};
+
 class CloudRenderer;
 
 // Context singleton set by whoever owns the CloudRenderer (the game's renderer), so the

@@ -1,0 +1,94 @@
+#include "pass_timer.h"
+
+namespace clouds::detail {
+namespace {
+
+const char* passName(Pass pass) {
+  switch (pass) {
+    case Pass::Noise: return "noise";
+    case Pass::Weather: return "weather";
+    case Pass::SkyAmbient: return "sky ambient";
+    case Pass::SceneDistance: return "scene distance";
+    case Pass::March: return "march";
+    case Pass::Reconstruct: return "reconstruct";
+    case Pass::Upsample: return "upsample";
+    case Pass::Count: break;
+  }
+  return "?";
+}
+
+}  // namespace
+
+PassTimer::PassTimer(const DeviceContext& device, VkPhysicalDevice physical, std::uint32_t slots)
+    : device_(device), recorded_(slots) {
+  VkPhysicalDeviceProperties properties{};
+  device.fn().vkGetPhysicalDeviceProperties(physical, &properties);
+  if (properties.limits.timestampComputeAndGraphics == VK_FALSE ||
+      properties.limits.timestampPeriod <= 0.0f) {
+    return;
+  }
+  nanosecondsPerTick_ = properties.limits.timestampPeriod;
+  VkQueryPoolCreateInfo info{VK_STRUCTURE_TYPE_QUERY_POOL_CREATE_INFO};
+  info.queryType = VK_QUERY_TYPE_TIMESTAMP;
+  info.queryCount = slots * kPasses * 2;
+  check(device.fn().vkCreateQueryPool(device.device(), &info, nullptr, &pool_), "vkCreateQueryPool");
+  device.name(VK_OBJECT_TYPE_QUERY_POOL, bits(pool_), "pass timestamps");
+}
+
+PassTimer::~PassTimer() {
+  if (pool_ != VK_NULL_HANDLE) device_.fn().vkDestroyQueryPool(device_.device(), pool_, nullptr);
+}
+
+void PassTimer::beginFrame(VkCommandBuffer cmd, std::uint32_t slot) {
+  slot_ = slot;
+  recorded_[slot].clear();
+  if (pool_ == VK_NULL_HANDLE) return;
+  device_.fn().vkCmdResetQueryPool(cmd, pool_, query(slot, Pass::Noise, 0), kPasses * 2);
+}
+
+void PassTimer::begin(VkCommandBuffer cmd, Pass pass) {
+  if (pool_ == VK_NULL_HANDLE) return;
+  stamp(cmd, query(slot_, pass, 0));
+}
+
+void PassTimer::end(VkCommandBuffer cmd, Pass pass) {
+  if (pool_ == VK_NULL_HANDLE) return;
+  stamp(cmd, query(slot_, pass, 1));
+  recorded_[slot_].push_back(pass);
+}
+
+void PassTimer::stamp(VkCommandBuffer cmd, std::uint32_t queryIndex) {
+  // Everything recorded so far completes, then the timestamp is taken and, through the second
+  // dependency, realised at once: lavapipe writes a timestamp only when it next synchronises,
+  // which without it would be after the following pass's dispatch.
+  executionBarrier(cmd);
+  device_.fn().vkCmdWriteTimestamp2(cmd, VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT, pool_, queryIndex);
+  executionBarrier(cmd);
+}
+
+void PassTimer::executionBarrier(VkCommandBuffer cmd) const {
+  VkMemoryBarrier2 barrier{VK_STRUCTURE_TYPE_MEMORY_BARRIER_2};
+  barrier.srcStageMask = VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT;
+  barrier.dstStageMask = VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT;
+  VkDependencyInfo dependency{VK_STRUCTURE_TYPE_DEPENDENCY_INFO};
+  dependency.memoryBarrierCount = 1;
+  dependency.pMemoryBarriers = &barrier;
+  device_.fn().vkCmdPipelineBarrier2(cmd, &dependency);
+}
+
+std::vector<PassTiming> PassTimer::read(std::uint32_t slot) const {
+  std::vector<PassTiming> timings;
+  if (pool_ == VK_NULL_HANDLE) return timings;
+  for (Pass pass : recorded_[slot]) {
+    std::uint64_t ticks[2] = {0, 0};
+    const VkResult result = device_.fn().vkGetQueryPoolResults(
+        device_.device(), pool_, query(slot, pass, 0), 2, sizeof(ticks), ticks,
+        sizeof(std::uint64_t), VK_QUERY_RESULT_64_BIT);
+    if (result != VK_SUCCESS) return {};  // not complete: the caller asked too early
+    timings.push_back(
+        PassTiming{passName(pass), double(ticks[1] - ticks[0]) * nanosecondsPerTick_ * 1e-6});
+  }
+  return timings;
+}
+
+}  // namespace clouds::detail
