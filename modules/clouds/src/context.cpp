@@ -78,7 +78,9 @@ Context::Impl::Impl(const CreateInfo& info, const detail::VulkanFunctions& funct
   weatherMaxCoarse_ = OwnedImage(device_, VK_IMAGE_TYPE_2D, kNoiseFormat, {coarse, coarse, 1},
                                  storage, "weather maxima (coarse)");
   const VkExtent3D maxExtent{info.maxRenderExtent.width, info.maxRenderExtent.height, 1};
-  const VkImageUsageFlags output = storage | VK_IMAGE_USAGE_SAMPLED_BIT;
+  // Outputs also take clears (a provably clear sky is cleared, not marched).
+  const VkImageUsageFlags output =
+      storage | VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT;
   radiance_ = OwnedImage(device_, VK_IMAGE_TYPE_2D, kRadianceFormat, maxExtent, output, "radiance");
   depth_ = OwnedImage(device_, VK_IMAGE_TYPE_2D, kDepthOutputFormat, maxExtent, output, "cloud depth");
   // The trace resolution never exceeds the output's (traceScale <= 1).
@@ -470,6 +472,38 @@ void Context::Impl::recordTrace(VkCommandBuffer cmd, const FrameInputs& inputs,
   endPass(cmd, detail::Pass::Upsample);
 }
 
+bool Context::Impl::skyIsClear(const Settings& s) {
+  // Coverage = weather texel + 2 coverage - 1 <= 0 for every texel when coverage is 0; no
+  // extinction, no cloud. Anything else may hold cloud somewhere the camera sees.
+  return s.coverage <= 0.0f || s.densityMultiplier <= 0.0f || s.extinctionPerMetre <= 0.0f;
+}
+
+void Context::Impl::recordClearSky(VkCommandBuffer cmd, Slot& slot) {
+  const auto& fn = device_.fn();
+  beginPass(cmd, detail::Pass::ClearSky, "clouds: clear sky");
+  const VkPipelineStageFlags2 transfer = VK_PIPELINE_STAGE_2_CLEAR_BIT;
+  // The outputs (and the counters) may still be read by earlier commands.
+  detail::memoryBarrier(device_, cmd, kHostReadStages, kHostReadAccess | kStorageRead, transfer,
+                        VK_ACCESS_2_TRANSFER_WRITE_BIT);
+  const VkImageSubresourceRange range{VK_IMAGE_ASPECT_COLOR_BIT, 0, 1, 0, 1};
+  VkClearColorValue noCloud{};
+  noCloud.float32[3] = 1.0f;  // transmittance 1, no radiance
+  fn.vkCmdClearColorImage(cmd, radiance_.image(), VK_IMAGE_LAYOUT_GENERAL, &noCloud, 1, &range);
+  const VkClearColorValue noDepth{};
+  fn.vkCmdClearColorImage(cmd, depth_.image(), VK_IMAGE_LAYOUT_GENERAL, &noDepth, 1, &range);
+  if (info_.workCounters) fn.vkCmdFillBuffer(cmd, slot.counters.buffer(), 0, VK_WHOLE_SIZE, 0u);
+  for (const detail::OwnedImage* image : {&radiance_, &depth_}) {
+    detail::barrier(device_, cmd, image->image(), VK_IMAGE_ASPECT_COLOR_BIT,
+                    VK_IMAGE_LAYOUT_GENERAL, VK_IMAGE_LAYOUT_GENERAL, transfer,
+                    VK_ACCESS_2_TRANSFER_WRITE_BIT, kHostReadStages, kHostReadAccess);
+  }
+  if (info_.workCounters) {
+    detail::memoryBarrier(device_, cmd, transfer, VK_ACCESS_2_TRANSFER_WRITE_BIT,
+                          VK_PIPELINE_STAGE_2_HOST_BIT, VK_ACCESS_2_HOST_READ_BIT);
+  }
+  endPass(cmd, detail::Pass::ClearSky);
+}
+
 void Context::Impl::dispatch(const FrameInputs& inputs, const Settings& settings) {
   const VkCommandBuffer cmd = inputs.commandBuffer;
   const auto slotIndex = static_cast<std::uint32_t>(inputs.frameIndex % slots_.size());
@@ -494,17 +528,21 @@ void Context::Impl::dispatch(const FrameInputs& inputs, const Settings& settings
   uniformContext.deltaSeconds = temporal.deltaSeconds;
   lastUniforms_ = detail::buildUniforms(inputs, settings, uniformContext);
   lastUniforms_.frame.z |= debugFlags_;
-  recordUniforms(cmd, slot, lastUniforms_);
-  if (inputs.skyView != VK_NULL_HANDLE) recordSkyAmbient(cmd, inputs, slot);
-  recordTrace(cmd, inputs, settings, temporal, traceExtent, slot);
-  device_.endLabel(cmd);
-
-  temporal_.commit(temporal, inputs, settings, traceExtent);
-  report_.traceExtent = traceExtent;
-  report_.tileSize = temporal.tileSize;
-  report_.historyUsed = temporal.useHistory;
-  report_.insideLayer = temporal.insideLayer;
-  report_.resetReason = temporal.resetReason;
+  if (skyIsClear(settings)) {
+    // Nothing can be marched: the outputs are the empty sky, and the next frame starts afresh.
+    recordClearSky(cmd, slot);
+    device_.endLabel(cmd);
+    temporal_.forget();
+    report_ = FrameReport{{0, 0}, 0, false, temporal.insideLayer, "clear sky: nothing to march"};
+  } else {
+    recordUniforms(cmd, slot, lastUniforms_);
+    if (inputs.skyView != VK_NULL_HANDLE) recordSkyAmbient(cmd, inputs, slot);
+    recordTrace(cmd, inputs, settings, temporal, traceExtent, slot);
+    device_.endLabel(cmd);
+    temporal_.commit(temporal, inputs, settings, traceExtent);
+    report_ = FrameReport{traceExtent, temporal.tileSize, temporal.useHistory,
+                          temporal.insideLayer, temporal.resetReason};
+  }
   lastSlot_ = slotIndex;
   lastExtent_ = inputs.renderExtent;
 }

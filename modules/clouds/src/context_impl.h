@@ -70,6 +70,8 @@ class Context::Impl {
   void recordWeatherMaxima(VkCommandBuffer cmd);
   void recordUniforms(VkCommandBuffer cmd, Slot& slot, const shader::CloudUniforms& uniforms);
   void recordSkyAmbient(VkCommandBuffer cmd, const FrameInputs& inputs, Slot& slot);
+  static bool skyIsClear(const Settings& settings);
+  void recordClearSky(VkCommandBuffer cmd, Slot& slot);
   void recordTrace(VkCommandBuffer cmd, const FrameInputs& inputs, const Settings& settings,
                    const detail::TemporalFrame& temporal, VkExtent2D traceExtent, Slot& slot);
   void bindAndDispatch(VkCommandBuffer cmd, detail::ComputeProgram& program, VkPipeline pipeline,

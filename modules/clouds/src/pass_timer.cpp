@@ -8,6 +8,7 @@ const char* passName(Pass pass) {
     case Pass::Noise: return "noise";
     case Pass::Weather: return "weather";
     case Pass::SkyAmbient: return "sky ambient";
+    case Pass::ClearSky: return "clear sky";
     case Pass::SceneDistance: return "scene distance";
     case Pass::March: return "march";
     case Pass::Reconstruct: return "reconstruct";

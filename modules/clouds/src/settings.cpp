@@ -183,7 +183,8 @@ Settings settingsFor(Quality quality, const Settings& base) {
       s.viewStepGrowth = 0.004f;
       s.lightSteps = 6;
       s.multipleScatteringOctaves = 4;
-      s.detailDistanceMetres = 30000.0f;
+      s.detailDistanceMetres = 60000.0f;  // to the max distance: far clouds seen from above
+                                         // are visibly fatter without their erosion
       s.transmittanceCutoff = 0.005f;
       break;
     case Quality::Ultra:

@@ -39,6 +39,8 @@ class TemporalState {
   TemporalFrame plan(const FrameInputs& inputs, const Settings& settings, VkExtent2D traceExtent);
   void commit(const TemporalFrame& frame, const FrameInputs& inputs, const Settings& settings,
               VkExtent2D traceExtent);
+  // This frame wrote no history (nothing was marched): the next frame starts afresh.
+  void forget() { havePrevious_ = false; }
 
  private:
   bool havePrevious_ = false;

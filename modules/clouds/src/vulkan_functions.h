@@ -48,6 +48,7 @@ namespace clouds::detail {
   X(vkCmdPipelineBarrier2)         \
   X(vkCmdUpdateBuffer)             \
   X(vkCmdFillBuffer)               \
+  X(vkCmdClearColorImage)          \
   X(vkMapMemory)                   \
   X(vkCreateQueryPool)             \
   X(vkDestroyQueryPool)            \

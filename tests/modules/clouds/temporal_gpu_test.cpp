@@ -226,10 +226,17 @@ TEST_F(CloudTemporal, ClearSkyCostsLessThanATenthOfOvercast) {
   overcast.coverage = 1.0f;
   overcast.cloudType = 0.1f;  // a stratus deck
   auto r = renderer();
-  r->render(cumulusView(), clear, kExtent, 3);
+  const test::CloudFrame empty = r->render(cumulusView(), clear, kExtent, 3);
   const clouds::WorkCounters clearWork = r->lastWorkCounters();
-  r->cut();
-  r->render(cumulusView(), overcast, kExtent, 3);
+  // Coverage 0 cannot show a cloud anywhere: the module clears its outputs instead of marching.
+  EXPECT_EQ(std::string(r->context().lastFrameReport().resetReason), "clear sky: nothing to march");
+  EXPECT_EQ(clearWork.tracedPixels, 0u);
+  for (const glm::vec4& p : empty.radiance) ASSERT_EQ(p, glm::vec4(0.0f, 0.0f, 0.0f, 1.0f));
+  for (const glm::vec2& d : empty.depth) ASSERT_EQ(d, glm::vec2(0.0f));
+  // Back to cloud, without a cut: nothing stale from before the clear frames is reused.
+  r->render(cumulusView(), overcast, kExtent, 1);
+  EXPECT_FALSE(r->context().lastFrameReport().historyUsed);
+  r->render(cumulusView(), overcast, kExtent, 2);
   const clouds::WorkCounters overcastWork = r->lastWorkCounters();
   EXPECT_GT(samples(overcastWork), 0u);
   EXPECT_LT(samples(clearWork) * 10, samples(overcastWork));
