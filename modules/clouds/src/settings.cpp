@@ -155,25 +155,29 @@ Settings settingsFor(Quality quality, const Settings& base) {
   s.jitter = Jitter::BayerHalton;
   s.transmittanceCutoff = 0.01f;
   switch (quality) {
+    // Low and Medium are High at a quarter-resolution trace (the benchmark's best saving per
+    // dB lost: half the time for 3.5 dB); Low also takes longer steps and fewer light
+    // samples. Detail erosion goes as far as High's: it costs only where cloud is, and
+    // cutting it short cost Medium 14 dB seen from above the layer for 1 ms.
     case Quality::Low:
       s.traceScale = 0.25f;
       s.updateInterval = 16;
-      s.maxViewSteps = 48;
-      s.viewStepMetres = 100.0f;
-      s.viewStepGrowth = 0.006f;
+      s.maxViewSteps = 64;
+      s.viewStepMetres = 120.0f;
+      s.viewStepGrowth = 0.008f;
       s.lightSteps = 3;
-      s.multipleScatteringOctaves = 2;
-      s.detailDistanceMetres = 8000.0f;
+      s.multipleScatteringOctaves = 3;
+      s.detailDistanceMetres = 60000.0f;
       break;
     case Quality::Medium:
-      s.traceScale = 0.5f;
+      s.traceScale = 0.25f;
       s.updateInterval = 16;
-      s.maxViewSteps = 64;
-      s.viewStepMetres = 80.0f;
-      s.viewStepGrowth = 0.005f;
-      s.lightSteps = 4;
-      s.multipleScatteringOctaves = 3;
-      s.detailDistanceMetres = 15000.0f;
+      s.maxViewSteps = 96;
+      s.viewStepMetres = 60.0f;
+      s.viewStepGrowth = 0.004f;
+      s.lightSteps = 6;
+      s.multipleScatteringOctaves = 4;
+      s.detailDistanceMetres = 60000.0f;
       break;
     case Quality::High:
       s.traceScale = 0.5f;

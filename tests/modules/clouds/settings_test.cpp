@@ -76,8 +76,8 @@ TEST(CloudPresets, TheFunctionsOutputs) {
     bool temporalReuse, emptySpaceSkipping, cheapSampling;
   };
   const Row rows[] = {
-      {Quality::Low, 0.25f, 16, 48, 100.0f, 3, true, true, true},
-      {Quality::Medium, 0.5f, 16, 64, 80.0f, 4, true, true, true},
+      {Quality::Low, 0.25f, 16, 64, 120.0f, 3, true, true, true},
+      {Quality::Medium, 0.25f, 16, 96, 60.0f, 6, true, true, true},
       {Quality::High, 0.5f, 16, 96, 60.0f, 6, true, true, true},
       {Quality::Ultra, 1.0f, 4, 160, 40.0f, 10, true, true, true},
       {Quality::Reference, 1.0f, 1, 8192, 12.0f, 24, false, false, false},
