@@ -68,6 +68,13 @@ int main(int argc, char** argv) {
     s.viewStepMetres = static_cast<float>(get("step", s.viewStepMetres));
     s.anvilBias = static_cast<float>(get("anvil", s.anvilBias));
     if (kv.count("quality")) s = clouds::settingsFor(static_cast<clouds::Quality>(get("quality", 2)), s);
+    if (kv.count("detailDistance")) s.detailDistanceMetres = float(get("detailDistance", 0));
+    if (kv.count("cutoff")) s.transmittanceCutoff = float(get("cutoff", 0));
+    if (kv.count("maxSteps")) s.maxViewSteps = std::uint32_t(get("maxSteps", 0));
+    if (kv.count("cheap")) s.cheapSampling = get("cheap", 1) != 0;
+    if (kv.count("traceScale")) s.traceScale = float(get("traceScale", 0.5));
+    if (kv.count("interval")) s.updateInterval = std::uint32_t(get("interval", 16));
+    if (kv.count("growth")) s.viewStepGrowth = float(get("growth", 0.004));
     if (get("reference", 0) != 0) s = clouds::referenceSettings(s);
     const auto start = std::chrono::steady_clock::now();
     const test::CloudFrame frame =

@@ -1,0 +1,27 @@
+#pragma once
+// The benchmark's outputs: a CSV of every measurement, a Markdown report (targets, presets,
+// knob sweeps, per-view detail) and two plots of error against time (static views, fly-through).
+#include <filesystem>
+#include <string>
+
+#include "bench_run.h"
+
+namespace bench {
+
+// A configuration over a set of views: time is the mean of the per-view medians; PSNR is
+// pooled (from the mean squared error over the views, so a view that matches exactly, like the
+// clear sky, cannot outweigh the others); min PSNR is the worst view.
+struct Aggregate {
+  double milliseconds = 0.0;
+  double psnr = 0.0;
+  double minPsnr = 0.0;
+};
+Aggregate aggregateStatic(const BenchResults& results, const std::string& config);
+Aggregate aggregateFlyThrough(const BenchResults& results, const std::string& config);
+
+void writeCsv(const std::filesystem::path& file, const BenchResults& results);
+void writeMarkdown(const std::filesystem::path& file, const BenchResults& results);
+// plot_static.png and plot_fly_through.png in `folder`.
+void writePlots(const std::filesystem::path& folder, const BenchResults& results);
+
+}  // namespace bench

@@ -1,0 +1,249 @@
+#include "bench_run.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <memory>
+
+#include "engine/core/error.h"
+
+namespace bench {
+namespace {
+
+double median(std::vector<double> values) {
+  if (values.empty()) return 0.0;
+  std::sort(values.begin(), values.end());
+  const std::size_t n = values.size();
+  return n % 2 == 1 ? values[n / 2] : 0.5 * (values[n / 2 - 1] + values[n / 2]);
+}
+
+// A configuration's own module instance.
+struct Instance {
+  const BenchConfig* config = nullptr;
+  std::unique_ptr<test::CloudHarness> harness;
+};
+
+// What the timed frames of one configuration on one view recorded.
+struct Samples {
+  std::vector<double> milliseconds;
+  std::map<std::string, std::vector<double>> passMilliseconds;
+  clouds::WorkCounters work;
+
+  void record(const test::CloudHarness& harness) {
+    milliseconds.push_back(harness.lastGpuMilliseconds());
+    for (const clouds::PassTiming& pass : harness.lastPassTimings()) {
+      passMilliseconds[pass.name].push_back(pass.milliseconds);
+    }
+    const clouds::WorkCounters w = harness.lastWorkCounters();
+    work.viewSamples += w.viewSamples;
+    work.lightSamples += w.lightSamples;
+    work.tracedPixels += w.tracedPixels;
+    work.earlyExits += w.earlyExits;
+    work.skippedCells += w.skippedCells;
+  }
+};
+
+Measurement summarise(const std::string& config, const std::string& view, const Samples& s) {
+  Measurement m;
+  m.config = config;
+  m.view = view;
+  m.medianMs = median(s.milliseconds);
+  if (!s.milliseconds.empty()) {
+    const auto [lo, hi] = std::minmax_element(s.milliseconds.begin(), s.milliseconds.end());
+    m.minMs = *lo;
+    m.maxMs = *hi;
+  }
+  const double rays = double(std::max<std::uint64_t>(s.work.tracedPixels, 1));
+  m.viewSamplesPerRay = double(s.work.viewSamples) / rays;
+  m.lightSamplesPerRay = double(s.work.lightSamples) / rays;
+  m.earlyExitFraction = double(s.work.earlyExits) / rays;
+  m.raysPerFrame = double(s.work.tracedPixels) / double(std::max<std::size_t>(s.milliseconds.size(), 1));
+  for (const auto& [name, values] : s.passMilliseconds) m.passMs[name] = median(values);
+  return m;
+}
+
+void renderOrThrow(test::CloudHarness& harness, const test::CloudView& view,
+                   const clouds::Settings& settings, VkExtent2D extent) {
+  const std::string error = harness.tryRender(view, settings, extent);
+  if (!error.empty()) throw engine::Error("clouds_bench: " + error);
+}
+
+// The Reference of a view: `frames` frames of the Reference mode averaged, plus the first one
+// alone (what a single Reference frame is worth) and each frame's GPU time.
+struct Reference {
+  std::vector<glm::vec3> pixels;       // averaged, tonemapped
+  std::vector<glm::vec3> firstPixels;  // the first frame alone, tonemapped
+  std::vector<double> milliseconds;
+};
+
+Reference renderReference(test::CloudHarness& harness, const test::CloudView& view,
+                          const clouds::Settings& look, VkExtent2D extent, std::uint32_t frames) {
+  const clouds::Settings settings = clouds::settingsFor(clouds::Quality::Reference, look);
+  harness.cut();
+  test::CloudFrame sum;
+  Reference reference;
+  for (std::uint32_t i = 0; i < frames; ++i) {
+    const test::CloudFrame frame = harness.render(view, settings, extent);
+    reference.milliseconds.push_back(harness.lastGpuMilliseconds());
+    if (i == 0) {
+      sum = frame;
+      reference.firstPixels = test::tonemappedPixels(frame, view);
+      continue;
+    }
+    for (std::size_t p = 0; p < frame.radiance.size(); ++p) sum.radiance[p] += frame.radiance[p];
+  }
+  for (glm::vec4& p : sum.radiance) p /= float(std::max(frames, 1u));
+  reference.pixels = test::tonemappedPixels(sum, view);
+  return reference;
+}
+
+}  // namespace
+
+std::vector<std::string> implausibleMeasurements(const BenchResults& results) {
+  std::vector<std::string> problems;
+  const auto check = [&](const Measurement& m, const char* field, double value) {
+    if (!std::isfinite(value) || value < 0.0) {
+      problems.push_back(m.config + " on " + m.view + ": " + field + " = " + std::to_string(value));
+    }
+  };
+  for (const Measurement& m : results.measurements) {
+    check(m, "median ms", m.medianMs);
+    check(m, "PSNR", m.psnr);
+    check(m, "min PSNR", m.minPsnr);
+    check(m, "mean abs error", m.meanAbs);
+    check(m, "max abs error", m.maxAbs);
+    check(m, "view samples per ray", m.viewSamplesPerRay);
+    check(m, "light samples per ray", m.lightSamplesPerRay);
+    for (const auto& [pass, ms] : m.passMs) check(m, pass.c_str(), ms);
+    if (m.view != "clear sky" && m.raysPerFrame <= 0.0) {
+      problems.push_back(m.config + " on " + m.view + ": no ray traced");
+    }
+  }
+  for (const ReferenceMeasurement& r : results.references) {
+    if (!std::isfinite(r.medianMs) || r.medianMs <= 0.0) {
+      problems.push_back("Reference on " + r.view + ": median ms = " + std::to_string(r.medianMs));
+    }
+  }
+  if (results.measurements.empty()) problems.emplace_back("no measurement");
+  return problems;
+}
+
+const Measurement* BenchResults::find(const std::string& config, const std::string& view) const {
+  for (const Measurement& m : measurements) {
+    if (m.config == config && m.view == view) return &m;
+  }
+  return nullptr;
+}
+
+BenchResults runBenchmark(engine::gfx::Device& device, const RunOptions& options,
+                          void (*progress)(const std::string& line)) {
+  const auto start = std::chrono::steady_clock::now();
+  BenchResults results;
+  results.options = options;
+  results.configs = benchConfigs();
+  results.device = device.properties().deviceName;
+  const VkExtent2D extent = options.extent;
+
+  test::HarnessOptions harnessOptions;
+  harnessOptions.workCounters = true;
+  harnessOptions.passTimings = true;
+  std::vector<Instance> instances;
+  for (const BenchConfig& config : results.configs) {
+    instances.push_back(
+        Instance{&config, std::make_unique<test::CloudHarness>(device, extent, harnessOptions)});
+  }
+  test::CloudHarness referenceHarness(device, extent, harnessOptions);
+
+  // --- Static views: converge, time interleaved, then compare the last frame. ---------------
+  for (const BenchView& view : canonicalViews()) {
+    results.views.push_back(view.name);
+    progress(view.name + ": Reference (" + std::to_string(options.referenceFrames) + " frames)");
+    const Reference reference =
+        renderReference(referenceHarness, view.view, view.look, extent, options.referenceFrames);
+    results.references.push_back(
+        ReferenceMeasurement{view.name, median(reference.milliseconds),
+                             test::imageError(reference.firstPixels, reference.pixels).psnr});
+
+    progress(view.name + ": " + std::to_string(instances.size()) + " configurations");
+    std::vector<clouds::Settings> settings;
+    for (Instance& instance : instances) {
+      settings.push_back(instance.config->settingsFor(view.look));
+      instance.harness->cut();
+    }
+    for (std::uint32_t frame = 0; frame < options.convergeFrames; ++frame) {
+      for (std::size_t i = 0; i < instances.size(); ++i) {
+        renderOrThrow(*instances[i].harness, view.view, settings[i], extent);
+      }
+    }
+    std::vector<Samples> samples(instances.size());
+    for (std::uint32_t frame = 0; frame < options.timedFrames; ++frame) {
+      for (std::size_t i = 0; i < instances.size(); ++i) {
+        renderOrThrow(*instances[i].harness, view.view, settings[i], extent);
+        samples[i].record(*instances[i].harness);
+      }
+    }
+    for (std::size_t i = 0; i < instances.size(); ++i) {
+      const test::CloudFrame last = instances[i].harness->render(view.view, settings[i], extent);
+      const test::ImageError error =
+          test::imageError(test::tonemappedPixels(last, view.view), reference.pixels);
+      Measurement m = summarise(instances[i].config->name, view.name, samples[i]);
+      m.psnr = m.minPsnr = error.psnr;
+      m.meanAbs = error.meanAbs;
+      m.maxAbs = error.maxAbs;
+      results.measurements.push_back(m);
+    }
+  }
+
+  // --- The fly-through: every frame timed, the error at regular frames. ----------------------
+  const FlyThrough path = flyThrough(options.flyFrames);
+  const std::string flyName = "fly-through";
+  results.views.push_back(flyName);
+  std::vector<clouds::Settings> settings;
+  for (Instance& instance : instances) {
+    settings.push_back(instance.config->settingsFor(path.look));
+    instance.harness->cut();
+  }
+  std::vector<Samples> samples(instances.size());
+  std::vector<std::vector<test::ImageError>> errors(instances.size());
+  std::vector<double> referenceMs;
+  for (std::uint32_t frame = 0; frame < path.frames; ++frame) {
+    const test::CloudView pose = path.poseAt(frame);
+    const bool measured = frame >= options.flyWarmUpFrames &&
+                          ((frame - options.flyWarmUpFrames) % options.flyReferenceEvery == 0 ||
+                           frame + 1 == path.frames);
+    Reference reference;
+    if (measured) {
+      progress(flyName + ": frame " + std::to_string(frame) + ", Reference");
+      reference = renderReference(referenceHarness, pose, path.look, extent, options.referenceFrames);
+      referenceMs.insert(referenceMs.end(), reference.milliseconds.begin(),
+                         reference.milliseconds.end());
+    }
+    for (std::size_t i = 0; i < instances.size(); ++i) {
+      test::CloudHarness& harness = *instances[i].harness;
+      if (measured) {
+        const test::CloudFrame out = harness.render(pose, settings[i], extent);
+        errors[i].push_back(test::imageError(test::tonemappedPixels(out, pose), reference.pixels));
+      } else {
+        renderOrThrow(harness, pose, settings[i], extent);
+      }
+      samples[i].record(harness);
+    }
+  }
+  results.references.push_back(ReferenceMeasurement{flyName, median(referenceMs), 0.0});
+  for (std::size_t i = 0; i < instances.size(); ++i) {
+    Measurement m = summarise(instances[i].config->name, flyName, samples[i]);
+    m.minPsnr = 1e9;
+    for (const test::ImageError& e : errors[i]) {
+      m.psnr += e.psnr / double(errors[i].size());
+      m.meanAbs += e.meanAbs / double(errors[i].size());
+      m.maxAbs = std::max(m.maxAbs, e.maxAbs);
+      m.minPsnr = std::min(m.minPsnr, e.psnr);
+    }
+    results.measurements.push_back(m);
+  }
+  results.seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return results;
+}
+
+}  // namespace bench

@@ -1,0 +1,176 @@
+#include "bench_setup.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <map>
+
+namespace bench {
+
+std::vector<BenchView> canonicalViews() {
+  std::vector<BenchView> views;
+  const auto add = [&](const char* name, test::CloudView view, clouds::Settings look) {
+    views.push_back(BenchView{name, view, look});
+  };
+  test::CloudView ground;
+  ground.position = {0.0, 300.0, 0.0};
+  ground.pitchDegrees = 18.0;
+  ground.yawDegrees = 270.0;
+  ground.timeSeconds = 5.0;
+
+  clouds::Settings clear;
+  clear.coverage = 0.0f;
+  add("clear sky", ground, clear);
+
+  add("scattered cumulus", ground, clouds::Settings{});
+
+  clouds::Settings overcast;
+  overcast.coverage = 1.0f;
+  overcast.cloudType = 0.15f;  // a stratus deck
+  add("overcast", ground, overcast);
+
+  test::CloudView sunset = ground;
+  sunset.pitchDegrees = 8.0;
+  sunset.sunElevationDegrees = 3.0;
+  sunset.sunAzimuthDegrees = 300.0;  // low in front of the camera, a little to the side
+  sunset.sunIlluminance = {9.0f, 5.0f, 2.5f};
+  sunset.ambientTop = {0.25f, 0.3f, 0.5f};
+  sunset.ambientBottom = {0.3f, 0.2f, 0.15f};
+  clouds::Settings stratocumulus;
+  stratocumulus.coverage = 0.6f;
+  stratocumulus.cloudType = 0.5f;
+  add("sunset", sunset, stratocumulus);
+
+  test::CloudView inside = ground;
+  inside.position.y = 2300.0;
+  inside.pitchDegrees = 0.0;
+  clouds::Settings dense;
+  dense.coverage = 0.85f;
+  add("inside a cloud", inside, dense);
+
+  test::CloudView above = ground;
+  above.position.y = 6500.0;
+  above.pitchDegrees = -25.0;
+  add("above the layer", above, clouds::Settings{});
+  return views;
+}
+
+FlyThrough flyThrough(std::uint32_t frames) {
+  FlyThrough path;
+  path.look.coverage = 0.65f;
+  path.frames = frames;
+  return path;
+}
+
+test::CloudView FlyThrough::poseAt(std::uint32_t frame) const {
+  const double t = double(frame) / framesPerSecond;
+  test::CloudView view;
+  view.yawDegrees = 250.0 + 12.0 * t;  // a slow left turn
+  const double yaw = view.yawDegrees * 3.14159265358979 / 180.0;
+  // Forward along the yaw (yaw 0 looks along -Z), climbing: 1380 m, the base is at 1500 m.
+  view.position = {-std::sin(yaw) * 150.0 * t, 1380.0 + 100.0 * t, -std::cos(yaw) * 150.0 * t};
+  view.pitchDegrees = 10.0;
+  view.timeSeconds = 5.0 + t;
+  return view;
+}
+
+clouds::Settings BenchConfig::settingsFor(const clouds::Settings& look) const {
+  clouds::Settings s = clouds::settingsFor(quality, look);
+  if (adjust != nullptr) adjust(s, knob);
+  return s;
+}
+
+namespace {
+
+// High's value of each knob: where High sits in each sweep.
+const std::map<std::string, double>& highKnobs() {
+  static const std::map<std::string, double> knobs = {
+      {"view step", 1.0},   {"light steps", 6.0}, {"trace scale", 0.5},
+      {"update interval", 16.0}, {"temporal reuse", 1.0}, {"empty-space skipping", 1.0}};
+  return knobs;
+}
+
+std::string number(double value) {
+  char text[32];
+  std::snprintf(text, sizeof(text), "%g", value);
+  return text;
+}
+
+}  // namespace
+
+std::vector<BenchConfig> benchConfigs() {
+  std::vector<BenchConfig> configs;
+  for (clouds::Quality q : {clouds::Quality::Low, clouds::Quality::Medium, clouds::Quality::High,
+                            clouds::Quality::Ultra}) {
+    BenchConfig c;
+    c.name = clouds::qualityName(q);
+    c.preset = true;
+    c.quality = q;
+    configs.push_back(c);
+  }
+  const auto sweep = [&](const char* knob, std::vector<double> values, const char* unit,
+                         void (*adjust)(clouds::Settings&, double)) {
+    for (double v : values) {
+      BenchConfig c;
+      c.sweep = knob;
+      c.value = number(v) + unit;
+      c.name = std::string(knob) + " " + c.value;
+      c.adjust = adjust;
+      c.knob = v;
+      configs.push_back(c);
+    }
+  };
+  // View steps: the step length (and its growth with distance) scaled by the factor, the step
+  // budget by its inverse, so the same distance is covered with more or fewer samples.
+  sweep("view step", {4.0, 2.0, 0.5, 0.25}, "x", [](clouds::Settings& s, double f) {
+    s.viewStepMetres = float(s.viewStepMetres * f);
+    s.viewStepGrowth = float(s.viewStepGrowth * f);
+    s.maxViewSteps = std::uint32_t(std::lround(s.maxViewSteps / f));
+  });
+  sweep("light steps", {1.0, 2.0, 4.0, 10.0, 16.0}, "", [](clouds::Settings& s, double n) {
+    s.lightSteps = std::uint32_t(n);
+  });
+  sweep("trace scale", {0.25, 1.0}, "", [](clouds::Settings& s, double scale) {
+    s.traceScale = float(scale);
+  });
+  sweep("update interval", {4.0, 1.0}, "", [](clouds::Settings& s, double n) {
+    s.updateInterval = std::uint32_t(n);
+  });
+  // Off: every pixel marched every frame with no history (what reuse saves).
+  sweep("temporal reuse", {0.0}, "", [](clouds::Settings& s, double) {
+    s.temporalReuse = false;
+    s.updateInterval = 1;
+  });
+  sweep("empty-space skipping", {0.0}, "", [](clouds::Settings& s, double) {
+    s.emptySpaceSkipping = false;
+  });
+  for (BenchConfig& c : configs) {
+    if (c.sweep == "temporal reuse" || c.sweep == "empty-space skipping") {
+      c.value = "off";
+      c.name = c.sweep + " off";
+    }
+  }
+  return configs;
+}
+
+std::vector<Sweep> sweepsOf(const std::vector<BenchConfig>& configs) {
+  std::size_t high = 0;
+  for (std::size_t i = 0; i < configs.size(); ++i) {
+    if (configs[i].preset && configs[i].quality == clouds::Quality::High) high = i;
+  }
+  std::vector<Sweep> sweeps;
+  for (const auto& [name, highValue] : highKnobs()) {
+    std::vector<std::pair<double, std::size_t>> points = {{highValue, high}};
+    for (std::size_t i = 0; i < configs.size(); ++i) {
+      if (configs[i].sweep == name) points.emplace_back(configs[i].knob, i);
+    }
+    if (points.size() < 2) continue;
+    std::sort(points.begin(), points.end());
+    Sweep sweep{name, {}};
+    for (const auto& point : points) sweep.configs.push_back(point.second);
+    sweeps.push_back(sweep);
+  }
+  return sweeps;
+}
+
+}  // namespace bench

@@ -1,0 +1,78 @@
+// clouds_bench: what accuracy costs. Renders the canonical views and a fly-through at each
+// quality preset and along one-knob sweeps, times the module on the GPU (timestamps, median,
+// interleaved) and measures the error against the converged Reference mode, then writes
+// results.csv, results.md, plot_static.png and plot_fly_through.png into the output folder.
+// Usage: clouds_bench OUT_DIR [--width 640 --height 360] [--quick] [--validation]
+// A benchmark, not a test: it asserts nothing, and a full run takes about a quarter of an hour
+// on the 2-core lavapipe machine (--quick: 320x180 and fewer frames, a few minutes).
+#include <CLI/CLI.hpp>
+
+#include <cstdio>
+#include <filesystem>
+
+#include "bench_report.h"
+#include "bench_run.h"
+#include "engine/core/error.h"
+#include "engine/core/log.h"
+#include "engine/gfx/instance.h"
+
+int main(int argc, char** argv) {
+  // Line-buffered so progress shows up promptly when stdout is a file (long runs under nohup).
+  std::setvbuf(stdout, nullptr, _IOLBF, 0);
+  CLI::App cli{"clouds_bench: accuracy versus cost of the clouds module's presets and knobs"};
+  std::string outDir;
+  cli.add_option("out_dir", outDir, "Folder for results.csv, results.md and the plots")->required();
+  bench::RunOptions options;
+  cli.add_option("--width", options.extent.width, "Render width")->check(CLI::Range(16u, 4096u));
+  cli.add_option("--height", options.extent.height, "Render height")->check(CLI::Range(16u, 4096u));
+  cli.add_option("--converge-frames", options.convergeFrames, "Static views: frames before timing")
+      ->check(CLI::Range(0u, 1000u));
+  cli.add_option("--timed-frames", options.timedFrames, "Static views: timed frames")
+      ->check(CLI::Range(1u, 1000u));
+  cli.add_option("--reference-frames", options.referenceFrames, "Frames averaged per Reference")
+      ->check(CLI::Range(1u, 256u));
+  cli.add_option("--fly-frames", options.flyFrames, "Frames of the fly-through")
+      ->check(CLI::Range(2u, 10000u));
+  bool quick = false;
+  cli.add_flag("--quick", quick, "320x180, fewer frames: a few minutes instead of a quarter hour");
+  bool validation = false;
+  cli.add_flag("--validation", validation, "Vulkan validation layers (slower; for debugging)");
+  CLI11_PARSE(cli, argc, argv);
+  if (quick) {
+    options.extent = {320, 180};
+    options.convergeFrames = 20;
+    options.timedFrames = 5;
+    options.referenceFrames = 4;
+    options.flyFrames = 32;
+  }
+  options.flyWarmUpFrames = std::min(options.flyWarmUpFrames, options.flyFrames - 1);
+
+  try {
+    const std::filesystem::path out(outDir);
+    std::filesystem::create_directories(out);
+    engine::gfx::InstanceDesc instanceDesc;
+    instanceDesc.appName = "clouds_bench";
+    instanceDesc.validation = validation;
+    engine::gfx::Instance instance(instanceDesc);
+    engine::gfx::Device device(instance, engine::gfx::DeviceDesc{});
+    const bench::BenchResults results = bench::runBenchmark(
+        device, options, [](const std::string& line) { std::printf("%s\n", line.c_str()); });
+    bench::writeCsv(out / "results.csv", results);
+    bench::writeMarkdown(out / "results.md", results);
+    bench::writePlots(out, results);
+    std::printf("wrote %s/{results.csv, results.md, plot_static.png, plot_fly_through.png} in %.0f s\n",
+                std::filesystem::absolute(out).string().c_str(), results.seconds);
+    const std::vector<std::string> problems = bench::implausibleMeasurements(results);
+    for (const std::string& problem : problems) std::fprintf(stderr, "implausible: %s\n", problem.c_str());
+    if (!problems.empty()) return 2;
+    if (validation && instance.validationMessageCount() > 0) {
+      std::fprintf(stderr, "%u Vulkan validation message(s)\n",
+                   unsigned(instance.validationMessageCount()));
+      return 3;
+    }
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "clouds_bench: %s\n", e.what());
+    return 1;
+  }
+  return 0;
+}

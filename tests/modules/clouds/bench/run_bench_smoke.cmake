@@ -1,0 +1,23 @@
+# Smoke test of the accuracy-versus-cost benchmark: a tiny run with Vulkan validation must
+# finish cleanly (clouds_bench exits non-zero on a validation message or an implausible
+# measurement) and write every output, with a CSV row per configuration and view.
+# Inputs: BENCH (the executable), OUT_DIR.
+file(REMOVE_RECURSE "${OUT_DIR}")
+execute_process(
+  COMMAND "${BENCH}" "${OUT_DIR}" --validation --width 64 --height 36 --converge-frames 2
+          --timed-frames 1 --reference-frames 1 --fly-frames 12
+  RESULT_VARIABLE result)
+if(NOT result EQUAL 0)
+  message(FATAL_ERROR "clouds_bench exited with ${result}")
+endif()
+foreach(output results.csv results.md plot_static.png plot_fly_through.png)
+  if(NOT EXISTS "${OUT_DIR}/${output}")
+    message(FATAL_ERROR "clouds_bench wrote no ${OUT_DIR}/${output}")
+  endif()
+endforeach()
+# 19 configurations on 6 static views and the fly-through, plus the header.
+file(STRINGS "${OUT_DIR}/results.csv" rows)
+list(LENGTH rows row_count)
+if(row_count LESS 134)
+  message(FATAL_ERROR "results.csv has ${row_count} lines, expected at least 134")
+endif()
