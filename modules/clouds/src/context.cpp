@@ -59,8 +59,14 @@ VkSampler createSampler(const detail::DeviceContext& device, VkFilter filter,
 
 }  // namespace
 
+// Rows of the next period's weather map generated per frame: 1/16 of the map, ~3 ms on lavapipe,
+// so a period of 16 frames or more has its map ready when it starts.
+constexpr std::uint32_t kWeatherRowsAhead = static_cast<std::uint32_t>(shader::kWeatherMapSize) / 16;
+
 Context::Impl::Impl(const CreateInfo& info, const detail::VulkanFunctions& functions)
-    : info_(info), device_(info, functions) {
+    : info_(info),
+      device_(info, functions),
+      weatherSchedule_(static_cast<std::uint32_t>(shader::kWeatherMapSize), kWeatherRowsAhead) {
   using detail::OwnedImage;
   const VkImageUsageFlags storage = VK_IMAGE_USAGE_STORAGE_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT;
   const auto s = static_cast<std::uint32_t>(shader::kShapeNoiseSize);
@@ -70,7 +76,10 @@ Context::Impl::Impl(const CreateInfo& info, const detail::VulkanFunctions& funct
   shapeNoise_ = OwnedImage(device_, VK_IMAGE_TYPE_3D, kNoiseFormat, {s, s, s}, storage, "shape noise");
   detailNoise_ = OwnedImage(device_, VK_IMAGE_TYPE_3D, kNoiseFormat, {d, d, d}, storage, "detail noise");
   curlNoise_ = OwnedImage(device_, VK_IMAGE_TYPE_2D, kNoiseFormat, {c, c, 1}, storage, "curl noise");
-  weatherMap_ = OwnedImage(device_, VK_IMAGE_TYPE_2D, kNoiseFormat, {w, w, 1}, storage, "weather map");
+  for (std::uint32_t i = 0; i < 2; ++i) {
+    weatherMaps_[i] = OwnedImage(device_, VK_IMAGE_TYPE_2D, kNoiseFormat, {w, w, 1}, storage,
+                                 "weather map " + std::to_string(i));
+  }
   const auto fine = static_cast<std::uint32_t>(shader::kWeatherMaxFineSize);
   const auto coarse = static_cast<std::uint32_t>(shader::kWeatherMaxCoarseSize);
   weatherMaxFine_ = OwnedImage(device_, VK_IMAGE_TYPE_2D, kNoiseFormat, {fine, fine, 1}, storage,
@@ -150,17 +159,19 @@ Context::Impl::Impl(const CreateInfo& info, const detail::VulkanFunctions& funct
   shapeSet_ = allocateSet(shapeProgram_->setLayout());
   detailSet_ = allocateSet(detailProgram_->setLayout());
   curlSet_ = allocateSet(curlProgram_->setLayout());
-  weatherSet_ = allocateSet(weatherProgram_->setLayout());
   detail::SetWriter(device_, shapeSet_).storageImage(0, shapeNoise_.view()).commit();
   detail::SetWriter(device_, detailSet_).storageImage(0, detailNoise_.view()).commit();
   detail::SetWriter(device_, curlSet_).storageImage(0, curlNoise_.view()).commit();
-  detail::SetWriter(device_, weatherSet_).storageImage(0, weatherMap_.view()).commit();
-  weatherMaxFineSet_ = allocateSet(weatherMaxProgram_->setLayout());
+  for (std::uint32_t i = 0; i < 2; ++i) {
+    weatherSets_[i] = allocateSet(weatherProgram_->setLayout());
+    detail::SetWriter(device_, weatherSets_[i]).storageImage(0, weatherMaps_[i].view()).commit();
+    weatherMaxFineSets_[i] = allocateSet(weatherMaxProgram_->setLayout());
+    detail::SetWriter(device_, weatherMaxFineSets_[i])
+        .storageImage(0, weatherMaps_[i].view())
+        .storageImage(1, weatherMaxFine_.view())
+        .commit();
+  }
   weatherMaxCoarseSet_ = allocateSet(weatherMaxProgram_->setLayout());
-  detail::SetWriter(device_, weatherMaxFineSet_)
-      .storageImage(0, weatherMap_.view())
-      .storageImage(1, weatherMaxFine_.view())
-      .commit();
   detail::SetWriter(device_, weatherMaxCoarseSet_)
       .storageImage(0, weatherMaxFine_.view())
       .storageImage(1, weatherMaxCoarse_.view())
@@ -221,7 +232,7 @@ void Context::Impl::recordInitialisation(VkCommandBuffer cmd) {
   const auto& fn = device_.fn();
   beginPass(cmd, detail::Pass::Noise, "clouds: noise generation");
   for (const detail::OwnedImage* image :
-       {&shapeNoise_, &detailNoise_, &curlNoise_, &weatherMap_, &weatherMaxFine_,
+       {&shapeNoise_, &detailNoise_, &curlNoise_, &weatherMaps_[0], &weatherMaps_[1], &weatherMaxFine_,
         &weatherMaxCoarse_, &radiance_, &depth_, &sceneDistance_, &traceSamples_,
         &history_[0], &history_[1]}) {
     detail::barrier(device_, cmd, image->image(), VK_IMAGE_ASPECT_COLOR_BIT,
@@ -274,7 +285,7 @@ void Context::Impl::recordWeather(VkCommandBuffer cmd, const FrameInputs& inputs
     // A painted map: resampled every frame (the host may repaint it at any time).
     beginPass(cmd, detail::Pass::Weather, "clouds: weather resample");
     detail::SetWriter(device_, slot.weatherResample)
-        .storageImage(0, weatherMap_.view())
+        .storageImage(0, weatherMap().view())
         .sampledImage(1, inputs.weatherView, linearSampler_, inputs.weatherLayout)
         .commit();
     detail::memoryBarrier(device_, cmd, kCompute, kStorageRead, kCompute, kStorageWrite);
@@ -285,35 +296,50 @@ void Context::Impl::recordWeather(VkCommandBuffer cmd, const FrameInputs& inputs
     detail::memoryBarrier(device_, cmd, kCompute, kStorageWrite, kCompute, kStorageRead);
     recordWeatherMaxima(cmd);
     endPass(cmd, detail::Pass::Weather);
-    weatherKey_.reset();  // returning to the procedural map regenerates it
+    weatherSchedule_.forget();  // returning to the procedural map regenerates it
     ++weatherUpdates_;
     return;
   }
-  // The procedural map evolves slowly; it is regenerated once per update period, at the
-  // period's start time, so a frame's weather depends only on the time (deterministic).
+  // The procedural map evolves slowly: one map per update period, a pure function of the
+  // period (deterministic), prepared a few rows per frame ahead of its period.
   const double period = settings.weatherUpdateSeconds;
   const std::int64_t key =
       period > 0.0 ? static_cast<std::int64_t>(std::floor(inputs.timeSeconds / period))
                    : static_cast<std::int64_t>(inputs.frameIndex);
-  if (weatherKey_ && *weatherKey_ == key) return;
-  const double time = period > 0.0 ? static_cast<double>(key) * period : inputs.timeSeconds;
-  const double phase = time * settings.weatherEvolutionPerSecond;
+  const detail::WeatherWork work = weatherSchedule_.plan(key, period > 0.0);
+  if (!work.generates() && !work.swap) return;
+  beginPass(cmd, detail::Pass::Weather, work.swap ? "clouds: weather map" : "clouds: next weather map");
+  if (work.generates()) {
+    // A period's map is the weather at the period's start.
+    const double mapTime = period > 0.0 ? static_cast<double>(work.key) * period : inputs.timeSeconds;
+    recordWeatherRows(cmd, settings, work, mapTime);
+  }
+  if (work.swap) {
+    currentWeather_ ^= 1u;
+    recordWeatherMaxima(cmd);
+    ++weatherUpdates_;
+  }
+  endPass(cmd, detail::Pass::Weather);
+}
+
+void Context::Impl::recordWeatherRows(VkCommandBuffer cmd, const Settings& settings,
+                                      const detail::WeatherWork& work, double mapTimeSeconds) {
+  const auto& fn = device_.fn();
+  const double phase = mapTimeSeconds * settings.weatherEvolutionPerSecond;
   shader::WeatherConstants constants{};
   constants.params = glm::vec4(static_cast<float>(phase - std::floor(phase)), 0.0f, 0.0f, 0.0f);
-  constants.seed = glm::uvec4(info_.noiseSeed, 0u, 0u, 0u);
-  beginPass(cmd, detail::Pass::Weather, "clouds: weather map");
+  constants.seed = glm::uvec4(info_.noiseSeed, work.firstRow, 0u, 0u);
+  const std::uint32_t spare = currentWeather_ ^ 1u;
+  // The spare map may still be read by earlier frames' marches.
   detail::memoryBarrier(device_, cmd, kCompute, kStorageRead, kCompute, kStorageWrite);
   fn.vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, weatherProgram_->variant());
   fn.vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, weatherProgram_->layout(), 0, 1,
-                             &weatherSet_, 0, nullptr);
+                             &weatherSets_[spare], 0, nullptr);
   fn.vkCmdPushConstants(cmd, weatherProgram_->layout(), VK_SHADER_STAGE_COMPUTE_BIT, 0,
                         sizeof(constants), &constants);
-  fn.vkCmdDispatch(cmd, n, n, 1);
+  fn.vkCmdDispatch(cmd, groups(static_cast<std::uint32_t>(shader::kWeatherMapSize), shader::kWorkgroupSize2D),
+                   groups(work.endRow - work.firstRow, shader::kWorkgroupSize2D), 1);
   detail::memoryBarrier(device_, cmd, kCompute, kStorageWrite, kCompute, kStorageRead);
-  recordWeatherMaxima(cmd);
-  endPass(cmd, detail::Pass::Weather);
-  weatherKey_ = key;
-  ++weatherUpdates_;
 }
 
 void Context::Impl::recordWeatherMaxima(VkCommandBuffer cmd) {
@@ -325,7 +351,7 @@ void Context::Impl::recordWeatherMaxima(VkCommandBuffer cmd) {
   const struct {
     VkDescriptorSet set;
     glm::uvec4 params;  // source size, cell, target size
-  } levels[] = {{weatherMaxFineSet_, {weather, weather / fine, fine, 0u}},
+  } levels[] = {{weatherMaxFineSets_[currentWeather_], {weather, weather / fine, fine, 0u}},
                 {weatherMaxCoarseSet_, {fine, fine / coarse, coarse, 0u}}};
   for (const auto& level : levels) {
     fn.vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, weatherMaxProgram_->layout(), 0,
@@ -398,7 +424,7 @@ void Context::Impl::recordTrace(VkCommandBuffer cmd, const FrameInputs& inputs,
       .uniformBuffer(0, slot.uniforms.buffer(), uniformBytes)
       .storageImage(1, shapeNoise_.view())
       .storageImage(2, detailNoise_.view())
-      .storageImage(3, weatherMap_.view())
+      .storageImage(3, weatherMap().view())
       .storageImage(4, curlNoise_.view())
       .storageImage(5, sceneDistance_.view())
       .storageImage(6, traceSamples_.view())

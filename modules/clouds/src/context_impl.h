@@ -17,6 +17,7 @@
 #include "pass_timer.h"
 #include "temporal_state.h"
 #include "uniforms.h"
+#include "weather_schedule.h"
 
 namespace clouds {
 
@@ -37,7 +38,8 @@ class Context::Impl {
   const detail::OwnedImage& shapeNoise() const { return shapeNoise_; }
   const detail::OwnedImage& detailNoise() const { return detailNoise_; }
   const detail::OwnedImage& curlNoise() const { return curlNoise_; }
-  const detail::OwnedImage& weatherMap() const { return weatherMap_; }
+  // The weather map in use (the other one is being prepared for the next period).
+  const detail::OwnedImage& weatherMap() const { return weatherMaps_[currentWeather_]; }
   const detail::OwnedImage& weatherMaxFine() const { return weatherMaxFine_; }
   const detail::OwnedImage& history(std::uint32_t i) const { return history_[i]; }
   const shader::CloudUniforms& lastUniforms() const { return lastUniforms_; }
@@ -67,6 +69,8 @@ class Context::Impl {
   void recordInitialisation(VkCommandBuffer cmd);
   void recordWeather(VkCommandBuffer cmd, const FrameInputs& inputs, const Settings& settings,
                      Slot& slot);
+  void recordWeatherRows(VkCommandBuffer cmd, const Settings& settings,
+                         const detail::WeatherWork& work, double mapTimeSeconds);
   void recordWeatherMaxima(VkCommandBuffer cmd);
   void recordUniforms(VkCommandBuffer cmd, Slot& slot, const shader::CloudUniforms& uniforms);
   void recordSkyAmbient(VkCommandBuffer cmd, const FrameInputs& inputs, Slot& slot);
@@ -86,7 +90,7 @@ class Context::Impl {
   detail::OwnedImage shapeNoise_;
   detail::OwnedImage detailNoise_;
   detail::OwnedImage curlNoise_;
-  detail::OwnedImage weatherMap_;
+  std::array<detail::OwnedImage, 2> weatherMaps_;  // current and spare (weather_schedule.h)
   detail::OwnedImage weatherMaxFine_;
   detail::OwnedImage weatherMaxCoarse_;
   detail::OwnedImage sceneDistance_;  // trace resolution, R32F
@@ -112,14 +116,15 @@ class Context::Impl {
   VkDescriptorSet shapeSet_ = VK_NULL_HANDLE;
   VkDescriptorSet detailSet_ = VK_NULL_HANDLE;
   VkDescriptorSet curlSet_ = VK_NULL_HANDLE;
-  VkDescriptorSet weatherSet_ = VK_NULL_HANDLE;
-  VkDescriptorSet weatherMaxFineSet_ = VK_NULL_HANDLE;
+  std::array<VkDescriptorSet, 2> weatherSets_{};         // generator, per map
+  std::array<VkDescriptorSet, 2> weatherMaxFineSets_{};  // map -> fine maxima, per map
   VkDescriptorSet weatherMaxCoarseSet_ = VK_NULL_HANDLE;
   std::vector<Slot> slots_;
   std::unique_ptr<detail::PassTimer> timer_;  // CreateInfo::passTimings
 
   bool initialised_ = false;
-  std::optional<std::int64_t> weatherKey_;  // time bucket of the procedural map
+  detail::WeatherSchedule weatherSchedule_;
+  std::uint32_t currentWeather_ = 0;  // index into weatherMaps_
   std::uint64_t weatherUpdates_ = 0;
   std::uint32_t lastSlot_ = 0;
   VkExtent2D lastExtent_{0, 0};

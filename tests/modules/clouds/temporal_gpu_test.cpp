@@ -186,6 +186,35 @@ TEST_F(CloudTemporal, GpuWeatherMaximaMatchTheCpu) {
   EXPECT_GT(emptyCells, 0);
 }
 
+TEST_F(CloudTemporal, AWeatherMapPreparedOverFramesEqualsOneGeneratedAtOnce) {
+  // 30 frames per one-second weather period: the next period's map is generated a band of
+  // rows per frame; at t = 1 s it is swapped in. A fresh renderer generates it at once.
+  clouds::Settings settings;
+  settings.weatherUpdateSeconds = 1.0f;
+  settings.weatherEvolutionPerSecond = 0.01f;  // fast enough that periods differ visibly
+  CloudView view = cumulusView();
+  auto running = renderer();
+  const std::vector<std::uint8_t> first = [&] {
+    view.timeSeconds = 0.0;
+    running->render(view, settings, kExtent);
+    return running->readWeatherMap();
+  }();
+  for (int frame = 1; frame <= 31; ++frame) {
+    view.timeSeconds = frame / 30.0;
+    running->render(view, settings, kExtent);
+    if (frame < 30) {
+      // Still period 0 while period 1 is being prepared in the other map.
+      ASSERT_EQ(running->readWeatherMap(), first) << "frame " << frame;
+    }
+  }
+  auto fresh = renderer();
+  fresh->render(view, settings, kExtent);
+  const std::vector<std::uint8_t> prepared = running->readWeatherMap();
+  EXPECT_NE(prepared, first);
+  EXPECT_EQ(prepared, fresh->readWeatherMap());
+  EXPECT_EQ(running->readWeatherMaxFine(), fresh->readWeatherMaxFine());
+}
+
 TEST_F(CloudTemporal, EmptySpaceSkippingChangesTheCostNotThePicture) {
   // Coverage 0.4: broken cumulus; 0.3: a few clouds in a mostly clear sky.
   for (float coverage : {0.4f, 0.3f}) {
@@ -266,6 +295,11 @@ TEST_F(CloudTemporal, PassTimingsAccountForTheFrame) {
   for (const clouds::PassTiming& t : r->lastPassTimings()) first.emplace_back(t.name);
   EXPECT_EQ(first.front(), "noise") << "the first frame generates the noise";
   r->render(cumulusView(), high, kExtent, 1);
+  ASSERT_FALSE(r->lastPassTimings().empty());
+  EXPECT_EQ(std::string(r->lastPassTimings().front().name), "weather")
+      << "the next period's weather map is prepared a band per frame";
+  // 16 bands make the next map; after that a frame at the same time does no weather work.
+  r->render(cumulusView(), high, kExtent, 16);
   std::vector<std::string> names;
   double sum = 0.0;
   for (const clouds::PassTiming& t : r->lastPassTimings()) {
@@ -274,7 +308,7 @@ TEST_F(CloudTemporal, PassTimingsAccountForTheFrame) {
     sum += t.milliseconds;
   }
   const std::vector<std::string> expected = {"scene distance", "march", "reconstruct", "upsample"};
-  EXPECT_EQ(names, expected) << "same time of day: the weather map is not regenerated";
+  EXPECT_EQ(names, expected) << "same weather period, next map ready: no weather work";
   // The passes are the frame: together at most the whole dispatch, and most of it.
   EXPECT_LE(sum, r->lastGpuMilliseconds() * 1.02 + 0.05);
   EXPECT_GE(sum, r->lastGpuMilliseconds() * 0.5);
