@@ -61,7 +61,8 @@ VkSampler createSampler(const detail::DeviceContext& device, VkFilter filter,
 
 // Rows of the next period's weather map generated per frame: 1/16 of the map, ~3 ms on lavapipe,
 // so a period of 16 frames or more has its map ready when it starts.
-constexpr std::uint32_t kWeatherRowsAhead = static_cast<std::uint32_t>(shader::kWeatherMapSize) / 16;
+constexpr std::uint32_t kWeatherRowsAhead =
+    static_cast<std::uint32_t>(shader::kWeatherMapSize) / 16;
 
 Context::Impl::Impl(const CreateInfo& info, const detail::VulkanFunctions& functions)
     : info_(info),
@@ -232,9 +233,9 @@ void Context::Impl::recordInitialisation(VkCommandBuffer cmd) {
   const auto& fn = device_.fn();
   beginPass(cmd, detail::Pass::Noise, "clouds: noise generation");
   for (const detail::OwnedImage* image :
-       {&shapeNoise_, &detailNoise_, &curlNoise_, &weatherMaps_[0], &weatherMaps_[1], &weatherMaxFine_,
-        &weatherMaxCoarse_, &radiance_, &depth_, &sceneDistance_, &traceSamples_,
-        &history_[0], &history_[1]}) {
+       {&shapeNoise_, &detailNoise_, &curlNoise_, &weatherMaps_[0], &weatherMaps_[1],
+        &weatherMaxFine_, &weatherMaxCoarse_, &radiance_, &depth_, &sceneDistance_,
+        &traceSamples_, &history_[0], &history_[1]}) {
     detail::barrier(device_, cmd, image->image(), VK_IMAGE_ASPECT_COLOR_BIT,
                     VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_GENERAL,
                     VK_PIPELINE_STAGE_2_NONE, VK_ACCESS_2_NONE, kCompute,
@@ -308,10 +309,12 @@ void Context::Impl::recordWeather(VkCommandBuffer cmd, const FrameInputs& inputs
                    : static_cast<std::int64_t>(inputs.frameIndex);
   const detail::WeatherWork work = weatherSchedule_.plan(key, period > 0.0);
   if (!work.generates() && !work.swap) return;
-  beginPass(cmd, detail::Pass::Weather, work.swap ? "clouds: weather map" : "clouds: next weather map");
+  beginPass(cmd, detail::Pass::Weather,
+            work.swap ? "clouds: weather map" : "clouds: next weather map");
   if (work.generates()) {
     // A period's map is the weather at the period's start.
-    const double mapTime = period > 0.0 ? static_cast<double>(work.key) * period : inputs.timeSeconds;
+    const double mapTime =
+        period > 0.0 ? static_cast<double>(work.key) * period : inputs.timeSeconds;
     recordWeatherRows(cmd, settings, work, mapTime);
   }
   if (work.swap) {
@@ -337,7 +340,8 @@ void Context::Impl::recordWeatherRows(VkCommandBuffer cmd, const Settings& setti
                              &weatherSets_[spare], 0, nullptr);
   fn.vkCmdPushConstants(cmd, weatherProgram_->layout(), VK_SHADER_STAGE_COMPUTE_BIT, 0,
                         sizeof(constants), &constants);
-  fn.vkCmdDispatch(cmd, groups(static_cast<std::uint32_t>(shader::kWeatherMapSize), shader::kWorkgroupSize2D),
+  const auto width = static_cast<std::uint32_t>(shader::kWeatherMapSize);
+  fn.vkCmdDispatch(cmd, groups(width, shader::kWorkgroupSize2D),
                    groups(work.endRow - work.firstRow, shader::kWorkgroupSize2D), 1);
   detail::memoryBarrier(device_, cmd, kCompute, kStorageWrite, kCompute, kStorageRead);
 }

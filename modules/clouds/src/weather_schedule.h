@@ -14,10 +14,10 @@ namespace clouds::detail {
 
 // What one frame does to the weather maps, in this order.
 struct WeatherWork {
-  std::int64_t key = 0;          // the period whose map the rows belong to
-  std::uint32_t firstRow = 0;    // rows [firstRow, endRow) of the spare map are generated
-  std::uint32_t endRow = 0;      //   (none when equal)
-  bool swap = false;             // then the spare map becomes the current one
+  std::int64_t key = 0;        // the period whose map the rows belong to
+  std::uint32_t firstRow = 0;  // rows [firstRow, endRow) of the spare map are generated
+  std::uint32_t endRow = 0;    //   (none when equal)
+  bool swap = false;           // then the spare map becomes the current one
 
   bool generates() const { return endRow > firstRow; }
 };

@@ -65,7 +65,7 @@ TEST(WeatherSchedule, AShortPeriodFinishesTheMissingRowsWhenItStarts) {
 TEST(WeatherSchedule, AJumpInTimeDiscardsThePreparedRows) {
   WeatherSchedule schedule(kRows, kRowsPerFrame);
   schedule.plan(0, true);
-  schedule.plan(0, true);  // rows of period 1
+  schedule.plan(0, true);            // rows of period 1
   for (std::int64_t key : {5, 3}) {  // forwards past the prepared period, then backwards
     const WeatherWork w = schedule.plan(key, true);
     EXPECT_TRUE(w.swap);

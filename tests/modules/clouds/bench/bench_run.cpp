@@ -57,7 +57,8 @@ Measurement summarise(const std::string& config, const std::string& view, const 
   m.viewSamplesPerRay = double(s.work.viewSamples) / rays;
   m.lightSamplesPerRay = double(s.work.lightSamples) / rays;
   m.earlyExitFraction = double(s.work.earlyExits) / rays;
-  m.raysPerFrame = double(s.work.tracedPixels) / double(std::max<std::size_t>(s.milliseconds.size(), 1));
+  m.raysPerFrame =
+      double(s.work.tracedPixels) / double(std::max<std::size_t>(s.milliseconds.size(), 1));
   for (const auto& [name, values] : s.passMilliseconds) m.passMs[name] = median(values);
   return m;
 }
@@ -214,7 +215,8 @@ BenchResults runBenchmark(engine::gfx::Device& device, const RunOptions& options
     Reference reference;
     if (measured) {
       progress(flyName + ": frame " + std::to_string(frame) + ", Reference");
-      reference = renderReference(referenceHarness, pose, path.look, extent, options.referenceFrames);
+      reference =
+          renderReference(referenceHarness, pose, path.look, extent, options.referenceFrames);
       referenceMs.insert(referenceMs.end(), reference.milliseconds.begin(),
                          reference.milliseconds.end());
     }
@@ -241,8 +243,7 @@ BenchResults runBenchmark(engine::gfx::Device& device, const RunOptions& options
     }
     results.measurements.push_back(m);
   }
-  results.seconds =
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  results.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return results;
 }
 

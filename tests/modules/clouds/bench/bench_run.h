@@ -16,12 +16,12 @@ namespace bench {
 
 struct RunOptions {
   VkExtent2D extent{640, 360};
-  std::uint32_t convergeFrames = 32;   // static views: frames before timing (16 refresh all)
-  std::uint32_t timedFrames = 9;       // static views: timed frames per configuration
-  std::uint32_t referenceFrames = 8;   // frames averaged into each Reference image
-  std::uint32_t flyFrames = 48;        // frames of the fly-through
-  std::uint32_t flyReferenceEvery = 8; // reference (and error) every n-th fly-through frame
-  std::uint32_t flyWarmUpFrames = 16;  // no error measured before this frame of the path
+  std::uint32_t convergeFrames = 32;    // static views: frames before timing (16 refresh all)
+  std::uint32_t timedFrames = 9;        // static views: timed frames per configuration
+  std::uint32_t referenceFrames = 8;    // frames averaged into each Reference image
+  std::uint32_t flyFrames = 48;         // frames of the fly-through
+  std::uint32_t flyReferenceEvery = 8;  // reference (and error) every n-th fly-through frame
+  std::uint32_t flyWarmUpFrames = 16;   // no error measured before this frame of the path
 };
 
 // One configuration on one view (or on the fly-through, view "fly-through").
@@ -35,7 +35,7 @@ struct Measurement {
   double minPsnr = 0.0;  // lowest of the frames measured (equal to psnr for static views)
   double meanAbs = 0.0;  // mean absolute error per channel (tonemapped, [0, 1])
   double maxAbs = 0.0;   // largest absolute error of any channel
-  double viewSamplesPerRay = 0.0;   // work counters, per marched pixel
+  double viewSamplesPerRay = 0.0;  // work counters, per marched pixel
   double lightSamplesPerRay = 0.0;
   double earlyExitFraction = 0.0;
   double raysPerFrame = 0.0;
@@ -44,7 +44,7 @@ struct Measurement {
 
 struct ReferenceMeasurement {
   std::string view;
-  double medianMs = 0.0;     // one Reference frame
+  double medianMs = 0.0;         // one Reference frame
   double singleFramePsnr = 0.0;  // one Reference frame against the averaged Reference
 };
 

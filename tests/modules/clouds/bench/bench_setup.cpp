@@ -85,7 +85,7 @@ namespace {
 // High's value of each knob: where High sits in each sweep.
 const std::map<std::string, double>& highKnobs() {
   static const std::map<std::string, double> knobs = {
-      {"view step", 1.0},   {"light steps", 6.0}, {"trace scale", 0.5},
+      {"view step", 1.0},        {"light steps", 6.0},    {"trace scale", 0.5},
       {"update interval", 16.0}, {"temporal reuse", 1.0}, {"empty-space skipping", 1.0}};
   return knobs;
 }
@@ -127,23 +127,19 @@ std::vector<BenchConfig> benchConfigs() {
     s.viewStepGrowth = float(s.viewStepGrowth * f);
     s.maxViewSteps = std::uint32_t(std::lround(s.maxViewSteps / f));
   });
-  sweep("light steps", {1.0, 2.0, 4.0, 10.0, 16.0}, "", [](clouds::Settings& s, double n) {
-    s.lightSteps = std::uint32_t(n);
-  });
-  sweep("trace scale", {0.25, 1.0}, "", [](clouds::Settings& s, double scale) {
-    s.traceScale = float(scale);
-  });
-  sweep("update interval", {4.0, 1.0}, "", [](clouds::Settings& s, double n) {
-    s.updateInterval = std::uint32_t(n);
-  });
+  sweep("light steps", {1.0, 2.0, 4.0, 10.0, 16.0}, "",
+        [](clouds::Settings& s, double n) { s.lightSteps = std::uint32_t(n); });
+  sweep("trace scale", {0.25, 1.0}, "",
+        [](clouds::Settings& s, double scale) { s.traceScale = float(scale); });
+  sweep("update interval", {4.0, 1.0}, "",
+        [](clouds::Settings& s, double n) { s.updateInterval = std::uint32_t(n); });
   // Off: every pixel marched every frame with no history (what reuse saves).
   sweep("temporal reuse", {0.0}, "", [](clouds::Settings& s, double) {
     s.temporalReuse = false;
     s.updateInterval = 1;
   });
-  sweep("empty-space skipping", {0.0}, "", [](clouds::Settings& s, double) {
-    s.emptySpaceSkipping = false;
-  });
+  sweep("empty-space skipping", {0.0}, "",
+        [](clouds::Settings& s, double) { s.emptySpaceSkipping = false; });
   for (BenchConfig& c : configs) {
     if (c.sweep == "temporal reuse" || c.sweep == "empty-space skipping") {
       c.value = "off";

@@ -33,9 +33,9 @@ FlyThrough flyThrough(std::uint32_t frames);
 // A configuration: settings as a function of the view's look. A sweep groups the points of one
 // knob (in order, with High as one of them); presets have no sweep.
 struct BenchConfig {
-  std::string name;     // "High", "light steps 10", ...
-  std::string sweep;    // "" for presets, else the knob ("light steps", ...)
-  std::string value;    // the knob's value as shown on the plot ("10")
+  std::string name;   // "High", "light steps 10", ...
+  std::string sweep;  // "" for presets, else the knob ("light steps", ...)
+  std::string value;  // the knob's value as shown on the plot ("10")
   bool preset = false;
   clouds::Quality quality = clouds::Quality::High;  // the base of the configuration
   // Applied to settingsFor(quality, look).

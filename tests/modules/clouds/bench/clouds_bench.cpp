@@ -60,10 +60,12 @@ int main(int argc, char** argv) {
     bench::writeCsv(out / "results.csv", results);
     bench::writeMarkdown(out / "results.md", results);
     bench::writePlots(out, results);
-    std::printf("wrote %s/{results.csv, results.md, plot_static.png, plot_fly_through.png} in %.0f s\n",
-                std::filesystem::absolute(out).string().c_str(), results.seconds);
+    std::printf(
+        "wrote %s/{results.csv, results.md, plot_static.png, plot_fly_through.png} in %.0f s\n",
+        std::filesystem::absolute(out).string().c_str(), results.seconds);
     const std::vector<std::string> problems = bench::implausibleMeasurements(results);
-    for (const std::string& problem : problems) std::fprintf(stderr, "implausible: %s\n", problem.c_str());
+    for (const std::string& problem : problems)
+      std::fprintf(stderr, "implausible: %s\n", problem.c_str());
     if (!problems.empty()) return 2;
     if (validation && instance.validationMessageCount() > 0) {
       std::fprintf(stderr, "%u Vulkan validation message(s)\n",
