@@ -100,6 +100,12 @@ std::int64_t JsonReader::integer(const std::string& key, std::int64_t min,
                                  std::int64_t max) const {
   const nlohmann::json& value = child(key);
   if (!value.is_number_integer()) fail(key, "must be an integer, got " + describe(value));
+  // Unsigned values past INT64_MAX would wrap to negative numbers in get<int64_t>().
+  if (value.is_number_unsigned() &&
+      value.get<std::uint64_t>() > static_cast<std::uint64_t>(INT64_MAX)) {
+    fail(key, "must be in [" + std::to_string(min) + ", " + std::to_string(max) + "], got " +
+                  std::to_string(value.get<std::uint64_t>()));
+  }
   const std::int64_t v = value.get<std::int64_t>();
   if (v < min || v > max) {
     fail(key, "must be in [" + std::to_string(min) + ", " + std::to_string(max) + "], got " +

@@ -307,6 +307,7 @@ void Context::Impl::recordWeather(VkCommandBuffer cmd, const FrameInputs& inputs
   const std::int64_t key =
       period > 0.0 ? static_cast<std::int64_t>(std::floor(inputs.timeSeconds / period))
                    : static_cast<std::int64_t>(inputs.frameIndex);
+  weatherSchedule_.useRecipe(period, settings.weatherEvolutionPerSecond);
   const detail::WeatherWork work = weatherSchedule_.plan(key, period > 0.0);
   if (!work.generates() && !work.swap) return;
   beginPass(cmd, detail::Pass::Weather,

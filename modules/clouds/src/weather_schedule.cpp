@@ -40,4 +40,11 @@ void WeatherSchedule::forget() {
   spareRows_ = 0;
 }
 
+void WeatherSchedule::useRecipe(double periodSeconds, double evolutionPerSecond) {
+  if (periodSeconds == periodSeconds_ && evolutionPerSecond == evolutionPerSecond_) return;
+  periodSeconds_ = periodSeconds;
+  evolutionPerSecond_ = evolutionPerSecond;
+  forget();
+}
+
 }  // namespace clouds::detail

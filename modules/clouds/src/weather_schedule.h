@@ -35,12 +35,18 @@ class WeatherSchedule {
   // The maps were overwritten (a painted map): the next procedural frame starts afresh.
   void forget();
 
+  // What a map depends on besides its period: the period length and the evolution rate. A
+  // change forgets everything, so no map is ever made of rows from two recipes.
+  void useRecipe(double periodSeconds, double evolutionPerSecond);
+
  private:
   std::uint32_t rows_;
   std::uint32_t rowsPerFrame_;
   std::optional<std::int64_t> current_;  // period of the current map
   std::optional<std::int64_t> spare_;    // period the spare map is being generated for
   std::uint32_t spareRows_ = 0;          // rows of the spare map generated so far
+  double periodSeconds_ = -1.0;          // the recipe of both maps
+  double evolutionPerSecond_ = -1.0;
 };
 
 }  // namespace clouds::detail

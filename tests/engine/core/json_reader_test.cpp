@@ -52,6 +52,13 @@ TEST(JsonReader, ErrorsNameFilePathAndReason) {
   EXPECT_EQ(errorOf([&] { r.choice("missing", {"a"}, "a"); }), "");
 }
 
+TEST(JsonReader, HugeUnsignedIntegersAreOutOfRangeNotWrapped) {
+  const auto json = nlohmann::json::parse(R"({"seed": 18446744073709551615})");
+  const JsonReader r(json, "t.json");
+  EXPECT_EQ(errorOf([&] { r.integer("seed", 0, 4294967295); }),
+            "t.json: seed: must be in [0, 4294967295], got 18446744073709551615");
+}
+
 TEST(JsonReader, SyntaxErrorsNameTheFile) {
   const auto path = std::filesystem::temp_directory_path() / "cloudscape_json_reader_bad.json";
   { std::FILE* f = std::fopen(path.c_str(), "w"); std::fputs("{\"a\": 1,,}", f); std::fclose(f); }
