@@ -279,10 +279,10 @@ void Context::Impl::recordInitialisation(VkCommandBuffer cmd) {
 
 void Context::Impl::recordWeather(VkCommandBuffer cmd, const FrameInputs& inputs,
                                   const Settings& settings, Slot& slot) {
-  const auto& fn = device_.fn();
-  const std::uint32_t n = groups(static_cast<std::uint32_t>(shader::kWeatherMapSize),
-                                 shader::kWorkgroupSize2D);
   if (inputs.weatherView != VK_NULL_HANDLE) {
+    const auto& fn = device_.fn();
+    const std::uint32_t n = groups(static_cast<std::uint32_t>(shader::kWeatherMapSize),
+                                   shader::kWorkgroupSize2D);
     // A painted map: resampled every frame (the host may repaint it at any time).
     beginPass(cmd, detail::Pass::Weather, "clouds: weather resample");
     detail::SetWriter(device_, slot.weatherResample)

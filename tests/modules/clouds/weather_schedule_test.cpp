@@ -15,13 +15,17 @@ using clouds::detail::WeatherWork;
 constexpr std::uint32_t kRows = 512;
 constexpr std::uint32_t kRowsPerFrame = 32;
 
+// The frame's work makes the rest of `key`'s map, from `firstRow`, and swaps it in.
+void expectSwapIn(const WeatherWork& w, std::int64_t key, std::uint32_t firstRow) {
+  EXPECT_TRUE(w.swap);
+  EXPECT_EQ(w.key, key);
+  EXPECT_EQ(w.firstRow, firstRow);
+  EXPECT_EQ(w.endRow, kRows);
+}
+
 TEST(WeatherSchedule, TheFirstFrameGeneratesTheWholeMapAndSwapsItIn) {
   WeatherSchedule schedule(kRows, kRowsPerFrame);
-  const WeatherWork w = schedule.plan(7, true);
-  EXPECT_EQ(w.key, 7);
-  EXPECT_EQ(w.firstRow, 0u);
-  EXPECT_EQ(w.endRow, kRows);
-  EXPECT_TRUE(w.swap);
+  expectSwapIn(schedule.plan(7, true), 7, 0u);
 }
 
 TEST(WeatherSchedule, TheNextPeriodIsPreparedABandPerFrameThenSwappedInForFree) {
@@ -56,10 +60,7 @@ TEST(WeatherSchedule, AShortPeriodFinishesTheMissingRowsWhenItStarts) {
   schedule.plan(0, true);  // rows [0, 32) of period 1
   schedule.plan(0, true);  // rows [32, 64)
   const WeatherWork w = schedule.plan(1, true);
-  EXPECT_TRUE(w.swap);
-  EXPECT_EQ(w.key, 1);
-  EXPECT_EQ(w.firstRow, 64u);
-  EXPECT_EQ(w.endRow, kRows);
+  expectSwapIn(w, 1, 64u);
 }
 
 TEST(WeatherSchedule, AJumpInTimeDiscardsThePreparedRows) {
@@ -68,10 +69,7 @@ TEST(WeatherSchedule, AJumpInTimeDiscardsThePreparedRows) {
   schedule.plan(0, true);            // rows of period 1
   for (std::int64_t key : {5, 3}) {  // forwards past the prepared period, then backwards
     const WeatherWork w = schedule.plan(key, true);
-    EXPECT_TRUE(w.swap);
-    EXPECT_EQ(w.key, key);
-    EXPECT_EQ(w.firstRow, 0u);
-    EXPECT_EQ(w.endRow, kRows);
+    expectSwapIn(w, key, 0u);
   }
 }
 
@@ -79,9 +77,7 @@ TEST(WeatherSchedule, WithoutPrefetchEveryNewKeyIsGeneratedWholeAndNothingAhead)
   WeatherSchedule schedule(kRows, kRowsPerFrame);
   for (std::int64_t frame = 0; frame < 3; ++frame) {
     const WeatherWork w = schedule.plan(frame, false);
-    EXPECT_TRUE(w.swap);
-    EXPECT_EQ(w.firstRow, 0u);
-    EXPECT_EQ(w.endRow, kRows);
+    expectSwapIn(w, frame, 0u);
   }
   EXPECT_FALSE(schedule.plan(2, false).generates());  // same key again: nothing to do
 }
@@ -92,10 +88,7 @@ TEST(WeatherSchedule, ForgettingRegeneratesTheCurrentPeriod) {
   schedule.plan(4, true);
   schedule.forget();  // a painted map overwrote the current one
   const WeatherWork w = schedule.plan(4, true);
-  EXPECT_TRUE(w.swap);
-  EXPECT_EQ(w.key, 4);
-  EXPECT_EQ(w.firstRow, 0u);
-  EXPECT_EQ(w.endRow, kRows);
+  expectSwapIn(w, 4, 0u);
 }
 
 TEST(WeatherSchedule, ANewRecipeDiscardsThePreparedRows) {
@@ -107,9 +100,7 @@ TEST(WeatherSchedule, ANewRecipeDiscardsThePreparedRows) {
   EXPECT_FALSE(schedule.plan(5, true).swap);
   schedule.useRecipe(1.1, 0.0005);  // a new period length: period 5 means another time now
   const WeatherWork w = schedule.plan(5, true);
-  EXPECT_TRUE(w.swap);
-  EXPECT_EQ(w.firstRow, 0u);
-  EXPECT_EQ(w.endRow, kRows);
+  expectSwapIn(w, 5, 0u);
   schedule.useRecipe(1.1, 0.002);  // a new evolution rate
   EXPECT_TRUE(schedule.plan(5, true).swap);
 }
