@@ -25,7 +25,8 @@
 #include "cloud_sampling.h"
 
 // Runs the following statement or block only when `condition` holds, as a loop of 0 or 1 trips.
-#define CLOUDS_WHEN(condition) for (int whenOnce_ = 0; whenOnce_ < ((condition) ? 1 : 0); ++whenOnce_)
+#define CLOUDS_WHEN(condition) \
+  for (int whenOnce_ = 0; whenOnce_ < ((condition) ? 1 : 0); ++whenOnce_)
 
 CLOUDS_SHADER_BEGIN
 
@@ -41,14 +42,14 @@ struct MarchOptions {
 };
 
 struct MarchResult {
-  vec3 radiance;         // in-scattered radiance towards the camera (premultiplied)
-  float transmittance;   // of the whole ray through the layer
-  float frontDepth;      // distance (m) to the first cloudy sample; 0 when none
-  float weightedDepth;   // transmittance-weighted mean distance (m) of the cloud; 0 when none
-  float viewSamples;     // density samples taken along the view ray
-  float lightSamples;    // density samples taken towards the sun
-  float skippedCells;    // empty weather cells jumped over
-  uint earlyExit;        // 1 when the transmittance cutoff ended the ray
+  vec3 radiance;        // in-scattered radiance towards the camera (premultiplied)
+  float transmittance;  // of the whole ray through the layer
+  float frontDepth;     // distance (m) to the first cloudy sample; 0 when none
+  float weightedDepth;  // transmittance-weighted mean distance (m) of the cloud; 0 when none
+  float viewSamples;    // density samples taken along the view ray
+  float lightSamples;   // density samples taken towards the sun
+  float skippedCells;   // empty weather cells jumped over
+  uint earlyExit;       // 1 when the transmittance cutoff ended the ray
 };
 
 // Altitude after travelling `t` along a ray from `altitude` whose cosine with the local up is
@@ -128,8 +129,8 @@ CLOUDS_INLINE FieldSample sampleField(vec3 flatOffset, float altitude, float dis
     return s;
   }
   // Coverage is held still (the weather map is not scrolled); the noise moves with the wind.
-  const vec2 weatherUv = (vec2(u.weather.x, u.weather.y) + vec2(flatOffset.x, flatOffset.z)) /
-                         u.weather.z;
+  const vec2 weatherUv =
+      (vec2(u.weather.x, u.weather.y) + vec2(flatOffset.x, flatOffset.z)) / u.weather.z;
   const WeatherSample w = decodeWeather(sampleWeather(weatherUv), u);
   const vec3 p = noisePosition(flatOffset, altitude, s.heightFraction, u);
   const vec3 shapeUvw = (vec3(u.shapeNoise) + p) / u.shapeNoise.w;
@@ -139,8 +140,7 @@ CLOUDS_INLINE FieldSample sampleField(vec3 flatOffset, float altitude, float dis
   CLOUDS_WHEN(wantDetail != 0u && s.base > 0.0f && distance < u.shape.z) {
     const vec2 curlUv = (vec2(u.curl.x, u.curl.y) + vec2(p.x, p.z)) / u.curl.z;
     const vec2 curl = sampleCurl(curlUv) * (u.curl.w * (1.0f - s.heightFraction));
-    const vec3 detailUvw =
-        (vec3(u.detailNoise) + p + vec3(curl.x, 0.0f, curl.y)) / u.detailNoise.w;
+    const vec3 detailUvw = (vec3(u.detailNoise) + p + vec3(curl.x, 0.0f, curl.y)) / u.detailNoise.w;
     s.density = erodeDensity(s.base, sampleDetailNoise(detailUvw), s.heightFraction, u.shape.y);
   }
   s.sigmaT = s.density * w.density * u.density.x;
@@ -199,8 +199,8 @@ CLOUDS_INLINE vec3 coneKernel(uint index) {
 
 // Optical depth towards the sun from a cloudy sample; `steps` samples at distances growing
 // quadratically over the cone length, each spread sideways by the cone kernel.
-CLOUDS_INLINE float lightOpticalDepth(vec3 flatOffset, float altitude, float distance,
-                                      uint steps, IN(CloudUniforms) u, INOUT(float) samples) {
+CLOUDS_INLINE float lightOpticalDepth(vec3 flatOffset, float altitude, float distance, uint steps,
+                                      IN(CloudUniforms) u, INOUT(float) samples) {
   const vec3 sun = vec3(u.sunDirection);
   const float coneLength = u.light.x;
   const float spread = u.light.y;
@@ -213,9 +213,8 @@ CLOUDS_INLINE float lightOpticalDepth(vec3 flatOffset, float altitude, float dis
     const float d = 0.5f * (d0 + d1);
     const vec3 offset = sun * d + coneKernel(j) * (d * spread);
     // Over a few kilometres the curvature drop (d^2 / 2R, ~0.2 m) is negligible.
-    const FieldSample s =
-        sampleField(flatOffset + vec3(offset.x, 0.0f, offset.z), altitude + offset.y,
-                    distance + d, 0u, u);
+    const FieldSample s = sampleField(flatOffset + vec3(offset.x, 0.0f, offset.z),
+                                      altitude + offset.y, distance + d, 0u, u);
     tau += s.sigmaT * (d1 - d0);
     samples += 1.0f;
   }
@@ -288,8 +287,8 @@ CLOUDS_INLINE MarchResult marchClouds(vec3 rayDirection, float sceneDistance, fl
   for (int i = 0; i < maxSteps + kMaxSkips; ++i) {
     if (t >= end || r.transmittance < cutoff || samples >= maxSteps) break;
     if (o.emptySpace != 0u) {
-      const float skipTo = emptySpaceSkip(
-          t, rayDirection, altitudeAlongRay(t, cosZenith, altitude, u.planet.y), u);
+      const float skipTo =
+          emptySpaceSkip(t, rayDirection, altitudeAlongRay(t, cosZenith, altitude, u.planet.y), u);
       if (skipTo > t) {
         t = skipTo;
         r.skippedCells += 1.0f;
@@ -311,8 +310,8 @@ CLOUDS_INLINE MarchResult marchClouds(vec3 rayDirection, float sceneDistance, fl
       continue;
     }
     CLOUDS_WHEN(field.sigmaT > 0.0f) {
-      const float tau = lightOpticalDepth(flatOffset, sampleAltitude, sampleDistance,
-                                          o.lightSteps, u, r.lightSamples);
+      const float tau = lightOpticalDepth(flatOffset, sampleAltitude, sampleDistance, o.lightSteps,
+                                          u, r.lightSamples);
       const vec3 light = sampleRadiance(tau, cosTheta, field.base, field.baseSigmaT,
                                         field.heightFraction, u, o.multipleScattering);
       const float stepTransmittance = beerLambert(field.sigmaT * stepLength);

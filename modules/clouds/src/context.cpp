@@ -40,7 +40,9 @@ constexpr VkPipelineStageFlags2 kHostReadStages =
 constexpr VkAccessFlags2 kHostReadAccess =
     VK_ACCESS_2_SHADER_STORAGE_READ_BIT | VK_ACCESS_2_SHADER_SAMPLED_READ_BIT;
 
-std::uint32_t groups(std::uint32_t size, std::uint32_t group) { return (size + group - 1) / group; }
+std::uint32_t groups(std::uint32_t size, std::uint32_t group) {
+  return (size + group - 1) / group;
+}
 
 VkSampler createSampler(const detail::DeviceContext& device, VkFilter filter,
                         VkSamplerAddressMode address, const char* name) {
@@ -74,9 +76,12 @@ Context::Impl::Impl(const CreateInfo& info, const detail::VulkanFunctions& funct
   const auto d = static_cast<std::uint32_t>(shader::kDetailNoiseSize);
   const auto c = static_cast<std::uint32_t>(shader::kCurlNoiseSize);
   const auto w = static_cast<std::uint32_t>(shader::kWeatherMapSize);
-  shapeNoise_ = OwnedImage(device_, VK_IMAGE_TYPE_3D, kNoiseFormat, {s, s, s}, storage, "shape noise");
-  detailNoise_ = OwnedImage(device_, VK_IMAGE_TYPE_3D, kNoiseFormat, {d, d, d}, storage, "detail noise");
-  curlNoise_ = OwnedImage(device_, VK_IMAGE_TYPE_2D, kNoiseFormat, {c, c, 1}, storage, "curl noise");
+  shapeNoise_ =
+      OwnedImage(device_, VK_IMAGE_TYPE_3D, kNoiseFormat, {s, s, s}, storage, "shape noise");
+  detailNoise_ =
+      OwnedImage(device_, VK_IMAGE_TYPE_3D, kNoiseFormat, {d, d, d}, storage, "detail noise");
+  curlNoise_ =
+      OwnedImage(device_, VK_IMAGE_TYPE_2D, kNoiseFormat, {c, c, 1}, storage, "curl noise");
   for (std::uint32_t i = 0; i < 2; ++i) {
     weatherMaps_[i] = OwnedImage(device_, VK_IMAGE_TYPE_2D, kNoiseFormat, {w, w, 1}, storage,
                                  "weather map " + std::to_string(i));
@@ -92,7 +97,8 @@ Context::Impl::Impl(const CreateInfo& info, const detail::VulkanFunctions& funct
   const VkImageUsageFlags output =
       storage | VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT;
   radiance_ = OwnedImage(device_, VK_IMAGE_TYPE_2D, kRadianceFormat, maxExtent, output, "radiance");
-  depth_ = OwnedImage(device_, VK_IMAGE_TYPE_2D, kDepthOutputFormat, maxExtent, output, "cloud depth");
+  depth_ =
+      OwnedImage(device_, VK_IMAGE_TYPE_2D, kDepthOutputFormat, maxExtent, output, "cloud depth");
   // The trace resolution never exceeds the output's (traceScale <= 1).
   sceneDistance_ = OwnedImage(device_, VK_IMAGE_TYPE_2D, VK_FORMAT_R32_SFLOAT, maxExtent, storage,
                               "scene distance (trace)");
@@ -109,38 +115,45 @@ Context::Impl::Impl(const CreateInfo& info, const detail::VulkanFunctions& funct
 
   nearestSampler_ = createSampler(device_, VK_FILTER_NEAREST, VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE,
                                   "nearest sampler");
-  linearSampler_ = createSampler(device_, VK_FILTER_LINEAR, VK_SAMPLER_ADDRESS_MODE_REPEAT,
-                                 "linear sampler");
+  linearSampler_ =
+      createSampler(device_, VK_FILTER_LINEAR, VK_SAMPLER_ADDRESS_MODE_REPEAT, "linear sampler");
 
   using detail::ComputeProgram;
   const VkDescriptorType img = VK_DESCRIPTOR_TYPE_STORAGE_IMAGE;
   const VkDescriptorType tex = VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER;
-  shapeProgram_ = std::make_unique<ComputeProgram>(device_, noise_shape_comp_spv,
-      std::vector{img}, sizeof(shader::NoiseConstants), "shape noise generator");
-  detailProgram_ = std::make_unique<ComputeProgram>(device_, noise_detail_comp_spv,
-      std::vector{img}, sizeof(shader::NoiseConstants), "detail noise generator");
-  curlProgram_ = std::make_unique<ComputeProgram>(device_, noise_curl_comp_spv,
-      std::vector{img}, sizeof(shader::NoiseConstants), "curl noise generator");
-  weatherProgram_ = std::make_unique<ComputeProgram>(device_, weather_procedural_comp_spv,
-      std::vector{img}, sizeof(shader::WeatherConstants), "weather generator");
-  resampleProgram_ = std::make_unique<ComputeProgram>(device_, weather_resample_comp_spv,
-      std::vector{img, tex}, 0u, "weather resample");
-  skyAmbientProgram_ = std::make_unique<ComputeProgram>(device_, sky_ambient_comp_spv,
-      std::vector{VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, tex}, 0u, "sky ambient");
+  shapeProgram_ =
+      std::make_unique<ComputeProgram>(device_, noise_shape_comp_spv, std::vector{img},
+                                       sizeof(shader::NoiseConstants), "shape noise generator");
+  detailProgram_ =
+      std::make_unique<ComputeProgram>(device_, noise_detail_comp_spv, std::vector{img},
+                                       sizeof(shader::NoiseConstants), "detail noise generator");
+  curlProgram_ =
+      std::make_unique<ComputeProgram>(device_, noise_curl_comp_spv, std::vector{img},
+                                       sizeof(shader::NoiseConstants), "curl noise generator");
+  weatherProgram_ =
+      std::make_unique<ComputeProgram>(device_, weather_procedural_comp_spv, std::vector{img},
+                                       sizeof(shader::WeatherConstants), "weather generator");
+  resampleProgram_ = std::make_unique<ComputeProgram>(
+      device_, weather_resample_comp_spv, std::vector{img, tex}, 0u, "weather resample");
+  skyAmbientProgram_ = std::make_unique<ComputeProgram>(
+      device_, sky_ambient_comp_spv, std::vector{VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, tex}, 0u,
+      "sky ambient");
   const VkDescriptorType ubo = VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER;  // frame_uniforms.glsl
   const VkDescriptorType ssbo = VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
-  weatherMaxProgram_ = std::make_unique<ComputeProgram>(device_, weather_max_comp_spv,
-      std::vector{img, img}, 16u, "weather maxima");
-  downsample_ = std::make_unique<ComputeProgram>(device_, depth_downsample_comp_spv,
-      std::vector{ubo, tex, img}, 0u, "depth downsample");
-  march_ = std::make_unique<ComputeProgram>(device_, cloud_march_comp_spv,
-      std::vector{ubo, img, img, img, img, img, img, img, img, ssbo}, 0u, "march");
-  reconstruct_ = std::make_unique<ComputeProgram>(device_, reconstruct_comp_spv,
-      std::vector{ubo, img, img, img}, 0u, "reconstruct");
-  upsample_ = std::make_unique<ComputeProgram>(device_, upsample_comp_spv,
-      std::vector{ubo, img, tex, img, img}, 0u, "upsample");
-  compositeProgram_ = std::make_unique<ComputeProgram>(device_, composite_comp_spv,
-      std::vector{img, img}, sizeof(shader::CompositeConstants), "composite");
+  weatherMaxProgram_ = std::make_unique<ComputeProgram>(
+      device_, weather_max_comp_spv, std::vector{img, img}, 16u, "weather maxima");
+  downsample_ = std::make_unique<ComputeProgram>(
+      device_, depth_downsample_comp_spv, std::vector{ubo, tex, img}, 0u, "depth downsample");
+  march_ = std::make_unique<ComputeProgram>(
+      device_, cloud_march_comp_spv, std::vector{ubo, img, img, img, img, img, img, img, img, ssbo},
+      0u, "march");
+  reconstruct_ = std::make_unique<ComputeProgram>(
+      device_, reconstruct_comp_spv, std::vector{ubo, img, img, img}, 0u, "reconstruct");
+  upsample_ = std::make_unique<ComputeProgram>(
+      device_, upsample_comp_spv, std::vector{ubo, img, tex, img, img}, 0u, "upsample");
+  compositeProgram_ =
+      std::make_unique<ComputeProgram>(device_, composite_comp_spv, std::vector{img, img},
+                                       sizeof(shader::CompositeConstants), "composite");
 
   const std::uint32_t frames = info.maxFramesInFlight;
   const VkDescriptorPoolSize sizes[] = {
@@ -178,7 +191,8 @@ Context::Impl::Impl(const CreateInfo& info, const detail::VulkanFunctions& funct
       .storageImage(1, weatherMaxCoarse_.view())
       .commit();
 
-  if (info.passTimings) timer_ = std::make_unique<detail::PassTimer>(device_, info.physicalDevice, frames);
+  if (info.passTimings)
+    timer_ = std::make_unique<detail::PassTimer>(device_, info.physicalDevice, frames);
   slots_.resize(frames);
   for (std::uint32_t i = 0; i < frames; ++i) {
     Slot& slot = slots_[i];
@@ -187,10 +201,10 @@ Context::Impl::Impl(const CreateInfo& info, const detail::VulkanFunctions& funct
         VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT | VK_BUFFER_USAGE_STORAGE_BUFFER_BIT |
             VK_BUFFER_USAGE_TRANSFER_DST_BIT | VK_BUFFER_USAGE_TRANSFER_SRC_BIT,
         "uniforms " + std::to_string(i));
-    slot.counters = detail::OwnedBuffer(
-        device_, shader::kCounterCount * sizeof(std::uint32_t),
-        VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT,
-        "work counters " + std::to_string(i), /*hostVisible=*/true);
+    slot.counters =
+        detail::OwnedBuffer(device_, shader::kCounterCount * sizeof(std::uint32_t),
+                            VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT,
+                            "work counters " + std::to_string(i), /*hostVisible=*/true);
     slot.downsample = allocateSet(downsample_->setLayout());
     slot.march = allocateSet(march_->setLayout());
     slot.reconstruct = allocateSet(reconstruct_->setLayout());
@@ -234,12 +248,11 @@ void Context::Impl::recordInitialisation(VkCommandBuffer cmd) {
   beginPass(cmd, detail::Pass::Noise, "clouds: noise generation");
   for (const detail::OwnedImage* image :
        {&shapeNoise_, &detailNoise_, &curlNoise_, &weatherMaps_[0], &weatherMaps_[1],
-        &weatherMaxFine_, &weatherMaxCoarse_, &radiance_, &depth_, &sceneDistance_,
-        &traceSamples_, &history_[0], &history_[1]}) {
+        &weatherMaxFine_, &weatherMaxCoarse_, &radiance_, &depth_, &sceneDistance_, &traceSamples_,
+        &history_[0], &history_[1]}) {
     detail::barrier(device_, cmd, image->image(), VK_IMAGE_ASPECT_COLOR_BIT,
-                    VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_GENERAL,
-                    VK_PIPELINE_STAGE_2_NONE, VK_ACCESS_2_NONE, kCompute,
-                    kStorageRead | kStorageWrite);
+                    VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_GENERAL, VK_PIPELINE_STAGE_2_NONE,
+                    VK_ACCESS_2_NONE, kCompute, kStorageRead | kStorageWrite);
   }
   detail::barrier(device_, cmd, placeholder_.image(), VK_IMAGE_ASPECT_COLOR_BIT,
                   VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL,
@@ -254,7 +267,8 @@ void Context::Impl::recordInitialisation(VkCommandBuffer cmd) {
   };
   const Job jobs[] = {
       {shapeProgram_.get(), shapeSet_, static_cast<std::uint32_t>(shader::kShapeNoiseSize), true},
-      {detailProgram_.get(), detailSet_, static_cast<std::uint32_t>(shader::kDetailNoiseSize), true},
+      {detailProgram_.get(), detailSet_, static_cast<std::uint32_t>(shader::kDetailNoiseSize),
+       true},
       {curlProgram_.get(), curlSet_, static_cast<std::uint32_t>(shader::kCurlNoiseSize), false},
   };
   for (const Job& job : jobs) {
@@ -281,8 +295,8 @@ void Context::Impl::recordWeather(VkCommandBuffer cmd, const FrameInputs& inputs
                                   const Settings& settings, Slot& slot) {
   if (inputs.weatherView != VK_NULL_HANDLE) {
     const auto& fn = device_.fn();
-    const std::uint32_t n = groups(static_cast<std::uint32_t>(shader::kWeatherMapSize),
-                                   shader::kWorkgroupSize2D);
+    const std::uint32_t n =
+        groups(static_cast<std::uint32_t>(shader::kWeatherMapSize), shader::kWorkgroupSize2D);
     // A painted map: resampled every frame (the host may repaint it at any time).
     beginPass(cmd, detail::Pass::Weather, "clouds: weather resample");
     detail::SetWriter(device_, slot.weatherResample)
@@ -304,9 +318,9 @@ void Context::Impl::recordWeather(VkCommandBuffer cmd, const FrameInputs& inputs
   // The procedural map evolves slowly: one map per update period, a pure function of the
   // period (deterministic), prepared a few rows per frame ahead of its period.
   const double period = settings.weatherUpdateSeconds;
-  const std::int64_t key =
-      period > 0.0 ? static_cast<std::int64_t>(std::floor(inputs.timeSeconds / period))
-                   : static_cast<std::int64_t>(inputs.frameIndex);
+  const std::int64_t key = period > 0.0
+                               ? static_cast<std::int64_t>(std::floor(inputs.timeSeconds / period))
+                               : static_cast<std::int64_t>(inputs.frameIndex);
   weatherSchedule_.useRecipe(period, settings.weatherEvolutionPerSecond);
   const detail::WeatherWork work = weatherSchedule_.plan(key, period > 0.0);
   if (!work.generates() && !work.swap) return;
@@ -471,8 +485,10 @@ void Context::Impl::recordTrace(VkCommandBuffer cmd, const FrameInputs& inputs,
 
   const detail::MarchVariant v = detail::marchVariant(settings);
   detail::SpecializationKey key;
-  key.values = {v.jitter, v.detail, v.cheapSampling, v.multipleScattering, v.lightSteps,
-                info_.workCounters ? 1u : 0u, v.emptySpace};
+  key.values = {v.jitter,        v.detail,
+                v.cheapSampling, v.multipleScattering,
+                v.lightSteps,    info_.workCounters ? 1u : 0u,
+                v.emptySpace};
   key.count = 7;
   const std::uint32_t k = temporal.tileSize;
   beginPass(cmd, detail::Pass::March, "clouds: march");
@@ -571,8 +587,8 @@ void Context::Impl::dispatch(const FrameInputs& inputs, const Settings& settings
     recordTrace(cmd, inputs, settings, temporal, traceExtent, slot);
     device_.endLabel(cmd);
     temporal_.commit(temporal, inputs, settings, traceExtent);
-    report_ = FrameReport{traceExtent, temporal.tileSize, temporal.useHistory,
-                          temporal.insideLayer, temporal.resetReason};
+    report_ = FrameReport{traceExtent, temporal.tileSize, temporal.useHistory, temporal.insideLayer,
+                          temporal.resetReason};
   }
   lastSlot_ = slotIndex;
   lastExtent_ = inputs.renderExtent;
@@ -605,8 +621,8 @@ void Context::Impl::composite(VkCommandBuffer cmd, VkImageView color, VkExtent2D
       .commit();
   device_.beginLabel(cmd, "clouds: composite");
   fn.vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, compositeProgram_->variant());
-  fn.vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, compositeProgram_->layout(), 0,
-                             1, &slot.composite, 0, nullptr);
+  fn.vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, compositeProgram_->layout(), 0, 1,
+                             &slot.composite, 0, nullptr);
   const shader::CompositeConstants constants{glm::uvec4(extent.width, extent.height, 0u, 0u)};
   fn.vkCmdPushConstants(cmd, compositeProgram_->layout(), VK_SHADER_STAGE_COMPUTE_BIT, 0,
                         sizeof(constants), &constants);
@@ -666,8 +682,8 @@ std::string checkInputs(const FrameInputs& in, const CreateInfo& info) {
     }
   }
   if (in.sunIlluminance.x < 0 || in.sunIlluminance.y < 0 || in.sunIlluminance.z < 0 ||
-      in.ambientTop.x < 0 || in.ambientTop.y < 0 || in.ambientTop.z < 0 ||
-      in.ambientBottom.x < 0 || in.ambientBottom.y < 0 || in.ambientBottom.z < 0) {
+      in.ambientTop.x < 0 || in.ambientTop.y < 0 || in.ambientTop.z < 0 || in.ambientBottom.x < 0 ||
+      in.ambientBottom.y < 0 || in.ambientBottom.z < 0) {
     return "FrameInputs: sun illuminance and ambient radiance must not be negative";
   }
   if (!std::isfinite(in.timeSeconds) || in.timeSeconds < 0.0) {
@@ -682,7 +698,8 @@ std::unique_ptr<Context> Context::create(const CreateInfo& info, std::string* er
   if (info.device == VK_NULL_HANDLE || info.physicalDevice == VK_NULL_HANDLE ||
       info.instance == VK_NULL_HANDLE || info.getDeviceProcAddr == nullptr ||
       info.getInstanceProcAddr == nullptr) {
-    fail(error, "CreateInfo: instance, physicalDevice, device and both proc-addr functions are required");
+    fail(error,
+         "CreateInfo: instance, physicalDevice, device and both proc-addr functions are required");
     return nullptr;
   }
   if (info.maxFramesInFlight < 1 || info.maxFramesInFlight > 8) {
@@ -697,7 +714,8 @@ std::unique_ptr<Context> Context::create(const CreateInfo& info, std::string* er
   }
   if (info.compositeColorFormat != VK_FORMAT_UNDEFINED &&
       info.compositeColorFormat != VK_FORMAT_R16G16B16A16_SFLOAT) {
-    fail(error, "CreateInfo.compositeColorFormat: only R16G16B16A16_SFLOAT (or UNDEFINED) is supported");
+    fail(error,
+         "CreateInfo.compositeColorFormat: only R16G16B16A16_SFLOAT (or UNDEFINED) is supported");
     return nullptr;
   }
   detail::VulkanFunctions functions;
@@ -745,11 +763,15 @@ bool Context::composite(VkCommandBuffer commandBuffer, VkImageView color, VkExte
   return true;
 }
 
-Outputs Context::outputs() const { return impl_->outputs(); }
+Outputs Context::outputs() const {
+  return impl_->outputs();
+}
 std::vector<PassTiming> Context::passTimings(std::uint64_t frameIndex) const {
   return impl_->passTimings(frameIndex);
 }
-FrameReport Context::lastFrameReport() const { return impl_->lastFrameReport(); }
+FrameReport Context::lastFrameReport() const {
+  return impl_->lastFrameReport();
+}
 WorkCounters Context::workCounters(std::uint64_t frameIndex) const {
   return impl_->workCounters(frameIndex);
 }

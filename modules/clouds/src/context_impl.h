@@ -10,8 +10,8 @@
 #include <optional>
 #include <vector>
 
-#include "clouds/clouds.h"
 #include "cloud_types.h"
+#include "clouds/clouds.h"
 #include "compute_program.h"
 #include "device_context.h"
 #include "pass_timer.h"
@@ -93,12 +93,12 @@ class Context::Impl {
   std::array<detail::OwnedImage, 2> weatherMaps_;  // current and spare (weather_schedule.h)
   detail::OwnedImage weatherMaxFine_;
   detail::OwnedImage weatherMaxCoarse_;
-  detail::OwnedImage sceneDistance_;  // trace resolution, R32F
-  detail::OwnedImage traceSamples_;  // this frame's marched pixels (packed samples)
+  detail::OwnedImage sceneDistance_;           // trace resolution, R32F
+  detail::OwnedImage traceSamples_;            // this frame's marched pixels (packed samples)
   std::array<detail::OwnedImage, 2> history_;  // reconstructed frames, ping-pong
-  detail::OwnedImage radiance_;       // outputs, output resolution
+  detail::OwnedImage radiance_;                // outputs, output resolution
   detail::OwnedImage depth_;
-  detail::OwnedImage placeholder_;    // 1x1 sampled stand-in for absent optional inputs
+  detail::OwnedImage placeholder_;  // 1x1 sampled stand-in for absent optional inputs
 
   std::unique_ptr<detail::ComputeProgram> shapeProgram_;
   std::unique_ptr<detail::ComputeProgram> detailProgram_;

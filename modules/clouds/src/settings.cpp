@@ -85,8 +85,9 @@ std::string validateSettings(const Settings& s) {
   c.range("emptySamplesToCoarse", s.emptySamplesToCoarse, 1u, 1000u);
   c.require(s.traceScale == 1.0f || s.traceScale == 0.5f || s.traceScale == 0.25f,
             "Settings.traceScale = " + std::to_string(s.traceScale) + ": must be 1, 0.5 or 0.25");
-  c.require(s.updateInterval == 1 || s.updateInterval == 4 || s.updateInterval == 16,
-            "Settings.updateInterval = " + std::to_string(s.updateInterval) + ": must be 1, 4 or 16");
+  c.require(
+      s.updateInterval == 1 || s.updateInterval == 4 || s.updateInterval == 16,
+      "Settings.updateInterval = " + std::to_string(s.updateInterval) + ": must be 1, 4 or 16");
   c.range("temporalFreshWeight", s.temporalFreshWeight, 0.05f, 1.0f);
   c.range("historyClampMargin", s.historyClampMargin, 0.0f, 1.0f);
   c.range("historyClampSpreadPixels", s.historyClampSpreadPixels, 0.01f, 100.0f);
@@ -120,18 +121,23 @@ Settings referenceSettings(const Settings& base) {
 
 const char* qualityName(Quality quality) {
   switch (quality) {
-    case Quality::Low: return "Low";
-    case Quality::Medium: return "Medium";
-    case Quality::High: return "High";
-    case Quality::Ultra: return "Ultra";
-    case Quality::Reference: return "Reference";
+    case Quality::Low:
+      return "Low";
+    case Quality::Medium:
+      return "Medium";
+    case Quality::High:
+      return "High";
+    case Quality::Ultra:
+      return "Ultra";
+    case Quality::Reference:
+      return "Reference";
   }
   return "?";
 }
 
 bool parseQuality(std::string_view name, Quality* quality) {
-  for (Quality q : {Quality::Low, Quality::Medium, Quality::High, Quality::Ultra,
-                    Quality::Reference}) {
+  for (Quality q :
+       {Quality::Low, Quality::Medium, Quality::High, Quality::Ultra, Quality::Reference}) {
     const std::string_view candidate = qualityName(q);
     const bool same = std::equal(name.begin(), name.end(), candidate.begin(), candidate.end(),
                                  [](char a, char b) {
@@ -188,7 +194,7 @@ Settings settingsFor(Quality quality, const Settings& base) {
       s.lightSteps = 6;
       s.multipleScatteringOctaves = 4;
       s.detailDistanceMetres = 60000.0f;  // to the max distance: far clouds seen from above
-                                         // are visibly fatter without their erosion
+                                          // are visibly fatter without their erosion
       s.transmittanceCutoff = 0.005f;
       break;
     case Quality::Ultra:
@@ -202,7 +208,8 @@ Settings settingsFor(Quality quality, const Settings& base) {
       s.detailDistanceMetres = 60000.0f;
       s.transmittanceCutoff = 0.002f;
       break;
-    case Quality::Reference: break;
+    case Quality::Reference:
+      break;
   }
   return s;
 }

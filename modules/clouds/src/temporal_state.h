@@ -16,12 +16,12 @@ struct TemporalFrame {
   bool useHistory = false;
   const char* resetReason = "first frame";
   bool insideLayer = false;
-  std::uint32_t tileSize = 1;        // k: one pixel per k x k tile is marched
-  glm::uvec2 phase{0, 0};            // that pixel's offset in its tile
-  std::uint32_t temporalIndex = 0;   // frames since the history was last reset
-  std::uint32_t readHistory = 0;     // history image holding last frame's result
-  std::uint32_t writeHistory = 1;    // history image this frame writes
-  glm::dvec3 cameraDelta{0.0};       // camera position now minus last frame's (m)
+  std::uint32_t tileSize = 1;       // k: one pixel per k x k tile is marched
+  glm::uvec2 phase{0, 0};           // that pixel's offset in its tile
+  std::uint32_t temporalIndex = 0;  // frames since the history was last reset
+  std::uint32_t readHistory = 0;    // history image holding last frame's result
+  std::uint32_t writeHistory = 1;   // history image this frame writes
+  glm::dvec3 cameraDelta{0.0};      // camera position now minus last frame's (m)
   double deltaSeconds = 0.0;
 };
 

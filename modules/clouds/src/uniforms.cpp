@@ -33,8 +33,8 @@ shader::CloudUniforms buildUniforms(const FrameInputs& in, const Settings& s,
   const glm::dvec2 wind = glm::normalize(glm::dvec2(s.windDirection));
   const glm::dvec2 camera(in.cameraPosition.x, in.cameraPosition.z);
   // The noise moves with the wind; the weather map (coverage) stays where it is.
-  const glm::dvec2 scrolled = camera + wind * (static_cast<double>(s.windSpeedMetresPerSecond) *
-                                               in.timeSeconds);
+  const glm::dvec2 scrolled =
+      camera + wind * (static_cast<double>(s.windSpeedMetresPerSecond) * in.timeSeconds);
   auto offset = [&](const glm::dvec2& p, double tile) {
     return glm::vec2(static_cast<float>(wrapToTile(p.x, tile)),
                      static_cast<float>(wrapToTile(p.y, tile)));
@@ -55,11 +55,11 @@ shader::CloudUniforms buildUniforms(const FrameInputs& in, const Settings& s,
   u.phase = glm::vec4(s.phaseForwardG, s.phaseBackwardG, s.phaseBackwardWeight, s.albedo);
   u.multipleScattering = glm::vec4(static_cast<float>(s.multipleScatteringOctaves),
                                    s.msExtinctionScale, s.msContribution, s.msEccentricityScale);
-  u.artistic = glm::vec4(s.inScatterStrength, s.ambientOcclusionStrength, s.ambientStrength,
-                         s.sunStrength);
+  u.artistic =
+      glm::vec4(s.inScatterStrength, s.ambientOcclusionStrength, s.ambientStrength, s.sunStrength);
   u.inScatter = glm::vec4(s.inScatterDepthMetres, 0.0f, 0.0f, 0.0f);
-  u.march = glm::vec4(s.viewStepMetres, s.viewStepGrowth, s.maxDistanceMetres,
-                      s.transmittanceCutoff);
+  u.march =
+      glm::vec4(s.viewStepMetres, s.viewStepGrowth, s.maxDistanceMetres, s.transmittanceCutoff);
   u.light = glm::vec4(s.lightConeMetres, s.lightConeSpread, s.coarseStepFactor,
                       static_cast<float>(s.emptySamplesToCoarse));
   std::uint32_t flags = 0;
@@ -71,9 +71,9 @@ shader::CloudUniforms buildUniforms(const FrameInputs& in, const Settings& s,
 
   // Reprojection: a point at `rel` from the camera now was at rel + (camera move) - (wind drift
   // of the clouds) from last frame's camera, seen through last frame's rotation and projection.
-  u.previousViewProjection =
-      in.previousProjection * glm::mat4(glm::mat3(in.previousView));
-  const glm::dvec2 drift = wind * (static_cast<double>(s.windSpeedMetresPerSecond) * context.deltaSeconds);
+  u.previousViewProjection = in.previousProjection * glm::mat4(glm::mat3(in.previousView));
+  const glm::dvec2 drift =
+      wind * (static_cast<double>(s.windSpeedMetresPerSecond) * context.deltaSeconds);
   const glm::dvec3 moved = context.cameraDelta - glm::dvec3(drift.x, 0.0, drift.y);
   u.reprojection = glm::vec4(glm::vec3(moved), context.useHistory ? 1.0f : 0.0f);
   u.temporal = glm::vec4(s.temporalFreshWeight, s.historyClampMargin, s.traceScale,
@@ -90,16 +90,16 @@ shader::CloudUniforms buildUniforms(const FrameInputs& in, const Settings& s,
     u.subpixel = glm::vec4(shader::halton(n, 2u) - 0.5f, shader::halton(n, 3u) - 0.5f, 0.0f, 0.0f);
   }
   const float weatherTexel = s.weatherTileMetres / float(shader::kWeatherMapSize);
-  u.emptySpace = glm::vec4(weatherTexel * float(shader::kWeatherMapSize / shader::kWeatherMaxFineSize),
-                           weatherTexel * float(shader::kWeatherMapSize / shader::kWeatherMaxCoarseSize),
-                           0.0f, 0.0f);
+  u.emptySpace = glm::vec4(
+      weatherTexel * float(shader::kWeatherMapSize / shader::kWeatherMaxFineSize),
+      weatherTexel * float(shader::kWeatherMapSize / shader::kWeatherMaxCoarseSize), 0.0f, 0.0f);
   return u;
 }
 
 MarchVariant marchVariant(const Settings& s) {
-  return MarchVariant{static_cast<std::uint32_t>(s.jitter), s.detail ? 1u : 0u,
-                      s.cheapSampling ? 1u : 0u, s.multipleScattering ? 1u : 0u, s.lightSteps,
-                      s.emptySpaceSkipping ? 1u : 0u};
+  return MarchVariant{
+      static_cast<std::uint32_t>(s.jitter), s.detail ? 1u : 0u, s.cheapSampling ? 1u : 0u,
+      s.multipleScattering ? 1u : 0u,       s.lightSteps,       s.emptySpaceSkipping ? 1u : 0u};
 }
 
 VkExtent2D traceExtentFor(VkExtent2D full, float traceScale) {

@@ -2,8 +2,8 @@
 // Building the march's uniforms from the host's inputs and the settings. Offsets into the
 // tiling textures are computed here in double precision (camera position modulo each tile),
 // so the GPU only ever sees small camera-relative numbers.
-#include "clouds/clouds.h"
 #include "cloud_types.h"
+#include "clouds/clouds.h"
 
 namespace clouds::detail {
 

@@ -38,7 +38,10 @@ TEST(CloudSettings, OutOfRangeValuesNameTheField) {
       {"maxViewSteps", [](clouds::Settings& s) { s.maxViewSteps = 0; }},
       {"lightSteps", [](clouds::Settings& s) { s.lightSteps = 65; }},
       {"viewStepMetres", [](clouds::Settings& s) { s.viewStepMetres = std::nanf(""); }},
-      {"windDirection", [](clouds::Settings& s) { s.windDirection = {0.0f, 0.0f}; }},
+      {"windDirection",
+       [](clouds::Settings& s) {
+         s.windDirection = {0.0f, 0.0f};
+       }},
       {"phaseForwardG", [](clouds::Settings& s) { s.phaseForwardG = 3.0f; }},
       {"jitter", [](clouds::Settings& s) { s.jitter = static_cast<clouds::Jitter>(7); }},
   };

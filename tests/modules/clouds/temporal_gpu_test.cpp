@@ -66,7 +66,9 @@ float maxAbsDifference(const test::CloudFrame& a, const test::CloudFrame& b) {
   return worst;
 }
 
-std::uint64_t samples(const clouds::WorkCounters& c) { return c.viewSamples + c.lightSamples; }
+std::uint64_t samples(const clouds::WorkCounters& c) {
+  return c.viewSamples + c.lightSamples;
+}
 
 TEST_F(CloudTemporal, AStaticCameraConvergesToTheReference) {
   const CloudView view = cumulusView();
@@ -75,7 +77,8 @@ TEST_F(CloudTemporal, AStaticCameraConvergesToTheReference) {
   std::vector<glm::vec3> previous;
   double lateChange = 0.0;  // largest frame-to-frame mean change over the last 16 frames
   for (int frame = 0; frame < 48; ++frame) {
-    const std::vector<glm::vec3> image = test::tonemappedPixels(r->render(view, high, kExtent), view);
+    const std::vector<glm::vec3> image =
+        test::tonemappedPixels(r->render(view, high, kExtent), view);
     if (!previous.empty() && frame >= 32) {
       lateChange = std::max(lateChange, test::imageError(image, previous).meanAbs);
     }

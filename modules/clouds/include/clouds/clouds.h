@@ -79,10 +79,10 @@ struct WorkCounters {
 // How the last dispatch reconstructed the frame.
 struct FrameReport {
   VkExtent2D traceExtent{0, 0};
-  std::uint32_t tileSize = 1;       // one pixel per tileSize x tileSize tile was marched
-  bool historyUsed = false;         // last frame's result was reprojected
-  bool insideLayer = false;         // the camera was in or near the cloud layer
-  const char* resetReason = "";     // why the history was not used ("" when it was)
+  std::uint32_t tileSize = 1;    // one pixel per tileSize x tileSize tile was marched
+  bool historyUsed = false;      // last frame's result was reprojected
+  bool insideLayer = false;      // the camera was in or near the cloud layer
+  const char* resetReason = "";  // why the history was not used ("" when it was)
 };
 
 enum class Jitter : std::uint32_t {
@@ -96,67 +96,67 @@ enum class Jitter : std::uint32_t {
 // Plain settings with defaults; ranges are checked by validateSettings() and dispatch().
 struct Settings {
   // --- Cloud layer -----------------------------------------------------------------------
-  float layerBottomMetres = 1500.0f;        // [0, 20000] altitude of the cloud base
-  float layerTopMetres = 4000.0f;           // (layerBottom, 30000] altitude of the tops
-  float planetRadiusMetres = 6360000.0f;    // [1e5, 1e8]
+  float layerBottomMetres = 1500.0f;      // [0, 20000] altitude of the cloud base
+  float layerTopMetres = 4000.0f;         // (layerBottom, 30000] altitude of the tops
+  float planetRadiusMetres = 6360000.0f;  // [1e5, 1e8]
 
   // --- Weather -----------------------------------------------------------------------------
-  float coverage = 0.5f;             // [0, 1] 0 clear sky, 0.5 the weather map as is, 1 overcast
-  float cloudType = 0.75f;           // [0, 1] 0 stratus, 0.5 stratocumulus, 1 cumulus
-  float typeVariation = 0.5f;        // [0, 2] how far the weather map moves the type
-  float densityVariation = 0.3f;     // [0, 1] how far the weather map scales the density
+  float coverage = 0.5f;               // [0, 1] 0 clear sky, 0.5 the weather map as is, 1 overcast
+  float cloudType = 0.75f;             // [0, 1] 0 stratus, 0.5 stratocumulus, 1 cumulus
+  float typeVariation = 0.5f;          // [0, 2] how far the weather map moves the type
+  float densityVariation = 0.3f;       // [0, 1] how far the weather map scales the density
   float weatherTileMetres = 50000.0f;  // [1000, 1e7] one weather-map tile covers this square
   float weatherEvolutionPerSecond = 0.0005f;  // [0, 1] rate the procedural weather evolves
-  float weatherUpdateSeconds = 1.0f;  // [0, 3600] regenerate the procedural map this often
+  float weatherUpdateSeconds = 1.0f;          // [0, 3600] regenerate the procedural map this often
 
   // --- Shape ---------------------------------------------------------------------------
-  float densityMultiplier = 1.0f;     // [0, 1e6] scales the extinction of all clouds
-  float extinctionPerMetre = 0.12f;   // [0, 100] extinction (1/m) at density 1
-  float anvilBias = 0.0f;             // [0, 1] inflates cumulus tops into anvils
-  float shapeTileMetres = 6250.0f;    // [100, 1e7] the low-frequency noise repeats this often
-  float detailTileMetres = 1250.0f;   // [10, 1e6] the high-frequency noise repeats this often
-  float detailErosion = 0.45f;        // [0, 1] how deeply detail noise carves edges
+  float densityMultiplier = 1.0f;         // [0, 1e6] scales the extinction of all clouds
+  float extinctionPerMetre = 0.12f;       // [0, 100] extinction (1/m) at density 1
+  float anvilBias = 0.0f;                 // [0, 1] inflates cumulus tops into anvils
+  float shapeTileMetres = 6250.0f;        // [100, 1e7] the low-frequency noise repeats this often
+  float detailTileMetres = 1250.0f;       // [10, 1e6] the high-frequency noise repeats this often
+  float detailErosion = 0.45f;            // [0, 1] how deeply detail noise carves edges
   float detailDistanceMetres = 30000.0f;  // [0, 1e7] no detail erosion beyond this distance
-  float curlTileMetres = 12500.0f;    // [100, 1e7] the curl noise repeats this often
-  float curlStrengthMetres = 120.0f;  // [0, 10000] swirl of the detail noise at the cloud base
+  float curlTileMetres = 12500.0f;        // [100, 1e7] the curl noise repeats this often
+  float curlStrengthMetres = 120.0f;      // [0, 10000] swirl of the detail noise at the cloud base
 
   // --- Wind --------------------------------------------------------------------------------
-  glm::vec2 windDirection{1.0f, 0.0f};    // world (x, z), any non-zero length
+  glm::vec2 windDirection{1.0f, 0.0f};     // world (x, z), any non-zero length
   float windSpeedMetresPerSecond = 10.0f;  // [0, 500] noise scroll; coverage stays put
   float skewMetres = 500.0f;               // [0, 20000] downwind lean across the layer
 
   // --- Lighting ----------------------------------------------------------------------------
-  float albedo = 0.99f;                 // [0, 1] single-scattering albedo
-  float phaseForwardG = 0.8f;           // [-1, 1] forward HG lobe (silver lining); clamped 0.99
-  float phaseBackwardG = -0.3f;         // [-1, 1] backward HG lobe
-  float phaseBackwardWeight = 0.3f;     // [0, 1] blend towards the backward lobe
-  bool multipleScattering = true;       // octave approximation of multiple scattering
+  float albedo = 0.99f;              // [0, 1] single-scattering albedo
+  float phaseForwardG = 0.8f;        // [-1, 1] forward HG lobe (silver lining); clamped 0.99
+  float phaseBackwardG = -0.3f;      // [-1, 1] backward HG lobe
+  float phaseBackwardWeight = 0.3f;  // [0, 1] blend towards the backward lobe
+  bool multipleScattering = true;    // octave approximation of multiple scattering
   std::uint32_t multipleScatteringOctaves = 4;  // [1, 8]
-  float msExtinctionScale = 0.3f;       // [0, 1] a: extinction factor per octave
-  float msContribution = 0.7f;          // [0, 1] b: energy factor per octave
-  float msEccentricityScale = 0.5f;     // [0, 1] c: phase g factor per octave
-  float inScatterStrength = 1.0f;       // [0, 1] Nubis dark edges and bases (0: off)
-  float inScatterDepthMetres = 60.0f;   // [0, 10000] the coarse cloud over this distance
-                                        //   counts as "dense" for the dark-edge term
-  float ambientOcclusionStrength = 1.0f;  // [0, 1] darkening of ambient inside dense cloud
-  float ambientStrength = 1.0f;         // [0, 100] scales the ambient sky term
-  float sunStrength = 1.0f;             // [0, 100] scales the direct sun term
+  float msExtinctionScale = 0.3f;               // [0, 1] a: extinction factor per octave
+  float msContribution = 0.7f;                  // [0, 1] b: energy factor per octave
+  float msEccentricityScale = 0.5f;             // [0, 1] c: phase g factor per octave
+  float inScatterStrength = 1.0f;               // [0, 1] Nubis dark edges and bases (0: off)
+  float inScatterDepthMetres = 60.0f;           // [0, 10000] the coarse cloud over this distance
+                                                //   counts as "dense" for the dark-edge term
+  float ambientOcclusionStrength = 1.0f;        // [0, 1] darkening of ambient inside dense cloud
+  float ambientStrength = 1.0f;                 // [0, 100] scales the ambient sky term
+  float sunStrength = 1.0f;                     // [0, 100] scales the direct sun term
 
   // --- Ray-march ---------------------------------------------------------------------------
-  std::uint32_t maxViewSteps = 128;     // [1, 16384] samples along a view ray at most
-  float viewStepMetres = 60.0f;         // [0.5, 10000] step length at the camera
-  float viewStepGrowth = 0.004f;        // [0, 1] extra step length per metre of distance
-  std::uint32_t lightSteps = 6;         // [0, 64] samples towards the sun per cloudy sample
-  float lightConeMetres = 1800.0f;      // [1, 100000] reach of the light samples
-  float lightConeSpread = 0.25f;        // [0, 2] sideways spread of the cone
-  float maxDistanceMetres = 60000.0f;   // [100, 1e7] nothing is marched beyond this
-  float transmittanceCutoff = 0.005f;   // [0, 0.5] early exit below this transmittance
-  bool cheapSampling = true;            // coarse cheap steps in empty space (Nubis switch)
-  float coarseStepFactor = 2.5f;        // [1, 16] coarse step = factor x fine step
+  std::uint32_t maxViewSteps = 128;        // [1, 16384] samples along a view ray at most
+  float viewStepMetres = 60.0f;            // [0.5, 10000] step length at the camera
+  float viewStepGrowth = 0.004f;           // [0, 1] extra step length per metre of distance
+  std::uint32_t lightSteps = 6;            // [0, 64] samples towards the sun per cloudy sample
+  float lightConeMetres = 1800.0f;         // [1, 100000] reach of the light samples
+  float lightConeSpread = 0.25f;           // [0, 2] sideways spread of the cone
+  float maxDistanceMetres = 60000.0f;      // [100, 1e7] nothing is marched beyond this
+  float transmittanceCutoff = 0.005f;      // [0, 0.5] early exit below this transmittance
+  bool cheapSampling = true;               // coarse cheap steps in empty space (Nubis switch)
+  float coarseStepFactor = 2.5f;           // [1, 16] coarse step = factor x fine step
   std::uint32_t emptySamplesToCoarse = 6;  // [1, 1000] empty fine samples before going coarse
-  bool detail = true;                   // high-frequency erosion
+  bool detail = true;                      // high-frequency erosion
   Jitter jitter = Jitter::BayerHalton;
-  bool emptySpaceSkipping = true;       // jump over weather cells without cloud (exact)
+  bool emptySpaceSkipping = true;  // jump over weather cells without cloud (exact)
 
   // --- Resolution and temporal reconstruction ----------------------------------------------
   // The march runs at traceScale x the output resolution (per axis); each frame it refreshes
@@ -164,11 +164,11 @@ struct Settings {
   // for the rest; a depth-aware upsample produces the output. Where reprojection cannot work
   // (camera cut, resize, big jumps or relighting, the camera in or near the layer) the frame
   // falls back to a denser tile of at most 2 x 2, rebuilt from this frame's samples alone.
-  float traceScale = 0.5f;              // {1, 0.5, 0.25} trace resolution / output resolution
-  std::uint32_t updateInterval = 16;    // {1, 4, 16} frames between refreshes of a pixel
-  bool temporalReuse = true;            // reproject history (off: every frame stands alone)
-  float temporalFreshWeight = 0.6f;     // [0.05, 1] weight of a fresh sample over its history
-  float historyClampMargin = 0.1f;      // [0, 1] slack of the history clamp (x neighbourhood range)
+  float traceScale = 0.5f;            // {1, 0.5, 0.25} trace resolution / output resolution
+  std::uint32_t updateInterval = 16;  // {1, 4, 16} frames between refreshes of a pixel
+  bool temporalReuse = true;          // reproject history (off: every frame stands alone)
+  float temporalFreshWeight = 0.6f;   // [0.05, 1] weight of a fresh sample over its history
+  float historyClampMargin = 0.1f;    // [0, 1] slack of the history clamp (x neighbourhood range)
   // The history is clamped to this frame's fresh neighbourhood only as far as its reprojection
   // is uncertain: fully where the nearest cloud and the far distance reproject this many trace
   // pixels apart (a moving camera near cloud), not at all for a static or turning camera.
@@ -176,7 +176,7 @@ struct Settings {
   // No reprojection inside the layer or this close to it: one depth per pixel cannot describe
   // cloud all around the camera. Below or above it, near cloud is handled by the parallax
   // clamp (historyClampSpreadPixels) instead.
-  float insideLayerMarginMetres = 50.0f;    // [0, 5000]
+  float insideLayerMarginMetres = 50.0f;       // [0, 5000]
   float historyResetDistanceMetres = 2000.0f;  // [1, 1e6] camera move in one frame that resets
   float historyResetAngleDegrees = 30.0f;      // [0.1, 180] camera turn in one frame that resets
   float relightResetDegrees = 2.0f;            // [0.01, 180] sun turn in one frame that resets

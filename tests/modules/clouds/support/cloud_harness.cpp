@@ -65,15 +65,20 @@ CloudHarness::CloudHarness(gfx::Device& device, VkExtent2D maxExtent, HarnessOpt
   if (!context_) throw Error("clouds::Context::create: " + error);
 }
 
-CloudHarness::~CloudHarness() { device_.waitIdle(); }
+CloudHarness::~CloudHarness() {
+  device_.waitIdle();
+}
 
 void CloudHarness::prepareDepth(const CloudView& view, VkExtent2D extent) {
   if (!depth_ || depth_.extent().width != extent.width || depth_.extent().height != extent.height) {
-    depth_ = gfx::Image(device_, gfx::ImageDesc{VK_IMAGE_TYPE_2D, VK_FORMAT_D32_SFLOAT,
-                                                 {extent.width, extent.height, 1}, 1, 1,
-                                                 VK_IMAGE_USAGE_SAMPLED_BIT |
-                                                     VK_IMAGE_USAGE_TRANSFER_DST_BIT,
-                                                 "harness depth"});
+    depth_ = gfx::Image(device_,
+                        gfx::ImageDesc{VK_IMAGE_TYPE_2D,
+                                       VK_FORMAT_D32_SFLOAT,
+                                       {extent.width, extent.height, 1},
+                                       1,
+                                       1,
+                                       VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT,
+                                       "harness depth"});
   }
   // A flat ground at y = 0, ray-cast on the CPU: reversed-Z depth = near / view z.
   const glm::mat4 inverseProjection = glm::inverse(projectionMatrix(view, extent));
@@ -95,11 +100,11 @@ void CloudHarness::prepareDepth(const CloudView& view, VkExtent2D extent) {
     }
   }
   depthValues_ = depth;
-  gfx::uploadToImage(device_, depth_,
-                     std::span(reinterpret_cast<const std::byte*>(depth.data()), depth.size() * 4),
-                     gfx::ImageState{VK_IMAGE_LAYOUT_DEPTH_READ_ONLY_OPTIMAL,
-                                     VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
-                                     VK_ACCESS_2_SHADER_SAMPLED_READ_BIT});
+  gfx::uploadToImage(
+      device_, depth_,
+      std::span(reinterpret_cast<const std::byte*>(depth.data()), depth.size() * 4),
+      gfx::ImageState{VK_IMAGE_LAYOUT_DEPTH_READ_ONLY_OPTIMAL,
+                      VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_SHADER_SAMPLED_READ_BIT});
 }
 
 clouds::FrameInputs CloudHarness::makeInputs(const CloudView& view, VkExtent2D extent,
@@ -113,8 +118,7 @@ clouds::FrameInputs CloudHarness::makeInputs(const CloudView& view, VkExtent2D e
   in.cameraPosition = view.position;
   in.previousView = previousInputs_ ? previousInputs_->view : in.view;
   in.previousProjection = previousInputs_ ? previousInputs_->projection : in.projection;
-  in.previousCameraPosition =
-      previousInputs_ ? previousInputs_->cameraPosition : in.cameraPosition;
+  in.previousCameraPosition = previousInputs_ ? previousInputs_->cameraPosition : in.cameraPosition;
   in.sunDirection = sunDirection(view);
   in.sunIlluminance = view.sunIlluminance;
   in.ambientTop = view.ambientTop;
@@ -221,10 +225,9 @@ CloudFrame CloudHarness::render(const CloudView& view, const clouds::Settings& s
   frame.depth.resize(pixels);
   const auto* halves = reinterpret_cast<const std::uint16_t*>(radiance.mapped());
   for (std::size_t i = 0; i < pixels; ++i) {
-    frame.radiance[i] = glm::vec4(glm::unpackHalf1x16(halves[4 * i + 0]),
-                                  glm::unpackHalf1x16(halves[4 * i + 1]),
-                                  glm::unpackHalf1x16(halves[4 * i + 2]),
-                                  glm::unpackHalf1x16(halves[4 * i + 3]));
+    frame.radiance[i] =
+        glm::vec4(glm::unpackHalf1x16(halves[4 * i + 0]), glm::unpackHalf1x16(halves[4 * i + 1]),
+                  glm::unpackHalf1x16(halves[4 * i + 2]), glm::unpackHalf1x16(halves[4 * i + 3]));
   }
   std::memcpy(frame.depth.data(), depth.mapped(), pixels * 8);
   return frame;
@@ -322,14 +325,15 @@ std::vector<glm::vec3> tonemappedPixels(const CloudFrame& frame, const CloudView
   for (std::uint32_t y = 0; y < frame.extent.height; ++y) {
     for (std::uint32_t x = 0; x < frame.extent.width; ++x) {
       const std::size_t i = std::size_t{y} * frame.extent.width + x;
-      const glm::vec2 ndc = (glm::vec2(x, y) + 0.5f) /
-                                glm::vec2(frame.extent.width, frame.extent.height) * 2.0f - 1.0f;
+      const glm::vec2 ndc =
+          (glm::vec2(x, y) + 0.5f) / glm::vec2(frame.extent.width, frame.extent.height) * 2.0f -
+          1.0f;
       const glm::vec4 p = inverseProjection * glm::vec4(ndc, 1.0f, 1.0f);
       const glm::vec3 dir = glm::normalize(viewToWorld * (glm::vec3(p) / p.w));
-      const glm::vec3 background =
-          dir.y > 0.0f ? glm::mix(glm::vec3(0.55f, 0.62f, 0.75f), glm::vec3(0.15f, 0.28f, 0.65f),
-                                  std::sqrt(dir.y))
-                       : glm::vec3(0.08f, 0.09f, 0.07f);
+      const glm::vec3 background = dir.y > 0.0f
+                                       ? glm::mix(glm::vec3(0.55f, 0.62f, 0.75f),
+                                                  glm::vec3(0.15f, 0.28f, 0.65f), std::sqrt(dir.y))
+                                       : glm::vec3(0.08f, 0.09f, 0.07f);
       const glm::vec4 c = frame.radiance[i];
       const glm::vec3 hdr = background * c.a + glm::vec3(c);
       const glm::vec3 mapped = engine::shaders::tonemap(hdr, exposure);
@@ -355,7 +359,8 @@ assets::ImageRgba8 previewImage(const CloudFrame& frame, const CloudView& view, 
   return image;
 }
 
-ImageError imageError(const std::vector<glm::vec3>& image, const std::vector<glm::vec3>& reference) {
+ImageError imageError(const std::vector<glm::vec3>& image,
+                      const std::vector<glm::vec3>& reference) {
   ImageError error;
   if (image.size() != reference.size() || image.empty()) return error;
   double squares = 0.0;
