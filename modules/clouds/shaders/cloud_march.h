@@ -221,14 +221,19 @@ CLOUDS_INLINE float lightOpticalDepth(vec3 flatOffset, float altitude, float dis
   return tau;
 }
 
-// World-space unit direction of the view ray through a pixel centre (pixel units, y down).
-CLOUDS_INLINE vec3 pixelRayDirection(vec2 pixelCentre, vec2 extent, IN(CloudUniforms) u) {
+// View-space unit direction of the ray through a pixel centre (pixel units, y down).
+CLOUDS_INLINE vec3 viewRayDirection(vec2 pixelCentre, vec2 extent, IN(CloudUniforms) u) {
   const vec2 ndc = pixelCentre / extent * 2.0f - 1.0f;
   // A point on the near plane: depth 1 with reversed-Z, 0 otherwise; finite either way.
   const float nearDepth = (u.frame.z & kFlagReversedZ) != 0u ? 1.0f : 0.0f;
   const vec4 view = u.inverseProjection * vec4(ndc.x, ndc.y, nearDepth, 1.0f);
-  const vec3 direction = vec3(u.viewToWorld * vec4(vec3(view) / view.w, 0.0f));
+  const vec3 direction = vec3(view) / view.w;
   return direction / max(length(direction), 1e-20f);
+}
+
+// World-space unit direction of the view ray through a pixel centre (pixel units, y down).
+CLOUDS_INLINE vec3 pixelRayDirection(vec2 pixelCentre, vec2 extent, IN(CloudUniforms) u) {
+  return vec3(u.viewToWorld * vec4(viewRayDirection(pixelCentre, extent, u), 0.0f));
 }
 
 // Distance along the pixel's ray to the host geometry for a depth-buffer value; the sky

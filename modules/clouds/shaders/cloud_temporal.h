@@ -75,6 +75,48 @@ CLOUDS_INLINE vec2 unpackCloudDepth(uvec4 texel) {
   return vec2(uintBitsToFloat(texel.z), uintBitsToFloat(texel.w));
 }
 
+// The output-resolution history of temporal upsampling is packed the same way, except that
+// the four low mantissa bits of the weighted depth carry how many of the pixel's own samples
+// it holds (0 to 15; a relative change of the depth under 2^-19, 2 cm at 10 km).
+CLOUDS_INLINE uvec4 packOutputHistory(vec4 radiance, vec2 depth, uint ownSamples) {
+  uvec4 texel = packCloudSample(radiance, depth);
+  texel.w = (texel.w & ~15u) | min(ownSamples, 15u);
+  return texel;
+}
+
+CLOUDS_INLINE uint ownSampleCount(uvec4 texel) {
+  return texel.w & 15u;
+}
+
+CLOUDS_INLINE vec2 unpackOutputHistoryDepth(uvec4 texel) {
+  return vec2(uintBitsToFloat(texel.z), uintBitsToFloat(texel.w & ~15u));
+}
+
+// Reprojection: where points along this frame's view ray were on last frame's image. A point
+// at distance d along the ray was at direction * d + reprojection.xyz from last frame's
+// camera, so its clip position is d * along + origin: one matrix product per pixel
+// (CloudUniforms.previousClipFromView), then a few operations per distance.
+struct PreviousRay {
+  vec4 along;   // last frame's clip-space image of the unit view direction (w = 0)
+  vec4 origin;  // and of the camera offset (w = 1)
+};
+
+// `viewDirection`: the pixel's unit ray direction in this frame's view space.
+CLOUDS_INLINE PreviousRay previousRay(vec3 viewDirection, IN(CloudUniforms) u) {
+  PreviousRay r;
+  r.along = u.previousClipFromView * vec4(viewDirection, 0.0f);
+  r.origin = u.previousClipOrigin;
+  return r;
+}
+
+// Image position (pixels of an image of `extent`) of the point `distance` metres along the
+// ray last frame; far off-screen when it was behind last frame's camera.
+CLOUDS_INLINE vec2 previousPosition(PreviousRay ray, float distance, vec2 extent) {
+  const vec4 clip = ray.along * distance + ray.origin;
+  if (clip.w <= 0.0f) return vec2(-1e6f);
+  return (vec2(clip) / clip.w * 0.5f + 0.5f) * extent;
+}
+
 CLOUDS_INLINE bool finiteVec4(vec4 v) {
   return !(any(isnan(v)) || any(isinf(v)));
 }

@@ -36,6 +36,13 @@ const uint kSpecLightSteps = 4u;          // light samples per view sample (>= 0
 const uint kSpecCounters = 5u;            // 0/1: accumulate work counters (benchmarks, tests)
 const uint kSpecEmptySpace = 6u;          // 0/1: skip empty weather cells
 
+// Specialization constant id of the reconstruction shader.
+const uint kSpecHistory = 0u;  // 0 none, 1 read in place (nothing moved), 2 reprojected
+
+// Specialization constant ids of the upsample shader.
+const uint kSpecTemporalUpsampling = 0u;  // 0/1: accumulate the output-resolution history
+const uint kSpecOutputHistory = 1u;       // 0 none, 1 read in place (nothing moved), 2 reprojected
+
 // Work counters (a storage buffer of uints), reset every frame.
 const uint kCounterViewSamples = 0u;   // density samples along view rays
 const uint kCounterLightSamples = 1u;  // density samples towards the sun
@@ -71,21 +78,26 @@ struct CloudUniforms {
                             //   update order), y max view steps, z flags, w unused
   uvec4 extent;             // xy trace extent (px), zw full extent (px)
   // --- Temporal reconstruction ------------------------------------------------------------
-  mat4 previousViewProjection;  // last frame's camera-relative world -> clip
-  vec4 reprojection;            // xyz: where a point seen now was, relative to last frame's camera:
-                      //   camera move plus the clouds' wind drift (m); w history valid 0/1
-  vec4 temporal;    // x weight of a fresh sample over its history, y clamp margin,
-                    //   z trace scale (trace px per output px), w reprojection spread
-                    //   (trace px) at which the history is fully clamped
-  uvec4 pattern;    // x tile size k (1, 2 or 4): one pixel per k x k tile is traced
-                    //   each frame; y, z: that pixel's offset in the tile; w: the
-                    //   last such pixel of the image, x | y << 16 (edge tiles may
-                    //   have none)
-  vec4 emptySpace;  // x fine cell (m), y coarse cell (m), zw unused
-  vec4 subpixel;    // xy this frame's offset of the rays inside their pixels (pixels,
-                    //   jitter mode 2; accumulating frames supersamples), zw unused
+  mat4 previousClipFromView;  // this frame's view space -> last frame's clip space for
+                              //   directions (w = 0): last view-projection x viewToWorld
+  vec4 reprojection;          // xyz: where a point seen now was, relative to last frame's camera:
+                              //   camera move plus the clouds' wind drift (m); w history valid 0/1
+  vec4 previousClipOrigin;    // last frame's clip position of this frame's camera (with the drift)
+  vec4 temporal;              // x weight of a fresh sample over its history, y clamp margin,
+                              //   z trace scale (trace px per output px), w reprojection spread
+                              //   (trace px) at which the history is fully clamped
+  uvec4 pattern;              // x tile size k (1, 2 or 4): one pixel per k x k tile is traced
+                              //   each frame; y, z: that pixel's offset in the tile; w: the
+                              //   last such pixel of the image, x | y << 16 (edge tiles may
+                              //   have none)
+  vec4 emptySpace;            // x fine cell (m), y coarse cell (m), zw unused
+  vec4 subpixel;              // xy this frame's offset of the rays inside their pixels (trace
+                  //   pixels, jitter mode 2; accumulating frames supersamples), zw unused
+  vec4 upsampling;  // temporal upsampling: x 1 when last frame's output-resolution
+                    //   history is valid, y own samples averaged before the running
+                    //   mean, zw unused
 };
-CLOUDS_STATIC_ASSERT(sizeof(CloudUniforms) == 3 * 64 + 25 * 16);
+CLOUDS_STATIC_ASSERT(sizeof(CloudUniforms) == 3 * 64 + 27 * 16);
 
 // Push constants of the noise generators.
 struct NoiseConstants {

@@ -14,6 +14,10 @@
 #include "cloud_temporal.h"
 
 layout(local_size_x = 8, local_size_y = 8) in;
+// Last frame's result (kSpecHistory): 0 none (reset, inside the layer...), 1 nothing moved
+// (read in place, unclamped: exact), 2 reprojected. Every path of a shader costs on lavapipe,
+// which runs both sides of a branch, so what a frame does not need is compiled out.
+layout(constant_id = 0) const uint kHistory = 2u;
 #include "frame_uniforms.glsl"
 layout(binding = 1, rgba32ui) uniform readonly uimage2D freshSamples;
 layout(binding = 2, rgba32ui) uniform readonly uimage2D history;
@@ -27,30 +31,6 @@ ivec2 clampPixel(ivec2 p) { return clamp(p, ivec2(0), ivec2(u.extent.xy) - 1); }
 ivec2 freshAt(ivec2 p) {
   const ivec2 last = ivec2(int(u.pattern.w & 0xffffu), int(u.pattern.w >> 16u));
   return clamp(p, ivec2(u.pattern.yz), last);
-}
-
-// Where points along this frame's view ray were on last frame's trace image: a point at
-// distance d along `direction` was at direction * d + reprojection.xyz from last frame's
-// camera, so its clip position is d * along + origin (two matrix products per pixel, then
-// any number of distances for a few operations each).
-struct PreviousRay {
-  vec4 along;   // last frame's view-projection of the direction (w = 0)
-  vec4 origin;  // and of the camera offset (w = 1)
-};
-
-PreviousRay previousRay(vec3 direction) {
-  PreviousRay r;
-  r.along = u.previousViewProjection * vec4(direction, 0.0f);
-  r.origin = u.previousViewProjection * vec4(vec3(u.reprojection), 1.0f);
-  return r;
-}
-
-// Trace-image position (pixels) of the point `distance` metres along the ray; far off-screen
-// when it was behind last frame's camera.
-vec2 previousPosition(PreviousRay ray, float distance) {
-  const vec4 clip = ray.along * distance + ray.origin;
-  if (clip.w <= 0.0f) return vec2(-1e6f);
-  return (clip.xy / clip.w * 0.5f + 0.5f) * vec2(u.extent.xy);
 }
 
 // Last frame's radiance at `position` (bilinear) and its cloud depths at the nearest of the
@@ -100,20 +80,29 @@ void main() {
 
   vec4 result = current;
   vec2 resultDepth = currentDepth;
-  if (u.reprojection.w > 0.5f) {
+  if (kHistory == 1u) {
+    const uvec4 texel = imageLoad(history, ivec2(pixel));
+    const vec4 previous = unpackCloudRadiance(texel);
+    const vec2 historyDepth = unpackCloudDepth(texel);
+    if (finiteVec4(previous) && !any(isnan(historyDepth))) {
+      result = fresh ? mix(previous, current, u.temporal.x) : previous;
+      resultDepth = fresh ? currentDepth : historyDepth;
+    }
+  } else if (kHistory == 2u) {
     // Where was this pixel's cloud last frame? Through its weighted depth (or, without cloud,
     // the far distance: empty sky reprojects like the horizon).
     const PreviousRay ray =
-        previousRay(pixelRayDirection(vec2(pixel) + 0.5f, vec2(u.extent.xy), u));
+        previousRay(viewRayDirection(vec2(pixel) + 0.5f, vec2(u.extent.xy), u), u);
     const float far = u.march.z;
-    const vec2 position = previousPosition(ray, currentDepth.y > 0.0f ? currentDepth.y : far);
+    const vec2 trace = vec2(u.extent.xy);
+    const vec2 position = previousPosition(ray, currentDepth.y > 0.0f ? currentDepth.y : far, trace);
     // How much the answer depends on the depth: the nearest cloud front around this pixel and
     // the far distance reproject this far apart. Zero for a static or only turning camera
     // (exact reprojection: keep the history whole, so small clouds seen by few fresh samples
     // survive); pixels apart when the camera moves past near cloud (parallax, disocclusion:
     // trust this frame's fresh neighbourhood instead).
     const float nearest = currentDepth.x > 0.0f ? currentDepth.x : far;
-    const float spread = length(previousPosition(ray, nearest) - previousPosition(ray, far));
+    const float spread = length(previousPosition(ray, nearest, trace) - previousPosition(ray, far, trace));
     const bool onScreen = all(greaterThanEqual(position, vec2(0.0f))) &&
                           all(lessThan(position, vec2(u.extent.xy)));
     vec2 historyDepth;

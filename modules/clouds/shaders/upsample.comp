@@ -2,31 +2,76 @@
 // Depth-aware upsample (compute) from the trace resolution to the output: bilinear over the
 // four nearest trace pixels, except that a trace pixel whose nearest cloud starts behind this
 // output pixel's geometry contributes "no cloud" (no halos of cloud over mountain edges).
+//
+// With temporal upsampling (specialization constant kSpecTemporalUpsampling) it also keeps an
+// output-resolution history of each pixel's own samples: the march moves its rays inside
+// their trace pixels from one refresh to the next, so over the rounds every output pixel is
+// hit by rays of its own. A pixel's result is then the mean of its own samples (up to
+// CloudUniforms.upsampling.y, then a running mean), reprojected like the trace history and
+// blended with the bilinear estimate until it holds two; a pixel whose history is uncertain
+// (parallax clamp) starts again from the bilinear estimate, as does every pixel of a frame
+// without history. Static and turning views converge to full-resolution detail; a camera
+// moving past near cloud sees what the trace resolution gives. Whether there is history, and
+// whether anything moved, are per-frame variants (kSpecOutputHistory).
+//
 // Inputs: 0 CloudUniforms; 1 reconstructed samples (trace res, packed: cloud_temporal.h);
-// 2 host depth. Outputs: 3 RGBA16F radiance + transmittance, 4 RG32F depths (output res).
+// 2 host depth; 5 this frame's marched samples (trace res); 6 last frame's output history.
+// Outputs: 3 RGBA16F radiance + transmittance, 4 RG32F depths (output res); 7 this frame's
+// output history (output res, packed with the own-sample count).
+// References: Karis 2014 (temporal accumulation, neighbourhood clamp); Schneider 2015.
 #extension GL_GOOGLE_include_directive : require
 #include "cloud_temporal.h"
 
 layout(local_size_x = 8, local_size_y = 8) in;
+layout(constant_id = 0) const uint kTemporalUpsampling = 0u;
+// Last frame's output history: 0 none (reset, resize, inside the layer...), 1 the camera and
+// the clouds held still (each pixel's history is where it was: no reprojection, one load),
+// 2 reprojected (kSpecOutputHistory).
+layout(constant_id = 1) const uint kOutputHistory = 0u;
 #include "frame_uniforms.glsl"
 layout(binding = 1, rgba32ui) uniform readonly uimage2D traceSamples;
 layout(binding = 2) uniform sampler2D hostDepth;
 layout(binding = 3, rgba16f) uniform writeonly image2D outRadiance;
 layout(binding = 4, rg32f) uniform writeonly image2D outDepth;
+layout(binding = 5, rgba32ui) uniform readonly uimage2D freshSamples;
+layout(binding = 6, rgba32ui) uniform readonly uimage2D outputHistory;
+layout(binding = 7, rgba32ui) uniform writeonly uimage2D outputHistoryOut;
 
 #include "cloud_march.h"
 
-void main() {
-  loadFrameUniforms();
-  const uvec2 pixel = gl_GlobalInvocationID.xy;
-  const uvec2 full = u.extent.zw;
-  if (any(greaterThanEqual(pixel, full))) return;
-  const float scene = sceneDistanceFromDepth(texelFetch(hostDepth, ivec2(pixel), 0).r,
-                                             vec2(pixel) + 0.5f, vec2(full), u);
-  const vec2 p = (vec2(pixel) + 0.5f) * vec2(u.extent.xy) / vec2(full) - 0.5f;
+// A cloud sample seen through this pixel's geometry: none of it when its nearest cloud is
+// behind the geometry.
+void occlude(float scene, inout vec4 radiance, inout vec2 depth) {
+  if (depth.x > 0.0f && scene < depth.x) {
+    radiance = vec4(0.0f, 0.0f, 0.0f, 1.0f);
+    depth = vec2(0.0f);
+  }
+}
+
+// Last frame's output history at `position` (output pixels): radiance bilinear, depths and
+// the own-sample count of the nearest texel.
+vec4 outputHistoryAt(vec2 position, out vec2 depth, out uint ownSamples) {
+  const vec2 p = position - 0.5f;
   const ivec2 i = ivec2(floor(p));
   const vec2 f = p - floor(p);
-  vec4 radiance = vec4(0.0f);
+  const ivec2 last = ivec2(u.extent.zw) - 1;
+  const uvec4 h00 = imageLoad(outputHistory, clamp(i, ivec2(0), last));
+  const uvec4 h10 = imageLoad(outputHistory, clamp(i + ivec2(1, 0), ivec2(0), last));
+  const uvec4 h01 = imageLoad(outputHistory, clamp(i + ivec2(0, 1), ivec2(0), last));
+  const uvec4 h11 = imageLoad(outputHistory, clamp(i + ivec2(1, 1), ivec2(0), last));
+  const uvec4 nearest = f.y < 0.5f ? (f.x < 0.5f ? h00 : h10) : (f.x < 0.5f ? h01 : h11);
+  depth = unpackOutputHistoryDepth(nearest);
+  ownSamples = ownSampleCount(nearest);
+  return mix(mix(unpackCloudRadiance(h00), unpackCloudRadiance(h10), f.x),
+             mix(unpackCloudRadiance(h01), unpackCloudRadiance(h11), f.x), f.y);
+}
+
+// The depth-aware bilinear estimate from the four trace pixels around this one.
+void spatialEstimate(uvec2 pixel, float scene, vec2 scale, out vec4 radiance, out vec2 depth) {
+  const vec2 p = (vec2(pixel) + 0.5f) * scale - 0.5f;
+  const ivec2 i = ivec2(floor(p));
+  const vec2 f = p - floor(p);
+  radiance = vec4(0.0f);
   DepthBlend blend = depthBlendStart();
   for (int tap = 0; tap < 4; ++tap) {
     const ivec2 offset = ivec2(tap & 1, tap >> 1);
@@ -35,13 +80,117 @@ void main() {
     const uvec4 packed = imageLoad(traceSamples, q);
     vec4 r = unpackCloudRadiance(packed);
     vec2 d = unpackCloudDepth(packed);
-    if (d.x > 0.0f && scene < d.x) {
-      r = vec4(0.0f, 0.0f, 0.0f, 1.0f);  // all of that cloud is behind this pixel's geometry
-      d = vec2(0.0f);
-    }
+    occlude(scene, r, d);
     radiance += r * w;
     depthBlendAdd(blend, w, r.a, d);
   }
+  depth = depthBlendResult(blend);
+}
+
+void main() {
+  loadFrameUniforms();
+  const uvec2 pixel = gl_GlobalInvocationID.xy;
+  const uvec2 full = u.extent.zw;
+  if (any(greaterThanEqual(pixel, full))) return;
+  const float scene = sceneDistanceFromDepth(texelFetch(hostDepth, ivec2(pixel), 0).r,
+                                             vec2(pixel) + 0.5f, vec2(full), u);
+  const vec2 scale = vec2(u.extent.xy) / vec2(full);  // trace pixels per output pixel
+  vec4 radiance;
+  vec2 depth;
+  if (kTemporalUpsampling == 0u) {
+    spatialEstimate(pixel, scene, scale, radiance, depth);
+    imageStore(outRadiance, ivec2(pixel), radiance);
+    imageStore(outDepth, ivec2(pixel), vec4(depth, 0.0f, 0.0f));
+    return;
+  }
+
+  // The trace pixel under this one: this frame's fresh sample is there when its ray went
+  // through this pixel.
+  const uvec2 trace = min(uvec2((vec2(pixel) + 0.5f) * scale), u.extent.xy - 1u);
+  // The mean of this pixel's own samples so far, and how many there are.
+  vec4 own = vec4(0.0f, 0.0f, 0.0f, 1.0f);
+  vec2 ownDepth = vec2(0.0f);
+  uint ownSamples = 0u;
+  // (Every path of a shader costs on lavapipe, which runs both sides of a branch for all
+  // lanes: what a frame does not need is compiled out by specialization instead.)
+  if (kOutputHistory != 0u) {
+    vec4 history;
+    vec2 historyDepth;
+    uint historySamples;
+    bool certain = true;
+    if (kOutputHistory == 1u) {
+      const uvec4 here = imageLoad(outputHistory, ivec2(pixel));
+      history = unpackCloudRadiance(here);
+      historyDepth = unpackOutputHistoryDepth(here);
+      historySamples = ownSampleCount(here);
+    } else {
+      // Reprojected through the cloud's weighted depth (as the trace history is,
+      // cloud_temporal.h; the history texel at this pixel gives the depth, close for a slow
+      // camera) and kept only where the reprojection is certain: on screen, below half the
+      // parallax that fully clamps the trace history.
+      const vec2 guide = unpackOutputHistoryDepth(imageLoad(outputHistory, ivec2(pixel)));
+      const PreviousRay ray =
+          previousRay(viewRayDirection(vec2(pixel) + 0.5f, vec2(full), u), u);
+      const float far = u.march.z;
+      const vec2 position = previousPosition(ray, guide.y > 0.0f ? guide.y : far, vec2(full));
+      const float nearest = guide.x > 0.0f ? guide.x : far;
+      const float spreadTracePixels = length(previousPosition(ray, nearest, vec2(full)) -
+                                             previousPosition(ray, far, vec2(full))) *
+                                      scale.x;
+      certain = all(greaterThanEqual(position, vec2(0.0f))) &&
+                all(lessThan(position, vec2(full))) && spreadTracePixels < 0.5f * u.temporal.w;
+      history = outputHistoryAt(position, historyDepth, historySamples);
+    }
+    // Kept where no geometry now stands in front of it and it is finite; anything else starts
+    // again from the spatial estimate.
+    const bool occluded = historyDepth.x > 0.0f && scene < historyDepth.x;
+    if (certain && historySamples > 0u && !occluded && finiteVec4(history) &&
+        !any(isnan(historyDepth))) {
+      own = history;
+      ownDepth = historyDepth;
+      ownSamples = historySamples;
+    }
+
+    // This frame's fresh sample, when its ray (moved inside its trace pixel by u.subpixel)
+    // went through this output pixel: one pixel in (k / scale)^2 has one. Samples hidden by
+    // geometry are not kept (the geometry may move away).
+    const vec2 hit = (vec2(trace) + 0.5f + u.subpixel.xy) / scale;
+    const bool fresh = isFreshPixel(trace, u) && all(equal(uvec2(floor(hit)), pixel));
+    if (fresh) {
+      const uvec4 packed = imageLoad(freshSamples, ivec2(trace));
+      const vec4 r = unpackCloudRadiance(packed);
+      const vec2 d = unpackCloudDepth(packed);
+      const bool hidden = d.x > 0.0f && scene < d.x;
+      if (!hidden && finiteVec4(r) && !any(isnan(d))) {
+        // The mean of the own samples so far, then a running mean over the last few.
+        const float weight = 1.0f / min(float(ownSamples) + 1.0f, u.upsampling.y);
+        DepthBlend blend = depthBlendStart();
+        depthBlendAdd(blend, 1.0f - weight, own.a, ownDepth);
+        depthBlendAdd(blend, weight, r.a, d);
+        own = mix(own, r, weight);
+        ownDepth = depthBlendResult(blend);
+        ownSamples = min(ownSamples + 1u, uint(u.upsampling.y));
+      }
+    }
+  }
+
+  // The result: the own samples' mean, blended with the spatial estimate until two of them
+  // vouch for it. A single ray is a noisy point sample: shown alone next to pixels without
+  // one, the first round of own samples would read as a dither pattern.
+  const float trust = min(float(ownSamples) * 0.5f, 1.0f);
+  radiance = own;
+  depth = ownDepth;
+  if (trust < 1.0f) {
+    vec4 spatial;
+    vec2 spatialDepth;
+    spatialEstimate(pixel, scene, scale, spatial, spatialDepth);
+    DepthBlend blend = depthBlendStart();
+    depthBlendAdd(blend, 1.0f - trust, spatial.a, spatialDepth);
+    depthBlendAdd(blend, trust, own.a, ownDepth);
+    radiance = mix(spatial, own, trust);
+    depth = depthBlendResult(blend);
+  }
+  imageStore(outputHistoryOut, ivec2(pixel), packOutputHistory(own, ownDepth, ownSamples));
   imageStore(outRadiance, ivec2(pixel), radiance);
-  imageStore(outDepth, ivec2(pixel), vec4(depthBlendResult(blend), 0.0f, 0.0f));
+  imageStore(outDepth, ivec2(pixel), vec4(depth, 0.0f, 0.0f));
 }

@@ -109,6 +109,8 @@ Context::Impl::Impl(const CreateInfo& info, const detail::VulkanFunctions& funct
   for (std::uint32_t i = 0; i < 2; ++i) {
     history_[i] = OwnedImage(device_, VK_IMAGE_TYPE_2D, kSampleFormat, maxExtent, history,
                              "history " + std::to_string(i));
+    outputHistory_[i] = OwnedImage(device_, VK_IMAGE_TYPE_2D, kSampleFormat, maxExtent, history,
+                                   "output history " + std::to_string(i));
   }
   placeholder_ = OwnedImage(device_, VK_IMAGE_TYPE_2D, VK_FORMAT_R32_SFLOAT, {1, 1, 1},
                             VK_IMAGE_USAGE_SAMPLED_BIT, "placeholder input");
@@ -149,8 +151,9 @@ Context::Impl::Impl(const CreateInfo& info, const detail::VulkanFunctions& funct
       0u, "march");
   reconstruct_ = std::make_unique<ComputeProgram>(
       device_, reconstruct_comp_spv, std::vector{ubo, img, img, img}, 0u, "reconstruct");
-  upsample_ = std::make_unique<ComputeProgram>(
-      device_, upsample_comp_spv, std::vector{ubo, img, tex, img, img}, 0u, "upsample");
+  upsample_ = std::make_unique<ComputeProgram>(device_, upsample_comp_spv,
+                                               std::vector{ubo, img, tex, img, img, img, img, img},
+                                               0u, "upsample");
   compositeProgram_ =
       std::make_unique<ComputeProgram>(device_, composite_comp_spv, std::vector{img, img},
                                        sizeof(shader::CompositeConstants), "composite");
@@ -249,7 +252,7 @@ void Context::Impl::recordInitialisation(VkCommandBuffer cmd) {
   for (const detail::OwnedImage* image :
        {&shapeNoise_, &detailNoise_, &curlNoise_, &weatherMaps_[0], &weatherMaps_[1],
         &weatherMaxFine_, &weatherMaxCoarse_, &radiance_, &depth_, &sceneDistance_, &traceSamples_,
-        &history_[0], &history_[1]}) {
+        &history_[0], &history_[1], &outputHistory_[0], &outputHistory_[1]}) {
     detail::barrier(device_, cmd, image->image(), VK_IMAGE_ASPECT_COLOR_BIT,
                     VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_GENERAL, VK_PIPELINE_STAGE_2_NONE,
                     VK_ACCESS_2_NONE, kCompute, kStorageRead | kStorageWrite);
@@ -463,6 +466,9 @@ void Context::Impl::recordTrace(VkCommandBuffer cmd, const FrameInputs& inputs,
       .sampledImage(2, depthView, nearestSampler_, depthLayout)
       .storageImage(3, radiance_.view())
       .storageImage(4, depth_.view())
+      .storageImage(5, traceSamples_.view())
+      .storageImage(6, outputHistory_[temporal.readHistory].view())
+      .storageImage(7, outputHistory_[temporal.writeHistory].view())
       .commit();
 
   // Everything these passes write may still be read by earlier commands (last frame's
@@ -502,15 +508,24 @@ void Context::Impl::recordTrace(VkCommandBuffer cmd, const FrameInputs& inputs,
     detail::memoryBarrier(device_, cmd, kCompute, kStorageWrite, VK_PIPELINE_STAGE_2_HOST_BIT,
                           VK_ACCESS_2_HOST_READ_BIT);
   }
+  // History variants (kSpecHistory, kSpecOutputHistory): none, read in place, reprojected.
+  const auto historyVariant = [&](bool use) { return !use ? 0u : temporal.still ? 1u : 2u; };
   beginPass(cmd, detail::Pass::Reconstruct, "clouds: reconstruct");
-  bindAndDispatch(cmd, *reconstruct_, reconstruct_->variant(), slot.reconstruct, traceExtent.width,
-                  traceExtent.height);
+  detail::SpecializationKey reconstructKey;
+  reconstructKey.values = {historyVariant(temporal.useHistory)};
+  reconstructKey.count = 1;
+  bindAndDispatch(cmd, *reconstruct_, reconstruct_->variant(reconstructKey), slot.reconstruct,
+                  traceExtent.width, traceExtent.height);
   detail::memoryBarrier(device_, cmd, kCompute, kStorageWrite, kCompute, kStorageRead);
   endPass(cmd, detail::Pass::Reconstruct);
 
   beginPass(cmd, detail::Pass::Upsample, "clouds: upsample");
-  bindAndDispatch(cmd, *upsample_, upsample_->variant(), slot.upsample, inputs.renderExtent.width,
-                  inputs.renderExtent.height);
+  detail::SpecializationKey upsampleKey;
+  const std::uint32_t outputHistory = historyVariant(temporal.useOutputHistory);
+  upsampleKey.values = {temporal.upsampleTemporally ? 1u : 0u, outputHistory};
+  upsampleKey.count = 2;
+  bindAndDispatch(cmd, *upsample_, upsample_->variant(upsampleKey), slot.upsample,
+                  inputs.renderExtent.width, inputs.renderExtent.height);
   for (const detail::OwnedImage* image : {&radiance_, &depth_}) {
     detail::barrier(device_, cmd, image->image(), VK_IMAGE_ASPECT_COLOR_BIT,
                     VK_IMAGE_LAYOUT_GENERAL, VK_IMAGE_LAYOUT_GENERAL, kCompute, kStorageWrite,
@@ -571,6 +586,8 @@ void Context::Impl::dispatch(const FrameInputs& inputs, const Settings& settings
   uniformContext.tileSize = temporal.tileSize;
   uniformContext.phase = temporal.phase;
   uniformContext.useHistory = temporal.useHistory;
+  uniformContext.upsampleTemporally = temporal.upsampleTemporally;
+  uniformContext.useOutputHistory = temporal.useOutputHistory;
   uniformContext.cameraDelta = temporal.cameraDelta;
   uniformContext.deltaSeconds = temporal.deltaSeconds;
   lastUniforms_ = detail::buildUniforms(inputs, settings, uniformContext);

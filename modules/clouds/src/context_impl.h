@@ -42,6 +42,7 @@ class Context::Impl {
   const detail::OwnedImage& weatherMap() const { return weatherMaps_[currentWeather_]; }
   const detail::OwnedImage& weatherMaxFine() const { return weatherMaxFine_; }
   const detail::OwnedImage& history(std::uint32_t i) const { return history_[i]; }
+  const detail::OwnedImage& outputHistory(std::uint32_t i) const { return outputHistory_[i]; }
   const shader::CloudUniforms& lastUniforms() const { return lastUniforms_; }
   const CreateInfo& createInfo() const { return info_; }
   std::size_t pipelineVariantCount() const { return march_->variantCount(); }
@@ -96,7 +97,9 @@ class Context::Impl {
   detail::OwnedImage sceneDistance_;           // trace resolution, R32F
   detail::OwnedImage traceSamples_;            // this frame's marched pixels (packed samples)
   std::array<detail::OwnedImage, 2> history_;  // reconstructed frames, ping-pong
-  detail::OwnedImage radiance_;                // outputs, output resolution
+  // Temporal upsampling's own samples per output pixel, ping-pong with history_.
+  std::array<detail::OwnedImage, 2> outputHistory_;
+  detail::OwnedImage radiance_;  // outputs, output resolution
   detail::OwnedImage depth_;
   detail::OwnedImage placeholder_;  // 1x1 sampled stand-in for absent optional inputs
 

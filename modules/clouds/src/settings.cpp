@@ -86,8 +86,10 @@ std::string validateSettings(const Settings& s) {
   c.require(s.traceScale == 1.0f || s.traceScale == 0.5f || s.traceScale == 0.25f,
             "Settings.traceScale = " + std::to_string(s.traceScale) + ": must be 1, 0.5 or 0.25");
   c.require(
-      s.updateInterval == 1 || s.updateInterval == 4 || s.updateInterval == 16,
-      "Settings.updateInterval = " + std::to_string(s.updateInterval) + ": must be 1, 4 or 16");
+      s.updateInterval == 1 || s.updateInterval == 4 || s.updateInterval == 16 ||
+          s.updateInterval == 64,
+      "Settings.updateInterval = " + std::to_string(s.updateInterval) + ": must be 1, 4, 16 or 64");
+  c.range("upsamplingMaxSamples", s.upsamplingMaxSamples, 1u, 15u);
   c.range("temporalFreshWeight", s.temporalFreshWeight, 0.05f, 1.0f);
   c.range("historyClampMargin", s.historyClampMargin, 0.0f, 1.0f);
   c.range("historyClampSpreadPixels", s.historyClampSpreadPixels, 0.01f, 100.0f);
@@ -100,6 +102,10 @@ std::string validateSettings(const Settings& s) {
                 s.jitter == Jitter::BayerHaltonSubpixel,
             "Settings.jitter: unknown mode " + std::to_string(static_cast<unsigned>(s.jitter)));
   return c.error;
+}
+
+bool upsamplesTemporally(const Settings& s) {
+  return s.temporalUpsampling && s.traceScale < 1.0f;
 }
 
 Settings referenceSettings(const Settings& base) {
@@ -196,6 +202,7 @@ Settings settingsFor(Quality quality, const Settings& base) {
       s.detailDistanceMetres = 60000.0f;  // to the max distance: far clouds seen from above
                                           // are visibly fatter without their erosion
       s.transmittanceCutoff = 0.005f;
+      s.temporalUpsampling = true;
       break;
     case Quality::Ultra:
       s.traceScale = 1.0f;

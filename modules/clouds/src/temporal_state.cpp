@@ -10,10 +10,7 @@ namespace {
 constexpr const char* kInsideLayer = "inside the layer";
 constexpr const char* kReuseOff = "temporal reuse off";
 
-// Bayer order of a 4x4 tile: the offsets in increasing threshold (0, 8, 2, 10 / 12, 4, ...).
-constexpr std::uint32_t kBayer4[16][2] = {{0, 0}, {2, 2}, {2, 0}, {0, 2}, {1, 1}, {3, 3},
-                                          {3, 1}, {1, 3}, {1, 0}, {3, 2}, {3, 0}, {1, 2},
-                                          {0, 1}, {2, 3}, {2, 1}, {0, 3}};
+// Bayer order of a 2x2 tile: the offsets in increasing threshold.
 constexpr std::uint32_t kBayer2[4][2] = {{0, 0}, {1, 1}, {1, 0}, {0, 1}};
 
 float angleDegrees(const glm::vec3& a, const glm::vec3& b) {
@@ -31,9 +28,16 @@ glm::vec3 forwardOf(const glm::mat4& view) {
 }  // namespace
 
 glm::uvec2 tilePhase(std::uint32_t k, std::uint32_t n) {
-  if (k == 4) return {kBayer4[n % 16][0], kBayer4[n % 16][1]};
-  if (k == 2) return {kBayer2[n % 4][0], kBayer2[n % 4][1]};
-  return {0, 0};
+  // The Bayer order of a k x k tile is recursive: the two lowest bits of n pick the 2 x 2
+  // quadrant at the coarsest scale (offset k/2), the next two at half that scale, and so on
+  // (k = 4: (0,0), (2,2), (2,0), (0,2), (1,1), (3,3), ...). Consecutive frames land far apart
+  // and every k * k frames each offset is visited once.
+  glm::uvec2 phase{0, 0};
+  n %= std::max(k * k, 1u);
+  for (std::uint32_t scale = k / 2; scale >= 1; scale /= 2, n /= 4) {
+    phase += glm::uvec2(kBayer2[n % 4][0], kBayer2[n % 4][1]) * scale;
+  }
+  return phase;
 }
 
 bool cloudsLookDifferent(const Settings& a, const Settings& b) {
@@ -142,7 +146,9 @@ TemporalFrame TemporalState::plan(const FrameInputs& in, const Settings& s,
     frame.resetReason = "first frame";
   } else if (in.reset) {
     frame.resetReason = "camera cut";
-  } else if (traceExtent.width != traceExtent_.width || traceExtent.height != traceExtent_.height) {
+  } else if (traceExtent.width != traceExtent_.width || traceExtent.height != traceExtent_.height ||
+             in.renderExtent.width != outputExtent_.width ||
+             in.renderExtent.height != outputExtent_.height) {
     frame.resetReason = "resize";
   } else if (glm::length(in.cameraPosition - cameraPosition_) > s.historyResetDistanceMetres) {
     frame.resetReason = "camera jump";
@@ -175,15 +181,20 @@ TemporalFrame TemporalState::plan(const FrameInputs& in, const Settings& s,
       frame.useHistory || frame.resetReason == kInsideLayer || frame.resetReason == kReuseOff;
   const bool restart = !keepSequence;
   frame.temporalIndex = restart ? 0 : temporalIndex_ + 1;
-  const std::uint32_t k = s.updateInterval == 16 ? 4u : s.updateInterval == 4 ? 2u : 1u;
+  const std::uint32_t k = tileSizeFor(s.updateInterval);
   // Without history every pixel must come from this frame: at most 2 x 2 tiles, filled in
   // spatially (4x the march of a 1-in-16 frame, for the frames that need it only).
   frame.tileSize = frame.useHistory ? k : std::min(k, 2u);
   frame.phase = tilePhase(frame.tileSize, frame.temporalIndex);
+  frame.upsampleTemporally = upsamplesTemporally(s);
+  frame.useOutputHistory = frame.upsampleTemporally && frame.useHistory && wroteOutputHistory_;
   frame.readHistory = latestHistory_;
   frame.writeHistory = 1u - latestHistory_;
   frame.cameraDelta = havePrevious_ ? in.cameraPosition - cameraPosition_ : glm::dvec3(0.0);
   frame.deltaSeconds = havePrevious_ ? std::max(in.timeSeconds - timeSeconds_, 0.0) : 0.0;
+  const bool noDrift = frame.deltaSeconds == 0.0 || s.windSpeedMetresPerSecond == 0.0f;
+  frame.still = havePrevious_ && frame.cameraDelta == glm::dvec3(0.0) && noDrift &&
+                in.view == in.previousView && in.projection == in.previousProjection;
   return frame;
 }
 
@@ -193,6 +204,8 @@ void TemporalState::commit(const TemporalFrame& frame, const FrameInputs& in,
   temporalIndex_ = frame.temporalIndex;
   latestHistory_ = frame.writeHistory;
   traceExtent_ = traceExtent;
+  outputExtent_ = in.renderExtent;
+  wroteOutputHistory_ = frame.upsampleTemporally;
   cameraPosition_ = in.cameraPosition;
   forward_ = forwardOf(in.view);
   sunDirection_ = in.sunDirection;

@@ -21,13 +21,28 @@ struct TemporalFrame {
   std::uint32_t temporalIndex = 0;  // frames since the history was last reset
   std::uint32_t readHistory = 0;    // history image holding last frame's result
   std::uint32_t writeHistory = 1;   // history image this frame writes
-  glm::dvec3 cameraDelta{0.0};      // camera position now minus last frame's (m)
+  // Temporal upsampling (Settings::temporalUpsampling): this frame accumulates into the
+  // output-resolution history, and reads last frame's (valid only when it was written, at
+  // this output extent, and the trace history is usable too). Same ping-pong indices.
+  bool upsampleTemporally = false;
+  bool useOutputHistory = false;
+  // Nothing moved since last frame (camera, view, projection, the clouds' wind drift): each
+  // pixel's history is where it was, and the passes read it in place without reprojecting.
+  bool still = false;
+  glm::dvec3 cameraDelta{0.0};  // camera position now minus last frame's (m)
   double deltaSeconds = 0.0;
 };
 
 // Tile offset of the n-th refresh in a k x k tile: the Bayer order, so consecutive frames
-// refresh pixels far apart (k in {1, 2, 4}).
+// refresh pixels far apart (k a power of two: 1, 2, 4 or 8).
 glm::uvec2 tilePhase(std::uint32_t k, std::uint32_t n);
+
+// The tile side k of an update interval (k * k = interval).
+constexpr std::uint32_t tileSizeFor(std::uint32_t updateInterval) {
+  std::uint32_t k = 1;
+  while (k * k < updateInterval) k *= 2;
+  return k;
+}
 
 // True when `a` and `b` render visibly different clouds: a look or march setting differs by
 // more than 1% (a flag or count at all). The temporal knobs themselves do not count.
@@ -47,6 +62,8 @@ class TemporalState {
   std::uint32_t temporalIndex_ = 0;
   std::uint32_t latestHistory_ = 0;  // which of the two history images holds the last result
   VkExtent2D traceExtent_{0, 0};
+  VkExtent2D outputExtent_{0, 0};
+  bool wroteOutputHistory_ = false;
   glm::dvec3 cameraPosition_{0.0};
   glm::vec3 forward_{0.0f, 0.0f, -1.0f};
   glm::vec3 sunDirection_{0.0f, 1.0f, 0.0f};

@@ -1,5 +1,7 @@
 #include "uniforms.h"
 
+#include "temporal_state.h"
+
 #include <algorithm>
 #include <cmath>
 
@@ -71,11 +73,16 @@ shader::CloudUniforms buildUniforms(const FrameInputs& in, const Settings& s,
 
   // Reprojection: a point at `rel` from the camera now was at rel + (camera move) - (wind drift
   // of the clouds) from last frame's camera, seen through last frame's rotation and projection.
-  u.previousViewProjection = in.previousProjection * glm::mat4(glm::mat3(in.previousView));
+  // Folded here once per frame so that the passes take one matrix product per pixel: a view
+  // direction goes straight to last frame's clip space, and the camera offset is a constant.
+  const glm::mat4 previousViewProjection =
+      in.previousProjection * glm::mat4(glm::mat3(in.previousView));
+  u.previousClipFromView = previousViewProjection * u.viewToWorld;
   const glm::dvec2 drift =
       wind * (static_cast<double>(s.windSpeedMetresPerSecond) * context.deltaSeconds);
   const glm::dvec3 moved = context.cameraDelta - glm::dvec3(drift.x, 0.0, drift.y);
   u.reprojection = glm::vec4(glm::vec3(moved), context.useHistory ? 1.0f : 0.0f);
+  u.previousClipOrigin = previousViewProjection * glm::vec4(glm::vec3(moved), 1.0f);
   u.temporal = glm::vec4(s.temporalFreshWeight, s.historyClampMargin, s.traceScale,
                          s.historyClampSpreadPixels);
   const std::uint32_t k = context.tileSize;
@@ -85,10 +92,25 @@ shader::CloudUniforms buildUniforms(const FrameInputs& in, const Settings& s,
   u.pattern = glm::uvec4(k, context.phase.x, context.phase.y,
                          lastFresh(context.traceExtent.width, context.phase.x) |
                              lastFresh(context.traceExtent.height, context.phase.y) << 16u);
-  if (s.jitter == Jitter::BayerHaltonSubpixel) {
-    const std::uint32_t n = context.temporalIndex % 64u + 1u;
-    u.subpixel = glm::vec4(shader::halton(n, 2u) - 0.5f, shader::halton(n, 3u) - 0.5f, 0.0f, 0.0f);
+  // Rays move inside their pixels from one refresh of a pixel to the next. A pixel is
+  // refreshed once per round of k x k frames, so the sequence advances once per round. Its
+  // points are stratified over the output pixels a trace pixel covers (m x m of them at trace
+  // scale 1/m): the first m x m rounds visit each output pixel once, in Bayer order, and later
+  // rounds move inside them along a Halton (2, 3) sequence, so temporal upsampling gets an own
+  // sample for every output pixel as early as possible. Temporal upsampling only moves the
+  // rays while it accumulates: a frame rebuilt from its own samples wants them centred.
+  const bool subpixel = s.jitter == Jitter::BayerHaltonSubpixel ||
+                        (context.upsampleTemporally && context.useOutputHistory);
+  if (subpixel) {
+    const std::uint32_t m = s.traceScale <= 0.25f ? 4u : s.traceScale <= 0.5f ? 2u : 1u;
+    const std::uint32_t round = context.temporalIndex / (k * k);
+    const glm::uvec2 outputPixel = tilePhase(m, round);
+    const std::uint32_t n = (round / (m * m)) % 64u + 1u;
+    const glm::vec2 inside(shader::halton(n, 2u), shader::halton(n, 3u));
+    u.subpixel = glm::vec4((glm::vec2(outputPixel) + inside) / float(m) - 0.5f, 0.0f, 0.0f);
   }
+  u.upsampling = glm::vec4(context.useOutputHistory ? 1.0f : 0.0f,
+                           static_cast<float>(s.upsamplingMaxSamples), 0.0f, 0.0f);
   const float weatherTexel = s.weatherTileMetres / float(shader::kWeatherMapSize);
   u.emptySpace = glm::vec4(
       weatherTexel * float(shader::kWeatherMapSize / shader::kWeatherMaxFineSize),
@@ -97,9 +119,12 @@ shader::CloudUniforms buildUniforms(const FrameInputs& in, const Settings& s,
 }
 
 MarchVariant marchVariant(const Settings& s) {
+  // Temporal upsampling moves the rays inside their pixels (u.subpixel; zero while it does
+  // not accumulate), which is jitter mode 2.
+  const Jitter jitter = upsamplesTemporally(s) ? Jitter::BayerHaltonSubpixel : s.jitter;
   return MarchVariant{
-      static_cast<std::uint32_t>(s.jitter), s.detail ? 1u : 0u, s.cheapSampling ? 1u : 0u,
-      s.multipleScattering ? 1u : 0u,       s.lightSteps,       s.emptySpaceSkipping ? 1u : 0u};
+      static_cast<std::uint32_t>(jitter), s.detail ? 1u : 0u, s.cheapSampling ? 1u : 0u,
+      s.multipleScattering ? 1u : 0u,     s.lightSteps,       s.emptySpaceSkipping ? 1u : 0u};
 }
 
 VkExtent2D traceExtentFor(VkExtent2D full, float traceScale) {

@@ -17,8 +17,10 @@ struct UniformContext {
   std::uint32_t tileSize = 1;
   glm::uvec2 phase{0, 0};
   bool useHistory = false;
-  glm::dvec3 cameraDelta{0.0};  // camera position now minus last frame's (m)
-  double deltaSeconds = 0.0;    // time since last frame (s), for the wind's drift
+  bool upsampleTemporally = false;  // Settings::temporalUpsampling in effect
+  bool useOutputHistory = false;    // and last frame's output-resolution history is valid
+  glm::dvec3 cameraDelta{0.0};      // camera position now minus last frame's (m)
+  double deltaSeconds = 0.0;        // time since last frame (s), for the wind's drift
 };
 
 shader::CloudUniforms buildUniforms(const FrameInputs& inputs, const Settings& settings,

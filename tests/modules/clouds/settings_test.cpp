@@ -76,14 +76,14 @@ TEST(CloudPresets, TheFunctionsOutputs) {
     std::uint32_t updateInterval, maxViewSteps;
     float viewStepMetres;
     std::uint32_t lightSteps;
-    bool temporalReuse, emptySpaceSkipping, cheapSampling;
+    bool temporalReuse, emptySpaceSkipping, cheapSampling, upsamplesTemporally;
   };
   const Row rows[] = {
-      {Quality::Low, 0.25f, 16, 64, 120.0f, 3, true, true, true},
-      {Quality::Medium, 0.25f, 16, 96, 60.0f, 6, true, true, true},
-      {Quality::High, 0.5f, 16, 96, 60.0f, 6, true, true, true},
-      {Quality::Ultra, 1.0f, 4, 160, 40.0f, 10, true, true, true},
-      {Quality::Reference, 1.0f, 1, 8192, 12.0f, 24, false, false, false},
+      {Quality::Low, 0.25f, 16, 64, 120.0f, 3, true, true, true, false},
+      {Quality::Medium, 0.25f, 16, 96, 60.0f, 6, true, true, true, false},
+      {Quality::High, 0.5f, 16, 96, 60.0f, 6, true, true, true, true},
+      {Quality::Ultra, 1.0f, 4, 160, 40.0f, 10, true, true, true, false},
+      {Quality::Reference, 1.0f, 1, 8192, 12.0f, 24, false, false, false, false},
   };
   for (const Row& r : rows) {
     const clouds::Settings s = clouds::settingsFor(r.quality);
@@ -96,6 +96,7 @@ TEST(CloudPresets, TheFunctionsOutputs) {
     EXPECT_EQ(s.temporalReuse, r.temporalReuse);
     EXPECT_EQ(s.emptySpaceSkipping, r.emptySpaceSkipping);
     EXPECT_EQ(s.cheapSampling, r.cheapSampling);
+    EXPECT_EQ(clouds::upsamplesTemporally(s), r.upsamplesTemporally);
   }
 }
 
@@ -147,8 +148,16 @@ TEST(CloudSettings, TemporalKnobsAreChecked) {
   s.updateInterval = 8;
   EXPECT_NE(clouds::validateSettings(s).find("Settings.updateInterval"), std::string::npos);
   s = {};
+  s.updateInterval = 64;  // 8 x 8 tiles
+  EXPECT_EQ(clouds::validateSettings(s), "");
+  s = {};
   s.temporalFreshWeight = 0.0f;
   EXPECT_NE(clouds::validateSettings(s).find("Settings.temporalFreshWeight"), std::string::npos);
+  s = {};
+  s.upsamplingMaxSamples = 0;
+  EXPECT_NE(clouds::validateSettings(s).find("Settings.upsamplingMaxSamples"), std::string::npos);
+  s.upsamplingMaxSamples = 16;  // the count lives in 4 bits of the output history
+  EXPECT_NE(clouds::validateSettings(s).find("Settings.upsamplingMaxSamples"), std::string::npos);
 }
 
 }  // namespace

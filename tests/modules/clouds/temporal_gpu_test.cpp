@@ -1,6 +1,7 @@
 // Temporal reconstruction, empty-space skipping and quality presets on lavapipe: a static
-// camera converges to the Reference; the frame after a cut, a resize or relighting equals a
-// fresh renderer's; NaN in the history never reaches the output; the camera in the layer
+// camera converges to the Reference, and with temporal upsampling to detail finer than the
+// trace; the frame after a cut, a resize or relighting equals a fresh renderer's; NaN in the
+// history never reaches the output; the camera in the layer
 // turns reprojection off; skipping empty weather cells changes (almost) nothing but the cost;
 // each preset costs more than the one below it, by the march's work counters.
 #include <gtest/gtest.h>
@@ -96,6 +97,76 @@ TEST_F(CloudTemporal, AStaticCameraConvergesToTheReference) {
   const test::ImageError error =
       test::imageError(previous, test::tonemappedPixels(reference, view));
   EXPECT_GE(error.psnr, 35.0) << "mean abs " << error.meanAbs << ", max abs " << error.maxAbs;
+}
+
+// Above the layer, looking down: distant cloud tops are detail finer than High's
+// half-resolution trace.
+CloudView aboveTheLayerView() {
+  CloudView view = cumulusView();
+  view.position.y = 6500.0;
+  view.pitchDegrees = -25.0;
+  return view;
+}
+
+TEST_F(CloudTemporal, TemporalUpsamplingConvergesToDetailFinerThanTheTrace) {
+  const CloudView view = aboveTheLayerView();
+  const clouds::Settings upsampled = clouds::settingsFor(clouds::Quality::High);
+  ASSERT_TRUE(clouds::upsamplesTemporally(upsampled));
+  clouds::Settings traceOnly = upsampled;
+  traceOnly.temporalUpsampling = false;
+  const std::vector<glm::vec3> reference = test::tonemappedPixels(
+      renderer()->renderAveraged(view, clouds::settingsFor(clouds::Quality::Reference), kExtent,
+                                 16),
+      view);
+  // A trace pixel is refreshed once per 16 frames and covers 2 x 2 output pixels: after 128
+  // frames every output pixel holds two rays of its own.
+  auto r = renderer();
+  std::vector<glm::vec3> image;
+  double lateChange = 0.0;
+  for (int frame = 0; frame < 136; ++frame) {
+    std::vector<glm::vec3> next = test::tonemappedPixels(r->render(view, upsampled, kExtent), view);
+    if (frame >= 128) lateChange = std::max(lateChange, test::imageError(next, image).meanAbs);
+    image = std::move(next);
+  }
+  EXPECT_LT(lateChange, 2.0 / 255.0) << "converged: little changes from frame to frame";
+  const double upsampledPsnr = test::imageError(image, reference).psnr;
+  const double traceOnlyPsnr =
+      test::imageError(
+          test::tonemappedPixels(renderer()->render(view, traceOnly, kExtent, 136), view),
+          reference)
+          .psnr;
+  // At 160 x 90 the cloud tops are smaller in pixels than at the benchmark's 640 x 360 (where
+  // High's 35 dB target is measured): measured here 24.9 dB with the trace alone, 31.8 dB
+  // upsampled.
+  EXPECT_GE(upsampledPsnr, 30.0) << "trace only: " << traceOnlyPsnr << " dB";
+  EXPECT_GE(upsampledPsnr, traceOnlyPsnr + 5.0) << "trace only: " << traceOnlyPsnr << " dB";
+}
+
+TEST_F(CloudTemporal, NanInTheOutputHistoryOfAConvergedViewNeverReachesTheOutput) {
+  // Converged: most output pixels come from their own samples in the output history, not
+  // from the trace; poisoned, they must fall back to the trace.
+  const CloudView view = aboveTheLayerView();
+  const clouds::Settings high = clouds::settingsFor(clouds::Quality::High);
+  auto r = renderer();
+  const test::CloudFrame converged = r->render(view, high, kExtent, 80);
+  r->poisonHistory();
+  const test::CloudFrame out = r->render(view, high, kExtent);
+  ASSERT_TRUE(r->context().lastFrameReport().historyUsed);
+  ASSERT_TRUE(allValid(out));
+  EXPECT_NEAR(meanOpacity(out), meanOpacity(converged), 0.25 * meanOpacity(converged));
+}
+
+TEST_F(CloudTemporal, TheFrameAfterAnOutputOnlyResizeEqualsAFreshRenderers) {
+  // 160 and 159 pixels wide trace the same 80 columns: only the output history must go.
+  const clouds::Settings high = clouds::settingsFor(clouds::Quality::High);
+  const VkExtent2D narrower{159, 90};
+  auto r = renderer();
+  r->render(aboveTheLayerView(), high, kExtent, 40);
+  const test::CloudFrame resized = r->render(aboveTheLayerView(), high, narrower);
+  EXPECT_EQ(std::string(r->context().lastFrameReport().resetReason), "resize");
+  EXPECT_EQ(r->context().lastFrameReport().traceExtent.width, 80u);
+  EXPECT_EQ(maxAbsDifference(resized, renderer()->render(aboveTheLayerView(), high, narrower)),
+            0.0f);
 }
 
 TEST_F(CloudTemporal, TheFrameAfterACutEqualsAFreshRenderers) {

@@ -7,6 +7,7 @@
 #include <string>
 
 #include "temporal_state.h"
+#include "uniforms.h"
 
 namespace {
 
@@ -54,7 +55,7 @@ TEST(TemporalState, FirstFrameHasNoHistoryThenAStaticCameraReprojects) {
 }
 
 TEST(TemporalState, TilePhasesVisitEveryPixelOfTheTileInBayerOrder) {
-  for (std::uint32_t k : {1u, 2u, 4u}) {
+  for (std::uint32_t k : {1u, 2u, 4u, 8u}) {
     std::set<std::pair<std::uint32_t, std::uint32_t>> seen;
     for (std::uint32_t n = 0; n < k * k; ++n) {
       const glm::uvec2 p = tilePhase(k, n);
@@ -68,6 +69,104 @@ TEST(TemporalState, TilePhasesVisitEveryPixelOfTheTileInBayerOrder) {
   // Consecutive refreshes land far apart (Bayer), not on neighbours.
   const glm::ivec2 a(tilePhase(4, 0)), b(tilePhase(4, 1));
   EXPECT_GE(std::abs(a.x - b.x) + std::abs(a.y - b.y), 2);
+  // The order is the classic Bayer matrix's: the first four of a 4 x 4 tile are its corners'
+  // pattern, and the 8 x 8 order refines the 4 x 4 one.
+  EXPECT_EQ(tilePhase(4, 1), glm::uvec2(2, 2));
+  EXPECT_EQ(tilePhase(4, 2), glm::uvec2(2, 0));
+  EXPECT_EQ(tilePhase(4, 4), glm::uvec2(1, 1));
+  for (std::uint32_t n = 0; n < 16; ++n) EXPECT_EQ(tilePhase(8, n), tilePhase(4, n) * 2u);
+  EXPECT_EQ(clouds::detail::tileSizeFor(64), 8u);
+  EXPECT_EQ(clouds::detail::tileSizeFor(16), 4u);
+  EXPECT_EQ(clouds::detail::tileSizeFor(1), 1u);
+}
+
+TEST(TemporalState, OutputHistoryIsReadOnlyAfterAFrameThatWroteIt) {
+  clouds::Settings s = clouds::settingsFor(clouds::Quality::High);
+  ASSERT_TRUE(clouds::upsamplesTemporally(s));
+  TemporalState state;
+  const TemporalFrame first = run(state, groundCamera(), s);
+  EXPECT_TRUE(first.upsampleTemporally);
+  EXPECT_FALSE(first.useOutputHistory) << "nothing written yet";
+  EXPECT_TRUE(run(state, groundCamera(), s).useOutputHistory);
+  // A frame without temporal upsampling writes no output history: the next one must not read.
+  clouds::Settings off = s;
+  off.temporalUpsampling = false;
+  EXPECT_FALSE(run(state, groundCamera(), off).upsampleTemporally);
+  const TemporalFrame back = run(state, groundCamera(), s);
+  EXPECT_TRUE(back.useHistory) << "the trace history is still good";
+  EXPECT_FALSE(back.useOutputHistory);
+  EXPECT_TRUE(run(state, groundCamera(), s).useOutputHistory);
+  // At full trace resolution there is nothing to upsample.
+  clouds::Settings full = s;
+  full.traceScale = 1.0f;
+  EXPECT_FALSE(clouds::upsamplesTemporally(full));
+}
+
+TEST(TemporalState, UpsamplingRaysVisitEveryOutputPixelOfTheirTracePixelFirst) {
+  // Half-resolution trace, 1-in-16 refresh: a trace pixel is refreshed once per 16-frame
+  // round and covers 2 x 2 output pixels; its rays must hit each of them in the first four
+  // rounds, whatever the frame inside the round.
+  const clouds::Settings s = clouds::settingsFor(clouds::Quality::High);
+  clouds::FrameInputs in = groundCamera();
+  in.projection = glm::perspective(1.0f, 16.0f / 9.0f, 0.5f, 1000.0f);
+  clouds::detail::UniformContext context;
+  context.traceExtent = {80, 45};
+  context.fullExtent = {160, 90};
+  context.tileSize = 4;
+  context.useHistory = context.upsampleTemporally = context.useOutputHistory = true;
+  std::set<std::pair<int, int>> hit;
+  for (std::uint32_t round = 0; round < 4; ++round) {
+    context.temporalIndex = round * 16 + 5;
+    const glm::vec2 offset = glm::vec2(clouds::detail::buildUniforms(in, s, context).subpixel);
+    ASSERT_LT(glm::max(std::abs(offset.x), std::abs(offset.y)), 0.5f) << "inside the pixel";
+    const glm::ivec2 outputPixel(glm::floor((offset + 0.5f) * 2.0f));
+    hit.insert({outputPixel.x, outputPixel.y});
+    context.temporalIndex = round * 16 + 11;
+    EXPECT_EQ(glm::vec2(clouds::detail::buildUniforms(in, s, context).subpixel), offset)
+        << "one offset per round";
+  }
+  EXPECT_EQ(hit.size(), 4u);
+  // A frame rebuilt without output history marches through pixel centres.
+  context.useOutputHistory = false;
+  EXPECT_EQ(glm::vec2(clouds::detail::buildUniforms(in, s, context).subpixel), glm::vec2(0.0f));
+}
+
+TEST(TemporalState, AFrameIsStillOnlyWhenNothingMoved) {
+  // Still: the passes read each pixel's history in place instead of reprojecting it.
+  const clouds::Settings s;  // wind 10 m/s
+  clouds::FrameInputs in = groundCamera();
+  in.previousView = in.view;
+  in.previousProjection = in.projection;
+  TemporalState state;
+  EXPECT_FALSE(run(state, in, s).still) << "first frame: no history to read";
+  EXPECT_TRUE(run(state, in, s).still);
+  clouds::FrameInputs moved = in;
+  moved.cameraPosition.x += 0.01;
+  EXPECT_FALSE(run(state, moved, s).still) << "the camera moved";
+  EXPECT_TRUE(run(state, moved, s).still);
+  clouds::FrameInputs later = moved;
+  later.timeSeconds += 1.0 / 30.0;
+  EXPECT_FALSE(run(state, later, s).still) << "the clouds drifted with the wind";
+  clouds::Settings calm = s;
+  calm.windSpeedMetresPerSecond = 0.0f;
+  later.timeSeconds += 1.0 / 30.0;
+  EXPECT_TRUE(run(state, later, calm).still) << "time passed, but nothing drifts";
+  clouds::FrameInputs turned = later;
+  turned.previousView = glm::rotate(in.view, 0.01f, glm::vec3(0.0f, 1.0f, 0.0f));
+  EXPECT_FALSE(run(state, turned, calm).still) << "the view turned";
+}
+
+TEST(TemporalState, AResizeOfTheOutputAloneDropsTheHistory) {
+  // 160 and 159 pixels both trace 80 at half resolution: the output history would not fit.
+  const clouds::Settings s = clouds::settingsFor(clouds::Quality::High);
+  TemporalState state;
+  clouds::FrameInputs in = groundCamera();
+  in.renderExtent = {160, 90};
+  state.commit(state.plan(in, s, {80, 45}), in, s, {80, 45});
+  in.renderExtent = {159, 90};
+  const TemporalFrame frame = state.plan(in, s, {80, 45});
+  EXPECT_FALSE(frame.useHistory);
+  EXPECT_EQ(std::string(frame.resetReason), "resize");
 }
 
 TEST(TemporalState, EachReasonToDropTheHistoryIsDetected) {

@@ -294,7 +294,8 @@ void CloudHarness::poisonHistory() {
     nan.uint32[0] = nan.uint32[1] = 0x7E007E00u;
     nan.uint32[2] = nan.uint32[3] = 0x7FC00000u;
     for (std::uint32_t i = 0; i < 2; ++i) {
-      for (VkImage image : {context_->impl().history(i).image()}) {
+      for (VkImage image :
+           {context_->impl().history(i).image(), context_->impl().outputHistory(i).image()}) {
         gfx::imageBarrier(cmd, image, range, general, transfer);
         vkCmdClearColorImage(cmd, image, VK_IMAGE_LAYOUT_GENERAL, &nan, 1, &range);
         gfx::imageBarrier(cmd, image, range, transfer, general);

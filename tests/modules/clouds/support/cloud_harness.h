@@ -79,7 +79,8 @@ class CloudHarness {
 
   // Marks the next frame as a camera cut (FrameInputs::reset).
   void cut() { cutNext_ = true; }
-  // Overwrites both temporal history images with NaN (tests: poisoned history must not leak).
+  // Overwrites the temporal history images (trace and output resolution) with NaN (tests:
+  // poisoned history must not leak).
   void poisonHistory();
   // The work counters and pass times of the last rendered frame (zeros / empty unless
   // created with workCounters / passTimings).
