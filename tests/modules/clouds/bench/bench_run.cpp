@@ -10,6 +10,10 @@
 namespace bench {
 namespace {
 
+bool selected(const std::vector<std::string>& only, const std::string& name) {
+  return only.empty() || std::find(only.begin(), only.end(), name) != only.end();
+}
+
 double median(std::vector<double> values) {
   if (values.empty()) return 0.0;
   std::sort(values.begin(), values.end());
@@ -141,7 +145,10 @@ BenchResults runBenchmark(engine::gfx::Device& device, const RunOptions& options
   const auto start = std::chrono::steady_clock::now();
   BenchResults results;
   results.options = options;
-  results.configs = benchConfigs();
+  for (const BenchConfig& config : benchConfigs()) {
+    if (selected(options.onlyConfigs, config.name)) results.configs.push_back(config);
+  }
+  if (results.configs.empty()) throw engine::Error("clouds_bench: no configuration selected");
   results.device = device.properties().deviceName;
   const VkExtent2D extent = options.extent;
 
@@ -157,6 +164,7 @@ BenchResults runBenchmark(engine::gfx::Device& device, const RunOptions& options
 
   // --- Static views: converge, time interleaved, then compare the last frame. ---------------
   for (const BenchView& view : canonicalViews()) {
+    if (!selected(options.onlyViews, view.name)) continue;
     results.views.push_back(view.name);
     progress(view.name + ": Reference (" + std::to_string(options.referenceFrames) + " frames)");
     const Reference reference =
@@ -171,9 +179,30 @@ BenchResults runBenchmark(engine::gfx::Device& device, const RunOptions& options
       settings.push_back(instance.config->settingsFor(view.look));
       instance.harness->cut();
     }
-    for (std::uint32_t frame = 0; frame < options.convergeFrames; ++frame) {
+    // Converge: each configuration for its own number of frames; High's error is also
+    // taken on the way (the time it takes to converge is part of what it costs).
+    std::vector<std::uint32_t> converge(instances.size());
+    for (std::size_t i = 0; i < instances.size(); ++i) {
+      converge[i] = clouds::upsamplesTemporally(settings[i])
+                        ? std::max(options.convergeFrames, options.upsampledConvergeFrames)
+                        : options.convergeFrames;
+    }
+    const std::uint32_t longest = *std::max_element(converge.begin(), converge.end());
+    for (std::uint32_t frame = 0; frame < longest; ++frame) {
       for (std::size_t i = 0; i < instances.size(); ++i) {
-        renderOrThrow(*instances[i].harness, view.view, settings[i], extent);
+        if (frame >= converge[i]) continue;
+        test::CloudHarness& harness = *instances[i].harness;
+        const std::uint32_t rendered = frame + 1;
+        const bool high =
+            instances[i].config->preset && instances[i].config->quality == clouds::Quality::High;
+        if (high && (rendered & (rendered - 1)) == 0 && rendered >= 8) {  // 8, 16, 32, ...
+          const test::CloudFrame out = harness.render(view.view, settings[i], extent);
+          const double psnr =
+              test::imageError(test::tonemappedPixels(out, view.view), reference.pixels).psnr;
+          results.highConvergence[view.name].push_back(ConvergencePoint{rendered, psnr});
+        } else {
+          renderOrThrow(harness, view.view, settings[i], extent);
+        }
       }
     }
     std::vector<Samples> samples(instances.size());
@@ -196,8 +225,13 @@ BenchResults runBenchmark(engine::gfx::Device& device, const RunOptions& options
   }
 
   // --- The fly-through: every frame timed, the error at regular frames. ----------------------
-  const FlyThrough path = flyThrough(options.flyFrames);
   const std::string flyName = "fly-through";
+  if (!selected(options.onlyViews, flyName)) {
+    results.seconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    return results;
+  }
+  const FlyThrough path = flyThrough(options.flyFrames);
   results.views.push_back(flyName);
   std::vector<clouds::Settings> settings;
   for (Instance& instance : instances) {

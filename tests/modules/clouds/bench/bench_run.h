@@ -16,12 +16,19 @@ namespace bench {
 
 struct RunOptions {
   VkExtent2D extent{640, 360};
-  std::uint32_t convergeFrames = 32;    // static views: frames before timing (16 refresh all)
+  std::uint32_t convergeFrames = 32;  // static views: frames before timing (16 refresh all)
+  // Static views, configurations with temporal upsampling: frames before timing (at High's
+  // 1-in-16 refresh and half-resolution trace, 64 give every output pixel an own sample).
+  std::uint32_t upsampledConvergeFrames = 128;
   std::uint32_t timedFrames = 9;        // static views: timed frames per configuration
   std::uint32_t referenceFrames = 8;    // frames averaged into each Reference image
   std::uint32_t flyFrames = 48;         // frames of the fly-through
   std::uint32_t flyReferenceEvery = 8;  // reference (and error) every n-th fly-through frame
   std::uint32_t flyWarmUpFrames = 16;   // no error measured before this frame of the path
+  // When not empty, only these views ("fly-through" included) and configurations (by name, as
+  // in the tables) run: for looking into one case without the whole quarter hour.
+  std::vector<std::string> onlyViews;
+  std::vector<std::string> onlyConfigs;
 };
 
 // One configuration on one view (or on the fly-through, view "fly-through").
@@ -42,6 +49,12 @@ struct Measurement {
   std::map<std::string, double> passMs;  // median per pass
 };
 
+// How High converges on a static view: PSNR against the Reference after so many frames.
+struct ConvergencePoint {
+  std::uint32_t frames = 0;
+  double psnr = 0.0;
+};
+
 struct ReferenceMeasurement {
   std::string view;
   double medianMs = 0.0;         // one Reference frame
@@ -54,6 +67,7 @@ struct BenchResults {
   std::vector<std::string> views;  // static views, then "fly-through"
   std::vector<Measurement> measurements;
   std::vector<ReferenceMeasurement> references;
+  std::map<std::string, std::vector<ConvergencePoint>> highConvergence;  // per static view
   std::string device;
   double seconds = 0.0;  // wall time of the whole run
 

@@ -85,8 +85,9 @@ namespace {
 // High's value of each knob: where High sits in each sweep.
 const std::map<std::string, double>& highKnobs() {
   static const std::map<std::string, double> knobs = {
-      {"view step", 1.0},        {"light steps", 6.0},    {"trace scale", 0.5},
-      {"update interval", 16.0}, {"temporal reuse", 1.0}, {"empty-space skipping", 1.0}};
+      {"view step", 1.0},          {"light steps", 6.0},    {"trace scale", 0.5},
+      {"update interval", 16.0},   {"temporal reuse", 1.0}, {"empty-space skipping", 1.0},
+      {"temporal upsampling", 1.0}};
   return knobs;
 }
 
@@ -140,8 +141,11 @@ std::vector<BenchConfig> benchConfigs() {
   });
   sweep("empty-space skipping", {0.0}, "",
         [](clouds::Settings& s, double) { s.emptySpaceSkipping = false; });
+  sweep("temporal upsampling", {0.0}, "",
+        [](clouds::Settings& s, double) { s.temporalUpsampling = false; });
   for (BenchConfig& c : configs) {
-    if (c.sweep == "temporal reuse" || c.sweep == "empty-space skipping") {
+    if (c.sweep == "temporal reuse" || c.sweep == "empty-space skipping" ||
+        c.sweep == "temporal upsampling") {
       c.value = "off";
       c.name = c.sweep + " off";
     }

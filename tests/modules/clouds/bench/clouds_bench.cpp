@@ -27,12 +27,21 @@ int main(int argc, char** argv) {
   cli.add_option("--height", options.extent.height, "Render height")->check(CLI::Range(16u, 4096u));
   cli.add_option("--converge-frames", options.convergeFrames, "Static views: frames before timing")
       ->check(CLI::Range(0u, 1000u));
+  cli.add_option("--upsampled-converge-frames", options.upsampledConvergeFrames,
+                 "Static views: frames before timing with temporal upsampling (High)")
+      ->check(CLI::Range(0u, 4000u));
   cli.add_option("--timed-frames", options.timedFrames, "Static views: timed frames")
       ->check(CLI::Range(1u, 1000u));
   cli.add_option("--reference-frames", options.referenceFrames, "Frames averaged per Reference")
       ->check(CLI::Range(1u, 256u));
   cli.add_option("--fly-frames", options.flyFrames, "Frames of the fly-through")
       ->check(CLI::Range(2u, 10000u));
+  cli.add_option(
+      "--view", options.onlyViews,
+      "Run only this view (repeatable; names as in results.md, e.g. \"above the layer\", "
+      "\"fly-through\")");
+  cli.add_option("--config", options.onlyConfigs,
+                 "Run only this configuration (repeatable; e.g. High, \"light steps 10\")");
   bool quick = false;
   cli.add_flag("--quick", quick, "320x180, fewer frames: a few minutes instead of a quarter hour");
   bool validation = false;
@@ -41,6 +50,7 @@ int main(int argc, char** argv) {
   if (quick) {
     options.extent = {320, 180};
     options.convergeFrames = 20;
+    options.upsampledConvergeFrames = 64;
     options.timedFrames = 5;
     options.referenceFrames = 4;
     options.flyFrames = 32;
