@@ -86,7 +86,7 @@ struct CloudUniforms {
   vec4 temporal;              // x weight of a fresh sample over its history, y clamp margin,
                               //   z trace scale (trace px per output px), w reprojection spread
                               //   (trace px) at which the history is fully clamped
-  uvec4 pattern;              // x tile size k (1, 2 or 4): one pixel per k x k tile is traced
+  uvec4 pattern;              // x tile size k (1, 2, 4 or 8): one pixel per k x k tile is traced
                               //   each frame; y, z: that pixel's offset in the tile; w: the
                               //   last such pixel of the image, x | y << 16 (edge tiles may
                               //   have none)

@@ -48,30 +48,45 @@ void occlude(float scene, inout vec4 radiance, inout vec2 depth) {
   }
 }
 
-// Last frame's output history at `position` (output pixels): radiance bilinear, depths and
-// the own-sample count of the nearest texel.
+// Last frame's output history at `position` (output pixels): radiance bilinear over the taps
+// that hold own samples (a tap without is a placeholder, not "no cloud"), depths and the
+// own-sample count of the valid tap with the largest weight; no count when none is valid.
 vec4 outputHistoryAt(vec2 position, out vec2 depth, out uint ownSamples) {
   const vec2 p = position - 0.5f;
   const ivec2 i = ivec2(floor(p));
   const vec2 f = p - floor(p);
   const ivec2 last = ivec2(u.extent.zw) - 1;
-  const uvec4 h00 = imageLoad(outputHistory, clamp(i, ivec2(0), last));
-  const uvec4 h10 = imageLoad(outputHistory, clamp(i + ivec2(1, 0), ivec2(0), last));
-  const uvec4 h01 = imageLoad(outputHistory, clamp(i + ivec2(0, 1), ivec2(0), last));
-  const uvec4 h11 = imageLoad(outputHistory, clamp(i + ivec2(1, 1), ivec2(0), last));
-  const uvec4 nearest = f.y < 0.5f ? (f.x < 0.5f ? h00 : h10) : (f.x < 0.5f ? h01 : h11);
-  depth = unpackOutputHistoryDepth(nearest);
-  ownSamples = ownSampleCount(nearest);
-  return mix(mix(unpackCloudRadiance(h00), unpackCloudRadiance(h10), f.x),
-             mix(unpackCloudRadiance(h01), unpackCloudRadiance(h11), f.x), f.y);
+  vec4 radiance = vec4(0.0f);
+  float weightSum = 0.0f;
+  float bestWeight = 0.0f;
+  depth = vec2(0.0f);
+  ownSamples = 0u;
+  for (int tap = 0; tap < 4; ++tap) {
+    const ivec2 offset = ivec2(tap & 1, tap >> 1);
+    const uvec4 h = imageLoad(outputHistory, clamp(i + offset, ivec2(0), last));
+    const uint count = ownSampleCount(h);
+    const float bilinear = (offset.x == 1 ? f.x : 1.0f - f.x) * (offset.y == 1 ? f.y : 1.0f - f.y);
+    const float w = count > 0u ? bilinear : 0.0f;
+    radiance += w * unpackCloudRadiance(h);
+    weightSum += w;
+    if (w > bestWeight) {
+      bestWeight = w;
+      depth = unpackOutputHistoryDepth(h);
+      ownSamples = count;
+    }
+  }
+  return weightSum > 0.0f ? radiance / weightSum : vec4(0.0f, 0.0f, 0.0f, 1.0f);
 }
 
 // The depth-aware bilinear estimate from the four trace pixels around this one.
-void spatialEstimate(uvec2 pixel, float scene, vec2 scale, out vec4 radiance, out vec2 depth) {
+void spatialEstimate(uvec2 pixel, float scene, vec2 scale, out vec4 radiance, out vec2 depth,
+                     out vec4 lo, out vec4 hi) {
   const vec2 p = (vec2(pixel) + 0.5f) * scale - 0.5f;
   const ivec2 i = ivec2(floor(p));
   const vec2 f = p - floor(p);
   radiance = vec4(0.0f);
+  lo = vec4(1e30f);
+  hi = vec4(-1e30f);
   DepthBlend blend = depthBlendStart();
   for (int tap = 0; tap < 4; ++tap) {
     const ivec2 offset = ivec2(tap & 1, tap >> 1);
@@ -82,6 +97,8 @@ void spatialEstimate(uvec2 pixel, float scene, vec2 scale, out vec4 radiance, ou
     vec2 d = unpackCloudDepth(packed);
     occlude(scene, r, d);
     radiance += r * w;
+    lo = min(lo, r);
+    hi = max(hi, r);
     depthBlendAdd(blend, w, r.a, d);
   }
   depth = depthBlendResult(blend);
@@ -95,12 +112,13 @@ void main() {
   const float scene = sceneDistanceFromDepth(texelFetch(hostDepth, ivec2(pixel), 0).r,
                                              vec2(pixel) + 0.5f, vec2(full), u);
   const vec2 scale = vec2(u.extent.xy) / vec2(full);  // trace pixels per output pixel
-  vec4 radiance;
-  vec2 depth;
+  // The spatial estimate, and the range of the trace pixels it comes from.
+  vec4 spatial, lo, hi;
+  vec2 spatialDepth;
+  spatialEstimate(pixel, scene, scale, spatial, spatialDepth, lo, hi);
   if (kTemporalUpsampling == 0u) {
-    spatialEstimate(pixel, scene, scale, radiance, depth);
-    imageStore(outRadiance, ivec2(pixel), radiance);
-    imageStore(outDepth, ivec2(pixel), vec4(depth, 0.0f, 0.0f));
+    imageStore(outRadiance, ivec2(pixel), spatial);
+    imageStore(outDepth, ivec2(pixel), vec4(spatialDepth, 0.0f, 0.0f));
     return;
   }
 
@@ -125,10 +143,11 @@ void main() {
       historySamples = ownSampleCount(here);
     } else {
       // Reprojected through the cloud's weighted depth (as the trace history is,
-      // cloud_temporal.h; the history texel at this pixel gives the depth, close for a slow
-      // camera) and kept only where the reprojection is certain: on screen, below half the
-      // parallax that fully clamps the trace history.
-      const vec2 guide = unpackOutputHistoryDepth(imageLoad(outputHistory, ivec2(pixel)));
+      // cloud_temporal.h; this frame's reconstructed trace pixel under this one gives the
+      // depths) and kept only where the reprojection is certain: on screen, below half the
+      // parallax that fully clamps the trace history. Resampled every frame, the history
+      // blurs a little between own samples under motion (and under wind drift).
+      const vec2 guide = unpackCloudDepth(imageLoad(traceSamples, ivec2(trace)));
       const PreviousRay ray =
           previousRay(viewRayDirection(vec2(pixel) + 0.5f, vec2(full), u), u);
       const float far = u.march.z;
@@ -140,6 +159,10 @@ void main() {
       certain = all(greaterThanEqual(position, vec2(0.0f))) &&
                 all(lessThan(position, vec2(full))) && spreadTracePixels < 0.5f * u.temporal.w;
       history = outputHistoryAt(position, historyDepth, historySamples);
+      // Something moved (the camera, or the clouds' detail with the wind): the own samples
+      // may be stale; keep them within the range of this frame's trace pixels around.
+      const vec4 margin = (hi - lo) * u.temporal.y + vec4(0.002f);
+      history = clamp(history, lo - margin, hi + margin);
     }
     // Kept where no geometry now stands in front of it and it is finite; anything else starts
     // again from the spatial estimate.
@@ -178,18 +201,11 @@ void main() {
   // vouch for it. A single ray is a noisy point sample: shown alone next to pixels without
   // one, the first round of own samples would read as a dither pattern.
   const float trust = min(float(ownSamples) * 0.5f, 1.0f);
-  radiance = own;
-  depth = ownDepth;
-  if (trust < 1.0f) {
-    vec4 spatial;
-    vec2 spatialDepth;
-    spatialEstimate(pixel, scene, scale, spatial, spatialDepth);
-    DepthBlend blend = depthBlendStart();
-    depthBlendAdd(blend, 1.0f - trust, spatial.a, spatialDepth);
-    depthBlendAdd(blend, trust, own.a, ownDepth);
-    radiance = mix(spatial, own, trust);
-    depth = depthBlendResult(blend);
-  }
+  DepthBlend blend = depthBlendStart();
+  depthBlendAdd(blend, 1.0f - trust, spatial.a, spatialDepth);
+  depthBlendAdd(blend, trust, own.a, ownDepth);
+  const vec4 radiance = mix(spatial, own, trust);
+  const vec2 depth = depthBlendResult(blend);
   imageStore(outputHistoryOut, ivec2(pixel), packOutputHistory(own, ownDepth, ownSamples));
   imageStore(outRadiance, ivec2(pixel), radiance);
   imageStore(outDepth, ivec2(pixel), vec4(depth, 0.0f, 0.0f));

@@ -103,7 +103,11 @@ shader::CloudUniforms buildUniforms(const FrameInputs& in, const Settings& s,
                         (context.upsampleTemporally && context.useOutputHistory);
   if (subpixel) {
     const std::uint32_t m = s.traceScale <= 0.25f ? 4u : s.traceScale <= 0.5f ? 2u : 1u;
-    const std::uint32_t round = context.temporalIndex / (k * k);
+    // The frame after a reset (index 0) marches without accumulating: the rounds start at
+    // index 1, so that its pixels' next refresh (index k * k) is still in round 0.
+    const std::uint32_t index =
+        context.useOutputHistory ? std::max(context.temporalIndex, 1u) - 1u : context.temporalIndex;
+    const std::uint32_t round = index / (k * k);
     const glm::uvec2 outputPixel = tilePhase(m, round);
     const std::uint32_t n = (round / (m * m)) % 64u + 1u;
     const glm::vec2 inside(shader::halton(n, 2u), shader::halton(n, 3u));

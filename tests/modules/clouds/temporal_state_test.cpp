@@ -121,9 +121,11 @@ TEST(TemporalState, UpsamplingRaysVisitEveryOutputPixelOfTheirTracePixelFirst) {
     ASSERT_LT(glm::max(std::abs(offset.x), std::abs(offset.y)), 0.5f) << "inside the pixel";
     const glm::ivec2 outputPixel(glm::floor((offset + 0.5f) * 2.0f));
     hit.insert({outputPixel.x, outputPixel.y});
-    context.temporalIndex = round * 16 + 11;
-    EXPECT_EQ(glm::vec2(clouds::detail::buildUniforms(in, s, context).subpixel), offset)
-        << "one offset per round";
+    for (std::uint32_t frame : {1u, 11u, 16u}) {  // the frame after a reset is index 0
+      context.temporalIndex = round * 16 + frame;
+      EXPECT_EQ(glm::vec2(clouds::detail::buildUniforms(in, s, context).subpixel), offset)
+          << "one offset per round, frame " << frame;
+    }
   }
   EXPECT_EQ(hit.size(), 4u);
   // A frame rebuilt without output history marches through pixel centres.

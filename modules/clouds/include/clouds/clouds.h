@@ -175,7 +175,10 @@ struct Settings {
   // after 2 x updateInterval / traceScale^2 frames: 128 at High) instead of staying at the
   // trace resolution. Where the history is uncertain it falls back to the trace-resolution
   // reconstruction. Costs a second pair of output-resolution history images (16 bytes per
-  // pixel each) and about doubles the upsample pass (+3 ms at 640x360 on lavapipe).
+  // pixel each) and about doubles the upsample pass (+2 to 3 ms a frame at 640x360 on lavapipe).
+  // Sharpest with a still camera and still clouds; when anything moves (the camera, or the
+  // clouds' detail with the wind) the own samples are reprojected every frame and clamped to
+  // this frame's trace neighbourhood, which keeps less of the detail.
   bool temporalUpsampling = false;
   std::uint32_t upsamplingMaxSamples = 4;  // [1, 15] own samples averaged before the running mean
   float historyClampMargin = 0.1f;  // [0, 1] slack of the history clamp (x neighbourhood range)

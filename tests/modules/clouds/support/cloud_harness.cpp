@@ -292,7 +292,10 @@ void CloudHarness::poisonHistory() {
     // Packed samples (cloud_temporal.h): half-float NaN radiance, float NaN depths.
     VkClearColorValue nan{};
     nan.uint32[0] = nan.uint32[1] = 0x7E007E00u;
-    nan.uint32[2] = nan.uint32[3] = 0x7FC00000u;
+    // The weighted depth's low bits are the output history's own-sample count (3 here), so
+    // the poisoned texels claim to hold samples and must be caught as not finite.
+    nan.uint32[2] = 0x7FC00000u;
+    nan.uint32[3] = 0x7FC00003u;
     for (std::uint32_t i = 0; i < 2; ++i) {
       for (VkImage image :
            {context_->impl().history(i).image(), context_->impl().outputHistory(i).image()}) {
