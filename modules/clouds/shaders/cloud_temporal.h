@@ -117,6 +117,31 @@ CLOUDS_INLINE vec2 previousPosition(PreviousRay ray, float distance, vec2 extent
   return (vec2(clip) / clip.w * 0.5f + 0.5f) * extent;
 }
 
+// Where a pixel's cloud was on last frame's image (pixels of an image of `extent`): through
+// its weighted depth, or, without cloud, the far distance (empty sky reprojects like the
+// horizon). `spread`: how far apart (pixels) its nearest cloud front and the far distance
+// reproject, i.e. how much the answer depends on the depth: zero for a still or only turning
+// camera (exact), pixels when the camera moves past near cloud (parallax, disocclusion).
+struct Reprojection {
+  vec2 position;
+  float spread;
+  bool onScreen;
+};
+
+// `viewDirection`: the pixel's unit ray direction in this frame's view space; `cloudDepth`:
+// front and weighted depth (m), 0 without cloud.
+CLOUDS_INLINE Reprojection reprojectPixel(vec3 viewDirection, vec2 cloudDepth, vec2 extent,
+                                          IN(CloudUniforms) u) {
+  const PreviousRay ray = previousRay(viewDirection, u);
+  const float far = u.march.z;
+  Reprojection r;
+  r.position = previousPosition(ray, cloudDepth.y > 0.0f ? cloudDepth.y : far, extent);
+  const float nearest = cloudDepth.x > 0.0f ? cloudDepth.x : far;
+  r.spread = length(previousPosition(ray, nearest, extent) - previousPosition(ray, far, extent));
+  r.onScreen = all(greaterThanEqual(r.position, vec2(0.0f))) && all(lessThan(r.position, extent));
+  return r;
+}
+
 CLOUDS_INLINE bool finiteVec4(vec4 v) {
   return !(any(isnan(v)) || any(isinf(v)));
 }

@@ -93,9 +93,8 @@ struct CloudUniforms {
   vec4 emptySpace;            // x fine cell (m), y coarse cell (m), zw unused
   vec4 subpixel;              // xy this frame's offset of the rays inside their pixels (trace
                   //   pixels, jitter mode 2; accumulating frames supersamples), zw unused
-  vec4 upsampling;  // temporal upsampling: x 1 when last frame's output-resolution
-                    //   history is valid, y own samples averaged before the running
-                    //   mean, zw unused
+  vec4 upsampling;         // temporal upsampling: x own samples averaged before the running
+                           //   mean (Settings::upsamplingMaxSamples), yzw unused
 };
 CLOUDS_STATIC_ASSERT(sizeof(CloudUniforms) == 3 * 64 + 27 * 16);
 

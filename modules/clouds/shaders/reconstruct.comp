@@ -78,46 +78,36 @@ void main() {
   const vec2 currentDepth = depthBlendResult(blend);
   const bool fresh = isFreshPixel(pixel, u);
 
-  vec4 result = current;
-  vec2 resultDepth = currentDepth;
+  // Last frame's result for this pixel, and whether it can be used.
+  vec4 previous = current;
+  vec2 historyDepth = currentDepth;
+  bool usable = false;
   if (kHistory == 1u) {
     const uvec4 texel = imageLoad(history, ivec2(pixel));
-    const vec4 previous = unpackCloudRadiance(texel);
-    const vec2 historyDepth = unpackCloudDepth(texel);
-    if (finiteVec4(previous) && !any(isnan(historyDepth))) {
-      result = fresh ? mix(previous, current, u.temporal.x) : previous;
-      resultDepth = fresh ? currentDepth : historyDepth;
-    }
+    previous = unpackCloudRadiance(texel);
+    historyDepth = unpackCloudDepth(texel);
+    usable = finiteVec4(previous) && !any(isnan(historyDepth));
   } else if (kHistory == 2u) {
-    // Where was this pixel's cloud last frame? Through its weighted depth (or, without cloud,
-    // the far distance: empty sky reprojects like the horizon).
-    const PreviousRay ray =
-        previousRay(viewRayDirection(vec2(pixel) + 0.5f, vec2(u.extent.xy), u), u);
-    const float far = u.march.z;
-    const vec2 trace = vec2(u.extent.xy);
-    const vec2 position = previousPosition(ray, currentDepth.y > 0.0f ? currentDepth.y : far, trace);
-    // How much the answer depends on the depth: the nearest cloud front around this pixel and
-    // the far distance reproject this far apart. Zero for a static or only turning camera
-    // (exact reprojection: keep the history whole, so small clouds seen by few fresh samples
-    // survive); pixels apart when the camera moves past near cloud (parallax, disocclusion:
-    // trust this frame's fresh neighbourhood instead).
-    const float nearest = currentDepth.x > 0.0f ? currentDepth.x : far;
-    const float spread = length(previousPosition(ray, nearest, trace) - previousPosition(ray, far, trace));
-    const bool onScreen = all(greaterThanEqual(position, vec2(0.0f))) &&
-                          all(lessThan(position, vec2(u.extent.xy)));
-    vec2 historyDepth;
-    const vec4 previous = historyAt(position, historyDepth);
-    if (onScreen && finiteVec4(previous) && !any(isnan(historyDepth))) {
-      // Clamp to the range of the fresh samples around the pixel (Karis-style box), as far
-      // as the reprojection is uncertain.
-      const vec4 lo = min(min(r00, r10), min(r01, r11));
-      const vec4 hi = max(max(r00, r10), max(r01, r11));
-      const vec4 margin = (hi - lo) * u.temporal.y + vec4(0.002f);
-      const float clampStrength = saturate(spread / u.temporal.w);
-      const vec4 trusted = mix(previous, clamp(previous, lo - margin, hi + margin), clampStrength);
-      result = fresh ? mix(trusted, current, u.temporal.x) : trusted;
-      resultDepth = fresh ? currentDepth : historyDepth;
-    }
+    // Where was this pixel's cloud last frame (cloud_temporal.h)? Where the reprojection
+    // depends on the depth (spread), the history is clamped to the range of the fresh
+    // samples around the pixel (Karis-style box); a static or only turning camera keeps it
+    // whole, so small clouds seen by few fresh samples survive.
+    const Reprojection reprojected = reprojectPixel(
+        viewRayDirection(vec2(pixel) + 0.5f, vec2(u.extent.xy), u), currentDepth,
+        vec2(u.extent.xy), u);
+    previous = historyAt(reprojected.position, historyDepth);
+    usable = reprojected.onScreen && finiteVec4(previous) && !any(isnan(historyDepth));
+    const vec4 lo = min(min(r00, r10), min(r01, r11));
+    const vec4 hi = max(max(r00, r10), max(r01, r11));
+    const vec4 margin = (hi - lo) * u.temporal.y + vec4(0.002f);
+    const float clampStrength = saturate(reprojected.spread / u.temporal.w);
+    previous = mix(previous, clamp(previous, lo - margin, hi + margin), clampStrength);
+  }
+  vec4 result = current;
+  vec2 resultDepth = currentDepth;
+  if (usable) {
+    result = fresh ? mix(previous, current, u.temporal.x) : previous;
+    resultDepth = fresh ? currentDepth : historyDepth;
   }
   imageStore(outSamples, ivec2(pixel), packCloudSample(result, resultDepth));
 }

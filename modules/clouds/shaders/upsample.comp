@@ -39,10 +39,13 @@ layout(binding = 7, rgba32ui) uniform writeonly uimage2D outputHistoryOut;
 
 #include "cloud_march.h"
 
-// A cloud sample seen through this pixel's geometry: none of it when its nearest cloud is
-// behind the geometry.
+// Whether all of a cloud sample (front and weighted depth, m) lies behind this pixel's
+// geometry (at `scene` m).
+bool behindGeometry(float scene, vec2 depth) { return depth.x > 0.0f && scene < depth.x; }
+
+// A cloud sample seen through this pixel's geometry: none of it when it is behind it.
 void occlude(float scene, inout vec4 radiance, inout vec2 depth) {
-  if (depth.x > 0.0f && scene < depth.x) {
+  if (behindGeometry(scene, depth)) {
     radiance = vec4(0.0f, 0.0f, 0.0f, 1.0f);
     depth = vec2(0.0f);
   }
@@ -147,18 +150,11 @@ void main() {
       // depths) and kept only where the reprojection is certain: on screen, below half the
       // parallax that fully clamps the trace history. Resampled every frame, the history
       // blurs a little between own samples under motion (and under wind drift).
-      const vec2 guide = unpackCloudDepth(imageLoad(traceSamples, ivec2(trace)));
-      const PreviousRay ray =
-          previousRay(viewRayDirection(vec2(pixel) + 0.5f, vec2(full), u), u);
-      const float far = u.march.z;
-      const vec2 position = previousPosition(ray, guide.y > 0.0f ? guide.y : far, vec2(full));
-      const float nearest = guide.x > 0.0f ? guide.x : far;
-      const float spreadTracePixels = length(previousPosition(ray, nearest, vec2(full)) -
-                                             previousPosition(ray, far, vec2(full))) *
-                                      scale.x;
-      certain = all(greaterThanEqual(position, vec2(0.0f))) &&
-                all(lessThan(position, vec2(full))) && spreadTracePixels < 0.5f * u.temporal.w;
-      history = outputHistoryAt(position, historyDepth, historySamples);
+      const Reprojection reprojected = reprojectPixel(
+          viewRayDirection(vec2(pixel) + 0.5f, vec2(full), u),
+          unpackCloudDepth(imageLoad(traceSamples, ivec2(trace))), vec2(full), u);
+      certain = reprojected.onScreen && reprojected.spread * scale.x < 0.5f * u.temporal.w;
+      history = outputHistoryAt(reprojected.position, historyDepth, historySamples);
       // Something moved (the camera, or the clouds' detail with the wind): the own samples
       // may be stale; keep them within the range of this frame's trace pixels around.
       const vec4 margin = (hi - lo) * u.temporal.y + vec4(0.002f);
@@ -166,9 +162,8 @@ void main() {
     }
     // Kept where no geometry now stands in front of it and it is finite; anything else starts
     // again from the spatial estimate.
-    const bool occluded = historyDepth.x > 0.0f && scene < historyDepth.x;
-    if (certain && historySamples > 0u && !occluded && finiteVec4(history) &&
-        !any(isnan(historyDepth))) {
+    if (certain && historySamples > 0u && !behindGeometry(scene, historyDepth) &&
+        finiteVec4(history) && !any(isnan(historyDepth))) {
       own = history;
       ownDepth = historyDepth;
       ownSamples = historySamples;
@@ -183,16 +178,15 @@ void main() {
       const uvec4 packed = imageLoad(freshSamples, ivec2(trace));
       const vec4 r = unpackCloudRadiance(packed);
       const vec2 d = unpackCloudDepth(packed);
-      const bool hidden = d.x > 0.0f && scene < d.x;
-      if (!hidden && finiteVec4(r) && !any(isnan(d))) {
+      if (!behindGeometry(scene, d) && finiteVec4(r) && !any(isnan(d))) {
         // The mean of the own samples so far, then a running mean over the last few.
-        const float weight = 1.0f / min(float(ownSamples) + 1.0f, u.upsampling.y);
+        const float weight = 1.0f / min(float(ownSamples) + 1.0f, u.upsampling.x);
         DepthBlend blend = depthBlendStart();
         depthBlendAdd(blend, 1.0f - weight, own.a, ownDepth);
         depthBlendAdd(blend, weight, r.a, d);
         own = mix(own, r, weight);
         ownDepth = depthBlendResult(blend);
-        ownSamples = min(ownSamples + 1u, uint(u.upsampling.y));
+        ownSamples = min(ownSamples + 1u, uint(u.upsampling.x));
       }
     }
   }

@@ -586,7 +586,6 @@ void Context::Impl::dispatch(const FrameInputs& inputs, const Settings& settings
   uniformContext.tileSize = temporal.tileSize;
   uniformContext.phase = temporal.phase;
   uniformContext.useHistory = temporal.useHistory;
-  uniformContext.upsampleTemporally = temporal.upsampleTemporally;
   uniformContext.useOutputHistory = temporal.useOutputHistory;
   uniformContext.cameraDelta = temporal.cameraDelta;
   uniformContext.deltaSeconds = temporal.deltaSeconds;

@@ -99,8 +99,7 @@ shader::CloudUniforms buildUniforms(const FrameInputs& in, const Settings& s,
   // rounds move inside them along a Halton (2, 3) sequence, so temporal upsampling gets an own
   // sample for every output pixel as early as possible. Temporal upsampling only moves the
   // rays while it accumulates: a frame rebuilt from its own samples wants them centred.
-  const bool subpixel = s.jitter == Jitter::BayerHaltonSubpixel ||
-                        (context.upsampleTemporally && context.useOutputHistory);
+  const bool subpixel = s.jitter == Jitter::BayerHaltonSubpixel || context.useOutputHistory;
   if (subpixel) {
     const std::uint32_t m = s.traceScale <= 0.25f ? 4u : s.traceScale <= 0.5f ? 2u : 1u;
     // The frame after a reset (index 0) marches without accumulating: the rounds start at
@@ -113,8 +112,7 @@ shader::CloudUniforms buildUniforms(const FrameInputs& in, const Settings& s,
     const glm::vec2 inside(shader::halton(n, 2u), shader::halton(n, 3u));
     u.subpixel = glm::vec4((glm::vec2(outputPixel) + inside) / float(m) - 0.5f, 0.0f, 0.0f);
   }
-  u.upsampling = glm::vec4(context.useOutputHistory ? 1.0f : 0.0f,
-                           static_cast<float>(s.upsamplingMaxSamples), 0.0f, 0.0f);
+  u.upsampling = glm::vec4(static_cast<float>(s.upsamplingMaxSamples), 0.0f, 0.0f, 0.0f);
   const float weatherTexel = s.weatherTileMetres / float(shader::kWeatherMapSize);
   u.emptySpace = glm::vec4(
       weatherTexel * float(shader::kWeatherMapSize / shader::kWeatherMaxFineSize),

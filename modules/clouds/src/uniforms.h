@@ -17,10 +17,9 @@ struct UniformContext {
   std::uint32_t tileSize = 1;
   glm::uvec2 phase{0, 0};
   bool useHistory = false;
-  bool upsampleTemporally = false;  // Settings::temporalUpsampling in effect
-  bool useOutputHistory = false;    // and last frame's output-resolution history is valid
-  glm::dvec3 cameraDelta{0.0};      // camera position now minus last frame's (m)
-  double deltaSeconds = 0.0;        // time since last frame (s), for the wind's drift
+  bool useOutputHistory = false;  // temporal upsampling reads last frame's output history
+  glm::dvec3 cameraDelta{0.0};    // camera position now minus last frame's (m)
+  double deltaSeconds = 0.0;      // time since last frame (s), for the wind's drift
 };
 
 shader::CloudUniforms buildUniforms(const FrameInputs& inputs, const Settings& settings,

@@ -113,7 +113,7 @@ TEST(TemporalState, UpsamplingRaysVisitEveryOutputPixelOfTheirTracePixelFirst) {
   context.traceExtent = {80, 45};
   context.fullExtent = {160, 90};
   context.tileSize = 4;
-  context.useHistory = context.upsampleTemporally = context.useOutputHistory = true;
+  context.useHistory = context.useOutputHistory = true;
   std::set<std::pair<int, int>> hit;
   for (std::uint32_t round = 0; round < 4; ++round) {
     context.temporalIndex = round * 16 + 5;
