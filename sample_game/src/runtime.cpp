@@ -7,7 +7,6 @@
 #include <thread>
 
 #include "clouds/ecs/cloud_components.h"
-#include "clouds/ecs/cloud_renderer.h"
 #include "engine/core/error.h"
 #include "engine/core/log.h"
 #include "engine/ecs/app.h"
@@ -17,6 +16,7 @@
 #include "engine/platform/input.h"
 #include "engine/platform/window.h"
 #include "engine/render/present_target.h"
+#include "engine/render/render_feature.h"
 #include "game/game_components.h"
 #include "game/input_script.h"
 #include "render/renderer.h"
@@ -28,6 +28,65 @@ namespace {
 
 using namespace engine;
 
+// Everything data-driven, loaded and checked before any window or device exists.
+struct RunPlan {
+  Options options;
+  bool windowed = false;
+  SceneDescription scene;
+  std::optional<InputScript> script;
+  std::optional<LoadedTerrain> terrain;
+};
+
+// The display the run presents to: a window's swapchain, or an offscreen image.
+struct Presentation {
+  std::unique_ptr<render::PresentTarget> target;
+  render::SwapchainTarget* swapchain = nullptr;  // the target, when windowed
+};
+
+// What the frame loop measured.
+struct LoopStats {
+  std::uint64_t measuredFrames = 0;
+  double measuredSeconds = 0.0;
+};
+
+constexpr std::uint64_t kWarmUpFrames = 3;  // noise generation and shader JIT happen first
+
+RunPlan planRun(Options options) {
+  RunPlan plan;
+  plan.windowed = !options.headless && platform::Window::displayAvailable();
+  if (!options.headless && !plan.windowed && !options.describe) {
+    log::info("no display found (DISPLAY/WAYLAND_DISPLAY unset): running headless");
+    if (options.frames == 0) options.frames = 5;
+    if (!options.captureDir) options.captureDir = "out";
+  }
+  if (options.scene.empty()) {
+    options.scene = std::filesystem::path(CLOUDSCAPE_ASSET_SOURCE_DIR) / "scenes/default.json";
+  }
+  plan.scene = loadSceneDescription(options.scene);
+  if (options.cloudQuality) plan.scene.camera.cloudQuality = *options.cloudQuality;
+  if (options.script) plan.script = InputScript::load(*options.script);
+  if (!plan.windowed && options.frames == 0) {
+    options.frames = plan.script ? static_cast<std::uint32_t>(plan.script->lastFrame() + 1) : 1;
+  }
+  if (options.describe) options.frames = 1;
+  plan.terrain = loadTerrain(plan.scene, CLOUDSCAPE_DEFAULT_TERRAIN, options.terrain);
+  plan.options = std::move(options);
+  return plan;
+}
+
+Presentation createPresentation(gfx::Device& device, VkSurfaceKHR surface, const RunPlan& plan) {
+  Presentation p;
+  if (surface != VK_NULL_HANDLE) {
+    auto swapchain = std::make_unique<render::SwapchainTarget>(device, surface, plan.options.vsync);
+    p.swapchain = swapchain.get();
+    p.target = std::move(swapchain);
+  } else {
+    p.target = std::make_unique<render::OffscreenTarget>(
+        device, VkExtent2D{plan.options.width, plan.options.height});
+  }
+  return p;
+}
+
 std::filesystem::path frameStem(const std::filesystem::path& dir, const char* prefix,
                                 std::uint64_t frame) {
   char name[48];
@@ -35,162 +94,162 @@ std::filesystem::path frameStem(const std::filesystem::path& dir, const char* pr
   return dir / name;
 }
 
-std::string joined(const std::vector<std::string>& names) {
+// One frame's input: the window's (and its keys that act outside the game), or the script's.
+// Returns false when the window asked to close.
+bool gatherInput(ecs::World& world, platform::Window* window, render::SwapchainTarget* swapchain,
+                 const RunPlan& plan, std::uint64_t frame, platform::InputState& scriptInput,
+                 std::uint64_t& screenshots) {
+  auto& input = world.ctx().get<platform::InputState>();
+  if (window != nullptr) {
+    window->pollEvents();
+    if (window->shouldClose() || window->input().wasPressed(platform::Key::Escape)) return false;
+    swapchain->resize(window->framebufferExtent());
+    if (window->minimized()) std::this_thread::sleep_for(std::chrono::milliseconds(16));
+    if (window->input().wasPressed(platform::Key::M)) {
+      window->setMouseCaptured(!window->input().mouseCaptured);
+    }
+    input = window->input();
+    if (input.wasPressed(platform::Key::F12)) {
+      world.ctx().get<CaptureRequest>().stem = frameStem("screenshots", "screenshot", screenshots++);
+    }
+    return true;
+  }
+  scriptInput.beginFrame();  // the script's "keyboard": keys stay down until released
+  if (plan.script) plan.script->apply(frame, scriptInput, world);
+  input = scriptInput;
+  return true;
+}
+
+LoopStats runFrames(ecs::App& app, platform::Window* window, render::SwapchainTarget* swapchain,
+                    const RunPlan& plan) {
+  ecs::World& world = app.world();
+  const Options& options = plan.options;
+  auto& time = world.ctx().get<ecs::FrameTime>();
+  platform::InputState scriptInput;
+  std::uint64_t screenshots = 0;
+  auto last = std::chrono::steady_clock::now();
+  auto measureStart = last;
+  LoopStats stats;
+  for (std::uint64_t frame = 0; options.frames == 0 || frame < options.frames; ++frame) {
+    if (!gatherInput(world, window, swapchain, plan, frame, scriptInput, screenshots)) break;
+    const auto now = std::chrono::steady_clock::now();
+    const double measured = std::chrono::duration<double>(now - last).count();
+    last = now;
+    const double dt = options.fixedDtSeconds > 0.0 ? options.fixedDtSeconds
+                                                   : (frame == 0 ? 0.0 : std::min(measured, 0.25));
+    time = frame == 0 ? ecs::FrameTime{dt, 0.0, 0} : time.next(dt);
+    const bool lastFrame = options.frames != 0 && frame + 1 == options.frames;
+    if (options.captureDir && (options.captureEveryFrame || (lastFrame && !plan.script))) {
+      world.ctx().get<CaptureRequest>().stem = frameStem(*options.captureDir, "frame", frame);
+    }
+    app.runFrame();
+    if (frame + 1 == kWarmUpFrames) measureStart = std::chrono::steady_clock::now();
+    if (frame + 1 > kWarmUpFrames) ++stats.measuredFrames;
+    if (world.ctx().get<ExitRequest>().requested) break;
+  }
+  stats.measuredSeconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - measureStart).count();
+  return stats;
+}
+
+std::string joined(const std::vector<std::string>& names, const char* quote, const char* comma) {
   std::string out;
-  for (const auto& n : names) out += (out.empty() ? "\"" : ", \"") + n + "\"";
+  for (const auto& n : names) out += (out.empty() ? "" : comma) + (quote + n + quote);
   return out;
+}
+
+std::string timingList(const std::vector<std::pair<std::string, double>>& timings) {
+  std::string out;
+  for (const auto& [name, ms] : timings) {
+    char entry[96];
+    std::snprintf(entry, sizeof(entry), "%s%s %.2f ms", out.empty() ? "" : ", ", name.c_str(), ms);
+    out += entry;
+  }
+  return out;
+}
+
+void printDescription(const ecs::App& app, const Renderer& renderer, const RunPlan& plan) {
+  std::vector<std::string> modules;
+  for (auto m : app.installedModules()) modules.emplace_back(m);
+  std::printf("{\"scene\": \"%s\", \"passes\": [%s], \"pipelines\": [%s], \"modules\": [%s]}\n",
+              plan.scene.name.c_str(), joined(renderer.passNames(), "\"", ", ").c_str(),
+              joined(renderer.pipelineNames(), "\"", ", ").c_str(),
+              joined(modules, "\"", ", ").c_str());
+}
+
+void logRun(ecs::World& world, const Renderer& renderer, const LoopStats& stats) {
+  if (stats.measuredFrames > 0) {
+    char line[160];
+    std::snprintf(line, sizeof(line),
+                  "frame rate: %.2f fps (%.1f ms per frame) over %llu frames after %llu warm-up",
+                  double(stats.measuredFrames) / stats.measuredSeconds,
+                  stats.measuredSeconds * 1000.0 / double(stats.measuredFrames),
+                  static_cast<unsigned long long>(stats.measuredFrames),
+                  static_cast<unsigned long long>(kWarmUpFrames));
+    log::info(line);
+  }
+  log::info("frame graph passes: " + joined(renderer.passNames(), "", ", "));
+  std::vector<std::pair<std::string, double>> gpu;
+  for (const auto& scope : renderer.lastGpuTimings()) gpu.emplace_back(scope.name, scope.milliseconds);
+  log::info("GPU time of the last frame: " + timingList(gpu));
+  const auto* clouds = world.ctx().tryGet<clouds::ecs::CloudStatus>();
+  if (clouds == nullptr) return;
+  const ::clouds::FrameReport& r = clouds->report;
+  log::info("clouds, last frame: trace " + std::to_string(r.traceExtent.width) + "x" +
+            std::to_string(r.traceExtent.height) + ", 1 in " +
+            std::to_string(r.tileSize * r.tileSize) + " pixels marched, " +
+            (r.historyUsed ? std::string("history reprojected")
+                           : "no history: " + std::string(r.resetReason)));
+  std::vector<std::pair<std::string, double>> passes;
+  for (const auto& p : clouds->passTimings) passes.emplace_back(p.name, p.milliseconds);
+  if (!passes.empty()) log::info("clouds passes, last frame: " + timingList(passes));
+  char memory[96];
+  std::snprintf(memory, sizeof(memory), "clouds GPU memory: %.1f MiB",
+                double(clouds->memory.totalBytes()) / (1024.0 * 1024.0));
+  log::info(memory);
 }
 
 }  // namespace
 
-int run(Options options) {
-  const bool windowed = !options.headless && platform::Window::displayAvailable();
-  if (!options.headless && !windowed && !options.describe) {
-    log::info("no display found (DISPLAY/WAYLAND_DISPLAY unset): running headless");
-    if (options.frames == 0) options.frames = 5;
-    if (!options.captureDir) options.captureDir = "out";
-  }
-  if (options.scene.empty()) options.scene = std::filesystem::path(CLOUDSCAPE_ASSET_SOURCE_DIR) / "scenes/default.json";
-  SceneDescription scene = loadSceneDescription(options.scene);
-  if (options.cloudQuality) scene.camera.cloudQuality = *options.cloudQuality;
-  std::optional<InputScript> script;
-  if (options.script) script = InputScript::load(*options.script);
-  if (!windowed && options.frames == 0) {
-    options.frames = script ? static_cast<std::uint32_t>(script->lastFrame() + 1) : 1;
-  }
-  if (options.describe) options.frames = 1;
-
-  // Everything data-driven is loaded and checked before any window or device exists.
-  ecs::App app;
-  populateScene(app, scene, CLOUDSCAPE_DEFAULT_TERRAIN, options.terrain);
+int run(Options commandLine) {
+  const RunPlan plan = planRun(std::move(commandLine));
+  const Options& options = plan.options;
 
   std::unique_ptr<platform::Window> window;
   gfx::InstanceDesc instanceDesc;
   instanceDesc.appName = "cloudscape sample";
   instanceDesc.validation = options.validation || gfx::validationRequestedByEnvironment();
-  if (windowed) {
+  if (plan.windowed) {
     window = std::make_unique<platform::Window>(
-        platform::WindowDesc{"cloudscape: " + scene.name, options.width, options.height});
+        platform::WindowDesc{"cloudscape: " + plan.scene.name, options.width, options.height});
     instanceDesc.extensions = window->requiredInstanceExtensions();
   }
   gfx::Instance instance(instanceDesc);
   VkSurfaceKHR surface = window ? window->createSurface(instance.vk()) : VK_NULL_HANDLE;
-
-  int exitCode = 0;
   {
     gfx::Device device(instance, gfx::DeviceDesc{surface, options.device});
-    std::unique_ptr<render::PresentTarget> target;
-    render::SwapchainTarget* swapchainTarget = nullptr;
-    if (window) {
-      auto swapchain = std::make_unique<render::SwapchainTarget>(device, surface, options.vsync);
-      swapchainTarget = swapchain.get();
-      target = std::move(swapchain);
-    } else {
-      target = std::make_unique<render::OffscreenTarget>(device, VkExtent2D{options.width, options.height});
-    }
+    Presentation presentation = createPresentation(device, surface, plan);
 
     RendererOptions rendererOptions;
     rendererOptions.maxExtent = {std::max(options.width, 3840u), std::max(options.height, 2160u)};
     rendererOptions.captureDirectory = options.captureDir.value_or("out");
-    rendererOptions.hud = windowed && options.hud;
-    Renderer renderer(device, *target, app.world(), rendererOptions);
+    rendererOptions.hud = plan.windowed && options.hud;
+    // Declared after the device: the modules' GPU objects go before it does.
+    ecs::App app;
+    app.world().ctx().emplace<render::RenderDevice>(render::RenderDevice{
+        &device, Renderer::kHdrFormat, Renderer::kDepthFormat, gfx::FrameRing::kFramesInFlight,
+        rendererOptions.maxExtent});
+    populateScene(app, plan.scene, plan.terrain);
+    Renderer renderer(device, *presentation.target, app.world(), rendererOptions);
     app.scheduler().add(ecs::Phase::Render, "render frame",
                         [&renderer](ecs::World& world) { renderer.renderFrame(world); });
 
-    ecs::World& world = app.world();
-    auto& time = world.ctx().get<ecs::FrameTime>();
-    auto& input = world.ctx().get<platform::InputState>();
-    auto& capture = world.ctx().get<CaptureRequest>();
-    auto& exit = world.ctx().get<ExitRequest>();
-    platform::InputState scriptInput;  // the script's "keyboard": keys stay down until released
-    auto last = std::chrono::steady_clock::now();
-    auto measureStart = last;
-    std::uint64_t measuredFrames = 0;
-    constexpr std::uint64_t kWarmUpFrames = 3;  // noise generation and JIT happen first
-    std::uint64_t screenshot = 0;
-    for (std::uint64_t frame = 0; options.frames == 0 || frame < options.frames; ++frame) {
-      if (window) {
-        window->pollEvents();
-        if (window->shouldClose() || window->input().wasPressed(platform::Key::Escape)) break;
-        swapchainTarget->resize(window->framebufferExtent());
-        if (window->minimized()) std::this_thread::sleep_for(std::chrono::milliseconds(16));
-        if (window->input().wasPressed(platform::Key::M)) {
-          window->setMouseCaptured(!window->input().mouseCaptured);
-        }
-        input = window->input();
-        if (input.wasPressed(platform::Key::F12)) {
-          capture.stem = frameStem("screenshots", "screenshot", screenshot++);
-        }
-      } else {
-        scriptInput.beginFrame();
-        if (script) script->apply(frame, scriptInput, world);
-        input = scriptInput;
-      }
-      const auto now = std::chrono::steady_clock::now();
-      const double measured = std::chrono::duration<double>(now - last).count();
-      last = now;
-      const double dt = options.fixedDtSeconds > 0.0 ? options.fixedDtSeconds
-                                                     : (frame == 0 ? 0.0 : std::min(measured, 0.25));
-      time = frame == 0 ? ecs::FrameTime{dt, 0.0, 0} : time.next(dt);
-      const bool lastFrame = options.frames != 0 && frame + 1 == options.frames;
-      if (options.captureDir && (options.captureEveryFrame || (lastFrame && !script))) {
-        capture.stem = frameStem(*options.captureDir, "frame", frame);
-      }
-      app.runFrame();
-      if (frame + 1 == kWarmUpFrames) measureStart = std::chrono::steady_clock::now();
-      if (frame + 1 > kWarmUpFrames) ++measuredFrames;
-      if (exit.requested) break;
-    }
+    const LoopStats stats = runFrames(app, window.get(), presentation.swapchain, plan);
     renderer.finish();
-    if (measuredFrames > 0) {
-      const double seconds =
-          std::chrono::duration<double>(std::chrono::steady_clock::now() - measureStart).count();
-      char line[160];
-      std::snprintf(line, sizeof(line),
-                    "frame rate: %.2f fps (%.1f ms per frame) over %llu frames after %llu warm-up",
-                    double(measuredFrames) / seconds, seconds * 1000.0 / double(measuredFrames),
-                    static_cast<unsigned long long>(measuredFrames),
-                    static_cast<unsigned long long>(kWarmUpFrames));
-      log::info(line);
-    }
     if (options.describe) {
-      std::printf("{\"scene\": \"%s\", \"passes\": [%s], \"pipelines\": [%s], \"modules\": [%s]}\n",
-                  scene.name.c_str(), joined(renderer.passNames()).c_str(),
-                  joined(renderer.pipelineNames()).c_str(),
-                  joined([&] {
-                    std::vector<std::string> modules;
-                    for (auto m : app.installedModules()) modules.emplace_back(m);
-                    return modules;
-                  }()).c_str());
+      printDescription(app, renderer, plan);
     } else {
-      std::string passes;
-      for (const auto& name : renderer.passNames()) passes += (passes.empty() ? "" : ", ") + name;
-      log::info("frame graph passes: " + passes);
-      std::string timings;
-      for (const auto& scope : renderer.lastGpuTimings()) {
-        char entry[96];
-        std::snprintf(entry, sizeof(entry), "%s%s %.2f ms", timings.empty() ? "" : ", ", scope.name,
-                      scope.milliseconds);
-        timings += entry;
-      }
-      log::info("GPU time of the last frame: " + timings);
-      const auto* clouds = world.ctx().tryGet<clouds::ecs::CloudRendererRef>();
-      if (clouds != nullptr && clouds->renderer != nullptr) {
-        const ::clouds::FrameReport r = clouds->renderer->context().lastFrameReport();
-        log::info("clouds, last frame: trace " + std::to_string(r.traceExtent.width) + "x" +
-                  std::to_string(r.traceExtent.height) + ", 1 in " +
-                  std::to_string(r.tileSize * r.tileSize) + " pixels marched, " +
-                  (r.historyUsed ? std::string("history reprojected")
-                                 : "no history: " + std::string(r.resetReason)));
-        std::string cloudPasses;
-        for (const auto& p : clouds->renderer->context().passTimings(time.frameIndex)) {
-          char entry[96];
-          std::snprintf(entry, sizeof(entry), "%s%s %.2f ms", cloudPasses.empty() ? "" : ", ",
-                        p.name, p.milliseconds);
-          cloudPasses += entry;
-        }
-        if (!cloudPasses.empty()) log::info("clouds passes, last frame: " + cloudPasses);
-      }
+      logRun(app.world(), renderer, stats);
     }
     if (options.captureDir) {
       std::printf("captured frames are in %s\n",
@@ -201,9 +260,9 @@ int run(Options options) {
   if (instance.validationEnabled() && instance.validationMessageCount() > 0) {
     log::error(std::to_string(instance.validationMessageCount()) +
                " Vulkan validation message(s): failing the run");
-    exitCode = 3;
+    return 3;
   }
-  return exitCode;
+  return 0;
 }
 
 }  // namespace sample

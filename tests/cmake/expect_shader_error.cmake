@@ -2,7 +2,7 @@
 # output names broken.comp:3.
 file(REMOVE_RECURSE ${BINARY_DIR})
 execute_process(COMMAND ${CMAKE_COMMAND} -S ${SOURCE_DIR} -B ${BINARY_DIR} -G Ninja
-                        -DCLOUDS_MODULE_DIR=${CLOUDS_MODULE_DIR}
+                        -DSHADER_CMAKE=${SHADER_CMAKE} -DSHADER_FUNCTION=${SHADER_FUNCTION}
                 RESULT_VARIABLE configure_result OUTPUT_QUIET)
 if(NOT configure_result EQUAL 0)
   message(FATAL_ERROR "configuring the check project failed")

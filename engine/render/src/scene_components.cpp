@@ -11,4 +11,8 @@ glm::mat4 viewRotation(const Camera& camera) {
   return lookTo(glm::vec3(0.0f), glm::vec3(forwardOf(camera)), glm::vec3(upOf(camera)));
 }
 
+glm::mat4 projectionOf(const Camera& camera, float aspect) {
+  return perspectiveReversedZ(camera.verticalFovRadians, aspect, camera.nearMetres);
+}
+
 }  // namespace engine::render

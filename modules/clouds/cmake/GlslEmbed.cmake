@@ -2,7 +2,8 @@
 #                    [TARGET_ENV vulkan1.2|vulkan1.3])
 #
 # Lives with the clouds module so the module builds on its own when dropped into another
-# project; the rest of the repository uses it too (cloudscape_add_shaders is an alias).
+# project (the engine has its own, cmake/CloudscapeShaders.cmake: neither reaches into the
+# other).
 #
 # Compiles each GLSL source with glslangValidator at build time into a C header holding the
 # SPIR-V words (`const uint32_t <file>_<stage>_spv[]`, internal linkage) under

@@ -34,14 +34,20 @@ CLOUDS_INLINE float heightGradient(float heightFraction, float type) {
          remapClamped(heightFraction, r.z, r.w, 1.0f, 0.0f);
 }
 
-// Decodes an RGBA8 weather texel under the global settings: coverage = texel + 2 c - 1 (so
-// c = 0 is a clear sky, c = 1 overcast, 0.5 the map as painted), type = settings type moved by
-// the map's variation, density = mix(1, texel density, variation).
+// The coverage of a weather texel under the global coverage c: texel + 2 c - 1, so c = 0 is a
+// clear sky, c = 1 overcast and 0.5 the map as painted. (The host side uses it too, to know a
+// sky that cannot hold cloud.)
+CLOUDS_INLINE float layerCoverage(float weatherCoverage, float coverage) {
+  return saturate(weatherCoverage + 2.0f * coverage - 1.0f);
+}
+
+// Decodes an RGBA8 weather texel under the global settings: coverage by layerCoverage(), type
+// = settings type moved by the map's variation, density = mix(1, texel density, variation).
 CLOUDS_INLINE WeatherSample decodeWeather(vec4 texel, IN(CloudUniforms) u) {
   WeatherSample w;
-  w.coverage = saturate(texel.x + 2.0f * u.density.y - 1.0f);
-  w.type = saturate(u.density.z + (texel.y - 0.5f) * u.density.w);
-  w.density = mix(1.0f, saturate(texel.z), saturate(u.shape.w));
+  w.coverage = layerCoverage(texel.x, u.coverage);
+  w.type = saturate(u.cloudType + (texel.y - 0.5f) * u.typeVariation);
+  w.density = mix(1.0f, saturate(texel.z), saturate(u.densityVariation));
   return w;
 }
 

@@ -17,16 +17,16 @@ CLOUDS_SHADER_BEGIN
 // Sun light reaching a sample and scattered towards the viewer (1/sr), per unit illuminance.
 CLOUDS_INLINE float directScattering(float lightOpticalDepth, float cosTheta, IN(CloudUniforms) u,
                                      uint multipleScattering) {
-  const float forwardG = u.phase.x;
-  const float backwardG = u.phase.y;
-  const float blend = u.phase.z;
+  const float forwardG = u.phaseForwardG;
+  const float backwardG = u.phaseBackwardG;
+  const float blend = u.phaseBackwardWeight;
   if (multipleScattering == 0u) {
     return beerLambert(lightOpticalDepth) * dualLobePhase(cosTheta, forwardG, backwardG, blend);
   }
-  const int octaves = int(clamp(u.multipleScattering.x, 1.0f, 8.0f));
-  const float a = u.multipleScattering.y;
-  const float b = u.multipleScattering.z;
-  const float c = u.multipleScattering.w;
+  const int octaves = int(clamp(u.msOctaves, 1.0f, 8.0f));
+  const float a = u.msExtinctionScale;
+  const float b = u.msContribution;
+  const float c = u.msEccentricityScale;
   float extinctionScale = 1.0f;
   float contribution = 1.0f;
   float eccentricity = 1.0f;
@@ -43,7 +43,7 @@ CLOUDS_INLINE float directScattering(float lightOpticalDepth, float cosTheta, IN
 
 // Nubis 2017 in-scatter probability: few scattering contributors at cloud edges (thin coarse
 // cloud around the sample) and at cloud bases. `localOpticalDepth` is the coarse extinction
-// times a short distance (CloudUniforms.inScatter.x): ~0 at edges, >= 1 inside. In [0, 1].
+// times a short distance (CloudUniforms.inScatterDepthMetres): ~0 at edges, >= 1 inside. In [0, 1].
 CLOUDS_INLINE float inScatterProbability(float localOpticalDepth, float heightFraction) {
   const float depthProbability =
       0.05f + pow(saturate(localOpticalDepth), remapClamped(heightFraction, 0.3f, 0.85f, 0.5f, 2.0f));
@@ -59,14 +59,14 @@ CLOUDS_INLINE vec3 sampleRadiance(float lightOpticalDepth, float cosTheta, float
                                   float coarseExtinction, float heightFraction,
                                   IN(CloudUniforms) u, uint multipleScattering) {
   const float direct = directScattering(lightOpticalDepth, cosTheta, u, multipleScattering);
-  const float localOpticalDepth = coarseExtinction * u.inScatter.x;
+  const float localOpticalDepth = coarseExtinction * u.inScatterDepthMetres;
   const float inScatter = mix(1.0f, inScatterProbability(localOpticalDepth, heightFraction),
-                              saturate(u.artistic.x));
-  const vec3 sun = vec3(u.sunIlluminance) * (direct * inScatter * u.artistic.w);
-  const vec3 sky = mix(vec3(u.ambientBottom), vec3(u.ambientTop), saturate(heightFraction));
+                              saturate(u.inScatterStrength));
+  const vec3 sun = u.sunIlluminance * (direct * inScatter * u.sunStrength);
+  const vec3 sky = mix(u.ambientBottom, u.ambientTop, saturate(heightFraction));
   // Nubis 2022 ambient scattering: pow(1 - profile, 0.5) darkens the inside of dense cloud.
   const float occlusion = sqrt(saturate(1.0f - coarseDensity));
-  const vec3 ambient = sky * (u.artistic.z * mix(1.0f, occlusion, saturate(u.artistic.y)));
+  const vec3 ambient = sky * (u.ambientStrength * mix(1.0f, occlusion, saturate(u.ambientOcclusionStrength)));
   return sun + ambient;
 }
 

@@ -1,6 +1,6 @@
 #version 460
 // Cloud ray-march (compute), at the trace resolution. With temporal reconstruction only one
-// pixel per k x k tile is marched each frame (the pattern in CloudUniforms.pattern), so the
+// pixel per k x k tile is marched each frame (CloudUniforms.tileSize and tilePhase), so the
 // dispatch covers exactly those pixels. Each builds its view ray, stops at the conservative
 // scene distance (depth_downsample.comp), marches the layer with the shared model
 // (cloud_march.h) and writes radiance + transmittance and the cloud depths into the trace
@@ -15,26 +15,26 @@
 
 #include "cloud_types.h"
 
-layout(local_size_x = 8, local_size_y = 8) in;
+layout(local_size_x = kWorkgroupSize2D, local_size_y = kWorkgroupSize2D) in;
 
-layout(constant_id = 0) const uint kJitterMode = 1u;
-layout(constant_id = 1) const uint kDetailEnabled = 1u;
-layout(constant_id = 2) const uint kCheapSampling = 1u;
-layout(constant_id = 3) const uint kMultipleScattering = 1u;
-layout(constant_id = 4) const uint kLightSteps = 6u;
-layout(constant_id = 5) const uint kCounters = 0u;
-layout(constant_id = 6) const uint kEmptySpace = 1u;
+layout(constant_id = kSpecJitter) const uint kJitterMode = 1u;
+layout(constant_id = kSpecDetail) const uint kDetailEnabled = 1u;
+layout(constant_id = kSpecCheapSampling) const uint kCheapSampling = 1u;
+layout(constant_id = kSpecMultipleScattering) const uint kMultipleScattering = 1u;
+layout(constant_id = kSpecLightSteps) const uint kLightSteps = 6u;
+layout(constant_id = kSpecCounters) const uint kCounters = 0u;
+layout(constant_id = kSpecEmptySpace) const uint kEmptySpace = 1u;
 
 #include "frame_uniforms.glsl"
-layout(binding = 1, rgba8) uniform readonly image3D shapeNoise;
-layout(binding = 2, rgba8) uniform readonly image3D detailNoise;
-layout(binding = 3, rgba8) uniform readonly image2D weatherMap;
-layout(binding = 4, rgba8) uniform readonly image2D curlNoise;
-layout(binding = 5, r32f) uniform readonly image2D sceneDistance;
-layout(binding = 6, rgba32ui) uniform writeonly uimage2D outSamples;
-layout(binding = 7, rgba8) uniform readonly image2D weatherMaxFine;
-layout(binding = 8, rgba8) uniform readonly image2D weatherMaxCoarse;
-layout(binding = 9, std430) buffer Counters { uint counters[]; };
+layout(binding = kMarchShapeNoise, rgba8) uniform readonly image3D shapeNoise;
+layout(binding = kMarchDetailNoise, rgba8) uniform readonly image3D detailNoise;
+layout(binding = kMarchWeatherMap, rgba8) uniform readonly image2D weatherMap;
+layout(binding = kMarchCurlNoise, rgba8) uniform readonly image2D curlNoise;
+layout(binding = kMarchSceneDistance, r32f) uniform readonly image2D sceneDistance;
+layout(binding = kMarchSamplesOut, rgba32ui) uniform writeonly uimage2D outSamples;
+layout(binding = kMarchWeatherMaxFine, rgba8) uniform readonly image2D weatherMaxFine;
+layout(binding = kMarchWeatherMaxCoarse, rgba8) uniform readonly image2D weatherMaxCoarse;
+layout(binding = kMarchCounters, std430) buffer Counters { uint counters[]; };
 
 vec4 fetchShapeNoise(ivec3 texel) { return imageLoad(shapeNoise, texel); }
 vec4 fetchDetailNoise(ivec3 texel) { return imageLoad(detailNoise, texel); }
@@ -49,11 +49,11 @@ vec4 fetchWeatherMaxCoarse(ivec2 texel) { return imageLoad(weatherMaxCoarse, tex
 void main() {
   loadFrameUniforms();
   const uvec2 tile = gl_GlobalInvocationID.xy;
-  const uvec2 pixel = tile * u.pattern.x + u.pattern.yz;
-  const uvec2 extent = u.extent.xy;
+  const uvec2 pixel = tile * u.tileSize + u.tilePhase;
+  const uvec2 extent = u.traceExtent;
   if (any(greaterThanEqual(pixel, extent))) return;
 
-  const vec2 centre = vec2(pixel) + 0.5f + (kJitterMode == 2u ? vec2(u.subpixel) : vec2(0.0f));
+  const vec2 centre = vec2(pixel) + 0.5f + (kJitterMode == 2u ? u.subpixelOffset : vec2(0.0f));
   const vec3 direction = pixelRayDirection(centre, vec2(extent), u);
   const float distance = imageLoad(sceneDistance, ivec2(pixel)).r;
 
@@ -63,7 +63,7 @@ void main() {
   options.multipleScattering = kMultipleScattering;
   options.lightSteps = kLightSteps;
   options.emptySpace = kEmptySpace;
-  const float jitter = rayJitter(pixel, u.frame.x, kJitterMode);
+  const float jitter = rayJitter(pixel, u.temporalIndex, kJitterMode);
   const MarchResult result = marchClouds(direction, distance, jitter, u, options);
 
   imageStore(outSamples, ivec2(pixel),

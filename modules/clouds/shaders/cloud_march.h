@@ -64,9 +64,9 @@ CLOUDS_INLINE float altitudeAlongRay(float t, float cosZenith, float altitude, f
 // The [start, end) distances of a view ray inside the cloud shell; end <= start when the ray
 // misses it or hits the ground first.
 CLOUDS_INLINE vec2 layerSegment(float altitude, float cosZenith, IN(CloudUniforms) u) {
-  const float radius = u.planet.y;
-  const float bottom = u.planet.z;
-  const float top = u.planet.w;
+  const float radius = u.planetRadiusMetres;
+  const float bottom = u.layerBottomMetres;
+  const float top = u.layerTopMetres;
   const vec2 ground = raySphere(max(altitude, 0.0f), cosZenith, 0.0f, radius);
   const float tGround = ground.x > 0.0f ? ground.x : kInfiniteDistance;
   const vec2 inner = raySphere(altitude, cosZenith, bottom, radius);
@@ -90,7 +90,7 @@ CLOUDS_INLINE vec2 layerSegment(float altitude, float cosZenith, IN(CloudUniform
 }
 
 CLOUDS_INLINE float viewStepLength(float t, IN(CloudUniforms) u) {
-  return u.march.x + u.march.y * t;
+  return u.viewStepMetres + u.viewStepGrowth * t;
 }
 
 // One cloud-field evaluation at a point given camera-relative (flat) offset and altitude.
@@ -105,46 +105,46 @@ struct FieldSample {
 CLOUDS_INLINE vec3 noisePosition(vec3 flatOffset, float altitude, float heightFraction,
                                  IN(CloudUniforms) u) {
   // Skew the shape downwind with height (Nubis: clouds lean with the wind as they rise).
-  const vec2 skew = vec2(u.wind.x, u.wind.y) * (u.wind.z * saturate(heightFraction));
+  const vec2 skew = u.windDirection * (u.skewMetres * saturate(heightFraction));
   return vec3(flatOffset.x + skew.x, altitude, flatOffset.z + skew.y);
 }
 
 CLOUDS_INLINE FieldSample sampleField(vec3 flatOffset, float altitude, float distance,
                                       uint wantDetail, IN(CloudUniforms) u) {
   FieldSample s;
-  const float bottom = u.planet.z;
-  const float top = u.planet.w;
+  const float bottom = u.layerBottomMetres;
+  const float top = u.layerTopMetres;
   s.heightFraction = (altitude - bottom) / max(top - bottom, 1.0f);
   s.base = 0.0f;
   s.density = 0.0f;
   s.sigmaT = 0.0f;
   s.baseSigmaT = 0.0f;
   if (s.heightFraction < 0.0f || s.heightFraction > 1.0f) return s;
-  if ((u.frame.z & kFlagHomogeneous) != 0u) {
-    // Test mode: a homogeneous slab with extinction u.density.x, for analytic comparisons.
+  if ((u.flags & kFlagHomogeneous) != 0u) {
+    // Test mode: a homogeneous slab with extinction u.extinctionPerMetre, for analytic comparisons.
     s.base = 1.0f;
     s.density = 1.0f;
-    s.sigmaT = u.density.x;
-    s.baseSigmaT = u.density.x;
+    s.sigmaT = u.extinctionPerMetre;
+    s.baseSigmaT = u.extinctionPerMetre;
     return s;
   }
   // Coverage is held still (the weather map is not scrolled); the noise moves with the wind.
   const vec2 weatherUv =
-      (vec2(u.weather.x, u.weather.y) + vec2(flatOffset.x, flatOffset.z)) / u.weather.z;
+      (u.weatherOffsetMetres + vec2(flatOffset.x, flatOffset.z)) / u.weatherTileMetres;
   const WeatherSample w = decodeWeather(sampleWeather(weatherUv), u);
   const vec3 p = noisePosition(flatOffset, altitude, s.heightFraction, u);
-  const vec3 shapeUvw = (vec3(u.shapeNoise) + p) / u.shapeNoise.w;
-  s.base = baseDensity(sampleShapeNoise(shapeUvw), s.heightFraction, w, u.shape.x);
+  const vec3 shapeUvw = (u.shapeOffsetMetres + p) / u.shapeTileMetres;
+  s.base = baseDensity(sampleShapeNoise(shapeUvw), s.heightFraction, w, u.anvilBias);
   s.density = s.base;
   // Detail only where there is a base shape and the sample is near enough to show it.
-  CLOUDS_WHEN(wantDetail != 0u && s.base > 0.0f && distance < u.shape.z) {
-    const vec2 curlUv = (vec2(u.curl.x, u.curl.y) + vec2(p.x, p.z)) / u.curl.z;
-    const vec2 curl = sampleCurl(curlUv) * (u.curl.w * (1.0f - s.heightFraction));
-    const vec3 detailUvw = (vec3(u.detailNoise) + p + vec3(curl.x, 0.0f, curl.y)) / u.detailNoise.w;
-    s.density = erodeDensity(s.base, sampleDetailNoise(detailUvw), s.heightFraction, u.shape.y);
+  CLOUDS_WHEN(wantDetail != 0u && s.base > 0.0f && distance < u.detailDistanceMetres) {
+    const vec2 curlUv = (u.curlOffsetMetres + vec2(p.x, p.z)) / u.curlTileMetres;
+    const vec2 curl = sampleCurl(curlUv) * (u.curlStrengthMetres * (1.0f - s.heightFraction));
+    const vec3 detailUvw = (u.detailOffsetMetres + p + vec3(curl.x, 0.0f, curl.y)) / u.detailTileMetres;
+    s.density = erodeDensity(s.base, sampleDetailNoise(detailUvw), s.heightFraction, u.detailErosion);
   }
-  s.sigmaT = s.density * w.density * u.density.x;
-  s.baseSigmaT = s.base * w.density * u.density.x;
+  s.sigmaT = s.density * w.density * u.extinctionPerMetre;
+  s.baseSigmaT = s.base * w.density * u.extinctionPerMetre;
   return s;
 }
 
@@ -165,9 +165,9 @@ CLOUDS_INLINE float cellExitDistance(vec2 p, vec2 d, float cell) {
 // coverage, or (for a ray whose altitude only grows) above the tallest cloud type's top.
 CLOUDS_INLINE bool weatherCellEmpty(vec4 maxima, float altitude, bool ascending,
                                     IN(CloudUniforms) u) {
-  const float coverage = saturate(maxima.x + 2.0f * u.density.y - 1.0f);
-  const float type = saturate(u.density.z + (maxima.y - 0.5f) * u.density.w);
-  const float top = u.planet.z + typeProfile(type).w * (u.planet.w - u.planet.z);
+  const float coverage = layerCoverage(maxima.x, u.coverage);
+  const float type = saturate(u.cloudType + (maxima.y - 0.5f) * u.typeVariation);
+  const float top = u.layerBottomMetres + typeProfile(type).w * (u.layerTopMetres - u.layerBottomMetres);
   return coverage <= 0.0f || (ascending && altitude > top);
 }
 
@@ -176,14 +176,14 @@ CLOUDS_INLINE bool weatherCellEmpty(vec4 maxima, float altitude, bool ascending,
 CLOUDS_INLINE float emptySpaceSkip(float t, vec3 rayDirection, float altitude,
                                    IN(CloudUniforms) u) {
   const vec2 d = vec2(rayDirection.x, rayDirection.z);
-  const vec2 p = vec2(u.weather.x, u.weather.y) + d * t;
+  const vec2 p = u.weatherOffsetMetres + d * t;
   const bool ascending = rayDirection.y >= 0.0f;
-  const float coarse = u.emptySpace.y;
+  const float coarse = u.coarseCellMetres;
   const ivec2 coarseCell = ivec2(floor(p / coarse)) & (kWeatherMaxCoarseSize - 1);
   if (weatherCellEmpty(fetchWeatherMaxCoarse(coarseCell), altitude, ascending, u)) {
     return t + cellExitDistance(p, d, coarse);
   }
-  const float fine = u.emptySpace.x;
+  const float fine = u.fineCellMetres;
   const ivec2 fineCell = ivec2(floor(p / fine)) & (kWeatherMaxFineSize - 1);
   if (weatherCellEmpty(fetchWeatherMaxFine(fineCell), altitude, ascending, u)) {
     return t + cellExitDistance(p, d, fine);
@@ -201,9 +201,9 @@ CLOUDS_INLINE vec3 coneKernel(uint index) {
 // quadratically over the cone length, each spread sideways by the cone kernel.
 CLOUDS_INLINE float lightOpticalDepth(vec3 flatOffset, float altitude, float distance, uint steps,
                                       IN(CloudUniforms) u, INOUT(float) samples) {
-  const vec3 sun = vec3(u.sunDirection);
-  const float coneLength = u.light.x;
-  const float spread = u.light.y;
+  const vec3 sun = u.sunDirection;
+  const float coneLength = u.lightConeMetres;
+  const float spread = u.lightConeSpread;
   float tau = 0.0f;
   for (uint j = 0u; j < steps; ++j) {
     const float s0 = float(j) / float(steps);
@@ -225,7 +225,7 @@ CLOUDS_INLINE float lightOpticalDepth(vec3 flatOffset, float altitude, float dis
 CLOUDS_INLINE vec3 viewRayDirection(vec2 pixelCentre, vec2 extent, IN(CloudUniforms) u) {
   const vec2 ndc = pixelCentre / extent * 2.0f - 1.0f;
   // A point on the near plane: depth 1 with reversed-Z, 0 otherwise; finite either way.
-  const float nearDepth = (u.frame.z & kFlagReversedZ) != 0u ? 1.0f : 0.0f;
+  const float nearDepth = (u.flags & kFlagReversedZ) != 0u ? 1.0f : 0.0f;
   const vec4 view = u.inverseProjection * vec4(ndc.x, ndc.y, nearDepth, 1.0f);
   const vec3 direction = vec3(view) / view.w;
   return direction / max(length(direction), 1e-20f);
@@ -240,8 +240,8 @@ CLOUDS_INLINE vec3 pixelRayDirection(vec2 pixelCentre, vec2 extent, IN(CloudUnif
 // (far plane, or depth 0 with reversed-Z) is kInfiniteDistance.
 CLOUDS_INLINE float sceneDistanceFromDepth(float depth, vec2 pixelCentre, vec2 extent,
                                            IN(CloudUniforms) u) {
-  const bool reversed = (u.frame.z & kFlagReversedZ) != 0u;
-  if ((u.frame.z & kFlagHasDepth) == 0u) return kInfiniteDistance;
+  const bool reversed = (u.flags & kFlagReversedZ) != 0u;
+  if ((u.flags & kFlagHasDepth) == 0u) return kInfiniteDistance;
   if (reversed ? depth <= 0.0f : depth >= 1.0f) return kInfiniteDistance;
   const vec2 ndc = pixelCentre / extent * 2.0f - 1.0f;
   const vec4 view = u.inverseProjection * vec4(ndc.x, ndc.y, depth, 1.0f);
@@ -270,17 +270,17 @@ CLOUDS_INLINE MarchResult marchClouds(vec3 rayDirection, float sceneDistance, fl
   r.skippedCells = 0.0f;
   r.earlyExit = 0u;
 
-  const float altitude = u.planet.x;
+  const float altitude = u.cameraAltitudeMetres;
   const float cosZenith = rayDirection.y;
   const vec2 segment = layerSegment(altitude, cosZenith, u);
   const float start = segment.x;
-  const float end = min(min(segment.y, sceneDistance), u.march.z);
-  const float cosTheta = dot(rayDirection, vec3(u.sunDirection));
-  const float albedo = u.phase.w;
-  const float cutoff = u.march.w;
-  const float coarseFactor = max(u.light.z, 1.0f);
-  const int zeroRunToCoarse = int(u.light.w);
-  const int maxSteps = int(u.frame.y);
+  const float end = min(min(segment.y, sceneDistance), u.maxDistanceMetres);
+  const float cosTheta = dot(rayDirection, u.sunDirection);
+  const float albedo = u.albedo;
+  const float cutoff = u.transmittanceCutoff;
+  const float coarseFactor = max(u.coarseStepFactor, 1.0f);
+  const int zeroRunToCoarse = int(u.emptySamplesToCoarse);
+  const int maxSteps = int(u.maxViewSteps);
 
   float weightedDepthSum = 0.0f;
   float t = start;  // boundary of the current step; the sample sits at t + jitter * step
@@ -293,7 +293,7 @@ CLOUDS_INLINE MarchResult marchClouds(vec3 rayDirection, float sceneDistance, fl
     if (t >= end || r.transmittance < cutoff || samples >= maxSteps) break;
     if (o.emptySpace != 0u) {
       const float skipTo =
-          emptySpaceSkip(t, rayDirection, altitudeAlongRay(t, cosZenith, altitude, u.planet.y), u);
+          emptySpaceSkip(t, rayDirection, altitudeAlongRay(t, cosZenith, altitude, u.planetRadiusMetres), u);
       if (skipTo > t) {
         t = skipTo;
         r.skippedCells += 1.0f;
@@ -303,7 +303,7 @@ CLOUDS_INLINE MarchResult marchClouds(vec3 rayDirection, float sceneDistance, fl
     const float stepLength = min(viewStepLength(t, u) * (fine ? 1.0f : coarseFactor), end - t);
     const float sampleDistance = t + jitter * stepLength;
     const vec3 flatOffset = rayDirection * sampleDistance;
-    const float sampleAltitude = altitudeAlongRay(sampleDistance, cosZenith, altitude, u.planet.y);
+    const float sampleAltitude = altitudeAlongRay(sampleDistance, cosZenith, altitude, u.planetRadiusMetres);
     const FieldSample field =
         sampleField(flatOffset, sampleAltitude, sampleDistance, fine ? o.detail : 0u, u);
     r.viewSamples += 1.0f;

@@ -12,14 +12,14 @@ CLOUDS_SHADER_BEGIN
 
 CLOUDS_INLINE bool isFreshPixel(uvec2 pixel, IN(CloudUniforms) u) {
   // k is a power of two: a mask, not a modulo (integer division is scalarised on a CPU).
-  const uint mask = u.pattern.x - 1u;
-  return (pixel.x & mask) == u.pattern.y && (pixel.y & mask) == u.pattern.z;
+  const uint mask = u.tileSize - 1u;
+  return (pixel.x & mask) == u.tilePhase.x && (pixel.y & mask) == u.tilePhase.y;
 }
 
 // Bilinear weights and the four fresh pixels around `pixel` on this frame's k-grid.
 CLOUDS_INLINE void freshNeighbours(uvec2 pixel, IN(CloudUniforms) u, OUT(ivec2) p00, OUT(vec2) f) {
-  const float k = float(u.pattern.x);
-  const vec2 phase = vec2(float(u.pattern.y), float(u.pattern.z));
+  const float k = float(u.tileSize);
+  const vec2 phase = vec2(float(u.tilePhase.x), float(u.tilePhase.y));
   const vec2 grid = (vec2(pixel) - phase) / k;
   const vec2 g0 = floor(grid);
   f = grid - g0;
@@ -133,7 +133,7 @@ struct Reprojection {
 CLOUDS_INLINE Reprojection reprojectPixel(vec3 viewDirection, vec2 cloudDepth, vec2 extent,
                                           IN(CloudUniforms) u) {
   const PreviousRay ray = previousRay(viewDirection, u);
-  const float far = u.march.z;
+  const float far = u.maxDistanceMetres;
   Reprojection r;
   r.position = previousPosition(ray, cloudDepth.y > 0.0f ? cloudDepth.y : far, extent);
   const float nearest = cloudDepth.x > 0.0f ? cloudDepth.x : far;

@@ -1,5 +1,12 @@
-// GPU-visible types and constants of the clouds module, shared by its shaders and its C++.
-// std140-compatible: vec4/uvec4/mat4 members only, explicit padding, no bool.
+// GPU-visible types and constants of the clouds module, shared by its shaders and its C++:
+// texture sizes, workgroup sizes, descriptor binding slots, specialization-constant ids, the
+// per-frame uniform block and the push-constant blocks. The shaders use these names in their
+// layout qualifiers and the C++ binds with them, so a slot or size is written once.
+//
+// Layout rules: std140 (the uniform block) and push constants; fields are scalars, vec2/uvec2
+// on 8-byte offsets, vec3 + one scalar or vec4 on 16-byte offsets, mat4 on 64, explicit
+// padding, no bool (uint flags). The C++ side asserts every offset; a unit test checks them
+// against glslang's reflection of the GLSL block.
 #ifndef CLOUDS_CLOUD_TYPES_H
 #define CLOUDS_CLOUD_TYPES_H
 
@@ -7,7 +14,7 @@
 
 CLOUDS_SHADER_BEGIN
 
-// Texture sizes (powers of two: wrapping is a bit mask).
+// --- Texture sizes (powers of two: wrapping is a bit mask) ----------------------------------
 const int kShapeNoiseSize = 128;  // low-frequency 3D noise, RGBA8
 const int kDetailNoiseSize = 32;  // high-frequency 3D noise, RGBA8
 const int kCurlNoiseSize = 128;   // 2D curl noise, RGBA8 (RG used)
@@ -18,15 +25,57 @@ const int kWeatherMapSize = 512;  // 2D weather map, RGBA8: coverage, type, dens
 const int kWeatherMaxFineSize = 64;
 const int kWeatherMaxCoarseSize = 8;
 
-const uint kWorkgroupSize2D = 8u;  // 8x8 threads for image passes
-const uint kWorkgroupSize3D = 4u;  // 4x4x4 threads for volume generation
+// --- Workgroup sizes -------------------------------------------------------------------------
+const uint kWorkgroupSize2D = 8u;    // 8 x 8 threads for image passes
+const uint kWorkgroupSize3D = 4u;    // 4 x 4 x 4 threads for volume generation
+const uint kSkyAmbientLanes = 64u;   // sky_ambient.comp: one workgroup of this many lanes
+const uint kSkyAmbientSamples = 16u; // samples of the sky image per lane
 
-// Flags in CloudUniforms.frame.z.
-const uint kFlagReversedZ = 1u;    // host depth: near = 1, far/sky = 0
-const uint kFlagHasDepth = 2u;     // a depth buffer is bound (else: nothing occludes)
-const uint kFlagHomogeneous = 4u;  // tests: density 1 everywhere inside the layer
+// --- Descriptor bindings (set 0) --------------------------------------------------------------
+// Binding 0 of every per-frame image pass is the CloudUniforms block (frame_uniforms.glsl).
+const uint kBindingUniforms = 0u;
+// depth_downsample.comp: the host depth in, the conservative scene distance out.
+const uint kSceneDistanceHostDepth = 1u;
+const uint kSceneDistanceOut = 2u;
+// cloud_march.comp
+const uint kMarchShapeNoise = 1u;
+const uint kMarchDetailNoise = 2u;
+const uint kMarchWeatherMap = 3u;
+const uint kMarchCurlNoise = 4u;
+const uint kMarchSceneDistance = 5u;
+const uint kMarchSamplesOut = 6u;
+const uint kMarchWeatherMaxFine = 7u;
+const uint kMarchWeatherMaxCoarse = 8u;
+const uint kMarchCounters = 9u;
+// reconstruct.comp
+const uint kReconstructFresh = 1u;
+const uint kReconstructHistory = 2u;
+const uint kReconstructOut = 3u;
+// upsample.comp
+const uint kUpsampleTraceSamples = 1u;
+const uint kUpsampleHostDepth = 2u;
+const uint kUpsampleRadianceOut = 3u;
+const uint kUpsampleDepthOut = 4u;
+const uint kUpsampleFresh = 5u;
+const uint kUpsampleHistory = 6u;
+const uint kUpsampleHistoryOut = 7u;
+// composite.comp
+const uint kCompositeHostColor = 0u;
+const uint kCompositeClouds = 1u;
+// sky_ambient.comp (reads and writes the uniforms as a storage buffer)
+const uint kSkyAmbientUniforms = 0u;
+const uint kSkyAmbientSky = 1u;
+// noise_*.comp and weather_procedural.comp: the texture they generate
+const uint kGeneratorTarget = 0u;
+// weather_resample.comp: the module's weather map from the host's painted one
+const uint kResampleTarget = 0u;
+const uint kResampleSource = 1u;
+// weather_max.comp: one level of the maxima from the level below
+const uint kMaximaSource = 0u;
+const uint kMaximaTarget = 1u;
 
-// Specialization constant ids of the march shader.
+// --- Specialization constants ----------------------------------------------------------------
+// cloud_march.comp
 const uint kSpecJitter = 0u;              // 0 none, 1 Bayer 4x4 + Halton frame offset, 2 that
                                           //   and a Halton offset of the ray inside its pixel
 const uint kSpecDetail = 1u;              // 0/1: high-frequency erosion compiled in
@@ -35,15 +84,25 @@ const uint kSpecMultipleScattering = 3u;  // 0/1: octave multiple-scattering app
 const uint kSpecLightSteps = 4u;          // light samples per view sample (>= 0)
 const uint kSpecCounters = 5u;            // 0/1: accumulate work counters (benchmarks, tests)
 const uint kSpecEmptySpace = 6u;          // 0/1: skip empty weather cells
-
-// Specialization constant id of the reconstruction shader.
+const uint kMarchSpecCount = 7u;
+// reconstruct.comp
 const uint kSpecHistory = 0u;  // 0 none, 1 read in place (nothing moved), 2 reprojected
-
-// Specialization constant ids of the upsample shader.
+const uint kReconstructSpecCount = 1u;
+// upsample.comp
 const uint kSpecTemporalUpsampling = 0u;  // 0/1: accumulate the output-resolution history
 const uint kSpecOutputHistory = 1u;       // 0 none, 1 read in place (nothing moved), 2 reprojected
+const uint kUpsampleSpecCount = 2u;
+// The history variants of kSpecHistory and kSpecOutputHistory.
+const uint kHistoryNone = 0u;
+const uint kHistoryInPlace = 1u;
+const uint kHistoryReprojected = 2u;
 
-// Work counters (a storage buffer of uints), reset every frame.
+// --- Flags in CloudUniforms.flags ------------------------------------------------------------
+const uint kFlagReversedZ = 1u;    // host depth: near = 1, far/sky = 0
+const uint kFlagHasDepth = 2u;     // a depth buffer is bound (else: nothing occludes)
+const uint kFlagHomogeneous = 4u;  // tests: density 1 everywhere inside the layer
+
+// --- Work counters (a storage buffer of uints, reset every frame) ----------------------------
 const uint kCounterViewSamples = 0u;   // density samples along view rays
 const uint kCounterLightSamples = 1u;  // density samples towards the sun
 const uint kCounterTracedPixels = 2u;  // rays marched
@@ -51,72 +110,183 @@ const uint kCounterEarlyExits = 3u;    // rays stopped by the transmittance cuto
 const uint kCounterSkippedCells = 4u;  // empty weather cells jumped over
 const uint kCounterCount = 8u;
 
+// --- The per-frame uniform block --------------------------------------------------------------
+// Built on the CPU once per frame (src/uniforms.cpp) from the host's inputs and the settings.
+// Positions are camera-relative: the tiling offsets are reduced modulo their tile in double
+// precision on the CPU, so the GPU only sees small numbers.
 struct CloudUniforms {
-  mat4 inverseProjection;  // host clip space -> view space
-  mat4 viewToWorld;        // rotation only: the module works camera-relative
-  vec4 planet;             // x camera altitude m, y planet radius m, z layer bottom m, w top m
-  vec4 sunDirection;       // xyz unit vector towards the sun (world), w unused
-  vec4 sunIlluminance;     // rgb sun illuminance (host radiometric units), w unused
-  vec4 ambientTop;         // rgb sky radiance reaching cloud tops, w unused
-  vec4 ambientBottom;      // rgb radiance reaching cloud bases, w unused
-  vec4 shapeNoise;         // xyz camera offset inside the shape tile (m), w tile size (m)
-  vec4 detailNoise;        // xyz camera offset inside the detail tile (m), w tile size (m)
-  vec4 weather;            // xy camera xz inside the weather tile (m), z tile (m), w unused
-  vec4 curl;               // xy camera xz inside the curl tile (m), z tile (m), w strength (m)
-  vec4 wind;               // xy unit wind direction (world xz), z skew over the layer (m), w unused
-  vec4 density;  // x extinction per metre at density 1, y coverage, z type, w type variation
-  vec4 shape;    // x anvil bias, y detail erosion, z detail distance (m), w density variation
-  vec4 phase;    // x forward g, y backward g, z backward weight, w albedo
-  vec4 multipleScattering;  // x octaves, y extinction attenuation a, z contribution b, w
-                            // eccentricity c
-  vec4 artistic;            // x in-scatter strength, y ambient occlusion strength, z ambient, w sun
-  vec4 inScatter;           // x depth (m) over which the coarse extinction gives the in-scatter
-                            // probability's "density", yzw unused
-  vec4 march;               // x base step m, y step growth per m, z max distance m, w T cutoff
-  vec4 light;               // x light cone length m, y cone spread, z coarse factor, w zero-run
-  uvec4 frame;              // x temporal index (frames since the history was reset: jitter and
-                            //   update order), y max view steps, z flags, w unused
-  uvec4 extent;             // xy trace extent (px), zw full extent (px)
-  // --- Temporal reconstruction ------------------------------------------------------------
-  mat4 previousClipFromView;  // this frame's view space -> last frame's clip space for
-                              //   directions (w = 0): last view-projection x viewToWorld
-  vec4 reprojection;          // xyz: where a point seen now was, relative to last frame's camera:
-                              //   camera move plus the clouds' wind drift (m); w history valid 0/1
-  vec4 previousClipOrigin;    // last frame's clip position of this frame's camera (with the drift)
-  vec4 temporal;              // x weight of a fresh sample over its history, y clamp margin,
-                              //   z trace scale (trace px per output px), w reprojection spread
-                              //   (trace px) at which the history is fully clamped
-  uvec4 pattern;              // x tile size k (1, 2, 4 or 8): one pixel per k x k tile is traced
-                              //   each frame; y, z: that pixel's offset in the tile; w: the
-                              //   last such pixel of the image, x | y << 16 (edge tiles may
-                              //   have none)
-  vec4 emptySpace;            // x fine cell (m), y coarse cell (m), zw unused
-  vec4 subpixel;              // xy this frame's offset of the rays inside their pixels (trace
-                  //   pixels, jitter mode 2; accumulating frames supersamples), zw unused
-  vec4 upsampling;         // temporal upsampling: x own samples averaged before the running
-                           //   mean (Settings::upsamplingMaxSamples), yzw unused
+  // Camera.
+  mat4 inverseProjection;     // host clip space -> view space
+  mat4 viewToWorld;           // rotation only: the module works camera-relative
+  mat4 previousClipFromView;  // this frame's view directions (w = 0) -> last frame's clip
+                              //   space: the history's view-projection x viewToWorld
+  vec4 previousClipOrigin;    // last frame's clip position of this frame's camera, with the
+                              //   clouds' wind drift since (reprojection, cloud_temporal.h)
+
+  // Planet and layer (m).
+  float cameraAltitudeMetres;
+  float planetRadiusMetres;
+  float layerBottomMetres;
+  float layerTopMetres;
+
+  // Light, in the host's units: illuminance for the sun, radiance for the ambient sky.
+  vec3 sunDirection;  // unit vector towards the sun (world)
+  float padding0;
+  vec3 sunIlluminance;
+  float sunStrength;  // scales the direct sun term
+  vec3 ambientTop;    // sky radiance reaching cloud tops (sky_ambient.comp may overwrite it)
+  float ambientStrength;
+  vec3 ambientBottom;  // radiance reaching cloud bases (sky_ambient.comp may overwrite it)
+  float ambientOcclusionStrength;
+
+  // Noise and weather placement: the camera's offset inside each tile, and the tile (m).
+  vec3 shapeOffsetMetres;
+  float shapeTileMetres;
+  vec3 detailOffsetMetres;
+  float detailTileMetres;
+  vec2 weatherOffsetMetres;  // camera xz inside the weather tile (coverage does not scroll)
+  float weatherTileMetres;
+  float padding1;
+  vec2 curlOffsetMetres;
+  float curlTileMetres;
+  float curlStrengthMetres;  // swirl of the detail noise at the cloud base
+  vec2 windDirection;        // unit, world xz
+  float skewMetres;          // downwind lean across the layer
+  float padding2;
+  float fineCellMetres;    // empty-space skipping: side of a fine weather-maxima cell
+  float coarseCellMetres;  //   and of a coarse one
+  float padding3;
+  float padding4;
+
+  // Density model.
+  float extinctionPerMetre;  // at density 1, times Settings::densityMultiplier
+  float coverage;
+  float cloudType;
+  float typeVariation;
+  float anvilBias;
+  float detailErosion;
+  float detailDistanceMetres;
+  float densityVariation;
+
+  // Lighting.
+  float phaseForwardG;
+  float phaseBackwardG;
+  float phaseBackwardWeight;
+  float albedo;
+  float msOctaves;  // multiple-scattering octaves, as a float
+  float msExtinctionScale;
+  float msContribution;
+  float msEccentricityScale;
+  float inScatterStrength;
+  float inScatterDepthMetres;  // the coarse extinction over this distance is the in-scatter
+                               //   probability's "density"
+  float padding5;
+  float padding6;
+
+  // Ray-march.
+  float viewStepMetres;
+  float viewStepGrowth;  // extra step length per metre of distance
+  float maxDistanceMetres;
+  float transmittanceCutoff;
+  float lightConeMetres;
+  float lightConeSpread;
+  float coarseStepFactor;
+  float emptySamplesToCoarse;
+  uint temporalIndex;  // frames since the history was reset: jitter and update order
+  uint maxViewSteps;
+  uint flags;  // kFlag*
+  uint padding7;
+
+  // Resolution and temporal reconstruction.
+  uvec2 traceExtent;   // px
+  uvec2 outputExtent;  // px
+  uvec2 tilePhase;     // the offset, in its tile, of the pixel marched this frame
+  uint tileSize;       // k (1, 2, 4 or 8): one pixel per k x k tile is marched each frame
+  uint lastFreshPixel;  // the last such pixel of the image, x | y << 16 (edge tiles may have none)
+  float temporalFreshWeight;       // weight of a fresh sample over its history
+  float historyClampMargin;        // slack of the history clamp (x neighbourhood range)
+  float traceScale;                // trace pixels per output pixel
+  float historyClampSpreadPixels;  // reprojection spread (trace px) of a fully clamped history
+  vec2 subpixelOffset;  // this frame's offset of the rays inside their pixels (trace pixels;
+                        //   jitter mode 2: accumulating frames supersamples)
+  float upsamplingMaxSamples;  // temporal upsampling: own samples averaged before a running mean
+  float padding8;
 };
-CLOUDS_STATIC_ASSERT(sizeof(CloudUniforms) == 3 * 64 + 27 * 16);
 
 // Push constants of the noise generators.
 struct NoiseConstants {
-  uvec4 params;  // x seed, y size (texels per side), z unused, w unused
+  uint seed;
+  uint size;  // texels per side
+  uint padding0;
+  uint padding1;
 };
-CLOUDS_STATIC_ASSERT(sizeof(NoiseConstants) == 16);
 
 // Push constants of the weather generator.
 struct WeatherConstants {
-  vec4 params;  // x evolution phase in [0, 1), yzw unused
-  uvec4 seed;   // x seed, y first row generated by this dispatch
+  float evolutionPhase;  // in [0, 1)
+  uint seed;
+  uint firstRow;  // the first row this dispatch generates
+  uint padding0;
 };
-CLOUDS_STATIC_ASSERT(sizeof(WeatherConstants) == 32);
+
+// Push constants of the weather maxima (one level from the level below).
+struct MaximaConstants {
+  uint sourceSize;  // texels per side of the source
+  uint cellSize;    // source texels per side of a target cell
+  uint targetSize;  // cells per side
+  uint padding0;
+};
 
 // Push constants of the composite helper.
 struct CompositeConstants {
-  uvec4 extent;  // xy host colour extent
+  uvec2 extent;  // host colour extent (px)
+  uvec2 padding0;
 };
-CLOUDS_STATIC_ASSERT(sizeof(CompositeConstants) == 16);
 
 CLOUDS_SHADER_END
+
+#ifdef __cplusplus
+#include <cstddef>
+// std140 offsets, asserted where the C++ compiler lays the struct out (glm types have the
+// sizes GLSL has, but not std140's alignment: these catch a field that would move).
+#define CLOUDS_ASSERT_OFFSET(type, field, offset) \
+  static_assert(offsetof(clouds::shader::type, field) == (offset), #type "." #field)
+CLOUDS_ASSERT_OFFSET(CloudUniforms, viewToWorld, 64);
+CLOUDS_ASSERT_OFFSET(CloudUniforms, previousClipFromView, 128);
+CLOUDS_ASSERT_OFFSET(CloudUniforms, previousClipOrigin, 192);
+CLOUDS_ASSERT_OFFSET(CloudUniforms, cameraAltitudeMetres, 208);
+CLOUDS_ASSERT_OFFSET(CloudUniforms, sunDirection, 224);
+CLOUDS_ASSERT_OFFSET(CloudUniforms, sunIlluminance, 240);
+CLOUDS_ASSERT_OFFSET(CloudUniforms, sunStrength, 252);
+CLOUDS_ASSERT_OFFSET(CloudUniforms, ambientTop, 256);
+CLOUDS_ASSERT_OFFSET(CloudUniforms, ambientBottom, 272);
+CLOUDS_ASSERT_OFFSET(CloudUniforms, shapeOffsetMetres, 288);
+CLOUDS_ASSERT_OFFSET(CloudUniforms, detailOffsetMetres, 304);
+CLOUDS_ASSERT_OFFSET(CloudUniforms, weatherOffsetMetres, 320);
+CLOUDS_ASSERT_OFFSET(CloudUniforms, curlOffsetMetres, 336);
+CLOUDS_ASSERT_OFFSET(CloudUniforms, windDirection, 352);
+CLOUDS_ASSERT_OFFSET(CloudUniforms, fineCellMetres, 368);
+CLOUDS_ASSERT_OFFSET(CloudUniforms, extinctionPerMetre, 384);
+CLOUDS_ASSERT_OFFSET(CloudUniforms, anvilBias, 400);
+CLOUDS_ASSERT_OFFSET(CloudUniforms, phaseForwardG, 416);
+CLOUDS_ASSERT_OFFSET(CloudUniforms, msOctaves, 432);
+CLOUDS_ASSERT_OFFSET(CloudUniforms, inScatterStrength, 448);
+CLOUDS_ASSERT_OFFSET(CloudUniforms, viewStepMetres, 464);
+CLOUDS_ASSERT_OFFSET(CloudUniforms, lightConeMetres, 480);
+CLOUDS_ASSERT_OFFSET(CloudUniforms, temporalIndex, 496);
+CLOUDS_ASSERT_OFFSET(CloudUniforms, traceExtent, 512);
+CLOUDS_ASSERT_OFFSET(CloudUniforms, outputExtent, 520);
+CLOUDS_ASSERT_OFFSET(CloudUniforms, tilePhase, 528);
+CLOUDS_ASSERT_OFFSET(CloudUniforms, tileSize, 536);
+CLOUDS_ASSERT_OFFSET(CloudUniforms, temporalFreshWeight, 544);
+CLOUDS_ASSERT_OFFSET(CloudUniforms, subpixelOffset, 560);
+CLOUDS_ASSERT_OFFSET(CloudUniforms, upsamplingMaxSamples, 568);
+static_assert(sizeof(clouds::shader::CloudUniforms) == 576);
+static_assert(sizeof(clouds::shader::NoiseConstants) == 16);
+static_assert(sizeof(clouds::shader::WeatherConstants) == 16);
+static_assert(sizeof(clouds::shader::MaximaConstants) == 16);
+static_assert(sizeof(clouds::shader::CompositeConstants) == 16);
+#undef CLOUDS_ASSERT_OFFSET
+#endif
 
 #endif

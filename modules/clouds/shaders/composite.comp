@@ -5,9 +5,9 @@
 #extension GL_GOOGLE_include_directive : require
 #include "cloud_types.h"
 
-layout(local_size_x = 8, local_size_y = 8) in;
-layout(binding = 0, rgba16f) uniform image2D hostColor;
-layout(binding = 1, rgba16f) uniform readonly image2D cloudRadiance;
+layout(local_size_x = kWorkgroupSize2D, local_size_y = kWorkgroupSize2D) in;
+layout(binding = kCompositeHostColor, rgba16f) uniform image2D hostColor;
+layout(binding = kCompositeClouds, rgba16f) uniform readonly image2D cloudRadiance;
 layout(push_constant) uniform Constants { CompositeConstants constants; };
 
 void main() {

@@ -7,24 +7,24 @@
 #extension GL_GOOGLE_include_directive : require
 #include "cloud_types.h"
 
-layout(local_size_x = 8, local_size_y = 8) in;
+layout(local_size_x = kWorkgroupSize2D, local_size_y = kWorkgroupSize2D) in;
 #include "frame_uniforms.glsl"
-layout(binding = 1) uniform sampler2D hostDepth;
-layout(binding = 2, r32f) uniform writeonly image2D outDistance;
+layout(binding = kSceneDistanceHostDepth) uniform sampler2D hostDepth;
+layout(binding = kSceneDistanceOut, r32f) uniform writeonly image2D outDistance;
 
 #include "cloud_march.h"
 
 void main() {
   loadFrameUniforms();
   const uvec2 pixel = gl_GlobalInvocationID.xy;
-  if (any(greaterThanEqual(pixel, u.extent.xy))) return;
-  const uvec2 full = u.extent.zw;
+  if (any(greaterThanEqual(pixel, u.traceExtent))) return;
+  const uvec2 full = u.outputExtent;
   // The output pixels whose centres fall in this trace pixel.
-  const uvec2 first = uvec2(floor(vec2(pixel) * vec2(full) / vec2(u.extent.xy)));
-  const uvec2 last = min(uvec2(ceil(vec2(pixel + 1u) * vec2(full) / vec2(u.extent.xy))), full) - 1u;
+  const uvec2 first = uvec2(floor(vec2(pixel) * vec2(full) / vec2(u.traceExtent)));
+  const uvec2 last = min(uvec2(ceil(vec2(pixel + 1u) * vec2(full) / vec2(u.traceExtent))), full) - 1u;
   // The farthest depth value first, converted once: within a footprint of a few pixels the
   // distance for a depth changes with the ray's angle by well under 3%, which the margin covers.
-  const bool reversed = (u.frame.z & kFlagReversedZ) != 0u;
+  const bool reversed = (u.flags & kFlagReversedZ) != 0u;
   float farthestDepth = reversed ? 1.0f : 0.0f;
   for (uint y = first.y; y <= last.y; ++y) {
     for (uint x = first.x; x <= last.x; ++x) {

@@ -5,14 +5,14 @@
 #include "cloud_noise.h"
 #include "cloud_types.h"
 
-layout(local_size_x = 4, local_size_y = 4, local_size_z = 4) in;
-layout(binding = 0, rgba8) uniform writeonly image3D target;
+layout(local_size_x = kWorkgroupSize3D, local_size_y = kWorkgroupSize3D, local_size_z = kWorkgroupSize3D) in;
+layout(binding = kGeneratorTarget, rgba8) uniform writeonly image3D target;
 layout(push_constant) uniform Constants { NoiseConstants constants; };
 
 void main() {
   const uvec3 texel = gl_GlobalInvocationID;
-  const uint size = constants.params.y;
+  const uint size = constants.size;
   if (any(greaterThanEqual(texel, uvec3(size)))) return;
   const vec3 uvw = (vec3(texel) + 0.5f) / float(size);
-  imageStore(target, ivec3(texel), lowFrequencyNoiseTexel(uvw, constants.params.x));
+  imageStore(target, ivec3(texel), lowFrequencyNoiseTexel(uvw, constants.seed));
 }

@@ -13,24 +13,24 @@
 #extension GL_GOOGLE_include_directive : require
 #include "cloud_temporal.h"
 
-layout(local_size_x = 8, local_size_y = 8) in;
+layout(local_size_x = kWorkgroupSize2D, local_size_y = kWorkgroupSize2D) in;
 // Last frame's result (kSpecHistory): 0 none (reset, inside the layer...), 1 nothing moved
 // (read in place, unclamped: exact), 2 reprojected. Every path of a shader costs on lavapipe,
 // which runs both sides of a branch, so what a frame does not need is compiled out.
-layout(constant_id = 0) const uint kHistory = 2u;
+layout(constant_id = kSpecHistory) const uint kHistory = 2u;
 #include "frame_uniforms.glsl"
-layout(binding = 1, rgba32ui) uniform readonly uimage2D freshSamples;
-layout(binding = 2, rgba32ui) uniform readonly uimage2D history;
-layout(binding = 3, rgba32ui) uniform writeonly uimage2D outSamples;
+layout(binding = kReconstructFresh, rgba32ui) uniform readonly uimage2D freshSamples;
+layout(binding = kReconstructHistory, rgba32ui) uniform readonly uimage2D history;
+layout(binding = kReconstructOut, rgba32ui) uniform writeonly uimage2D outSamples;
 
 #include "cloud_march.h"
 
-ivec2 clampPixel(ivec2 p) { return clamp(p, ivec2(0), ivec2(u.extent.xy) - 1); }
+ivec2 clampPixel(ivec2 p) { return clamp(p, ivec2(0), ivec2(u.traceExtent) - 1); }
 
 // A fresh sample on this frame's grid, clamped to the image (edge tiles may lack one).
 ivec2 freshAt(ivec2 p) {
-  const ivec2 last = ivec2(int(u.pattern.w & 0xffffu), int(u.pattern.w >> 16u));
-  return clamp(p, ivec2(u.pattern.yz), last);
+  const ivec2 last = ivec2(int(u.lastFreshPixel & 0xffffu), int(u.lastFreshPixel >> 16u));
+  return clamp(p, ivec2(u.tilePhase), last);
 }
 
 // Last frame's radiance at `position` (bilinear) and its cloud depths at the nearest of the
@@ -55,8 +55,8 @@ vec4 historyAt(vec2 position, out vec2 depth) {
 void main() {
   loadFrameUniforms();
   const uvec2 pixel = gl_GlobalInvocationID.xy;
-  if (any(greaterThanEqual(pixel, u.extent.xy))) return;
-  const int k = int(u.pattern.x);
+  if (any(greaterThanEqual(pixel, u.traceExtent))) return;
+  const int k = int(u.tileSize);
 
   // This frame's estimate: bilinear between the fresh samples around the pixel (exactly the
   // pixel's own sample when it is fresh: then p00 is the pixel and f is 0).
@@ -82,31 +82,31 @@ void main() {
   vec4 previous = current;
   vec2 historyDepth = currentDepth;
   bool usable = false;
-  if (kHistory == 1u) {
+  if (kHistory == kHistoryInPlace) {
     const uvec4 texel = imageLoad(history, ivec2(pixel));
     previous = unpackCloudRadiance(texel);
     historyDepth = unpackCloudDepth(texel);
     usable = finiteVec4(previous) && !any(isnan(historyDepth));
-  } else if (kHistory == 2u) {
+  } else if (kHistory == kHistoryReprojected) {
     // Where was this pixel's cloud last frame (cloud_temporal.h)? Where the reprojection
     // depends on the depth (spread), the history is clamped to the range of the fresh
     // samples around the pixel (Karis-style box); a static or only turning camera keeps it
     // whole, so small clouds seen by few fresh samples survive.
     const Reprojection reprojected = reprojectPixel(
-        viewRayDirection(vec2(pixel) + 0.5f, vec2(u.extent.xy), u), currentDepth,
-        vec2(u.extent.xy), u);
+        viewRayDirection(vec2(pixel) + 0.5f, vec2(u.traceExtent), u), currentDepth,
+        vec2(u.traceExtent), u);
     previous = historyAt(reprojected.position, historyDepth);
     usable = reprojected.onScreen && finiteVec4(previous) && !any(isnan(historyDepth));
     const vec4 lo = min(min(r00, r10), min(r01, r11));
     const vec4 hi = max(max(r00, r10), max(r01, r11));
-    const vec4 margin = (hi - lo) * u.temporal.y + vec4(0.002f);
-    const float clampStrength = saturate(reprojected.spread / u.temporal.w);
+    const vec4 margin = (hi - lo) * u.historyClampMargin + vec4(0.002f);
+    const float clampStrength = saturate(reprojected.spread / u.historyClampSpreadPixels);
     previous = mix(previous, clamp(previous, lo - margin, hi + margin), clampStrength);
   }
   vec4 result = current;
   vec2 resultDepth = currentDepth;
   if (usable) {
-    result = fresh ? mix(previous, current, u.temporal.x) : previous;
+    result = fresh ? mix(previous, current, u.temporalFreshWeight) : previous;
     resultDepth = fresh ? currentDepth : historyDepth;
   }
   imageStore(outSamples, ivec2(pixel), packCloudSample(result, resultDepth));

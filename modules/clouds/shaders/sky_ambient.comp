@@ -7,20 +7,21 @@
 #include "cloud_math.h"
 #include "cloud_types.h"
 
-layout(local_size_x = 64) in;
-layout(binding = 0, std430) buffer Uniforms { CloudUniforms u; };
-layout(binding = 1) uniform sampler2D sky;
+layout(local_size_x = kSkyAmbientLanes) in;
+layout(binding = kSkyAmbientUniforms, std430) buffer Uniforms { CloudUniforms u; };
+layout(binding = kSkyAmbientSky) uniform sampler2D sky;
 
-shared vec4 topSum[64];
-shared vec4 bottomSum[64];
+shared vec4 topSum[kSkyAmbientLanes];
+shared vec4 bottomSum[kSkyAmbientLanes];
 
 void main() {
   const uint lane = gl_LocalInvocationID.x;
   vec4 top = vec4(0.0f);
   vec4 bottom = vec4(0.0f);
-  // 64 lanes x 16 samples: a stratified grid over azimuth and elevation.
-  for (uint k = 0u; k < 16u; ++k) {
-    const uint index = lane * 16u + k;
+  // kSkyAmbientLanes x kSkyAmbientSamples (64 x 16): a stratified 32 x 32 grid over azimuth
+  // and elevation.
+  for (uint k = 0u; k < kSkyAmbientSamples; ++k) {
+    const uint index = lane * kSkyAmbientSamples + k;
     const float azimuth = (float(index % 32u) + 0.5f) / 32.0f;
     const float e = (float(index / 32u) + 0.5f) / 32.0f;   // [0, 1) over the hemisphere
     const float elevation = e * 0.5f * kPi;                 // radians above the horizon
@@ -33,7 +34,7 @@ void main() {
   topSum[lane] = top;
   bottomSum[lane] = bottom;
   barrier();
-  for (uint stride = 32u; stride > 0u; stride >>= 1u) {
+  for (uint stride = kSkyAmbientLanes / 2u; stride > 0u; stride >>= 1u) {
     if (lane < stride) {
       topSum[lane] += topSum[lane + stride];
       bottomSum[lane] += bottomSum[lane + stride];
@@ -41,7 +42,7 @@ void main() {
     barrier();
   }
   if (lane == 0u) {
-    u.ambientTop = vec4(topSum[0].rgb / max(topSum[0].w, 1e-6f), 0.0f);
-    u.ambientBottom = vec4(bottomSum[0].rgb / max(bottomSum[0].w, 1e-6f), 0.0f);
+    u.ambientTop = topSum[0].rgb / max(topSum[0].w, 1e-6f);
+    u.ambientBottom = bottomSum[0].rgb / max(bottomSum[0].w, 1e-6f);
   }
 }

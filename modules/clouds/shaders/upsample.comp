@@ -7,7 +7,7 @@
 // output-resolution history of each pixel's own samples: the march moves its rays inside
 // their trace pixels from one refresh to the next, so over the rounds every output pixel is
 // hit by rays of its own. A pixel's result is then the mean of its own samples (up to
-// CloudUniforms.upsampling.y, then a running mean), reprojected like the trace history and
+// CloudUniforms.upsamplingMaxSamples, then a running mean), reprojected like the trace history and
 // blended with the bilinear estimate until it holds two; a pixel whose history is uncertain
 // (parallax clamp) starts again from the bilinear estimate, as does every pixel of a frame
 // without history. Static and turning views converge to full-resolution detail; a camera
@@ -22,20 +22,20 @@
 #extension GL_GOOGLE_include_directive : require
 #include "cloud_temporal.h"
 
-layout(local_size_x = 8, local_size_y = 8) in;
-layout(constant_id = 0) const uint kTemporalUpsampling = 0u;
+layout(local_size_x = kWorkgroupSize2D, local_size_y = kWorkgroupSize2D) in;
+layout(constant_id = kSpecTemporalUpsampling) const uint kTemporalUpsampling = 0u;
 // Last frame's output history: 0 none (reset, resize, inside the layer...), 1 the camera and
 // the clouds held still (each pixel's history is where it was: no reprojection, one load),
 // 2 reprojected (kSpecOutputHistory).
-layout(constant_id = 1) const uint kOutputHistory = 0u;
+layout(constant_id = kSpecOutputHistory) const uint kOutputHistory = 0u;
 #include "frame_uniforms.glsl"
-layout(binding = 1, rgba32ui) uniform readonly uimage2D traceSamples;
-layout(binding = 2) uniform sampler2D hostDepth;
-layout(binding = 3, rgba16f) uniform writeonly image2D outRadiance;
-layout(binding = 4, rg32f) uniform writeonly image2D outDepth;
-layout(binding = 5, rgba32ui) uniform readonly uimage2D freshSamples;
-layout(binding = 6, rgba32ui) uniform readonly uimage2D outputHistory;
-layout(binding = 7, rgba32ui) uniform writeonly uimage2D outputHistoryOut;
+layout(binding = kUpsampleTraceSamples, rgba32ui) uniform readonly uimage2D traceSamples;
+layout(binding = kUpsampleHostDepth) uniform sampler2D hostDepth;
+layout(binding = kUpsampleRadianceOut, rgba16f) uniform writeonly image2D outRadiance;
+layout(binding = kUpsampleDepthOut, rg32f) uniform writeonly image2D outDepth;
+layout(binding = kUpsampleFresh, rgba32ui) uniform readonly uimage2D freshSamples;
+layout(binding = kUpsampleHistory, rgba32ui) uniform readonly uimage2D outputHistory;
+layout(binding = kUpsampleHistoryOut, rgba32ui) uniform writeonly uimage2D outputHistoryOut;
 
 #include "cloud_march.h"
 
@@ -58,7 +58,7 @@ vec4 outputHistoryAt(vec2 position, out vec2 depth, out uint ownSamples) {
   const vec2 p = position - 0.5f;
   const ivec2 i = ivec2(floor(p));
   const vec2 f = p - floor(p);
-  const ivec2 last = ivec2(u.extent.zw) - 1;
+  const ivec2 last = ivec2(u.outputExtent) - 1;
   vec4 radiance = vec4(0.0f);
   float weightSum = 0.0f;
   float bestWeight = 0.0f;
@@ -93,7 +93,7 @@ void spatialEstimate(uvec2 pixel, float scene, vec2 scale, out vec4 radiance, ou
   DepthBlend blend = depthBlendStart();
   for (int tap = 0; tap < 4; ++tap) {
     const ivec2 offset = ivec2(tap & 1, tap >> 1);
-    const ivec2 q = clamp(i + offset, ivec2(0), ivec2(u.extent.xy) - 1);
+    const ivec2 q = clamp(i + offset, ivec2(0), ivec2(u.traceExtent) - 1);
     const float w = (offset.x == 1 ? f.x : 1.0f - f.x) * (offset.y == 1 ? f.y : 1.0f - f.y);
     const uvec4 packed = imageLoad(traceSamples, q);
     vec4 r = unpackCloudRadiance(packed);
@@ -110,11 +110,11 @@ void spatialEstimate(uvec2 pixel, float scene, vec2 scale, out vec4 radiance, ou
 void main() {
   loadFrameUniforms();
   const uvec2 pixel = gl_GlobalInvocationID.xy;
-  const uvec2 full = u.extent.zw;
+  const uvec2 full = u.outputExtent;
   if (any(greaterThanEqual(pixel, full))) return;
   const float scene = sceneDistanceFromDepth(texelFetch(hostDepth, ivec2(pixel), 0).r,
                                              vec2(pixel) + 0.5f, vec2(full), u);
-  const vec2 scale = vec2(u.extent.xy) / vec2(full);  // trace pixels per output pixel
+  const vec2 scale = vec2(u.traceExtent) / vec2(full);  // trace pixels per output pixel
   // The spatial estimate, and the range of the trace pixels it comes from.
   vec4 spatial, lo, hi;
   vec2 spatialDepth;
@@ -127,7 +127,7 @@ void main() {
 
   // The trace pixel under this one: this frame's fresh sample is there when its ray went
   // through this pixel.
-  const uvec2 trace = min(uvec2((vec2(pixel) + 0.5f) * scale), u.extent.xy - 1u);
+  const uvec2 trace = min(uvec2((vec2(pixel) + 0.5f) * scale), u.traceExtent - 1u);
   // The mean of this pixel's own samples so far, and how many there are.
   vec4 own = vec4(0.0f, 0.0f, 0.0f, 1.0f);
   vec2 ownDepth = vec2(0.0f);
@@ -153,11 +153,11 @@ void main() {
       const Reprojection reprojected = reprojectPixel(
           viewRayDirection(vec2(pixel) + 0.5f, vec2(full), u),
           unpackCloudDepth(imageLoad(traceSamples, ivec2(trace))), vec2(full), u);
-      certain = reprojected.onScreen && reprojected.spread * scale.x < 0.5f * u.temporal.w;
+      certain = reprojected.onScreen && reprojected.spread * scale.x < 0.5f * u.historyClampSpreadPixels;
       history = outputHistoryAt(reprojected.position, historyDepth, historySamples);
       // Something moved (the camera, or the clouds' detail with the wind): the own samples
       // may be stale; keep them within the range of this frame's trace pixels around.
-      const vec4 margin = (hi - lo) * u.temporal.y + vec4(0.002f);
+      const vec4 margin = (hi - lo) * u.historyClampMargin + vec4(0.002f);
       history = clamp(history, lo - margin, hi + margin);
     }
     // Kept where no geometry now stands in front of it and it is finite; anything else starts
@@ -169,10 +169,10 @@ void main() {
       ownSamples = historySamples;
     }
 
-    // This frame's fresh sample, when its ray (moved inside its trace pixel by u.subpixel)
+    // This frame's fresh sample, when its ray (moved inside its trace pixel by u.subpixelOffset)
     // went through this output pixel: one pixel in (k / scale)^2 has one. Samples hidden by
     // geometry are not kept (the geometry may move away).
-    const vec2 hit = (vec2(trace) + 0.5f + u.subpixel.xy) / scale;
+    const vec2 hit = (vec2(trace) + 0.5f + u.subpixelOffset) / scale;
     const bool fresh = isFreshPixel(trace, u) && all(equal(uvec2(floor(hit)), pixel));
     if (fresh) {
       const uvec4 packed = imageLoad(freshSamples, ivec2(trace));
@@ -180,13 +180,13 @@ void main() {
       const vec2 d = unpackCloudDepth(packed);
       if (!behindGeometry(scene, d) && finiteVec4(r) && !any(isnan(d))) {
         // The mean of the own samples so far, then a running mean over the last few.
-        const float weight = 1.0f / min(float(ownSamples) + 1.0f, u.upsampling.x);
+        const float weight = 1.0f / min(float(ownSamples) + 1.0f, u.upsamplingMaxSamples);
         DepthBlend blend = depthBlendStart();
         depthBlendAdd(blend, 1.0f - weight, own.a, ownDepth);
         depthBlendAdd(blend, weight, r.a, d);
         own = mix(own, r, weight);
         ownDepth = depthBlendResult(blend);
-        ownSamples = min(ownSamples + 1u, uint(u.upsampling.x));
+        ownSamples = min(ownSamples + 1u, uint(u.upsamplingMaxSamples));
       }
     }
   }

@@ -6,14 +6,14 @@
 #include "cloud_types.h"
 #include "cloud_weather.h"
 
-layout(local_size_x = 8, local_size_y = 8) in;
-layout(binding = 0, rgba8) uniform writeonly image2D target;
+layout(local_size_x = kWorkgroupSize2D, local_size_y = kWorkgroupSize2D) in;
+layout(binding = kGeneratorTarget, rgba8) uniform writeonly image2D target;
 layout(push_constant) uniform Constants { WeatherConstants constants; };
 
 void main() {
-  const uvec2 texel = gl_GlobalInvocationID.xy + uvec2(0u, constants.seed.y);
+  const uvec2 texel = gl_GlobalInvocationID.xy + uvec2(0u, constants.firstRow);
   if (any(greaterThanEqual(texel, uvec2(kWeatherMapSize)))) return;
   const vec2 uv = (vec2(texel) + 0.5f) / float(kWeatherMapSize);
   imageStore(target, ivec2(texel),
-             proceduralWeatherTexel(uv, constants.params.x, constants.seed.x));
+             proceduralWeatherTexel(uv, constants.evolutionPhase, constants.seed));
 }

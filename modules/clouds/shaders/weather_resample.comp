@@ -4,9 +4,9 @@
 #extension GL_GOOGLE_include_directive : require
 #include "cloud_types.h"
 
-layout(local_size_x = 8, local_size_y = 8) in;
-layout(binding = 0, rgba8) uniform writeonly image2D target;
-layout(binding = 1) uniform sampler2D source;
+layout(local_size_x = kWorkgroupSize2D, local_size_y = kWorkgroupSize2D) in;
+layout(binding = kResampleTarget, rgba8) uniform writeonly image2D target;
+layout(binding = kResampleSource) uniform sampler2D source;
 
 void main() {
   const uvec2 texel = gl_GlobalInvocationID.xy;

@@ -1,51 +1,44 @@
 #include "compute_program.h"
 
+#include <cstdlib>
+
 namespace clouds::detail {
 
 ComputeProgram::ComputeProgram(const DeviceContext& context, std::span<const std::uint32_t> spirv,
-                               std::vector<VkDescriptorType> bindings,
+                               std::span<const Binding> bindings,
                                std::uint32_t pushConstantBytes, std::string name)
-    : context_(context), name_(std::move(name)), bindings_(std::move(bindings)) {
-  const auto& fn = context.fn();
+    : context_(context), name_(std::move(name)), bindings_(bindings.begin(), bindings.end()) {
   VkShaderModuleCreateInfo moduleInfo{VK_STRUCTURE_TYPE_SHADER_MODULE_CREATE_INFO};
   moduleInfo.codeSize = spirv.size_bytes();
   moduleInfo.pCode = spirv.data();
-  check(fn.vkCreateShaderModule(context.device(), &moduleInfo, nullptr, &module_),
-        "vkCreateShaderModule");
-  context.name(VK_OBJECT_TYPE_SHADER_MODULE, bits(module_), name_);
+  module_ = context.createShaderModule(moduleInfo, name_);
 
   std::vector<VkDescriptorSetLayoutBinding> layoutBindings;
-  for (std::uint32_t i = 0; i < bindings_.size(); ++i) {
-    layoutBindings.push_back({i, bindings_[i], 1, VK_SHADER_STAGE_COMPUTE_BIT, nullptr});
+  for (const Binding& binding : bindings_) {
+    layoutBindings.push_back({binding.slot, binding.type, 1, VK_SHADER_STAGE_COMPUTE_BIT, nullptr});
   }
   VkDescriptorSetLayoutCreateInfo setInfo{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO};
   setInfo.bindingCount = static_cast<std::uint32_t>(layoutBindings.size());
   setInfo.pBindings = layoutBindings.data();
-  check(fn.vkCreateDescriptorSetLayout(context.device(), &setInfo, nullptr, &setLayout_),
-        "vkCreateDescriptorSetLayout");
-  context.name(VK_OBJECT_TYPE_DESCRIPTOR_SET_LAYOUT, bits(setLayout_), name_ + " set layout");
+  setLayout_ = context.createSetLayout(setInfo, name_ + " set layout");
 
   const VkPushConstantRange range{VK_SHADER_STAGE_COMPUTE_BIT, 0, pushConstantBytes};
+  const VkDescriptorSetLayout setLayout = setLayout_.get();
   VkPipelineLayoutCreateInfo layoutInfo{VK_STRUCTURE_TYPE_PIPELINE_LAYOUT_CREATE_INFO};
   layoutInfo.setLayoutCount = 1;
-  layoutInfo.pSetLayouts = &setLayout_;
+  layoutInfo.pSetLayouts = &setLayout;
   layoutInfo.pushConstantRangeCount = pushConstantBytes > 0 ? 1u : 0u;
   layoutInfo.pPushConstantRanges = &range;
-  check(fn.vkCreatePipelineLayout(context.device(), &layoutInfo, nullptr, &layout_),
-        "vkCreatePipelineLayout");
-  context.name(VK_OBJECT_TYPE_PIPELINE_LAYOUT, bits(layout_), name_ + " layout");
+  layout_ = context.createPipelineLayout(layoutInfo, name_ + " layout");
 }
 
-ComputeProgram::~ComputeProgram() {
-  const auto& fn = context_.fn();
-  for (auto& [key, pipeline] : variants_) fn.vkDestroyPipeline(context_.device(), pipeline, nullptr);
-  fn.vkDestroyPipelineLayout(context_.device(), layout_, nullptr);
-  fn.vkDestroyDescriptorSetLayout(context_.device(), setLayout_, nullptr);
-  fn.vkDestroyShaderModule(context_.device(), module_, nullptr);
+VkPipeline ComputeProgram::find(const SpecializationKey& specialization) const {
+  const auto it = variants_.find(specialization);
+  return it == variants_.end() ? VK_NULL_HANDLE : it->second.get();
 }
 
-VkPipeline ComputeProgram::variant(const SpecializationKey& specialization) {
-  if (auto it = variants_.find(specialization); it != variants_.end()) return it->second;
+VkPipeline ComputeProgram::prepare(const SpecializationKey& specialization) {
+  if (const VkPipeline existing = find(specialization)) return existing;
   std::vector<VkSpecializationMapEntry> entries;
   for (std::uint32_t i = 0; i < specialization.count; ++i) {
     entries.push_back({i, i * 4u, 4u});
@@ -59,25 +52,24 @@ VkPipeline ComputeProgram::variant(const SpecializationKey& specialization) {
   VkComputePipelineCreateInfo info{VK_STRUCTURE_TYPE_COMPUTE_PIPELINE_CREATE_INFO};
   info.stage = {VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO};
   info.stage.stage = VK_SHADER_STAGE_COMPUTE_BIT;
-  info.stage.module = module_;
+  info.stage.module = module_.get();
   info.stage.pName = "main";
   info.stage.pSpecializationInfo = entries.empty() ? nullptr : &specializationInfo;
-  info.layout = layout_;
-  VkPipeline pipeline = VK_NULL_HANDLE;
-  check(context_.fn().vkCreateComputePipelines(context_.device(), VK_NULL_HANDLE, 1, &info, nullptr,
-                                               &pipeline),
-        "vkCreateComputePipelines");
+  info.layout = layout_.get();
   std::string variantName = name_;
   for (std::uint32_t i = 0; i < specialization.count; ++i) {
     variantName += " " + std::to_string(specialization.values[i]);
   }
-  context_.name(VK_OBJECT_TYPE_PIPELINE, bits(pipeline), variantName);
-  variants_.emplace(specialization, pipeline);
-  return pipeline;
+  UniquePipeline pipeline = context_.createComputePipeline(info, variantName);
+  const VkPipeline handle = pipeline.get();
+  variants_.emplace(specialization, std::move(pipeline));
+  return handle;
 }
 
 SetWriter::Entry& SetWriter::add(std::uint32_t binding, VkDescriptorType type) {
-  if (count_ == kMaxEntries) throw ModuleError("clouds: too many descriptor writes");
+  // More bindings than any pass has: a programming error, not a runtime condition (recording
+  // must not fail halfway).
+  if (count_ == kMaxEntries) std::abort();
   Entry& e = entries_[count_++];
   e = Entry{binding, type, {}, {}};
   return e;

@@ -1,7 +1,8 @@
 #pragma once
 // A compute shader with its descriptor set layout (set 0), push constants and pipeline
-// variants keyed by specialization constants (constant ids 0..n-1), created on first use:
-// feature toggles are compiled out rather than branched over at run time.
+// variants keyed by specialization constants (constant ids 0..n-1): feature toggles are
+// compiled out rather than branched over at run time. Variants are created by prepare(),
+// outside command recording; find() only looks them up, so recording never creates one.
 #include <vulkan/vulkan.h>
 
 #include <array>
@@ -22,29 +23,36 @@ struct SpecializationKey {
   auto operator<=>(const SpecializationKey&) const = default;
 };
 
+// One descriptor of set 0: its binding slot (cloud_types.h) and type.
+struct Binding {
+  std::uint32_t slot;
+  VkDescriptorType type;
+};
+
 class ComputeProgram {
  public:
   ComputeProgram(const DeviceContext& context, std::span<const std::uint32_t> spirv,
-                 std::vector<VkDescriptorType> bindings, std::uint32_t pushConstantBytes,
+                 std::span<const Binding> bindings, std::uint32_t pushConstantBytes,
                  std::string name);
-  ~ComputeProgram();
-  ComputeProgram(const ComputeProgram&) = delete;
-  ComputeProgram& operator=(const ComputeProgram&) = delete;
 
-  VkPipeline variant(const SpecializationKey& specialization = {});
-  VkPipelineLayout layout() const { return layout_; }
-  VkDescriptorSetLayout setLayout() const { return setLayout_; }
-  const std::vector<VkDescriptorType>& bindings() const { return bindings_; }
+  // Creates the variant if it does not exist yet (never during recording).
+  VkPipeline prepare(const SpecializationKey& specialization = {});
+  // The variant, or VK_NULL_HANDLE when prepare() has not created it.
+  VkPipeline find(const SpecializationKey& specialization = {}) const;
+  VkPipelineLayout layout() const { return layout_.get(); }
+  VkDescriptorSetLayout setLayout() const { return setLayout_.get(); }
+  const std::vector<Binding>& bindings() const { return bindings_; }
+  const std::string& name() const { return name_; }
   std::size_t variantCount() const { return variants_.size(); }
 
  private:
   const DeviceContext& context_;
   std::string name_;
-  std::vector<VkDescriptorType> bindings_;
-  VkShaderModule module_ = VK_NULL_HANDLE;
-  VkDescriptorSetLayout setLayout_ = VK_NULL_HANDLE;
-  VkPipelineLayout layout_ = VK_NULL_HANDLE;
-  std::map<SpecializationKey, VkPipeline> variants_;
+  std::vector<Binding> bindings_;
+  UniqueShaderModule module_;
+  UniqueSetLayout setLayout_;
+  UniquePipelineLayout layout_;
+  std::map<SpecializationKey, UniquePipeline> variants_;
 };
 
 // Fills and writes a descriptor set binding by binding (image infos or buffer infos).

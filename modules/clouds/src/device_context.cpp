@@ -1,22 +1,28 @@
 #include "device_context.h"
 
-#include <utility>
-
 namespace clouds::detail {
 
 void check(VkResult result, const char* what) {
-  if (result != VK_SUCCESS) {
-    throw ModuleError(std::string("clouds: ") + what + " failed (VkResult " +
-                      std::to_string(static_cast<int>(result)) + ")");
-  }
+  if (result == VK_SUCCESS) return;
+  // Host, device and descriptor-pool memory alike: the host can only free some and retry.
+  const bool outOfMemory =
+      result == VK_ERROR_OUT_OF_HOST_MEMORY || result == VK_ERROR_OUT_OF_DEVICE_MEMORY ||
+      result == VK_ERROR_OUT_OF_POOL_MEMORY || result == VK_ERROR_FRAGMENTED_POOL;
+  throw ModuleError(outOfMemory ? ErrorCode::OutOfMemory : ErrorCode::VulkanFailure,
+                    std::string("clouds: ") + what + " failed (VkResult " +
+                        std::to_string(static_cast<int>(result)) + ")");
 }
 
 DeviceContext::DeviceContext(const CreateInfo& info, const VulkanFunctions& functions)
-    : fn_(functions), device_(info.device), physical_(info.physicalDevice) {
+    : fn_(functions),
+      device_(info.device),
+      physical_(info.physicalDevice),
+      debugUtils_(info.debugUtils) {
   fn_.vkGetPhysicalDeviceMemoryProperties(physical_, &memory_);
 }
 
-std::uint32_t DeviceContext::memoryType(std::uint32_t typeBits, VkMemoryPropertyFlags wanted) const {
+std::uint32_t DeviceContext::memoryType(std::uint32_t typeBits,
+                                        VkMemoryPropertyFlags wanted) const {
   for (std::uint32_t i = 0; i < memory_.memoryTypeCount; ++i) {
     if ((typeBits & (1u << i)) && (memory_.memoryTypes[i].propertyFlags & wanted) == wanted) {
       return i;
@@ -25,11 +31,18 @@ std::uint32_t DeviceContext::memoryType(std::uint32_t typeBits, VkMemoryProperty
   for (std::uint32_t i = 0; i < memory_.memoryTypeCount; ++i) {
     if (typeBits & (1u << i)) return i;  // no preferred type: any that fits
   }
-  throw ModuleError("clouds: no memory type fits a module resource");
+  throw ModuleError(ErrorCode::UnsupportedDevice,
+                    "clouds: no memory type fits a module resource");
+}
+
+bool DeviceContext::supportsStorage(VkFormat format) const {
+  VkFormatProperties properties{};
+  fn_.vkGetPhysicalDeviceFormatProperties(physical_, format, &properties);
+  return (properties.optimalTilingFeatures & VK_FORMAT_FEATURE_STORAGE_IMAGE_BIT) != 0;
 }
 
 void DeviceContext::name(VkObjectType type, std::uint64_t handle, const std::string& name) const {
-  if (fn_.vkSetDebugUtilsObjectNameEXT == nullptr || handle == 0) return;
+  if (!debugUtils_ || fn_.vkSetDebugUtilsObjectNameEXT == nullptr || handle == 0) return;
   const std::string full = "clouds: " + name;
   VkDebugUtilsObjectNameInfoEXT info{VK_STRUCTURE_TYPE_DEBUG_UTILS_OBJECT_NAME_INFO_EXT};
   info.objectType = type;
@@ -39,131 +52,102 @@ void DeviceContext::name(VkObjectType type, std::uint64_t handle, const std::str
 }
 
 void DeviceContext::beginLabel(VkCommandBuffer cmd, const char* name) const {
-  if (fn_.vkCmdBeginDebugUtilsLabelEXT == nullptr) return;
+  if (!debugUtils_ || fn_.vkCmdBeginDebugUtilsLabelEXT == nullptr) return;
   VkDebugUtilsLabelEXT label{VK_STRUCTURE_TYPE_DEBUG_UTILS_LABEL_EXT};
   label.pLabelName = name;
   fn_.vkCmdBeginDebugUtilsLabelEXT(cmd, &label);
 }
 
 void DeviceContext::endLabel(VkCommandBuffer cmd) const {
-  if (fn_.vkCmdEndDebugUtilsLabelEXT != nullptr) fn_.vkCmdEndDebugUtilsLabelEXT(cmd);
-}
-
-bool DeviceContext::supportsStorage(VkFormat format) const {
-  VkFormatProperties properties{};
-  fn_.vkGetPhysicalDeviceFormatProperties(physical_, format, &properties);
-  return (properties.optimalTilingFeatures & VK_FORMAT_FEATURE_STORAGE_IMAGE_BIT) != 0;
-}
-
-OwnedImage::OwnedImage(const DeviceContext& context, VkImageType type, VkFormat format,
-                       VkExtent3D extent, VkImageUsageFlags usage, const std::string& name)
-    : context_(&context), format_(format), extent_(extent) {
-  const auto& fn = context.fn();
-  VkImageCreateInfo info{VK_STRUCTURE_TYPE_IMAGE_CREATE_INFO};
-  info.imageType = type;
-  info.format = format;
-  info.extent = extent;
-  info.mipLevels = 1;
-  info.arrayLayers = 1;
-  info.samples = VK_SAMPLE_COUNT_1_BIT;
-  info.tiling = VK_IMAGE_TILING_OPTIMAL;
-  info.usage = usage;
-  info.initialLayout = VK_IMAGE_LAYOUT_UNDEFINED;
-  check(fn.vkCreateImage(context.device(), &info, nullptr, &image_), "vkCreateImage");
-  context.name(VK_OBJECT_TYPE_IMAGE, bits(image_), name);
-  VkMemoryRequirements requirements{};
-  fn.vkGetImageMemoryRequirements(context.device(), image_, &requirements);
-  VkMemoryAllocateInfo allocation{VK_STRUCTURE_TYPE_MEMORY_ALLOCATE_INFO};
-  allocation.allocationSize = requirements.size;
-  allocation.memoryTypeIndex =
-      context.memoryType(requirements.memoryTypeBits, VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT);
-  check(fn.vkAllocateMemory(context.device(), &allocation, nullptr, &memory_), "vkAllocateMemory");
-  context.name(VK_OBJECT_TYPE_DEVICE_MEMORY, bits(memory_), name + " memory");
-  check(fn.vkBindImageMemory(context.device(), image_, memory_, 0), "vkBindImageMemory");
-  VkImageViewCreateInfo viewInfo{VK_STRUCTURE_TYPE_IMAGE_VIEW_CREATE_INFO};
-  viewInfo.image = image_;
-  viewInfo.viewType = type == VK_IMAGE_TYPE_3D ? VK_IMAGE_VIEW_TYPE_3D : VK_IMAGE_VIEW_TYPE_2D;
-  viewInfo.format = format;
-  viewInfo.subresourceRange = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 1, 0, 1};
-  check(fn.vkCreateImageView(context.device(), &viewInfo, nullptr, &view_), "vkCreateImageView");
-  context.name(VK_OBJECT_TYPE_IMAGE_VIEW, bits(view_), name + " view");
-}
-
-OwnedImage& OwnedImage::operator=(OwnedImage&& other) noexcept {
-  if (this != &other) {
-    reset();
-    context_ = std::exchange(other.context_, nullptr);
-    image_ = std::exchange(other.image_, VK_NULL_HANDLE);
-    memory_ = std::exchange(other.memory_, VK_NULL_HANDLE);
-    view_ = std::exchange(other.view_, VK_NULL_HANDLE);
-    format_ = other.format_;
-    extent_ = other.extent_;
+  if (debugUtils_ && fn_.vkCmdEndDebugUtilsLabelEXT != nullptr) {
+    fn_.vkCmdEndDebugUtilsLabelEXT(cmd);
   }
-  return *this;
 }
 
-void OwnedImage::reset() {
-  if (context_ == nullptr) return;
-  const auto& fn = context_->fn();
-  if (view_ != VK_NULL_HANDLE) fn.vkDestroyImageView(context_->device(), view_, nullptr);
-  if (image_ != VK_NULL_HANDLE) fn.vkDestroyImage(context_->device(), image_, nullptr);
-  if (memory_ != VK_NULL_HANDLE) fn.vkFreeMemory(context_->device(), memory_, nullptr);
-  context_ = nullptr;
-  view_ = VK_NULL_HANDLE;
-  image_ = VK_NULL_HANDLE;
-  memory_ = VK_NULL_HANDLE;
+// Each creation: call, check, wrap, name. The wrap comes before anything else can throw.
+template <typename Unique, auto Create, typename Info>
+Unique DeviceContext::make(const Info& info, VkObjectType type, const char* what,
+                           const std::string& name) const {
+  typename Unique::Handle handle{};
+  check((fn_.*Create)(device_, &info, nullptr, &handle), what);
+  Unique owned(fn_, device_, handle);
+  this->name(type, bits(handle), name);
+  return owned;
 }
 
-OwnedBuffer::OwnedBuffer(const DeviceContext& context, VkDeviceSize size, VkBufferUsageFlags usage,
-                         const std::string& name, bool hostVisible)
-    : context_(&context), size_(size) {
-  const auto& fn = context.fn();
-  VkBufferCreateInfo info{VK_STRUCTURE_TYPE_BUFFER_CREATE_INFO};
-  info.size = size;
-  info.usage = usage;
-  check(fn.vkCreateBuffer(context.device(), &info, nullptr, &buffer_), "vkCreateBuffer");
-  context.name(VK_OBJECT_TYPE_BUFFER, bits(buffer_), name);
-  VkMemoryRequirements requirements{};
-  fn.vkGetBufferMemoryRequirements(context.device(), buffer_, &requirements);
-  VkMemoryAllocateInfo allocation{VK_STRUCTURE_TYPE_MEMORY_ALLOCATE_INFO};
-  allocation.allocationSize = requirements.size;
-  allocation.memoryTypeIndex = context.memoryType(
-      requirements.memoryTypeBits,
-      hostVisible ? VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT | VK_MEMORY_PROPERTY_HOST_COHERENT_BIT
-                  : VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT);
-  check(fn.vkAllocateMemory(context.device(), &allocation, nullptr, &memory_), "vkAllocateMemory");
-  context.name(VK_OBJECT_TYPE_DEVICE_MEMORY, bits(memory_), name + " memory");
-  check(fn.vkBindBufferMemory(context.device(), buffer_, memory_, 0), "vkBindBufferMemory");
-  if (hostVisible) check(fn.vkMapMemory(context.device(), memory_, 0, VK_WHOLE_SIZE, 0, &mapped_), "vkMapMemory");
+UniqueImage DeviceContext::createImage(const VkImageCreateInfo& info,
+                                       const std::string& name) const {
+  return make<UniqueImage, &VulkanFunctions::vkCreateImage>(info, VK_OBJECT_TYPE_IMAGE,
+                                                            "vkCreateImage", name);
 }
 
-OwnedBuffer& OwnedBuffer::operator=(OwnedBuffer&& other) noexcept {
-  if (this != &other) {
-    reset();
-    context_ = std::exchange(other.context_, nullptr);
-    buffer_ = std::exchange(other.buffer_, VK_NULL_HANDLE);
-    memory_ = std::exchange(other.memory_, VK_NULL_HANDLE);
-    size_ = other.size_;
-    mapped_ = std::exchange(other.mapped_, nullptr);
-  }
-  return *this;
+UniqueImageView DeviceContext::createImageView(const VkImageViewCreateInfo& info,
+                                               const std::string& name) const {
+  return make<UniqueImageView, &VulkanFunctions::vkCreateImageView>(
+      info, VK_OBJECT_TYPE_IMAGE_VIEW, "vkCreateImageView", name);
 }
 
-void OwnedBuffer::reset() {
-  if (context_ == nullptr) return;
-  const auto& fn = context_->fn();
-  if (buffer_ != VK_NULL_HANDLE) fn.vkDestroyBuffer(context_->device(), buffer_, nullptr);
-  if (memory_ != VK_NULL_HANDLE) fn.vkFreeMemory(context_->device(), memory_, nullptr);
-  context_ = nullptr;
-  buffer_ = VK_NULL_HANDLE;
-  memory_ = VK_NULL_HANDLE;
-  mapped_ = nullptr;
+UniqueBuffer DeviceContext::createBuffer(const VkBufferCreateInfo& info,
+                                         const std::string& name) const {
+  return make<UniqueBuffer, &VulkanFunctions::vkCreateBuffer>(info, VK_OBJECT_TYPE_BUFFER,
+                                                              "vkCreateBuffer", name);
+}
+
+UniqueMemory DeviceContext::allocateMemory(const VkMemoryAllocateInfo& info,
+                                           const std::string& name) const {
+  return make<UniqueMemory, &VulkanFunctions::vkAllocateMemory>(
+      info, VK_OBJECT_TYPE_DEVICE_MEMORY, "vkAllocateMemory", name);
+}
+
+UniqueSampler DeviceContext::createSampler(const VkSamplerCreateInfo& info,
+                                           const std::string& name) const {
+  return make<UniqueSampler, &VulkanFunctions::vkCreateSampler>(info, VK_OBJECT_TYPE_SAMPLER,
+                                                                "vkCreateSampler", name);
+}
+
+UniqueShaderModule DeviceContext::createShaderModule(const VkShaderModuleCreateInfo& info,
+                                                     const std::string& name) const {
+  return make<UniqueShaderModule, &VulkanFunctions::vkCreateShaderModule>(
+      info, VK_OBJECT_TYPE_SHADER_MODULE, "vkCreateShaderModule", name);
+}
+
+UniqueSetLayout DeviceContext::createSetLayout(const VkDescriptorSetLayoutCreateInfo& info,
+                                               const std::string& name) const {
+  return make<UniqueSetLayout, &VulkanFunctions::vkCreateDescriptorSetLayout>(
+      info, VK_OBJECT_TYPE_DESCRIPTOR_SET_LAYOUT, "vkCreateDescriptorSetLayout", name);
+}
+
+UniquePipelineLayout DeviceContext::createPipelineLayout(const VkPipelineLayoutCreateInfo& info,
+                                                         const std::string& name) const {
+  return make<UniquePipelineLayout, &VulkanFunctions::vkCreatePipelineLayout>(
+      info, VK_OBJECT_TYPE_PIPELINE_LAYOUT, "vkCreatePipelineLayout", name);
+}
+
+UniqueDescriptorPool DeviceContext::createDescriptorPool(const VkDescriptorPoolCreateInfo& info,
+                                                         const std::string& name) const {
+  return make<UniqueDescriptorPool, &VulkanFunctions::vkCreateDescriptorPool>(
+      info, VK_OBJECT_TYPE_DESCRIPTOR_POOL, "vkCreateDescriptorPool", name);
+}
+
+UniqueQueryPool DeviceContext::createQueryPool(const VkQueryPoolCreateInfo& info,
+                                               const std::string& name) const {
+  return make<UniqueQueryPool, &VulkanFunctions::vkCreateQueryPool>(
+      info, VK_OBJECT_TYPE_QUERY_POOL, "vkCreateQueryPool", name);
+}
+
+UniquePipeline DeviceContext::createComputePipeline(const VkComputePipelineCreateInfo& info,
+                                                    const std::string& name) const {
+  VkPipeline handle = VK_NULL_HANDLE;
+  check(fn_.vkCreateComputePipelines(device_, VK_NULL_HANDLE, 1, &info, nullptr, &handle),
+        "vkCreateComputePipelines");
+  UniquePipeline owned(fn_, device_, handle);
+  this->name(VK_OBJECT_TYPE_PIPELINE, bits(handle), name);
+  return owned;
 }
 
 void barrier(const DeviceContext& context, VkCommandBuffer cmd, VkImage image,
-             VkImageAspectFlags aspect, VkImageLayout oldLayout, VkImageLayout newLayout,
-             VkPipelineStageFlags2 srcStages, VkAccessFlags2 srcAccess,
-             VkPipelineStageFlags2 dstStages, VkAccessFlags2 dstAccess) {
+             VkImageLayout oldLayout, VkImageLayout newLayout, VkPipelineStageFlags2 srcStages,
+             VkAccessFlags2 srcAccess, VkPipelineStageFlags2 dstStages, VkAccessFlags2 dstAccess) {
   VkImageMemoryBarrier2 b{VK_STRUCTURE_TYPE_IMAGE_MEMORY_BARRIER_2};
   b.srcStageMask = srcStages;
   b.srcAccessMask = srcAccess;
@@ -174,7 +158,7 @@ void barrier(const DeviceContext& context, VkCommandBuffer cmd, VkImage image,
   b.srcQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
   b.dstQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
   b.image = image;
-  b.subresourceRange = {aspect, 0, 1, 0, 1};
+  b.subresourceRange = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 1, 0, 1};
   VkDependencyInfo dependency{VK_STRUCTURE_TYPE_DEPENDENCY_INFO};
   dependency.imageMemoryBarrierCount = 1;
   dependency.pImageMemoryBarriers = &b;

@@ -20,10 +20,10 @@ const char* passName(Pass pass) {
 
 }  // namespace
 
-PassTimer::PassTimer(const DeviceContext& device, VkPhysicalDevice physical, std::uint32_t slots)
+PassTimer::PassTimer(const DeviceContext& device, std::uint32_t slots)
     : device_(device), recorded_(slots) {
   VkPhysicalDeviceProperties properties{};
-  device.fn().vkGetPhysicalDeviceProperties(physical, &properties);
+  device.fn().vkGetPhysicalDeviceProperties(device.physicalDevice(), &properties);
   if (properties.limits.timestampComputeAndGraphics == VK_FALSE ||
       properties.limits.timestampPeriod <= 0.0f) {
     return;
@@ -32,28 +32,23 @@ PassTimer::PassTimer(const DeviceContext& device, VkPhysicalDevice physical, std
   VkQueryPoolCreateInfo info{VK_STRUCTURE_TYPE_QUERY_POOL_CREATE_INFO};
   info.queryType = VK_QUERY_TYPE_TIMESTAMP;
   info.queryCount = slots * kPasses * 2;
-  check(device.fn().vkCreateQueryPool(device.device(), &info, nullptr, &pool_), "vkCreateQueryPool");
-  device.name(VK_OBJECT_TYPE_QUERY_POOL, bits(pool_), "pass timestamps");
-}
-
-PassTimer::~PassTimer() {
-  if (pool_ != VK_NULL_HANDLE) device_.fn().vkDestroyQueryPool(device_.device(), pool_, nullptr);
+  pool_ = device.createQueryPool(info, "pass timestamps");
 }
 
 void PassTimer::beginFrame(VkCommandBuffer cmd, std::uint32_t slot) {
   slot_ = slot;
   recorded_[slot].clear();
-  if (pool_ == VK_NULL_HANDLE) return;
-  device_.fn().vkCmdResetQueryPool(cmd, pool_, query(slot, Pass::Noise, 0), kPasses * 2);
+  if (!pool_) return;
+  device_.fn().vkCmdResetQueryPool(cmd, pool_.get(), query(slot, Pass::Noise, 0), kPasses * 2);
 }
 
 void PassTimer::begin(VkCommandBuffer cmd, Pass pass) {
-  if (pool_ == VK_NULL_HANDLE) return;
+  if (!pool_) return;
   stamp(cmd, query(slot_, pass, 0));
 }
 
 void PassTimer::end(VkCommandBuffer cmd, Pass pass) {
-  if (pool_ == VK_NULL_HANDLE) return;
+  if (!pool_) return;
   stamp(cmd, query(slot_, pass, 1));
   recorded_[slot_].push_back(pass);
 }
@@ -63,7 +58,7 @@ void PassTimer::stamp(VkCommandBuffer cmd, std::uint32_t queryIndex) {
   // dependency, realised at once: lavapipe writes a timestamp only when it next synchronises,
   // which without it would be after the following pass's dispatch.
   executionBarrier(cmd);
-  device_.fn().vkCmdWriteTimestamp2(cmd, VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT, pool_, queryIndex);
+  device_.fn().vkCmdWriteTimestamp2(cmd, VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT, pool_.get(), queryIndex);
   executionBarrier(cmd);
 }
 
@@ -79,11 +74,11 @@ void PassTimer::executionBarrier(VkCommandBuffer cmd) const {
 
 std::vector<PassTiming> PassTimer::read(std::uint32_t slot) const {
   std::vector<PassTiming> timings;
-  if (pool_ == VK_NULL_HANDLE) return timings;
+  if (!pool_) return timings;
   for (Pass pass : recorded_[slot]) {
     std::uint64_t ticks[2] = {0, 0};
     const VkResult result = device_.fn().vkGetQueryPoolResults(
-        device_.device(), pool_, query(slot, pass, 0), 2, sizeof(ticks), ticks,
+        device_.device(), pool_.get(), query(slot, pass, 0), 2, sizeof(ticks), ticks,
         sizeof(std::uint64_t), VK_QUERY_RESULT_64_BIT);
     if (result != VK_SUCCESS) return {};  // not complete: the caller asked too early
     timings.push_back(

@@ -20,8 +20,7 @@ enum class Pass : std::uint32_t {
 class PassTimer {
  public:
   // Disabled (every call a no-op, read() empty) when the device has no compute timestamps.
-  PassTimer(const DeviceContext& device, VkPhysicalDevice physical, std::uint32_t slots);
-  ~PassTimer();
+  PassTimer(const DeviceContext& device, std::uint32_t slots);
   PassTimer(const PassTimer&) = delete;
   PassTimer& operator=(const PassTimer&) = delete;
 
@@ -40,7 +39,7 @@ class PassTimer {
   }
 
   const DeviceContext& device_;
-  VkQueryPool pool_ = VK_NULL_HANDLE;
+  UniqueQueryPool pool_;
   double nanosecondsPerTick_ = 0.0;
   std::uint32_t slot_ = 0;
   // Per slot: the passes recorded in its last frame, in order.

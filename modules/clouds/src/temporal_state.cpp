@@ -143,7 +143,7 @@ TemporalFrame TemporalState::plan(const FrameInputs& in, const Settings& s,
   frame.insideLayer = altitude > s.layerBottomMetres - s.insideLayerMarginMetres &&
                       altitude < s.layerTopMetres + s.insideLayerMarginMetres;
   if (!havePrevious_) {
-    frame.resetReason = "first frame";
+    frame.resetReason = forgotten_;
   } else if (in.reset) {
     frame.resetReason = "camera cut";
   } else if (traceExtent.width != traceExtent_.width || traceExtent.height != traceExtent_.height ||
@@ -152,7 +152,7 @@ TemporalFrame TemporalState::plan(const FrameInputs& in, const Settings& s,
     frame.resetReason = "resize";
   } else if (glm::length(in.cameraPosition - cameraPosition_) > s.historyResetDistanceMetres) {
     frame.resetReason = "camera jump";
-  } else if (angleDegrees(forwardOf(in.view), forward_) > s.historyResetAngleDegrees) {
+  } else if (angleDegrees(forwardOf(in.view), forwardOf(view_)) > s.historyResetAngleDegrees) {
     frame.resetReason = "camera turn";
   } else if (angleDegrees(in.sunDirection, sunDirection_) > s.relightResetDegrees ||
              glm::length(in.sunIlluminance - sunIlluminance_) >
@@ -193,8 +193,10 @@ TemporalFrame TemporalState::plan(const FrameInputs& in, const Settings& s,
   frame.cameraDelta = havePrevious_ ? in.cameraPosition - cameraPosition_ : glm::dvec3(0.0);
   frame.deltaSeconds = havePrevious_ ? std::max(in.timeSeconds - timeSeconds_, 0.0) : 0.0;
   const bool noDrift = frame.deltaSeconds == 0.0 || s.windSpeedMetresPerSecond == 0.0f;
+  frame.previousView = havePrevious_ ? view_ : in.view;
+  frame.previousProjection = havePrevious_ ? projection_ : in.projection;
   frame.still = havePrevious_ && frame.cameraDelta == glm::dvec3(0.0) && noDrift &&
-                in.view == in.previousView && in.projection == in.previousProjection;
+                in.view == view_ && in.projection == projection_;
   return frame;
 }
 
@@ -207,7 +209,8 @@ void TemporalState::commit(const TemporalFrame& frame, const FrameInputs& in,
   outputExtent_ = in.renderExtent;
   wroteOutputHistory_ = frame.upsampleTemporally;
   cameraPosition_ = in.cameraPosition;
-  forward_ = forwardOf(in.view);
+  view_ = in.view;
+  projection_ = in.projection;
   sunDirection_ = in.sunDirection;
   sunIlluminance_ = in.sunIlluminance;
   timeSeconds_ = in.timeSeconds;

@@ -2,8 +2,9 @@
 // The temporal reconstruction's bookkeeping, as plain logic (unit-tested without a GPU): per
 // frame it decides whether last frame's result can be reprojected (or why not: reset, resize,
 // a jump or turn of the camera, relighting, new settings or weather map, the camera in or
-// near the cloud layer), which
-// pixel of each tile the march refreshes, and which history image is read and written.
+// near the cloud layer), which pixel of each tile the march refreshes, and which history image
+// is read and written. It is the one owner of "previous": the camera, sun and time the
+// history was made with, recorded by commit() and used by the next plan().
 #include <glm/glm.hpp>
 
 #include <cstdint>
@@ -29,8 +30,11 @@ struct TemporalFrame {
   // Nothing moved since last frame (camera, view, projection, the clouds' wind drift): each
   // pixel's history is where it was, and the passes read it in place without reprojecting.
   bool still = false;
-  glm::dvec3 cameraDelta{0.0};  // camera position now minus last frame's (m)
-  double deltaSeconds = 0.0;
+  glm::dvec3 cameraDelta{0.0};  // camera position now minus the history's (m)
+  double deltaSeconds = 0.0;    // time since the history's frame (s), for the wind's drift
+  // The view and projection the history was made with (this frame's when there is none).
+  glm::mat4 previousView{1.0f};
+  glm::mat4 previousProjection{1.0f};
 };
 
 // Tile offset of the n-th refresh in a k x k tile: the Bayer order, so consecutive frames
@@ -54,18 +58,24 @@ class TemporalState {
   TemporalFrame plan(const FrameInputs& inputs, const Settings& settings, VkExtent2D traceExtent);
   void commit(const TemporalFrame& frame, const FrameInputs& inputs, const Settings& settings,
               VkExtent2D traceExtent);
-  // This frame wrote no history (nothing was marched): the next frame starts afresh.
-  void forget() { havePrevious_ = false; }
+  // The history is gone (nothing was marched, or its images were replaced): the next frame
+  // starts afresh and reports `reason` (static storage).
+  void forget(const char* reason) {
+    havePrevious_ = false;
+    forgotten_ = reason;
+  }
 
  private:
   bool havePrevious_ = false;
+  const char* forgotten_ = "first frame";  // why there is no history, while there is none
   std::uint32_t temporalIndex_ = 0;
   std::uint32_t latestHistory_ = 0;  // which of the two history images holds the last result
   VkExtent2D traceExtent_{0, 0};
   VkExtent2D outputExtent_{0, 0};
   bool wroteOutputHistory_ = false;
   glm::dvec3 cameraPosition_{0.0};
-  glm::vec3 forward_{0.0f, 0.0f, -1.0f};
+  glm::mat4 view_{1.0f};
+  glm::mat4 projection_{1.0f};
   glm::vec3 sunDirection_{0.0f, 1.0f, 0.0f};
   glm::vec3 sunIlluminance_{0.0f};
   double timeSeconds_ = 0.0;

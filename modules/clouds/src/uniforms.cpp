@@ -22,15 +22,21 @@ shader::CloudUniforms buildUniforms(const FrameInputs& in, const Settings& s,
   // rigid world->view transform gives view->world.
   u.viewToWorld = glm::mat4(glm::transpose(glm::mat3(in.view)));
 
-  u.planet = glm::vec4(static_cast<float>(in.cameraPosition.y), s.planetRadiusMetres,
-                       s.layerBottomMetres, s.layerTopMetres);
+  u.cameraAltitudeMetres = static_cast<float>(in.cameraPosition.y);
+  u.planetRadiusMetres = s.planetRadiusMetres;
+  u.layerBottomMetres = s.layerBottomMetres;
+  u.layerTopMetres = s.layerTopMetres;
+
   glm::vec3 sun = in.sunDirection;
   const float sunLength = glm::length(sun);
   sun = sunLength > 1e-6f && std::isfinite(sunLength) ? sun / sunLength : glm::vec3(0, 1, 0);
-  u.sunDirection = glm::vec4(sun, 0.0f);
-  u.sunIlluminance = glm::vec4(in.sunIlluminance, 0.0f);
-  u.ambientTop = glm::vec4(in.ambientTop, 0.0f);
-  u.ambientBottom = glm::vec4(in.ambientBottom, 0.0f);
+  u.sunDirection = sun;
+  u.sunIlluminance = in.sunIlluminance;
+  u.sunStrength = s.sunStrength;
+  u.ambientTop = in.ambientTop;
+  u.ambientStrength = s.ambientStrength;
+  u.ambientBottom = in.ambientBottom;
+  u.ambientOcclusionStrength = s.ambientOcclusionStrength;
 
   const glm::dvec2 wind = glm::normalize(glm::dvec2(s.windDirection));
   const glm::dvec2 camera(in.cameraPosition.x, in.cameraPosition.z);
@@ -43,55 +49,83 @@ shader::CloudUniforms buildUniforms(const FrameInputs& in, const Settings& s,
   };
   const glm::vec2 shape = offset(scrolled, s.shapeTileMetres);
   const glm::vec2 detail = offset(scrolled, s.detailTileMetres);
-  const glm::vec2 curl = offset(scrolled, s.curlTileMetres);
-  const glm::vec2 weather = offset(camera, s.weatherTileMetres);
-  u.shapeNoise = glm::vec4(shape.x, 0.0f, shape.y, s.shapeTileMetres);
-  u.detailNoise = glm::vec4(detail.x, 0.0f, detail.y, s.detailTileMetres);
-  u.weather = glm::vec4(weather.x, weather.y, s.weatherTileMetres, 0.0f);
-  u.curl = glm::vec4(curl.x, curl.y, s.curlTileMetres, s.curlStrengthMetres);
-  u.wind = glm::vec4(static_cast<float>(wind.x), static_cast<float>(wind.y), s.skewMetres, 0.0f);
+  u.shapeOffsetMetres = glm::vec3(shape.x, 0.0f, shape.y);
+  u.shapeTileMetres = s.shapeTileMetres;
+  u.detailOffsetMetres = glm::vec3(detail.x, 0.0f, detail.y);
+  u.detailTileMetres = s.detailTileMetres;
+  u.weatherOffsetMetres = offset(camera, s.weatherTileMetres);
+  u.weatherTileMetres = s.weatherTileMetres;
+  u.curlOffsetMetres = offset(scrolled, s.curlTileMetres);
+  u.curlTileMetres = s.curlTileMetres;
+  u.curlStrengthMetres = s.curlStrengthMetres;
+  u.windDirection = glm::vec2(wind);
+  u.skewMetres = s.skewMetres;
+  const float weatherTexel = s.weatherTileMetres / float(shader::kWeatherMapSize);
+  u.fineCellMetres =
+      weatherTexel * float(shader::kWeatherMapSize / shader::kWeatherMaxFineSize);
+  u.coarseCellMetres =
+      weatherTexel * float(shader::kWeatherMapSize / shader::kWeatherMaxCoarseSize);
 
-  u.density = glm::vec4(s.extinctionPerMetre * s.densityMultiplier, s.coverage, s.cloudType,
-                        s.typeVariation);
-  u.shape = glm::vec4(s.anvilBias, s.detailErosion, s.detailDistanceMetres, s.densityVariation);
-  u.phase = glm::vec4(s.phaseForwardG, s.phaseBackwardG, s.phaseBackwardWeight, s.albedo);
-  u.multipleScattering = glm::vec4(static_cast<float>(s.multipleScatteringOctaves),
-                                   s.msExtinctionScale, s.msContribution, s.msEccentricityScale);
-  u.artistic =
-      glm::vec4(s.inScatterStrength, s.ambientOcclusionStrength, s.ambientStrength, s.sunStrength);
-  u.inScatter = glm::vec4(s.inScatterDepthMetres, 0.0f, 0.0f, 0.0f);
-  u.march =
-      glm::vec4(s.viewStepMetres, s.viewStepGrowth, s.maxDistanceMetres, s.transmittanceCutoff);
-  u.light = glm::vec4(s.lightConeMetres, s.lightConeSpread, s.coarseStepFactor,
-                      static_cast<float>(s.emptySamplesToCoarse));
-  std::uint32_t flags = 0;
-  if (context.reversedZ) flags |= shader::kFlagReversedZ;
-  if (context.hasDepth) flags |= shader::kFlagHasDepth;
-  u.frame = glm::uvec4(context.temporalIndex, s.maxViewSteps, flags, 0u);
-  u.extent = glm::uvec4(context.traceExtent.width, context.traceExtent.height,
-                        context.fullExtent.width, context.fullExtent.height);
+  u.extinctionPerMetre = s.extinctionPerMetre * s.densityMultiplier;
+  u.coverage = s.coverage;
+  u.cloudType = s.cloudType;
+  u.typeVariation = s.typeVariation;
+  u.anvilBias = s.anvilBias;
+  u.detailErosion = s.detailErosion;
+  u.detailDistanceMetres = s.detailDistanceMetres;
+  u.densityVariation = s.densityVariation;
+
+  u.phaseForwardG = s.phaseForwardG;
+  u.phaseBackwardG = s.phaseBackwardG;
+  u.phaseBackwardWeight = s.phaseBackwardWeight;
+  u.albedo = s.albedo;
+  u.msOctaves = static_cast<float>(s.multipleScatteringOctaves);
+  u.msExtinctionScale = s.msExtinctionScale;
+  u.msContribution = s.msContribution;
+  u.msEccentricityScale = s.msEccentricityScale;
+  u.inScatterStrength = s.inScatterStrength;
+  u.inScatterDepthMetres = s.inScatterDepthMetres;
+
+  u.viewStepMetres = s.viewStepMetres;
+  u.viewStepGrowth = s.viewStepGrowth;
+  u.maxDistanceMetres = s.maxDistanceMetres;
+  u.transmittanceCutoff = s.transmittanceCutoff;
+  u.lightConeMetres = s.lightConeMetres;
+  u.lightConeSpread = s.lightConeSpread;
+  u.coarseStepFactor = s.coarseStepFactor;
+  u.emptySamplesToCoarse = static_cast<float>(s.emptySamplesToCoarse);
+  u.temporalIndex = context.temporalIndex;
+  u.maxViewSteps = s.maxViewSteps;
+  u.flags = (context.reversedZ ? shader::kFlagReversedZ : 0u) |
+            (context.hasDepth ? shader::kFlagHasDepth : 0u);
+
+  u.traceExtent = glm::uvec2(context.traceExtent.width, context.traceExtent.height);
+  u.outputExtent = glm::uvec2(context.fullExtent.width, context.fullExtent.height);
 
   // Reprojection: a point at `rel` from the camera now was at rel + (camera move) - (wind drift
-  // of the clouds) from last frame's camera, seen through last frame's rotation and projection.
+  // of the clouds) from the history's camera, seen through its rotation and projection.
   // Folded here once per frame so that the passes take one matrix product per pixel: a view
-  // direction goes straight to last frame's clip space, and the camera offset is a constant.
+  // direction goes straight to the history's clip space, and the camera offset is a constant.
   const glm::mat4 previousViewProjection =
-      in.previousProjection * glm::mat4(glm::mat3(in.previousView));
+      context.previousProjection * glm::mat4(glm::mat3(context.previousView));
   u.previousClipFromView = previousViewProjection * u.viewToWorld;
   const glm::dvec2 drift =
       wind * (static_cast<double>(s.windSpeedMetresPerSecond) * context.deltaSeconds);
   const glm::dvec3 moved = context.cameraDelta - glm::dvec3(drift.x, 0.0, drift.y);
-  u.reprojection = glm::vec4(glm::vec3(moved), context.useHistory ? 1.0f : 0.0f);
   u.previousClipOrigin = previousViewProjection * glm::vec4(glm::vec3(moved), 1.0f);
-  u.temporal = glm::vec4(s.temporalFreshWeight, s.historyClampMargin, s.traceScale,
-                         s.historyClampSpreadPixels);
+  u.temporalFreshWeight = s.temporalFreshWeight;
+  u.historyClampMargin = s.historyClampMargin;
+  u.traceScale = s.traceScale;
+  u.historyClampSpreadPixels = s.historyClampSpreadPixels;
+
   const std::uint32_t k = context.tileSize;
   const auto lastFresh = [&](std::uint32_t extent, std::uint32_t phase) {
     return extent > phase ? (extent - 1 - phase) / k * k + phase : phase;
   };
-  u.pattern = glm::uvec4(k, context.phase.x, context.phase.y,
-                         lastFresh(context.traceExtent.width, context.phase.x) |
-                             lastFresh(context.traceExtent.height, context.phase.y) << 16u);
+  u.tileSize = k;
+  u.tilePhase = context.phase;
+  u.lastFreshPixel = lastFresh(context.traceExtent.width, context.phase.x) |
+                     lastFresh(context.traceExtent.height, context.phase.y) << 16u;
   // Rays move inside their pixels from one refresh of a pixel to the next. A pixel is
   // refreshed once per round of k x k frames, so the sequence advances once per round. Its
   // points are stratified over the output pixels a trace pixel covers (m x m of them at trace
@@ -110,13 +144,9 @@ shader::CloudUniforms buildUniforms(const FrameInputs& in, const Settings& s,
     const glm::uvec2 outputPixel = tilePhase(m, round);
     const std::uint32_t n = (round / (m * m)) % 64u + 1u;
     const glm::vec2 inside(shader::halton(n, 2u), shader::halton(n, 3u));
-    u.subpixel = glm::vec4((glm::vec2(outputPixel) + inside) / float(m) - 0.5f, 0.0f, 0.0f);
+    u.subpixelOffset = (glm::vec2(outputPixel) + inside) / float(m) - 0.5f;
   }
-  u.upsampling = glm::vec4(static_cast<float>(s.upsamplingMaxSamples), 0.0f, 0.0f, 0.0f);
-  const float weatherTexel = s.weatherTileMetres / float(shader::kWeatherMapSize);
-  u.emptySpace = glm::vec4(
-      weatherTexel * float(shader::kWeatherMapSize / shader::kWeatherMaxFineSize),
-      weatherTexel * float(shader::kWeatherMapSize / shader::kWeatherMaxCoarseSize), 0.0f, 0.0f);
+  u.upsamplingMaxSamples = static_cast<float>(s.upsamplingMaxSamples);
   return u;
 }
 

@@ -16,10 +16,11 @@ struct UniformContext {
   std::uint32_t temporalIndex = 0;
   std::uint32_t tileSize = 1;
   glm::uvec2 phase{0, 0};
-  bool useHistory = false;
   bool useOutputHistory = false;  // temporal upsampling reads last frame's output history
-  glm::dvec3 cameraDelta{0.0};    // camera position now minus last frame's (m)
-  double deltaSeconds = 0.0;      // time since last frame (s), for the wind's drift
+  glm::dvec3 cameraDelta{0.0};    // camera position now minus the history's (m)
+  double deltaSeconds = 0.0;      // time since the history's frame (s), for the wind's drift
+  glm::mat4 previousView{1.0f};   // the view and projection the history was made with
+  glm::mat4 previousProjection{1.0f};
 };
 
 shader::CloudUniforms buildUniforms(const FrameInputs& inputs, const Settings& settings,

@@ -2,9 +2,9 @@
 
 namespace clouds::detail {
 
-bool VulkanFunctions::load(const CreateInfo& info, std::string* error) {
+bool VulkanFunctions::load(const CreateInfo& info, std::string* missing) {
   auto fail = [&](const char* name) {
-    if (error != nullptr) *error = std::string("clouds: cannot load Vulkan function ") + name;
+    if (missing != nullptr) *missing = name;
     return false;
   };
 #define CLOUDS_LOAD_INSTANCE(name)                                                          \
@@ -17,7 +17,9 @@ bool VulkanFunctions::load(const CreateInfo& info, std::string* error) {
   name = reinterpret_cast<PFN_##name>(info.getDeviceProcAddr(info.device, #name));
   CLOUDS_INSTANCE_FUNCTIONS(CLOUDS_LOAD_INSTANCE)
   CLOUDS_DEVICE_FUNCTIONS(CLOUDS_LOAD_DEVICE)
-  CLOUDS_OPTIONAL_DEVICE_FUNCTIONS(CLOUDS_LOAD_OPTIONAL)
+  if (info.debugUtils) {
+    CLOUDS_OPTIONAL_DEVICE_FUNCTIONS(CLOUDS_LOAD_OPTIONAL)
+  }
 #undef CLOUDS_LOAD_INSTANCE
 #undef CLOUDS_LOAD_DEVICE
 #undef CLOUDS_LOAD_OPTIONAL

@@ -56,7 +56,9 @@ namespace clouds::detail {
   X(vkCmdWriteTimestamp2)          \
   X(vkGetQueryPoolResults)
 
-// Present only when the host enabled VK_EXT_debug_utils; used for names and labels.
+// Loaded only when CreateInfo::debugUtils says the host enabled VK_EXT_debug_utils: loaders
+// return these entry points whether or not the extension is enabled, and calling them when it
+// is not is a validation error. Null otherwise (names and labels are then skipped).
 #define CLOUDS_OPTIONAL_DEVICE_FUNCTIONS(X) \
   X(vkSetDebugUtilsObjectNameEXT)           \
   X(vkCmdBeginDebugUtilsLabelEXT)           \
@@ -69,8 +71,9 @@ struct VulkanFunctions {
   CLOUDS_OPTIONAL_DEVICE_FUNCTIONS(CLOUDS_DECLARE)
 #undef CLOUDS_DECLARE
 
-  // Returns false and fills `error` naming the first missing required function.
-  bool load(const CreateInfo& info, std::string* error);
+  // Returns false and fills `missing` with the first required function the host's proc-addr
+  // functions do not provide.
+  bool load(const CreateInfo& info, std::string* missing);
 };
 
 }  // namespace clouds::detail

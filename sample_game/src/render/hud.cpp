@@ -7,7 +7,6 @@
 #include <cstring>
 
 #include "clouds/ecs/cloud_components.h"
-#include "clouds/ecs/cloud_renderer.h"
 #include "engine/ecs/frame_time.h"
 #include "engine/gfx/descriptors.h"
 #include "engine/gfx/upload.h"
@@ -119,9 +118,9 @@ void Hud::prepare(ecs::World& world, VkExtent2D extent,
                       camera.position.y);
         });
     world.view<const clouds::ecs::CloudQuality>().each([&](const clouds::ecs::CloudQuality& q) {
-      const auto* ref = world.ctx().tryGet<clouds::ecs::CloudRendererRef>();
-      if (ref == nullptr || ref->renderer == nullptr) return;
-      const clouds::FrameReport report = ref->renderer->context().lastFrameReport();
+      const auto* status = world.ctx().tryGet<clouds::ecs::CloudStatus>();
+      if (status == nullptr) return;
+      const clouds::FrameReport& report = status->report;
       ImGui::Text("clouds %s: trace %ux%u, 1 in %u px/frame, %s", clouds::qualityName(q.preset),
                   report.traceExtent.width, report.traceExtent.height,
                   report.tileSize * report.tileSize,

@@ -1,13 +1,10 @@
 #include "render/renderer.h"
 
+#include <chrono>
 #include <cmath>
 
-#include "clouds/ecs/cloud_components.h"
-#include "clouds/ecs/cloud_renderer.h"
-#include "engine/assets/image_io.h"
 #include "engine/core/log.h"
 #include "engine/ecs/frame_time.h"
-#include "engine/gfx/upload.h"
 #include "engine/render/camera_math.h"
 #include "engine/render/scene_components.h"
 #include "render/hud.h"
@@ -17,28 +14,6 @@
 namespace sample {
 
 using namespace engine;
-
-namespace {
-
-std::unique_ptr<gfx::Image> loadWeatherMap(gfx::Device& device, const std::filesystem::path& path) {
-  const assets::ImageRgba32f image = assets::readImage(path);
-  std::vector<std::uint8_t> texels(image.pixels.size());
-  for (std::size_t i = 0; i < texels.size(); ++i) {
-    texels[i] = static_cast<std::uint8_t>(std::clamp(image.pixels[i], 0.0f, 1.0f) * 255.0f + 0.5f);
-  }
-  auto gpu = std::make_unique<gfx::Image>(
-      device, gfx::ImageDesc{VK_IMAGE_TYPE_2D, VK_FORMAT_R8G8B8A8_UNORM,
-                             {image.width, image.height, 1}, 1, 1,
-                             VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT,
-                             "painted weather map"});
-  gfx::uploadToImage(device, *gpu, std::as_bytes(std::span(texels)),
-                     gfx::ImageState{VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL,
-                                     VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
-                                     VK_ACCESS_2_SHADER_SAMPLED_READ_BIT});
-  return gpu;
-}
-
-}  // namespace
 
 Renderer::Renderer(gfx::Device& device, render::PresentTarget& target, ecs::World& world,
                    const RendererOptions& options)
@@ -54,26 +29,24 @@ Renderer::Renderer(gfx::Device& device, render::PresentTarget& target, ecs::Worl
     terrain_ = std::make_unique<TerrainRenderer>(device, *mesh->mesh, kHdrFormat, kDepthFormat);
     pipelines.push_back(&terrain_->pipeline());
   }
-  world.view<const clouds::ecs::CloudLayer>().each([&](const clouds::ecs::CloudLayer& layer) {
-    clouds_ = std::make_unique<clouds::ecs::CloudRenderer>(device, options.maxExtent, kDepthFormat,
-                                                           layer.noiseSeed,
-                                                           gfx::FrameRing::kFramesInFlight);
-    clouds_->settings() = layer.settings;
-    if (layer.weatherMap) {
-      weatherMap_ = loadWeatherMap(device, *layer.weatherMap);
-      clouds_->frameInputs().weatherView = weatherMap_->view();
-      clouds_->frameInputs().weatherLayout = VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL;
-    }
-  });
-  if (clouds_) {
-    if (auto* ref = world.ctx().tryGet<clouds::ecs::CloudRendererRef>()) ref->renderer = clouds_.get();
+  if (const auto* features = world.ctx().tryGet<render::RenderFeatures>()) {
+    features_ = features->features;
   }
   if (options.hud) {
     hud_ = std::make_unique<Hud>(device, target.format());
     pipelines.push_back(&hud_->pipeline());
   }
+  const auto start = std::chrono::steady_clock::now();
   const double ms = gfx::warmUpPipelines(device, pipelines);
-  log::info("pipelines warmed up in " + std::to_string(static_cast<int>(ms)) + " ms");
+  // The features build their pipelines and size their resources for the first frame now,
+  // outside any recording (each frame prepares them again: cheap when nothing changed).
+  for (render::RenderFeature* feature : features_) feature->prepare(target.extent(), 0);
+  const double featureMs =
+      std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count() -
+      ms;
+  log::info("pipelines warmed up in " + std::to_string(static_cast<int>(ms)) +
+            " ms, render features prepared in " + std::to_string(static_cast<int>(featureMs)) +
+            " ms");
 }
 
 Renderer::~Renderer() { finish(); }
@@ -93,7 +66,9 @@ void Renderer::rebuildGraph(VkExtent2D extent) {
     hdr = scene.hdr;
     depth = scene.depth;
   }
-  if (clouds_) hdr = clouds::ecs::addCloudPasses(graph, *clouds_, depth, hdr).hdr;
+  render::SceneTextures scene{hdr, depth};
+  for (render::RenderFeature* feature : features_) scene = feature->addPasses(graph, scene);
+  hdr = scene.hdr;
   render::TextureHandle display = render::addTonemapPass(graph, tonemapper_, hdr, targetHandle_, &tonemap_);
   if (hud_) display = addHudPass(graph, *hud_, display);
   capture_.addToGraph(graph, hdr, display);
@@ -111,8 +86,7 @@ void Renderer::updateFrameConstants(ecs::World& world, VkExtent2D extent) {
 
   const float aspect = float(extent.width) / float(extent.height);
   const glm::mat4 view = render::viewRotation(camera);
-  const glm::mat4 projection =
-      render::perspectiveReversedZ(camera.verticalFovRadians, aspect, camera.nearMetres);
+  const glm::mat4 projection = render::projectionOf(camera, aspect);
   const glm::vec3 forward = glm::vec3(render::forwardOf(camera));
   const glm::vec3 up = glm::vec3(render::upOf(camera));
   const glm::vec3 right = glm::normalize(glm::cross(forward, up));
@@ -134,7 +108,6 @@ void Renderer::updateFrameConstants(ecs::World& world, VkExtent2D extent) {
   tonemap_.exposure = atmosphere.exposure;
 
   if (terrain_) terrain_->cull(f.viewProjection, camera.position);
-  if (clouds_) clouds_->frameInputs().projection = projection;
 }
 
 std::optional<std::filesystem::path> Renderer::takeCaptureRequest(ecs::World& world) {
@@ -155,9 +128,9 @@ void Renderer::renderFrame(ecs::World& world) {
     return;
   }
   const VkExtent2D extent = target_.extent();
-  if (!graph_ || extent.width != graphExtent_.width || extent.height != graphExtent_.height) {
-    rebuildGraph(extent);
-  }
+  bool rebuild = !graph_ || extent.width != graphExtent_.width || extent.height != graphExtent_.height;
+  for (render::RenderFeature* feature : features_) rebuild |= feature->prepare(extent, frame.index);
+  if (rebuild) rebuildGraph(extent);
   graph_->updateImportedTexture(targetHandle_, target_.image(), target_.view());
   updateFrameConstants(world, extent);
   sceneFrame_.slice = frame.constants->push(sceneFrame_.data);
@@ -175,6 +148,9 @@ void Renderer::renderFrame(ecs::World& world) {
 void Renderer::finish() {
   ring_.drain();
   capture_.writePending();
+  if (ring_.framesBegun() > 0) {
+    for (render::RenderFeature* feature : features_) feature->finish(ring_.framesBegun() - 1);
+  }
 }
 
 std::vector<std::string> Renderer::passNames() const {
@@ -189,7 +165,9 @@ std::vector<std::string> Renderer::pipelineNames() const {
   std::vector<std::string> names = {tonemapper_.pipeline().name(), sky_.pipeline().name()};
   if (terrain_) names.push_back(terrain_->pipeline().name());
   if (hud_) names.push_back(hud_->pipeline().name());
-  if (clouds_) names.emplace_back("clouds module");
+  for (const render::RenderFeature* feature : features_) {
+    names.push_back(std::string(feature->name()) + " module");
+  }
   return names;
 }
 

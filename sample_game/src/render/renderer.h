@@ -1,10 +1,12 @@
 #pragma once
 // The sample's renderer. It looks at the world once to decide which passes the scene needs:
-//   sky -> [terrain] -> [clouds, clouds composite] -> tonemap -> [hud] -> capture
-// (terrain only with a terrain, clouds only with a cloud layer; their pipelines are not even
-// created otherwise), rebuilds the frame graph when the output size changes, and each frame
-// fills the per-frame constants from the world, records, submits and presents. Windowed and
-// headless runs use it identically; only the PresentTarget differs.
+//   sky -> [terrain] -> [render features: clouds, clouds composite] -> tonemap -> [hud] -> capture
+// (terrain only with a terrain; the features installed modules registered in
+// engine::render::RenderFeatures, e.g. the clouds only with a cloud layer: their pipelines are
+// not even created otherwise), prepares the features and rebuilds the frame graph when the
+// output size or a feature's resources change, and each frame fills the per-frame constants
+// from the world, records, submits and presents. Windowed and headless runs use it
+// identically; only the PresentTarget differs.
 #include <filesystem>
 #include <memory>
 #include <optional>
@@ -18,13 +20,10 @@
 #include "engine/render/frame_capture.h"
 #include "engine/render/frame_graph.h"
 #include "engine/render/present_target.h"
+#include "engine/render/render_feature.h"
 #include "engine/render/tonemap_pass.h"
 #include "game/game_components.h"
 #include "render/sky_pass.h"
-
-namespace clouds::ecs {
-class CloudRenderer;
-}
 
 namespace sample {
 
@@ -47,7 +46,8 @@ class Renderer {
   ~Renderer();
 
   void renderFrame(engine::ecs::World& world);
-  // Waits for every frame in flight and writes any pending capture.
+  // Waits for every frame in flight, writes any pending capture and lets the features read
+  // back the last frame's results.
   void finish();
 
   std::vector<std::string> passNames() const;
@@ -68,8 +68,7 @@ class Renderer {
   engine::render::Tonemapper tonemapper_;
   SkyPass sky_;
   std::unique_ptr<TerrainRenderer> terrain_;
-  std::unique_ptr<clouds::ecs::CloudRenderer> clouds_;
-  std::unique_ptr<engine::gfx::Image> weatherMap_;
+  std::vector<engine::render::RenderFeature*> features_;  // owned by their modules
   std::unique_ptr<Hud> hud_;
   engine::render::FrameCapture capture_;
   std::unique_ptr<engine::render::FrameGraph> graph_;

@@ -26,9 +26,24 @@ glm::dquat orientationFrom(double yawDegrees, double pitchDegrees) {
 
 }  // namespace
 
+std::optional<LoadedTerrain> loadTerrain(const SceneDescription& scene,
+                                         const std::filesystem::path& defaultTerrain,
+                                         const std::optional<std::filesystem::path>& terrainOverride) {
+  std::optional<std::filesystem::path> path = terrainOverride;
+  if (!path && scene.terrain) {
+    path = scene.terrain->gltf == "default" ? defaultTerrain : scene.terrain->gltf;
+  }
+  if (!path) return std::nullopt;
+  auto mesh = std::make_shared<assets::MeshData>(assets::loadGltfMesh(*path));
+  const double scale = placeTerrain(*mesh);
+  log::info("terrain " + path->string() + ": " + std::to_string(mesh->positions.size()) +
+            " vertices, " + std::to_string(mesh->indices.size() / 3) + " triangles" +
+            (scale != 1.0 ? ", scaled by " + std::to_string(scale) : std::string()));
+  return LoadedTerrain{*path, mesh};
+}
+
 void populateScene(ecs::App& app, const SceneDescription& scene,
-                   const std::filesystem::path& defaultTerrain,
-                   const std::optional<std::filesystem::path>& terrainOverride) {
+                   const std::optional<LoadedTerrain>& terrain) {
   ecs::World& world = app.world();
   world.ctx().emplaceOrReplace<ecs::FrameTime>();
   world.ctx().emplaceOrReplace<platform::InputState>();
@@ -63,21 +78,12 @@ void populateScene(ecs::App& app, const SceneDescription& scene,
   world.emplace<render::Sun>(sun, sunLightFor(time));
   world.ctx().emplaceOrReplace<render::SkyLight>(skyLightFor(sunDirectionAt(time)));
 
-  // The terrain: loaded once here, for both the renderer and the ground collision.
-  std::optional<std::filesystem::path> terrain = terrainOverride;
-  if (!terrain && scene.terrain) {
-    terrain = scene.terrain->gltf == "default" ? defaultTerrain : scene.terrain->gltf;
-  }
+  // The terrain, for both the renderer and the ground collision.
   if (terrain) {
-    auto mesh = std::make_shared<assets::MeshData>(assets::loadGltfMesh(*terrain));
-    const double scale = placeTerrain(*mesh);
-    log::info("terrain " + terrain->string() + ": " + std::to_string(mesh->positions.size()) +
-              " vertices, " + std::to_string(mesh->indices.size() / 3) + " triangles" +
-              (scale != 1.0 ? ", scaled by " + std::to_string(scale) : std::string()));
-    world.ctx().emplaceOrReplace<TerrainHeightField>(*mesh);
-    world.ctx().emplaceOrReplace<TerrainMesh>(TerrainMesh{mesh});
+    world.ctx().emplaceOrReplace<TerrainHeightField>(*terrain->mesh);
+    world.ctx().emplaceOrReplace<TerrainMesh>(TerrainMesh{terrain->mesh});
     const ecs::Entity entity = world.create();
-    world.emplace<TerrainInstance>(entity, TerrainInstance{*terrain});
+    world.emplace<TerrainInstance>(entity, TerrainInstance{terrain->path});
   }
 
   // The clouds, as data; the module below installs only when this exists.
@@ -91,6 +97,8 @@ void populateScene(ecs::App& app, const SceneDescription& scene,
   installTimeOfDay(app.scheduler());
   installFlight(app.scheduler());
   installCloudQualityControls(app.scheduler());
+  // Installs only with a cloud layer and a device that can run it; otherwise it warns and the
+  // scene runs without clouds.
   app.addModule<clouds::ecs::CloudsModule>();
 }
 

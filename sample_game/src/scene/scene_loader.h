@@ -3,6 +3,11 @@
 // and aircraft, the sun and its clock, the terrain, the cloud layer), context singletons
 // (input, frame time, atmosphere, terrain height field) and the systems and modules the scene
 // calls for. A scene without clouds gets no clouds module; one without terrain gets no terrain.
+//
+// Two steps, so that every file is read and checked before a window or device exists, and the
+// modules that create GPU objects install after the renderer published its device:
+//   loadTerrain()    the scene's terrain mesh (or --terrain's), placed in the world;
+//   populateScene()  the world, with engine::render::RenderDevice already in its context.
 #include <filesystem>
 #include <memory>
 
@@ -17,10 +22,20 @@ struct TerrainMesh {
   std::shared_ptr<const engine::assets::MeshData> mesh;
 };
 
-// `defaultTerrain` is what "gltf": "default" means (the build-time generated terrain);
-// `terrainOverride`, when set, replaces the scene's terrain (the --terrain option).
+struct LoadedTerrain {
+  std::filesystem::path path;
+  std::shared_ptr<engine::assets::MeshData> mesh;
+};
+
+// The scene's terrain, loaded, validated and placed; none when the scene has none and there
+// is no override. `defaultTerrain` is what "gltf": "default" means (the build-time generated
+// terrain); `terrainOverride`, when set, replaces the scene's terrain (the --terrain option).
+// Throws engine::Error naming the file and the problem.
+std::optional<LoadedTerrain> loadTerrain(const SceneDescription& scene,
+                                         const std::filesystem::path& defaultTerrain,
+                                         const std::optional<std::filesystem::path>& terrainOverride);
+
 void populateScene(engine::ecs::App& app, const SceneDescription& scene,
-                   const std::filesystem::path& defaultTerrain,
-                   const std::optional<std::filesystem::path>& terrainOverride);
+                   const std::optional<LoadedTerrain>& terrain);
 
 }  // namespace sample

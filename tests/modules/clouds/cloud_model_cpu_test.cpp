@@ -91,7 +91,7 @@ TEST(CloudModelCpu, HomogeneousSlabTransmittanceMatchesBeerLambert) {
         ASSERT_GE(path, thickness * 0.999);
         const float sigma = static_cast<float>(tau / thickness);
         u = uniformsFor(slabSettings(sigma, step), 300.0, pitch, extent);
-        u.frame.z |= kFlagHomogeneous;
+        u.flags |= kFlagHomogeneous;
         const auto frame = test::renderCpuReference(textures(), u, slabSettings(sigma, step), {}, 1);
         const double expected = std::exp(-double(sigma) * path);
         EXPECT_NEAR(frame.radiance[0].a, expected, 2e-5 + 1e-5 * expected)
@@ -123,7 +123,7 @@ TEST(CloudModelCpu, SlabRadianceConvergesAsStepsDouble) {
     s.lightConeSpread = 0.0f;
     s.albedo = 1.0f;
     CloudUniforms u = uniformsFor(s, 300.0, 90.0, extent, sun);
-    u.frame.z |= kFlagHomogeneous;
+    u.flags |= kFlagHomogeneous;
     const auto frame = test::renderCpuReference(textures(), u, s, {}, 1);
     const vec3 dir = pixelRayDirection(vec2(0.5f, 0.5f), vec2(1.0f, 1.0f), u);
     const double phase = dualLobePhase(dot(dir, sun), s.phaseForwardG, s.phaseBackwardG,

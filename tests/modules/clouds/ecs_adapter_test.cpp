@@ -1,11 +1,15 @@
 // The clouds' ECS adapter without a GPU: the frame inputs come from the world's camera, sun,
-// sky and time, and each camera's CloudQuality preset decides the settings it renders with.
+// sky and time in one function, each camera's CloudQuality preset decides the settings it
+// renders with, and the module installs only where it can run.
 #include <gtest/gtest.h>
 
 #include "clouds/ecs/cloud_components.h"
+#include "clouds/ecs/cloud_frame.h"
 #include "clouds/ecs/clouds_module.h"
+#include "engine/ecs/app.h"
 #include "engine/ecs/frame_time.h"
 #include "engine/ecs/world.h"
+#include "engine/render/render_feature.h"
 #include "engine/render/scene_components.h"
 
 namespace {
@@ -26,16 +30,22 @@ struct AdapterWorld {
   }
 };
 
+clouds::ecs::HostFrame hostFrame() {
+  clouds::ecs::HostFrame host;
+  host.extent = {320, 180};
+  host.frameIndex = 7;
+  return host;
+}
+
 TEST(CloudsEcsAdapter, TheCamerasPresetDecidesTheSettings) {
   AdapterWorld w;
-  clouds::FrameInputs inputs;
-  clouds::Settings settings;
-  clouds::ecs::updateFrameInputs(w.world, inputs, settings);
+  clouds::Settings settings = clouds::ecs::cloudSettings(w.world);
   EXPECT_EQ(settings.maxViewSteps, w.look.maxViewSteps) << "no preset: the layer as it is";
   EXPECT_EQ(settings.coverage, w.look.coverage);
 
-  w.world.emplace<clouds::ecs::CloudQuality>(w.camera, clouds::ecs::CloudQuality{clouds::Quality::Ultra});
-  clouds::ecs::updateFrameInputs(w.world, inputs, settings);
+  w.world.emplace<clouds::ecs::CloudQuality>(w.camera,
+                                             clouds::ecs::CloudQuality{clouds::Quality::Ultra});
+  settings = clouds::ecs::cloudSettings(w.world);
   const clouds::Settings ultra = clouds::settingsFor(clouds::Quality::Ultra, w.look);
   EXPECT_EQ(settings.maxViewSteps, ultra.maxViewSteps);
   EXPECT_EQ(settings.traceScale, ultra.traceScale);
@@ -43,28 +53,55 @@ TEST(CloudsEcsAdapter, TheCamerasPresetDecidesTheSettings) {
   EXPECT_EQ(settings.cloudType, w.look.cloudType);
 
   w.world.get<clouds::ecs::CloudQuality>(w.camera).preset = clouds::Quality::Low;
-  clouds::ecs::updateFrameInputs(w.world, inputs, settings);
+  settings = clouds::ecs::cloudSettings(w.world);
   EXPECT_EQ(settings.traceScale, clouds::settingsFor(clouds::Quality::Low).traceScale);
 }
 
-TEST(CloudsEcsAdapter, CameraMotionBecomesThePreviousCamera) {
+TEST(CloudsEcsAdapter, TheInputsComeFromTheWorldAndTheHostFrame) {
   AdapterWorld w;
-  clouds::FrameInputs inputs;
-  clouds::Settings settings;
-  clouds::ecs::updateFrameInputs(w.world, inputs, settings);
-  EXPECT_TRUE(inputs.reset) << "the first frame is a cut";
-  EXPECT_EQ(inputs.cameraPosition, glm::dvec3(10.0, 2000.0, -30.0));
+  const engine::ecs::Entity sun = w.world.create();
+  engine::render::Sun s;
+  s.direction = glm::normalize(glm::dvec3(0.2, 0.7, -0.4));
+  s.illuminance = glm::vec3(9.0f, 8.0f, 7.0f);
+  w.world.emplace<engine::render::Sun>(sun, s);
+  engine::render::SkyLight sky;
+  sky.zenith = glm::vec3(0.1f, 0.2f, 0.6f);
+  w.world.ctx().emplace<engine::render::SkyLight>(sky);
   auto& time = w.world.ctx().get<engine::ecs::FrameTime>();
   time = time.next(0.5);
-  w.world.get<engine::render::Camera>(w.camera).position.x += 100.0;
-  clouds::ecs::updateFrameInputs(w.world, inputs, settings);
-  EXPECT_FALSE(inputs.reset);
-  EXPECT_EQ(inputs.previousCameraPosition.x, 10.0);
-  EXPECT_EQ(inputs.cameraPosition.x, 110.0);
-  EXPECT_DOUBLE_EQ(inputs.timeSeconds, 0.5);
+
+  const clouds::FrameInputs in = clouds::ecs::cloudFrameInputs(w.world, hostFrame());
+  const auto& camera = w.world.get<engine::render::Camera>(w.camera);
+  EXPECT_EQ(in.cameraPosition, glm::dvec3(10.0, 2000.0, -30.0));
+  EXPECT_EQ(in.view, engine::render::viewRotation(camera));
+  EXPECT_EQ(in.projection, engine::render::projectionOf(camera, 320.0f / 180.0f))
+      << "the projection the renderer draws the scene with";
+  EXPECT_EQ(in.renderExtent.width, 320u);
+  EXPECT_EQ(in.frameIndex, 7u);
+  EXPECT_EQ(in.sunDirection, glm::vec3(s.direction));
+  EXPECT_EQ(in.sunIlluminance, s.illuminance);
+  EXPECT_EQ(in.ambientTop, sky.zenith);
+  EXPECT_DOUBLE_EQ(in.timeSeconds, 0.5);
+  EXPECT_FALSE(in.reset);
   w.world.get<engine::render::Camera>(w.camera).cut = true;
-  clouds::ecs::updateFrameInputs(w.world, inputs, settings);
-  EXPECT_TRUE(inputs.reset) << "a teleport is a camera cut";
+  EXPECT_TRUE(clouds::ecs::cloudFrameInputs(w.world, hostFrame()).reset)
+      << "a teleport is a camera cut";
+}
+
+TEST(CloudsEcsAdapter, TheModuleNeedsACloudLayerAndARenderer) {
+  clouds::ecs::CloudsModule module;
+  engine::ecs::World world;
+  std::string reason;
+  EXPECT_FALSE(module.supported(world, reason));
+  EXPECT_NE(reason.find("cloud layer"), std::string::npos) << reason;
+  world.emplace<clouds::ecs::CloudLayer>(world.create(), clouds::ecs::CloudLayer{});
+  EXPECT_FALSE(module.supported(world, reason));
+  EXPECT_NE(reason.find("RenderDevice"), std::string::npos) << reason;
+  // An App skips it with a warning instead of failing: the scene runs without clouds.
+  engine::ecs::App app;
+  app.world().emplace<clouds::ecs::CloudLayer>(app.world().create(), clouds::ecs::CloudLayer{});
+  EXPECT_FALSE(app.addModule<clouds::ecs::CloudsModule>());
+  EXPECT_FALSE(app.world().ctx().has<engine::render::RenderFeatures>());
 }
 
 }  // namespace

@@ -10,7 +10,7 @@
 #include "cloud_harness.h"
 #include "cloud_march.h"
 #include "clouds_test_shaders/count_invalid.comp.spv.h"
-#include "context_impl.h"
+#include "context_access.h"
 #include "cpu_reference.h"
 #include "engine/gfx/descriptors.h"
 #include "engine/gfx/pipelines.h"
@@ -26,9 +26,12 @@ class CloudMarch : public test::GpuTest {
  protected:
   // Sets test-only uniform flags for a scope (also when an assertion returns early).
   struct DebugFlags {
-    explicit DebugFlags(std::uint32_t flags) { harness().context().impl().setDebugFlags(flags); }
-    ~DebugFlags() { harness().context().impl().setDebugFlags(0); }
+    explicit DebugFlags(std::uint32_t flags) { impl().setDebugFlags(flags); }
+    ~DebugFlags() { impl().setDebugFlags(0); }
   };
+  static clouds::Context::Impl& impl() {
+    return clouds::detail::ContextAccess::impl(harness().context());
+  }
   static test::CloudHarness& harness() {
     // One harness (and one noise generation) for the whole binary.
     static test::CloudHarness* h = new test::CloudHarness(device(), {160, 90});
@@ -68,14 +71,14 @@ TEST_F(CloudMarch, HomogeneousSlabTransmittanceMatchesBeerLambert) {
       view.pitchDegrees = pitch;
       view.verticalFovDegrees = 20.0f;
       const test::CloudFrame frame = harness().render(view, s, extent);
-      const CloudUniforms& u = harness().context().impl().lastUniforms();
+      const CloudUniforms& u = impl().lastUniforms();
       for (std::uint32_t y = 0; y < extent.height; ++y) {
         for (std::uint32_t x = 0; x < extent.width; ++x) {
           const vec3 dir = pixelRayDirection(vec2(x, y) + 0.5f, vec2(16.0f, 8.0f), u);
-          const vec2 segment = layerSegment(u.planet.x, dir.y, u);
-          const double end = std::min(double(segment.y), double(u.march.z));
+          const vec2 segment = layerSegment(u.cameraAltitudeMetres, dir.y, u);
+          const double end = std::min(double(segment.y), double(u.maxDistanceMetres));
           const double path = std::max(0.0, end - double(segment.x));
-          const double expected = std::exp(-double(u.density.x) * path);
+          const double expected = std::exp(-double(u.extinctionPerMetre) * path);
           const float got = frame.radiance[std::size_t{y} * extent.width + x].a;
           ASSERT_NEAR(got, expected, 1e-3) << "tau " << tau << " pitch " << pitch << " pixel "
                                            << x << "," << y << " path " << path;
@@ -172,7 +175,7 @@ TEST_F(CloudMarch, MatchesTheCpuReferenceOnCanonicalViews) {
     const test::CloudFrame gpu = harness().render(c.view, settings, extent);
     const test::CpuTextures textures = test::readTextures(harness());
     const test::CloudFrame cpu = test::renderCpuReference(
-        textures, harness().context().impl().lastUniforms(), settings, harness().lastDepth());
+        textures, impl().lastUniforms(), settings, harness().lastDepth());
     float peak = 1.0f;
     for (const glm::vec4& p : cpu.radiance) peak = std::max({peak, p.r, p.g, p.b});
     const double psnr = test::psnr(gpu.radiance, cpu.radiance, peak);

@@ -1,11 +1,14 @@
 // Runs the module's minimal raw-Vulkan host as a user would, with validation on, and checks
 // that its image has clouds: compared with the same scene rendered without the module, a
 // good share of the sky changed, the ground-occluded boxes did not turn into cloud, and the
-// picture is neither empty nor saturated.
+// picture is neither empty nor saturated. Then as a host that enables only what the module's
+// README requires (no extension at all), under the validation layer.
 #include <gtest/gtest.h>
 
 #include <cstdlib>
 #include <filesystem>
+#include <fstream>
+#include <sstream>
 #include <string>
 
 #include "engine/assets/image_io.h"
@@ -14,19 +17,42 @@ namespace {
 
 namespace fs = std::filesystem;
 
+int exitCode(int status) { return WIFEXITED(status) ? WEXITSTATUS(status) : -1; }
+
 int run(const std::string& arguments) {
   const std::string command = std::string(MINIMAL_HOST_EXE) + " --validation " + arguments;
-  const int status = std::system(command.c_str());
-  return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  return exitCode(std::system(command.c_str()));
+}
+
+// Runs the host without asking for validation itself: the loader adds the layer, which then
+// has no messenger and prints to stdout. Returns the exit code and the output.
+int runUnderLayer(const std::string& arguments, std::string& output) {
+  const fs::path log = fs::temp_directory_path() / "cloudscape_minimal_host_layer.log";
+  const std::string command = "env -u CLOUDSCAPE_VALIDATION "
+                              "VK_INSTANCE_LAYERS=VK_LAYER_KHRONOS_validation " +
+                              std::string(MINIMAL_HOST_EXE) + " " + arguments + " > " +
+                              log.string() + " 2>&1";
+  const int code = exitCode(std::system(command.c_str()));
+  std::ifstream in(log);
+  std::stringstream text;
+  text << in.rdbuf();
+  output = text.str();
+  return code;
+}
+
+std::size_t occurrences(const std::string& text, const std::string& what) {
+  std::size_t count = 0;
+  for (auto at = text.find(what); at != std::string::npos; at = text.find(what, at + 1)) ++count;
+  return count;
 }
 
 TEST(MinimalHost, RendersCloudsValidationClean) {
   const fs::path dir = fs::temp_directory_path() / "cloudscape_minimal_host";
   fs::create_directories(dir);
-  ASSERT_EQ(run("--width 192 --height 108 --output " + (dir / "clouds.png").string()), 0);
-  ASSERT_EQ(run("--width 192 --height 108 --no-clouds --output " + (dir / "plain.png").string()), 0);
-  const auto clouds = engine::assets::readImage(dir / "clouds.png");
-  const auto plain = engine::assets::readImage(dir / "plain.png");
+  ASSERT_EQ(run("--width 192 --height 108 --output " + (dir / "clouds.ppm").string()), 0);
+  ASSERT_EQ(run("--width 192 --height 108 --no-clouds --output " + (dir / "plain.ppm").string()), 0);
+  const auto clouds = engine::assets::readImage(dir / "clouds.ppm");
+  const auto plain = engine::assets::readImage(dir / "plain.ppm");
   ASSERT_EQ(clouds.width, 192u);
   ASSERT_EQ(clouds.height, 108u);
 
@@ -49,6 +75,22 @@ TEST(MinimalHost, RendersCloudsValidationClean) {
     const float* b = plain.at(x, clouds.height - 2);
     ASSERT_NEAR(a[0], b[0], 1.5f / 255.0f) << "cloud drawn over near ground at x " << x;
   }
+}
+
+TEST(MinimalHost, AHostThatEnablesNothingOptionalIsValidationClean) {
+  const std::string output = (fs::temp_directory_path() / "cloudscape_strict_host.ppm").string();
+  std::string log;
+  ASSERT_EQ(runUnderLayer("--width 96 --height 54 --frames 24 --output " + output, log), 0) << log;
+  EXPECT_GT(occurrences(log, "wrote"), 0u) << log;
+  EXPECT_EQ(occurrences(log, "Validation Error"), 0u) << log;
+  EXPECT_EQ(occurrences(log, "VUID"), 0u) << log;
+  // Negative control: a host that tells the module VK_EXT_debug_utils is enabled when it is
+  // not makes it call the extension, and the layer says so, in this very setup.
+  ASSERT_EQ(runUnderLayer("--width 96 --height 54 --frames 2 --claim-debug-utils --output " +
+                              output,
+                          log),
+            0);
+  EXPECT_GT(occurrences(log, "Validation Error"), 0u) << log;
 }
 
 }  // namespace

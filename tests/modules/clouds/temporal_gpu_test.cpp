@@ -1,75 +1,22 @@
-// Temporal reconstruction, empty-space skipping and quality presets on lavapipe: a static
-// camera converges to the Reference, and with temporal upsampling to detail finer than the
-// trace; the frame after a cut, a resize or relighting equals a fresh renderer's; NaN in the
-// history never reaches the output; the camera in the layer
-// turns reprojection off; skipping empty weather cells changes (almost) nothing but the cost;
-// each preset costs more than the one below it, by the march's work counters.
+// Temporal reconstruction on lavapipe: a static camera converges to the Reference, and with
+// temporal upsampling to detail finer than the trace; the frame after a cut, a resize or
+// relighting equals a fresh renderer's; NaN in the history never reaches the output; the
+// camera in the layer turns reprojection off.
 #include <gtest/gtest.h>
 
 #include <cmath>
 
-#include "cloud_harness.h"
-#include "context_impl.h"
+#include "cloud_gpu_fixture.h"
 #include "cpu_reference.h"
-#include "gpu_test.h"
 
 namespace {
-
+using test::allValid;
 using test::CloudView;
-constexpr VkExtent2D kExtent{160, 90};
-
-class CloudTemporal : public test::GpuTest {
- protected:
-  // A renderer that counts its work; created per test, so each starts with no history.
-  static std::unique_ptr<test::CloudHarness> renderer() {
-    test::HarnessOptions options;
-    options.workCounters = true;
-    options.passTimings = true;
-    return std::make_unique<test::CloudHarness>(device(), kExtent, options);
-  }
-};
-
-// Scattered cumulus seen from the ground, looking a little up (the sample's usual view).
-CloudView cumulusView() {
-  CloudView view;
-  view.position = {0.0, 300.0, 0.0};
-  view.pitchDegrees = 20.0;
-  view.yawDegrees = 270.0;
-  view.timeSeconds = 5.0;
-  return view;
-}
-
-double meanOpacity(const test::CloudFrame& frame) {
-  double sum = 0.0;
-  for (const glm::vec4& p : frame.radiance) sum += 1.0 - p.a;
-  return sum / double(frame.radiance.size());
-}
-
-bool allValid(const test::CloudFrame& frame) {
-  for (const glm::vec4& p : frame.radiance) {
-    for (int c = 0; c < 4; ++c) {
-      if (!std::isfinite(p[c]) || p[c] < 0.0f) return false;
-    }
-    if (p.a > 1.0f) return false;
-  }
-  for (const glm::vec2& d : frame.depth) {
-    if (!std::isfinite(d.x) || !std::isfinite(d.y) || d.x < 0.0f || d.y < 0.0f) return false;
-  }
-  return true;
-}
-
-float maxAbsDifference(const test::CloudFrame& a, const test::CloudFrame& b) {
-  float worst = 0.0f;
-  for (std::size_t i = 0; i < a.radiance.size(); ++i) {
-    const glm::vec4 d = glm::abs(a.radiance[i] - b.radiance[i]);
-    worst = std::max({worst, d.r, d.g, d.b, d.a});
-  }
-  return worst;
-}
-
-std::uint64_t samples(const clouds::WorkCounters& c) {
-  return c.viewSamples + c.lightSamples;
-}
+using test::cumulusView;
+using test::kExtent;
+using test::maxAbsDifference;
+using test::meanOpacity;
+using CloudTemporal = test::CloudGpuTest;
 
 TEST_F(CloudTemporal, AStaticCameraConvergesToTheReference) {
   const CloudView view = cumulusView();
@@ -286,146 +233,6 @@ TEST_F(CloudTemporal, InsideTheLayerReprojectionIsOffButFramesStayComplete) {
     EXPECT_EQ(report.tileSize, 2u) << "every frame rebuilt from 1 in 4 fresh pixels";
     ASSERT_TRUE(allValid(out));
   }
-}
-
-TEST_F(CloudTemporal, GpuWeatherMaximaMatchTheCpu) {
-  auto r = renderer();
-  r->render(cumulusView(), clouds::Settings{}, kExtent);
-  const std::vector<std::uint8_t> weather = r->readWeatherMap();
-  const std::vector<std::uint8_t> expected = test::weatherMaxima(
-      weather, clouds::shader::kWeatherMapSize, clouds::shader::kWeatherMaxFineSize);
-  EXPECT_EQ(r->readWeatherMaxFine(), expected);
-  // The maxima must be able to say "empty": this map has cells without any coverage.
-  int emptyCells = 0;
-  for (std::size_t i = 0; i < expected.size(); i += 4) emptyCells += expected[i] == 0 ? 1 : 0;
-  EXPECT_GT(emptyCells, 0);
-}
-
-TEST_F(CloudTemporal, AWeatherMapPreparedOverFramesEqualsOneGeneratedAtOnce) {
-  // 30 frames per one-second weather period: the next period's map is generated a band of
-  // rows per frame; at t = 1 s it is swapped in. A fresh renderer generates it at once.
-  clouds::Settings settings;
-  settings.weatherUpdateSeconds = 1.0f;
-  settings.weatherEvolutionPerSecond = 0.01f;  // fast enough that periods differ visibly
-  CloudView view = cumulusView();
-  auto running = renderer();
-  const std::vector<std::uint8_t> first = [&] {
-    view.timeSeconds = 0.0;
-    running->render(view, settings, kExtent);
-    return running->readWeatherMap();
-  }();
-  for (int frame = 1; frame <= 31; ++frame) {
-    view.timeSeconds = frame / 30.0;
-    running->render(view, settings, kExtent);
-    if (frame < 30) {
-      // Still period 0 while period 1 is being prepared in the other map.
-      ASSERT_EQ(running->readWeatherMap(), first) << "frame " << frame;
-    }
-  }
-  auto fresh = renderer();
-  fresh->render(view, settings, kExtent);
-  const std::vector<std::uint8_t> prepared = running->readWeatherMap();
-  EXPECT_NE(prepared, first);
-  EXPECT_EQ(prepared, fresh->readWeatherMap());
-  EXPECT_EQ(running->readWeatherMaxFine(), fresh->readWeatherMaxFine());
-}
-
-TEST_F(CloudTemporal, EmptySpaceSkippingChangesTheCostNotThePicture) {
-  // Coverage 0.4: broken cumulus; 0.3: a few clouds in a mostly clear sky.
-  for (float coverage : {0.4f, 0.3f}) {
-    clouds::Settings on = test::singleFrame({});
-    on.coverage = coverage;
-    on.jitter = clouds::Jitter::None;
-    on.maxViewSteps = 4096;    // every ray reaches its end either way: the same clouds in reach
-    on.cheapSampling = false;  // coarse steps would miss different small clouds either way
-    clouds::Settings off = on;
-    off.emptySpaceSkipping = false;
-    CloudView view = cumulusView();
-    view.pitchDegrees = 6.0;
-    auto r = renderer();
-    const test::CloudFrame skipped = r->render(view, on, kExtent);
-    const clouds::WorkCounters with = r->lastWorkCounters();
-    r->cut();
-    const test::CloudFrame marched = r->render(view, off, kExtent);
-    const clouds::WorkCounters without = r->lastWorkCounters();
-    SCOPED_TRACE(coverage);
-    ASSERT_GT(meanOpacity(marched), 0.002) << "the view must show clouds";
-    EXPECT_GT(with.skippedCells, 0u);
-    EXPECT_EQ(without.skippedCells, 0u);
-    // Samples restart at cell boundaries, so they move a little: equal up to that.
-    EXPECT_GE(test::psnr(skipped.radiance, marched.radiance, 1.0), 40.0);
-    // The fewer cells hold cloud, the more is skipped. A cell is empty only where its
-    // coverage is zero everywhere (the noise inside is not known), so broken skies, where
-    // most 780 m cells hold some coverage, save less than clear ones (measured: 0.85 and
-    // 0.68 of the samples; a sky with no coverage at all is not marched, see the next test).
-    const double fraction = double(with.viewSamples) / double(without.viewSamples);
-    EXPECT_LT(fraction, coverage > 0.35f ? 0.9 : 0.75);
-  }
-}
-
-TEST_F(CloudTemporal, ClearSkyCostsLessThanATenthOfOvercast) {
-  clouds::Settings clear = clouds::settingsFor(clouds::Quality::High);
-  clear.coverage = 0.0f;
-  clouds::Settings overcast = clear;
-  overcast.coverage = 1.0f;
-  overcast.cloudType = 0.1f;  // a stratus deck
-  auto r = renderer();
-  const test::CloudFrame empty = r->render(cumulusView(), clear, kExtent, 3);
-  const clouds::WorkCounters clearWork = r->lastWorkCounters();
-  // Coverage 0 cannot show a cloud anywhere: the module clears its outputs instead of marching.
-  EXPECT_EQ(std::string(r->context().lastFrameReport().resetReason), "clear sky: nothing to march");
-  EXPECT_EQ(clearWork.tracedPixels, 0u);
-  for (const glm::vec4& p : empty.radiance) ASSERT_EQ(p, glm::vec4(0.0f, 0.0f, 0.0f, 1.0f));
-  for (const glm::vec2& d : empty.depth) ASSERT_EQ(d, glm::vec2(0.0f));
-  // Back to cloud, without a cut: nothing stale from before the clear frames is reused.
-  r->render(cumulusView(), overcast, kExtent, 1);
-  EXPECT_FALSE(r->context().lastFrameReport().historyUsed);
-  r->render(cumulusView(), overcast, kExtent, 2);
-  const clouds::WorkCounters overcastWork = r->lastWorkCounters();
-  EXPECT_GT(samples(overcastWork), 0u);
-}
-
-TEST_F(CloudTemporal, EachPresetCostsMoreThanTheOneBelowIt) {
-  const clouds::Quality presets[] = {clouds::Quality::Low, clouds::Quality::Medium,
-                                     clouds::Quality::High, clouds::Quality::Ultra,
-                                     clouds::Quality::Reference};
-  std::uint64_t previous = 0;
-  for (clouds::Quality q : presets) {
-    auto r = renderer();
-    // A steady-state frame: history in use where the preset reuses it.
-    r->render(cumulusView(), clouds::settingsFor(q), kExtent, 3);
-    const clouds::WorkCounters work = r->lastWorkCounters();
-    EXPECT_GT(samples(work), previous) << clouds::qualityName(q);
-    EXPECT_GT(work.tracedPixels, 0u);
-    previous = samples(work);
-  }
-}
-
-TEST_F(CloudTemporal, PassTimingsAccountForTheFrame) {
-  auto r = renderer();
-  const clouds::Settings high = clouds::settingsFor(clouds::Quality::High);
-  r->render(cumulusView(), high, kExtent, 1);
-  std::vector<std::string> first;
-  for (const clouds::PassTiming& t : r->lastPassTimings()) first.emplace_back(t.name);
-  EXPECT_EQ(first.front(), "noise") << "the first frame generates the noise";
-  r->render(cumulusView(), high, kExtent, 1);
-  ASSERT_FALSE(r->lastPassTimings().empty());
-  EXPECT_EQ(std::string(r->lastPassTimings().front().name), "weather")
-      << "the next period's weather map is prepared a band per frame";
-  // 16 bands make the next map; after that a frame at the same time does no weather work.
-  r->render(cumulusView(), high, kExtent, 16);
-  std::vector<std::string> names;
-  double sum = 0.0;
-  for (const clouds::PassTiming& t : r->lastPassTimings()) {
-    names.emplace_back(t.name);
-    EXPECT_GT(t.milliseconds, 0.0) << t.name;
-    sum += t.milliseconds;
-  }
-  const std::vector<std::string> expected = {"scene distance", "march", "reconstruct", "upsample"};
-  EXPECT_EQ(names, expected) << "same weather period, next map ready: no weather work";
-  // The passes are the frame: together at most the whole dispatch, and most of it.
-  EXPECT_LE(sum, r->lastGpuMilliseconds() * 1.02 + 0.05);
-  EXPECT_GE(sum, r->lastGpuMilliseconds() * 0.5);
 }
 
 }  // namespace

@@ -113,32 +113,30 @@ TEST(TemporalState, UpsamplingRaysVisitEveryOutputPixelOfTheirTracePixelFirst) {
   context.traceExtent = {80, 45};
   context.fullExtent = {160, 90};
   context.tileSize = 4;
-  context.useHistory = context.useOutputHistory = true;
+  context.useOutputHistory = true;
   std::set<std::pair<int, int>> hit;
   for (std::uint32_t round = 0; round < 4; ++round) {
     context.temporalIndex = round * 16 + 5;
-    const glm::vec2 offset = glm::vec2(clouds::detail::buildUniforms(in, s, context).subpixel);
+    const glm::vec2 offset = glm::vec2(clouds::detail::buildUniforms(in, s, context).subpixelOffset);
     ASSERT_LT(glm::max(std::abs(offset.x), std::abs(offset.y)), 0.5f) << "inside the pixel";
     const glm::ivec2 outputPixel(glm::floor((offset + 0.5f) * 2.0f));
     hit.insert({outputPixel.x, outputPixel.y});
     for (std::uint32_t frame : {1u, 11u, 16u}) {  // the frame after a reset is index 0
       context.temporalIndex = round * 16 + frame;
-      EXPECT_EQ(glm::vec2(clouds::detail::buildUniforms(in, s, context).subpixel), offset)
+      EXPECT_EQ(glm::vec2(clouds::detail::buildUniforms(in, s, context).subpixelOffset), offset)
           << "one offset per round, frame " << frame;
     }
   }
   EXPECT_EQ(hit.size(), 4u);
   // A frame rebuilt without output history marches through pixel centres.
   context.useOutputHistory = false;
-  EXPECT_EQ(glm::vec2(clouds::detail::buildUniforms(in, s, context).subpixel), glm::vec2(0.0f));
+  EXPECT_EQ(glm::vec2(clouds::detail::buildUniforms(in, s, context).subpixelOffset), glm::vec2(0.0f));
 }
 
 TEST(TemporalState, AFrameIsStillOnlyWhenNothingMoved) {
   // Still: the passes read each pixel's history in place instead of reprojecting it.
   const clouds::Settings s;  // wind 10 m/s
   clouds::FrameInputs in = groundCamera();
-  in.previousView = in.view;
-  in.previousProjection = in.projection;
   TemporalState state;
   EXPECT_FALSE(run(state, in, s).still) << "first frame: no history to read";
   EXPECT_TRUE(run(state, in, s).still);
@@ -154,8 +152,31 @@ TEST(TemporalState, AFrameIsStillOnlyWhenNothingMoved) {
   later.timeSeconds += 1.0 / 30.0;
   EXPECT_TRUE(run(state, later, calm).still) << "time passed, but nothing drifts";
   clouds::FrameInputs turned = later;
-  turned.previousView = glm::rotate(in.view, 0.01f, glm::vec3(0.0f, 1.0f, 0.0f));
+  turned.view = glm::rotate(in.view, 0.01f, glm::vec3(0.0f, 1.0f, 0.0f));
   EXPECT_FALSE(run(state, turned, calm).still) << "the view turned";
+}
+
+TEST(TemporalState, ThePreviousCameraIsTheOneTheHistoryWasMadeWith) {
+  // The host passes only this frame's camera: the history remembers its own.
+  const clouds::Settings s;
+  TemporalState state;
+  clouds::FrameInputs first = groundCamera();
+  first.projection = glm::perspective(1.0f, 1.7f, 0.5f, 1000.0f);
+  const TemporalFrame none = run(state, first, s);
+  EXPECT_EQ(none.previousView, first.view) << "no history: this frame's camera";
+  clouds::FrameInputs second = first;
+  second.view = glm::rotate(first.view, 0.02f, glm::vec3(0.0f, 1.0f, 0.0f));
+  second.projection = glm::perspective(1.1f, 1.7f, 0.5f, 1000.0f);
+  second.cameraPosition.x += 25.0;
+  const TemporalFrame frame = state.plan(second, s, kTrace);
+  EXPECT_EQ(frame.previousView, first.view);
+  EXPECT_EQ(frame.previousProjection, first.projection);
+  EXPECT_EQ(frame.cameraDelta, glm::dvec3(25.0, 0.0, 0.0));
+  // A cleared sky (nothing marched) forgets the history, and says why.
+  state.forget("after a clear sky");
+  const TemporalFrame after = state.plan(second, s, kTrace);
+  EXPECT_FALSE(after.useHistory);
+  EXPECT_EQ(std::string(after.resetReason), "after a clear sky");
 }
 
 TEST(TemporalState, AResizeOfTheOutputAloneDropsTheHistory) {

@@ -4,19 +4,29 @@
 //   2. builds a synthetic scene on the CPU: a ground plane and three tall boxes, as a
 //      reversed-Z depth buffer and a lit HDR colour image, and uploads them,
 //   3. records clouds::Context::dispatch() and composite() into its own command buffer,
-//   4. submits, reads the colour back, tonemaps it and writes a PNG.
-// Usage: clouds_minimal_host [--output FILE.png] [--width W] [--height H] [--validation]
-//                            [--no-clouds]   (the scene alone, for comparison)
-// With --validation (or CLOUDSCAPE_VALIDATION=1) any validation message makes it exit 3.
+//   4. submits, reads the colour back, tonemaps it and writes a binary PPM image.
+// It enables exactly what the module's README requires (Vulkan 1.3, synchronization2,
+// shaderStorageImageExtendedFormats) and no extension.
+//
+// Usage: clouds_minimal_host [--output FILE.ppm] [--width W] [--height H] [--frames N]
+//                            [--validation] [--no-clouds] [--claim-debug-utils]
+//   --frames N            render N frames (the temporal reconstruction at work; default 1)
+//   --validation          (or CLOUDSCAPE_VALIDATION=1) the validation layer and a debug
+//                         messenger (VK_EXT_debug_utils, then also CreateInfo::debugUtils): any
+//                         message makes it exit 3
+//   --no-clouds           the scene alone, for comparison
+//   --claim-debug-utils   tell the module VK_EXT_debug_utils is enabled although it is not: a
+//                         host bug, for the test that checks the module then trips validation
+// Run it under the validation layer without enabling anything itself with
+// VK_INSTANCE_LAYERS=VK_LAYER_KHRONOS_validation: the layer then prints to stdout.
 #include <vulkan/vulkan.h>
-
-#include <OpenImageIO/imageio.h>
 
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
+#include <fstream>
 #include <glm/glm.hpp>
 #include <glm/gtc/packing.hpp>
 #include <string>
@@ -331,34 +341,32 @@ void buildScene(const Camera& camera, VkExtent2D extent, const glm::vec3& sun,
   }
 }
 
-bool writePng(const std::string& path, VkExtent2D extent, const std::uint16_t* halves) {
-  std::vector<std::uint8_t> pixels(std::size_t{4} * extent.width * extent.height);
+// Exposure, Reinhard and an sRGB-like gamma (enough for a preview), as a binary PPM: a format
+// any image viewer opens, written without a library.
+bool writePpm(const std::string& path, VkExtent2D extent, const std::uint16_t* halves) {
+  std::vector<std::uint8_t> pixels(std::size_t{3} * extent.width * extent.height);
   for (std::size_t i = 0; i < pixels.size(); ++i) {
-    if (i % 4 == 3) {
-      pixels[i] = 255;
-      continue;
-    }
-    // Exposure, Reinhard and an sRGB-like gamma: enough for a preview.
-    const float hdr = std::max(glm::unpackHalf1x16(halves[i]), 0.0f) * 0.6f;
+    const float hdr = std::max(glm::unpackHalf1x16(halves[i / 3 * 4 + i % 3]), 0.0f) * 0.6f;
     const float ldr = std::pow(hdr / (1.0f + hdr), 1.0f / 2.2f);
     pixels[i] = static_cast<std::uint8_t>(std::clamp(ldr, 0.0f, 1.0f) * 255.0f + 0.5f);
   }
-  auto out = OIIO::ImageOutput::create(path);
-  if (!out) return false;
-  OIIO::ImageSpec spec(static_cast<int>(extent.width), static_cast<int>(extent.height), 4,
-                       OIIO::TypeDesc::UINT8);
-  return out->open(path, spec) && out->write_image(OIIO::TypeDesc::UINT8, pixels.data()) &&
-         out->close();
+  std::ofstream out(path, std::ios::binary);
+  out << "P6\n" << extent.width << " " << extent.height << "\n255\n";
+  out.write(reinterpret_cast<const char*>(pixels.data()),
+            static_cast<std::streamsize>(pixels.size()));
+  return static_cast<bool>(out);
 }
 
 }  // namespace
 
 int main(int argc, char** argv) {
-  std::string outputPath = "clouds_minimal_host.png";
+  std::string outputPath = "clouds_minimal_host.ppm";
   VkExtent2D extent{320, 180};
   const char* env = std::getenv("CLOUDSCAPE_VALIDATION");
   bool validation = env != nullptr && env[0] != '\0' && env[0] != '0';
   bool withClouds = true;
+  bool claimDebugUtils = false;
+  int frames = 1;
   for (int i = 1; i < argc; ++i) {
     const std::string arg = argv[i];
     if (arg == "--output" && i + 1 < argc) {
@@ -367,20 +375,28 @@ int main(int argc, char** argv) {
       extent.width = static_cast<std::uint32_t>(std::atoi(argv[++i]));
     } else if (arg == "--height" && i + 1 < argc) {
       extent.height = static_cast<std::uint32_t>(std::atoi(argv[++i]));
+    } else if (arg == "--frames" && i + 1 < argc) {
+      frames = std::atoi(argv[++i]);
     } else if (arg == "--validation") {
       validation = true;
     } else if (arg == "--no-clouds") {
       withClouds = false;
+    } else if (arg == "--claim-debug-utils") {
+      claimDebugUtils = true;
     } else {
       std::fprintf(stderr,
-                   "usage: %s [--output FILE.png] [--width W] [--height H] [--validation] "
-                   "[--no-clouds]\n",
+                   "usage: %s [--output FILE.ppm] [--width W] [--height H] [--frames N] "
+                   "[--validation] [--no-clouds] [--claim-debug-utils]\n",
                    argv[0]);
       return 2;
     }
   }
   if (extent.width < 8 || extent.height < 8 || extent.width > 8192 || extent.height > 8192) {
     std::fprintf(stderr, "minimal_host: --width/--height must be in [8, 8192]\n");
+    return 2;
+  }
+  if (frames < 1 || frames > 10000) {
+    std::fprintf(stderr, "minimal_host: --frames must be in [1, 10000]\n");
     return 2;
   }
 
@@ -410,27 +426,33 @@ int main(int argc, char** argv) {
     std::memcpy(colourUpload.mapped, colourValues.data(), pixels * 8);
   }
 
-  // The clouds module: created from the host's handles and entry points.
+  // The clouds module: created from the host's handles and entry points, then prepared for
+  // the settings and size it will render (pipelines and images), outside any recording.
   clouds::CreateInfo info;
   info.instance = gpu.instance;
   info.physicalDevice = gpu.physical;
   info.device = gpu.device;
   info.getInstanceProcAddr = vkGetInstanceProcAddr;
   info.getDeviceProcAddr = vkGetDeviceProcAddr;
+  info.debugUtils = validation || claimDebugUtils;  // only --validation enables the extension
   info.depthFormat = VK_FORMAT_D32_SFLOAT;
   info.compositeColorFormat = VK_FORMAT_R16G16B16A16_SFLOAT;
   info.maxRenderExtent = extent;
   info.maxFramesInFlight = 1;
   info.reversedZ = true;
-  std::string error;
+  clouds::Error error;
   std::unique_ptr<clouds::Context> clouds = clouds::Context::create(info, &error);
-  if (!clouds) {
-    std::fprintf(stderr, "minimal_host: %s\n", error.c_str());
+  clouds::Settings settings;  // the defaults, with a little more coverage: broken cumulus
+  settings.coverage = 0.62f;
+  if (!clouds || !clouds->prepare(settings, extent, &error)) {
+    std::fprintf(stderr, "minimal_host: %s (%s)\n", error.message.c_str(),
+                 clouds::errorCodeName(error.code));
     return 1;
   }
 
   VkCommandPool pool = VK_NULL_HANDLE;
   VkCommandPoolCreateInfo poolInfo{VK_STRUCTURE_TYPE_COMMAND_POOL_CREATE_INFO};
+  poolInfo.flags = VK_COMMAND_POOL_CREATE_RESET_COMMAND_BUFFER_BIT;
   poolInfo.queueFamilyIndex = gpu.queueFamily;
   vkCheck(vkCreateCommandPool(gpu.device, &poolInfo, nullptr, &pool), "vkCreateCommandPool");
   VkCommandBuffer cmd = VK_NULL_HANDLE;
@@ -438,80 +460,82 @@ int main(int argc, char** argv) {
   cmdInfo.commandPool = pool;
   cmdInfo.commandBufferCount = 1;
   vkCheck(vkAllocateCommandBuffers(gpu.device, &cmdInfo, &cmd), "vkAllocateCommandBuffers");
-  VkCommandBufferBeginInfo begin{VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO};
-  begin.flags = VK_COMMAND_BUFFER_USAGE_ONE_TIME_SUBMIT_BIT;
-  vkBeginCommandBuffer(cmd, &begin);
-
-  // Upload the scene, then hand depth (read-only) and colour (GENERAL) to compute shaders.
-  VkBufferImageCopy region{};
-  region.imageExtent = {extent.width, extent.height, 1};
-  region.imageSubresource = {VK_IMAGE_ASPECT_DEPTH_BIT, 0, 0, 1};
-  imageBarrier(cmd, depth.image, VK_IMAGE_ASPECT_DEPTH_BIT, VK_IMAGE_LAYOUT_UNDEFINED,
-               VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, VK_PIPELINE_STAGE_2_NONE, 0,
-               VK_PIPELINE_STAGE_2_TRANSFER_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT);
-  vkCmdCopyBufferToImage(cmd, depthUpload.buffer, depth.image, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
-                         1, &region);
-  imageBarrier(cmd, depth.image, VK_IMAGE_ASPECT_DEPTH_BIT, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
-               VK_IMAGE_LAYOUT_DEPTH_READ_ONLY_OPTIMAL, VK_PIPELINE_STAGE_2_TRANSFER_BIT,
-               VK_ACCESS_2_TRANSFER_WRITE_BIT, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
-               VK_ACCESS_2_SHADER_SAMPLED_READ_BIT);
-  region.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
-  imageBarrier(cmd, colour.image, VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_UNDEFINED,
-               VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, VK_PIPELINE_STAGE_2_NONE, 0,
-               VK_PIPELINE_STAGE_2_TRANSFER_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT);
-  vkCmdCopyBufferToImage(cmd, colourUpload.buffer, colour.image,
-                         VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1, &region);
-  imageBarrier(cmd, colour.image, VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
-               VK_IMAGE_LAYOUT_GENERAL, VK_PIPELINE_STAGE_2_TRANSFER_BIT,
-               VK_ACCESS_2_TRANSFER_WRITE_BIT, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
-               VK_ACCESS_2_SHADER_STORAGE_READ_BIT | VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT);
-
-  // One frame of clouds over the scene.
-  clouds::FrameInputs inputs;
-  inputs.commandBuffer = cmd;
-  inputs.renderExtent = extent;
-  inputs.depthView = depth.view;
-  inputs.depthLayout = VK_IMAGE_LAYOUT_DEPTH_READ_ONLY_OPTIMAL;
-  inputs.view = viewMatrix(camera);
-  inputs.projection = projectionMatrix(camera, float(extent.width) / float(extent.height));
-  inputs.cameraPosition = glm::dvec3(camera.position);
-  inputs.previousView = inputs.view;
-  inputs.previousProjection = inputs.projection;
-  inputs.previousCameraPosition = inputs.cameraPosition;
-  inputs.sunDirection = sun;
-  inputs.sunIlluminance = glm::vec3(12.0f, 11.5f, 10.5f);
-  inputs.ambientTop = glm::vec3(0.45f, 0.6f, 0.95f);
-  inputs.ambientBottom = glm::vec3(0.3f, 0.32f, 0.35f);
-  inputs.timeSeconds = 0.0;
-  inputs.frameIndex = 0;
-  inputs.reset = true;
-  clouds::Settings settings;  // the defaults, with a little more coverage: broken cumulus
-  settings.coverage = 0.62f;
-  if (withClouds && (!clouds->dispatch(inputs, settings, &error) ||
-                     !clouds->composite(cmd, colour.view, extent, &error))) {
-    std::fprintf(stderr, "minimal_host: %s\n", error.c_str());
-    return 1;
-  }
-
-  imageBarrier(cmd, colour.image, VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_GENERAL,
-               VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
-               VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT, VK_PIPELINE_STAGE_2_TRANSFER_BIT,
-               VK_ACCESS_2_TRANSFER_READ_BIT);
-  vkCmdCopyImageToBuffer(cmd, colour.image, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, readback.buffer,
-                         1, &region);
-  vkEndCommandBuffer(cmd);
-
   VkFence fence = VK_NULL_HANDLE;
   VkFenceCreateInfo fenceInfo{VK_STRUCTURE_TYPE_FENCE_CREATE_INFO};
-  vkCreateFence(gpu.device, &fenceInfo, nullptr, &fence);
-  VkSubmitInfo submit{VK_STRUCTURE_TYPE_SUBMIT_INFO};
-  submit.commandBufferCount = 1;
-  submit.pCommandBuffers = &cmd;
-  vkCheck(vkQueueSubmit(gpu.queue, 1, &submit, fence), "vkQueueSubmit");
-  vkCheck(vkWaitForFences(gpu.device, 1, &fence, VK_TRUE, UINT64_MAX), "vkWaitForFences");
+  vkCheck(vkCreateFence(gpu.device, &fenceInfo, nullptr, &fence), "vkCreateFence");
+
+  // One frame per submission, waited for before the next (maxFramesInFlight = 1): the scene's
+  // colour is uploaded afresh, then the clouds are dispatched and composited over it.
+  VkBufferImageCopy region{};
+  region.imageExtent = {extent.width, extent.height, 1};
+  for (int frame = 0; frame < frames; ++frame) {
+    VkCommandBufferBeginInfo begin{VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO};
+    begin.flags = VK_COMMAND_BUFFER_USAGE_ONE_TIME_SUBMIT_BIT;
+    vkCheck(vkBeginCommandBuffer(cmd, &begin), "vkBeginCommandBuffer");
+    if (frame == 0) {
+      region.imageSubresource = {VK_IMAGE_ASPECT_DEPTH_BIT, 0, 0, 1};
+      imageBarrier(cmd, depth.image, VK_IMAGE_ASPECT_DEPTH_BIT, VK_IMAGE_LAYOUT_UNDEFINED,
+                   VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, VK_PIPELINE_STAGE_2_NONE, 0,
+                   VK_PIPELINE_STAGE_2_TRANSFER_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT);
+      vkCmdCopyBufferToImage(cmd, depthUpload.buffer, depth.image,
+                             VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1, &region);
+      imageBarrier(cmd, depth.image, VK_IMAGE_ASPECT_DEPTH_BIT,
+                   VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, VK_IMAGE_LAYOUT_DEPTH_READ_ONLY_OPTIMAL,
+                   VK_PIPELINE_STAGE_2_TRANSFER_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT,
+                   VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_SHADER_SAMPLED_READ_BIT);
+    }
+    // The colour: the scene afresh, then GENERAL for the module's compute shaders.
+    region.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
+    imageBarrier(cmd, colour.image, VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_UNDEFINED,
+                 VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, VK_PIPELINE_STAGE_2_TRANSFER_BIT,
+                 VK_ACCESS_2_TRANSFER_READ_BIT, VK_PIPELINE_STAGE_2_TRANSFER_BIT,
+                 VK_ACCESS_2_TRANSFER_WRITE_BIT);
+    vkCmdCopyBufferToImage(cmd, colourUpload.buffer, colour.image,
+                           VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1, &region);
+    imageBarrier(cmd, colour.image, VK_IMAGE_ASPECT_COLOR_BIT,
+                 VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, VK_IMAGE_LAYOUT_GENERAL,
+                 VK_PIPELINE_STAGE_2_TRANSFER_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT,
+                 VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
+                 VK_ACCESS_2_SHADER_STORAGE_READ_BIT | VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT);
+
+    clouds::FrameInputs inputs;
+    inputs.commandBuffer = cmd;
+    inputs.renderExtent = extent;
+    inputs.depthView = depth.view;
+    inputs.depthLayout = VK_IMAGE_LAYOUT_DEPTH_READ_ONLY_OPTIMAL;
+    inputs.view = viewMatrix(camera);
+    inputs.projection = projectionMatrix(camera, float(extent.width) / float(extent.height));
+    inputs.cameraPosition = glm::dvec3(camera.position);
+    inputs.sunDirection = sun;
+    inputs.sunIlluminance = glm::vec3(12.0f, 11.5f, 10.5f);
+    inputs.ambientTop = glm::vec3(0.45f, 0.6f, 0.95f);
+    inputs.ambientBottom = glm::vec3(0.3f, 0.32f, 0.35f);
+    inputs.timeSeconds = frame / 30.0;
+    inputs.frameIndex = static_cast<std::uint64_t>(frame);
+    if (withClouds && (!clouds->dispatch(inputs, settings, &error) ||
+                       !clouds->composite(cmd, colour.view, extent, &error))) {
+      std::fprintf(stderr, "minimal_host: %s (%s)\n", error.message.c_str(),
+                   clouds::errorCodeName(error.code));
+      return 1;
+    }
+
+    imageBarrier(cmd, colour.image, VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_GENERAL,
+                 VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
+                 VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT, VK_PIPELINE_STAGE_2_TRANSFER_BIT,
+                 VK_ACCESS_2_TRANSFER_READ_BIT);
+    vkCmdCopyImageToBuffer(cmd, colour.image, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
+                           readback.buffer, 1, &region);
+    vkCheck(vkEndCommandBuffer(cmd), "vkEndCommandBuffer");
+    VkSubmitInfo submit{VK_STRUCTURE_TYPE_SUBMIT_INFO};
+    submit.commandBufferCount = 1;
+    submit.pCommandBuffers = &cmd;
+    vkCheck(vkQueueSubmit(gpu.queue, 1, &submit, fence), "vkQueueSubmit");
+    vkCheck(vkWaitForFences(gpu.device, 1, &fence, VK_TRUE, UINT64_MAX), "vkWaitForFences");
+    vkCheck(vkResetFences(gpu.device, 1, &fence), "vkResetFences");
+  }
 
   const bool written =
-      writePng(outputPath, extent, static_cast<const std::uint16_t*>(readback.mapped));
+      writePpm(outputPath, extent, static_cast<const std::uint16_t*>(readback.mapped));
   if (written) std::printf("minimal_host: wrote %s\n", outputPath.c_str());
 
   // Teardown: the GPU is idle (fence waited), so the module can go first.

@@ -2,23 +2,37 @@
 // clouds: Nubis-style real-time volumetric clouds as a drop-in Vulkan module.
 //
 // Shaped like a FidelityFX effect:
-//   1. clouds::Context::create(CreateInfo)       once, with the host's device and formats;
-//   2. context->dispatch(FrameInputs, Settings)  every frame: records compute work into the
-//      host's command buffer (never submits, waits or presents);
-//   3. context->outputs()                        the module's images for the host to read, or
-//      context->composite(...)                   to apply the clouds over a host colour image.
+//   1. clouds::Context::create(CreateInfo)          once, with the host's device and formats;
+//   2. context->prepare(Settings, renderExtent)     outside command recording, whenever the
+//      settings or the render size change: builds pipelines and sizes images (cheap when
+//      nothing is new, so a host may call it every frame);
+//   3. context->dispatch(FrameInputs, Settings)     every frame: records compute work into the
+//      host's command buffer (never submits, waits, presents, creates or allocates);
+//   4. context->outputs()                           the module's images for the host to read,
+//      or context->composite(...)                   to apply the clouds over a host colour image.
 //
 // Ownership: the host owns the instance, device, queue, command buffers, submission, its depth
 // and colour images. The module owns its pipelines, noise textures, weather map, uniform
-// buffers and output images, and allocates their memory itself (a dozen allocations).
+// buffers, temporal history and output images, and allocates their memory itself (a few
+// dozen allocations; memoryUsage() reports them).
 //
-// Conventions: metres; Y up; right-handed; world directions as unit vectors; the sun direction
-// points towards the sun; Vulkan clip space (y down, depth in [0, 1]), reversed-Z or not per
-// CreateInfo. The cloud layer is a spherical shell around a planet whose centre lies straight
-// below the camera, so the host's world is a flat map with y = altitude above sea level.
+// Conventions: metres, seconds; Y up; right-handed; world directions as unit vectors; the sun
+// direction points towards the sun; Vulkan clip space (y down, depth in [0, 1]), reversed-Z or
+// not per CreateInfo. The cloud layer is a spherical shell around a planet whose centre lies
+// straight below the camera, so the host's world is a flat map with y = altitude above sea
+// level. Light is in the host's radiometric units: FrameInputs::sunIlluminance is an
+// illuminance (e.g. lux), the ambient inputs and every radiance output are radiances in the
+// matching unit per steradian (e.g. cd/m^2 = lux/sr), unclamped HDR.
+//
+// Temporal state is the module's: it remembers the camera, sun and time its history was made
+// with, and reprojects from them; the host passes only the current frame (and `reset` on a
+// camera cut). The module also owns its ray jitter (Settings::jitter), so pass the projection
+// without any TAA jitter of the host.
 //
 // Requirements: Vulkan 1.3 with synchronization2 and shaderStorageImageExtendedFormats
-// enabled. Thread safety: a Context is used from one thread at a time.
+// enabled; nothing optional (see CreateInfo::debugUtils). Thread safety: a Context is used
+// from one thread at a time. Errors never throw: each call returns false (or nullptr) and
+// fills an Error with a code hosts can branch on and a message naming the field at fault.
 #include <vulkan/vulkan.h>
 
 #include <cstdint>
@@ -30,6 +44,25 @@
 
 namespace clouds {
 
+// What went wrong, for hosts to branch on; Error::message says which field or call, and why.
+enum class ErrorCode : std::uint32_t {
+  None = 0,
+  InvalidCreateInfo,      // a CreateInfo field is missing or out of range
+  MissingFunction,        // the proc-addr functions lack an entry point the module needs
+  UnsupportedDevice,      // the device lacks a format feature the module needs
+  OutOfMemory,            // a Vulkan allocation failed (host or device memory)
+  VulkanFailure,          // another Vulkan call failed (the message names it and its VkResult)
+  InvalidSettings,        // a Settings field is out of range (validateSettings())
+  InvalidInputs,          // a FrameInputs field, or a composite() argument, is invalid
+  NotPrepared,            // dispatch() needs prepare() with these settings or this extent first
+};
+const char* errorCodeName(ErrorCode code);
+
+struct Error {
+  ErrorCode code = ErrorCode::None;
+  std::string message;
+};
+
 struct CreateInfo {
   VkInstance instance = VK_NULL_HANDLE;
   VkPhysicalDevice physicalDevice = VK_NULL_HANDLE;
@@ -38,13 +71,19 @@ struct CreateInfo {
   // any loader setup (static linking, volk, ...).
   PFN_vkGetInstanceProcAddr getInstanceProcAddr = nullptr;
   PFN_vkGetDeviceProcAddr getDeviceProcAddr = nullptr;
+  // True only when the host enabled VK_EXT_debug_utils on the instance: the module then names
+  // its objects ("clouds: ...") and labels its passes for debuggers and validation messages.
+  // Loaders hand out these entry points even when the extension is off, and calling them then
+  // is a validation error, so the module never uses them unless told.
+  bool debugUtils = false;
 
-  // Format of the depth views passed in FrameInputs (sampled with texelFetch).
+  // Format of the depth views passed in FrameInputs (read with texelFetch, depth aspect).
   VkFormat depthFormat = VK_FORMAT_D32_SFLOAT;
-  // Format of the colour image composite() writes (needs STORAGE usage); UNDEFINED: no
-  // composite helper. One of R16G16B16A16_SFLOAT, R32G32B32A32_SFLOAT.
+  // Format of the colour image composite() writes (STORAGE usage); VK_FORMAT_UNDEFINED: no
+  // composite helper. Only R16G16B16A16_SFLOAT is supported.
   VkFormat compositeColorFormat = VK_FORMAT_R16G16B16A16_SFLOAT;
-  // The largest FrameInputs::renderExtent that will be used; outputs are allocated for it.
+  // The largest render extent prepare() and dispatch() will be given, [1, 16384] per side.
+  // A bound, not an allocation: images are sized by prepare() to what is used.
   VkExtent2D maxRenderExtent{1920, 1080};
   // Frames the host may have in flight: per-frame descriptors and uniforms are ring-buffered
   // over this many slots by FrameInputs::frameIndex. The host must have waited for frame
@@ -56,14 +95,17 @@ struct CreateInfo {
   std::uint32_t noiseSeed = 1;
   // Count the march's work (samples, rays, early exits) for workCounters(); costs atomics.
   bool workCounters = false;
-  // Timestamp each pass (weather, scene distance, march, reconstruct, upsample) for
-  // passTimings(); a few timestamp queries per frame.
+  // Timestamp each pass for passTimings(); a few timestamp queries and execution barriers per
+  // frame (passes cannot overlap while timed).
   bool passTimings = false;
 };
 
-// GPU time of one of the module's passes in a frame (CreateInfo::passTimings).
+// GPU time of one of the module's passes in a frame (CreateInfo::passTimings). A frame has, in
+// recording order: "noise" (its first frame only), "weather" (frames that make or resample a
+// weather map), "sky ambient" (with FrameInputs::skyView), then either "clear sky" (nothing to
+// march) or "scene distance", "march", "reconstruct", "upsample".
 struct PassTiming {
-  const char* name = "";
+  const char* name = "";  // static storage: valid for the life of the program
   double milliseconds = 0.0;
 };
 
@@ -78,11 +120,30 @@ struct WorkCounters {
 
 // How the last dispatch reconstructed the frame.
 struct FrameReport {
-  VkExtent2D traceExtent{0, 0};
-  std::uint32_t tileSize = 1;    // one pixel per tileSize x tileSize tile was marched
+  VkExtent2D traceExtent{0, 0};  // {0, 0} on a clear-sky frame (nothing marched)
+  std::uint32_t tileSize = 0;    // one pixel per tileSize x tileSize tile was marched; 0 on a
+                                 //   clear-sky frame
   bool historyUsed = false;      // last frame's result was reprojected
   bool insideLayer = false;      // the camera was in or near the cloud layer
-  const char* resetReason = "";  // why the history was not used ("" when it was)
+  // Why the history was not used ("" when it was). Static storage: valid for the life of the
+  // program.
+  const char* resetReason = "";
+};
+
+// The GPU memory the module holds, by purpose (bytes of its VkDeviceMemory allocations).
+struct MemoryUsage {
+  std::uint64_t noiseBytes = 0;       // shape, detail and curl noise
+  std::uint64_t weatherBytes = 0;     // two weather maps (current, next) and their maxima
+  std::uint64_t outputBytes = 0;      // radiance and depth at the prepared render extent
+  std::uint64_t traceBytes = 0;       // scene distance, samples and two histories (trace extent)
+  std::uint64_t upsamplingBytes = 0;  // two output-resolution histories (temporal upsampling)
+  std::uint64_t bufferBytes = 0;      // uniforms, work counters, placeholders
+  std::uint64_t retiredBytes = 0;     // images a larger prepare() replaced, freed once the
+                                      //   frames in flight that may use them have retired
+  std::uint64_t totalBytes() const {
+    return noiseBytes + weatherBytes + outputBytes + traceBytes + upsamplingBytes + bufferBytes +
+           retiredBytes;
+  }
 };
 
 enum class Jitter : std::uint32_t {
@@ -227,20 +288,18 @@ struct FrameInputs {
   VkImageView depthView = VK_NULL_HANDLE;
   VkImageLayout depthLayout = VK_IMAGE_LAYOUT_DEPTH_READ_ONLY_OPTIMAL;
 
-  // Camera: world->view and view->clip as the host renders with them (only the rotation of
-  // `view` is used; the position comes from cameraPosition, in double precision).
+  // Camera: world->view and view->clip as the host renders with them, without TAA jitter
+  // (only the rotation of `view` is used; the position comes from cameraPosition, in double
+  // precision). This frame's only: the module remembers the camera of its history.
   glm::mat4 view{1.0f};
   glm::mat4 projection{1.0f};
   glm::dvec3 cameraPosition{0.0, 0.0, 0.0};  // metres; y = altitude above sea level
-  glm::mat4 previousView{1.0f};              // last frame's, for temporal reuse
-  glm::mat4 previousProjection{1.0f};
-  glm::dvec3 previousCameraPosition{0.0, 0.0, 0.0};
 
-  // Lighting in the host's radiometric units (outputs are in the same units, unclamped HDR).
+  // Lighting in the host's radiometric units (see the conventions above).
   glm::vec3 sunDirection{0.0f, 1.0f, 0.0f};  // unit, towards the sun
-  glm::vec3 sunIlluminance{10.0f};
-  glm::vec3 ambientTop{1.0f};     // sky radiance lighting cloud tops
-  glm::vec3 ambientBottom{0.5f};  // radiance lighting cloud bases
+  glm::vec3 sunIlluminance{10.0f};           // illuminance of the sun at the clouds, RGB
+  glm::vec3 ambientTop{1.0f};     // sky radiance lighting cloud tops, RGB per steradian
+  glm::vec3 ambientBottom{0.5f};  // radiance lighting cloud bases, RGB per steradian
   // Optional sky radiance as an equirectangular image (u = azimuth, v = 0 at the zenith),
   // sampled in `skyLayout`; when set it replaces ambientTop/ambientBottom.
   VkImageView skyView = VK_NULL_HANDLE;
@@ -251,9 +310,11 @@ struct FrameInputs {
   VkImageView weatherView = VK_NULL_HANDLE;
   VkImageLayout weatherLayout = VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL;
 
-  double timeSeconds = 0.0;      // drives wind and weather evolution
-  std::uint64_t frameIndex = 0;  // increments by one per frame; picks per-frame slots and jitter
-  bool reset = false;            // camera cut: drop temporal history
+  double timeSeconds = 0.0;  // >= 0; drives wind and weather evolution
+  // The host's frame number, increasing by one per frame: picks the per-frame slot
+  // (frameIndex % maxFramesInFlight) and tells when replaced images may be freed.
+  std::uint64_t frameIndex = 0;
+  bool reset = false;  // camera cut: drop temporal history
 };
 
 struct OutputImage {
@@ -263,7 +324,9 @@ struct OutputImage {
 };
 
 // After dispatch() the outputs are in VK_IMAGE_LAYOUT_GENERAL with their writes visible to
-// compute- and fragment-shader reads. Only the renderExtent of the last dispatch is valid.
+// compute- and fragment-shader reads. The images may be larger than the last dispatch's
+// renderExtent (they are sized by prepare()); only `extent` from their origin is valid. A
+// prepare() that grows them returns new images: read outputs() again after it.
 struct Outputs {
   // RGBA16F: rgb in-scattered radiance towards the camera (premultiplied), a transmittance.
   // Composite: colour = scene * a + rgb.
@@ -274,28 +337,53 @@ struct Outputs {
   VkExtent2D extent{0, 0};
 };
 
+namespace detail {
+struct ContextAccess;  // the module's own tests and tools reach internals through it
+}
+
 class Context {
  public:
-  // Returns nullptr and fills `error` when the device lacks something or creation fails.
-  static std::unique_ptr<Context> create(const CreateInfo& info, std::string* error);
+  class Impl;  // the implementation: opaque to hosts
+
+  // Creates the pipelines and images every frame needs whatever the settings (noise, weather
+  // map, composite); prepare() adds what depends on the settings and the render extent.
+  // Returns nullptr and fills `error` when the device lacks something or creation fails;
+  // whatever was created by then is destroyed.
+  static std::unique_ptr<Context> create(const CreateInfo& info, Error* error);
   // The host must ensure the GPU no longer uses the module's objects (e.g. after
   // vkDeviceWaitIdle or its frame fences).
   ~Context();
   Context(const Context&) = delete;
   Context& operator=(const Context&) = delete;
 
-  // Records this frame's work: first use also records the noise generation. Returns false and
-  // fills `error` (naming the field) for invalid inputs or settings; nothing is recorded then.
-  bool dispatch(const FrameInputs& inputs, const Settings& settings, std::string* error);
+  // Makes `settings` at `renderExtent` ready for dispatch(): the pipeline variants they select
+  // and images at least that large (output, trace and history images; the output-resolution
+  // history only when the settings upsample temporally). Call it outside command recording:
+  // at load, on a resize, when the settings change. It may create pipelines and allocate
+  // memory and is cheap when nothing is new (no Vulkan call). Images only grow; images it
+  // replaces are freed by a later dispatch() once the frames that may use them have retired.
+  // Growing drops the temporal history. Returns false and fills `error` (InvalidSettings,
+  // InvalidInputs for an extent beyond maxRenderExtent, OutOfMemory, VulkanFailure).
+  bool prepare(const Settings& settings, VkExtent2D renderExtent, Error* error);
+  // Whether dispatch() can run `settings` at `renderExtent` without a prepare().
+  bool prepared(const Settings& settings, VkExtent2D renderExtent) const;
+
+  // Records this frame's work (its first frame also records the noise generation). Creates
+  // and allocates nothing. Returns false and fills `error` (InvalidInputs, InvalidSettings,
+  // NotPrepared), naming the field; nothing is recorded then.
+  bool dispatch(const FrameInputs& inputs, const Settings& settings, Error* error);
 
   // Applies the last dispatch's clouds over `color` (format CreateInfo::compositeColorFormat,
   // STORAGE usage, in VK_IMAGE_LAYOUT_GENERAL, writes visible to compute shaders):
-  // color = color * transmittance + radiance. Records into `commandBuffer`.
+  // color = color * transmittance + radiance, written by a compute shader (synchronise the
+  // colour's next use from VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT). Records into
+  // `commandBuffer`; `extent` must be the last dispatch's renderExtent.
   bool composite(VkCommandBuffer commandBuffer, VkImageView color, VkExtent2D extent,
-                 std::string* error);
+                 Error* error);
 
   Outputs outputs() const;
   FrameReport lastFrameReport() const;
+  MemoryUsage memoryUsage() const;
   // The counters of frame `frameIndex`, which must have completed on the GPU and be one of
   // the last maxFramesInFlight frames; zeros unless CreateInfo::workCounters.
   WorkCounters workCounters(std::uint64_t frameIndex) const;
@@ -303,10 +391,8 @@ class Context {
   // CreateInfo::passTimings and the device has compute timestamps.
   std::vector<PassTiming> passTimings(std::uint64_t frameIndex) const;
 
-  class Impl;
-  Impl& impl() { return *impl_; }  // for the module's own tests and tools
-
  private:
+  friend struct detail::ContextAccess;
   explicit Context(std::unique_ptr<Impl> impl);
   std::unique_ptr<Impl> impl_;
 };

@@ -1,6 +1,6 @@
 #include "cloud_harness.h"
 
-#include "context_impl.h"
+#include "context_access.h"
 
 #include <cmath>
 #include <cstring>
@@ -60,9 +60,9 @@ CloudHarness::CloudHarness(gfx::Device& device, VkExtent2D maxExtent, HarnessOpt
   info.noiseSeed = options.noiseSeed;
   info.workCounters = options.workCounters;
   info.passTimings = options.passTimings;
-  std::string error;
+  clouds::Error error;
   context_ = clouds::Context::create(info, &error);
-  if (!context_) throw Error("clouds::Context::create: " + error);
+  if (!context_) throw Error("clouds::Context::create: " + error.message);
 }
 
 CloudHarness::~CloudHarness() {
@@ -116,9 +116,6 @@ clouds::FrameInputs CloudHarness::makeInputs(const CloudView& view, VkExtent2D e
   in.view = viewMatrix(view);
   in.projection = projectionMatrix(view, extent);
   in.cameraPosition = view.position;
-  in.previousView = previousInputs_ ? previousInputs_->view : in.view;
-  in.previousProjection = previousInputs_ ? previousInputs_->projection : in.projection;
-  in.previousCameraPosition = previousInputs_ ? previousInputs_->cameraPosition : in.cameraPosition;
   in.sunDirection = sunDirection(view);
   in.sunIlluminance = view.sunIlluminance;
   in.ambientTop = view.ambientTop;
@@ -161,7 +158,9 @@ std::string CloudHarness::tryRender(const CloudView& view, const clouds::Setting
   } else {
     depthValues_.clear();
   }
-  std::string error;
+  clouds::Error error;
+  // As a game would: prepare outside recording (cheap when nothing is new), then record.
+  if (!context_->prepare(settings, extent, &error)) return error.message;
   bool ok = true;
   if (!timer_) timer_ = std::make_unique<gfx::GpuTimer>(device_, 1, "harness timer");
   timer_->reset();
@@ -173,8 +172,7 @@ std::string CloudHarness::tryRender(const CloudView& view, const clouds::Setting
   });
   const auto scopes = timer_->resolve();
   lastGpuMilliseconds_ = scopes.empty() ? 0.0 : scopes[0].milliseconds;
-  if (!ok) return error;
-  previousInputs_ = lastInputs_;
+  if (!ok) return error.message;
   cutNext_ = false;
   ++frameIndex_;
   return {};
@@ -265,20 +263,24 @@ std::vector<std::uint8_t> readTexels(gfx::Device& device, VkImage image, VkExten
 
 }  // namespace
 
+const clouds::detail::ModuleImages& CloudHarness::moduleImages() const {
+  return clouds::detail::ContextAccess::impl(*context_).images();
+}
+
 std::vector<std::uint8_t> CloudHarness::readShapeNoise() {
-  const auto& image = context_->impl().shapeNoise();
+  const auto& image = moduleImages().shapeNoise;
   return readTexels(device_, image.image(), image.extent());
 }
 std::vector<std::uint8_t> CloudHarness::readDetailNoise() {
-  const auto& image = context_->impl().detailNoise();
+  const auto& image = moduleImages().detailNoise;
   return readTexels(device_, image.image(), image.extent());
 }
 std::vector<std::uint8_t> CloudHarness::readCurlNoise() {
-  const auto& image = context_->impl().curlNoise();
+  const auto& image = moduleImages().curlNoise;
   return readTexels(device_, image.image(), image.extent());
 }
 std::vector<std::uint8_t> CloudHarness::readWeatherMaxFine() {
-  const auto& image = context_->impl().weatherMaxFine();
+  const auto& image = moduleImages().weatherMaxFine;
   return readTexels(device_, image.image(), image.extent());
 }
 
@@ -296,9 +298,11 @@ void CloudHarness::poisonHistory() {
     // the poisoned texels claim to hold samples and must be caught as not finite.
     nan.uint32[2] = 0x7FC00000u;
     nan.uint32[3] = 0x7FC00003u;
+    const clouds::detail::ModuleImages& images = moduleImages();
     for (std::uint32_t i = 0; i < 2; ++i) {
-      for (VkImage image :
-           {context_->impl().history(i).image(), context_->impl().outputHistory(i).image()}) {
+      // The output histories exist only once settings that upsample temporally were prepared.
+      for (VkImage image : {images.history[i].image(), images.outputHistory[i].image()}) {
+        if (image == VK_NULL_HANDLE) continue;
         gfx::imageBarrier(cmd, image, range, general, transfer);
         vkCmdClearColorImage(cmd, image, VK_IMAGE_LAYOUT_GENERAL, &nan, 1, &range);
         gfx::imageBarrier(cmd, image, range, transfer, general);
@@ -317,7 +321,7 @@ std::vector<clouds::PassTiming> CloudHarness::lastPassTimings() const {
 }
 
 std::vector<std::uint8_t> CloudHarness::readWeatherMap() {
-  const auto& image = context_->impl().weatherMap();
+  const auto& image = clouds::detail::ContextAccess::impl(*context_).weatherMap();
   return readTexels(device_, image.image(), image.extent());
 }
 

@@ -17,6 +17,10 @@
 #include "engine/gfx/gpu_timer.h"
 #include "engine/gfx/resources.h"
 
+namespace clouds::detail {
+class ModuleImages;
+}
+
 namespace test {
 
 // A camera and sun, in the conventions of the module (metres, Y up, yaw 0 looks along -Z).
@@ -64,9 +68,9 @@ class CloudHarness {
   ~CloudHarness();
 
   // Renders `frames` frames of `view` and returns the last one. Frames form one sequence
-  // across calls, as a game's would: each passes the previous call's camera as the previous
-  // camera, and only the first frame (or the one after cut()) is a camera cut. Throws
-  // engine::Error when the module rejects the inputs.
+  // across calls, as a game's would (the module remembers the previous camera), and only the
+  // first frame (or the one after cut()) is a camera cut. Each frame prepares the settings
+  // outside recording first. Throws engine::Error when the module rejects the inputs.
   CloudFrame render(const CloudView& view, const clouds::Settings& settings, VkExtent2D extent,
                     std::uint32_t frames = 1);
   // The mean of `frames` frames of `view` rendered after a cut. With the Reference mode's
@@ -74,7 +78,7 @@ class CloudHarness {
   // image: the ground truth of the accuracy measurements.
   CloudFrame renderAveraged(const CloudView& view, const clouds::Settings& settings,
                             VkExtent2D extent, std::uint32_t frames);
-  // Records one frame, returning the module's error message instead of throwing.
+  // Prepares and records one frame, returning the module's error message instead of throwing.
   std::string tryRender(const CloudView& view, const clouds::Settings& settings, VkExtent2D extent);
 
   // Marks the next frame as a camera cut (FrameInputs::reset).
@@ -88,6 +92,8 @@ class CloudHarness {
   std::vector<clouds::PassTiming> lastPassTimings() const;
 
   clouds::Context& context() { return *context_; }
+  // The module's images (internal access, context_access.h).
+  const clouds::detail::ModuleImages& moduleImages() const;
   // The host depth values of the last render with groundDepth (reversed-Z), else empty.
   const std::vector<float>& lastDepth() const { return depthValues_; }
   const clouds::FrameInputs& lastInputs() const { return lastInputs_; }
@@ -111,7 +117,6 @@ class CloudHarness {
   std::vector<float> depthValues_;
   std::uint64_t frameIndex_ = 0;
   bool cutNext_ = true;
-  std::optional<clouds::FrameInputs> previousInputs_;
   std::unique_ptr<engine::gfx::GpuTimer> timer_;
   double lastGpuMilliseconds_ = 0.0;
   clouds::FrameInputs lastInputs_{};

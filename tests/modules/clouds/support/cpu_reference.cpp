@@ -1,15 +1,20 @@
 #include "cpu_reference.h"
 
 #include <algorithm>
+#include <cmath>
 #include <thread>
 
 #include "cloud_march.h"
+#include "cloud_weather_maxima.h"
 #include "uniforms.h"
 
 namespace clouds::shader {
 namespace {
 // Read-only while rendering; every worker thread samples the same texels.
 const test::CpuTextures* gTextures = nullptr;
+// The level weatherMaxima() reads (one thread).
+const std::vector<std::uint8_t>* gMaximaSource = nullptr;
+int gMaximaSourceSize = 0;
 
 vec4 texel(const std::vector<std::uint8_t>& texels, std::size_t index) {
   const std::uint8_t* p = &texels[4 * index];
@@ -34,6 +39,9 @@ vec4 fetchCurl(ivec2 t) {
 vec4 fetchWeatherMaxFine(ivec2 t) {
   return texel(gTextures->weatherMaxFine, std::size_t(t.y) * kWeatherMaxFineSize + std::size_t(t.x));
 }
+vec4 fetchMaximaSource(ivec2 t) {
+  return texel(*gMaximaSource, std::size_t(t.y) * std::size_t(gMaximaSourceSize) + std::size_t(t.x));
+}
 vec4 fetchWeatherMaxCoarse(ivec2 t) {
   return texel(gTextures->weatherMaxCoarse,
                std::size_t(t.y) * kWeatherMaxCoarseSize + std::size_t(t.x));
@@ -47,20 +55,17 @@ using namespace clouds::shader;
 
 std::vector<std::uint8_t> weatherMaxima(const std::vector<std::uint8_t>& source, int sourceSize,
                                         int targetSize) {
+  gMaximaSource = &source;
+  gMaximaSourceSize = sourceSize;
   const int cell = sourceSize / targetSize;
   std::vector<std::uint8_t> maxima(std::size_t(4) * std::size_t(targetSize * targetSize), 0);
   for (int cy = 0; cy < targetSize; ++cy) {
     for (int cx = 0; cx < targetSize; ++cx) {
+      const vec2 m = weatherCellMaxima(ivec2(cx, cy), sourceSize, cell);
       std::uint8_t* out = &maxima[4 * std::size_t(cy * targetSize + cx)];
-      for (int y = -1; y <= cell; ++y) {
-        for (int x = -1; x <= cell; ++x) {
-          const int sx = (cx * cell + x + sourceSize) % sourceSize;
-          const int sy = (cy * cell + y + sourceSize) % sourceSize;
-          const std::uint8_t* in = &source[4 * std::size_t(sy * sourceSize + sx)];
-          out[0] = std::max(out[0], in[0]);
-          out[1] = std::max(out[1], in[1]);
-        }
-      }
+      // As an RGBA8 storage image stores them: the maxima of UNORM texels are texels.
+      out[0] = static_cast<std::uint8_t>(std::lround(m.x * 255.0f));
+      out[1] = static_cast<std::uint8_t>(std::lround(m.y * 255.0f));
       out[3] = 255;
     }
   }
@@ -84,20 +89,20 @@ CloudFrame renderCpuReference(const CpuTextures& textures, const CloudUniforms& 
   MarchOptions options{variant.detail, variant.cheapSampling, variant.multipleScattering,
                        variant.lightSteps, variant.emptySpace};
   CloudFrame frame;
-  frame.extent = {u.extent.x, u.extent.y};
-  const std::size_t pixels = std::size_t{u.extent.x} * u.extent.y;
+  frame.extent = {u.traceExtent.x, u.traceExtent.y};
+  const std::size_t pixels = std::size_t{u.traceExtent.x} * u.traceExtent.y;
   frame.radiance.resize(pixels);
   frame.depth.resize(pixels);
   auto work = [&](unsigned first) {
     for (std::size_t i = first; i < pixels; i += threads) {
-      const uvec2 pixel(static_cast<uint>(i % u.extent.x), static_cast<uint>(i / u.extent.x));
+      const uvec2 pixel(static_cast<uint>(i % u.traceExtent.x), static_cast<uint>(i / u.traceExtent.x));
       const vec2 centre = vec2(pixel) + 0.5f +
-                          (variant.jitter == 2u ? vec2(u.subpixel) : vec2(0.0f));
-      const vec2 extent = vec2(u.extent.x, u.extent.y);
+                          (variant.jitter == 2u ? u.subpixelOffset : vec2(0.0f));
+      const vec2 extent = vec2(u.traceExtent.x, u.traceExtent.y);
       const vec3 direction = pixelRayDirection(centre, extent, u);
       const float sceneDistance =
           sceneDistanceFromDepth(depth.empty() ? 0.0f : depth[i], centre, extent, u);
-      const float jitter = rayJitter(pixel, u.frame.x, variant.jitter);
+      const float jitter = rayJitter(pixel, u.temporalIndex, variant.jitter);
       const MarchResult r = marchClouds(direction, sceneDistance, jitter, u, options);
       frame.radiance[i] = vec4(r.radiance, r.transmittance);
       frame.depth[i] = vec2(r.frontDepth, r.weightedDepth);

@@ -22,8 +22,9 @@ struct CpuTextures {
 
 CpuTextures readTextures(CloudHarness& harness);
 
-// The module's weather_max.comp on the CPU: each `targetSize`^2 cell holds the maximum R and G
-// of the source texels it covers plus a one-texel apron, wrapping (B = 0, A = 255).
+// The module's weather maxima on the CPU, with the shaders' own function
+// (cloud_weather_maxima.h): each of the `targetSize`^2 cells holds the maximum R and G of the
+// source texels it covers plus a one-texel apron, wrapping (B = 0, A = 255).
 std::vector<std::uint8_t> weatherMaxima(const std::vector<std::uint8_t>& source, int sourceSize,
                                         int targetSize);
 

@@ -3,6 +3,8 @@
 #include <string>
 #include <string_view>
 
+#include "engine/core/error.h"
+
 namespace engine::ecs {
 
 class World;
@@ -14,7 +16,9 @@ class Scheduler;
 ///
 /// A module whose requirements are missing (a device feature, a singleton another module
 /// should have provided) reports it from supported(); installModule() then logs a warning and
-/// skips it instead of failing, so the rest of the app still runs.
+/// skips it instead of failing, so the rest of the app still runs. What only installing can
+/// find out (the GPU cannot create the module's objects) install() reports by throwing
+/// ModuleUnsupported before it registers anything: the module is then skipped the same way.
 ///
 /// Ownership: systems often capture `this`, so the module must outlive the Scheduler it was
 /// installed into (App guarantees that).
@@ -30,7 +34,8 @@ class Module {
   virtual bool supported(const World& world, std::string& reason) const;
 
   /// Registers singletons, event queues and systems. Called at most once, only when
-  /// supported() returned true. May throw engine::Error; installation is not transactional.
+  /// supported() returned true. May throw ModuleUnsupported before registering anything, or
+  /// engine::Error; installation is not transactional.
   virtual void install(World& world, Scheduler& scheduler) = 0;
 
  protected:
@@ -39,8 +44,15 @@ class Module {
   Module& operator=(const Module&) = default;
 };
 
-/// Installs `module` if module.supported(world) holds and returns true; otherwise logs
-/// "module '<name>' skipped: <reason>" as a warning (engine::log) and returns false.
+/// Thrown by Module::install() when the module cannot run here after all; `what()` is the reason.
+class ModuleUnsupported : public Error {
+ public:
+  using Error::Error;
+};
+
+/// Installs `module` if module.supported(world) holds and its install() does not throw
+/// ModuleUnsupported, and returns true; otherwise logs "module '<name>' skipped: <reason>" as
+/// a warning (engine::log) and returns false.
 bool installModule(Module& module, World& world, Scheduler& scheduler);
 
 }  // namespace engine::ecs

@@ -75,6 +75,8 @@ class FrameRing {
   // GPU scopes of the most recently retired frame (empty until one has retired).
   std::span<const TimedScope> lastTimings() const { return lastTimings_; }
   std::uint64_t lastRetiredFrameIndex() const { return lastRetiredFrame_; }
+  // Frames begun so far: the next frame's index.
+  std::uint64_t framesBegun() const { return nextFrame_; }
   Device& device() { return device_; }
 
  private:

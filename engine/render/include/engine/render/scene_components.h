@@ -22,6 +22,9 @@ glm::dvec3 forwardOf(const Camera& camera);
 glm::dvec3 upOf(const Camera& camera);
 // World -> view with the camera at the origin (camera-relative rendering).
 glm::mat4 viewRotation(const Camera& camera);
+// View -> clip for an image of `aspect` = width / height: reversed-Z, infinite far plane
+// (camera_math.h). Every pass that draws or traces with the camera uses this one.
+glm::mat4 projectionOf(const Camera& camera, float aspect);
 
 // The sun as a directional light.
 struct Sun {

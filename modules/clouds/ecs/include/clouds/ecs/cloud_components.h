@@ -4,6 +4,8 @@
 #include <cstdint>
 #include <filesystem>
 #include <optional>
+#include <string>
+#include <vector>
 
 #include "clouds/clouds.h"
 
@@ -21,12 +23,14 @@ struct CloudQuality {
   clouds::Quality preset = clouds::Quality::Medium;
 };
 
-class CloudRenderer;
-
-// Context singleton set by whoever owns the CloudRenderer (the game's renderer), so the
-// clouds' systems can reach it.
-struct CloudRendererRef {
-  CloudRenderer* renderer = nullptr;
+// Context singleton the clouds module keeps up to date, for HUDs and logs: how the clouds
+// rendered (the module's report of its last frame, the pass times of the latest completed
+// frame, its GPU memory) and the last error, if any. Read-only for everyone else.
+struct CloudStatus {
+  clouds::FrameReport report;
+  std::vector<clouds::PassTiming> passTimings;
+  clouds::MemoryUsage memory;
+  std::string lastError;  // empty when the last frame rendered
 };
 
 }  // namespace clouds::ecs

@@ -1,0 +1,32 @@
+#pragma once
+// The one place the clouds module's per-frame inputs are made: from the world (the camera and
+// its CloudQuality, the sun, the sky light, the cloud layer, the frame time) and what the
+// renderer provides for the frame (command buffer, size, depth). They only read the world
+// (it is non-const because views create missing storages), and need no GPU to be tested.
+#include <vulkan/vulkan.h>
+
+#include <cstdint>
+
+#include "clouds/clouds.h"
+#include "engine/ecs/world.h"
+
+namespace clouds::ecs {
+
+// What the renderer hands the clouds' pass for this frame.
+struct HostFrame {
+  VkCommandBuffer commandBuffer = VK_NULL_HANDLE;
+  VkExtent2D extent{0, 0};
+  VkImageView depthView = VK_NULL_HANDLE;  // none when the scene has no geometry
+  VkImageLayout depthLayout = VK_IMAGE_LAYOUT_DEPTH_READ_ONLY_OPTIMAL;
+  VkImageView weatherView = VK_NULL_HANDLE;  // the layer's painted weather map, if it has one
+  std::uint64_t frameIndex = 0;
+};
+
+// The settings the camera renders the layer with: the layer's look under the camera's
+// CloudQuality preset, or the layer's settings as they are without one.
+clouds::Settings cloudSettings(engine::ecs::World& world);
+
+// This frame's inputs. The module remembers the previous camera itself.
+clouds::FrameInputs cloudFrameInputs(engine::ecs::World& world, const HostFrame& host);
+
+}  // namespace clouds::ecs

@@ -1,0 +1,190 @@
+#include "cloud_feature.h"
+
+#include <algorithm>
+
+#include "clouds/ecs/cloud_components.h"
+#include "clouds/ecs/cloud_frame.h"
+#include "engine/assets/image_io.h"
+#include "engine/core/error.h"
+#include "engine/core/log.h"
+#include "engine/ecs/module.h"
+#include "engine/gfx/upload.h"
+
+namespace clouds::ecs {
+
+using namespace engine::render;
+
+namespace {
+
+constexpr VkFormat kCompositeFormat = VK_FORMAT_R16G16B16A16_SFLOAT;
+
+// A painted weather map (R coverage, G type, B density) from an image file, for the module's
+// FrameInputs::weatherView.
+std::unique_ptr<engine::gfx::Image> loadWeatherMap(engine::gfx::Device& device,
+                                                   const std::filesystem::path& path) {
+  const engine::assets::ImageRgba32f image = engine::assets::readImage(path);
+  std::vector<std::uint8_t> texels(image.pixels.size());
+  for (std::size_t i = 0; i < texels.size(); ++i) {
+    texels[i] = static_cast<std::uint8_t>(std::clamp(image.pixels[i], 0.0f, 1.0f) * 255.0f + 0.5f);
+  }
+  auto gpu = std::make_unique<engine::gfx::Image>(
+      device, engine::gfx::ImageDesc{VK_IMAGE_TYPE_2D, VK_FORMAT_R8G8B8A8_UNORM,
+                                     {image.width, image.height, 1}, 1, 1,
+                                     VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT,
+                                     "painted weather map"});
+  engine::gfx::uploadToImage(device, *gpu, std::as_bytes(std::span(texels)),
+                             engine::gfx::ImageState{VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL,
+                                                     VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
+                                                     VK_ACCESS_2_SHADER_SAMPLED_READ_BIT});
+  return gpu;
+}
+
+bool sameImages(const clouds::Outputs& a, const clouds::Outputs& b) {
+  return a.radiance.image == b.radiance.image && a.depth.image == b.depth.image;
+}
+
+}  // namespace
+
+CloudFeature::CloudFeature(engine::ecs::World& world, const RenderDevice& device,
+                           const CloudLayer& layer)
+    : world_(world), device_(*device.device), framesInFlight_(device.framesInFlight) {
+  if (layer.weatherMap) weatherMap_ = loadWeatherMap(device_, *layer.weatherMap);
+  clouds::CreateInfo info;
+  info.instance = device_.vkInstance();
+  info.physicalDevice = device_.physical();
+  info.device = device_.vk();
+  info.getInstanceProcAddr = vkGetInstanceProcAddr;
+  info.getDeviceProcAddr = vkGetDeviceProcAddr;
+  info.debugUtils = device_.instance().debugUtilsEnabled();
+  info.depthFormat = device.depthFormat;
+  info.compositeColorFormat = kCompositeFormat;
+  info.maxRenderExtent = device.maxExtent;
+  info.maxFramesInFlight = device.framesInFlight;
+  info.reversedZ = true;
+  info.noiseSeed = layer.noiseSeed;
+  info.passTimings = true;  // a few timestamps: where the clouds' time goes, for HUD and logs
+  clouds::Error error;
+  context_ = clouds::Context::create(info, &error);
+  if (!context_) {
+    throw engine::ecs::ModuleUnsupported("the clouds module cannot run on this device: " +
+                                         error.message + " (" + errorCodeName(error.code) + ")");
+  }
+  if (device.hdrFormat != kCompositeFormat) {
+    throw engine::ecs::ModuleUnsupported("the clouds composite needs an RGBA16F scene colour");
+  }
+}
+
+CloudFeature::~CloudFeature() {
+  // The module's objects may still be used by frames in flight.
+  device_.waitIdle();
+}
+
+bool CloudFeature::prepare(VkExtent2D extent, std::uint64_t frameIndex) {
+  auto& status = world_.ctx().get<CloudStatus>();
+  status.report = context_->lastFrameReport();
+  status.memory = context_->memoryUsage();
+  if (frameIndex >= framesInFlight_) {
+    // The slot about to be reused holds the latest completed frame's timestamps.
+    status.passTimings = context_->passTimings(frameIndex - framesInFlight_);
+  }
+  settings_ = cloudSettings(world_);
+  clouds::Error error;
+  if (!context_->prepare(settings_, extent, &error)) reportError(error);
+  const bool outputsChanged = !sameImages(context_->outputs(), imported_);
+  return outputsChanged;
+}
+
+void CloudFeature::finish(std::uint64_t lastFrameIndex) {
+  auto& status = world_.ctx().get<CloudStatus>();
+  status.report = context_->lastFrameReport();
+  status.memory = context_->memoryUsage();
+  status.passTimings = context_->passTimings(lastFrameIndex);
+}
+
+void CloudFeature::reportError(const clouds::Error& error) {
+  world_.ctx().get<CloudStatus>().lastError = error.message;
+  // Settings are validated when a scene loads; reaching this is a bug worth seeing once.
+  if (!errorLogged_) {
+    engine::log::error(std::string("clouds: ") + error.message + " (" + errorCodeName(error.code) +
+                       ")");
+  }
+  errorLogged_ = true;
+}
+
+void CloudFeature::dispatch(VkCommandBuffer cmd, VkExtent2D extent, VkImageView depth,
+                            std::uint64_t frameIndex) {
+  HostFrame host;
+  host.commandBuffer = cmd;
+  host.extent = extent;
+  host.depthView = depth;
+  host.weatherView = weatherMap_ ? weatherMap_->view() : VK_NULL_HANDLE;
+  host.frameIndex = frameIndex;
+  clouds::Error error;
+  dispatched_ = context_->dispatch(cloudFrameInputs(world_, host), settings_, &error);
+  if (dispatched_) {
+    world_.ctx().get<CloudStatus>().lastError.clear();
+  } else {
+    reportError(error);
+  }
+}
+
+void CloudFeature::composite(VkCommandBuffer cmd, VkImageView color, VkExtent2D extent) {
+  if (!dispatched_) return;  // no clouds this frame: the scene colour stays as it is
+  clouds::Error error;
+  if (!context_->composite(cmd, color, extent, &error)) reportError(error);
+}
+
+SceneTextures CloudFeature::addPasses(FrameGraph& graph, const SceneTextures& scene) {
+  imported_ = context_->outputs();
+  const TextureDesc& hdrDesc = graph.textureDesc(scene.hdr);
+  // The module keeps its outputs in GENERAL between frames and synchronises its own writes;
+  // the graph sees them as imported storage images.
+  const ResourceState general{VK_IMAGE_LAYOUT_GENERAL, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
+                              VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT};
+  auto import = [&](const char* name, const clouds::OutputImage& image) {
+    ImportedTexture texture;
+    texture.image = image.image;
+    texture.view = image.view;
+    texture.desc.extent = hdrDesc.extent;
+    texture.desc.format = image.format;
+    texture.initial = general;
+    texture.final = general;
+    return graph.importTexture(name, texture);
+  };
+  const TextureHandle radiance = import("cloud radiance", imported_.radiance);
+  const TextureHandle depth = import("cloud depth", imported_.depth);
+
+  struct MarchData {
+    TextureHandle sceneDepth, radiance, depth;
+  };
+  const MarchData& march = graph.addPass<MarchData>(
+      "clouds", PassType::Compute,
+      [&](PassBuilder& builder, MarchData& d) {
+        if (scene.depth.valid()) d.sceneDepth = builder.read(scene.depth, Access::SampledRead);
+        d.radiance = builder.write(radiance, Access::StorageWrite);
+        d.depth = builder.write(depth, Access::StorageWrite);
+      },
+      [this](const MarchData& d, PassContext& context) {
+        const VkExtent3D extent = context.extent(d.radiance);
+        const VkImageView sceneDepth =
+            d.sceneDepth.valid() ? context.view(d.sceneDepth) : VK_NULL_HANDLE;
+        dispatch(context.cmd(), {extent.width, extent.height}, sceneDepth, context.frameIndex());
+      });
+
+  struct CompositeData {
+    TextureHandle hdr, radiance;
+  };
+  const CompositeData& composited = graph.addPass<CompositeData>(
+      "clouds composite", PassType::Compute,
+      [&](PassBuilder& builder, CompositeData& d) {
+        d.radiance = builder.read(march.radiance, Access::StorageRead);
+        d.hdr = builder.write(scene.hdr, Access::StorageWrite);
+      },
+      [this](const CompositeData& d, PassContext& context) {
+        const VkExtent3D extent = context.extent(d.hdr);
+        composite(context.cmd(), context.view(d.hdr), {extent.width, extent.height});
+      });
+  return SceneTextures{composited.hdr, scene.depth};
+}
+
+}  // namespace clouds::ecs

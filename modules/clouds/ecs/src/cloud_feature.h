@@ -1,0 +1,52 @@
+#pragma once
+// The clouds module as a render feature of the engine: it owns a clouds::Context on the
+// engine's device (and the layer's painted weather map, when it has one), prepares it outside
+// the frame, and adds two passes to the renderer's frame graph:
+//   "clouds"            reads the scene depth and records Context::dispatch with the inputs
+//                       built from the world at that moment (cloud_frame.h);
+//   "clouds composite"  applies the result over the scene colour (colour * T + radiance).
+// The module's outputs are imported into the graph so later passes can read them.
+#include <memory>
+#include <string>
+
+#include "clouds/clouds.h"
+#include "engine/ecs/world.h"
+#include "engine/gfx/resources.h"
+#include "engine/render/render_feature.h"
+
+namespace clouds::ecs {
+
+struct CloudLayer;
+
+class CloudFeature final : public engine::render::RenderFeature {
+ public:
+  // Throws engine::ecs::ModuleUnsupported when the module cannot be created on this device,
+  // engine::Error when the painted weather map cannot be read.
+  CloudFeature(engine::ecs::World& world, const engine::render::RenderDevice& device,
+               const CloudLayer& layer);
+  ~CloudFeature() override;
+
+  const char* name() const override { return "clouds"; }
+  bool prepare(VkExtent2D extent, std::uint64_t frameIndex) override;
+  engine::render::SceneTextures addPasses(engine::render::FrameGraph& graph,
+                                          const engine::render::SceneTextures& scene) override;
+  void finish(std::uint64_t lastFrameIndex) override;
+
+ private:
+  void dispatch(VkCommandBuffer cmd, VkExtent2D extent, VkImageView depth,
+                std::uint64_t frameIndex);
+  void composite(VkCommandBuffer cmd, VkImageView color, VkExtent2D extent);
+  void reportError(const clouds::Error& error);
+
+  engine::ecs::World& world_;
+  engine::gfx::Device& device_;
+  std::uint32_t framesInFlight_;
+  std::unique_ptr<engine::gfx::Image> weatherMap_;  // the layer's painted map, if any
+  std::unique_ptr<clouds::Context> context_;
+  clouds::Settings settings_;  // this frame's, decided in prepare()
+  clouds::Outputs imported_;   // the outputs the graph imported
+  bool dispatched_ = false;    // this frame's dispatch succeeded
+  bool errorLogged_ = false;
+};
+
+}  // namespace clouds::ecs

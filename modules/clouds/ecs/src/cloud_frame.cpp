@@ -1,0 +1,55 @@
+#include "clouds/ecs/cloud_frame.h"
+
+#include "clouds/ecs/cloud_components.h"
+#include "engine/ecs/frame_time.h"
+#include "engine/render/scene_components.h"
+
+namespace clouds::ecs {
+
+using namespace engine;
+
+clouds::Settings cloudSettings(engine::ecs::World& world) {
+  clouds::Settings layerSettings;
+  world.view<const CloudLayer>().each([&](const CloudLayer& layer) {
+    layerSettings = layer.settings;
+  });
+  clouds::Settings settings = layerSettings;
+  world.view<const render::Camera>().each([&](engine::ecs::Entity entity, const render::Camera&) {
+    if (const auto* quality = world.tryGet<const CloudQuality>(entity)) {
+      settings = clouds::settingsFor(quality->preset, layerSettings);
+    }
+  });
+  return settings;
+}
+
+clouds::FrameInputs cloudFrameInputs(engine::ecs::World& world, const HostFrame& host) {
+  clouds::FrameInputs in;
+  in.commandBuffer = host.commandBuffer;
+  in.renderExtent = host.extent;
+  in.depthView = host.depthView;
+  in.depthLayout = host.depthLayout;
+  in.weatherView = host.weatherView;
+  in.weatherLayout = VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL;
+  in.frameIndex = host.frameIndex;
+  const float aspect = float(host.extent.width) / float(std::max(host.extent.height, 1u));
+  world.view<const render::Camera>().each([&](const render::Camera& camera) {
+    in.view = render::viewRotation(camera);
+    in.projection = render::projectionOf(camera, aspect);
+    in.cameraPosition = camera.position;
+    in.reset = camera.cut;
+  });
+  world.view<const render::Sun>().each([&](const render::Sun& sun) {
+    in.sunDirection = glm::vec3(sun.direction);
+    in.sunIlluminance = sun.illuminance;
+  });
+  if (const auto* sky = world.ctx().tryGet<render::SkyLight>()) {
+    in.ambientTop = sky->zenith;
+    in.ambientBottom = glm::mix(sky->horizon, sky->ground, 0.5f);
+  }
+  if (const auto* time = world.ctx().tryGet<engine::ecs::FrameTime>()) {
+    in.timeSeconds = time->elapsedSeconds;
+  }
+  return in;
+}
+
+}  // namespace clouds::ecs

@@ -1,0 +1,317 @@
+// clouds::Context::Impl: creation, prepare() and the flow of a frame (order in
+// context_impl.h). The passes themselves are recorded in record_weather.cpp and
+// record_trace.cpp.
+#include "context_impl.h"
+
+#include "cloud_density.h"
+#include "pipeline_variants.h"
+
+namespace clouds {
+
+using detail::Program;
+
+namespace {
+
+// The storage formats the module's images use (module_images.cpp, shaders' format qualifiers).
+constexpr VkFormat kStorageFormats[] = {
+    VK_FORMAT_R8G8B8A8_UNORM, VK_FORMAT_R16G16B16A16_SFLOAT, VK_FORMAT_R32G32_SFLOAT,
+    VK_FORMAT_R32_SFLOAT, VK_FORMAT_R32G32B32A32_UINT};
+
+const detail::DeviceContext& checkedDevice(const detail::DeviceContext& device) {
+  for (VkFormat format : kStorageFormats) {
+    if (!device.supportsStorage(format)) {
+      throw detail::ModuleError(ErrorCode::UnsupportedDevice,
+                                "clouds: the device cannot use format " +
+                                    std::to_string(static_cast<int>(format)) +
+                                    " as a storage image (is shaderStorageImageExtendedFormats "
+                                    "enabled?)");
+    }
+  }
+  return device;
+}
+
+detail::UniqueSampler makeSampler(const detail::DeviceContext& device, VkFilter filter,
+                                  VkSamplerAddressMode address, const char* name) {
+  VkSamplerCreateInfo info{VK_STRUCTURE_TYPE_SAMPLER_CREATE_INFO};
+  info.magFilter = filter;
+  info.minFilter = filter;
+  info.mipmapMode = VK_SAMPLER_MIPMAP_MODE_NEAREST;
+  info.addressModeU = address;
+  info.addressModeV = VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE;
+  info.addressModeW = VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE;
+  return device.createSampler(info, name);
+}
+
+detail::UniqueDescriptorPool makePool(const detail::DeviceContext& device,
+                                      std::uint32_t frames) {
+  // Fixed sets: 3 noise generators, 2 weather generators, 3 maxima. Per slot: 7 sets.
+  const VkDescriptorPoolSize sizes[] = {
+      {VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, 16 + 32 * frames},
+      {VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 4 + 8 * frames},
+      {VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 8 * frames},
+      {VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 4 * frames},
+  };
+  VkDescriptorPoolCreateInfo info{VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO};
+  info.maxSets = 8 + 8 * frames;
+  info.poolSizeCount = static_cast<std::uint32_t>(std::size(sizes));
+  info.pPoolSizes = sizes;
+  return device.createDescriptorPool(info, "descriptor pool");
+}
+
+}  // namespace
+
+// Rows of the next period's weather map generated per frame: 1/16 of the map, ~3 ms on lavapipe,
+// so a period of 16 frames or more has its map ready when it starts.
+constexpr std::uint32_t kWeatherRowsAhead =
+    static_cast<std::uint32_t>(shader::kWeatherMapSize) / 16;
+
+Context::Impl::Impl(const CreateInfo& info, const detail::VulkanFunctions& functions)
+    : info_(info),
+      device_(info, functions),
+      programs_(checkedDevice(device_), info.compositeColorFormat != VK_FORMAT_UNDEFINED),
+      images_(device_),
+      nearestSampler_(makeSampler(device_, VK_FILTER_NEAREST,
+                                  VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE, "nearest sampler")),
+      linearSampler_(makeSampler(device_, VK_FILTER_LINEAR, VK_SAMPLER_ADDRESS_MODE_REPEAT,
+                                 "linear sampler")),
+      pool_(makePool(device_, info.maxFramesInFlight)),
+      weatherSchedule_(static_cast<std::uint32_t>(shader::kWeatherMapSize), kWeatherRowsAhead) {
+  if (info.passTimings) {
+    timer_ = std::make_unique<detail::PassTimer>(device_, info.maxFramesInFlight);
+  }
+  writeFixedSets();
+  slots_.resize(info.maxFramesInFlight);
+  for (std::uint32_t i = 0; i < info.maxFramesInFlight; ++i) {
+    Slot& slot = slots_[i];
+    slot.uniforms = detail::OwnedBuffer(
+        device_, sizeof(shader::CloudUniforms),
+        VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT | VK_BUFFER_USAGE_STORAGE_BUFFER_BIT |
+            VK_BUFFER_USAGE_TRANSFER_DST_BIT | VK_BUFFER_USAGE_TRANSFER_SRC_BIT,
+        "uniforms " + std::to_string(i));
+    slot.counters =
+        detail::OwnedBuffer(device_, shader::kCounterCount * sizeof(std::uint32_t),
+                            VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT,
+                            "work counters " + std::to_string(i), /*hostVisible=*/true);
+    slot.sceneDistance = allocateSet(Program::SceneDistance);
+    slot.march = allocateSet(Program::March);
+    slot.reconstruct = allocateSet(Program::Reconstruct);
+    slot.upsample = allocateSet(Program::Upsample);
+    if (programs_.has(Program::Composite)) slot.composite = allocateSet(Program::Composite);
+    slot.skyAmbient = allocateSet(Program::SkyAmbient);
+    slot.weatherResample = allocateSet(Program::WeatherResample);
+  }
+}
+
+VkDescriptorSet Context::Impl::allocateSet(Program program) {
+  const VkDescriptorSetLayout layout = programs_[program].setLayout();
+  VkDescriptorSetAllocateInfo info{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_ALLOCATE_INFO};
+  info.descriptorPool = pool_.get();
+  info.descriptorSetCount = 1;
+  info.pSetLayouts = &layout;
+  VkDescriptorSet set = VK_NULL_HANDLE;
+  detail::check(device_.fn().vkAllocateDescriptorSets(device_.device(), &info, &set),
+                "vkAllocateDescriptorSets");
+  return set;
+}
+
+void Context::Impl::writeFixedSets() {
+  using detail::SetWriter;
+  const detail::ModuleImages& im = images_;
+  shapeSet_ = allocateSet(Program::ShapeNoise);
+  detailSet_ = allocateSet(Program::DetailNoise);
+  curlSet_ = allocateSet(Program::CurlNoise);
+  SetWriter(device_, shapeSet_).storageImage(shader::kGeneratorTarget, im.shapeNoise.view()).commit();
+  SetWriter(device_, detailSet_)
+      .storageImage(shader::kGeneratorTarget, im.detailNoise.view())
+      .commit();
+  SetWriter(device_, curlSet_).storageImage(shader::kGeneratorTarget, im.curlNoise.view()).commit();
+  for (std::uint32_t i = 0; i < 2; ++i) {
+    weatherSets_[i] = allocateSet(Program::Weather);
+    SetWriter(device_, weatherSets_[i])
+        .storageImage(shader::kGeneratorTarget, im.weatherMaps[i].view())
+        .commit();
+    weatherMaxFineSets_[i] = allocateSet(Program::WeatherMaxima);
+    SetWriter(device_, weatherMaxFineSets_[i])
+        .storageImage(shader::kMaximaSource, im.weatherMaps[i].view())
+        .storageImage(shader::kMaximaTarget, im.weatherMaxFine.view())
+        .commit();
+  }
+  weatherMaxCoarseSet_ = allocateSet(Program::WeatherMaxima);
+  SetWriter(device_, weatherMaxCoarseSet_)
+      .storageImage(shader::kMaximaSource, im.weatherMaxFine.view())
+      .storageImage(shader::kMaximaTarget, im.weatherMaxCoarse.view())
+      .commit();
+}
+
+namespace {
+
+detail::ImageSizes imageSizesFor(const Settings& settings, VkExtent2D renderExtent) {
+  return {renderExtent, detail::traceExtentFor(renderExtent, settings.traceScale),
+          upsamplesTemporally(settings)};
+}
+
+}  // namespace
+
+void Context::Impl::prepare(const Settings& settings, VkExtent2D renderExtent) {
+  for (const auto& [program, key] : detail::variantsFor(settings, info_.workCounters)) {
+    programs_[program].prepare(key);
+  }
+  const detail::ImageSizes sizes = imageSizesFor(settings, renderExtent);
+  if (!images_.fit(sizes) && images_.grow(sizes, lastFrameIndex_)) {
+    temporal_.forget("images resized");
+  }
+  // Images retired before any frame used them can go now.
+  images_.releaseRetired(lastFrameIndex_.value_or(0), info_.maxFramesInFlight);
+}
+
+std::string Context::Impl::unprepared(const Settings& settings, VkExtent2D renderExtent) const {
+  for (const auto& [program, key] : detail::variantsFor(settings, info_.workCounters)) {
+    if (programs_[program].find(key) == VK_NULL_HANDLE) {
+      std::string variant = programs_[program].name();
+      for (std::uint32_t i = 0; i < key.count; ++i) variant += " " + std::to_string(key.values[i]);
+      return "the pipeline variant \"" + variant + "\" these settings use";
+    }
+  }
+  if (!images_.fit(imageSizesFor(settings, renderExtent))) {
+    return "images for a " + std::to_string(renderExtent.width) + "x" +
+           std::to_string(renderExtent.height) + " render extent at these settings";
+  }
+  return {};
+}
+
+void Context::Impl::beginPass(VkCommandBuffer cmd, detail::Pass pass, const char* label) {
+  device_.beginLabel(cmd, label);
+  if (timer_) timer_->begin(cmd, pass);
+}
+
+void Context::Impl::endPass(VkCommandBuffer cmd, detail::Pass pass) {
+  if (timer_) timer_->end(cmd, pass);
+  device_.endLabel(cmd);
+}
+
+void Context::Impl::bindAndDispatch(VkCommandBuffer cmd, Program program, VkPipeline pipeline,
+                                    VkDescriptorSet set, std::uint32_t width,
+                                    std::uint32_t height) {
+  const auto& fn = device_.fn();
+  fn.vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pipeline);
+  fn.vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, programs_[program].layout(), 0,
+                             1, &set, 0, nullptr);
+  const std::uint32_t group = shader::kWorkgroupSize2D;
+  fn.vkCmdDispatch(cmd, (width + group - 1) / group, (height + group - 1) / group, 1);
+}
+
+namespace {
+
+// Coverage = weather texel + 2 coverage - 1 (cloud_density.h) is at most 2 coverage for the
+// fullest texel: with no coverage, or no extinction, no texel can hold cloud.
+bool skyIsClear(const Settings& s) {
+  const float fullestCoverage = shader::layerCoverage(1.0f, s.coverage);
+  return fullestCoverage <= 0.0f || s.densityMultiplier <= 0.0f || s.extinctionPerMetre <= 0.0f;
+}
+
+}  // namespace
+
+void Context::Impl::dispatch(const FrameInputs& inputs, const Settings& settings) {
+  const VkCommandBuffer cmd = inputs.commandBuffer;
+  images_.releaseRetired(inputs.frameIndex, info_.maxFramesInFlight);
+  const auto slotIndex = static_cast<std::uint32_t>(inputs.frameIndex % slots_.size());
+  Slot& slot = slots_[slotIndex];
+  device_.beginLabel(cmd, "clouds");
+  if (timer_) timer_->beginFrame(cmd, slotIndex);
+  images_.recordInitialLayouts(cmd);
+  if (!noiseGenerated_) recordNoise(cmd);
+  recordWeather(cmd, inputs, settings, slot);
+
+  const VkExtent2D traceExtent = detail::traceExtentFor(inputs.renderExtent, settings.traceScale);
+  const detail::TemporalFrame temporal = temporal_.plan(inputs, settings, traceExtent);
+  detail::UniformContext uniformContext;
+  uniformContext.reversedZ = info_.reversedZ;
+  uniformContext.hasDepth = inputs.depthView != VK_NULL_HANDLE;
+  uniformContext.traceExtent = traceExtent;
+  uniformContext.fullExtent = inputs.renderExtent;
+  uniformContext.temporalIndex = temporal.temporalIndex;
+  uniformContext.tileSize = temporal.tileSize;
+  uniformContext.phase = temporal.phase;
+  uniformContext.useOutputHistory = temporal.useOutputHistory;
+  uniformContext.cameraDelta = temporal.cameraDelta;
+  uniformContext.deltaSeconds = temporal.deltaSeconds;
+  uniformContext.previousView = temporal.previousView;
+  uniformContext.previousProjection = temporal.previousProjection;
+  lastUniforms_ = detail::buildUniforms(inputs, settings, uniformContext);
+  lastUniforms_.flags |= debugFlags_;
+  if (skyIsClear(settings)) {
+    // Nothing can be marched: the outputs are the empty sky, and the next frame starts afresh.
+    recordClearSky(cmd, slot);
+    temporal_.forget("after a clear sky");
+    report_ = FrameReport{{0, 0}, 0, false, temporal.insideLayer, "clear sky: nothing to march"};
+  } else {
+    recordUniforms(cmd, slot, lastUniforms_);
+    if (inputs.skyView != VK_NULL_HANDLE) recordSkyAmbient(cmd, inputs, slot);
+    recordTrace(cmd, inputs, settings, temporal, traceExtent, slot);
+    temporal_.commit(temporal, inputs, settings, traceExtent);
+    report_ = FrameReport{traceExtent, temporal.tileSize, temporal.useHistory,
+                          temporal.insideLayer, temporal.resetReason};
+  }
+  device_.endLabel(cmd);
+  lastSlot_ = slotIndex;
+  lastExtent_ = inputs.renderExtent;
+  lastFrameIndex_ = inputs.frameIndex;
+}
+
+void Context::Impl::composite(VkCommandBuffer cmd, VkImageView color, VkExtent2D extent) {
+  const auto& fn = device_.fn();
+  Slot& slot = slots_[lastSlot_];
+  detail::SetWriter(device_, slot.composite)
+      .storageImage(shader::kCompositeHostColor, color)
+      .storageImage(shader::kCompositeClouds, images_.radiance.view())
+      .commit();
+  device_.beginLabel(cmd, "clouds: composite");
+  const detail::ComputeProgram& program = programs_[Program::Composite];
+  fn.vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, program.find());
+  fn.vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, program.layout(), 0, 1,
+                             &slot.composite, 0, nullptr);
+  shader::CompositeConstants constants{};
+  constants.extent = glm::uvec2(extent.width, extent.height);
+  fn.vkCmdPushConstants(cmd, program.layout(), VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof(constants),
+                        &constants);
+  const std::uint32_t group = shader::kWorkgroupSize2D;
+  fn.vkCmdDispatch(cmd, (extent.width + group - 1) / group, (extent.height + group - 1) / group,
+                   1);
+  device_.endLabel(cmd);
+}
+
+Outputs Context::Impl::outputs() const {
+  Outputs out;
+  const detail::OwnedImage& radiance = images_.radiance;
+  const detail::OwnedImage& depth = images_.depth;
+  out.radiance = {radiance.image(), radiance.view(), radiance.format()};
+  out.depth = {depth.image(), depth.view(), depth.format()};
+  out.extent = lastExtent_;
+  return out;
+}
+
+MemoryUsage Context::Impl::memoryUsage() const {
+  MemoryUsage usage = images_.memoryUsage();
+  for (const Slot& slot : slots_) usage.bufferBytes += slot.uniforms.bytes() + slot.counters.bytes();
+  return usage;
+}
+
+WorkCounters Context::Impl::workCounters(std::uint64_t frameIndex) const {
+  const Slot& slot = slots_[frameIndex % slots_.size()];
+  const auto* values = static_cast<const std::uint32_t*>(slot.counters.mapped());
+  WorkCounters counters;
+  if (values == nullptr || !info_.workCounters) return counters;
+  counters.viewSamples = values[shader::kCounterViewSamples];
+  counters.lightSamples = values[shader::kCounterLightSamples];
+  counters.tracedPixels = values[shader::kCounterTracedPixels];
+  counters.earlyExits = values[shader::kCounterEarlyExits];
+  counters.skippedCells = values[shader::kCounterSkippedCells];
+  return counters;
+}
+
+std::vector<PassTiming> Context::Impl::passTimings(std::uint64_t frameIndex) const {
+  if (!timer_) return {};
+  return timer_->read(static_cast<std::uint32_t>(frameIndex % slots_.size()));
+}
+
+}  // namespace clouds

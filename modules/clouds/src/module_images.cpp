@@ -1,0 +1,159 @@
+#include "module_images.h"
+
+#include <algorithm>
+
+#include "cloud_types.h"
+
+namespace clouds::detail {
+namespace {
+
+constexpr VkFormat kNoiseFormat = VK_FORMAT_R8G8B8A8_UNORM;
+constexpr VkFormat kRadianceFormat = VK_FORMAT_R16G16B16A16_SFLOAT;
+constexpr VkFormat kDepthOutputFormat = VK_FORMAT_R32G32_SFLOAT;
+// Trace-resolution samples: radiance, transmittance and both depths packed in one texel
+// (cloud_temporal.h). The output-resolution history packs the same plus a sample count.
+constexpr VkFormat kSampleFormat = VK_FORMAT_R32G32B32A32_UINT;
+// Every image can be read back (the module's tests and tools); outputs also take clears (a
+// provably clear sky is cleared, not marched) and histories transfers in (tests poison them).
+constexpr VkImageUsageFlags kStorage = VK_IMAGE_USAGE_STORAGE_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT;
+constexpr VkImageUsageFlags kOutput =
+    kStorage | VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT;
+constexpr VkImageUsageFlags kHistory = kStorage | VK_IMAGE_USAGE_TRANSFER_DST_BIT;
+
+VkExtent3D extent3(VkExtent2D e) { return {e.width, e.height, 1}; }
+
+bool holds(const OwnedImage& image, VkExtent2D size) {
+  return image && image.extent().width >= size.width && image.extent().height >= size.height;
+}
+
+// The larger of an image's current size and `wanted`, per axis: images only grow.
+VkExtent2D grown(const OwnedImage& image, VkExtent2D wanted) {
+  if (!image) return wanted;
+  return {std::max(image.extent().width, wanted.width),
+          std::max(image.extent().height, wanted.height)};
+}
+
+}  // namespace
+
+ModuleImages::ModuleImages(const DeviceContext& device) : device_(device) {
+  const auto s = static_cast<std::uint32_t>(shader::kShapeNoiseSize);
+  const auto d = static_cast<std::uint32_t>(shader::kDetailNoiseSize);
+  const auto c = static_cast<std::uint32_t>(shader::kCurlNoiseSize);
+  const auto w = static_cast<std::uint32_t>(shader::kWeatherMapSize);
+  const auto fine = static_cast<std::uint32_t>(shader::kWeatherMaxFineSize);
+  const auto coarse = static_cast<std::uint32_t>(shader::kWeatherMaxCoarseSize);
+  shapeNoise = make(VK_IMAGE_TYPE_3D, kNoiseFormat, {s, s, s}, kStorage, "shape noise");
+  detailNoise = make(VK_IMAGE_TYPE_3D, kNoiseFormat, {d, d, d}, kStorage, "detail noise");
+  curlNoise = make(VK_IMAGE_TYPE_2D, kNoiseFormat, {c, c, 1}, kStorage, "curl noise");
+  for (std::uint32_t i = 0; i < 2; ++i) {
+    weatherMaps[i] = make(VK_IMAGE_TYPE_2D, kNoiseFormat, {w, w, 1}, kStorage,
+                          "weather map " + std::to_string(i));
+  }
+  weatherMaxFine =
+      make(VK_IMAGE_TYPE_2D, kNoiseFormat, {fine, fine, 1}, kStorage, "weather maxima (fine)");
+  weatherMaxCoarse = make(VK_IMAGE_TYPE_2D, kNoiseFormat, {coarse, coarse, 1}, kStorage,
+                          "weather maxima (coarse)");
+  depthPlaceholder = make(VK_IMAGE_TYPE_2D, VK_FORMAT_R32_SFLOAT, {1, 1, 1},
+                          VK_IMAGE_USAGE_SAMPLED_BIT, "no host depth",
+                          VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL);
+  samplesPlaceholder =
+      make(VK_IMAGE_TYPE_2D, kSampleFormat, {1, 1, 1}, kStorage, "no output history");
+}
+
+OwnedImage ModuleImages::make(VkImageType type, VkFormat format, VkExtent3D extent,
+                              VkImageUsageFlags usage, const std::string& name,
+                              VkImageLayout layout) {
+  OwnedImage image(device_, type, format, extent, usage, name);
+  pendingLayouts_.push_back({image.image(), layout});
+  return image;
+}
+
+void ModuleImages::replace(OwnedImage& slot, OwnedImage replacement,
+                           std::optional<std::uint64_t> lastUse) {
+  if (slot) {
+    // Its first transition may not have been recorded yet: then nothing will record it.
+    const VkImage old = slot.image();
+    std::erase_if(pendingLayouts_, [old](const PendingLayout& p) { return p.image == old; });
+    retired_.push_back({std::move(slot), lastUse});
+  }
+  slot = std::move(replacement);
+}
+
+bool ModuleImages::fit(const ImageSizes& sizes) const {
+  return holds(radiance, sizes.output) && holds(depth, sizes.output) &&
+         holds(sceneDistance, sizes.trace) && holds(traceSamples, sizes.trace) &&
+         holds(history[0], sizes.trace) && holds(history[1], sizes.trace) &&
+         (!sizes.upsampling ||
+          (holds(outputHistory[0], sizes.output) && holds(outputHistory[1], sizes.output)));
+}
+
+bool ModuleImages::grow(const ImageSizes& sizes, std::optional<std::uint64_t> lastUse) {
+  bool historyLost = false;
+  if (!holds(radiance, sizes.output) || !holds(depth, sizes.output)) {
+    const VkExtent3D e = extent3(grown(radiance, sizes.output));
+    replace(radiance, make(VK_IMAGE_TYPE_2D, kRadianceFormat, e, kOutput, "radiance"), lastUse);
+    replace(depth, make(VK_IMAGE_TYPE_2D, kDepthOutputFormat, e, kOutput, "cloud depth"), lastUse);
+  }
+  const bool traceFits = holds(sceneDistance, sizes.trace) && holds(traceSamples, sizes.trace) &&
+                         holds(history[0], sizes.trace) && holds(history[1], sizes.trace);
+  if (!traceFits) {
+    const VkExtent3D e = extent3(grown(sceneDistance, sizes.trace));
+    replace(sceneDistance,
+            make(VK_IMAGE_TYPE_2D, VK_FORMAT_R32_SFLOAT, e, kStorage, "scene distance (trace)"),
+            lastUse);
+    replace(traceSamples,
+            make(VK_IMAGE_TYPE_2D, kSampleFormat, e, kStorage, "marched samples (trace)"), lastUse);
+    for (std::uint32_t i = 0; i < 2; ++i) {
+      replace(history[i],
+              make(VK_IMAGE_TYPE_2D, kSampleFormat, e, kHistory, "history " + std::to_string(i)),
+              lastUse);
+    }
+    historyLost = true;
+  }
+  const bool upsamplingFits =
+      holds(outputHistory[0], sizes.output) && holds(outputHistory[1], sizes.output);
+  if (sizes.upsampling && !upsamplingFits) {
+    const VkExtent3D e = extent3(grown(outputHistory[0], sizes.output));
+    for (std::uint32_t i = 0; i < 2; ++i) {
+      replace(outputHistory[i],
+              make(VK_IMAGE_TYPE_2D, kSampleFormat, e, kHistory,
+                   "output history " + std::to_string(i)),
+              lastUse);
+    }
+    historyLost = true;
+  }
+  return historyLost;
+}
+
+void ModuleImages::releaseRetired(std::uint64_t frameIndex, std::uint32_t framesInFlight) {
+  std::erase_if(retired_, [&](const Retired& r) {
+    return !r.lastUse || frameIndex >= *r.lastUse + framesInFlight;
+  });
+}
+
+void ModuleImages::recordInitialLayouts(VkCommandBuffer cmd) {
+  for (const PendingLayout& p : pendingLayouts_) {
+    const bool sampled = p.layout == VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL;
+    barrier(device_, cmd, p.image, VK_IMAGE_LAYOUT_UNDEFINED, p.layout, VK_PIPELINE_STAGE_2_NONE,
+            VK_ACCESS_2_NONE, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
+            sampled ? VK_ACCESS_2_SHADER_SAMPLED_READ_BIT
+                    : VK_ACCESS_2_SHADER_STORAGE_READ_BIT | VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT);
+  }
+  pendingLayouts_.clear();
+}
+
+MemoryUsage ModuleImages::memoryUsage() const {
+  MemoryUsage m;
+  m.noiseBytes = shapeNoise.bytes() + detailNoise.bytes() + curlNoise.bytes();
+  m.weatherBytes = weatherMaps[0].bytes() + weatherMaps[1].bytes() + weatherMaxFine.bytes() +
+                   weatherMaxCoarse.bytes();
+  m.outputBytes = radiance.bytes() + depth.bytes();
+  m.traceBytes = sceneDistance.bytes() + traceSamples.bytes() + history[0].bytes() +
+                 history[1].bytes();
+  m.upsamplingBytes = outputHistory[0].bytes() + outputHistory[1].bytes();
+  m.bufferBytes = depthPlaceholder.bytes() + samplesPlaceholder.bytes();
+  for (const Retired& r : retired_) m.retiredBytes += r.image.bytes();
+  return m;
+}
+
+}  // namespace clouds::detail

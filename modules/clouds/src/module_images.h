@@ -1,0 +1,80 @@
+#pragma once
+// The images the module owns, and how they are sized.
+//
+// Fixed images (noise, weather maps and their maxima, placeholders) are made at creation.
+// The rest scale with the render size and are made by prepare(): the outputs at the render
+// extent, the trace images (scene distance, this frame's samples, two histories) at the trace
+// extent, and the two output-resolution histories only for settings that upsample temporally.
+// They only grow, to the largest size asked for on each axis; an image they replace is kept
+// on a retire list until the frames in flight that may still use it have completed.
+//
+// Every new image starts in VK_IMAGE_LAYOUT_UNDEFINED; the next dispatch records its
+// transition (recordInitialLayouts) before anything reads it.
+#include <array>
+#include <cstdint>
+#include <optional>
+#include <vector>
+
+#include "clouds/clouds.h"
+#include "owned_resources.h"
+
+namespace clouds::detail {
+
+struct ImageSizes {
+  VkExtent2D output{0, 0};
+  VkExtent2D trace{0, 0};
+  bool upsampling = false;  // the output-resolution histories of temporal upsampling
+};
+
+class ModuleImages {
+ public:
+  explicit ModuleImages(const DeviceContext& device);
+
+  // Whether the images hold `sizes` already.
+  bool fit(const ImageSizes& sizes) const;
+  // Grows what does not fit `sizes`. `lastUse`: the last frame recorded with the current
+  // images (none if no frame was). Returns true when a history image was replaced (its
+  // contents are gone).
+  bool grow(const ImageSizes& sizes, std::optional<std::uint64_t> lastUse);
+  // Frees retired images that no frame in flight can use any more when `frameIndex` records.
+  void releaseRetired(std::uint64_t frameIndex, std::uint32_t framesInFlight);
+  // Records the first layout transition of every image made since the last call.
+  void recordInitialLayouts(VkCommandBuffer cmd);
+  MemoryUsage memoryUsage() const;
+
+  // Fixed.
+  OwnedImage shapeNoise;
+  OwnedImage detailNoise;
+  OwnedImage curlNoise;
+  std::array<OwnedImage, 2> weatherMaps;  // current and spare (weather_schedule.h)
+  OwnedImage weatherMaxFine;
+  OwnedImage weatherMaxCoarse;
+  OwnedImage depthPlaceholder;    // 1 x 1 sampled R32F: no host depth
+  OwnedImage samplesPlaceholder;  // 1 x 1 storage RGBA32UI: no output history
+  // Sized by grow().
+  OwnedImage radiance;  // outputs, output resolution
+  OwnedImage depth;
+  OwnedImage sceneDistance;              // trace resolution, R32F
+  OwnedImage traceSamples;               // this frame's marched pixels (packed samples)
+  std::array<OwnedImage, 2> history;     // reconstructed frames, ping-pong
+  std::array<OwnedImage, 2> outputHistory;  // temporal upsampling's own samples, ping-pong
+
+ private:
+  struct Retired {
+    OwnedImage image;
+    std::optional<std::uint64_t> lastUse;
+  };
+  struct PendingLayout {
+    VkImage image;
+    VkImageLayout layout;
+  };
+  OwnedImage make(VkImageType type, VkFormat format, VkExtent3D extent, VkImageUsageFlags usage,
+                  const std::string& name, VkImageLayout layout = VK_IMAGE_LAYOUT_GENERAL);
+  void replace(OwnedImage& slot, OwnedImage replacement, std::optional<std::uint64_t> lastUse);
+
+  const DeviceContext& device_;
+  std::vector<Retired> retired_;
+  std::vector<PendingLayout> pendingLayouts_;
+};
+
+}  // namespace clouds::detail

@@ -1,0 +1,55 @@
+#include "pipeline_variants.h"
+
+#include "cloud_types.h"
+#include "uniforms.h"
+
+namespace clouds::detail {
+
+SpecializationKey marchKey(const Settings& settings, bool workCounters) {
+  const MarchVariant v = marchVariant(settings);
+  SpecializationKey key;
+  key.values[shader::kSpecJitter] = v.jitter;
+  key.values[shader::kSpecDetail] = v.detail;
+  key.values[shader::kSpecCheapSampling] = v.cheapSampling;
+  key.values[shader::kSpecMultipleScattering] = v.multipleScattering;
+  key.values[shader::kSpecLightSteps] = v.lightSteps;
+  key.values[shader::kSpecCounters] = workCounters ? 1u : 0u;
+  key.values[shader::kSpecEmptySpace] = v.emptySpace;
+  key.count = shader::kMarchSpecCount;
+  return key;
+}
+
+SpecializationKey reconstructKey(std::uint32_t history) {
+  SpecializationKey key;
+  key.values[shader::kSpecHistory] = history;
+  key.count = shader::kReconstructSpecCount;
+  return key;
+}
+
+SpecializationKey upsampleKey(bool temporalUpsampling, std::uint32_t outputHistory) {
+  SpecializationKey key;
+  key.values[shader::kSpecTemporalUpsampling] = temporalUpsampling ? 1u : 0u;
+  key.values[shader::kSpecOutputHistory] = outputHistory;
+  key.count = shader::kUpsampleSpecCount;
+  return key;
+}
+
+std::vector<std::pair<Program, SpecializationKey>> variantsFor(const Settings& settings,
+                                                               bool workCounters) {
+  const std::uint32_t histories[] = {shader::kHistoryNone, shader::kHistoryInPlace,
+                                     shader::kHistoryReprojected};
+  std::vector<std::pair<Program, SpecializationKey>> variants;
+  variants.emplace_back(Program::March, marchKey(settings, workCounters));
+  for (std::uint32_t history : histories) {
+    variants.emplace_back(Program::Reconstruct, reconstructKey(history));
+  }
+  // Without temporal upsampling there is never an output history to read.
+  const bool upsampling = upsamplesTemporally(settings);
+  for (std::uint32_t history : histories) {
+    if (!upsampling && history != shader::kHistoryNone) continue;
+    variants.emplace_back(Program::Upsample, upsampleKey(upsampling, history));
+  }
+  return variants;
+}
+
+}  // namespace clouds::detail

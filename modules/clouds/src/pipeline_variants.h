@@ -1,0 +1,24 @@
+#pragma once
+// Which pipeline variants a frame uses, as pure functions of the settings and the frame's
+// temporal decisions. Context::prepare() creates every variant variantsFor() lists, and
+// dispatch() looks up the one its frame needs: the same functions decide both, so a prepared
+// Settings never meets a missing variant.
+#include <utility>
+#include <vector>
+
+#include "clouds/clouds.h"
+#include "compute_program.h"
+#include "programs.h"
+
+namespace clouds::detail {
+
+SpecializationKey marchKey(const Settings& settings, bool workCounters);
+// `history`: kHistoryNone, kHistoryInPlace or kHistoryReprojected (cloud_types.h).
+SpecializationKey reconstructKey(std::uint32_t history);
+SpecializationKey upsampleKey(bool temporalUpsampling, std::uint32_t outputHistory);
+
+// Every variant `settings` can select in some frame (with or without history, still or moving).
+std::vector<std::pair<Program, SpecializationKey>> variantsFor(const Settings& settings,
+                                                               bool workCounters);
+
+}  // namespace clouds::detail

@@ -1,0 +1,108 @@
+#include "programs.h"
+
+#include <span>
+#include <vector>
+
+#include "cloud_types.h"
+#include "clouds_shaders/cloud_march.comp.spv.h"
+#include "clouds_shaders/composite.comp.spv.h"
+#include "clouds_shaders/depth_downsample.comp.spv.h"
+#include "clouds_shaders/noise_curl.comp.spv.h"
+#include "clouds_shaders/noise_detail.comp.spv.h"
+#include "clouds_shaders/noise_shape.comp.spv.h"
+#include "clouds_shaders/reconstruct.comp.spv.h"
+#include "clouds_shaders/sky_ambient.comp.spv.h"
+#include "clouds_shaders/upsample.comp.spv.h"
+#include "clouds_shaders/weather_max.comp.spv.h"
+#include "clouds_shaders/weather_procedural.comp.spv.h"
+#include "clouds_shaders/weather_resample.comp.spv.h"
+
+namespace clouds::detail {
+namespace {
+
+using namespace shader;
+constexpr VkDescriptorType kImage = VK_DESCRIPTOR_TYPE_STORAGE_IMAGE;
+constexpr VkDescriptorType kTexture = VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER;
+constexpr VkDescriptorType kUniforms = VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER;  // frame_uniforms.glsl
+constexpr VkDescriptorType kBuffer = VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
+
+struct ProgramDesc {
+  Program program;
+  std::span<const std::uint32_t> spirv;
+  std::vector<Binding> bindings;
+  std::uint32_t pushConstantBytes;
+  const char* name;
+};
+
+std::vector<ProgramDesc> programTable() {
+  return {
+      {Program::ShapeNoise, noise_shape_comp_spv, {{kGeneratorTarget, kImage}},
+       sizeof(NoiseConstants), "shape noise generator"},
+      {Program::DetailNoise, noise_detail_comp_spv, {{kGeneratorTarget, kImage}},
+       sizeof(NoiseConstants), "detail noise generator"},
+      {Program::CurlNoise, noise_curl_comp_spv, {{kGeneratorTarget, kImage}},
+       sizeof(NoiseConstants), "curl noise generator"},
+      {Program::Weather, weather_procedural_comp_spv, {{kGeneratorTarget, kImage}},
+       sizeof(WeatherConstants), "weather generator"},
+      {Program::WeatherResample, weather_resample_comp_spv,
+       {{kResampleTarget, kImage}, {kResampleSource, kTexture}}, 0, "weather resample"},
+      {Program::WeatherMaxima, weather_max_comp_spv,
+       {{kMaximaSource, kImage}, {kMaximaTarget, kImage}}, sizeof(MaximaConstants),
+       "weather maxima"},
+      {Program::SkyAmbient, sky_ambient_comp_spv,
+       {{kSkyAmbientUniforms, kBuffer}, {kSkyAmbientSky, kTexture}}, 0, "sky ambient"},
+      {Program::SceneDistance, depth_downsample_comp_spv,
+       {{kBindingUniforms, kUniforms}, {kSceneDistanceHostDepth, kTexture},
+        {kSceneDistanceOut, kImage}},
+       0, "scene distance"},
+      {Program::March, cloud_march_comp_spv,
+       {{kBindingUniforms, kUniforms},
+        {kMarchShapeNoise, kImage},
+        {kMarchDetailNoise, kImage},
+        {kMarchWeatherMap, kImage},
+        {kMarchCurlNoise, kImage},
+        {kMarchSceneDistance, kImage},
+        {kMarchSamplesOut, kImage},
+        {kMarchWeatherMaxFine, kImage},
+        {kMarchWeatherMaxCoarse, kImage},
+        {kMarchCounters, kBuffer}},
+       0, "march"},
+      {Program::Reconstruct, reconstruct_comp_spv,
+       {{kBindingUniforms, kUniforms},
+        {kReconstructFresh, kImage},
+        {kReconstructHistory, kImage},
+        {kReconstructOut, kImage}},
+       0, "reconstruct"},
+      {Program::Upsample, upsample_comp_spv,
+       {{kBindingUniforms, kUniforms},
+        {kUpsampleTraceSamples, kImage},
+        {kUpsampleHostDepth, kTexture},
+        {kUpsampleRadianceOut, kImage},
+        {kUpsampleDepthOut, kImage},
+        {kUpsampleFresh, kImage},
+        {kUpsampleHistory, kImage},
+        {kUpsampleHistoryOut, kImage}},
+       0, "upsample"},
+      {Program::Composite, composite_comp_spv,
+       {{kCompositeHostColor, kImage}, {kCompositeClouds, kImage}}, sizeof(CompositeConstants),
+       "composite"},
+  };
+}
+
+}  // namespace
+
+Programs::Programs(const DeviceContext& device, bool composite) {
+  for (const ProgramDesc& desc : programTable()) {
+    if (desc.program == Program::Composite && !composite) continue;
+    auto& program = programs_[index(desc.program)];
+    program = std::make_unique<ComputeProgram>(device, desc.spirv, desc.bindings,
+                                               desc.pushConstantBytes, desc.name);
+    // Programs without specialization constants have one variant: made now.
+    const bool specialised = desc.program == Program::March ||
+                             desc.program == Program::Reconstruct ||
+                             desc.program == Program::Upsample;
+    if (!specialised) program->prepare();
+  }
+}
+
+}  // namespace clouds::detail

@@ -1,0 +1,200 @@
+// Recording a frame's trace: the uniforms, the optional sky ambient, then scene distance ->
+// march -> reconstruct -> upsample; or, for a sky that cannot hold cloud, clearing the
+// outputs. Barriers are compute-to-compute except for the outputs, which end visible to the
+// host's compute and fragment shaders.
+#include "context_impl.h"
+#include "pipeline_variants.h"
+
+namespace clouds {
+
+using detail::Program;
+
+namespace {
+
+constexpr VkPipelineStageFlags2 kCompute = VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT;
+constexpr VkAccessFlags2 kStorageWrite = VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT;
+constexpr VkAccessFlags2 kStorageRead = VK_ACCESS_2_SHADER_STORAGE_READ_BIT;
+// Where host passes may read the outputs.
+constexpr VkPipelineStageFlags2 kHostReadStages =
+    VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT | VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT;
+constexpr VkAccessFlags2 kHostReadAccess =
+    VK_ACCESS_2_SHADER_STORAGE_READ_BIT | VK_ACCESS_2_SHADER_SAMPLED_READ_BIT;
+
+// The history variant of a frame: none, read in place (nothing moved) or reprojected.
+std::uint32_t historyVariant(bool use, bool still) {
+  if (!use) return shader::kHistoryNone;
+  return still ? shader::kHistoryInPlace : shader::kHistoryReprojected;
+}
+
+}  // namespace
+
+void Context::Impl::recordUniforms(VkCommandBuffer cmd, Slot& slot,
+                                   const shader::CloudUniforms& uniforms) {
+  // The previous frame of this slot has completed (host contract), but earlier commands in
+  // this queue may still read it: order the update after them.
+  detail::memoryBarrier(device_, cmd, kCompute, VK_ACCESS_2_UNIFORM_READ_BIT | kStorageRead,
+                        VK_PIPELINE_STAGE_2_TRANSFER_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT);
+  device_.fn().vkCmdUpdateBuffer(cmd, slot.uniforms.buffer(), 0, sizeof(uniforms), &uniforms);
+  detail::memoryBarrier(device_, cmd, VK_PIPELINE_STAGE_2_TRANSFER_BIT,
+                        VK_ACCESS_2_TRANSFER_WRITE_BIT, kCompute,
+                        VK_ACCESS_2_UNIFORM_READ_BIT | kStorageRead | kStorageWrite);
+}
+
+void Context::Impl::recordSkyAmbient(VkCommandBuffer cmd, const FrameInputs& inputs, Slot& slot) {
+  const auto& fn = device_.fn();
+  beginPass(cmd, detail::Pass::SkyAmbient, "clouds: sky ambient");
+  detail::SetWriter(device_, slot.skyAmbient)
+      .storageBuffer(shader::kSkyAmbientUniforms, slot.uniforms.buffer(),
+                     sizeof(shader::CloudUniforms))
+      .sampledImage(shader::kSkyAmbientSky, inputs.skyView, linearSampler_.get(),
+                    inputs.skyLayout)
+      .commit();
+  const detail::ComputeProgram& program = programs_[Program::SkyAmbient];
+  fn.vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, program.find());
+  fn.vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, program.layout(), 0, 1,
+                             &slot.skyAmbient, 0, nullptr);
+  fn.vkCmdDispatch(cmd, 1, 1, 1);
+  detail::memoryBarrier(device_, cmd, kCompute, kStorageWrite, kCompute,
+                        VK_ACCESS_2_UNIFORM_READ_BIT);
+  endPass(cmd, detail::Pass::SkyAmbient);
+}
+
+void Context::Impl::recordTrace(VkCommandBuffer cmd, const FrameInputs& inputs,
+                                const Settings& settings, const detail::TemporalFrame& temporal,
+                                VkExtent2D traceExtent, Slot& slot) {
+  const auto& fn = device_.fn();
+  const detail::ModuleImages& im = images_;
+  const bool hasDepth = inputs.depthView != VK_NULL_HANDLE;
+  const VkImageView depthView = hasDepth ? inputs.depthView : im.depthPlaceholder.view();
+  const VkImageLayout depthLayout =
+      hasDepth ? inputs.depthLayout : VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL;
+  const VkSampler nearest = nearestSampler_.get();
+  const VkBuffer uniforms = slot.uniforms.buffer();
+  const VkDeviceSize uniformBytes = sizeof(shader::CloudUniforms);
+  const detail::OwnedImage& historyIn = im.history[temporal.readHistory];
+  const detail::OwnedImage& historyOut = im.history[temporal.writeHistory];
+  // Without temporal upsampling the upsample pass never touches its output history: any
+  // storage image of the format fills the bindings.
+  const bool upsampling = temporal.upsampleTemporally;
+  const VkImageView outputHistoryIn = upsampling ? im.outputHistory[temporal.readHistory].view()
+                                                 : im.samplesPlaceholder.view();
+  const VkImageView outputHistoryOut = upsampling
+                                           ? im.outputHistory[temporal.writeHistory].view()
+                                           : im.samplesPlaceholder.view();
+
+  using namespace shader;
+  detail::SetWriter(device_, slot.sceneDistance)
+      .uniformBuffer(kBindingUniforms, uniforms, uniformBytes)
+      .sampledImage(kSceneDistanceHostDepth, depthView, nearest, depthLayout)
+      .storageImage(kSceneDistanceOut, im.sceneDistance.view())
+      .commit();
+  detail::SetWriter(device_, slot.march)
+      .uniformBuffer(kBindingUniforms, uniforms, uniformBytes)
+      .storageImage(kMarchShapeNoise, im.shapeNoise.view())
+      .storageImage(kMarchDetailNoise, im.detailNoise.view())
+      .storageImage(kMarchWeatherMap, weatherMap().view())
+      .storageImage(kMarchCurlNoise, im.curlNoise.view())
+      .storageImage(kMarchSceneDistance, im.sceneDistance.view())
+      .storageImage(kMarchSamplesOut, im.traceSamples.view())
+      .storageImage(kMarchWeatherMaxFine, im.weatherMaxFine.view())
+      .storageImage(kMarchWeatherMaxCoarse, im.weatherMaxCoarse.view())
+      .storageBuffer(kMarchCounters, slot.counters.buffer(), slot.counters.size())
+      .commit();
+  detail::SetWriter(device_, slot.reconstruct)
+      .uniformBuffer(kBindingUniforms, uniforms, uniformBytes)
+      .storageImage(kReconstructFresh, im.traceSamples.view())
+      .storageImage(kReconstructHistory, historyIn.view())
+      .storageImage(kReconstructOut, historyOut.view())
+      .commit();
+  detail::SetWriter(device_, slot.upsample)
+      .uniformBuffer(kBindingUniforms, uniforms, uniformBytes)
+      .storageImage(kUpsampleTraceSamples, historyOut.view())
+      .sampledImage(kUpsampleHostDepth, depthView, nearest, depthLayout)
+      .storageImage(kUpsampleRadianceOut, im.radiance.view())
+      .storageImage(kUpsampleDepthOut, im.depth.view())
+      .storageImage(kUpsampleFresh, im.traceSamples.view())
+      .storageImage(kUpsampleHistory, outputHistoryIn)
+      .storageImage(kUpsampleHistoryOut, outputHistoryOut)
+      .commit();
+
+  // Everything these passes write may still be read by earlier commands (last frame's
+  // reconstruction and upsample, the host's reads of the outputs).
+  detail::memoryBarrier(device_, cmd, kHostReadStages, kHostReadAccess | kStorageRead, kCompute,
+                        kStorageWrite);
+  if (info_.workCounters) {
+    fn.vkCmdFillBuffer(cmd, slot.counters.buffer(), 0, VK_WHOLE_SIZE, 0u);
+    detail::memoryBarrier(device_, cmd, VK_PIPELINE_STAGE_2_TRANSFER_BIT,
+                          VK_ACCESS_2_TRANSFER_WRITE_BIT, kCompute, kStorageRead | kStorageWrite);
+  }
+
+  beginPass(cmd, detail::Pass::SceneDistance, "clouds: scene distance");
+  bindAndDispatch(cmd, Program::SceneDistance, programs_[Program::SceneDistance].find(),
+                  slot.sceneDistance, traceExtent.width, traceExtent.height);
+  // The barrier is part of the pass: on lavapipe a dispatch only starts the work, and the
+  // barrier waits for it.
+  detail::memoryBarrier(device_, cmd, kCompute, kStorageWrite, kCompute, kStorageRead);
+  endPass(cmd, detail::Pass::SceneDistance);
+
+  const std::uint32_t k = temporal.tileSize;
+  beginPass(cmd, detail::Pass::March, "clouds: march");
+  // One invocation per tile: only the pixels marched this frame.
+  bindAndDispatch(cmd, Program::March,
+                  programs_[Program::March].find(detail::marchKey(settings, info_.workCounters)),
+                  slot.march, (traceExtent.width + k - 1) / k, (traceExtent.height + k - 1) / k);
+  detail::memoryBarrier(device_, cmd, kCompute, kStorageWrite, kCompute, kStorageRead);
+  endPass(cmd, detail::Pass::March);
+
+  if (info_.workCounters) {
+    detail::memoryBarrier(device_, cmd, kCompute, kStorageWrite, VK_PIPELINE_STAGE_2_HOST_BIT,
+                          VK_ACCESS_2_HOST_READ_BIT);
+  }
+  beginPass(cmd, detail::Pass::Reconstruct, "clouds: reconstruct");
+  const std::uint32_t history = historyVariant(temporal.useHistory, temporal.still);
+  bindAndDispatch(cmd, Program::Reconstruct,
+                  programs_[Program::Reconstruct].find(detail::reconstructKey(history)),
+                  slot.reconstruct, traceExtent.width, traceExtent.height);
+  detail::memoryBarrier(device_, cmd, kCompute, kStorageWrite, kCompute, kStorageRead);
+  endPass(cmd, detail::Pass::Reconstruct);
+
+  beginPass(cmd, detail::Pass::Upsample, "clouds: upsample");
+  const std::uint32_t outputHistory = historyVariant(temporal.useOutputHistory, temporal.still);
+  bindAndDispatch(cmd, Program::Upsample,
+                  programs_[Program::Upsample].find(detail::upsampleKey(upsampling, outputHistory)),
+                  slot.upsample, inputs.renderExtent.width, inputs.renderExtent.height);
+  for (const detail::OwnedImage* image : {&im.radiance, &im.depth}) {
+    detail::barrier(device_, cmd, image->image(), VK_IMAGE_LAYOUT_GENERAL,
+                    VK_IMAGE_LAYOUT_GENERAL, kCompute, kStorageWrite, kHostReadStages,
+                    kHostReadAccess);
+  }
+  endPass(cmd, detail::Pass::Upsample);
+}
+
+void Context::Impl::recordClearSky(VkCommandBuffer cmd, Slot& slot) {
+  const auto& fn = device_.fn();
+  beginPass(cmd, detail::Pass::ClearSky, "clouds: clear sky");
+  const VkPipelineStageFlags2 transfer = VK_PIPELINE_STAGE_2_CLEAR_BIT;
+  // The outputs (and the counters) may still be read by earlier commands.
+  detail::memoryBarrier(device_, cmd, kHostReadStages, kHostReadAccess | kStorageRead, transfer,
+                        VK_ACCESS_2_TRANSFER_WRITE_BIT);
+  const VkImageSubresourceRange range{VK_IMAGE_ASPECT_COLOR_BIT, 0, 1, 0, 1};
+  VkClearColorValue noCloud{};
+  noCloud.float32[3] = 1.0f;  // transmittance 1, no radiance
+  fn.vkCmdClearColorImage(cmd, images_.radiance.image(), VK_IMAGE_LAYOUT_GENERAL, &noCloud, 1,
+                          &range);
+  const VkClearColorValue noDepth{};
+  fn.vkCmdClearColorImage(cmd, images_.depth.image(), VK_IMAGE_LAYOUT_GENERAL, &noDepth, 1,
+                          &range);
+  if (info_.workCounters) fn.vkCmdFillBuffer(cmd, slot.counters.buffer(), 0, VK_WHOLE_SIZE, 0u);
+  for (const detail::OwnedImage* image : {&images_.radiance, &images_.depth}) {
+    detail::barrier(device_, cmd, image->image(), VK_IMAGE_LAYOUT_GENERAL,
+                    VK_IMAGE_LAYOUT_GENERAL, transfer, VK_ACCESS_2_TRANSFER_WRITE_BIT,
+                    kHostReadStages, kHostReadAccess);
+  }
+  if (info_.workCounters) {
+    detail::memoryBarrier(device_, cmd, transfer, VK_ACCESS_2_TRANSFER_WRITE_BIT,
+                          VK_PIPELINE_STAGE_2_HOST_BIT, VK_ACCESS_2_HOST_READ_BIT);
+  }
+  endPass(cmd, detail::Pass::ClearSky);
+}
+
+}  // namespace clouds
