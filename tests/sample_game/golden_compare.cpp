@@ -1,5 +1,7 @@
 #include "golden_compare.h"
 
+#include "engine/assets/image_metrics.h"
+
 #include <algorithm>
 #include <cmath>
 #include <sstream>
@@ -21,24 +23,11 @@ GoldenResult compareImages(const engine::assets::ImageRgba32f& actual,
   r.sizeMatches = actual.width == expected.width && actual.height == expected.height &&
                   !actual.pixels.empty();
   if (!r.sizeMatches) return r;
-  const std::size_t pixels = std::size_t{actual.width} * actual.height;
-  std::size_t failing = 0;
-  double squared = 0.0;
-  float maxDifference = 0.0f;
-  for (std::size_t i = 0; i < pixels; ++i) {
-    float worst = 0.0f;
-    for (std::size_t c = 0; c < 3; ++c) {
-      const float d = std::abs(actual.pixels[4 * i + c] - expected.pixels[4 * i + c]);
-      worst = std::max(worst, d);
-      squared += double(d) * double(d);
-    }
-    maxDifference = std::max(maxDifference, worst);
-    failing += worst > tolerance.pixelThreshold ? 1 : 0;
-  }
-  r.failingFraction = double(failing) / double(pixels);
-  const double mse = squared / (3.0 * double(pixels));
-  r.psnr = mse > 0.0 ? 10.0 * std::log10(1.0 / mse) : 200.0;
-  r.maxDifference = maxDifference;
+  const engine::assets::ImageError e = engine::assets::compareImages(
+      actual.pixels, expected.pixels, 4, 3, tolerance.pixelThreshold);
+  r.failingFraction = double(e.pixelsOver) / double(e.pixels);
+  r.psnr = e.psnr();
+  r.maxDifference = static_cast<float>(e.maxAbs);
   return r;
 }
 

@@ -15,8 +15,8 @@ namespace {
 using namespace clouds::shader;
 
 // Synthetic textures: a fixed pseudo-random field so the heterogeneous cases have structure.
-test::CpuTextures syntheticTextures() {
-  test::CpuTextures t;
+clouds::tools::CpuTextures syntheticTextures() {
+  clouds::tools::CpuTextures t;
   auto fill = [](std::vector<std::uint8_t>& v, std::size_t texels, std::uint32_t seed) {
     v.resize(texels * 4);
     std::uint32_t state = seed;
@@ -29,26 +29,26 @@ test::CpuTextures syntheticTextures() {
   fill(t.detail, 32u * 32u * 32u, 2);
   fill(t.curl, 128u * 128u, 3);
   fill(t.weather, 512u * 512u, 4);
-  t.weatherMaxFine = test::weatherMaxima(t.weather, kWeatherMapSize, kWeatherMaxFineSize);
-  t.weatherMaxCoarse = test::weatherMaxima(t.weatherMaxFine, kWeatherMaxFineSize, kWeatherMaxCoarseSize);
+  t.weatherMaxFine = clouds::tools::weatherMaxima(t.weather, kWeatherMapSize, kWeatherMaxFineSize);
+  t.weatherMaxCoarse = clouds::tools::weatherMaxima(t.weatherMaxFine, kWeatherMaxFineSize, kWeatherMaxCoarseSize);
   return t;
 }
 
-const test::CpuTextures& textures() {
-  static const test::CpuTextures t = syntheticTextures();
+const clouds::tools::CpuTextures& textures() {
+  static const clouds::tools::CpuTextures t = syntheticTextures();
   return t;
 }
 
 // Uniforms for a camera at `altitude` looking straight up (or along `pitch`), tiny image.
 CloudUniforms uniformsFor(const clouds::Settings& s, double altitude, double pitchDegrees,
                           VkExtent2D extent, const glm::vec3& sun = {0, 1, 0}) {
-  test::CloudView view;
+  clouds::tools::CloudView view;
   view.position = {0.0, altitude, 0.0};
   view.pitchDegrees = pitchDegrees;
   view.verticalFovDegrees = 1.0f;  // nearly parallel rays: every pixel sees the same path
   clouds::FrameInputs in;
-  in.view = test::viewMatrix(view);
-  in.projection = test::projectionMatrix(view, extent);
+  in.view = clouds::tools::viewMatrix(view);
+  in.projection = clouds::tools::projectionMatrix(view, extent);
   in.cameraPosition = view.position;
   in.sunDirection = sun;
   in.sunIlluminance = glm::vec3(1.0f);
@@ -92,7 +92,7 @@ TEST(CloudModelCpu, HomogeneousSlabTransmittanceMatchesBeerLambert) {
         const float sigma = static_cast<float>(tau / thickness);
         u = uniformsFor(slabSettings(sigma, step), 300.0, pitch, extent);
         u.flags |= kFlagHomogeneous;
-        const auto frame = test::renderCpuReference(textures(), u, slabSettings(sigma, step), {}, 1);
+        const auto frame = clouds::tools::renderCpuReference(textures(), u, slabSettings(sigma, step), {}, 1);
         const double expected = std::exp(-double(sigma) * path);
         EXPECT_NEAR(frame.radiance[0].a, expected, 2e-5 + 1e-5 * expected)
             << "tau " << tau << " pitch " << pitch << " step " << step;
@@ -124,7 +124,7 @@ TEST(CloudModelCpu, SlabRadianceConvergesAsStepsDouble) {
     s.albedo = 1.0f;
     CloudUniforms u = uniformsFor(s, 300.0, 90.0, extent, sun);
     u.flags |= kFlagHomogeneous;
-    const auto frame = test::renderCpuReference(textures(), u, s, {}, 1);
+    const auto frame = clouds::tools::renderCpuReference(textures(), u, s, {}, 1);
     const vec3 dir = pixelRayDirection(vec2(0.5f, 0.5f), vec2(1.0f, 1.0f), u);
     const double phase = dualLobePhase(dot(dir, sun), s.phaseForwardG, s.phaseBackwardG,
                                        s.phaseBackwardWeight);
@@ -153,12 +153,12 @@ TEST(CloudModelCpu, WhiteFurnaceConservesEnergy) {
       s.ambientOcclusionStrength = 0.0f;
       s.ambientStrength = 1.0f;
       s.coverage = 0.8f;
-      test::CloudView view;
+      clouds::tools::CloudView view;
       clouds::FrameInputs in;
       view.position = {0.0, 2000.0, 0.0};  // inside the layer
       view.pitchDegrees = 5.0;
-      in.view = test::viewMatrix(view);
-      in.projection = test::projectionMatrix(view, extent);
+      in.view = clouds::tools::viewMatrix(view);
+      in.projection = clouds::tools::projectionMatrix(view, extent);
       in.cameraPosition = view.position;
       in.ambientTop = glm::vec3(1.0f);
       in.ambientBottom = glm::vec3(1.0f);
@@ -166,7 +166,7 @@ TEST(CloudModelCpu, WhiteFurnaceConservesEnergy) {
       context.traceExtent = extent;
       context.fullExtent = extent;
       const CloudUniforms u = clouds::detail::buildUniforms(in, s, context);
-      const auto frame = test::renderCpuReference(textures(), u, s, {}, 2);
+      const auto frame = clouds::tools::renderCpuReference(textures(), u, s, {}, 2);
       for (const auto& p : frame.radiance) {
         for (int c = 0; c < 3; ++c) {
           ASSERT_NEAR(p[c] + p.a * 1.0f, 1.0f, 1e-4f)

@@ -7,7 +7,7 @@
 
 namespace {
 
-using test::CloudView;
+using clouds::tools::CloudView;
 using test::cumulusView;
 using test::kExtent;
 using test::meanOpacity;
@@ -17,7 +17,7 @@ using CloudCost = test::CloudGpuTest;
 TEST_F(CloudCost, EmptySpaceSkippingChangesTheCostNotThePicture) {
   // Coverage 0.4: broken cumulus; 0.3: a few clouds in a mostly clear sky.
   for (float coverage : {0.4f, 0.3f}) {
-    clouds::Settings on = test::singleFrame({});
+    clouds::Settings on = clouds::tools::singleFrame({});
     on.coverage = coverage;
     on.jitter = clouds::Jitter::None;
     on.maxViewSteps = 4096;    // every ray reaches its end either way: the same clouds in reach
@@ -27,17 +27,17 @@ TEST_F(CloudCost, EmptySpaceSkippingChangesTheCostNotThePicture) {
     CloudView view = cumulusView();
     view.pitchDegrees = 6.0;
     auto r = renderer();
-    const test::CloudFrame skipped = r->render(view, on, kExtent);
+    const clouds::tools::CloudFrame skipped = r->render(view, on, kExtent);
     const clouds::WorkCounters with = r->lastWorkCounters();
     r->cut();
-    const test::CloudFrame marched = r->render(view, off, kExtent);
+    const clouds::tools::CloudFrame marched = r->render(view, off, kExtent);
     const clouds::WorkCounters without = r->lastWorkCounters();
     SCOPED_TRACE(coverage);
     ASSERT_GT(meanOpacity(marched), 0.002) << "the view must show clouds";
     EXPECT_GT(with.skippedCells, 0u);
     EXPECT_EQ(without.skippedCells, 0u);
     // Samples restart at cell boundaries, so they move a little: equal up to that.
-    EXPECT_GE(test::psnr(skipped.radiance, marched.radiance, 1.0), 40.0);
+    EXPECT_GE(clouds::tools::psnr(skipped.radiance, marched.radiance, 1.0), 40.0);
     // The fewer cells hold cloud, the more is skipped. A cell is empty only where its
     // coverage is zero everywhere (the noise inside is not known), so broken skies, where
     // most 780 m cells hold some coverage, save less than clear ones (measured: 0.85 and
@@ -54,7 +54,7 @@ TEST_F(CloudCost, ClearSkyCostsLessThanATenthOfOvercast) {
   overcast.coverage = 1.0f;
   overcast.cloudType = 0.1f;  // a stratus deck
   auto r = renderer();
-  const test::CloudFrame empty = r->render(cumulusView(), clear, kExtent, 3);
+  const clouds::tools::CloudFrame empty = r->render(cumulusView(), clear, kExtent, 3);
   const clouds::WorkCounters clearWork = r->lastWorkCounters();
   // Coverage 0 cannot show a cloud anywhere: the module clears its outputs instead of marching.
   EXPECT_EQ(std::string(r->context().lastFrameReport().resetReason), "clear sky: nothing to march");

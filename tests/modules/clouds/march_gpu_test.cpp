@@ -20,7 +20,7 @@
 namespace {
 
 using namespace clouds::shader;
-using test::CloudView;
+using clouds::tools::CloudView;
 
 class CloudMarch : public test::GpuTest {
  protected:
@@ -32,9 +32,9 @@ class CloudMarch : public test::GpuTest {
   static clouds::Context::Impl& impl() {
     return clouds::detail::ContextAccess::impl(harness().context());
   }
-  static test::CloudHarness& harness() {
+  static clouds::tools::CloudHarness& harness() {
     // One harness (and one noise generation) for the whole binary.
-    static test::CloudHarness* h = new test::CloudHarness(device(), {160, 90});
+    static clouds::tools::CloudHarness* h = new clouds::tools::CloudHarness(device(), {160, 90});
     return *h;
   }
 };
@@ -59,7 +59,7 @@ TEST_F(CloudMarch, HomogeneousSlabTransmittanceMatchesBeerLambert) {
     for (double pitch : {89.0, 30.0, 8.0}) {
       // One full-resolution frame (per-pixel rays are checked), no weather cells skipped (the
       // homogeneous test slab ignores the weather map).
-      clouds::Settings s = test::singleFrame({});
+      clouds::Settings s = clouds::tools::singleFrame({});
       s.emptySpaceSkipping = false;
       s.extinctionPerMetre = static_cast<float>(tau / 2500.0);
       s.viewStepGrowth = 0.0f;
@@ -70,7 +70,7 @@ TEST_F(CloudMarch, HomogeneousSlabTransmittanceMatchesBeerLambert) {
       CloudView view;
       view.pitchDegrees = pitch;
       view.verticalFovDegrees = 20.0f;
-      const test::CloudFrame frame = harness().render(view, s, extent);
+      const clouds::tools::CloudFrame frame = harness().render(view, s, extent);
       const CloudUniforms& u = impl().lastUniforms();
       for (std::uint32_t y = 0; y < extent.height; ++y) {
         for (std::uint32_t x = 0; x < extent.width; ++x) {
@@ -97,8 +97,8 @@ TEST_F(CloudMarch, WhiteFurnaceConservesEnergy) {
         view.position.y = altitude;
         view.ambientTop = glm::vec3(1.0f);
         view.ambientBottom = glm::vec3(1.0f);
-        const test::CloudFrame frame =
-            harness().render(view, test::singleFrame(furnaceSettings(density, steps)), extent);
+        const clouds::tools::CloudFrame frame =
+            harness().render(view, clouds::tools::singleFrame(furnaceSettings(density, steps)), extent);
         for (const glm::vec4& p : frame.radiance) {
           for (int c = 0; c < 3; ++c) {
             ASSERT_NEAR(p[c] + p.a, 1.0f, 1e-3f)
@@ -128,7 +128,7 @@ TEST_F(CloudMarch, SkyTextureAmbientKeepsTheFurnaceWhite) {
   view.ambientTop = glm::vec3(0.0f);
   view.ambientBottom = glm::vec3(0.0f);
   view.skyView = sky.view();
-  const test::CloudFrame frame = harness().render(view, furnaceSettings(1.0f, 128), {48, 27});
+  const clouds::tools::CloudFrame frame = harness().render(view, furnaceSettings(1.0f, 128), {48, 27});
   float opacity = 0.0f;
   for (const glm::vec4& p : frame.radiance) {
     opacity = std::max(opacity, 1.0f - p.a);
@@ -171,14 +171,14 @@ std::vector<CanonicalView> canonicalViews() {
 TEST_F(CloudMarch, MatchesTheCpuReferenceOnCanonicalViews) {
   const VkExtent2D extent{128, 72};
   for (const CanonicalView& c : canonicalViews()) {
-    const clouds::Settings settings = test::singleFrame(c.settings);
-    const test::CloudFrame gpu = harness().render(c.view, settings, extent);
-    const test::CpuTextures textures = test::readTextures(harness());
-    const test::CloudFrame cpu = test::renderCpuReference(
+    const clouds::Settings settings = clouds::tools::singleFrame(c.settings);
+    const clouds::tools::CloudFrame gpu = harness().render(c.view, settings, extent);
+    const clouds::tools::CpuTextures textures = clouds::tools::readTextures(harness());
+    const clouds::tools::CloudFrame cpu = clouds::tools::renderCpuReference(
         textures, impl().lastUniforms(), settings, harness().lastDepth());
     float peak = 1.0f;
     for (const glm::vec4& p : cpu.radiance) peak = std::max({peak, p.r, p.g, p.b});
-    const double psnr = test::psnr(gpu.radiance, cpu.radiance, peak);
+    const double psnr = clouds::tools::psnr(gpu.radiance, cpu.radiance, peak);
     EXPECT_GE(psnr, 40.0) << c.name;
     double opacity = 0.0;
     for (const glm::vec4& p : cpu.radiance) opacity += 1.0 - p.a;
@@ -296,7 +296,7 @@ TEST_F(CloudMarch, GroundHidesCloudsBehindItAndCloudsInFrontCoverIt) {
   CloudView below;
   below.pitchDegrees = 0.0;
   below.groundDepth = true;
-  const test::CloudFrame low = harness().render(below, s, extent);
+  const clouds::tools::CloudFrame low = harness().render(below, s, extent);
   const std::vector<float> depth = harness().lastDepth();
   int ground = 0;
   int cloudyAbove = 0;
@@ -316,7 +316,7 @@ TEST_F(CloudMarch, GroundHidesCloudsBehindItAndCloudsInFrontCoverIt) {
   above.position.y = 6000.0;
   above.pitchDegrees = -60.0;
   above.groundDepth = true;
-  const test::CloudFrame high = harness().render(above, s, extent);
+  const clouds::tools::CloudFrame high = harness().render(above, s, extent);
   int covered = 0;
   for (const glm::vec4& p : high.radiance) covered += p.a < 0.5f ? 1 : 0;
   EXPECT_GT(covered, int(high.radiance.size() / 4));
@@ -327,13 +327,13 @@ TEST_F(CloudMarch, FramesFarFromTheOriginMatchTheOrigin) {
   // 100 km and 10,000 km, so the same clouds must appear; float world coordinates would not
   // even place the samples correctly out there.
   const VkExtent2D extent{96, 54};
-  clouds::Settings s = test::singleFrame({});
+  clouds::Settings s = clouds::tools::singleFrame({});
   s.coverage = 0.65f;
   s.jitter = clouds::Jitter::None;  // the frame index changes between renders
   CloudView origin;
   origin.pitchDegrees = 15.0;
   origin.timeSeconds = 12.0;
-  const test::CloudFrame atOrigin = harness().render(origin, s, extent);
+  const clouds::tools::CloudFrame atOrigin = harness().render(origin, s, extent);
   double opacity = 0.0;
   for (const glm::vec4& p : atOrigin.radiance) opacity += 1.0 - p.a;
   ASSERT_GT(opacity / double(atOrigin.radiance.size()), 0.1) << "the view must show clouds";
@@ -341,12 +341,12 @@ TEST_F(CloudMarch, FramesFarFromTheOriginMatchTheOrigin) {
     CloudView far = origin;
     far.position.x += distance;
     far.position.z -= distance;
-    const test::CloudFrame atFar = harness().render(far, s, extent);
-    EXPECT_GE(test::psnr(atOrigin.radiance, atFar.radiance, 1.0), 60.0) << distance << " m";
+    const clouds::tools::CloudFrame atFar = harness().render(far, s, extent);
+    EXPECT_GE(clouds::tools::psnr(atOrigin.radiance, atFar.radiance, 1.0), 60.0) << distance << " m";
   }
   CloudView shifted = origin;
   shifted.position.x += 3000.0;  // and a real move does change the picture
-  EXPECT_LT(test::psnr(atOrigin.radiance, harness().render(shifted, s, extent).radiance, 1.0), 40.0);
+  EXPECT_LT(clouds::tools::psnr(atOrigin.radiance, harness().render(shifted, s, extent).radiance, 1.0), 40.0);
 }
 
 TEST_F(CloudMarch, PaintedWeatherMapControlsCoverage) {
@@ -374,10 +374,10 @@ TEST_F(CloudMarch, PaintedWeatherMapControlsCoverage) {
   const engine::gfx::Image full = paint(255);
   CloudView view;
   view.weatherView = clear.view();
-  const test::CloudFrame none = harness().render(view, clouds::Settings{}, extent);
+  const clouds::tools::CloudFrame none = harness().render(view, clouds::Settings{}, extent);
   for (const glm::vec4& p : none.radiance) ASSERT_EQ(p.a, 1.0f) << "a painted hole has clouds";
   view.weatherView = full.view();
-  const test::CloudFrame cloudy = harness().render(view, clouds::Settings{}, extent);
+  const clouds::tools::CloudFrame cloudy = harness().render(view, clouds::Settings{}, extent);
   double opacity = 0.0;
   for (const glm::vec4& p : cloudy.radiance) opacity += 1.0 - p.a;
   EXPECT_GT(opacity / double(cloudy.radiance.size()), 0.3);

@@ -69,8 +69,8 @@ void expectTiles(const SeamStatistics& s, const std::string& what) {
 class NoiseTiling : public test::GpuTest {};
 
 TEST_F(NoiseTiling, ShapeDetailAndCurlTexturesTileOnEveryAxisAndChannel) {
-  test::CloudHarness harness(device(), {16, 16});
-  harness.render(test::CloudView{}, clouds::Settings{}, {16, 16});  // generates the textures
+  clouds::tools::CloudHarness harness(device(), {16, 16});
+  harness.render(clouds::tools::CloudView{}, clouds::Settings{}, {16, 16});  // generates the textures
   const auto shape = harness.readShapeNoise();
   const auto detail = harness.readDetailNoise();
   const auto curl = harness.readCurlNoise();

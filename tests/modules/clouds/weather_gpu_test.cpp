@@ -7,7 +7,7 @@
 
 namespace {
 
-using test::CloudView;
+using clouds::tools::CloudView;
 using test::cumulusView;
 using test::kExtent;
 using CloudWeather = test::CloudGpuTest;
@@ -16,7 +16,7 @@ TEST_F(CloudWeather, GpuWeatherMaximaMatchTheCpu) {
   auto r = renderer();
   r->render(cumulusView(), clouds::Settings{}, kExtent);
   const std::vector<std::uint8_t> weather = r->readWeatherMap();
-  const std::vector<std::uint8_t> expected = test::weatherMaxima(
+  const std::vector<std::uint8_t> expected = clouds::tools::weatherMaxima(
       weather, clouds::shader::kWeatherMapSize, clouds::shader::kWeatherMaxFineSize);
   EXPECT_EQ(r->readWeatherMaxFine(), expected);
   // The maxima must be able to say "empty": this map has cells without any coverage.

@@ -10,7 +10,7 @@ execute_process(
 if(NOT result EQUAL 0)
   message(FATAL_ERROR "clouds_bench exited with ${result}")
 endif()
-foreach(output results.csv results.md plot_static.png plot_fly_through.png)
+foreach(output results.csv results.md plots.json plot_static.png plot_fly_through.png)
   if(NOT EXISTS "${OUT_DIR}/${output}")
     message(FATAL_ERROR "clouds_bench wrote no ${OUT_DIR}/${output}")
   endif()

@@ -9,16 +9,19 @@
 
 namespace test {
 
+using clouds::tools::CloudFrame;
+using clouds::tools::CloudView;
+
 inline constexpr VkExtent2D kExtent{160, 90};
 
 class CloudGpuTest : public test::GpuTest {
  protected:
   // A renderer that counts its work; created per test, so each starts with no history.
-  static std::unique_ptr<test::CloudHarness> renderer() {
-    test::HarnessOptions options;
+  static std::unique_ptr<clouds::tools::CloudHarness> renderer() {
+    clouds::tools::HarnessOptions options;
     options.workCounters = true;
     options.passTimings = true;
-    return std::make_unique<test::CloudHarness>(device(), kExtent, options);
+    return std::make_unique<clouds::tools::CloudHarness>(device(), kExtent, options);
   }
 };
 
@@ -32,13 +35,13 @@ inline CloudView cumulusView() {
   return view;
 }
 
-inline double meanOpacity(const test::CloudFrame& frame) {
+inline double meanOpacity(const clouds::tools::CloudFrame& frame) {
   double sum = 0.0;
   for (const glm::vec4& p : frame.radiance) sum += 1.0 - p.a;
   return sum / double(frame.radiance.size());
 }
 
-inline bool allValid(const test::CloudFrame& frame) {
+inline bool allValid(const clouds::tools::CloudFrame& frame) {
   for (const glm::vec4& p : frame.radiance) {
     for (int c = 0; c < 4; ++c) {
       if (!std::isfinite(p[c]) || p[c] < 0.0f) return false;
@@ -51,7 +54,7 @@ inline bool allValid(const test::CloudFrame& frame) {
   return true;
 }
 
-inline float maxAbsDifference(const test::CloudFrame& a, const test::CloudFrame& b) {
+inline float maxAbsDifference(const clouds::tools::CloudFrame& a, const clouds::tools::CloudFrame& b) {
   float worst = 0.0f;
   for (std::size_t i = 0; i < a.radiance.size(); ++i) {
     const glm::vec4 d = glm::abs(a.radiance[i] - b.radiance[i]);

@@ -1,6 +1,7 @@
 #include "cloud_harness.h"
 
 #include "context_access.h"
+#include "engine/assets/image_metrics.h"
 
 #include <cmath>
 #include <cstring>
@@ -12,7 +13,7 @@
 #include "engine/render/camera_math.h"
 #include "tonemap_operator.h"
 
-namespace test {
+namespace clouds::tools {
 
 using namespace engine;
 
@@ -62,7 +63,7 @@ CloudHarness::CloudHarness(gfx::Device& device, VkExtent2D maxExtent, HarnessOpt
   info.passTimings = options.passTimings;
   clouds::Error error;
   context_ = clouds::Context::create(info, &error);
-  if (!context_) throw Error("clouds::Context::create: " + error.message);
+  if (!context_) throw engine::Error("clouds::Context::create: " + error.message);
 }
 
 CloudHarness::~CloudHarness() {
@@ -182,7 +183,7 @@ CloudFrame CloudHarness::render(const CloudView& view, const clouds::Settings& s
                                 VkExtent2D extent, std::uint32_t frames) {
   for (std::uint32_t i = 0; i < frames; ++i) {
     const std::string error = tryRender(view, settings, extent);
-    if (!error.empty()) throw Error("clouds dispatch: " + error);
+    if (!error.empty()) throw engine::Error("clouds dispatch: " + error);
   }
   const clouds::Outputs out = context_->outputs();
   const gfx::ImageState general{VK_IMAGE_LAYOUT_GENERAL, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
@@ -367,37 +368,18 @@ assets::ImageRgba8 previewImage(const CloudFrame& frame, const CloudView& view, 
   return image;
 }
 
-ImageError imageError(const std::vector<glm::vec3>& image,
-                      const std::vector<glm::vec3>& reference) {
-  ImageError error;
-  if (image.size() != reference.size() || image.empty()) return error;
-  double squares = 0.0;
-  double sum = 0.0;
-  for (std::size_t i = 0; i < image.size(); ++i) {
-    for (int k = 0; k < 3; ++k) {
-      const double d = std::abs(double(image[i][k]) - double(reference[i][k]));
-      squares += d * d;
-      sum += d;
-      error.maxAbs = std::max(error.maxAbs, d);
-    }
-  }
-  const double count = 3.0 * static_cast<double>(image.size());
-  error.meanAbs = sum / count;
-  const double mse = squares / count;
-  error.psnr = mse <= 0.0 ? 200.0 : 10.0 * std::log10(1.0 / mse);
-  return error;
+engine::assets::ImageError imageError(const std::vector<glm::vec3>& image,
+                                      const std::vector<glm::vec3>& reference) {
+  return engine::assets::compareImages(
+      std::span(reinterpret_cast<const float*>(image.data()), image.size() * 3),
+      std::span(reinterpret_cast<const float*>(reference.data()), reference.size() * 3), 3, 3);
 }
 
 double psnr(const std::vector<glm::vec4>& a, const std::vector<glm::vec4>& b, double peak) {
-  if (a.size() != b.size() || a.empty()) return 0.0;
-  double sum = 0.0;
-  for (std::size_t i = 0; i < a.size(); ++i) {
-    const glm::dvec4 d = glm::dvec4(a[i]) - glm::dvec4(b[i]);
-    sum += glm::dot(d, d);
-  }
-  const double mse = sum / (4.0 * static_cast<double>(a.size()));
-  if (mse <= 0.0) return 200.0;
-  return 10.0 * std::log10(peak * peak / mse);
+  return engine::assets::compareImages(
+             std::span(reinterpret_cast<const float*>(a.data()), a.size() * 4),
+             std::span(reinterpret_cast<const float*>(b.data()), b.size() * 4), 4, 4)
+      .psnr(peak);
 }
 
-}  // namespace test
+}  // namespace clouds::tools

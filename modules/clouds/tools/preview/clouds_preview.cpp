@@ -35,10 +35,10 @@ int main(int argc, char** argv) {
     engine::gfx::Device device(instance, engine::gfx::DeviceDesc{});
     const VkExtent2D extent{static_cast<std::uint32_t>(get("width", 320)),
                             static_cast<std::uint32_t>(get("height", 180))};
-    test::HarnessOptions harnessOptions;
+    clouds::tools::HarnessOptions harnessOptions;
     harnessOptions.passTimings = true;
-    test::CloudHarness harness(device, extent, harnessOptions);
-    test::CloudView view;
+    clouds::tools::CloudHarness harness(device, extent, harnessOptions);
+    clouds::tools::CloudView view;
     view.position = {get("x", 0), get("altitude", 300), get("z", 0)};
     view.pitchDegrees = get("pitch", 10);
     view.yawDegrees = get("yaw", 0);
@@ -77,11 +77,11 @@ int main(int argc, char** argv) {
     if (kv.count("growth")) s.viewStepGrowth = float(get("growth", 0.004));
     if (get("reference", 0) != 0) s = clouds::referenceSettings(s);
     const auto start = std::chrono::steady_clock::now();
-    const test::CloudFrame frame =
+    const clouds::tools::CloudFrame frame =
         harness.render(view, s, extent, static_cast<std::uint32_t>(get("frames", 1)));
     const double ms =
         std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
-    engine::assets::writePng(argv[1], test::previewImage(frame, view,
+    engine::assets::writePng(argv[1], clouds::tools::previewImage(frame, view,
                                                          static_cast<float>(get("exposure", 1))));
     if (const int repeats = static_cast<int>(get("timing", 0)); repeats > 0) {
       // Median GPU time of the module's frame after the first (JIT and noise) frames.
@@ -129,12 +129,12 @@ int main(int argc, char** argv) {
     }
     if (get("compare", 0) != 0) {
       // Error against the Reference mode of the same view (a fresh renderer).
-      test::CloudHarness reference(device, extent);
-      const test::CloudFrame truth = reference.render(view, clouds::referenceSettings(s), extent);
-      engine::assets::writePng(std::string(argv[1]) + ".reference.png", test::previewImage(truth, view));
-      const test::ImageError e = test::imageError(test::tonemappedPixels(frame, view),
-                                                  test::tonemappedPixels(truth, view));
-      std::printf("vs reference: PSNR %.2f dB, mean abs %.4f, max abs %.4f\n", e.psnr, e.meanAbs,
+      clouds::tools::CloudHarness reference(device, extent);
+      const clouds::tools::CloudFrame truth = reference.render(view, clouds::referenceSettings(s), extent);
+      engine::assets::writePng(std::string(argv[1]) + ".reference.png", clouds::tools::previewImage(truth, view));
+      const engine::assets::ImageError e = clouds::tools::imageError(clouds::tools::tonemappedPixels(frame, view),
+                                                  clouds::tools::tonemappedPixels(truth, view));
+      std::printf("vs reference: PSNR %.2f dB, mean abs %.4f, max abs %.4f\n", e.psnr(), e.meanAbs,
                   e.maxAbs);
     }
     double coverage = 0.0;

@@ -8,7 +8,7 @@
 #include "cloud_harness.h"
 #include "cloud_types.h"
 
-namespace test {
+namespace clouds::tools {
 
 struct CpuTextures {
   std::vector<std::uint8_t> shape;    // 128^3 RGBA8
@@ -35,4 +35,4 @@ CloudFrame renderCpuReference(const CpuTextures& textures,
                               const clouds::Settings& settings, const std::vector<float>& depth,
                               unsigned threads = 2);
 
-}  // namespace test
+}  // namespace clouds::tools

@@ -7,8 +7,9 @@
 #include <fstream>
 #include <sstream>
 
+#include "engine/assets/image_metrics.h"
 #include "engine/core/error.h"
-#include "plot.h"
+#include <nlohmann/json.hpp>
 
 namespace bench {
 namespace {
@@ -21,13 +22,8 @@ std::string format(const char* spec, double value) {
   return text;
 }
 
-// Squared error from a PSNR with peak 1 (the inverse of 10 log10(1 / mse)).
-double mseOf(double psnr) {
-  return std::pow(10.0, -psnr / 10.0);
-}
-double psnrOf(double mse) {
-  return mse <= 0.0 ? 200.0 : 10.0 * std::log10(1.0 / mse);
-}
+using engine::assets::meanSquaredFromPsnr;
+using engine::assets::psnrFromMeanSquared;
 
 std::ofstream openOrThrow(const std::filesystem::path& file) {
   std::ofstream out(file);
@@ -90,13 +86,13 @@ Aggregate aggregateStatic(const BenchResults& results, const std::string& config
   for (const std::string& view : pooledViews(results)) {
     const Measurement* m = results.find(config, view);
     if (m == nullptr) continue;
-    mse += mseOf(m->psnr);
+    mse += meanSquaredFromPsnr(m->psnr);
     a.minPsnr = std::min(a.minPsnr, m->psnr);
     ++count;
   }
   if (timedViews == 0 || count == 0) return Aggregate{};
   a.milliseconds /= timedViews;
-  a.psnr = psnrOf(mse / count);
+  a.psnr = psnrFromMeanSquared(mse / count);
   return a;
 }
 
@@ -231,10 +227,10 @@ void writeMarkdown(const std::filesystem::path& file, const BenchResults& result
   int referenceViews = 0;
   for (const ReferenceMeasurement& r : results.references) {
     if (r.view == kFlyThrough || cloudless(results, r.view)) continue;
-    referenceMse += mseOf(r.singleFramePsnr);
+    referenceMse += meanSquaredFromPsnr(r.singleFramePsnr);
     ++referenceViews;
   }
-  out << format("%.1f", psnrOf(referenceMse / std::max(referenceViews, 1)))
+  out << format("%.1f", psnrFromMeanSquared(referenceMse / std::max(referenceViews, 1)))
       << " (one frame against the average of " << o.referenceFrames << ") | "
       << format("%.0f", referenceMs(results, kFlyThrough)) << " | | | | |\n";
 
@@ -306,45 +302,29 @@ void writeMarkdown(const std::filesystem::path& file, const BenchResults& result
   out << "\n\nPSNR 200 means identical images (the clear sky has no clouds to get wrong).\n";
 }
 
-void writePlots(const std::filesystem::path& folder, const BenchResults& results) {
-  // One colour per sweep (seven; a colourblind-safe set, then black and brown); the presets
-  // are vermilion.
-  static constexpr std::array<std::array<std::uint8_t, 3>, 7> kSweepColours = {{{0, 114, 178},
-                                                                                {0, 158, 115},
-                                                                                {204, 121, 167},
-                                                                                {86, 180, 233},
-                                                                                {230, 159, 0},
-                                                                                {40, 40, 40},
-                                                                                {140, 90, 40}}};
-  const auto plot = [&](bool fly, const std::filesystem::path& file) {
+void writePlotData(const std::filesystem::path& file, const BenchResults& results) {
+  const auto plot = [&](bool fly, const char* png) {
     const auto aggregate = [&](const std::string& config) {
       return fly ? aggregateFlyThrough(results, config) : aggregateStatic(results, config);
     };
-    std::vector<PlotSeries> series;
-    std::size_t colour = 0;
+    const auto point = [](const Aggregate& a, const std::string& label) {
+      return nlohmann::json{{"gpu_ms", a.milliseconds}, {"psnr_db", a.psnr}, {"label", label}};
+    };
+    nlohmann::json series = nlohmann::json::array();
     for (const Sweep& sweep : sweepsOf(results.configs)) {
-      PlotSeries s;
-      s.name = sweep.name;
-      s.rgb = kSweepColours[colour++ % kSweepColours.size()];
-      s.connect = true;
+      nlohmann::json points = nlohmann::json::array();
       for (std::size_t index : sweep.configs) {
         const BenchConfig& c = results.configs[index];
-        const Aggregate a = aggregate(c.name);
-        s.points.push_back(PlotPoint{a.milliseconds, a.psnr, c.preset ? "" : c.value});
+        // The High point that starts every sweep is labelled by the presets series.
+        points.push_back(point(aggregate(c.name), c.preset ? "" : c.value));
       }
-      series.push_back(s);
+      series.push_back({{"name", sweep.name}, {"presets", false}, {"points", points}});
     }
-    PlotSeries presets;
-    presets.name = "quality presets";
-    presets.rgb = {213, 94, 0};
-    presets.emphasised = true;
+    nlohmann::json presets = nlohmann::json::array();
     for (const BenchConfig& c : results.configs) {
-      if (!c.preset) continue;
-      const Aggregate a = aggregate(c.name);
-      presets.points.push_back(PlotPoint{a.milliseconds, a.psnr, c.name});
+      if (c.preset) presets.push_back(point(aggregate(c.name), c.name));
     }
-    series.push_back(presets);
-    PlotDesc desc;
+    series.push_back({{"name", "quality presets"}, {"presets", true}, {"points", presets}});
     double reference = referenceMs(results, kFlyThrough);
     if (!fly) {
       const std::vector<std::string> views = staticViews(results);
@@ -352,18 +332,21 @@ void writePlots(const std::filesystem::path& folder, const BenchResults& results
       for (const std::string& view : views)
         reference += referenceMs(results, view) / double(views.size());
     }
-    desc.title = std::string(fly ? "Fly-through" : "Static views") + ": error against time, " +
-                 std::to_string(results.options.extent.width) + "x" +
-                 std::to_string(results.options.extent.height) + " (Reference " +
-                 format("%.0f", reference) + " ms)";
-    desc.xLabel = fly ? "GPU time per frame (ms, median over the path, log scale)"
-                      : "GPU time per frame (ms, mean over the static views, log scale)";
-    desc.yLabel = fly ? "PSNR against the Reference (dB, mean over measured frames)"
-                      : "PSNR against the Reference (dB, pooled over views)";
-    engine::assets::writePng(file, renderPlot(desc, series));
+    return nlohmann::json{
+        {"file", png},
+        {"title", std::string(fly ? "Fly-through" : "Static views") + ": error against time, " +
+                      std::to_string(results.options.extent.width) + "x" +
+                      std::to_string(results.options.extent.height) + " (Reference " +
+                      format("%.0f", reference) + " ms)"},
+        {"x_label", fly ? "GPU time per frame (ms, median over the path, log scale)"
+                        : "GPU time per frame (ms, mean over the static views, log scale)"},
+        {"y_label", fly ? "PSNR against the Reference (dB, mean over measured frames)"
+                        : "PSNR against the Reference (dB, pooled over views)"},
+        {"series", series}};
   };
-  plot(false, folder / "plot_static.png");
-  plot(true, folder / "plot_fly_through.png");
+  const nlohmann::json data = {
+      {"plots", {plot(false, "plot_static.png"), plot(true, "plot_fly_through.png")}}};
+  openOrThrow(file) << data.dump(2) << '\n';
 }
 
 }  // namespace bench

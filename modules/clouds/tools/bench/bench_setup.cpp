@@ -9,10 +9,10 @@ namespace bench {
 
 std::vector<BenchView> canonicalViews() {
   std::vector<BenchView> views;
-  const auto add = [&](const char* name, test::CloudView view, clouds::Settings look) {
+  const auto add = [&](const char* name, clouds::tools::CloudView view, clouds::Settings look) {
     views.push_back(BenchView{name, view, look});
   };
-  test::CloudView ground;
+  clouds::tools::CloudView ground;
   ground.position = {0.0, 300.0, 0.0};
   ground.pitchDegrees = 18.0;
   ground.yawDegrees = 270.0;
@@ -29,7 +29,7 @@ std::vector<BenchView> canonicalViews() {
   overcast.cloudType = 0.15f;  // a stratus deck
   add("overcast", ground, overcast);
 
-  test::CloudView sunset = ground;
+  clouds::tools::CloudView sunset = ground;
   sunset.pitchDegrees = 8.0;
   sunset.sunElevationDegrees = 3.0;
   sunset.sunAzimuthDegrees = 300.0;  // low in front of the camera, a little to the side
@@ -41,14 +41,14 @@ std::vector<BenchView> canonicalViews() {
   stratocumulus.cloudType = 0.5f;
   add("sunset", sunset, stratocumulus);
 
-  test::CloudView inside = ground;
+  clouds::tools::CloudView inside = ground;
   inside.position.y = 2300.0;
   inside.pitchDegrees = 0.0;
   clouds::Settings dense;
   dense.coverage = 0.85f;
   add("inside a cloud", inside, dense);
 
-  test::CloudView above = ground;
+  clouds::tools::CloudView above = ground;
   above.position.y = 6500.0;
   above.pitchDegrees = -25.0;
   add("above the layer", above, clouds::Settings{});
@@ -62,9 +62,9 @@ FlyThrough flyThrough(std::uint32_t frames) {
   return path;
 }
 
-test::CloudView FlyThrough::poseAt(std::uint32_t frame) const {
+clouds::tools::CloudView FlyThrough::poseAt(std::uint32_t frame) const {
   const double t = double(frame) / framesPerSecond;
-  test::CloudView view;
+  clouds::tools::CloudView view;
   view.yawDegrees = 250.0 + 12.0 * t;  // a slow left turn
   const double yaw = view.yawDegrees * 3.14159265358979 / 180.0;
   // Forward along the yaw (yaw 0 looks along -Z), climbing: 1380 m, the base is at 1500 m.

@@ -13,7 +13,7 @@ namespace bench {
 
 struct BenchView {
   std::string name;
-  test::CloudView view;
+  clouds::tools::CloudView view;
   clouds::Settings look;  // coverage, type, ...; every configuration renders over this look
 };
 
@@ -26,7 +26,7 @@ struct FlyThrough {
   clouds::Settings look;
   std::uint32_t frames = 48;
   double framesPerSecond = 30.0;
-  test::CloudView poseAt(std::uint32_t frame) const;
+  clouds::tools::CloudView poseAt(std::uint32_t frame) const;
 };
 FlyThrough flyThrough(std::uint32_t frames);
 

@@ -1,13 +1,15 @@
 // clouds_bench: what accuracy costs. Renders the canonical views and a fly-through at each
 // quality preset and along one-knob sweeps, times the module on the GPU (timestamps, median,
 // interleaved) and measures the error against the converged Reference mode, then writes
-// results.csv, results.md, plot_static.png and plot_fly_through.png into the output folder.
+// results.csv, results.md and plots.json into the output folder, then draws plot_static.png and
+// plot_fly_through.png from plots.json with plot_benchmark.py.
 // Usage: clouds_bench OUT_DIR [--width 640 --height 360] [--quick] [--validation]
 // A benchmark, not a test: it asserts nothing, and a full run takes about a quarter of an hour
 // on the 2-core lavapipe machine (--quick: 320x180 and fewer frames, a few minutes).
 #include <CLI/CLI.hpp>
 
 #include <cstdio>
+#include <cstdlib>
 #include <filesystem>
 
 #include "bench_report.h"
@@ -69,10 +71,16 @@ int main(int argc, char** argv) {
         device, options, [](const std::string& line) { std::printf("%s\n", line.c_str()); });
     bench::writeCsv(out / "results.csv", results);
     bench::writeMarkdown(out / "results.md", results);
-    bench::writePlots(out, results);
-    std::printf(
-        "wrote %s/{results.csv, results.md, plot_static.png, plot_fly_through.png} in %.0f s\n",
-        std::filesystem::absolute(out).string().c_str(), results.seconds);
+    bench::writePlotData(out / "plots.json", results);
+    std::printf("wrote %s/{results.csv, results.md, plots.json} in %.0f s\n",
+                std::filesystem::absolute(out).string().c_str(), results.seconds);
+    // The plots are drawn by matplotlib (Debian's python3-matplotlib) from plots.json.
+    const std::string draw = std::string("\"") + CLOUDS_PLOT_PYTHON + "\" \"" +
+                             CLOUDS_PLOT_SCRIPT + "\" \"" + (out / "plots.json").string() + "\"";
+    if (std::system(draw.c_str()) != 0) {
+      std::fprintf(stderr, "clouds_bench: drawing the plots failed (%s)\n", draw.c_str());
+      return 4;
+    }
     const std::vector<std::string> problems = bench::implausibleMeasurements(results);
     for (const std::string& problem : problems)
       std::fprintf(stderr, "implausible: %s\n", problem.c_str());

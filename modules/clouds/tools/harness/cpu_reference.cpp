@@ -11,7 +11,7 @@
 namespace clouds::shader {
 namespace {
 // Read-only while rendering; every worker thread samples the same texels.
-const test::CpuTextures* gTextures = nullptr;
+const clouds::tools::CpuTextures* gTextures = nullptr;
 // The level weatherMaxima() reads (one thread).
 const std::vector<std::uint8_t>* gMaximaSource = nullptr;
 int gMaximaSourceSize = 0;
@@ -49,7 +49,7 @@ vec4 fetchWeatherMaxCoarse(ivec2 t) {
 
 }  // namespace clouds::shader
 
-namespace test {
+namespace clouds::tools {
 
 using namespace clouds::shader;
 
@@ -115,4 +115,4 @@ CloudFrame renderCpuReference(const CpuTextures& textures, const CloudUniforms& 
   return frame;
 }
 
-}  // namespace test
+}  // namespace clouds::tools

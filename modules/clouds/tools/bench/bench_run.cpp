@@ -24,7 +24,7 @@ double median(std::vector<double> values) {
 // A configuration's own module instance.
 struct Instance {
   const BenchConfig* config = nullptr;
-  std::unique_ptr<test::CloudHarness> harness;
+  std::unique_ptr<clouds::tools::CloudHarness> harness;
 };
 
 // What the timed frames of one configuration on one view recorded.
@@ -33,7 +33,7 @@ struct Samples {
   std::map<std::string, std::vector<double>> passMilliseconds;
   clouds::WorkCounters work;
 
-  void record(const test::CloudHarness& harness) {
+  void record(const clouds::tools::CloudHarness& harness) {
     milliseconds.push_back(harness.lastGpuMilliseconds());
     for (const clouds::PassTiming& pass : harness.lastPassTimings()) {
       passMilliseconds[pass.name].push_back(pass.milliseconds);
@@ -67,7 +67,7 @@ Measurement summarise(const std::string& config, const std::string& view, const 
   return m;
 }
 
-void renderOrThrow(test::CloudHarness& harness, const test::CloudView& view,
+void renderOrThrow(clouds::tools::CloudHarness& harness, const clouds::tools::CloudView& view,
                    const clouds::Settings& settings, VkExtent2D extent) {
   const std::string error = harness.tryRender(view, settings, extent);
   if (!error.empty()) throw engine::Error("clouds_bench: " + error);
@@ -81,24 +81,24 @@ struct Reference {
   std::vector<double> milliseconds;
 };
 
-Reference renderReference(test::CloudHarness& harness, const test::CloudView& view,
+Reference renderReference(clouds::tools::CloudHarness& harness, const clouds::tools::CloudView& view,
                           const clouds::Settings& look, VkExtent2D extent, std::uint32_t frames) {
   const clouds::Settings settings = clouds::settingsFor(clouds::Quality::Reference, look);
   harness.cut();
-  test::CloudFrame sum;
+  clouds::tools::CloudFrame sum;
   Reference reference;
   for (std::uint32_t i = 0; i < frames; ++i) {
-    const test::CloudFrame frame = harness.render(view, settings, extent);
+    const clouds::tools::CloudFrame frame = harness.render(view, settings, extent);
     reference.milliseconds.push_back(harness.lastGpuMilliseconds());
     if (i == 0) {
       sum = frame;
-      reference.firstPixels = test::tonemappedPixels(frame, view);
+      reference.firstPixels = clouds::tools::tonemappedPixels(frame, view);
       continue;
     }
     for (std::size_t p = 0; p < frame.radiance.size(); ++p) sum.radiance[p] += frame.radiance[p];
   }
   for (glm::vec4& p : sum.radiance) p /= float(std::max(frames, 1u));
-  reference.pixels = test::tonemappedPixels(sum, view);
+  reference.pixels = clouds::tools::tonemappedPixels(sum, view);
   return reference;
 }
 
@@ -152,15 +152,15 @@ BenchResults runBenchmark(engine::gfx::Device& device, const RunOptions& options
   results.device = device.properties().deviceName;
   const VkExtent2D extent = options.extent;
 
-  test::HarnessOptions harnessOptions;
+  clouds::tools::HarnessOptions harnessOptions;
   harnessOptions.workCounters = true;
   harnessOptions.passTimings = true;
   std::vector<Instance> instances;
   for (const BenchConfig& config : results.configs) {
     instances.push_back(
-        Instance{&config, std::make_unique<test::CloudHarness>(device, extent, harnessOptions)});
+        Instance{&config, std::make_unique<clouds::tools::CloudHarness>(device, extent, harnessOptions)});
   }
-  test::CloudHarness referenceHarness(device, extent, harnessOptions);
+  clouds::tools::CloudHarness referenceHarness(device, extent, harnessOptions);
 
   // --- Static views: converge, time interleaved, then compare the last frame. ---------------
   for (const BenchView& view : canonicalViews()) {
@@ -171,7 +171,7 @@ BenchResults runBenchmark(engine::gfx::Device& device, const RunOptions& options
         renderReference(referenceHarness, view.view, view.look, extent, options.referenceFrames);
     results.references.push_back(
         ReferenceMeasurement{view.name, median(reference.milliseconds),
-                             test::imageError(reference.firstPixels, reference.pixels).psnr});
+                             clouds::tools::imageError(reference.firstPixels, reference.pixels).psnr()});
 
     progress(view.name + ": " + std::to_string(instances.size()) + " configurations");
     std::vector<clouds::Settings> settings;
@@ -191,14 +191,14 @@ BenchResults runBenchmark(engine::gfx::Device& device, const RunOptions& options
     for (std::uint32_t frame = 0; frame < longest; ++frame) {
       for (std::size_t i = 0; i < instances.size(); ++i) {
         if (frame >= converge[i]) continue;
-        test::CloudHarness& harness = *instances[i].harness;
+        clouds::tools::CloudHarness& harness = *instances[i].harness;
         const std::uint32_t rendered = frame + 1;
         const bool high =
             instances[i].config->preset && instances[i].config->quality == clouds::Quality::High;
         if (high && (rendered & (rendered - 1)) == 0 && rendered >= 8) {  // 8, 16, 32, ...
-          const test::CloudFrame out = harness.render(view.view, settings[i], extent);
+          const clouds::tools::CloudFrame out = harness.render(view.view, settings[i], extent);
           const double psnr =
-              test::imageError(test::tonemappedPixels(out, view.view), reference.pixels).psnr;
+              clouds::tools::imageError(clouds::tools::tonemappedPixels(out, view.view), reference.pixels).psnr();
           results.highConvergence[view.name].push_back(ConvergencePoint{rendered, psnr});
         } else {
           renderOrThrow(harness, view.view, settings[i], extent);
@@ -213,11 +213,11 @@ BenchResults runBenchmark(engine::gfx::Device& device, const RunOptions& options
       }
     }
     for (std::size_t i = 0; i < instances.size(); ++i) {
-      const test::CloudFrame last = instances[i].harness->render(view.view, settings[i], extent);
-      const test::ImageError error =
-          test::imageError(test::tonemappedPixels(last, view.view), reference.pixels);
+      const clouds::tools::CloudFrame last = instances[i].harness->render(view.view, settings[i], extent);
+      const engine::assets::ImageError error =
+          clouds::tools::imageError(clouds::tools::tonemappedPixels(last, view.view), reference.pixels);
       Measurement m = summarise(instances[i].config->name, view.name, samples[i]);
-      m.psnr = m.minPsnr = error.psnr;
+      m.psnr = m.minPsnr = error.psnr();
       m.meanAbs = error.meanAbs;
       m.maxAbs = error.maxAbs;
       results.measurements.push_back(m);
@@ -239,10 +239,10 @@ BenchResults runBenchmark(engine::gfx::Device& device, const RunOptions& options
     instance.harness->cut();
   }
   std::vector<Samples> samples(instances.size());
-  std::vector<std::vector<test::ImageError>> errors(instances.size());
+  std::vector<std::vector<engine::assets::ImageError>> errors(instances.size());
   std::vector<double> referenceMs;
   for (std::uint32_t frame = 0; frame < path.frames; ++frame) {
-    const test::CloudView pose = path.poseAt(frame);
+    const clouds::tools::CloudView pose = path.poseAt(frame);
     const bool measured = frame >= options.flyWarmUpFrames &&
                           ((frame - options.flyWarmUpFrames) % options.flyReferenceEvery == 0 ||
                            frame + 1 == path.frames);
@@ -255,10 +255,10 @@ BenchResults runBenchmark(engine::gfx::Device& device, const RunOptions& options
                          reference.milliseconds.end());
     }
     for (std::size_t i = 0; i < instances.size(); ++i) {
-      test::CloudHarness& harness = *instances[i].harness;
+      clouds::tools::CloudHarness& harness = *instances[i].harness;
       if (measured) {
-        const test::CloudFrame out = harness.render(pose, settings[i], extent);
-        errors[i].push_back(test::imageError(test::tonemappedPixels(out, pose), reference.pixels));
+        const clouds::tools::CloudFrame out = harness.render(pose, settings[i], extent);
+        errors[i].push_back(clouds::tools::imageError(clouds::tools::tonemappedPixels(out, pose), reference.pixels));
       } else {
         renderOrThrow(harness, pose, settings[i], extent);
       }
@@ -269,11 +269,11 @@ BenchResults runBenchmark(engine::gfx::Device& device, const RunOptions& options
   for (std::size_t i = 0; i < instances.size(); ++i) {
     Measurement m = summarise(instances[i].config->name, flyName, samples[i]);
     m.minPsnr = 1e9;
-    for (const test::ImageError& e : errors[i]) {
-      m.psnr += e.psnr / double(errors[i].size());
+    for (const engine::assets::ImageError& e : errors[i]) {
+      m.psnr += e.psnr() / double(errors[i].size());
       m.meanAbs += e.meanAbs / double(errors[i].size());
       m.maxAbs = std::max(m.maxAbs, e.maxAbs);
-      m.minPsnr = std::min(m.minPsnr, e.psnr);
+      m.minPsnr = std::min(m.minPsnr, e.psnr());
     }
     results.measurements.push_back(m);
   }

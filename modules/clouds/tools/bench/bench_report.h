@@ -1,6 +1,7 @@
 #pragma once
 // The benchmark's outputs: a CSV of every measurement, a Markdown report (targets, presets,
-// knob sweeps, per-view detail) and two plots of error against time (static views, fly-through).
+// knob sweeps, per-view detail) and the data of two plots of error against time (static
+// views, fly-through) that plot_benchmark.py draws.
 #include <filesystem>
 #include <string>
 
@@ -21,7 +22,8 @@ Aggregate aggregateFlyThrough(const BenchResults& results, const std::string& co
 
 void writeCsv(const std::filesystem::path& file, const BenchResults& results);
 void writeMarkdown(const std::filesystem::path& file, const BenchResults& results);
-// plot_static.png and plot_fly_through.png in `folder`.
-void writePlots(const std::filesystem::path& folder, const BenchResults& results);
+// plots.json: for each plot its file name, title, axis labels and series (one per knob sweep,
+// one for the presets) of points (GPU ms, PSNR dB, label).
+void writePlotData(const std::filesystem::path& file, const BenchResults& results);
 
 }  // namespace bench

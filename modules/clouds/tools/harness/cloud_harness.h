@@ -1,6 +1,6 @@
 #pragma once
 // A host for the clouds module built on engine::gfx, for the module's GPU tests, the CPU
-// reference comparisons, look-development previews and the benchmark. It renders a view into
+// reference comparisons, the preview tool and the benchmark. It renders a view into
 // the module's outputs, reads them back as float images, and can also read back the noise
 // textures and weather map (so the CPU reference samples exactly the same texels).
 #include <glm/glm.hpp>
@@ -13,6 +13,7 @@
 
 #include "clouds/clouds.h"
 #include "engine/assets/image_io.h"
+#include "engine/assets/image_metrics.h"
 #include "engine/gfx/device.h"
 #include "engine/gfx/gpu_timer.h"
 #include "engine/gfx/resources.h"
@@ -21,7 +22,7 @@ namespace clouds::detail {
 class ModuleImages;
 }
 
-namespace test {
+namespace clouds::tools {
 
 // A camera and sun, in the conventions of the module (metres, Y up, yaw 0 looks along -Z).
 struct CloudView {
@@ -129,13 +130,11 @@ std::vector<glm::vec3> tonemappedPixels(const CloudFrame& frame, const CloudView
 engine::assets::ImageRgba8 previewImage(const CloudFrame& frame, const CloudView& view,
                                         float exposure = 1.0f);
 
-// Error of an image against a reference, both as tonemappedPixels() (values in [0, 1]).
-struct ImageError {
-  double psnr = 0.0;     // dB, peak 1; 200 for identical images
-  double meanAbs = 0.0;  // mean absolute difference per channel
-  double maxAbs = 0.0;   // largest absolute difference of any channel
-};
-ImageError imageError(const std::vector<glm::vec3>& image, const std::vector<glm::vec3>& reference);
+// Error of an image against a reference, both as tonemappedPixels() (values in [0, 1]); and the
+// PSNR of two radiance frames over all four channels. Thin adapters to
+// engine/assets/image_metrics.h.
+engine::assets::ImageError imageError(const std::vector<glm::vec3>& image,
+                                      const std::vector<glm::vec3>& reference);
 double psnr(const std::vector<glm::vec4>& a, const std::vector<glm::vec4>& b, double peak);
 
-}  // namespace test
+}  // namespace clouds::tools
