@@ -8,18 +8,18 @@ SHADER_NAMESPACE_BEGIN
 
 // Per-frame lighting and camera for the scene passes (a uniform buffer).
 struct SceneFrame {
-  mat4 viewProjection;    // camera-relative world -> clip (reversed-Z)
-  vec4 cameraPosition;    // xyz world position (m), w unused
-  vec4 cameraRight;       // xyz; w = tan(horizontal fov / 2)
-  vec4 cameraUp;          // xyz; w = tan(vertical fov / 2)
-  vec4 cameraForward;     // xyz; w unused
-  vec4 sunDirection;      // xyz towards the sun; w = sun disc radiance scale
-  vec4 sunIlluminance;    // rgb
-  vec4 skyZenith;         // rgb sky radiance straight up
-  vec4 skyHorizon;        // rgb at the horizon
-  vec4 skyGround;         // rgb bounced light from below
-  vec4 fog;               // x density (1/m), yzw unused
-  uvec4 extent;           // xy output size (px)
+  mat4 viewProjection;  // camera-relative world -> clip (reversed-Z)
+  vec4 cameraPosition;  // xyz world position (m), w unused
+  vec4 cameraRight;     // xyz; w = tan(horizontal fov / 2)
+  vec4 cameraUp;        // xyz; w = tan(vertical fov / 2)
+  vec4 cameraForward;   // xyz; w unused
+  vec4 sunDirection;    // xyz towards the sun; w = sun disc radiance scale
+  vec4 sunIlluminance;  // rgb
+  vec4 skyZenith;       // rgb sky radiance straight up
+  vec4 skyHorizon;      // rgb at the horizon
+  vec4 skyGround;       // rgb bounced light from below
+  vec4 fog;             // x density (1/m), yzw unused
+  uvec4 extent;         // xy output size (px)
 };
 SHADER_STATIC_ASSERT(sizeof(SceneFrame) == 64 + 11 * 16);
 

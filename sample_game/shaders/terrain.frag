@@ -17,8 +17,8 @@ void main() {
   const vec3 n = normalize(inNormal);
   const vec3 sun = frame.sunDirection.xyz;
   const vec3 direct = frame.sunIlluminance.rgb * (max(dot(n, sun), 0.0f) * kInvPi);
-  const vec3 ambient = mix(frame.skyGround.rgb, mix(frame.skyHorizon.rgb, frame.skyZenith.rgb, 0.5f),
-                           n.y * 0.5f + 0.5f);
+  const vec3 upperSky = mix(frame.skyHorizon.rgb, frame.skyZenith.rgb, 0.5f);
+  const vec3 ambient = mix(frame.skyGround.rgb, upperSky, n.y * 0.5f + 0.5f);
   const vec3 lit = inColor * (direct + ambient);
   const float distance = length(inRelative);
   const vec3 view = inRelative / max(distance, 1e-3f);

@@ -10,21 +10,21 @@
 namespace sample {
 
 struct Options {
-  bool headless = false;               // render offscreen, never touch GLFW
-  std::uint32_t frames = 0;            // frames to render; 0 = until the window closes
+  bool headless = false;                            // render offscreen, never touch GLFW
+  std::uint32_t frames = 0;                         // frames to render; 0 = until the window closes
   std::optional<std::filesystem::path> captureDir;  // write PNG + EXR captures here
-  bool captureEveryFrame = false;      // every frame instead of only the last
+  bool captureEveryFrame = false;                   // every frame instead of only the last
   std::uint32_t width = 640;
   std::uint32_t height = 360;
-  double fixedDtSeconds = 0.0;         // > 0: simulation steps by this much per frame
-  bool validation = false;             // Vulkan validation layers (also CLOUDSCAPE_VALIDATION=1)
-  std::string device;                  // "cpu", "gpu" or a device-name substring
+  double fixedDtSeconds = 0.0;  // > 0: simulation steps by this much per frame
+  bool validation = false;      // Vulkan validation layers (also CLOUDSCAPE_VALIDATION=1)
+  std::string device;           // "cpu", "gpu" or a device-name substring
   bool vsync = true;
-  std::filesystem::path scene;         // scene JSON; empty: the default scene
+  std::filesystem::path scene;                   // scene JSON; empty: the default scene
   std::optional<std::filesystem::path> terrain;  // fly over this glTF instead of the scene's
   std::optional<std::filesystem::path> script;   // frame-indexed input and events (headless)
-  bool describe = false;               // print the frame graph's passes and pipelines, exit
-  bool hud = true;                     // on-screen help and fps in windowed runs
+  bool describe = false;  // print the frame graph's passes and pipelines, exit
+  bool hud = true;        // on-screen help and fps in windowed runs
   std::optional<clouds::Quality> cloudQuality;  // overrides the scene camera's preset
 };
 

@@ -110,7 +110,8 @@ bool gatherInput(ecs::World& world, platform::Window* window, render::SwapchainT
     }
     input = window->input();
     if (input.wasPressed(platform::Key::F12)) {
-      world.ctx().get<CaptureRequest>().stem = frameStem("screenshots", "screenshot", screenshots++);
+      world.ctx().get<CaptureRequest>().stem =
+          frameStem("screenshots", "screenshot", screenshots++);
     }
     return true;
   }
@@ -190,7 +191,8 @@ void logRun(ecs::World& world, const Renderer& renderer, const LoopStats& stats)
   }
   log::info("frame graph passes: " + joined(renderer.passNames(), "", ", "));
   std::vector<std::pair<std::string, double>> gpu;
-  for (const auto& scope : renderer.lastGpuTimings()) gpu.emplace_back(scope.name, scope.milliseconds);
+  for (const auto& scope : renderer.lastGpuTimings())
+    gpu.emplace_back(scope.name, scope.milliseconds);
   log::info("GPU time of the last frame: " + timingList(gpu));
   const auto* clouds = world.ctx().tryGet<clouds::ecs::CloudStatus>();
   if (clouds == nullptr) return;
@@ -236,9 +238,9 @@ int run(Options commandLine) {
     rendererOptions.hud = plan.windowed && options.hud;
     // Declared after the device: the modules' GPU objects go before it does.
     ecs::App app;
-    app.world().ctx().emplace<render::RenderDevice>(render::RenderDevice{
-        &device, Renderer::kHdrFormat, Renderer::kDepthFormat, gfx::FrameRing::kFramesInFlight,
-        rendererOptions.maxExtent});
+    app.world().ctx().emplace<render::RenderDevice>(
+        render::RenderDevice{&device, Renderer::kHdrFormat, Renderer::kDepthFormat,
+                             gfx::FrameRing::kFramesInFlight, rendererOptions.maxExtent});
     populateScene(app, plan.scene, plan.terrain);
     Renderer renderer(device, *presentation.target, app.world(), rendererOptions);
     app.scheduler().add(ecs::Phase::Render, "render frame",

@@ -4,12 +4,12 @@
 
 #include <glm/gtc/constants.hpp>
 
+#include "clouds/ecs/cloud_components.h"
 #include "engine/ecs/app.h"
 #include "engine/ecs/frame_time.h"
 #include "engine/platform/input.h"
 #include "engine/render/camera_math.h"
 #include "engine/render/scene_components.h"
-#include "clouds/ecs/cloud_components.h"
 #include "game/cloud_quality_controls.h"
 #include "game/flight.h"
 #include "game/game_components.h"
@@ -40,7 +40,8 @@ engine::assets::MeshData ramp() {
   for (int j = 0; j + 1 < n; ++j) {
     for (int i = 0; i + 1 < n; ++i) {
       const auto a = std::uint32_t(j * n + i);
-      for (std::uint32_t v : {a, a + std::uint32_t(n), a + 1, a + 1, a + std::uint32_t(n), a + std::uint32_t(n) + 1}) {
+      for (std::uint32_t v : {a, a + std::uint32_t(n), a + 1, a + 1, a + std::uint32_t(n),
+                              a + std::uint32_t(n) + 1}) {
         mesh.indices.push_back(v);
       }
     }
@@ -75,7 +76,9 @@ struct FlightWorld {
   }
   Camera& camera() { return app.world().get<Camera>(player); }
   sample::Aircraft& aircraft() { return app.world().get<sample::Aircraft>(player); }
-  engine::platform::InputState& input() { return app.world().ctx().get<engine::platform::InputState>(); }
+  engine::platform::InputState& input() {
+    return app.world().ctx().get<engine::platform::InputState>();
+  }
 };
 
 TEST(Flight, FliesForwardAndThrottles) {

@@ -20,11 +20,11 @@ GoldenResult compareImages(const engine::assets::ImageRgba32f& actual,
                            const engine::assets::ImageRgba32f& expected,
                            const GoldenTolerance& tolerance) {
   GoldenResult r;
-  r.sizeMatches = actual.width == expected.width && actual.height == expected.height &&
-                  !actual.pixels.empty();
+  r.sizeMatches =
+      actual.width == expected.width && actual.height == expected.height && !actual.pixels.empty();
   if (!r.sizeMatches) return r;
-  const engine::assets::ImageError e = engine::assets::compareImages(
-      actual.pixels, expected.pixels, 4, 3, tolerance.pixelThreshold);
+  const engine::assets::ImageError e =
+      engine::assets::compareImages(actual.pixels, expected.pixels, 4, 3, tolerance.pixelThreshold);
   r.failingFraction = double(e.pixelsOver) / double(e.pixels);
   r.psnr = e.psnr();
   r.maxDifference = static_cast<float>(e.maxAbs);

@@ -35,8 +35,9 @@ TEST(GoldenFrames, ScriptedViewsMatchTheirGoldens) {
   fs::remove_all(failures);
   const std::string command = std::string(SAMPLE_GAME_EXE) +
                               " --headless --validation --width 256 --height 144 --fixed-dt 0.05"
-                              " --scene " + std::string(SAMPLE_TEST_DIR) + "/scenes/golden.json" +
-                              " --script " + script.string() + " --capture " + output.string();
+                              " --scene " +
+                              std::string(SAMPLE_TEST_DIR) + "/scenes/golden.json" + " --script " +
+                              script.string() + " --capture " + output.string();
   ASSERT_EQ(std::system(command.c_str()), 0) << command;
 
   const test::GoldenTolerance tolerance;
@@ -56,12 +57,15 @@ TEST(GoldenFrames, ScriptedViewsMatchTheirGoldens) {
     const test::GoldenResult result = test::compareImages(actual, expected, tolerance);
     if (!result.passed(tolerance)) {
       fs::create_directories(failures);
-      fs::copy_file(actualPath, failures / (name + "_actual.png"), fs::copy_options::overwrite_existing);
-      fs::copy_file(goldenPath, failures / (name + "_expected.png"), fs::copy_options::overwrite_existing);
+      fs::copy_file(actualPath, failures / (name + "_actual.png"),
+                    fs::copy_options::overwrite_existing);
+      fs::copy_file(goldenPath, failures / (name + "_expected.png"),
+                    fs::copy_options::overwrite_existing);
       engine::assets::writePng(failures / (name + "_diff.png"),
                                test::diffImage(actual, expected, tolerance));
-      ADD_FAILURE() << name << ": " << result.describe() << "\n  actual   " << failures / (name + "_actual.png")
-                    << "\n  expected " << failures / (name + "_expected.png") << "\n  diff     "
+      ADD_FAILURE() << name << ": " << result.describe() << "\n  actual   "
+                    << failures / (name + "_actual.png") << "\n  expected "
+                    << failures / (name + "_expected.png") << "\n  diff     "
                     << failures / (name + "_diff.png");
     }
   }

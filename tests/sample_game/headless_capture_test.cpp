@@ -30,7 +30,8 @@ std::string runSampleOutput(const std::string& arguments) {
   std::unique_ptr<FILE, int (*)(FILE*)> pipe(popen(command.c_str(), "r"), pclose);
   std::string out;
   std::array<char, 512> buffer{};
-  while (pipe && std::fgets(buffer.data(), buffer.size(), pipe.get()) != nullptr) out += buffer.data();
+  while (pipe && std::fgets(buffer.data(), buffer.size(), pipe.get()) != nullptr)
+    out += buffer.data();
   return out;
 }
 
@@ -40,7 +41,9 @@ fs::path freshDir(const char* name) {
   return dir;
 }
 
-std::string scene(const char* name) { return std::string(SAMPLE_TEST_DIR) + "/scenes/" + name; }
+std::string scene(const char* name) {
+  return std::string(SAMPLE_TEST_DIR) + "/scenes/" + name;
+}
 
 TEST(HeadlessCapture, WritesPngAndExrOfTheLastFrame) {
   const fs::path dir = freshDir("last");
@@ -81,7 +84,8 @@ TEST(HeadlessCapture, WritesPngAndExrOfTheLastFrame) {
 TEST(HeadlessCapture, CaptureAllWritesEveryFrameAndRunsAreDeterministic) {
   const fs::path a = freshDir("all_a");
   const fs::path b = freshDir("all_b");
-  const std::string common = "--headless --frames 2 --fixed-dt 0.5 --width 96 --height 54 --capture-all --capture ";
+  const std::string common =
+      "--headless --frames 2 --fixed-dt 0.5 --width 96 --height 54 --capture-all --capture ";
   ASSERT_EQ(runSample(common + a.string()), 0);
   ASSERT_EQ(runSample(common + b.string()), 0);
   for (const char* name : {"frame_0000.png", "frame_0001.png", "frame_0001.exr"}) {
@@ -111,10 +115,12 @@ TEST(HeadlessCapture, EachSceneGetsOnlyThePassesAndPipelinesItNeeds) {
        R"("pipelines": ["tonemap", "sky", "clouds module"])", R"("modules": ["clouds"])"},
       {std::string(SAMPLE_ASSET_DIR) + "/scenes/default.json",
        R"("passes": ["sky", "terrain", "clouds", "clouds composite", "tonemap", "capture"])",
-       R"("pipelines": ["tonemap", "sky", "terrain", "clouds module"])", R"("modules": ["clouds"])"},
+       R"("pipelines": ["tonemap", "sky", "terrain", "clouds module"])",
+       R"("modules": ["clouds"])"},
   };
   for (const Case& c : cases) {
-    const std::string out = runSampleOutput("--headless --describe --width 64 --height 36 --scene " + c.scene);
+    const std::string out =
+        runSampleOutput("--headless --describe --width 64 --height 36 --scene " + c.scene);
     EXPECT_NE(out.find(c.passes), std::string::npos) << c.scene << "\n" << out;
     EXPECT_NE(out.find(c.pipelines), std::string::npos) << c.scene << "\n" << out;
     EXPECT_NE(out.find(c.modules), std::string::npos) << c.scene << "\n" << out;

@@ -32,7 +32,8 @@ std::string errorOf(const fs::path& path) {
 
 TEST(Scenes, EveryShippedSceneLoads) {
   int count = 0;
-  for (const auto& entry : fs::directory_iterator(fs::path(CLOUDSCAPE_ASSET_SOURCE_DIR) / "scenes")) {
+  for (const auto& entry :
+       fs::directory_iterator(fs::path(CLOUDSCAPE_ASSET_SOURCE_DIR) / "scenes")) {
     if (entry.path().extension() != ".json") continue;
     const sample::SceneDescription scene = loadSceneDescription(entry.path());
     EXPECT_FALSE(scene.name.empty()) << entry.path();
@@ -47,7 +48,8 @@ TEST(Scenes, ValuesArriveInTheDescription) {
   const sample::SceneDescription s = loadSceneDescription(writeScene("values.json", R"({
     "name": "v", "camera": {"position": [1, 2, 3], "yawDegrees": 45},
     "sun": {"timeOfDayHours": 18.5},
-    "clouds": {"coverage": 0.3, "cloudType": 0.1, "wind": {"directionDegrees": 90, "speedMetresPerSecond": 20}}
+    "clouds": {"coverage": 0.3, "cloudType": 0.1,
+               "wind": {"directionDegrees": 90, "speedMetresPerSecond": 20}}
   })"));
   EXPECT_EQ(s.camera.position, glm::dvec3(1, 2, 3));
   EXPECT_DOUBLE_EQ(s.camera.yawDegrees, 45.0);
@@ -72,14 +74,17 @@ TEST(Scenes, MalformedScenesNameFilePathAndReason) {
   const Case cases[] = {
       {"unknown.json", R"({"name": "x", "camera": {"position": [0, 1, 0]}, "clods": {}})",
        "clods: unknown key"},
-      {"nested_unknown.json",
-       R"({"name": "x", "camera": {"position": [0, 1, 0], "fov": 60}})", "camera.fov: unknown key"},
-      {"type.json", R"({"name": "x", "camera": {"position": [0, 1, 0]}, "clouds": {"coverage": "lots"}})",
+      {"nested_unknown.json", R"({"name": "x", "camera": {"position": [0, 1, 0], "fov": 60}})",
+       "camera.fov: unknown key"},
+      {"type.json",
+       R"({"name": "x", "camera": {"position": [0, 1, 0]}, "clouds": {"coverage": "lots"}})",
        "clouds.coverage: must be a number, got a string"},
-      {"range.json", R"({"name": "x", "camera": {"position": [0, 1, 0]}, "clouds": {"coverage": 1.5}})",
+      {"range.json",
+       R"({"name": "x", "camera": {"position": [0, 1, 0]}, "clouds": {"coverage": 1.5}})",
        "clouds.coverage: must be in [0, 1], got 1.5"},
       {"layer.json",
-       R"({"name": "x", "camera": {"position": [0, 1, 0]}, "clouds": {"layerBottomMetres": 3000, "layerTopMetres": 2000}})",
+       R"({"name": "x", "camera": {"position": [0, 1, 0]},
+           "clouds": {"layerBottomMetres": 3000, "layerTopMetres": 2000}})",
        "clouds: Settings.layerTopMetres"},
       {"missing.json", R"({"name": "x"})", "camera: is required"},
       {"vector.json", R"({"name": "x", "camera": {"position": [0, 1]}})",

@@ -57,7 +57,8 @@ TEST(InputScript, DrivesKeysMouseAndEventsFrameByFrame) {
         ++n;
       }
       EXPECT_EQ(n, 1);
-      for (const auto& t : times.read(world.events<sample::SetTimeOfDay>())) EXPECT_DOUBLE_EQ(t.hours, 7.5);
+      for (const auto& t : times.read(world.events<sample::SetTimeOfDay>()))
+        EXPECT_DOUBLE_EQ(t.hours, 7.5);
     }
     if (frame == 2) {
       EXPECT_FALSE(input.isDown(Key::W));
@@ -85,7 +86,8 @@ TEST(InputScript, MalformedScriptsAreRejectedWithThePath) {
       {R"({"events": [{"frame": 0}]})", "events[0]: needs exactly one action"},
       {R"({"events": [{"frame": 0, "press": ["W"], "exit": true}]})", "needs exactly one action"},
       {R"({"events": [{"frame": -1, "exit": true}]})", "events[0].frame: must be in"},
-      {R"({"events": [{"frame": 0, "capture": "../escape"}]})", "events[0].capture: must be a file stem"},
+      {R"({"events": [{"frame": 0, "capture": "../escape"}]})",
+       "events[0].capture: must be a file stem"},
       {R"({"events": [{"frame": 0, "jump": true}]})", "events[0]: needs exactly one action"},
       {R"({"evnts": []})", "events: is required"},
   };

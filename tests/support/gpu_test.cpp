@@ -33,8 +33,12 @@ Shared& shared() {
 
 }  // namespace
 
-engine::gfx::Instance& GpuTest::instance() { return *shared().instance; }
-engine::gfx::Device& GpuTest::device() { return *shared().device; }
+engine::gfx::Instance& GpuTest::instance() {
+  return *shared().instance;
+}
+engine::gfx::Device& GpuTest::device() {
+  return *shared().device;
+}
 
 std::vector<engine::gfx::ValidationMessage> GpuTest::takeMessages() {
   Shared& s = shared();

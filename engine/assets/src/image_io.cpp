@@ -40,14 +40,12 @@ void writeImage(const std::filesystem::path& path, std::uint32_t width, std::uin
 
 void writePng(const std::filesystem::path& path, const ImageRgba8& image) {
   writeImage(path, image.width, image.height, OIIO::TypeDesc::UINT8, OIIO::TypeDesc::UINT8,
-             image.pixels.data(), std::size_t{4} * image.width * image.height,
-             image.pixels.size());
+             image.pixels.data(), std::size_t{4} * image.width * image.height, image.pixels.size());
 }
 
 void writeExr(const std::filesystem::path& path, const ImageRgba32f& image) {
   writeImage(path, image.width, image.height, OIIO::TypeDesc::HALF, OIIO::TypeDesc::FLOAT,
-             image.pixels.data(), std::size_t{4} * image.width * image.height,
-             image.pixels.size());
+             image.pixels.data(), std::size_t{4} * image.width * image.height, image.pixels.size());
 }
 
 ImageRgba32f readImage(const std::filesystem::path& path) {
@@ -64,7 +62,8 @@ ImageRgba32f readImage(const std::filesystem::path& path) {
       spec.height > 65536) {
     throw Error(name + ": unsupported image size or channel count");
   }
-  std::vector<float> raw(static_cast<std::size_t>(spec.width) * static_cast<std::size_t>(spec.height) *
+  std::vector<float> raw(static_cast<std::size_t>(spec.width) *
+                         static_cast<std::size_t>(spec.height) *
                          static_cast<std::size_t>(channels));
   if (!in->read_image(0, 0, 0, channels, OIIO::TypeDesc::FLOAT, raw.data())) {
     throw Error(name + ": read failed: " + in->geterror());

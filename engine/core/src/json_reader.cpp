@@ -11,12 +11,18 @@ namespace {
 
 std::string describe(const nlohmann::json& value) {
   switch (value.type()) {
-    case nlohmann::json::value_t::null: return "null";
-    case nlohmann::json::value_t::boolean: return "a boolean";
-    case nlohmann::json::value_t::string: return "a string";
-    case nlohmann::json::value_t::array: return "an array";
-    case nlohmann::json::value_t::object: return "an object";
-    default: return "a number";
+    case nlohmann::json::value_t::null:
+      return "null";
+    case nlohmann::json::value_t::boolean:
+      return "a boolean";
+    case nlohmann::json::value_t::string:
+      return "a string";
+    case nlohmann::json::value_t::array:
+      return "an array";
+    case nlohmann::json::value_t::object:
+      return "an object";
+    default:
+      return "a number";
   }
 }
 
@@ -53,7 +59,9 @@ void JsonReader::fail(const std::string& key, const std::string& reason) const {
   throw Error(file_ + ": " + (key.empty() ? path_ : pathOf(key)) + ": " + reason);
 }
 
-bool JsonReader::has(const std::string& key) const { return value_->contains(key); }
+bool JsonReader::has(const std::string& key) const {
+  return value_->contains(key);
+}
 
 const nlohmann::json& JsonReader::child(const std::string& key) const {
   read_.insert(key);
@@ -96,8 +104,7 @@ double JsonReader::number(const std::string& key, double min, double max, double
   return has(key) ? number(key, min, max) : fallback;
 }
 
-std::int64_t JsonReader::integer(const std::string& key, std::int64_t min,
-                                 std::int64_t max) const {
+std::int64_t JsonReader::integer(const std::string& key, std::int64_t min, std::int64_t max) const {
   const nlohmann::json& value = child(key);
   if (!value.is_number_integer()) fail(key, "must be an integer, got " + describe(value));
   // Unsigned values past INT64_MAX would wrap to negative numbers in get<int64_t>().

@@ -27,9 +27,8 @@ bool App::addModule(std::unique_ptr<Module> module) {
 }
 
 bool App::hasModule(std::string_view name) const noexcept {
-  return std::any_of(modules_.begin(), modules_.end(), [name](const auto& module) {
-    return module->name() == name;
-  });
+  return std::any_of(modules_.begin(), modules_.end(),
+                     [name](const auto& module) { return module->name() == name; });
 }
 
 std::vector<std::string_view> App::installedModules() const {

@@ -4,7 +4,9 @@
 
 namespace engine::ecs {
 
-Context::~Context() { clear(); }
+Context::~Context() {
+  clear();
+}
 
 Context& Context::operator=(Context&& other) noexcept {
   if (this != &other) {

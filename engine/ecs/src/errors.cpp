@@ -20,10 +20,10 @@ void fail(std::string_view where, std::string_view type, std::string_view what) 
 
 void failEntity(std::string_view where, std::string_view type, Entity entity,
                 std::string_view what) {
-  std::string detail = entity.isNull() ? std::string("entity {null}")
-                                       : "entity {index " + std::to_string(entity.index) +
-                                             ", generation " + std::to_string(entity.generation) +
-                                             "}";
+  std::string detail = entity.isNull()
+                           ? std::string("entity {null}")
+                           : "entity {index " + std::to_string(entity.index) + ", generation " +
+                                 std::to_string(entity.generation) + "}";
   detail += ' ';
   detail += what;
   fail(where, type, detail);

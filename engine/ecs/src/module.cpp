@@ -6,7 +6,9 @@ namespace engine::ecs {
 
 Module::~Module() = default;
 
-bool Module::supported(const World& /*world*/, std::string& /*reason*/) const { return true; }
+bool Module::supported(const World& /*world*/, std::string& /*reason*/) const {
+  return true;
+}
 
 namespace {
 

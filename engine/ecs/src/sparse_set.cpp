@@ -9,8 +9,8 @@ namespace engine::ecs {
 SparseSet::~SparseSet() = default;
 
 std::size_t SparseSet::pageCount() const noexcept {
-  return static_cast<std::size_t>(std::count_if(
-      pages_.begin(), pages_.end(), [](const auto& page) { return page != nullptr; }));
+  return static_cast<std::size_t>(std::count_if(pages_.begin(), pages_.end(),
+                                                [](const auto& page) { return page != nullptr; }));
 }
 
 void SparseSet::insert(Entity entity) {
@@ -40,7 +40,9 @@ void SparseSet::clear() noexcept {
   dense_.clear();
 }
 
-void SparseSet::reserve(std::size_t capacity) { dense_.reserve(capacity); }
+void SparseSet::reserve(std::size_t capacity) {
+  dense_.reserve(capacity);
+}
 
 void SparseSet::pushBack(Entity entity) {
   ensurePage(entity.index);

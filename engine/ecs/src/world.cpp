@@ -78,7 +78,9 @@ void World::clear() {
   deferred_.clear();
 }
 
-void World::reserveEntities(std::size_t capacity) { slots_.reserve(capacity); }
+void World::reserveEntities(std::size_t capacity) {
+  slots_.reserve(capacity);
+}
 
 void World::flushDeferred() {
   // By index: the list is not touched by destroy(), but this stays correct even if a

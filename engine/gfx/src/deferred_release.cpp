@@ -26,13 +26,20 @@ void DeferredReleaseQueue::collect(std::uint64_t completedValue, VkDevice device
 void DeferredReleaseQueue::destroy(const Entry& entry, VkDevice device, MemoryAllocator& memory) {
   const std::uint64_t h = entry.handle;
   switch (entry.type) {
-    case VK_OBJECT_TYPE_UNKNOWN: break;  // memory only
-    case VK_OBJECT_TYPE_BUFFER: vkDestroyBuffer(device, reinterpret_cast<VkBuffer>(h), nullptr); break;
-    case VK_OBJECT_TYPE_IMAGE: vkDestroyImage(device, reinterpret_cast<VkImage>(h), nullptr); break;
+    case VK_OBJECT_TYPE_UNKNOWN:
+      break;  // memory only
+    case VK_OBJECT_TYPE_BUFFER:
+      vkDestroyBuffer(device, reinterpret_cast<VkBuffer>(h), nullptr);
+      break;
+    case VK_OBJECT_TYPE_IMAGE:
+      vkDestroyImage(device, reinterpret_cast<VkImage>(h), nullptr);
+      break;
     case VK_OBJECT_TYPE_IMAGE_VIEW:
       vkDestroyImageView(device, reinterpret_cast<VkImageView>(h), nullptr);
       break;
-    case VK_OBJECT_TYPE_SAMPLER: vkDestroySampler(device, reinterpret_cast<VkSampler>(h), nullptr); break;
+    case VK_OBJECT_TYPE_SAMPLER:
+      vkDestroySampler(device, reinterpret_cast<VkSampler>(h), nullptr);
+      break;
     case VK_OBJECT_TYPE_PIPELINE:
       vkDestroyPipeline(device, reinterpret_cast<VkPipeline>(h), nullptr);
       break;

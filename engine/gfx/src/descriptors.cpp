@@ -17,12 +17,9 @@ DescriptorArena::~DescriptorArena() {
 VkDescriptorPool DescriptorArena::createPool() {
   // Sized for a frame's worth of passes; more pools are added if a frame needs more.
   const VkDescriptorPoolSize sizes[] = {
-      {VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, 256},
-      {VK_DESCRIPTOR_TYPE_SAMPLED_IMAGE, 256},
-      {VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 256},
-      {VK_DESCRIPTOR_TYPE_SAMPLER, 64},
-      {VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 128},
-      {VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 128},
+      {VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, 256},          {VK_DESCRIPTOR_TYPE_SAMPLED_IMAGE, 256},
+      {VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 256}, {VK_DESCRIPTOR_TYPE_SAMPLER, 64},
+      {VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 128},         {VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 128},
   };
   VkDescriptorPoolCreateInfo info{VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO};
   info.maxSets = 128;

@@ -263,7 +263,9 @@ void Device::release(VkObjectType type, std::uint64_t handle, const Allocation& 
   deferred_.push(type, handle, allocation, lastSubmitted_ + 1);
 }
 
-void Device::collectGarbage() { deferred_.collect(completedValue(), device_, *memory_); }
+void Device::collectGarbage() {
+  deferred_.collect(completedValue(), device_, *memory_);
+}
 
 void Device::setName(VkObjectType type, std::uint64_t handle, const char* name) const {
   if (setObjectName_ == nullptr || handle == 0 || name == nullptr) return;

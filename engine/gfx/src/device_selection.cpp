@@ -11,12 +11,18 @@ namespace {
 
 int typeRank(VkPhysicalDeviceType type) {
   switch (type) {
-    case VK_PHYSICAL_DEVICE_TYPE_DISCRETE_GPU: return 4;
-    case VK_PHYSICAL_DEVICE_TYPE_INTEGRATED_GPU: return 3;
-    case VK_PHYSICAL_DEVICE_TYPE_VIRTUAL_GPU: return 2;
-    case VK_PHYSICAL_DEVICE_TYPE_OTHER: return 1;
-    case VK_PHYSICAL_DEVICE_TYPE_CPU: return 0;
-    default: return 0;
+    case VK_PHYSICAL_DEVICE_TYPE_DISCRETE_GPU:
+      return 4;
+    case VK_PHYSICAL_DEVICE_TYPE_INTEGRATED_GPU:
+      return 3;
+    case VK_PHYSICAL_DEVICE_TYPE_VIRTUAL_GPU:
+      return 2;
+    case VK_PHYSICAL_DEVICE_TYPE_OTHER:
+      return 1;
+    case VK_PHYSICAL_DEVICE_TYPE_CPU:
+      return 0;
+    default:
+      return 0;
   }
 }
 
@@ -29,7 +35,8 @@ std::string lower(std::string text) {
 std::string describe(const std::vector<DeviceCandidate>& candidates) {
   std::string text;
   for (const auto& c : candidates) {
-    text += "\n  - " + c.name + (c.suitable ? " (suitable)" : " (unsuitable: " + c.unsuitableReason + ")");
+    text += "\n  - " + c.name +
+            (c.suitable ? " (suitable)" : " (unsuitable: " + c.unsuitableReason + ")");
   }
   return text.empty() ? "\n  (no Vulkan devices; install mesa-vulkan-drivers for lavapipe)" : text;
 }

@@ -10,15 +10,14 @@
 
 namespace engine::gfx {
 
-ConstantRing::ConstantRing(Device& device, VkDeviceSize capacityBytes,
-                           const std::string& debugName)
-    : buffer_(device, BufferDesc{capacityBytes,
-                                 VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT |
-                                     VK_BUFFER_USAGE_STORAGE_BUFFER_BIT,
-                                 MemoryUsage::Upload, debugName}),
-      alignment_(std::max<VkDeviceSize>(
-          device.properties().limits.minUniformBufferOffsetAlignment,
-          device.properties().limits.minStorageBufferOffsetAlignment)) {}
+ConstantRing::ConstantRing(Device& device, VkDeviceSize capacityBytes, const std::string& debugName)
+    : buffer_(device,
+              BufferDesc{capacityBytes,
+                         VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT | VK_BUFFER_USAGE_STORAGE_BUFFER_BIT,
+                         MemoryUsage::Upload, debugName}),
+      alignment_(
+          std::max<VkDeviceSize>(device.properties().limits.minUniformBufferOffsetAlignment,
+                                 device.properties().limits.minStorageBufferOffsetAlignment)) {}
 
 ConstantRing::Slice ConstantRing::allocate(VkDeviceSize bytes) {
   const VkDeviceSize offset = (head_ + alignment_ - 1) / alignment_ * alignment_;
@@ -46,10 +45,10 @@ FrameRing::FrameRing(Device& device) : device_(device) {
     GFX_CHECK(vkAllocateCommandBuffers(device.vk(), &allocInfo, &slot.cmd));
     setName(device, slot.cmd, ("frame commands" + suffix).c_str());
     slot.descriptors = std::make_unique<DescriptorArena>(device, "frame descriptors" + suffix);
-    slot.timer = std::make_unique<GpuTimer>(device, kMaxTimedScopes,
-                                            ("frame timestamps" + suffix).c_str());
-    slot.constants = std::make_unique<ConstantRing>(device, VkDeviceSize{1} << 20,
-                                                    "frame constants" + suffix);
+    slot.timer =
+        std::make_unique<GpuTimer>(device, kMaxTimedScopes, ("frame timestamps" + suffix).c_str());
+    slot.constants =
+        std::make_unique<ConstantRing>(device, VkDeviceSize{1} << 20, "frame constants" + suffix);
   }
 }
 
@@ -82,8 +81,8 @@ FrameRing::Frame& FrameRing::begin() {
   beginInfo.flags = VK_COMMAND_BUFFER_USAGE_ONE_TIME_SUBMIT_BIT;
   GFX_CHECK(vkBeginCommandBuffer(slot.cmd, &beginInfo));
   recording_ = true;
-  current_ = Frame{nextFrame_, slotIndex, slot.cmd, slot.descriptors.get(), slot.timer.get(),
-                   slot.constants.get()};
+  current_ = Frame{nextFrame_,       slotIndex,           slot.cmd, slot.descriptors.get(),
+                   slot.timer.get(), slot.constants.get()};
   ++nextFrame_;
   return current_;
 }

@@ -26,7 +26,9 @@ GpuTimer::GpuTimer(Device& device, std::uint32_t maxScopes, const char* debugNam
   vkResetQueryPool(device.vk(), pool_, 0, 2 * maxScopes);
 }
 
-GpuTimer::~GpuTimer() { device_.release(VK_OBJECT_TYPE_QUERY_POOL, handleBits(pool_)); }
+GpuTimer::~GpuTimer() {
+  device_.release(VK_OBJECT_TYPE_QUERY_POOL, handleBits(pool_));
+}
 
 void GpuTimer::reset() {
   if (used_ > 0) vkResetQueryPool(device_.vk(), pool_, 0, 2 * used_);
@@ -49,10 +51,9 @@ void GpuTimer::end(VkCommandBuffer cmd, std::uint32_t scope) {
 std::span<const TimedScope> GpuTimer::resolve() {
   resolvedCount_ = 0;
   if (used_ == 0) return {};
-  GFX_CHECK(vkGetQueryPoolResults(device_.vk(), pool_, 0, 2 * used_,
-                                  sizeof(std::uint64_t) * 2 * used_, raw_.data(),
-                                  sizeof(std::uint64_t),
-                                  VK_QUERY_RESULT_64_BIT | VK_QUERY_RESULT_WAIT_BIT));
+  GFX_CHECK(vkGetQueryPoolResults(
+      device_.vk(), pool_, 0, 2 * used_, sizeof(std::uint64_t) * 2 * used_, raw_.data(),
+      sizeof(std::uint64_t), VK_QUERY_RESULT_64_BIT | VK_QUERY_RESULT_WAIT_BIT));
   for (std::uint32_t i = 0; i < used_; ++i) {
     const std::uint64_t start = raw_[2 * i] & validMask_;
     const std::uint64_t stop = raw_[2 * i + 1] & validMask_;

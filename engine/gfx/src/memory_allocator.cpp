@@ -10,7 +10,8 @@ namespace {
 
 VkMemoryPropertyFlags requiredFlags(MemoryUsage usage) {
   switch (usage) {
-    case MemoryUsage::GpuOnly: return 0;
+    case MemoryUsage::GpuOnly:
+      return 0;
     case MemoryUsage::Upload:
     case MemoryUsage::Readback:
       return VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT | VK_MEMORY_PROPERTY_HOST_COHERENT_BIT;
@@ -20,9 +21,12 @@ VkMemoryPropertyFlags requiredFlags(MemoryUsage usage) {
 
 VkMemoryPropertyFlags preferredFlags(MemoryUsage usage) {
   switch (usage) {
-    case MemoryUsage::GpuOnly: return VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT;
-    case MemoryUsage::Upload: return 0;
-    case MemoryUsage::Readback: return VK_MEMORY_PROPERTY_HOST_CACHED_BIT;
+    case MemoryUsage::GpuOnly:
+      return VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT;
+    case MemoryUsage::Upload:
+      return 0;
+    case MemoryUsage::Readback:
+      return VK_MEMORY_PROPERTY_HOST_CACHED_BIT;
   }
   return 0;
 }
@@ -100,8 +104,7 @@ void MemoryAllocator::releaseBlock(std::uint32_t blockIndex) {
 Allocation MemoryAllocator::allocate(const VkMemoryRequirements& requirements, MemoryUsage usage,
                                      ResourceTiling tiling, const char* debugName) {
   std::lock_guard lock(mutex_);
-  const std::uint32_t memoryType =
-      chooseMemoryType(requirements.memoryTypeBits, usage, debugName);
+  const std::uint32_t memoryType = chooseMemoryType(requirements.memoryTypeBits, usage, debugName);
   const VkDeviceSize alignment = requirements.alignment == 0 ? 1 : requirements.alignment;
 
   auto take = [&](std::uint32_t blockIndex) -> std::optional<Allocation> {

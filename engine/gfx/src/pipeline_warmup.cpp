@@ -14,9 +14,12 @@ namespace {
 VkImageType imageTypeFor(VkImageViewType viewType) {
   switch (viewType) {
     case VK_IMAGE_VIEW_TYPE_1D:
-    case VK_IMAGE_VIEW_TYPE_1D_ARRAY: return VK_IMAGE_TYPE_1D;
-    case VK_IMAGE_VIEW_TYPE_3D: return VK_IMAGE_TYPE_3D;
-    default: return VK_IMAGE_TYPE_2D;
+    case VK_IMAGE_VIEW_TYPE_1D_ARRAY:
+      return VK_IMAGE_TYPE_1D;
+    case VK_IMAGE_VIEW_TYPE_3D:
+      return VK_IMAGE_TYPE_3D;
+    default:
+      return VK_IMAGE_TYPE_2D;
   }
 }
 
@@ -36,7 +39,8 @@ void makeStandIns(Device& device, VkCommandBuffer cmd, const Pipeline& pipeline,
                          b.type == VK_DESCRIPTOR_TYPE_SAMPLED_IMAGE ||
                          b.type == VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER;
     VkSampler sampler = VK_NULL_HANDLE;
-    if (b.type == VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER || b.type == VK_DESCRIPTOR_TYPE_SAMPLER) {
+    if (b.type == VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER ||
+        b.type == VK_DESCRIPTOR_TYPE_SAMPLER) {
       SamplerDesc samplerDesc;
       samplerDesc.filter = b.filter;
       samplerDesc.addressMode = b.addressMode;
@@ -97,10 +101,10 @@ void recordGraphicsWarmUp(Device& device, VkCommandBuffer cmd, const Pipeline& p
     desc.debugName = pipeline.name() + " warm-up target";
     standIns.images.emplace_back(device, desc);
     const Image& image = standIns.images.back();
-    imageBarrier(cmd, image.vk(), image.fullRange(), kUndefined,
-                 {VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL,
-                  VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT,
-                  VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT});
+    imageBarrier(
+        cmd, image.vk(), image.fullRange(), kUndefined,
+        {VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL, VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT,
+         VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT});
     VkRenderingAttachmentInfo attachment{VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO};
     attachment.imageView = image.view();
     attachment.imageLayout = VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL;
@@ -116,11 +120,11 @@ void recordGraphicsWarmUp(Device& device, VkCommandBuffer cmd, const Pipeline& p
     desc.debugName = pipeline.name() + " warm-up depth";
     standIns.images.emplace_back(device, desc);
     const Image& image = standIns.images.back();
-    imageBarrier(cmd, image.vk(), image.fullRange(), kUndefined,
-                 {VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL,
-                  VK_PIPELINE_STAGE_2_EARLY_FRAGMENT_TESTS_BIT |
-                      VK_PIPELINE_STAGE_2_LATE_FRAGMENT_TESTS_BIT,
-                  VK_ACCESS_2_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT});
+    imageBarrier(
+        cmd, image.vk(), image.fullRange(), kUndefined,
+        {VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL,
+         VK_PIPELINE_STAGE_2_EARLY_FRAGMENT_TESTS_BIT | VK_PIPELINE_STAGE_2_LATE_FRAGMENT_TESTS_BIT,
+         VK_ACCESS_2_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT});
     depth.imageView = image.view();
     depth.imageLayout = VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL;
     depth.loadOp = VK_ATTACHMENT_LOAD_OP_CLEAR;

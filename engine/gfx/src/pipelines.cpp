@@ -119,7 +119,8 @@ Pipeline::Pipeline(Device& device, const GraphicsPipelineDesc& desc)
 
   VkPipelineVertexInputStateCreateInfo vertexInput{
       VK_STRUCTURE_TYPE_PIPELINE_VERTEX_INPUT_STATE_CREATE_INFO};
-  vertexInput.vertexBindingDescriptionCount = static_cast<std::uint32_t>(desc.vertexBindings.size());
+  vertexInput.vertexBindingDescriptionCount =
+      static_cast<std::uint32_t>(desc.vertexBindings.size());
   vertexInput.pVertexBindingDescriptions = desc.vertexBindings.data();
   vertexInput.vertexAttributeDescriptionCount =
       static_cast<std::uint32_t>(desc.vertexAttributes.size());
@@ -167,7 +168,8 @@ Pipeline::Pipeline(Device& device, const GraphicsPipelineDesc& desc)
   }
   std::vector<VkPipelineColorBlendAttachmentState> blendStates(desc.colorFormats.size(),
                                                                blendState);
-  VkPipelineColorBlendStateCreateInfo blend{VK_STRUCTURE_TYPE_PIPELINE_COLOR_BLEND_STATE_CREATE_INFO};
+  VkPipelineColorBlendStateCreateInfo blend{
+      VK_STRUCTURE_TYPE_PIPELINE_COLOR_BLEND_STATE_CREATE_INFO};
   blend.attachmentCount = static_cast<std::uint32_t>(blendStates.size());
   blend.pAttachments = blendStates.data();
 

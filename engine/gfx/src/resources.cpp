@@ -55,9 +55,12 @@ void Buffer::reset() {
 
 VkImageViewType defaultViewType(VkImageType type, std::uint32_t arrayLayers) {
   switch (type) {
-    case VK_IMAGE_TYPE_1D: return arrayLayers > 1 ? VK_IMAGE_VIEW_TYPE_1D_ARRAY : VK_IMAGE_VIEW_TYPE_1D;
-    case VK_IMAGE_TYPE_3D: return VK_IMAGE_VIEW_TYPE_3D;
-    default: return arrayLayers > 1 ? VK_IMAGE_VIEW_TYPE_2D_ARRAY : VK_IMAGE_VIEW_TYPE_2D;
+    case VK_IMAGE_TYPE_1D:
+      return arrayLayers > 1 ? VK_IMAGE_VIEW_TYPE_1D_ARRAY : VK_IMAGE_VIEW_TYPE_1D;
+    case VK_IMAGE_TYPE_3D:
+      return VK_IMAGE_VIEW_TYPE_3D;
+    default:
+      return arrayLayers > 1 ? VK_IMAGE_VIEW_TYPE_2D_ARRAY : VK_IMAGE_VIEW_TYPE_2D;
   }
 }
 

@@ -76,8 +76,7 @@ void Swapchain::rebuild() {
   VkExtent2D extent = caps.currentExtent;
   if (extent.width == UINT32_MAX) extent = wantedExtent_;
   extent.width = std::clamp(extent.width, caps.minImageExtent.width, caps.maxImageExtent.width);
-  extent.height =
-      std::clamp(extent.height, caps.minImageExtent.height, caps.maxImageExtent.height);
+  extent.height = std::clamp(extent.height, caps.minImageExtent.height, caps.maxImageExtent.height);
   if (extent.width == 0 || extent.height == 0 || wantedExtent_.width == 0 ||
       wantedExtent_.height == 0) {
     // Minimized: no swapchain at 0x0. Keep the old handle destroyed and wait for a size.
@@ -90,8 +89,7 @@ void Swapchain::rebuild() {
   std::uint32_t modeCount = 0;
   vkGetPhysicalDeviceSurfacePresentModesKHR(device_.physical(), surface_, &modeCount, nullptr);
   std::vector<VkPresentModeKHR> modes(modeCount);
-  vkGetPhysicalDeviceSurfacePresentModesKHR(device_.physical(), surface_, &modeCount,
-                                            modes.data());
+  vkGetPhysicalDeviceSurfacePresentModesKHR(device_.physical(), surface_, &modeCount, modes.data());
   VkPresentModeKHR mode = VK_PRESENT_MODE_FIFO_KHR;  // always supported
   if (!vsync_) {
     for (VkPresentModeKHR m : modes) {

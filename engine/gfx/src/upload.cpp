@@ -15,7 +15,8 @@ VkDeviceSize imageBytes(const Image& image) {
 
 VkBufferImageCopy wholeMip0(const Image& image) {
   VkBufferImageCopy region{};
-  region.imageSubresource = {aspectMask(image.format()) & ~VkImageAspectFlags{VK_IMAGE_ASPECT_STENCIL_BIT}, 0, 0, 1};
+  region.imageSubresource = {
+      aspectMask(image.format()) & ~VkImageAspectFlags{VK_IMAGE_ASPECT_STENCIL_BIT}, 0, 0, 1};
   region.imageExtent = image.extent();
   return region;
 }
@@ -59,13 +60,13 @@ void uploadToImage(Device& device, const Image& destination, std::span<const std
 std::vector<std::byte> readbackImage(Device& device, const Image& source,
                                      const ImageState& currentState) {
   const VkDeviceSize bytes = imageBytes(source);
-  Buffer staging(device, BufferDesc{bytes, VK_BUFFER_USAGE_TRANSFER_DST_BIT,
-                                    MemoryUsage::Readback, "staging image readback"});
+  Buffer staging(device, BufferDesc{bytes, VK_BUFFER_USAGE_TRANSFER_DST_BIT, MemoryUsage::Readback,
+                                    "staging image readback"});
   device.immediateSubmit([&](VkCommandBuffer cmd) {
     imageBarrier(cmd, source.vk(), source.fullRange(), currentState, kTransferSrc);
     const VkBufferImageCopy region = wholeMip0(source);
-    vkCmdCopyImageToBuffer(cmd, source.vk(), VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, staging.vk(),
-                           1, &region);
+    vkCmdCopyImageToBuffer(cmd, source.vk(), VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, staging.vk(), 1,
+                           &region);
     // Back to the caller's layout; an undefined "current" state has no layout to return to.
     ImageState back = currentState;
     if (back.layout == VK_IMAGE_LAYOUT_UNDEFINED) back = kTransferSrc;

@@ -7,7 +7,8 @@ namespace engine::gfx {
 const char* resultName(VkResult result) {
   switch (result) {
 #define GFX_RESULT_CASE(r) \
-  case r: return #r;
+  case r:                  \
+    return #r;
     GFX_RESULT_CASE(VK_SUCCESS)
     GFX_RESULT_CASE(VK_NOT_READY)
     GFX_RESULT_CASE(VK_TIMEOUT)
@@ -30,13 +31,14 @@ const char* resultName(VkResult result) {
     GFX_RESULT_CASE(VK_ERROR_NATIVE_WINDOW_IN_USE_KHR)
     GFX_RESULT_CASE(VK_ERROR_OUT_OF_DATE_KHR)
 #undef GFX_RESULT_CASE
-    default: return "VkResult(unknown)";
+    default:
+      return "VkResult(unknown)";
   }
 }
 
 void throwVulkanError(VkResult result, const char* expression, const char* file, int line) {
-  throw VulkanError(std::string(expression) + " failed with " + resultName(result) + " at " +
-                        file + ":" + std::to_string(line),
+  throw VulkanError(std::string(expression) + " failed with " + resultName(result) + " at " + file +
+                        ":" + std::to_string(line),
                     result);
 }
 

@@ -4,12 +4,11 @@ namespace engine::platform {
 namespace {
 
 constexpr const char* kNames[] = {
-    "W", "A", "S", "D", "Q", "E", "R", "F", "T", "G", "H", "P", "C", "V", "B", "N", "M",
-    "Up", "Down", "Left", "Right",
-    "Space", "LeftShift", "LeftControl", "Tab", "Escape", "Enter",
-    "1", "2", "3", "4", "5", "6", "7", "8", "9", "0",
-    "-", "=", "[", "]",
-    "F1", "F2", "F3", "F4", "F5", "F12",
+    "W",     "A",     "S",         "D",           "Q",   "E",      "R",     "F",  "T",    "G",
+    "H",     "P",     "C",         "V",           "B",   "N",      "M",     "Up", "Down", "Left",
+    "Right", "Space", "LeftShift", "LeftControl", "Tab", "Escape", "Enter", "1",  "2",    "3",
+    "4",     "5",     "6",         "7",           "8",   "9",      "0",     "-",  "=",    "[",
+    "]",     "F1",    "F2",        "F3",          "F4",  "F5",     "F12",
 };
 static_assert(std::size(kNames) == static_cast<std::size_t>(Key::Count),
               "every key needs a script name");

@@ -16,45 +16,84 @@ std::optional<Key> mapKey(int key) {
     return static_cast<Key>(static_cast<int>(Key::Num1) + (key - GLFW_KEY_1));
   }
   switch (key) {
-    case GLFW_KEY_W: return Key::W;
-    case GLFW_KEY_A: return Key::A;
-    case GLFW_KEY_S: return Key::S;
-    case GLFW_KEY_D: return Key::D;
-    case GLFW_KEY_Q: return Key::Q;
-    case GLFW_KEY_E: return Key::E;
-    case GLFW_KEY_R: return Key::R;
-    case GLFW_KEY_F: return Key::F;
-    case GLFW_KEY_T: return Key::T;
-    case GLFW_KEY_G: return Key::G;
-    case GLFW_KEY_H: return Key::H;
-    case GLFW_KEY_P: return Key::P;
-    case GLFW_KEY_C: return Key::C;
-    case GLFW_KEY_V: return Key::V;
-    case GLFW_KEY_B: return Key::B;
-    case GLFW_KEY_N: return Key::N;
-    case GLFW_KEY_M: return Key::M;
-    case GLFW_KEY_UP: return Key::Up;
-    case GLFW_KEY_DOWN: return Key::Down;
-    case GLFW_KEY_LEFT: return Key::Left;
-    case GLFW_KEY_RIGHT: return Key::Right;
-    case GLFW_KEY_SPACE: return Key::Space;
-    case GLFW_KEY_LEFT_SHIFT: return Key::LeftShift;
-    case GLFW_KEY_LEFT_CONTROL: return Key::LeftControl;
-    case GLFW_KEY_TAB: return Key::Tab;
-    case GLFW_KEY_ESCAPE: return Key::Escape;
-    case GLFW_KEY_ENTER: return Key::Enter;
-    case GLFW_KEY_0: return Key::Num0;
-    case GLFW_KEY_MINUS: return Key::Minus;
-    case GLFW_KEY_EQUAL: return Key::Equal;
-    case GLFW_KEY_LEFT_BRACKET: return Key::LeftBracket;
-    case GLFW_KEY_RIGHT_BRACKET: return Key::RightBracket;
-    case GLFW_KEY_F1: return Key::F1;
-    case GLFW_KEY_F2: return Key::F2;
-    case GLFW_KEY_F3: return Key::F3;
-    case GLFW_KEY_F4: return Key::F4;
-    case GLFW_KEY_F5: return Key::F5;
-    case GLFW_KEY_F12: return Key::F12;
-    default: return std::nullopt;
+    case GLFW_KEY_W:
+      return Key::W;
+    case GLFW_KEY_A:
+      return Key::A;
+    case GLFW_KEY_S:
+      return Key::S;
+    case GLFW_KEY_D:
+      return Key::D;
+    case GLFW_KEY_Q:
+      return Key::Q;
+    case GLFW_KEY_E:
+      return Key::E;
+    case GLFW_KEY_R:
+      return Key::R;
+    case GLFW_KEY_F:
+      return Key::F;
+    case GLFW_KEY_T:
+      return Key::T;
+    case GLFW_KEY_G:
+      return Key::G;
+    case GLFW_KEY_H:
+      return Key::H;
+    case GLFW_KEY_P:
+      return Key::P;
+    case GLFW_KEY_C:
+      return Key::C;
+    case GLFW_KEY_V:
+      return Key::V;
+    case GLFW_KEY_B:
+      return Key::B;
+    case GLFW_KEY_N:
+      return Key::N;
+    case GLFW_KEY_M:
+      return Key::M;
+    case GLFW_KEY_UP:
+      return Key::Up;
+    case GLFW_KEY_DOWN:
+      return Key::Down;
+    case GLFW_KEY_LEFT:
+      return Key::Left;
+    case GLFW_KEY_RIGHT:
+      return Key::Right;
+    case GLFW_KEY_SPACE:
+      return Key::Space;
+    case GLFW_KEY_LEFT_SHIFT:
+      return Key::LeftShift;
+    case GLFW_KEY_LEFT_CONTROL:
+      return Key::LeftControl;
+    case GLFW_KEY_TAB:
+      return Key::Tab;
+    case GLFW_KEY_ESCAPE:
+      return Key::Escape;
+    case GLFW_KEY_ENTER:
+      return Key::Enter;
+    case GLFW_KEY_0:
+      return Key::Num0;
+    case GLFW_KEY_MINUS:
+      return Key::Minus;
+    case GLFW_KEY_EQUAL:
+      return Key::Equal;
+    case GLFW_KEY_LEFT_BRACKET:
+      return Key::LeftBracket;
+    case GLFW_KEY_RIGHT_BRACKET:
+      return Key::RightBracket;
+    case GLFW_KEY_F1:
+      return Key::F1;
+    case GLFW_KEY_F2:
+      return Key::F2;
+    case GLFW_KEY_F3:
+      return Key::F3;
+    case GLFW_KEY_F4:
+      return Key::F4;
+    case GLFW_KEY_F5:
+      return Key::F5;
+    case GLFW_KEY_F12:
+      return Key::F12;
+    default:
+      return std::nullopt;
   }
 }
 
@@ -136,8 +175,12 @@ void Window::pollEvents() {
   haveMouse_ = true;
 }
 
-bool Window::shouldClose() const { return glfwWindowShouldClose(window_) == GLFW_TRUE; }
-void Window::requestClose() { glfwSetWindowShouldClose(window_, GLFW_TRUE); }
+bool Window::shouldClose() const {
+  return glfwWindowShouldClose(window_) == GLFW_TRUE;
+}
+void Window::requestClose() {
+  glfwSetWindowShouldClose(window_, GLFW_TRUE);
+}
 
 VkExtent2D Window::framebufferExtent() const {
   int width = 0;
@@ -153,7 +196,9 @@ bool Window::minimized() const {
          glfwGetWindowAttrib(window_, GLFW_ICONIFIED) == GLFW_TRUE;
 }
 
-void Window::setTitle(const std::string& title) { glfwSetWindowTitle(window_, title.c_str()); }
+void Window::setTitle(const std::string& title) {
+  glfwSetWindowTitle(window_, title.c_str());
+}
 
 void Window::setSize(std::uint32_t width, std::uint32_t height) {
   glfwSetWindowSize(window_, static_cast<int>(width), static_cast<int>(height));

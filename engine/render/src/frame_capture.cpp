@@ -17,14 +17,14 @@ void FrameCapture::ensureBuffers(VkExtent2D extent, VkFormat displayFormat, VkFo
     return;
   }
   const VkDeviceSize pixels = VkDeviceSize{extent.width} * extent.height;
-  displayBuffer_ = gfx::Buffer(device_, gfx::BufferDesc{pixels * gfx::texelBytes(displayFormat),
-                                                        VK_BUFFER_USAGE_TRANSFER_DST_BIT,
-                                                        gfx::MemoryUsage::Readback,
-                                                        "capture display readback"});
-  hdrBuffer_ = gfx::Buffer(device_, gfx::BufferDesc{pixels * gfx::texelBytes(hdrFormat),
-                                                    VK_BUFFER_USAGE_TRANSFER_DST_BIT,
-                                                    gfx::MemoryUsage::Readback,
-                                                    "capture hdr readback"});
+  displayBuffer_ =
+      gfx::Buffer(device_, gfx::BufferDesc{pixels * gfx::texelBytes(displayFormat),
+                                           VK_BUFFER_USAGE_TRANSFER_DST_BIT,
+                                           gfx::MemoryUsage::Readback, "capture display readback"});
+  hdrBuffer_ =
+      gfx::Buffer(device_, gfx::BufferDesc{pixels * gfx::texelBytes(hdrFormat),
+                                           VK_BUFFER_USAGE_TRANSFER_DST_BIT,
+                                           gfx::MemoryUsage::Readback, "capture hdr readback"});
   extent_ = extent;
   displayFormat_ = displayFormat;
   hdrFormat_ = hdrFormat;
@@ -68,14 +68,16 @@ void FrameCapture::addToGraph(FrameGraph& graph, TextureHandle hdr, TextureHandl
                                VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
                                context.buffer(d.displayBuffer), 1, &region);
         vkCmdCopyImageToBuffer(context.cmd(), context.image(d.hdr),
-                               VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, context.buffer(d.hdrBuffer),
-                               1, &region);
+                               VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, context.buffer(d.hdrBuffer), 1,
+                               &region);
         inFlight_ = std::move(armed_);
         armed_.reset();
       });
 }
 
-void FrameCapture::arm(std::filesystem::path stem) { armed_ = std::move(stem); }
+void FrameCapture::arm(std::filesystem::path stem) {
+  armed_ = std::move(stem);
+}
 
 std::optional<std::filesystem::path> FrameCapture::writePending() {
   if (!inFlight_) return std::nullopt;
@@ -85,8 +87,8 @@ std::optional<std::filesystem::path> FrameCapture::writePending() {
   display_.height = extent_.height;
   display_.pixels.resize(pixels * 4);
   const auto* bytes = reinterpret_cast<const std::uint8_t*>(displayBuffer_.mapped());
-  const bool bgra = displayFormat_ == VK_FORMAT_B8G8R8A8_SRGB ||
-                    displayFormat_ == VK_FORMAT_B8G8R8A8_UNORM;
+  const bool bgra =
+      displayFormat_ == VK_FORMAT_B8G8R8A8_SRGB || displayFormat_ == VK_FORMAT_B8G8R8A8_UNORM;
   for (std::size_t i = 0; i < pixels; ++i) {
     display_.pixels[4 * i + 0] = bytes[4 * i + (bgra ? 2 : 0)];
     display_.pixels[4 * i + 1] = bytes[4 * i + 1];

@@ -12,15 +12,21 @@ namespace engine::render {
 
 // --- PassContext -------------------------------------------------------------------------
 
-VkImage PassContext::image(TextureHandle h) const { return graph_->vkImage(h.index); }
-VkImageView PassContext::view(TextureHandle h) const { return graph_->vkView(h.index); }
+VkImage PassContext::image(TextureHandle h) const {
+  return graph_->vkImage(h.index);
+}
+VkImageView PassContext::view(TextureHandle h) const {
+  return graph_->vkView(h.index);
+}
 VkExtent3D PassContext::extent(TextureHandle h) const {
   return graph_->resourceOf(h.index, true).textureDesc.extent;
 }
 VkFormat PassContext::format(TextureHandle h) const {
   return graph_->resourceOf(h.index, true).textureDesc.format;
 }
-VkBuffer PassContext::buffer(BufferHandle h) const { return graph_->vkBuffer(h.index); }
+VkBuffer PassContext::buffer(BufferHandle h) const {
+  return graph_->vkBuffer(h.index);
+}
 
 void PassContext::bind(const gfx::Pipeline& pipeline, const gfx::DescriptorWriter& writer) const {
   gfx::bindPipeline(*device_, cmd(), pipeline, descriptors(), writer);
@@ -106,7 +112,9 @@ void PassBuilder::depthReadOnlyAttachment(TextureHandle texture) {
   pass.attachments.push_back(attachment);
 }
 
-void PassBuilder::sideEffect() { graph_.passes_[pass_].sideEffect = true; }
+void PassBuilder::sideEffect() {
+  graph_.passes_[pass_].sideEffect = true;
+}
 
 // --- FrameGraph: building ----------------------------------------------------------------
 
@@ -147,9 +155,9 @@ FrameGraph::Use FrameGraph::recordUse(std::uint16_t pass, std::uint16_t resource
     require(isTextureAccess(access), context, std::string("buffer access on texture ") + r.name);
     r.imageUsage |= imageUsageFor(access);
   } else {
-    require(!isTextureAccess(access) || access == Access::TransferSrc ||
-                access == Access::TransferDst,
-            context, std::string("texture access on buffer ") + r.name);
+    require(
+        !isTextureAccess(access) || access == Access::TransferSrc || access == Access::TransferDst,
+        context, std::string("texture access on buffer ") + r.name);
     r.bufferUsage |= bufferUsageFor(access);
   }
   Use use{resource, version, access};
@@ -217,9 +225,15 @@ VkBuffer FrameGraph::vkBuffer(std::uint16_t resource) const {
   return r.imported ? r.importedBuffer.buffer : r.ownedBuffer.vk();
 }
 
-VkImage FrameGraph::image(TextureHandle h) const { return vkImage(h.index); }
-VkImageView FrameGraph::view(TextureHandle h) const { return vkView(h.index); }
-VkBuffer FrameGraph::buffer(BufferHandle h) const { return vkBuffer(h.index); }
+VkImage FrameGraph::image(TextureHandle h) const {
+  return vkImage(h.index);
+}
+VkImageView FrameGraph::view(TextureHandle h) const {
+  return vkView(h.index);
+}
+VkBuffer FrameGraph::buffer(BufferHandle h) const {
+  return vkBuffer(h.index);
+}
 const TextureDesc& FrameGraph::textureDesc(TextureHandle h) const {
   return resources_.at(h.index).textureDesc;
 }
@@ -262,8 +276,8 @@ void FrameGraph::beginRendering(VkCommandBuffer cmd, Pass& pass) const {
   info.pColorAttachments = pass.colorInfos.data();
   info.pDepthAttachment = hasDepth ? &pass.depthInfo : nullptr;
   vkCmdBeginRendering(cmd, &info);
-  const VkViewport viewport{0.0f, 0.0f, static_cast<float>(extent.width),
-                            static_cast<float>(extent.height), 0.0f, 1.0f};
+  const VkViewport viewport{
+      0.0f, 0.0f, static_cast<float>(extent.width), static_cast<float>(extent.height), 0.0f, 1.0f};
   const VkRect2D scissor{{0, 0}, {extent.width, extent.height}};
   vkCmdSetViewport(cmd, 0, 1, &viewport);
   vkCmdSetScissor(cmd, 0, 1, &scissor);

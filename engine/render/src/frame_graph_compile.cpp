@@ -21,9 +21,9 @@ constexpr VkAccessFlags2 kWriteAccessBits =
 // Per-resource synchronisation state while walking the passes in execution order.
 struct Track {
   VkImageLayout layout = VK_IMAGE_LAYOUT_UNDEFINED;
-  VkPipelineStageFlags2 writeStages = VK_PIPELINE_STAGE_2_NONE;  // last write (or transition)
-  VkAccessFlags2 writeAccess = VK_ACCESS_2_NONE;                 // its write accesses
-  VkPipelineStageFlags2 readStages = VK_PIPELINE_STAGE_2_NONE;   // reads since then
+  VkPipelineStageFlags2 writeStages = VK_PIPELINE_STAGE_2_NONE;    // last write (or transition)
+  VkAccessFlags2 writeAccess = VK_ACCESS_2_NONE;                   // its write accesses
+  VkPipelineStageFlags2 readStages = VK_PIPELINE_STAGE_2_NONE;     // reads since then
   VkPipelineStageFlags2 visibleStages = VK_PIPELINE_STAGE_2_NONE;  // stages that see the write
 };
 
@@ -49,9 +49,9 @@ std::optional<CompiledBarrier> advance(Track& track, const MergedUse& use, bool 
   } else if (track.writeStages != VK_PIPELINE_STAGE_2_NONE &&
              (to.stages & ~track.visibleStages) != 0) {
     // A read in a stage that has not yet been made to see the last write.
-    barrier = CompiledBarrier{use.resource, texture,
-                              ResourceState{track.layout, track.writeStages, track.writeAccess},
-                              to};
+    barrier =
+        CompiledBarrier{use.resource, texture,
+                        ResourceState{track.layout, track.writeStages, track.writeAccess}, to};
   }
   if (layoutChange || use.write) {
     track.writeStages = to.stages;
@@ -154,8 +154,8 @@ void FrameGraph::order() {
       }
     }
     for (const Use& w : passes_[p].writes) {
-      const std::pair<std::uint16_t, std::uint16_t> previous{w.resource,
-                                                             static_cast<std::uint16_t>(w.version - 1)};
+      const std::pair<std::uint16_t, std::uint16_t> previous{
+          w.resource, static_cast<std::uint16_t>(w.version - 1)};
       if (auto it = producer.find(previous); it != producer.end()) addEdge(it->second, p);
       if (auto it = readersOf.find(previous); it != readersOf.end()) {
         for (std::uint16_t reader : it->second) addEdge(reader, p);
@@ -234,7 +234,8 @@ void FrameGraph::computeBarriers() {
     const Track& t = tracks[i];
     const bool layoutChange = r.texture && t.layout != final->layout;
     const VkPipelineStageFlags2 src = t.writeStages | t.readStages;
-    if (!layoutChange && (src == VK_PIPELINE_STAGE_2_NONE || final->stages == VK_PIPELINE_STAGE_2_NONE)) {
+    if (!layoutChange &&
+        (src == VK_PIPELINE_STAGE_2_NONE || final->stages == VK_PIPELINE_STAGE_2_NONE)) {
       continue;
     }
     finalBarriers_.push_back(
@@ -281,8 +282,8 @@ void FrameGraph::fillVulkanBarriers(std::span<const CompiledBarrier> barriers,
       barrier.newLayout = b.to.layout;
       barrier.srcQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
       barrier.dstQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
-      barrier.subresourceRange = {gfx::aspectMask(r.textureDesc.format), 0,
-                                  r.textureDesc.mipLevels, 0, r.textureDesc.arrayLayers};
+      barrier.subresourceRange = {gfx::aspectMask(r.textureDesc.format), 0, r.textureDesc.mipLevels,
+                                  0, r.textureDesc.arrayLayers};
       images.push_back(barrier);
     } else {
       VkBufferMemoryBarrier2 barrier{VK_STRUCTURE_TYPE_BUFFER_MEMORY_BARRIER_2};

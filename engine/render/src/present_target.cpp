@@ -3,12 +3,15 @@
 namespace engine::render {
 
 OffscreenTarget::OffscreenTarget(gfx::Device& device, VkExtent2D extent, VkFormat format)
-    : image_(device, gfx::ImageDesc{VK_IMAGE_TYPE_2D, format, {extent.width, extent.height, 1}, 1,
-                                    1,
-                                    VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT |
-                                        VK_IMAGE_USAGE_TRANSFER_SRC_BIT |
-                                        VK_IMAGE_USAGE_SAMPLED_BIT,
-                                    "offscreen target"}) {}
+    : image_(device,
+             gfx::ImageDesc{VK_IMAGE_TYPE_2D,
+                            format,
+                            {extent.width, extent.height, 1},
+                            1,
+                            1,
+                            VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT |
+                                VK_IMAGE_USAGE_SAMPLED_BIT,
+                            "offscreen target"}) {}
 
 ImportedTexture OffscreenTarget::describe() const {
   ImportedTexture texture;
@@ -42,9 +45,8 @@ ImportedTexture SwapchainTarget::describe() const {
   texture.desc.format = swapchain_.format();
   // The acquire semaphore wait is at COLOR_ATTACHMENT_OUTPUT: the first use must depend on
   // that stage so the layout transition happens after the image is really ours.
-  texture.initial = ResourceState{VK_IMAGE_LAYOUT_UNDEFINED,
-                                  VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT,
-                                  VK_ACCESS_2_NONE};
+  texture.initial = ResourceState{
+      VK_IMAGE_LAYOUT_UNDEFINED, VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT, VK_ACCESS_2_NONE};
   texture.final = ResourceState{VK_IMAGE_LAYOUT_PRESENT_SRC_KHR,
                                 VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT, VK_ACCESS_2_NONE};
   return texture;

@@ -5,10 +5,12 @@ namespace {
 
 VkPipelineStageFlags2 shaderStages(PassType type) {
   switch (type) {
-    case PassType::Compute: return VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT;
+    case PassType::Compute:
+      return VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT;
     case PassType::Graphics:
       return VK_PIPELINE_STAGE_2_VERTEX_SHADER_BIT | VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT;
-    case PassType::Transfer: return VK_PIPELINE_STAGE_2_TRANSFER_BIT;
+    case PassType::Transfer:
+      return VK_PIPELINE_STAGE_2_TRANSFER_BIT;
   }
   return VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT;
 }
@@ -24,8 +26,10 @@ bool isWrite(Access access) {
     case Access::ColorAttachment:
     case Access::DepthAttachment:
     case Access::TransferDst:
-    case Access::StorageBufferWrite: return true;
-    default: return false;
+    case Access::StorageBufferWrite:
+      return true;
+    default:
+      return false;
   }
 }
 
@@ -35,10 +39,13 @@ bool isTextureAccess(Access access) {
     case Access::StorageBufferRead:
     case Access::StorageBufferWrite:
     case Access::VertexRead:
-    case Access::IndexRead: return false;
+    case Access::IndexRead:
+      return false;
     case Access::TransferSrc:
-    case Access::TransferDst: return true;  // also valid on buffers; see stateFor
-    default: return true;
+    case Access::TransferDst:
+      return true;  // also valid on buffers; see stateFor
+    default:
+      return true;
   }
 }
 
@@ -89,46 +96,73 @@ ResourceState stateFor(Access access, PassType type, bool depthFormat) {
 
 VkImageUsageFlags imageUsageFor(Access access) {
   switch (access) {
-    case Access::SampledRead: return VK_IMAGE_USAGE_SAMPLED_BIT;
+    case Access::SampledRead:
+      return VK_IMAGE_USAGE_SAMPLED_BIT;
     case Access::StorageRead:
-    case Access::StorageWrite: return VK_IMAGE_USAGE_STORAGE_BIT;
-    case Access::ColorAttachment: return VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT;
+    case Access::StorageWrite:
+      return VK_IMAGE_USAGE_STORAGE_BIT;
+    case Access::ColorAttachment:
+      return VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT;
     case Access::DepthAttachment:
-    case Access::DepthReadOnlyAttachment: return VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT;
-    case Access::TransferSrc: return VK_IMAGE_USAGE_TRANSFER_SRC_BIT;
-    case Access::TransferDst: return VK_IMAGE_USAGE_TRANSFER_DST_BIT;
-    default: return 0;
+    case Access::DepthReadOnlyAttachment:
+      return VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT;
+    case Access::TransferSrc:
+      return VK_IMAGE_USAGE_TRANSFER_SRC_BIT;
+    case Access::TransferDst:
+      return VK_IMAGE_USAGE_TRANSFER_DST_BIT;
+    default:
+      return 0;
   }
 }
 
 VkBufferUsageFlags bufferUsageFor(Access access) {
   switch (access) {
-    case Access::UniformRead: return VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT;
+    case Access::UniformRead:
+      return VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT;
     case Access::StorageBufferRead:
-    case Access::StorageBufferWrite: return VK_BUFFER_USAGE_STORAGE_BUFFER_BIT;
-    case Access::VertexRead: return VK_BUFFER_USAGE_VERTEX_BUFFER_BIT;
-    case Access::IndexRead: return VK_BUFFER_USAGE_INDEX_BUFFER_BIT;
-    case Access::TransferSrc: return VK_BUFFER_USAGE_TRANSFER_SRC_BIT;
-    case Access::TransferDst: return VK_BUFFER_USAGE_TRANSFER_DST_BIT;
-    default: return 0;
+    case Access::StorageBufferWrite:
+      return VK_BUFFER_USAGE_STORAGE_BUFFER_BIT;
+    case Access::VertexRead:
+      return VK_BUFFER_USAGE_VERTEX_BUFFER_BIT;
+    case Access::IndexRead:
+      return VK_BUFFER_USAGE_INDEX_BUFFER_BIT;
+    case Access::TransferSrc:
+      return VK_BUFFER_USAGE_TRANSFER_SRC_BIT;
+    case Access::TransferDst:
+      return VK_BUFFER_USAGE_TRANSFER_DST_BIT;
+    default:
+      return 0;
   }
 }
 
 const char* accessName(Access access) {
   switch (access) {
-    case Access::SampledRead: return "SampledRead";
-    case Access::StorageRead: return "StorageRead";
-    case Access::StorageWrite: return "StorageWrite";
-    case Access::ColorAttachment: return "ColorAttachment";
-    case Access::DepthAttachment: return "DepthAttachment";
-    case Access::DepthReadOnlyAttachment: return "DepthReadOnlyAttachment";
-    case Access::TransferSrc: return "TransferSrc";
-    case Access::TransferDst: return "TransferDst";
-    case Access::UniformRead: return "UniformRead";
-    case Access::StorageBufferRead: return "StorageBufferRead";
-    case Access::StorageBufferWrite: return "StorageBufferWrite";
-    case Access::VertexRead: return "VertexRead";
-    case Access::IndexRead: return "IndexRead";
+    case Access::SampledRead:
+      return "SampledRead";
+    case Access::StorageRead:
+      return "StorageRead";
+    case Access::StorageWrite:
+      return "StorageWrite";
+    case Access::ColorAttachment:
+      return "ColorAttachment";
+    case Access::DepthAttachment:
+      return "DepthAttachment";
+    case Access::DepthReadOnlyAttachment:
+      return "DepthReadOnlyAttachment";
+    case Access::TransferSrc:
+      return "TransferSrc";
+    case Access::TransferDst:
+      return "TransferDst";
+    case Access::UniformRead:
+      return "UniformRead";
+    case Access::StorageBufferRead:
+      return "StorageBufferRead";
+    case Access::StorageBufferWrite:
+      return "StorageBufferWrite";
+    case Access::VertexRead:
+      return "VertexRead";
+    case Access::IndexRead:
+      return "IndexRead";
   }
   return "?";
 }

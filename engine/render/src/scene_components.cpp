@@ -4,8 +4,12 @@
 
 namespace engine::render {
 
-glm::dvec3 forwardOf(const Camera& camera) { return camera.orientation * glm::dvec3(0, 0, -1); }
-glm::dvec3 upOf(const Camera& camera) { return camera.orientation * glm::dvec3(0, 1, 0); }
+glm::dvec3 forwardOf(const Camera& camera) {
+  return camera.orientation * glm::dvec3(0, 0, -1);
+}
+glm::dvec3 upOf(const Camera& camera) {
+  return camera.orientation * glm::dvec3(0, 1, 0);
+}
 
 glm::mat4 viewRotation(const Camera& camera) {
   return lookTo(glm::vec3(0.0f), glm::vec3(forwardOf(camera)), glm::vec3(upOf(camera)));

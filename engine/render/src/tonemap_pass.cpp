@@ -14,8 +14,8 @@ Tonemapper::Tonemapper(gfx::Device& device, VkFormat hdrFormat, VkFormat targetF
   gfx::GraphicsPipelineDesc desc;
   desc.vertexSpirv = fullscreen_vert_spv;
   desc.fragmentSpirv = tonemap_frag_spv;
-  desc.bindings = {{0, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, hdrFormat,
-                    VK_IMAGE_VIEW_TYPE_2D, VK_FILTER_NEAREST}};
+  desc.bindings = {{0, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, hdrFormat, VK_IMAGE_VIEW_TYPE_2D,
+                    VK_FILTER_NEAREST}};
   desc.pushConstantBytes = sizeof(shaders::TonemapConstants);
   desc.colorFormats = {targetFormat};
   desc.debugName = "tonemap";

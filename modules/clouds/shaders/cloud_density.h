@@ -55,13 +55,13 @@ CLOUDS_INLINE WeatherSample decodeWeather(vec4 texel, IN(CloudUniforms) u) {
 CLOUDS_INLINE float baseDensity(vec4 shapeNoise, float heightFraction, IN(WeatherSample) w,
                                 float anvilBias) {
   if (heightFraction < 0.0f || heightFraction > 1.0f) return 0.0f;
-  const float lowFrequencyFbm = dot(vec3(shapeNoise.y, shapeNoise.z, shapeNoise.w),
-                                    vec3(0.625f, 0.25f, 0.125f));
+  const float lowFrequencyFbm =
+      dot(vec3(shapeNoise.y, shapeNoise.z, shapeNoise.w), vec3(0.625f, 0.25f, 0.125f));
   float base = remap(shapeNoise.x, lowFrequencyFbm - 1.0f, 1.0f, 0.0f, 1.0f);
   base *= heightGradient(heightFraction, w.type);
   // Anvil: raise coverage towards the top of the layer.
-  const float anvilExponent = remapClamped(heightFraction, 0.7f, 0.8f, 1.0f,
-                                           mix(1.0f, 0.5f, saturate(anvilBias)));
+  const float anvilExponent =
+      remapClamped(heightFraction, 0.7f, 0.8f, 1.0f, mix(1.0f, 0.5f, saturate(anvilBias)));
   const float coverage = pow(saturate(w.coverage), anvilExponent);
   // Coverage as erosion: only noise above (1 - coverage) survives, rescaled.
   base = remap(base, 1.0f - coverage, 1.0f, 0.0f, 1.0f) * coverage;
@@ -71,8 +71,8 @@ CLOUDS_INLINE float baseDensity(vec4 shapeNoise, float heightFraction, IN(Weathe
 // Erodes a base density by the high-frequency detail noise (wispy low, billowy high).
 CLOUDS_INLINE float erodeDensity(float base, vec4 detailNoise, float heightFraction,
                                  float erosion) {
-  const float fbm = dot(vec3(detailNoise.x, detailNoise.y, detailNoise.z),
-                        vec3(0.625f, 0.25f, 0.125f));
+  const float fbm =
+      dot(vec3(detailNoise.x, detailNoise.y, detailNoise.z), vec3(0.625f, 0.25f, 0.125f));
   const float modifier = mix(fbm, 1.0f - fbm, saturate(heightFraction * 10.0f));
   return saturate(remap(base, modifier * erosion, 1.0f, 0.0f, 1.0f));
 }

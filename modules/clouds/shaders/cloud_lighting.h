@@ -45,8 +45,8 @@ CLOUDS_INLINE float directScattering(float lightOpticalDepth, float cosTheta, IN
 // cloud around the sample) and at cloud bases. `localOpticalDepth` is the coarse extinction
 // times a short distance (CloudUniforms.inScatterDepthMetres): ~0 at edges, >= 1 inside. In [0, 1].
 CLOUDS_INLINE float inScatterProbability(float localOpticalDepth, float heightFraction) {
-  const float depthProbability =
-      0.05f + pow(saturate(localOpticalDepth), remapClamped(heightFraction, 0.3f, 0.85f, 0.5f, 2.0f));
+  const float depthProbability = 0.05f + pow(saturate(localOpticalDepth),
+                                             remapClamped(heightFraction, 0.3f, 0.85f, 0.5f, 2.0f));
   const float verticalProbability =
       pow(remapClamped(heightFraction, 0.07f, 0.14f, 0.1f, 1.0f), 0.8f);
   return saturate(depthProbability * verticalProbability);
@@ -56,8 +56,8 @@ CLOUDS_INLINE float inScatterProbability(float localOpticalDepth, float heightFr
 // the albedo). `coarseDensity` is the low-frequency density in [0, 1], `coarseExtinction` its
 // extinction (1/m).
 CLOUDS_INLINE vec3 sampleRadiance(float lightOpticalDepth, float cosTheta, float coarseDensity,
-                                  float coarseExtinction, float heightFraction,
-                                  IN(CloudUniforms) u, uint multipleScattering) {
+                                  float coarseExtinction, float heightFraction, IN(CloudUniforms) u,
+                                  uint multipleScattering) {
   const float direct = directScattering(lightOpticalDepth, cosTheta, u, multipleScattering);
   const float localOpticalDepth = coarseExtinction * u.inScatterDepthMetres;
   const float inScatter = mix(1.0f, inScatterProbability(localOpticalDepth, heightFraction),
@@ -66,7 +66,8 @@ CLOUDS_INLINE vec3 sampleRadiance(float lightOpticalDepth, float cosTheta, float
   const vec3 sky = mix(u.ambientBottom, u.ambientTop, saturate(heightFraction));
   // Nubis 2022 ambient scattering: pow(1 - profile, 0.5) darkens the inside of dense cloud.
   const float occlusion = sqrt(saturate(1.0f - coarseDensity));
-  const vec3 ambient = sky * (u.ambientStrength * mix(1.0f, occlusion, saturate(u.ambientOcclusionStrength)));
+  const vec3 ambient =
+      sky * (u.ambientStrength * mix(1.0f, occlusion, saturate(u.ambientOcclusionStrength)));
   return sun + ambient;
 }
 

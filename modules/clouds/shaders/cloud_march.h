@@ -140,8 +140,10 @@ CLOUDS_INLINE FieldSample sampleField(vec3 flatOffset, float altitude, float dis
   CLOUDS_WHEN(wantDetail != 0u && s.base > 0.0f && distance < u.detailDistanceMetres) {
     const vec2 curlUv = (u.curlOffsetMetres + vec2(p.x, p.z)) / u.curlTileMetres;
     const vec2 curl = sampleCurl(curlUv) * (u.curlStrengthMetres * (1.0f - s.heightFraction));
-    const vec3 detailUvw = (u.detailOffsetMetres + p + vec3(curl.x, 0.0f, curl.y)) / u.detailTileMetres;
-    s.density = erodeDensity(s.base, sampleDetailNoise(detailUvw), s.heightFraction, u.detailErosion);
+    const vec3 detailUvw =
+        (u.detailOffsetMetres + p + vec3(curl.x, 0.0f, curl.y)) / u.detailTileMetres;
+    s.density =
+        erodeDensity(s.base, sampleDetailNoise(detailUvw), s.heightFraction, u.detailErosion);
   }
   s.sigmaT = s.density * w.density * u.extinctionPerMetre;
   s.baseSigmaT = s.base * w.density * u.extinctionPerMetre;
@@ -167,7 +169,8 @@ CLOUDS_INLINE bool weatherCellEmpty(vec4 maxima, float altitude, bool ascending,
                                     IN(CloudUniforms) u) {
   const float coverage = layerCoverage(maxima.x, u.coverage);
   const float type = saturate(u.cloudType + (maxima.y - 0.5f) * u.typeVariation);
-  const float top = u.layerBottomMetres + typeProfile(type).w * (u.layerTopMetres - u.layerBottomMetres);
+  const float top =
+      u.layerBottomMetres + typeProfile(type).w * (u.layerTopMetres - u.layerBottomMetres);
   return coverage <= 0.0f || (ascending && altitude > top);
 }
 
@@ -292,8 +295,8 @@ CLOUDS_INLINE MarchResult marchClouds(vec3 rayDirection, float sceneDistance, fl
   for (int i = 0; i < maxSteps + kMaxSkips; ++i) {
     if (t >= end || r.transmittance < cutoff || samples >= maxSteps) break;
     if (o.emptySpace != 0u) {
-      const float skipTo =
-          emptySpaceSkip(t, rayDirection, altitudeAlongRay(t, cosZenith, altitude, u.planetRadiusMetres), u);
+      const float skipTo = emptySpaceSkip(
+          t, rayDirection, altitudeAlongRay(t, cosZenith, altitude, u.planetRadiusMetres), u);
       if (skipTo > t) {
         t = skipTo;
         r.skippedCells += 1.0f;
@@ -303,7 +306,8 @@ CLOUDS_INLINE MarchResult marchClouds(vec3 rayDirection, float sceneDistance, fl
     const float stepLength = min(viewStepLength(t, u) * (fine ? 1.0f : coarseFactor), end - t);
     const float sampleDistance = t + jitter * stepLength;
     const vec3 flatOffset = rayDirection * sampleDistance;
-    const float sampleAltitude = altitudeAlongRay(sampleDistance, cosZenith, altitude, u.planetRadiusMetres);
+    const float sampleAltitude =
+        altitudeAlongRay(sampleDistance, cosZenith, altitude, u.planetRadiusMetres);
     const FieldSample field =
         sampleField(flatOffset, sampleAltitude, sampleDistance, fine ? o.detail : 0u, u);
     r.viewSamples += 1.0f;

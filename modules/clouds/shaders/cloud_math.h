@@ -13,7 +13,9 @@ const float kPi = 3.14159265358979f;
 // g beyond this makes HG a delta peak whose float evaluation overflows (g = 1 gives 0/0).
 const float kMaxPhaseG = 0.99f;
 
-CLOUDS_INLINE float saturate(float x) { return clamp(x, 0.0f, 1.0f); }
+CLOUDS_INLINE float saturate(float x) {
+  return clamp(x, 0.0f, 1.0f);
+}
 
 // Maps `value` from [oldMin, oldMax] to [newMin, newMax] (no clamping), as in Nubis. A
 // degenerate source range maps everything to newMin instead of dividing by zero.
@@ -46,7 +48,9 @@ CLOUDS_INLINE float dualLobePhase(float cosTheta, float forwardG, float backward
 }
 
 // Beer-Lambert transmittance for an optical depth (>= 0). exp(-x) of a huge x is 0, never NaN.
-CLOUDS_INLINE float beerLambert(float opticalDepth) { return exp(-max(opticalDepth, 0.0f)); }
+CLOUDS_INLINE float beerLambert(float opticalDepth) {
+  return exp(-max(opticalDepth, 0.0f));
+}
 
 // (1 - exp(-sigma * d)) / sigma, the in-scattering weight of a homogeneous step of length d
 // (Hillaire 2016), written so sigma = 0 gives d instead of 0/0.

@@ -29,9 +29,13 @@ CLOUDS_INLINE vec3 hashCell(ivec3 cell, uint seed) {
 }
 
 // Wraps a lattice coordinate into [0, period); valid for coordinates >= -period.
-CLOUDS_INLINE ivec3 wrapCell(ivec3 cell, int period) { return (cell + ivec3(period)) % period; }
+CLOUDS_INLINE ivec3 wrapCell(ivec3 cell, int period) {
+  return (cell + ivec3(period)) % period;
+}
 
-CLOUDS_INLINE float fade(float t) { return t * t * t * (t * (t * 6.0f - 15.0f) + 10.0f); }
+CLOUDS_INLINE float fade(float t) {
+  return t * t * t * (t * (t * 6.0f - 15.0f) + 10.0f);
+}
 
 CLOUDS_INLINE float gradientDot(ivec3 cell, vec3 offset, int period, uint seed) {
   const vec3 g = hashCell(wrapCell(cell, period), seed) * 2.0f - 1.0f;

@@ -26,10 +26,10 @@ const int kWeatherMaxFineSize = 64;
 const int kWeatherMaxCoarseSize = 8;
 
 // --- Workgroup sizes -------------------------------------------------------------------------
-const uint kWorkgroupSize2D = 8u;    // 8 x 8 threads for image passes
-const uint kWorkgroupSize3D = 4u;    // 4 x 4 x 4 threads for volume generation
-const uint kSkyAmbientLanes = 64u;   // sky_ambient.comp: one workgroup of this many lanes
-const uint kSkyAmbientSamples = 16u; // samples of the sky image per lane
+const uint kWorkgroupSize2D = 8u;     // 8 x 8 threads for image passes
+const uint kWorkgroupSize3D = 4u;     // 4 x 4 x 4 threads for volume generation
+const uint kSkyAmbientLanes = 64u;    // sky_ambient.comp: one workgroup of this many lanes
+const uint kSkyAmbientSamples = 16u;  // samples of the sky image per lane
 
 // --- Descriptor bindings (set 0) --------------------------------------------------------------
 // Binding 0 of every per-frame image pass is the CloudUniforms block (frame_uniforms.glsl).
@@ -198,17 +198,17 @@ struct CloudUniforms {
   uint padding7;
 
   // Resolution and temporal reconstruction.
-  uvec2 traceExtent;   // px
-  uvec2 outputExtent;  // px
-  uvec2 tilePhase;     // the offset, in its tile, of the pixel marched this frame
-  uint tileSize;       // k (1, 2, 4 or 8): one pixel per k x k tile is marched each frame
+  uvec2 traceExtent;    // px
+  uvec2 outputExtent;   // px
+  uvec2 tilePhase;      // the offset, in its tile, of the pixel marched this frame
+  uint tileSize;        // k (1, 2, 4 or 8): one pixel per k x k tile is marched each frame
   uint lastFreshPixel;  // the last such pixel of the image, x | y << 16 (edge tiles may have none)
   float temporalFreshWeight;       // weight of a fresh sample over its history
   float historyClampMargin;        // slack of the history clamp (x neighbourhood range)
   float traceScale;                // trace pixels per output pixel
   float historyClampSpreadPixels;  // reprojection spread (trace px) of a fully clamped history
-  vec2 subpixelOffset;  // this frame's offset of the rays inside their pixels (trace pixels;
-                        //   jitter mode 2: accumulating frames supersamples)
+  vec2 subpixelOffset;         // this frame's offset of the rays inside their pixels (trace pixels;
+                               //   jitter mode 2: accumulating frames supersamples)
   float upsamplingMaxSamples;  // temporal upsampling: own samples averaged before a running mean
   float padding8;
 };

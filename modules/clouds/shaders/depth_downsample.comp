@@ -21,7 +21,8 @@ void main() {
   const uvec2 full = u.outputExtent;
   // The output pixels whose centres fall in this trace pixel.
   const uvec2 first = uvec2(floor(vec2(pixel) * vec2(full) / vec2(u.traceExtent)));
-  const uvec2 last = min(uvec2(ceil(vec2(pixel + 1u) * vec2(full) / vec2(u.traceExtent))), full) - 1u;
+  const uvec2 last =
+      min(uvec2(ceil(vec2(pixel + 1u) * vec2(full) / vec2(u.traceExtent))), full) - 1u;
   // The farthest depth value first, converted once: within a footprint of a few pixels the
   // distance for a depth changes with the ray's angle by well under 3%, which the margin covers.
   const bool reversed = (u.flags & kFlagReversedZ) != 0u;

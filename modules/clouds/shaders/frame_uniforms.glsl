@@ -12,7 +12,9 @@
 #ifndef CLOUDS_FRAME_UNIFORMS_GLSL
 #define CLOUDS_FRAME_UNIFORMS_GLSL
 
-layout(binding = kBindingUniforms, std140) uniform FrameUniforms { CloudUniforms frameUniforms[1]; };
+layout(binding = kBindingUniforms, std140) uniform FrameUniforms {
+  CloudUniforms frameUniforms[1];
+};
 
 CloudUniforms u;
 

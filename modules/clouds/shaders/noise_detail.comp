@@ -5,7 +5,8 @@
 #include "cloud_noise.h"
 #include "cloud_types.h"
 
-layout(local_size_x = kWorkgroupSize3D, local_size_y = kWorkgroupSize3D, local_size_z = kWorkgroupSize3D) in;
+layout(local_size_x = kWorkgroupSize3D, local_size_y = kWorkgroupSize3D,
+       local_size_z = kWorkgroupSize3D) in;
 layout(binding = kGeneratorTarget, rgba8) uniform writeonly image3D target;
 layout(push_constant) uniform Constants { NoiseConstants constants; };
 

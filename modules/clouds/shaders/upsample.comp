@@ -153,7 +153,8 @@ void main() {
       const Reprojection reprojected = reprojectPixel(
           viewRayDirection(vec2(pixel) + 0.5f, vec2(full), u),
           unpackCloudDepth(imageLoad(traceSamples, ivec2(trace))), vec2(full), u);
-      certain = reprojected.onScreen && reprojected.spread * scale.x < 0.5f * u.historyClampSpreadPixels;
+      certain = reprojected.onScreen &&
+                reprojected.spread * scale.x < 0.5f * u.historyClampSpreadPixels;
       history = outputHistoryAt(reprojected.position, historyDepth, historySamples);
       // Something moved (the camera, or the clouds' detail with the wind): the own samples
       // may be stale; keep them within the range of this frame's trace pixels around.

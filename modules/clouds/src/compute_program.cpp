@@ -5,8 +5,8 @@
 namespace clouds::detail {
 
 ComputeProgram::ComputeProgram(const DeviceContext& context, std::span<const std::uint32_t> spirv,
-                               std::span<const Binding> bindings,
-                               std::uint32_t pushConstantBytes, std::string name)
+                               std::span<const Binding> bindings, std::uint32_t pushConstantBytes,
+                               std::string name)
     : context_(context), name_(std::move(name)), bindings_(bindings.begin(), bindings.end()) {
   VkShaderModuleCreateInfo moduleInfo{VK_STRUCTURE_TYPE_SHADER_MODULE_CREATE_INFO};
   moduleInfo.codeSize = spirv.size_bytes();
@@ -107,8 +107,8 @@ void SetWriter::commit() {
     write.dstBinding = e.binding;
     write.descriptorCount = 1;
     write.descriptorType = e.type;
-    const bool isBuffer = e.type == VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER ||
-                          e.type == VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
+    const bool isBuffer =
+        e.type == VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER || e.type == VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
     if (isBuffer) {
       write.pBufferInfo = &e.buffer;
     } else {

@@ -9,15 +9,24 @@ namespace clouds {
 
 const char* errorCodeName(ErrorCode code) {
   switch (code) {
-    case ErrorCode::None: return "None";
-    case ErrorCode::InvalidCreateInfo: return "InvalidCreateInfo";
-    case ErrorCode::MissingFunction: return "MissingFunction";
-    case ErrorCode::UnsupportedDevice: return "UnsupportedDevice";
-    case ErrorCode::OutOfMemory: return "OutOfMemory";
-    case ErrorCode::VulkanFailure: return "VulkanFailure";
-    case ErrorCode::InvalidSettings: return "InvalidSettings";
-    case ErrorCode::InvalidInputs: return "InvalidInputs";
-    case ErrorCode::NotPrepared: return "NotPrepared";
+    case ErrorCode::None:
+      return "None";
+    case ErrorCode::InvalidCreateInfo:
+      return "InvalidCreateInfo";
+    case ErrorCode::MissingFunction:
+      return "MissingFunction";
+    case ErrorCode::UnsupportedDevice:
+      return "UnsupportedDevice";
+    case ErrorCode::OutOfMemory:
+      return "OutOfMemory";
+    case ErrorCode::VulkanFailure:
+      return "VulkanFailure";
+    case ErrorCode::InvalidSettings:
+      return "InvalidSettings";
+    case ErrorCode::InvalidInputs:
+      return "InvalidInputs";
+    case ErrorCode::NotPrepared:
+      return "NotPrepared";
   }
   return "?";
 }
@@ -47,7 +56,9 @@ bool finite(const glm::vec3& v) {
   return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
 }
 
-bool nonNegative(const glm::vec3& v) { return v.x >= 0.0f && v.y >= 0.0f && v.z >= 0.0f; }
+bool nonNegative(const glm::vec3& v) {
+  return v.x >= 0.0f && v.y >= 0.0f && v.z >= 0.0f;
+}
 
 std::string extentText(VkExtent2D e) {
   return std::to_string(e.width) + "x" + std::to_string(e.height);
@@ -178,8 +189,9 @@ bool Context::dispatch(const FrameInputs& inputs, const Settings& settings, Erro
   }
   if (std::string missing = impl_->unprepared(settings, inputs.renderExtent); !missing.empty()) {
     return fail(error, ErrorCode::NotPrepared,
-                "dispatch: " + missing + " do not exist yet: call Context::prepare() with "
-                "these settings and render extent outside command recording");
+                "dispatch: " + missing +
+                    " do not exist yet: call Context::prepare() with "
+                    "these settings and render extent outside command recording");
   }
   impl_->dispatch(inputs, settings);
   return succeed(error);
@@ -206,9 +218,15 @@ bool Context::composite(VkCommandBuffer commandBuffer, VkImageView color, VkExte
   return succeed(error);
 }
 
-Outputs Context::outputs() const { return impl_->outputs(); }
-FrameReport Context::lastFrameReport() const { return impl_->lastFrameReport(); }
-MemoryUsage Context::memoryUsage() const { return impl_->memoryUsage(); }
+Outputs Context::outputs() const {
+  return impl_->outputs();
+}
+FrameReport Context::lastFrameReport() const {
+  return impl_->lastFrameReport();
+}
+MemoryUsage Context::memoryUsage() const {
+  return impl_->memoryUsage();
+}
 WorkCounters Context::workCounters(std::uint64_t frameIndex) const {
   return impl_->workCounters(frameIndex);
 }

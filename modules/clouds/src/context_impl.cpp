@@ -13,9 +13,9 @@ using detail::Program;
 namespace {
 
 // The storage formats the module's images use (module_images.cpp, shaders' format qualifiers).
-constexpr VkFormat kStorageFormats[] = {
-    VK_FORMAT_R8G8B8A8_UNORM, VK_FORMAT_R16G16B16A16_SFLOAT, VK_FORMAT_R32G32_SFLOAT,
-    VK_FORMAT_R32_SFLOAT, VK_FORMAT_R32G32B32A32_UINT};
+constexpr VkFormat kStorageFormats[] = {VK_FORMAT_R8G8B8A8_UNORM, VK_FORMAT_R16G16B16A16_SFLOAT,
+                                        VK_FORMAT_R32G32_SFLOAT, VK_FORMAT_R32_SFLOAT,
+                                        VK_FORMAT_R32G32B32A32_UINT};
 
 const detail::DeviceContext& checkedDevice(const detail::DeviceContext& device) {
   for (VkFormat format : kStorageFormats) {
@@ -42,8 +42,7 @@ detail::UniqueSampler makeSampler(const detail::DeviceContext& device, VkFilter 
   return device.createSampler(info, name);
 }
 
-detail::UniqueDescriptorPool makePool(const detail::DeviceContext& device,
-                                      std::uint32_t frames) {
+detail::UniqueDescriptorPool makePool(const detail::DeviceContext& device, std::uint32_t frames) {
   // Fixed sets: 3 noise generators, 2 weather generators, 3 maxima. Per slot: 7 sets.
   const VkDescriptorPoolSize sizes[] = {
       {VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, 16 + 32 * frames},
@@ -70,10 +69,10 @@ Context::Impl::Impl(const CreateInfo& info, const detail::VulkanFunctions& funct
       device_(info, functions),
       programs_(checkedDevice(device_), info.compositeColorFormat != VK_FORMAT_UNDEFINED),
       images_(device_),
-      nearestSampler_(makeSampler(device_, VK_FILTER_NEAREST,
-                                  VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE, "nearest sampler")),
-      linearSampler_(makeSampler(device_, VK_FILTER_LINEAR, VK_SAMPLER_ADDRESS_MODE_REPEAT,
-                                 "linear sampler")),
+      nearestSampler_(makeSampler(device_, VK_FILTER_NEAREST, VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE,
+                                  "nearest sampler")),
+      linearSampler_(
+          makeSampler(device_, VK_FILTER_LINEAR, VK_SAMPLER_ADDRESS_MODE_REPEAT, "linear sampler")),
       pool_(makePool(device_, info.maxFramesInFlight)),
       weatherSchedule_(static_cast<std::uint32_t>(shader::kWeatherMapSize), kWeatherRowsAhead) {
   if (info.passTimings) {
@@ -120,7 +119,9 @@ void Context::Impl::writeFixedSets() {
   shapeSet_ = allocateSet(Program::ShapeNoise);
   detailSet_ = allocateSet(Program::DetailNoise);
   curlSet_ = allocateSet(Program::CurlNoise);
-  SetWriter(device_, shapeSet_).storageImage(shader::kGeneratorTarget, im.shapeNoise.view()).commit();
+  SetWriter(device_, shapeSet_)
+      .storageImage(shader::kGeneratorTarget, im.shapeNoise.view())
+      .commit();
   SetWriter(device_, detailSet_)
       .storageImage(shader::kGeneratorTarget, im.detailNoise.view())
       .commit();
@@ -194,8 +195,8 @@ void Context::Impl::bindAndDispatch(VkCommandBuffer cmd, Program program, VkPipe
                                     std::uint32_t height) {
   const auto& fn = device_.fn();
   fn.vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pipeline);
-  fn.vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, programs_[program].layout(), 0,
-                             1, &set, 0, nullptr);
+  fn.vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, programs_[program].layout(), 0, 1,
+                             &set, 0, nullptr);
   const std::uint32_t group = shader::kWorkgroupSize2D;
   fn.vkCmdDispatch(cmd, (width + group - 1) / group, (height + group - 1) / group, 1);
 }
@@ -249,8 +250,8 @@ void Context::Impl::dispatch(const FrameInputs& inputs, const Settings& settings
     if (inputs.skyView != VK_NULL_HANDLE) recordSkyAmbient(cmd, inputs, slot);
     recordTrace(cmd, inputs, settings, temporal, traceExtent, slot);
     temporal_.commit(temporal, inputs, settings, traceExtent);
-    report_ = FrameReport{traceExtent, temporal.tileSize, temporal.useHistory,
-                          temporal.insideLayer, temporal.resetReason};
+    report_ = FrameReport{traceExtent, temporal.tileSize, temporal.useHistory, temporal.insideLayer,
+                          temporal.resetReason};
   }
   device_.endLabel(cmd);
   lastSlot_ = slotIndex;
@@ -275,8 +276,7 @@ void Context::Impl::composite(VkCommandBuffer cmd, VkImageView color, VkExtent2D
   fn.vkCmdPushConstants(cmd, program.layout(), VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof(constants),
                         &constants);
   const std::uint32_t group = shader::kWorkgroupSize2D;
-  fn.vkCmdDispatch(cmd, (extent.width + group - 1) / group, (extent.height + group - 1) / group,
-                   1);
+  fn.vkCmdDispatch(cmd, (extent.width + group - 1) / group, (extent.height + group - 1) / group, 1);
   device_.endLabel(cmd);
 }
 
@@ -292,7 +292,8 @@ Outputs Context::Impl::outputs() const {
 
 MemoryUsage Context::Impl::memoryUsage() const {
   MemoryUsage usage = images_.memoryUsage();
-  for (const Slot& slot : slots_) usage.bufferBytes += slot.uniforms.bytes() + slot.counters.bytes();
+  for (const Slot& slot : slots_)
+    usage.bufferBytes += slot.uniforms.bytes() + slot.counters.bytes();
   return usage;
 }
 

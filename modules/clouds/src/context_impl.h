@@ -106,7 +106,7 @@ class Context::Impl {
   detail::ModuleImages images_;
   detail::UniqueSampler nearestSampler_;
   detail::UniqueSampler linearSampler_;
-  detail::UniqueDescriptorPool pool_;  // frees every descriptor set with it
+  detail::UniqueDescriptorPool pool_;         // frees every descriptor set with it
   std::unique_ptr<detail::PassTimer> timer_;  // CreateInfo::passTimings
   std::vector<Slot> slots_;
 

@@ -31,8 +31,7 @@ std::uint32_t DeviceContext::memoryType(std::uint32_t typeBits,
   for (std::uint32_t i = 0; i < memory_.memoryTypeCount; ++i) {
     if (typeBits & (1u << i)) return i;  // no preferred type: any that fits
   }
-  throw ModuleError(ErrorCode::UnsupportedDevice,
-                    "clouds: no memory type fits a module resource");
+  throw ModuleError(ErrorCode::UnsupportedDevice, "clouds: no memory type fits a module resource");
 }
 
 bool DeviceContext::supportsStorage(VkFormat format) const {
@@ -83,8 +82,8 @@ UniqueImage DeviceContext::createImage(const VkImageCreateInfo& info,
 
 UniqueImageView DeviceContext::createImageView(const VkImageViewCreateInfo& info,
                                                const std::string& name) const {
-  return make<UniqueImageView, &VulkanFunctions::vkCreateImageView>(
-      info, VK_OBJECT_TYPE_IMAGE_VIEW, "vkCreateImageView", name);
+  return make<UniqueImageView, &VulkanFunctions::vkCreateImageView>(info, VK_OBJECT_TYPE_IMAGE_VIEW,
+                                                                    "vkCreateImageView", name);
 }
 
 UniqueBuffer DeviceContext::createBuffer(const VkBufferCreateInfo& info,
@@ -95,8 +94,8 @@ UniqueBuffer DeviceContext::createBuffer(const VkBufferCreateInfo& info,
 
 UniqueMemory DeviceContext::allocateMemory(const VkMemoryAllocateInfo& info,
                                            const std::string& name) const {
-  return make<UniqueMemory, &VulkanFunctions::vkAllocateMemory>(
-      info, VK_OBJECT_TYPE_DEVICE_MEMORY, "vkAllocateMemory", name);
+  return make<UniqueMemory, &VulkanFunctions::vkAllocateMemory>(info, VK_OBJECT_TYPE_DEVICE_MEMORY,
+                                                                "vkAllocateMemory", name);
 }
 
 UniqueSampler DeviceContext::createSampler(const VkSamplerCreateInfo& info,
@@ -131,8 +130,8 @@ UniqueDescriptorPool DeviceContext::createDescriptorPool(const VkDescriptorPoolC
 
 UniqueQueryPool DeviceContext::createQueryPool(const VkQueryPoolCreateInfo& info,
                                                const std::string& name) const {
-  return make<UniqueQueryPool, &VulkanFunctions::vkCreateQueryPool>(
-      info, VK_OBJECT_TYPE_QUERY_POOL, "vkCreateQueryPool", name);
+  return make<UniqueQueryPool, &VulkanFunctions::vkCreateQueryPool>(info, VK_OBJECT_TYPE_QUERY_POOL,
+                                                                    "vkCreateQueryPool", name);
 }
 
 UniquePipeline DeviceContext::createComputePipeline(const VkComputePipelineCreateInfo& info,

@@ -52,8 +52,7 @@ class DeviceContext {
   void endLabel(VkCommandBuffer cmd) const;
 
   UniqueImage createImage(const VkImageCreateInfo& info, const std::string& name) const;
-  UniqueImageView createImageView(const VkImageViewCreateInfo& info,
-                                  const std::string& name) const;
+  UniqueImageView createImageView(const VkImageViewCreateInfo& info, const std::string& name) const;
   UniqueBuffer createBuffer(const VkBufferCreateInfo& info, const std::string& name) const;
   UniqueMemory allocateMemory(const VkMemoryAllocateInfo& info, const std::string& name) const;
   UniqueSampler createSampler(const VkSamplerCreateInfo& info, const std::string& name) const;
@@ -67,13 +66,11 @@ class DeviceContext {
                                        const std::string& name) const;
   UniqueDescriptorPool createDescriptorPool(const VkDescriptorPoolCreateInfo& info,
                                             const std::string& name) const;
-  UniqueQueryPool createQueryPool(const VkQueryPoolCreateInfo& info,
-                                  const std::string& name) const;
+  UniqueQueryPool createQueryPool(const VkQueryPoolCreateInfo& info, const std::string& name) const;
 
  private:
   template <typename Unique, auto Create, typename Info>
-  Unique make(const Info& info, VkObjectType type, const char* what,
-              const std::string& name) const;
+  Unique make(const Info& info, VkObjectType type, const char* what, const std::string& name) const;
 
   VulkanFunctions fn_;
   VkDevice device_;

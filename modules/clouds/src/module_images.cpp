@@ -20,7 +20,9 @@ constexpr VkImageUsageFlags kOutput =
     kStorage | VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT;
 constexpr VkImageUsageFlags kHistory = kStorage | VK_IMAGE_USAGE_TRANSFER_DST_BIT;
 
-VkExtent3D extent3(VkExtent2D e) { return {e.width, e.height, 1}; }
+VkExtent3D extent3(VkExtent2D e) {
+  return {e.width, e.height, 1};
+}
 
 bool holds(const OwnedImage& image, VkExtent2D size) {
   return image && image.extent().width >= size.width && image.extent().height >= size.height;
@@ -53,9 +55,9 @@ ModuleImages::ModuleImages(const DeviceContext& device) : device_(device) {
       make(VK_IMAGE_TYPE_2D, kNoiseFormat, {fine, fine, 1}, kStorage, "weather maxima (fine)");
   weatherMaxCoarse = make(VK_IMAGE_TYPE_2D, kNoiseFormat, {coarse, coarse, 1}, kStorage,
                           "weather maxima (coarse)");
-  depthPlaceholder = make(VK_IMAGE_TYPE_2D, VK_FORMAT_R32_SFLOAT, {1, 1, 1},
-                          VK_IMAGE_USAGE_SAMPLED_BIT, "no host depth",
-                          VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL);
+  depthPlaceholder =
+      make(VK_IMAGE_TYPE_2D, VK_FORMAT_R32_SFLOAT, {1, 1, 1}, VK_IMAGE_USAGE_SAMPLED_BIT,
+           "no host depth", VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL);
   samplesPlaceholder =
       make(VK_IMAGE_TYPE_2D, kSampleFormat, {1, 1, 1}, kStorage, "no output history");
 }
@@ -115,10 +117,10 @@ bool ModuleImages::grow(const ImageSizes& sizes, std::optional<std::uint64_t> la
   if (sizes.upsampling && !upsamplingFits) {
     const VkExtent3D e = extent3(grown(outputHistory[0], sizes.output));
     for (std::uint32_t i = 0; i < 2; ++i) {
-      replace(outputHistory[i],
-              make(VK_IMAGE_TYPE_2D, kSampleFormat, e, kHistory,
-                   "output history " + std::to_string(i)),
-              lastUse);
+      replace(
+          outputHistory[i],
+          make(VK_IMAGE_TYPE_2D, kSampleFormat, e, kHistory, "output history " + std::to_string(i)),
+          lastUse);
     }
     historyLost = true;
   }
@@ -148,8 +150,8 @@ MemoryUsage ModuleImages::memoryUsage() const {
   m.weatherBytes = weatherMaps[0].bytes() + weatherMaps[1].bytes() + weatherMaxFine.bytes() +
                    weatherMaxCoarse.bytes();
   m.outputBytes = radiance.bytes() + depth.bytes();
-  m.traceBytes = sceneDistance.bytes() + traceSamples.bytes() + history[0].bytes() +
-                 history[1].bytes();
+  m.traceBytes =
+      sceneDistance.bytes() + traceSamples.bytes() + history[0].bytes() + history[1].bytes();
   m.upsamplingBytes = outputHistory[0].bytes() + outputHistory[1].bytes();
   m.bufferBytes = depthPlaceholder.bytes() + samplesPlaceholder.bytes();
   for (const Retired& r : retired_) m.retiredBytes += r.image.bytes();

@@ -54,9 +54,9 @@ class ModuleImages {
   // Sized by grow().
   OwnedImage radiance;  // outputs, output resolution
   OwnedImage depth;
-  OwnedImage sceneDistance;              // trace resolution, R32F
-  OwnedImage traceSamples;               // this frame's marched pixels (packed samples)
-  std::array<OwnedImage, 2> history;     // reconstructed frames, ping-pong
+  OwnedImage sceneDistance;                 // trace resolution, R32F
+  OwnedImage traceSamples;                  // this frame's marched pixels (packed samples)
+  std::array<OwnedImage, 2> history;        // reconstructed frames, ping-pong
   std::array<OwnedImage, 2> outputHistory;  // temporal upsampling's own samples, ping-pong
 
  private:

@@ -37,8 +37,8 @@ OwnedImage::OwnedImage(const DeviceContext& context, VkImageType type, VkFormat 
   view_ = context.createImageView(viewInfo, name + " view");
 }
 
-OwnedBuffer::OwnedBuffer(const DeviceContext& context, VkDeviceSize size,
-                         VkBufferUsageFlags usage, const std::string& name, bool hostVisible)
+OwnedBuffer::OwnedBuffer(const DeviceContext& context, VkDeviceSize size, VkBufferUsageFlags usage,
+                         const std::string& name, bool hostVisible)
     : size_(size) {
   const auto& fn = context.fn();
   VkBufferCreateInfo info{VK_STRUCTURE_TYPE_BUFFER_CREATE_INFO};

@@ -5,15 +5,24 @@ namespace {
 
 const char* passName(Pass pass) {
   switch (pass) {
-    case Pass::Noise: return "noise";
-    case Pass::Weather: return "weather";
-    case Pass::SkyAmbient: return "sky ambient";
-    case Pass::ClearSky: return "clear sky";
-    case Pass::SceneDistance: return "scene distance";
-    case Pass::March: return "march";
-    case Pass::Reconstruct: return "reconstruct";
-    case Pass::Upsample: return "upsample";
-    case Pass::Count: break;
+    case Pass::Noise:
+      return "noise";
+    case Pass::Weather:
+      return "weather";
+    case Pass::SkyAmbient:
+      return "sky ambient";
+    case Pass::ClearSky:
+      return "clear sky";
+    case Pass::SceneDistance:
+      return "scene distance";
+    case Pass::March:
+      return "march";
+    case Pass::Reconstruct:
+      return "reconstruct";
+    case Pass::Upsample:
+      return "upsample";
+    case Pass::Count:
+      break;
   }
   return "?";
 }
@@ -58,7 +67,8 @@ void PassTimer::stamp(VkCommandBuffer cmd, std::uint32_t queryIndex) {
   // dependency, realised at once: lavapipe writes a timestamp only when it next synchronises,
   // which without it would be after the following pass's dispatch.
   executionBarrier(cmd);
-  device_.fn().vkCmdWriteTimestamp2(cmd, VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT, pool_.get(), queryIndex);
+  device_.fn().vkCmdWriteTimestamp2(cmd, VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT, pool_.get(),
+                                    queryIndex);
   executionBarrier(cmd);
 }
 

@@ -14,7 +14,15 @@
 namespace clouds::detail {
 
 enum class Pass : std::uint32_t {
-  Noise, Weather, SkyAmbient, ClearSky, SceneDistance, March, Reconstruct, Upsample, Count
+  Noise,
+  Weather,
+  SkyAmbient,
+  ClearSky,
+  SceneDistance,
+  March,
+  Reconstruct,
+  Upsample,
+  Count
 };
 
 class PassTimer {

@@ -46,8 +46,7 @@ void Context::Impl::recordSkyAmbient(VkCommandBuffer cmd, const FrameInputs& inp
   detail::SetWriter(device_, slot.skyAmbient)
       .storageBuffer(shader::kSkyAmbientUniforms, slot.uniforms.buffer(),
                      sizeof(shader::CloudUniforms))
-      .sampledImage(shader::kSkyAmbientSky, inputs.skyView, linearSampler_.get(),
-                    inputs.skyLayout)
+      .sampledImage(shader::kSkyAmbientSky, inputs.skyView, linearSampler_.get(), inputs.skyLayout)
       .commit();
   const detail::ComputeProgram& program = programs_[Program::SkyAmbient];
   fn.vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, program.find());
@@ -76,11 +75,10 @@ void Context::Impl::recordTrace(VkCommandBuffer cmd, const FrameInputs& inputs,
   // Without temporal upsampling the upsample pass never touches its output history: any
   // storage image of the format fills the bindings.
   const bool upsampling = temporal.upsampleTemporally;
-  const VkImageView outputHistoryIn = upsampling ? im.outputHistory[temporal.readHistory].view()
-                                                 : im.samplesPlaceholder.view();
-  const VkImageView outputHistoryOut = upsampling
-                                           ? im.outputHistory[temporal.writeHistory].view()
-                                           : im.samplesPlaceholder.view();
+  const VkImageView outputHistoryIn =
+      upsampling ? im.outputHistory[temporal.readHistory].view() : im.samplesPlaceholder.view();
+  const VkImageView outputHistoryOut =
+      upsampling ? im.outputHistory[temporal.writeHistory].view() : im.samplesPlaceholder.view();
 
   using namespace shader;
   detail::SetWriter(device_, slot.sceneDistance)
@@ -162,9 +160,8 @@ void Context::Impl::recordTrace(VkCommandBuffer cmd, const FrameInputs& inputs,
                   programs_[Program::Upsample].find(detail::upsampleKey(upsampling, outputHistory)),
                   slot.upsample, inputs.renderExtent.width, inputs.renderExtent.height);
   for (const detail::OwnedImage* image : {&im.radiance, &im.depth}) {
-    detail::barrier(device_, cmd, image->image(), VK_IMAGE_LAYOUT_GENERAL,
-                    VK_IMAGE_LAYOUT_GENERAL, kCompute, kStorageWrite, kHostReadStages,
-                    kHostReadAccess);
+    detail::barrier(device_, cmd, image->image(), VK_IMAGE_LAYOUT_GENERAL, VK_IMAGE_LAYOUT_GENERAL,
+                    kCompute, kStorageWrite, kHostReadStages, kHostReadAccess);
   }
   endPass(cmd, detail::Pass::Upsample);
 }
@@ -182,13 +179,11 @@ void Context::Impl::recordClearSky(VkCommandBuffer cmd, Slot& slot) {
   fn.vkCmdClearColorImage(cmd, images_.radiance.image(), VK_IMAGE_LAYOUT_GENERAL, &noCloud, 1,
                           &range);
   const VkClearColorValue noDepth{};
-  fn.vkCmdClearColorImage(cmd, images_.depth.image(), VK_IMAGE_LAYOUT_GENERAL, &noDepth, 1,
-                          &range);
+  fn.vkCmdClearColorImage(cmd, images_.depth.image(), VK_IMAGE_LAYOUT_GENERAL, &noDepth, 1, &range);
   if (info_.workCounters) fn.vkCmdFillBuffer(cmd, slot.counters.buffer(), 0, VK_WHOLE_SIZE, 0u);
   for (const detail::OwnedImage* image : {&images_.radiance, &images_.depth}) {
-    detail::barrier(device_, cmd, image->image(), VK_IMAGE_LAYOUT_GENERAL,
-                    VK_IMAGE_LAYOUT_GENERAL, transfer, VK_ACCESS_2_TRANSFER_WRITE_BIT,
-                    kHostReadStages, kHostReadAccess);
+    detail::barrier(device_, cmd, image->image(), VK_IMAGE_LAYOUT_GENERAL, VK_IMAGE_LAYOUT_GENERAL,
+                    transfer, VK_ACCESS_2_TRANSFER_WRITE_BIT, kHostReadStages, kHostReadAccess);
   }
   if (info_.workCounters) {
     detail::memoryBarrier(device_, cmd, transfer, VK_ACCESS_2_TRANSFER_WRITE_BIT,

@@ -44,8 +44,8 @@ void Context::Impl::recordNoise(VkCommandBuffer cmd) {
     shader::NoiseConstants constants{};
     constants.seed = info_.noiseSeed;
     constants.size = job.size;
-    fn.vkCmdPushConstants(cmd, program.layout(), VK_SHADER_STAGE_COMPUTE_BIT, 0,
-                          sizeof(constants), &constants);
+    fn.vkCmdPushConstants(cmd, program.layout(), VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof(constants),
+                          &constants);
     if (job.volume) {
       const std::uint32_t n = groups(job.size, shader::kWorkgroupSize3D);
       fn.vkCmdDispatch(cmd, n, n, n);
@@ -125,8 +125,8 @@ void Context::Impl::recordWeatherRows(VkCommandBuffer cmd, const Settings& setti
   fn.vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, generator.find());
   fn.vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, generator.layout(), 0, 1,
                              &weatherSets_[spare], 0, nullptr);
-  fn.vkCmdPushConstants(cmd, generator.layout(), VK_SHADER_STAGE_COMPUTE_BIT, 0,
-                        sizeof(constants), &constants);
+  fn.vkCmdPushConstants(cmd, generator.layout(), VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof(constants),
+                        &constants);
   const auto width = static_cast<std::uint32_t>(shader::kWeatherMapSize);
   fn.vkCmdDispatch(cmd, groups(width, shader::kWorkgroupSize2D),
                    groups(work.endRow - work.firstRow, shader::kWorkgroupSize2D), 1);

@@ -61,8 +61,7 @@ shader::CloudUniforms buildUniforms(const FrameInputs& in, const Settings& s,
   u.windDirection = glm::vec2(wind);
   u.skewMetres = s.skewMetres;
   const float weatherTexel = s.weatherTileMetres / float(shader::kWeatherMapSize);
-  u.fineCellMetres =
-      weatherTexel * float(shader::kWeatherMapSize / shader::kWeatherMaxFineSize);
+  u.fineCellMetres = weatherTexel * float(shader::kWeatherMapSize / shader::kWeatherMaxFineSize);
   u.coarseCellMetres =
       weatherTexel * float(shader::kWeatherMapSize / shader::kWeatherMaxCoarseSize);
 

@@ -7,11 +7,11 @@ bool VulkanFunctions::load(const CreateInfo& info, std::string* missing) {
     if (missing != nullptr) *missing = name;
     return false;
   };
-#define CLOUDS_LOAD_INSTANCE(name)                                                          \
-  name = reinterpret_cast<PFN_##name>(info.getInstanceProcAddr(info.instance, #name));     \
+#define CLOUDS_LOAD_INSTANCE(name)                                                     \
+  name = reinterpret_cast<PFN_##name>(info.getInstanceProcAddr(info.instance, #name)); \
   if (name == nullptr) return fail(#name);
-#define CLOUDS_LOAD_DEVICE(name)                                                            \
-  name = reinterpret_cast<PFN_##name>(info.getDeviceProcAddr(info.device, #name));         \
+#define CLOUDS_LOAD_DEVICE(name)                                                   \
+  name = reinterpret_cast<PFN_##name>(info.getDeviceProcAddr(info.device, #name)); \
   if (name == nullptr) return fail(#name);
 #define CLOUDS_LOAD_OPTIONAL(name) \
   name = reinterpret_cast<PFN_##name>(info.getDeviceProcAddr(info.device, #name));

@@ -9,9 +9,9 @@
 
 namespace clouds::detail {
 
-#define CLOUDS_INSTANCE_FUNCTIONS(X)        \
-  X(vkGetPhysicalDeviceMemoryProperties)    \
-  X(vkGetPhysicalDeviceProperties)          \
+#define CLOUDS_INSTANCE_FUNCTIONS(X)     \
+  X(vkGetPhysicalDeviceMemoryProperties) \
+  X(vkGetPhysicalDeviceProperties)       \
   X(vkGetPhysicalDeviceFormatProperties)
 
 #define CLOUDS_DEVICE_FUNCTIONS(X) \

@@ -19,7 +19,7 @@ using engine::platform::InputState;
 using engine::platform::Key;
 using engine::render::Camera;
 
-constexpr double kPitchRate = 0.9;   // rad/s at full deflection
+constexpr double kPitchRate = 0.9;  // rad/s at full deflection
 constexpr double kRollRate = 1.6;
 constexpr double kYawRate = 0.7;
 constexpr double kMouseRadiansPerPixel = 0.0025;
@@ -47,13 +47,14 @@ void installFlight(engine::ecs::Scheduler& scheduler) {
         // first gets a push.
         const double speed = std::max(aircraft.speedMetresPerSecond, 5.0);
         aircraft.speedMetresPerSecond = speed * std::exp(throttle * kThrottleRate * dt);
-        if (throttle < 0.0 && aircraft.speedMetresPerSecond < 5.5) aircraft.speedMetresPerSecond = 0.0;
+        if (throttle < 0.0 && aircraft.speedMetresPerSecond < 5.5)
+          aircraft.speedMetresPerSecond = 0.0;
       }
       aircraft.speedMetresPerSecond =
           std::clamp(aircraft.speedMetresPerSecond, aircraft.minSpeed, aircraft.maxSpeed);
 
       double pitch = 0.0, roll = 0.0, yaw = 0.0;
-      if (input.isDown(Key::Up)) pitch -= 1.0;    // nose down, like a stick pushed forward
+      if (input.isDown(Key::Up)) pitch -= 1.0;  // nose down, like a stick pushed forward
       if (input.isDown(Key::Down)) pitch += 1.0;
       if (input.isDown(Key::Left)) roll += 1.0;
       if (input.isDown(Key::Right)) roll -= 1.0;
@@ -63,37 +64,39 @@ void installFlight(engine::ecs::Scheduler& scheduler) {
                          glm::angleAxis(roll * kRollRate * dt, glm::dvec3(0, 0, 1)) *
                          glm::angleAxis(yaw * kYawRate * dt, glm::dvec3(0, 1, 0));
       if (input.mouseCaptured) {
-        delta = delta * glm::angleAxis(-input.mouseDeltaY * kMouseRadiansPerPixel, glm::dvec3(1, 0, 0)) *
+        delta = delta *
+                glm::angleAxis(-input.mouseDeltaY * kMouseRadiansPerPixel, glm::dvec3(1, 0, 0)) *
                 glm::angleAxis(-input.mouseDeltaX * kMouseRadiansPerPixel, glm::dvec3(0, 1, 0));
       }
       camera.orientation = glm::normalize(camera.orientation * delta);
     });
   });
 
-  scheduler.add(engine::ecs::Phase::Simulate, "flight dynamics",
-                [reader = engine::ecs::EventReader<SetCameraPose>{}](engine::ecs::World& world) mutable {
-    const double dt = world.ctx().get<engine::ecs::FrameTime>().deltaSeconds;
-    const InputState& input = world.ctx().get<InputState>();
-    const auto* terrain = world.ctx().tryGet<TerrainHeightField>();
-    auto& poses = world.events<SetCameraPose>();
-    world.view<Aircraft, Camera>().each([&](Aircraft& aircraft, Camera& camera) {
-      camera.cut = false;
-      for (const SetCameraPose& pose : reader.read(poses)) {
-        camera.position = pose.position;
-        camera.orientation = poseOrientation(pose);
-        if (pose.speedMetresPerSecond) aircraft.speedMetresPerSecond = *pose.speedMetresPerSecond;
-        camera.cut = true;  // a teleport: temporal effects must not blend across it
-      }
-      const double boost = input.isDown(Key::LeftShift) ? 4.0 : 1.0;
-      camera.position += engine::render::forwardOf(camera) *
-                         (aircraft.speedMetresPerSecond * boost * dt);
-      const double ground = terrain != nullptr ? terrain->heightAt(camera.position.x,
-                                                                   camera.position.z)
-                                               : 0.0;
-      camera.position.y = std::clamp(camera.position.y, ground + aircraft.groundClearanceMetres,
-                                     aircraft.ceilingMetres);
-    });
-  });
+  scheduler.add(
+      engine::ecs::Phase::Simulate, "flight dynamics",
+      [reader = engine::ecs::EventReader<SetCameraPose>{}](engine::ecs::World& world) mutable {
+        const double dt = world.ctx().get<engine::ecs::FrameTime>().deltaSeconds;
+        const InputState& input = world.ctx().get<InputState>();
+        const auto* terrain = world.ctx().tryGet<TerrainHeightField>();
+        auto& poses = world.events<SetCameraPose>();
+        world.view<Aircraft, Camera>().each([&](Aircraft& aircraft, Camera& camera) {
+          camera.cut = false;
+          for (const SetCameraPose& pose : reader.read(poses)) {
+            camera.position = pose.position;
+            camera.orientation = poseOrientation(pose);
+            if (pose.speedMetresPerSecond)
+              aircraft.speedMetresPerSecond = *pose.speedMetresPerSecond;
+            camera.cut = true;  // a teleport: temporal effects must not blend across it
+          }
+          const double boost = input.isDown(Key::LeftShift) ? 4.0 : 1.0;
+          camera.position +=
+              engine::render::forwardOf(camera) * (aircraft.speedMetresPerSecond * boost * dt);
+          const double ground =
+              terrain != nullptr ? terrain->heightAt(camera.position.x, camera.position.z) : 0.0;
+          camera.position.y = std::clamp(camera.position.y, ground + aircraft.groundClearanceMetres,
+                                         aircraft.ceilingMetres);
+        });
+      });
 }
 
 }  // namespace sample

@@ -12,8 +12,8 @@ namespace sample {
 // The player's aircraft. It carries the engine::render::Camera on the same entity; this holds
 // what flying needs on top.
 struct Aircraft {
-  double speedMetresPerSecond = 120.0;   // current airspeed
-  double minSpeed = 0.0;                 // hover is allowed: a slow glide is a camera, not a plane
+  double speedMetresPerSecond = 120.0;  // current airspeed
+  double minSpeed = 0.0;                // hover is allowed: a slow glide is a camera, not a plane
   double maxSpeed = 900.0;
   double groundClearanceMetres = 5.0;
   double ceilingMetres = 30000.0;
@@ -21,8 +21,8 @@ struct Aircraft {
 
 // The sun's clock: time of day drives the sun direction, its colour and the sky's.
 struct TimeOfDay {
-  double hours = 13.0;                 // [0, 24)
-  double hoursPerSecond = 0.0;         // automatic advance
+  double hours = 13.0;          // [0, 24)
+  double hoursPerSecond = 0.0;  // automatic advance
   double maxElevationDegrees = 65.0;
   double azimuthOffsetDegrees = 0.0;
   double illuminance = 10.0;

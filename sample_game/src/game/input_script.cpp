@@ -75,7 +75,8 @@ InputScript InputScript::load(const std::filesystem::path& file) {
       event.exit = e.boolean("exit", false);
       ++actions;
     }
-    if (actions != 1) e.fail("", "needs exactly one action besides \"frame\", found " + std::to_string(actions));
+    if (actions != 1)
+      e.fail("", "needs exactly one action besides \"frame\", found " + std::to_string(actions));
     e.finish();
     script.events_.push_back(std::move(event));
   }

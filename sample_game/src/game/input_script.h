@@ -40,7 +40,8 @@ class InputScript {
 
   // Applies this frame's events: keys and mouse into `input` (which persists across frames,
   // like a keyboard), everything else as events into `world`.
-  void apply(std::uint64_t frame, engine::platform::InputState& input, engine::ecs::World& world) const;
+  void apply(std::uint64_t frame, engine::platform::InputState& input,
+             engine::ecs::World& world) const;
   // The frame of the last event (a run needs at least this many frames + 1).
   std::uint64_t lastFrame() const;
   const std::vector<ScriptEvent>& events() const { return events_; }

@@ -9,8 +9,8 @@ TerrainHeightField::TerrainHeightField(const engine::assets::MeshData& mesh,
                                        std::uint32_t resolution)
     : heights_(std::size_t{resolution} * resolution, 0.0f), resolution_(resolution) {
   min_ = glm::dvec2(mesh.boundsMin.x, mesh.boundsMin.z);
-  const glm::dvec2 size = glm::max(glm::dvec2(mesh.boundsMax.x, mesh.boundsMax.z) - min_,
-                                   glm::dvec2(1e-3));
+  const glm::dvec2 size =
+      glm::max(glm::dvec2(mesh.boundsMax.x, mesh.boundsMax.z) - min_, glm::dvec2(1e-3));
   cellSize_ = size / double(resolution);
   // Conservative: every cell a triangle's bounding box touches gets at least its highest vertex
   // height, so the aircraft never clips a peak between samples.
@@ -48,8 +48,8 @@ double TerrainHeightField::heightAt(double x, double z) const {
   const double fz = (z - min_.y) / cellSize_.y - 0.5;
   const int i = static_cast<int>(std::floor(fx));
   const int j = static_cast<int>(std::floor(fz));
-  return std::max({cellHeight(i, j), cellHeight(i + 1, j), cellHeight(i, j + 1),
-                   cellHeight(i + 1, j + 1)});
+  return std::max(
+      {cellHeight(i, j), cellHeight(i + 1, j), cellHeight(i, j + 1), cellHeight(i + 1, j + 1)});
 }
 
 }  // namespace sample

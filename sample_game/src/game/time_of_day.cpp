@@ -56,26 +56,29 @@ engine::render::SkyLight skyLightFor(const glm::dvec3& sunDirection) {
 }
 
 void installTimeOfDay(engine::ecs::Scheduler& scheduler) {
-  scheduler.add(engine::ecs::Phase::Input, "time controls",
-                [reader = engine::ecs::EventReader<SetTimeOfDay>{}](engine::ecs::World& world) mutable {
-    const auto& input = world.ctx().get<engine::platform::InputState>();
-    const double dt = world.ctx().get<engine::ecs::FrameTime>().deltaSeconds;
-    auto& events = world.events<SetTimeOfDay>();
-    world.view<TimeOfDay>().each([&](TimeOfDay& time) {
-      for (const SetTimeOfDay& e : reader.read(events)) time.hours = e.hours;
-      // Holding [ or ] runs the clock at two hours a second.
-      if (input.isDown(Key::LeftBracket)) time.hours -= 2.0 * dt;
-      if (input.isDown(Key::RightBracket)) time.hours += 2.0 * dt;
-      if (input.wasPressed(Key::T)) time.hoursPerSecond = time.hoursPerSecond > 0.0 ? 0.0 : 0.25;
-    });
-  });
+  scheduler.add(
+      engine::ecs::Phase::Input, "time controls",
+      [reader = engine::ecs::EventReader<SetTimeOfDay>{}](engine::ecs::World& world) mutable {
+        const auto& input = world.ctx().get<engine::platform::InputState>();
+        const double dt = world.ctx().get<engine::ecs::FrameTime>().deltaSeconds;
+        auto& events = world.events<SetTimeOfDay>();
+        world.view<TimeOfDay>().each([&](TimeOfDay& time) {
+          for (const SetTimeOfDay& e : reader.read(events)) time.hours = e.hours;
+          // Holding [ or ] runs the clock at two hours a second.
+          if (input.isDown(Key::LeftBracket)) time.hours -= 2.0 * dt;
+          if (input.isDown(Key::RightBracket)) time.hours += 2.0 * dt;
+          if (input.wasPressed(Key::T))
+            time.hoursPerSecond = time.hoursPerSecond > 0.0 ? 0.0 : 0.25;
+        });
+      });
   scheduler.add(engine::ecs::Phase::Simulate, "sun and sky", [](engine::ecs::World& world) {
     const double dt = world.ctx().get<engine::ecs::FrameTime>().deltaSeconds;
-    world.view<TimeOfDay, engine::render::Sun>().each([&](TimeOfDay& time, engine::render::Sun& sun) {
-      time.hours = std::fmod(time.hours + time.hoursPerSecond * dt + 24.0, 24.0);
-      sun = sunLightFor(time);
-      world.ctx().emplaceOrReplace<engine::render::SkyLight>(skyLightFor(sun.direction));
-    });
+    world.view<TimeOfDay, engine::render::Sun>().each(
+        [&](TimeOfDay& time, engine::render::Sun& sun) {
+          time.hours = std::fmod(time.hours + time.hoursPerSecond * dt + 24.0, 24.0);
+          sun = sunLightFor(time);
+          world.ctx().emplaceOrReplace<engine::render::SkyLight>(skyLightFor(sun.direction));
+        });
   });
 }
 

@@ -34,8 +34,9 @@ struct HudConstants {
 
 Hud::Hud(gfx::Device& device, VkFormat targetFormat)
     : device_(device),
-      sampler_(device, gfx::SamplerDesc{VK_FILTER_LINEAR, VK_SAMPLER_MIPMAP_MODE_NEAREST,
-                                        VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE, "hud font sampler"}) {
+      sampler_(device,
+               gfx::SamplerDesc{VK_FILTER_LINEAR, VK_SAMPLER_MIPMAP_MODE_NEAREST,
+                                VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE, "hud font sampler"}) {
   context_ = ImGui::CreateContext();
   ImGui::SetCurrentContext(context_);
   ImGuiIO& io = ImGui::GetIO();
@@ -44,11 +45,14 @@ Hud::Hud(gfx::Device& device, VkFormat targetFormat)
   int width = 0;
   int height = 0;
   io.Fonts->GetTexDataAsRGBA32(&pixels, &width, &height);
-  font_ = gfx::Image(device, gfx::ImageDesc{VK_IMAGE_TYPE_2D, VK_FORMAT_R8G8B8A8_UNORM,
-                                            {std::uint32_t(width), std::uint32_t(height), 1}, 1, 1,
-                                            VK_IMAGE_USAGE_SAMPLED_BIT |
-                                                VK_IMAGE_USAGE_TRANSFER_DST_BIT,
-                                            "hud font atlas"});
+  font_ = gfx::Image(device,
+                     gfx::ImageDesc{VK_IMAGE_TYPE_2D,
+                                    VK_FORMAT_R8G8B8A8_UNORM,
+                                    {std::uint32_t(width), std::uint32_t(height), 1},
+                                    1,
+                                    1,
+                                    VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT,
+                                    "hud font atlas"});
   gfx::uploadToImage(device, font_,
                      std::span(reinterpret_cast<const std::byte*>(pixels),
                                std::size_t(width) * std::size_t(height) * 4),
@@ -62,29 +66,28 @@ Hud::Hud(gfx::Device& device, VkFormat targetFormat)
   desc.colorFormats = {targetFormat};
   desc.blend = gfx::BlendMode::Alpha;
   desc.vertexBindings = {{0, sizeof(ImDrawVert), VK_VERTEX_INPUT_RATE_VERTEX}};
-  desc.vertexAttributes = {
-      {0, 0, VK_FORMAT_R32G32_SFLOAT, offsetof(ImDrawVert, pos)},
-      {1, 0, VK_FORMAT_R32G32_SFLOAT, offsetof(ImDrawVert, uv)},
-      {2, 0, VK_FORMAT_R8G8B8A8_UNORM, offsetof(ImDrawVert, col)}};
+  desc.vertexAttributes = {{0, 0, VK_FORMAT_R32G32_SFLOAT, offsetof(ImDrawVert, pos)},
+                           {1, 0, VK_FORMAT_R32G32_SFLOAT, offsetof(ImDrawVert, uv)},
+                           {2, 0, VK_FORMAT_R8G8B8A8_UNORM, offsetof(ImDrawVert, col)}};
   desc.debugName = "hud";
   pipeline_ = gfx::Pipeline(device, desc);
 
   for (std::size_t i = 0; i < buffers_.size(); ++i) {
-    buffers_[i].vertices = gfx::Buffer(device, gfx::BufferDesc{kVertexBytes,
-                                                               VK_BUFFER_USAGE_VERTEX_BUFFER_BIT,
-                                                               gfx::MemoryUsage::Upload,
-                                                               "hud vertices"});
-    buffers_[i].indices = gfx::Buffer(device, gfx::BufferDesc{kIndexBytes,
-                                                              VK_BUFFER_USAGE_INDEX_BUFFER_BIT,
-                                                              gfx::MemoryUsage::Upload,
-                                                              "hud indices"});
+    buffers_[i].vertices =
+        gfx::Buffer(device, gfx::BufferDesc{kVertexBytes, VK_BUFFER_USAGE_VERTEX_BUFFER_BIT,
+                                            gfx::MemoryUsage::Upload, "hud vertices"});
+    buffers_[i].indices =
+        gfx::Buffer(device, gfx::BufferDesc{kIndexBytes, VK_BUFFER_USAGE_INDEX_BUFFER_BIT,
+                                            gfx::MemoryUsage::Upload, "hud indices"});
   }
 }
 
-Hud::~Hud() { ImGui::DestroyContext(context_); }
+Hud::~Hud() {
+  ImGui::DestroyContext(context_);
+}
 
-void Hud::prepare(ecs::World& world, VkExtent2D extent,
-                  std::span<const gfx::TimedScope> gpuTimings, const gfx::FrameRing::Frame& frame) {
+void Hud::prepare(ecs::World& world, VkExtent2D extent, std::span<const gfx::TimedScope> gpuTimings,
+                  const gfx::FrameRing::Frame& frame) {
   ImGui::SetCurrentContext(context_);
   const auto& input = world.ctx().get<platform::InputState>();
   if (input.wasPressed(platform::Key::F1)) visible_ = !visible_;
@@ -111,7 +114,8 @@ void Hud::prepare(ecs::World& world, VkExtent2D extent,
     double gpuTotal = 0.0;
     for (const auto& scope : gpuTimings) gpuTotal += scope.milliseconds;
     ImGui::Text("GPU %.1f ms", gpuTotal);
-    for (const auto& scope : gpuTimings) ImGui::Text("  %-16s %6.2f ms", scope.name, scope.milliseconds);
+    for (const auto& scope : gpuTimings)
+      ImGui::Text("  %-16s %6.2f ms", scope.name, scope.milliseconds);
     world.view<const render::Camera, const Aircraft>().each(
         [&](const render::Camera& camera, const Aircraft& aircraft) {
           ImGui::Text("speed %.0f m/s  altitude %.0f m", aircraft.speedMetresPerSecond,
@@ -149,7 +153,8 @@ void Hud::prepare(ecs::World& world, VkExtent2D extent,
     const ImDrawList* list = draw->CmdLists[i];
     const VkDeviceSize vb = VkDeviceSize(list->VtxBuffer.Size) * sizeof(ImDrawVert);
     const VkDeviceSize ib = VkDeviceSize(list->IdxBuffer.Size) * sizeof(ImDrawIdx);
-    if (vertexOffset + vb > kVertexBytes || indexOffset + ib > kIndexBytes) break;  // text only: never
+    if (vertexOffset + vb > kVertexBytes || indexOffset + ib > kIndexBytes)
+      break;  // text only: never
     std::memcpy(vertices + vertexOffset, list->VtxBuffer.Data, vb);
     std::memcpy(indices + indexOffset, list->IdxBuffer.Data, ib);
     vertexOffset += vb;

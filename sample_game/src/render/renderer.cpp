@@ -49,7 +49,9 @@ Renderer::Renderer(gfx::Device& device, render::PresentTarget& target, ecs::Worl
             " ms");
 }
 
-Renderer::~Renderer() { finish(); }
+Renderer::~Renderer() {
+  finish();
+}
 
 void Renderer::rebuildGraph(VkExtent2D extent) {
   graph_ = std::make_unique<render::FrameGraph>(&device_);
@@ -69,7 +71,8 @@ void Renderer::rebuildGraph(VkExtent2D extent) {
   render::SceneTextures scene{hdr, depth};
   for (render::RenderFeature* feature : features_) scene = feature->addPasses(graph, scene);
   hdr = scene.hdr;
-  render::TextureHandle display = render::addTonemapPass(graph, tonemapper_, hdr, targetHandle_, &tonemap_);
+  render::TextureHandle display =
+      render::addTonemapPass(graph, tonemapper_, hdr, targetHandle_, &tonemap_);
   if (hud_) display = addHudPass(graph, *hud_, display);
   capture_.addToGraph(graph, hdr, display);
   graph.compile();
@@ -128,7 +131,8 @@ void Renderer::renderFrame(ecs::World& world) {
     return;
   }
   const VkExtent2D extent = target_.extent();
-  bool rebuild = !graph_ || extent.width != graphExtent_.width || extent.height != graphExtent_.height;
+  bool rebuild =
+      !graph_ || extent.width != graphExtent_.width || extent.height != graphExtent_.height;
   for (render::RenderFeature* feature : features_) rebuild |= feature->prepare(extent, frame.index);
   if (rebuild) rebuildGraph(extent);
   graph_->updateImportedTexture(targetHandle_, target_.image(), target_.view());

@@ -31,9 +31,9 @@ class TerrainRenderer;
 class Hud;
 
 struct RendererOptions {
-  VkExtent2D maxExtent{3840, 2160};           // largest output size the clouds allocate for
+  VkExtent2D maxExtent{3840, 2160};                // largest output size the clouds allocate for
   std::filesystem::path captureDirectory = "out";  // where named (script) captures go
-  bool hud = false;                           // on-screen help and frame rate (windowed runs)
+  bool hud = false;                                // on-screen help and frame rate (windowed runs)
 };
 
 class Renderer {

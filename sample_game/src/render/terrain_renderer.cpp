@@ -52,15 +52,19 @@ std::vector<TerrainChunk> buildChunks(const assets::MeshData& mesh,
                                       std::vector<std::uint32_t>& indices, std::uint32_t grid,
                                       const std::array<float, kTerrainLods>& lodCellMetres) {
   const glm::vec2 lo(mesh.boundsMin.x, mesh.boundsMin.z);
-  const glm::vec2 size = glm::max(glm::vec2(mesh.boundsMax.x, mesh.boundsMax.z) - lo, glm::vec2(1e-3f));
+  const glm::vec2 size =
+      glm::max(glm::vec2(mesh.boundsMax.x, mesh.boundsMax.z) - lo, glm::vec2(1e-3f));
   std::vector<std::vector<std::uint32_t>> buckets(std::size_t{grid} * grid);
   for (std::size_t t = 0; t + 2 < mesh.indices.size(); t += 3) {
-    const glm::vec3 centroid = (mesh.positions[mesh.indices[t]] + mesh.positions[mesh.indices[t + 1]] +
-                                mesh.positions[mesh.indices[t + 2]]) /
-                               3.0f;
+    const glm::vec3 centroid =
+        (mesh.positions[mesh.indices[t]] + mesh.positions[mesh.indices[t + 1]] +
+         mesh.positions[mesh.indices[t + 2]]) /
+        3.0f;
     const glm::vec2 uv = (glm::vec2(centroid.x, centroid.z) - lo) / size;
-    const auto cx = std::min(static_cast<std::uint32_t>(std::max(uv.x, 0.0f) * float(grid)), grid - 1);
-    const auto cz = std::min(static_cast<std::uint32_t>(std::max(uv.y, 0.0f) * float(grid)), grid - 1);
+    const auto cx =
+        std::min(static_cast<std::uint32_t>(std::max(uv.x, 0.0f) * float(grid)), grid - 1);
+    const auto cz =
+        std::min(static_cast<std::uint32_t>(std::max(uv.y, 0.0f) * float(grid)), grid - 1);
     auto& bucket = buckets[std::size_t{cz} * grid + cx];
     bucket.insert(bucket.end(), mesh.indices.begin() + static_cast<std::ptrdiff_t>(t),
                   mesh.indices.begin() + static_cast<std::ptrdiff_t>(t + 3));
@@ -90,7 +94,8 @@ std::vector<TerrainChunk> buildChunks(const assets::MeshData& mesh,
         if (a == b || b == c || a == c) continue;  // collapsed by the clustering
         indices.insert(indices.end(), {a, b, c});
       }
-      chunk.lods[l].indexCount = static_cast<std::uint32_t>(indices.size()) - chunk.lods[l].firstIndex;
+      chunk.lods[l].indexCount =
+          static_cast<std::uint32_t>(indices.size()) - chunk.lods[l].firstIndex;
     }
     chunks.push_back(chunk);
   }
@@ -138,14 +143,14 @@ TerrainRenderer::TerrainRenderer(gfx::Device& device, const assets::MeshData& me
   chunks_ = buildChunks(mesh, indices, 8, {0.0f, 2.5f * edge, 6.0f * edge});
   visible_.resize(chunks_.size());
 
-  vertices_ = gfx::Buffer(device, gfx::BufferDesc{vertices.size() * sizeof(TerrainVertex),
-                                                  VK_BUFFER_USAGE_VERTEX_BUFFER_BIT |
-                                                      VK_BUFFER_USAGE_TRANSFER_DST_BIT,
-                                                  gfx::MemoryUsage::GpuOnly, "terrain vertices"});
-  indices_ = gfx::Buffer(device, gfx::BufferDesc{indices.size() * sizeof(std::uint32_t),
-                                                 VK_BUFFER_USAGE_INDEX_BUFFER_BIT |
-                                                     VK_BUFFER_USAGE_TRANSFER_DST_BIT,
-                                                 gfx::MemoryUsage::GpuOnly, "terrain indices"});
+  vertices_ = gfx::Buffer(
+      device, gfx::BufferDesc{vertices.size() * sizeof(TerrainVertex),
+                              VK_BUFFER_USAGE_VERTEX_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT,
+                              gfx::MemoryUsage::GpuOnly, "terrain vertices"});
+  indices_ = gfx::Buffer(
+      device, gfx::BufferDesc{indices.size() * sizeof(std::uint32_t),
+                              VK_BUFFER_USAGE_INDEX_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT,
+                              gfx::MemoryUsage::GpuOnly, "terrain indices"});
   gfx::uploadToBuffer(device, vertices_, std::as_bytes(std::span(vertices)));
   gfx::uploadToBuffer(device, indices_, std::as_bytes(std::span(indices)));
 

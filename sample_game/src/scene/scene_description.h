@@ -23,11 +23,11 @@ struct CameraDescription {
 };
 
 struct SunDescription {
-  double timeOfDayHours = 13.0;          // [0, 24)
-  double hoursPerSecond = 0.0;           // how fast time of day advances (0: frozen)
-  double maxElevationDegrees = 65.0;     // at noon
-  double azimuthOffsetDegrees = 0.0;     // rotates the sun's path around the vertical
-  double illuminance = 10.0;             // scale of the sun's linear RGB illuminance
+  double timeOfDayHours = 13.0;       // [0, 24)
+  double hoursPerSecond = 0.0;        // how fast time of day advances (0: frozen)
+  double maxElevationDegrees = 65.0;  // at noon
+  double azimuthOffsetDegrees = 0.0;  // rotates the sun's path around the vertical
+  double illuminance = 10.0;          // scale of the sun's linear RGB illuminance
 };
 
 struct TerrainDescription {

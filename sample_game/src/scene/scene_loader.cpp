@@ -26,9 +26,9 @@ glm::dquat orientationFrom(double yawDegrees, double pitchDegrees) {
 
 }  // namespace
 
-std::optional<LoadedTerrain> loadTerrain(const SceneDescription& scene,
-                                         const std::filesystem::path& defaultTerrain,
-                                         const std::optional<std::filesystem::path>& terrainOverride) {
+std::optional<LoadedTerrain> loadTerrain(
+    const SceneDescription& scene, const std::filesystem::path& defaultTerrain,
+    const std::optional<std::filesystem::path>& terrainOverride) {
   std::optional<std::filesystem::path> path = terrainOverride;
   if (!path && scene.terrain) {
     path = scene.terrain->gltf == "default" ? defaultTerrain : scene.terrain->gltf;
@@ -64,7 +64,8 @@ void populateScene(ecs::App& app, const SceneDescription& scene,
   Aircraft aircraft;
   aircraft.speedMetresPerSecond = scene.camera.speedMetresPerSecond;
   world.emplace<Aircraft>(player, aircraft);
-  world.emplace<clouds::ecs::CloudQuality>(player, clouds::ecs::CloudQuality{scene.camera.cloudQuality});
+  world.emplace<clouds::ecs::CloudQuality>(player,
+                                           clouds::ecs::CloudQuality{scene.camera.cloudQuality});
 
   // The sun and its clock.
   const ecs::Entity sun = world.create();

@@ -31,9 +31,9 @@ struct LoadedTerrain {
 // is no override. `defaultTerrain` is what "gltf": "default" means (the build-time generated
 // terrain); `terrainOverride`, when set, replaces the scene's terrain (the --terrain option).
 // Throws engine::Error naming the file and the problem.
-std::optional<LoadedTerrain> loadTerrain(const SceneDescription& scene,
-                                         const std::filesystem::path& defaultTerrain,
-                                         const std::optional<std::filesystem::path>& terrainOverride);
+std::optional<LoadedTerrain> loadTerrain(
+    const SceneDescription& scene, const std::filesystem::path& defaultTerrain,
+    const std::optional<std::filesystem::path>& terrainOverride);
 
 void populateScene(engine::ecs::App& app, const SceneDescription& scene,
                    const std::optional<LoadedTerrain>& terrain);

@@ -1,1 +1,3 @@
-int shaderErrorCheck() { return 0; }
+int shaderErrorCheck() {
+  return 0;
+}

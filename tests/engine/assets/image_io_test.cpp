@@ -15,7 +15,8 @@ std::filesystem::path scratch(const char* name) {
 
 TEST(ImageIo, PngRoundTripsExactly) {
   ImageRgba8 image{5, 3, {}};
-  for (std::uint32_t i = 0; i < 5 * 3 * 4; ++i) image.pixels.push_back(static_cast<std::uint8_t>(i * 7));
+  for (std::uint32_t i = 0; i < 5 * 3 * 4; ++i)
+    image.pixels.push_back(static_cast<std::uint8_t>(i * 7));
   writePng(scratch("a.png"), image);
   const ImageRgba32f read = readImage(scratch("a.png"));
   ASSERT_EQ(read.width, 5u);
@@ -27,7 +28,8 @@ TEST(ImageIo, PngRoundTripsExactly) {
 
 TEST(ImageIo, ExrKeepsHdrValuesToHalfPrecision) {
   ImageRgba32f image{4, 2, {}};
-  for (std::uint32_t i = 0; i < 4 * 2 * 4; ++i) image.pixels.push_back(0.01f + 37.5f * static_cast<float>(i));
+  for (std::uint32_t i = 0; i < 4 * 2 * 4; ++i)
+    image.pixels.push_back(0.01f + 37.5f * static_cast<float>(i));
   writeExr(scratch("a.exr"), image);
   const ImageRgba32f read = readImage(scratch("a.exr"));
   ASSERT_EQ(read.width, 4u);
@@ -44,7 +46,11 @@ TEST(ImageIo, ErrorsNameTheFile) {
     EXPECT_NE(std::string(e.what()).find("missing.png"), std::string::npos);
   }
   std::filesystem::create_directories(scratch(""));
-  { std::FILE* f = std::fopen(scratch("garbage.png").c_str(), "wb"); std::fputs("not a png", f); std::fclose(f); }
+  {
+    std::FILE* f = std::fopen(scratch("garbage.png").c_str(), "wb");
+    std::fputs("not a png", f);
+    std::fclose(f);
+  }
   EXPECT_THROW(readImage(scratch("garbage.png")), engine::Error);
   EXPECT_THROW(writePng(scratch("bad.png"), ImageRgba8{2, 2, {1, 2, 3}}), engine::Error);
 }

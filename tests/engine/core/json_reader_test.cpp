@@ -41,7 +41,8 @@ TEST(JsonReader, ErrorsNameFilePathAndReason) {
   EXPECT_EQ(errorOf([&] { r.object("clouds").number("type", 0, 1); }),
             "scene.json: clouds.type: must be a number, got a string");
   EXPECT_EQ(errorOf([&] { r.object("camera"); }), "scene.json: camera: is required");
-  EXPECT_EQ(errorOf([&] { r.objects("list"); }), "scene.json: list[1]: must be an object, got a number");
+  EXPECT_EQ(errorOf([&] { r.objects("list"); }),
+            "scene.json: list[1]: must be an object, got a number");
   EXPECT_EQ(errorOf([&] {
               const JsonReader c = r.object("clouds");
               c.number("coverage", 0, 2);
@@ -61,9 +62,14 @@ TEST(JsonReader, HugeUnsignedIntegersAreOutOfRangeNotWrapped) {
 
 TEST(JsonReader, SyntaxErrorsNameTheFile) {
   const auto path = std::filesystem::temp_directory_path() / "cloudscape_json_reader_bad.json";
-  { std::FILE* f = std::fopen(path.c_str(), "w"); std::fputs("{\"a\": 1,,}", f); std::fclose(f); }
+  {
+    std::FILE* f = std::fopen(path.c_str(), "w");
+    std::fputs("{\"a\": 1,,}", f);
+    std::fclose(f);
+  }
   const std::string error = errorOf([&] { JsonReader::parseFile(path); });
-  EXPECT_NE(error.find("cloudscape_json_reader_bad.json: not valid JSON"), std::string::npos) << error;
+  EXPECT_NE(error.find("cloudscape_json_reader_bad.json: not valid JSON"), std::string::npos)
+      << error;
 }
 
 }  // namespace

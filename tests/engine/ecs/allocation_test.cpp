@@ -37,9 +37,15 @@ void* orThrow(void* p) {
 
 }  // namespace
 
-void* operator new(std::size_t size) { return orThrow(countedAlloc(size)); }
-void* operator new[](std::size_t size) { return orThrow(countedAlloc(size)); }
-void* operator new(std::size_t size, const std::nothrow_t&) noexcept { return countedAlloc(size); }
+void* operator new(std::size_t size) {
+  return orThrow(countedAlloc(size));
+}
+void* operator new[](std::size_t size) {
+  return orThrow(countedAlloc(size));
+}
+void* operator new(std::size_t size, const std::nothrow_t&) noexcept {
+  return countedAlloc(size);
+}
 void* operator new[](std::size_t size, const std::nothrow_t&) noexcept {
   return countedAlloc(size);
 }
@@ -55,33 +61,55 @@ void* operator new(std::size_t size, std::align_val_t a, const std::nothrow_t&) 
 void* operator new[](std::size_t size, std::align_val_t a, const std::nothrow_t&) noexcept {
   return countedAlignedAlloc(size, a);
 }
-void operator delete(void* p) noexcept { std::free(p); }
-void operator delete[](void* p) noexcept { std::free(p); }
-void operator delete(void* p, std::size_t) noexcept { std::free(p); }
-void operator delete[](void* p, std::size_t) noexcept { std::free(p); }
-void operator delete(void* p, const std::nothrow_t&) noexcept { std::free(p); }
-void operator delete[](void* p, const std::nothrow_t&) noexcept { std::free(p); }
-void operator delete(void* p, std::align_val_t) noexcept { std::free(p); }
-void operator delete[](void* p, std::align_val_t) noexcept { std::free(p); }
-void operator delete(void* p, std::size_t, std::align_val_t) noexcept { std::free(p); }
-void operator delete[](void* p, std::size_t, std::align_val_t) noexcept { std::free(p); }
-void operator delete(void* p, std::align_val_t, const std::nothrow_t&) noexcept { std::free(p); }
+void operator delete(void* p) noexcept {
+  std::free(p);
+}
+void operator delete[](void* p) noexcept {
+  std::free(p);
+}
+void operator delete(void* p, std::size_t) noexcept {
+  std::free(p);
+}
+void operator delete[](void* p, std::size_t) noexcept {
+  std::free(p);
+}
+void operator delete(void* p, const std::nothrow_t&) noexcept {
+  std::free(p);
+}
+void operator delete[](void* p, const std::nothrow_t&) noexcept {
+  std::free(p);
+}
+void operator delete(void* p, std::align_val_t) noexcept {
+  std::free(p);
+}
+void operator delete[](void* p, std::align_val_t) noexcept {
+  std::free(p);
+}
+void operator delete(void* p, std::size_t, std::align_val_t) noexcept {
+  std::free(p);
+}
+void operator delete[](void* p, std::size_t, std::align_val_t) noexcept {
+  std::free(p);
+}
+void operator delete(void* p, std::align_val_t, const std::nothrow_t&) noexcept {
+  std::free(p);
+}
 void operator delete[](void* p, std::align_val_t, const std::nothrow_t&) noexcept {
   std::free(p);
 }
 
 namespace {
 
+using ecs_test::Health;
+using ecs_test::Position;
+using ecs_test::Tag;
+using ecs_test::Velocity;
 using engine::ecs::Entity;
 using engine::ecs::EventReader;
 using engine::ecs::FrameTime;
 using engine::ecs::Phase;
 using engine::ecs::Scheduler;
 using engine::ecs::World;
-using ecs_test::Health;
-using ecs_test::Position;
-using ecs_test::Tag;
-using ecs_test::Velocity;
 
 struct Hit {
   Entity target;
@@ -180,9 +208,8 @@ TEST(Allocation, WarmFramesDoNotAllocate) {
   scheduler.add(Phase::Render, "render.collect", [&](World& w) {
     w.view<const Position>().each([&](const Position&) { ++stats.rendered; });
   });
-  scheduler.add(Phase::PostRender, "post.stats", [&](World& w) {
-    (void)w.ctx().get<FrameTime>().deltaSeconds;
-  });
+  scheduler.add(Phase::PostRender, "post.stats",
+                [&](World& w) { (void)w.ctx().get<FrameTime>().deltaSeconds; });
 
   auto frame = [&] {
     FrameTime& time = world.ctx().get<FrameTime>();

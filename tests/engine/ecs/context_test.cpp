@@ -11,10 +11,10 @@
 
 namespace {
 
+using ecs_test::Tracked;
 using engine::ecs::Context;
 using engine::ecs::FrameTime;
 using engine::ecs::World;
-using ecs_test::Tracked;
 
 struct Settings {
   int quality = 1;

@@ -9,9 +9,9 @@
 
 namespace {
 
+using ecs_test::Position;
 using engine::ecs::Entity;
 using engine::ecs::World;
-using ecs_test::Position;
 
 TEST(Entity, NullDefaultComparisonAndHash) {
   constexpr Entity none;

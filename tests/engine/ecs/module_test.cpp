@@ -12,13 +12,13 @@
 
 namespace {
 
+using ecs_test::Position;
+using ecs_test::Velocity;
 using engine::ecs::App;
 using engine::ecs::Module;
 using engine::ecs::Phase;
 using engine::ecs::Scheduler;
 using engine::ecs::World;
-using ecs_test::Position;
-using ecs_test::Velocity;
 
 struct Gravity {
   float acceleration = -9.8f;

@@ -11,21 +11,19 @@
 
 namespace {
 
+using ecs_test::Health;
 using engine::ecs::Entity;
 using engine::ecs::EventReader;
 using engine::ecs::FrameTime;
 using engine::ecs::Phase;
 using engine::ecs::Scheduler;
 using engine::ecs::World;
-using ecs_test::Health;
 
 TEST(Scheduler, RunsPhasesInOrderAndSystemsInInsertionOrder) {
   World world;
   Scheduler scheduler;
   std::vector<std::string> log;
-  auto record = [&log](std::string name) {
-    return [&log, name](World&) { log.push_back(name); };
-  };
+  auto record = [&log](std::string name) { return [&log, name](World&) { log.push_back(name); }; };
   // Added out of phase order on purpose.
   scheduler.add(Phase::PostRender, "post", record("post"));
   scheduler.add(Phase::Render, "render", record("render"));
@@ -36,8 +34,8 @@ TEST(Scheduler, RunsPhasesInOrderAndSystemsInInsertionOrder) {
   scheduler.add(Phase::Simulate, "sim-c", record("sim-c"));
 
   scheduler.runFrame(world);
-  EXPECT_EQ(log, (std::vector<std::string>{"input", "sim-b", "sim-a", "sim-c", "pre", "render",
-                                           "post"}));
+  EXPECT_EQ(
+      log, (std::vector<std::string>{"input", "sim-b", "sim-a", "sim-c", "pre", "render", "post"}));
   log.clear();
   scheduler.runFrame(world);
   EXPECT_EQ(log.size(), 7u);
@@ -61,9 +59,8 @@ TEST(Scheduler, RejectsBadSystems) {
   EXPECT_THROW(scheduler.add(Phase::Render, "a", [](World&) {}), engine::Error);
   EXPECT_THROW(scheduler.add(Phase::Render, "", [](World&) {}), engine::Error);
   EXPECT_THROW(scheduler.add(Phase::Render, "empty", nullptr), engine::Error);
-  scheduler.add(Phase::Simulate, "adds", [&scheduler](World&) {
-    scheduler.add(Phase::Render, "late", [](World&) {});
-  });
+  scheduler.add(Phase::Simulate, "adds",
+                [&scheduler](World&) { scheduler.add(Phase::Render, "late", [](World&) {}); });
   EXPECT_THROW(scheduler.runFrame(world), engine::Error);
   EXPECT_FALSE(scheduler.contains("late"));
   EXPECT_TRUE(scheduler.currentSystem().empty());  // reset after the exception
@@ -87,9 +84,8 @@ TEST(Scheduler, FlushesDeferredAfterEachSystemAndUpdatesEventsAtFrameEnd) {
   // Sent in PostRender of frame 0, read in Input of frame 1, gone by frame 2.
   EventReader<int> reader;
   std::vector<std::size_t> seenPerFrame;
-  scheduler.add(Phase::Input, "read", [&](World& w) {
-    seenPerFrame.push_back(reader.read(w.events<int>()).size());
-  });
+  scheduler.add(Phase::Input, "read",
+                [&](World& w) { seenPerFrame.push_back(reader.read(w.events<int>()).size()); });
   scheduler.add(Phase::PostRender, "send", [](World& w) {
     if (w.ctx().get<FrameTime>().frameIndex == 0) w.events<int>().send(42);
   });

@@ -15,12 +15,12 @@
 
 namespace {
 
+using ecs_test::MoveOnly;
+using ecs_test::Tracked;
 using engine::ecs::Entity;
 using engine::ecs::SparseSet;
 using engine::ecs::Storage;
 using engine::ecs::World;
-using ecs_test::MoveOnly;
-using ecs_test::Tracked;
 
 // Checks every invariant of `storage` against `model`: same members and values, dense
 // positions consistent with index(), no stale generation accepted.
@@ -58,7 +58,8 @@ TEST(SparseSet, RandomisedOperationsMatchStdMap) {
 
   for (int step = 0; step < 20000; ++step) {
     const Entity e{indices[pickIndex(rng)], pickGeneration(rng)};
-    const std::string value = "value-" + std::to_string(step) + std::string(static_cast<std::size_t>(step % 40), 'x');
+    const std::string value =
+        "value-" + std::to_string(step) + std::string(static_cast<std::size_t>(step % 40), 'x');
     const int op = pickOp(rng);
     const bool present = model.count(e) != 0;
     // Another generation of the same index present: e is a stale handle for the storage.

@@ -10,12 +10,12 @@
 
 namespace {
 
-using engine::ecs::Entity;
-using engine::ecs::World;
 using ecs_test::Health;
 using ecs_test::Position;
 using ecs_test::Tag;
 using ecs_test::Velocity;
+using engine::ecs::Entity;
+using engine::ecs::World;
 
 // Counts visits per entity so tests can assert "exactly once".
 using Visits = std::map<Entity, int>;

@@ -10,13 +10,13 @@
 
 namespace {
 
-using engine::ecs::Entity;
-using engine::ecs::World;
 using ecs_test::Health;
 using ecs_test::Position;
 using ecs_test::Tag;
 using ecs_test::Tracked;
 using ecs_test::Velocity;
+using engine::ecs::Entity;
+using engine::ecs::World;
 
 TEST(WorldComponents, EmplaceGetHasRemoveSize) {
   World world;

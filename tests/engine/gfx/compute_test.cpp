@@ -36,10 +36,10 @@ std::vector<float> runMathProbe(Device& device, std::uint32_t count, float scale
   desc.specialization = {{0, scaleBits}};
   desc.debugName = "math probe";
   Pipeline pipeline(device, desc);
-  Buffer output(device, BufferDesc{count * sizeof(float),
-                                   VK_BUFFER_USAGE_STORAGE_BUFFER_BIT |
-                                       VK_BUFFER_USAGE_TRANSFER_SRC_BIT,
-                                   MemoryUsage::GpuOnly, "math probe output"});
+  Buffer output(device,
+                BufferDesc{count * sizeof(float),
+                           VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_SRC_BIT,
+                           MemoryUsage::GpuOnly, "math probe output"});
   DescriptorArena arena(device, "math probe descriptors");
   if (timer != nullptr) timer->reset();
   device.immediateSubmit([&](VkCommandBuffer cmd) {
@@ -76,8 +76,11 @@ TEST_F(Compute, StorageImagePatternReadsBackExactly) {
   desc.pushConstantBytes = 2 * sizeof(std::uint32_t);
   desc.debugName = "image pattern";
   Pipeline pipeline(device(), desc);
-  Image image(device(), ImageDesc{VK_IMAGE_TYPE_2D, VK_FORMAT_R8G8B8A8_UNORM,
-                                  {extent.width, extent.height, 1}, 1, 1,
+  Image image(device(), ImageDesc{VK_IMAGE_TYPE_2D,
+                                  VK_FORMAT_R8G8B8A8_UNORM,
+                                  {extent.width, extent.height, 1},
+                                  1,
+                                  1,
                                   VK_IMAGE_USAGE_STORAGE_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT,
                                   "pattern target"});
   DescriptorArena arena(device(), "pattern descriptors");
@@ -87,8 +90,8 @@ TEST_F(Compute, StorageImagePatternReadsBackExactly) {
     writer.storageImage(0, image.view());
     bindPipeline(device(), cmd, pipeline, arena, writer);
     const std::uint32_t constants[2] = {extent.width, extent.height};
-    vkCmdPushConstants(cmd, pipeline.layout(), pipeline.pushConstantStages(), 0,
-                       sizeof(constants), constants);
+    vkCmdPushConstants(cmd, pipeline.layout(), pipeline.pushConstantStages(), 0, sizeof(constants),
+                       constants);
     vkCmdDispatch(cmd, groupCount(extent.width, 8), groupCount(extent.height, 8), 1);
   });
   const auto bytes = readbackImage(device(), image, kComputeGeneral);

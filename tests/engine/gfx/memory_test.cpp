@@ -53,16 +53,21 @@ TEST_F(Memory, HostVisibleBuffersAreMappedAndGpuOnlyAreNot) {
   EXPECT_NE(upload.mapped(), nullptr);
   upload.mappedAs<float>()[3] = 1.5f;
   EXPECT_EQ(upload.mappedAs<float>()[3], 1.5f);
-  Buffer readback(device(), BufferDesc{256, VK_BUFFER_USAGE_TRANSFER_DST_BIT,
-                                       MemoryUsage::Readback, "readback buffer"});
+  Buffer readback(device(), BufferDesc{256, VK_BUFFER_USAGE_TRANSFER_DST_BIT, MemoryUsage::Readback,
+                                       "readback buffer"});
   EXPECT_NE(readback.mapped(), nullptr);
 }
 
 TEST_F(Memory, MovedFromResourcesReleaseNothing) {
   device().waitIdle();
   const auto before = device().memory().stats().allocationCount;
-  Image a(device(), ImageDesc{VK_IMAGE_TYPE_3D, VK_FORMAT_R8G8B8A8_UNORM, {16, 16, 16}, 1, 1,
-                              VK_IMAGE_USAGE_SAMPLED_BIT, "moved image"});
+  Image a(device(), ImageDesc{VK_IMAGE_TYPE_3D,
+                              VK_FORMAT_R8G8B8A8_UNORM,
+                              {16, 16, 16},
+                              1,
+                              1,
+                              VK_IMAGE_USAGE_SAMPLED_BIT,
+                              "moved image"});
   Image b = std::move(a);
   EXPECT_FALSE(static_cast<bool>(a));
   EXPECT_TRUE(static_cast<bool>(b));
@@ -72,14 +77,20 @@ TEST_F(Memory, MovedFromResourcesReleaseNothing) {
 }
 
 TEST_F(Memory, ExtraViewsOfOneMipAreValid) {
-  Image image(device(), ImageDesc{VK_IMAGE_TYPE_2D, VK_FORMAT_R8G8B8A8_UNORM, {64, 64, 1}, 4, 1,
+  Image image(device(), ImageDesc{VK_IMAGE_TYPE_2D,
+                                  VK_FORMAT_R8G8B8A8_UNORM,
+                                  {64, 64, 1},
+                                  4,
+                                  1,
                                   VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_STORAGE_BIT,
                                   "mipped image"});
   std::vector<ImageView> mips;
   for (std::uint32_t mip = 0; mip < 4; ++mip) {
     mips.emplace_back(device(), image,
-                      ImageViewDesc{VK_IMAGE_VIEW_TYPE_2D, VK_FORMAT_UNDEFINED,
-                                    {VK_IMAGE_ASPECT_COLOR_BIT, mip, 1, 0, 1}, "mip view"});
+                      ImageViewDesc{VK_IMAGE_VIEW_TYPE_2D,
+                                    VK_FORMAT_UNDEFINED,
+                                    {VK_IMAGE_ASPECT_COLOR_BIT, mip, 1, 0, 1},
+                                    "mip view"});
     EXPECT_NE(mips.back().vk(), VK_NULL_HANDLE);
   }
 }

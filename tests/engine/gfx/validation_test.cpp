@@ -8,7 +8,9 @@ namespace {
 
 class Validation : public test::GpuTest {};
 
-TEST_F(Validation, LayerIsActive) { EXPECT_TRUE(instance().validationEnabled()); }
+TEST_F(Validation, LayerIsActive) {
+  EXPECT_TRUE(instance().validationEnabled());
+}
 
 TEST_F(Validation, InjectedViolationIsCaught) {
   // VUID-VkBufferCreateInfo-usage-requiredbitmask: usage must not be 0. Drivers tolerate it,
@@ -27,7 +29,8 @@ TEST_F(Validation, InjectedViolationIsCaught) {
   for (const auto& m : messages) {
     found = found || m.idName.find("VkBufferCreateInfo-usage") != std::string::npos;
   }
-  EXPECT_TRUE(found) << "first message: " << messages.front().idName << " " << messages.front().text;
+  EXPECT_TRUE(found) << "first message: " << messages.front().idName << " "
+                     << messages.front().text;
 }
 
 TEST_F(Validation, CleanWorkProducesNoMessages) {

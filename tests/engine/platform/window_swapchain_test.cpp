@@ -17,7 +17,8 @@ namespace {
 
 using namespace engine;
 
-// Clears the acquired image (attachment clear) and presents it; returns false when nothing was acquired.
+// Clears the acquired image (attachment clear) and presents it; returns false when nothing was
+// acquired.
 bool renderClearFrame(gfx::FrameRing& ring, render::SwapchainTarget& target) {
   auto& frame = ring.begin();
   if (!target.acquire(frame.slot)) {
@@ -59,7 +60,8 @@ TEST(WindowSwapchain, ResizeAndMinimizeAreHandled) {
   desc.extensions = window.requiredInstanceExtensions();
   gfx::Instance instance(desc);
   std::vector<std::string> messages;
-  instance.setValidationHandler([&](const gfx::ValidationMessage& m) { messages.push_back(m.text); });
+  instance.setValidationHandler(
+      [&](const gfx::ValidationMessage& m) { messages.push_back(m.text); });
   VkSurfaceKHR surface = window.createSurface(instance.vk());
   {
     gfx::Device device(instance, gfx::DeviceDesc{surface, ""});

@@ -50,10 +50,13 @@ void buildGraph(FrameGraph& graph, const Pipelines& p, VkExtent2D extent,
   desc.format = VK_FORMAT_R8G8B8A8_UNORM;
   const ResourceState host{VK_IMAGE_LAYOUT_UNDEFINED, VK_PIPELINE_STAGE_2_HOST_BIT,
                            VK_ACCESS_2_HOST_READ_BIT};
-  BufferHandle out = graph.importBuffer("readback", ImportedBuffer{readback.vk(), readback.size(),
-                                                                  host, host});
-  struct FillData { TextureHandle target; };
-  const auto& fill = graph.addPass<FillData>("fill", PassType::Compute,
+  BufferHandle out =
+      graph.importBuffer("readback", ImportedBuffer{readback.vk(), readback.size(), host, host});
+  struct FillData {
+    TextureHandle target;
+  };
+  const auto& fill = graph.addPass<FillData>(
+      "fill", PassType::Compute,
       [&](PassBuilder& b, FillData& d) {
         d.target = b.write(b.createTexture("filled", desc), Access::StorageWrite);
       },
@@ -66,8 +69,11 @@ void buildGraph(FrameGraph& graph, const Pipelines& p, VkExtent2D extent,
         vkCmdPushConstants(ctx.cmd(), p.fill.layout(), p.fill.pushConstantStages(), 0, 8, size);
         vkCmdDispatch(ctx.cmd(), gfx::groupCount(e.width, 8), gfx::groupCount(e.height, 8), 1);
       });
-  struct InvertData { TextureHandle source, target; };
-  const auto& invert = graph.addPass<InvertData>("invert", PassType::Compute,
+  struct InvertData {
+    TextureHandle source, target;
+  };
+  const auto& invert = graph.addPass<InvertData>(
+      "invert", PassType::Compute,
       [&](PassBuilder& b, InvertData& d) {
         d.source = b.read(fill.target, Access::SampledRead);
         d.target = b.write(b.createTexture("inverted", desc), Access::StorageWrite);
@@ -82,8 +88,12 @@ void buildGraph(FrameGraph& graph, const Pipelines& p, VkExtent2D extent,
         vkCmdPushConstants(ctx.cmd(), p.invert.layout(), p.invert.pushConstantStages(), 0, 8, size);
         vkCmdDispatch(ctx.cmd(), gfx::groupCount(e.width, 8), gfx::groupCount(e.height, 8), 1);
       });
-  struct CopyData { TextureHandle source; BufferHandle out; };
-  graph.addPass<CopyData>("copy out", PassType::Transfer,
+  struct CopyData {
+    TextureHandle source;
+    BufferHandle out;
+  };
+  graph.addPass<CopyData>(
+      "copy out", PassType::Transfer,
       [&](PassBuilder& b, CopyData& d) {
         d.source = b.read(invert.target, Access::TransferSrc);
         d.out = b.write(out, Access::TransferDst);

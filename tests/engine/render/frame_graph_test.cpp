@@ -42,29 +42,44 @@ struct TypicalFrame {
   TypicalFrame() {
     backbuffer = graph.importTexture("backbuffer", presentable());
     TextureHandle hdr;
-    graph.addPass<Empty>("sky", PassType::Compute, [&](PassBuilder& b, Empty&) {
-      hdr = b.createTexture("hdr", colour());
-      hdr = b.write(hdr, Access::StorageWrite);
-    }, kNoExecute);
+    graph.addPass<Empty>(
+        "sky", PassType::Compute,
+        [&](PassBuilder& b, Empty&) {
+          hdr = b.createTexture("hdr", colour());
+          hdr = b.write(hdr, Access::StorageWrite);
+        },
+        kNoExecute);
     TextureHandle depth;
-    graph.addPass<Empty>("debug overlay", PassType::Compute, [&](PassBuilder& b, Empty&) {
-      b.read(hdr, Access::SampledRead);
-      TextureHandle debug = b.createTexture("debug", colour());
-      b.write(debug, Access::StorageWrite);
-    }, kNoExecute);
-    graph.addPass<Empty>("scene", PassType::Graphics, [&](PassBuilder& b, Empty&) {
-      depth = b.createTexture("depth", colour(VK_FORMAT_D32_SFLOAT));
-      depth = b.depthAttachment(depth, VK_ATTACHMENT_LOAD_OP_CLEAR);
-      hdr = b.colorAttachment(hdr, VK_ATTACHMENT_LOAD_OP_LOAD);
-    }, kNoExecute);
-    graph.addPass<Empty>("tonemap", PassType::Graphics, [&](PassBuilder& b, Empty&) {
-      b.read(hdr, Access::SampledRead);
-      backbuffer = b.colorAttachment(backbuffer, VK_ATTACHMENT_LOAD_OP_DONT_CARE);
-    }, kNoExecute);
-    graph.addPass<Empty>("readback", PassType::Transfer, [&](PassBuilder& b, Empty&) {
-      b.read(backbuffer, Access::TransferSrc);
-      b.sideEffect();
-    }, kNoExecute);
+    graph.addPass<Empty>(
+        "debug overlay", PassType::Compute,
+        [&](PassBuilder& b, Empty&) {
+          b.read(hdr, Access::SampledRead);
+          TextureHandle debug = b.createTexture("debug", colour());
+          b.write(debug, Access::StorageWrite);
+        },
+        kNoExecute);
+    graph.addPass<Empty>(
+        "scene", PassType::Graphics,
+        [&](PassBuilder& b, Empty&) {
+          depth = b.createTexture("depth", colour(VK_FORMAT_D32_SFLOAT));
+          depth = b.depthAttachment(depth, VK_ATTACHMENT_LOAD_OP_CLEAR);
+          hdr = b.colorAttachment(hdr, VK_ATTACHMENT_LOAD_OP_LOAD);
+        },
+        kNoExecute);
+    graph.addPass<Empty>(
+        "tonemap", PassType::Graphics,
+        [&](PassBuilder& b, Empty&) {
+          b.read(hdr, Access::SampledRead);
+          backbuffer = b.colorAttachment(backbuffer, VK_ATTACHMENT_LOAD_OP_DONT_CARE);
+        },
+        kNoExecute);
+    graph.addPass<Empty>(
+        "readback", PassType::Transfer,
+        [&](PassBuilder& b, Empty&) {
+          b.read(backbuffer, Access::TransferSrc);
+          b.sideEffect();
+        },
+        kNoExecute);
   }
 };
 
@@ -79,16 +94,21 @@ TEST(FrameGraph, OrdersByDependenciesAndCullsUnreadOutputs) {
 TEST(FrameGraph, CullingPropagatesThroughChains) {
   FrameGraph graph;
   TextureHandle a, b;
-  graph.addPass<Empty>("producer", PassType::Compute, [&](PassBuilder& pb, Empty&) {
-    a = pb.write(pb.createTexture("a", colour()), Access::StorageWrite);
-  }, kNoExecute);
-  graph.addPass<Empty>("consumer", PassType::Compute, [&](PassBuilder& pb, Empty&) {
-    pb.read(a, Access::SampledRead);
-    b = pb.write(pb.createTexture("b", colour()), Access::StorageWrite);
-  }, kNoExecute);
-  graph.addPass<Empty>("kept", PassType::Compute, [&](PassBuilder& pb, Empty&) {
-    pb.sideEffect();
-  }, kNoExecute);
+  graph.addPass<Empty>(
+      "producer", PassType::Compute,
+      [&](PassBuilder& pb, Empty&) {
+        a = pb.write(pb.createTexture("a", colour()), Access::StorageWrite);
+      },
+      kNoExecute);
+  graph.addPass<Empty>(
+      "consumer", PassType::Compute,
+      [&](PassBuilder& pb, Empty&) {
+        pb.read(a, Access::SampledRead);
+        b = pb.write(pb.createTexture("b", colour()), Access::StorageWrite);
+      },
+      kNoExecute);
+  graph.addPass<Empty>(
+      "kept", PassType::Compute, [&](PassBuilder& pb, Empty&) { pb.sideEffect(); }, kNoExecute);
   graph.compile();
   EXPECT_EQ(names(graph.executionOrder()), std::vector<std::string>{"kept"});
   EXPECT_EQ(names(graph.culledPasses()), (std::vector<std::string>{"producer", "consumer"}));
@@ -102,20 +122,23 @@ TEST(FrameGraph, OrderRespectsWriteAfterReadAndDeclarationOrderOtherwise) {
   historyDesc.desc = colour();
   historyDesc.initial = {VK_IMAGE_LAYOUT_GENERAL, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
                          VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT};
-  historyDesc.final = ResourceState{VK_IMAGE_LAYOUT_GENERAL,
-                                    VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
+  historyDesc.final = ResourceState{VK_IMAGE_LAYOUT_GENERAL, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
                                     VK_ACCESS_2_SHADER_STORAGE_READ_BIT};
   TextureHandle history = graph.importTexture("history", historyDesc);
-  graph.addPass<Empty>("reader", PassType::Compute, [&](PassBuilder& b, Empty&) {
-    b.read(history, Access::StorageRead);
-    b.sideEffect();
-  }, kNoExecute);
-  graph.addPass<Empty>("independent", PassType::Compute, [&](PassBuilder& b, Empty&) {
-    b.sideEffect();
-  }, kNoExecute);
-  graph.addPass<Empty>("updater", PassType::Compute, [&](PassBuilder& b, Empty&) {
-    history = b.write(history, Access::StorageWrite);
-  }, kNoExecute);
+  graph.addPass<Empty>(
+      "reader", PassType::Compute,
+      [&](PassBuilder& b, Empty&) {
+        b.read(history, Access::StorageRead);
+        b.sideEffect();
+      },
+      kNoExecute);
+  graph.addPass<Empty>(
+      "independent", PassType::Compute, [&](PassBuilder& b, Empty&) { b.sideEffect(); },
+      kNoExecute);
+  graph.addPass<Empty>(
+      "updater", PassType::Compute,
+      [&](PassBuilder& b, Empty&) { history = b.write(history, Access::StorageWrite); },
+      kNoExecute);
   graph.compile();
   EXPECT_EQ(names(graph.executionOrder()),
             (std::vector<std::string>{"reader", "independent", "updater"}));
@@ -184,21 +207,33 @@ TEST(FrameGraph, BarriersTransitionLayoutsAndMakeWritesVisible) {
 TEST(FrameGraph, ReadsInANewStageOfTheSameLayoutStillWaitForTheWrite) {
   FrameGraph graph;
   TextureHandle t;
-  graph.addPass<Empty>("write", PassType::Compute, [&](PassBuilder& b, Empty&) {
-    t = b.write(b.createTexture("t", colour()), Access::StorageWrite);
-  }, kNoExecute);
-  graph.addPass<Empty>("sample in fragment", PassType::Graphics, [&](PassBuilder& b, Empty&) {
-    b.read(t, Access::SampledRead);
-    b.sideEffect();
-  }, kNoExecute);
-  graph.addPass<Empty>("sample in fragment again", PassType::Graphics, [&](PassBuilder& b, Empty&) {
-    b.read(t, Access::SampledRead);
-    b.sideEffect();
-  }, kNoExecute);
-  graph.addPass<Empty>("sample in compute", PassType::Compute, [&](PassBuilder& b, Empty&) {
-    b.read(t, Access::SampledRead);
-    b.sideEffect();
-  }, kNoExecute);
+  graph.addPass<Empty>(
+      "write", PassType::Compute,
+      [&](PassBuilder& b, Empty&) {
+        t = b.write(b.createTexture("t", colour()), Access::StorageWrite);
+      },
+      kNoExecute);
+  graph.addPass<Empty>(
+      "sample in fragment", PassType::Graphics,
+      [&](PassBuilder& b, Empty&) {
+        b.read(t, Access::SampledRead);
+        b.sideEffect();
+      },
+      kNoExecute);
+  graph.addPass<Empty>(
+      "sample in fragment again", PassType::Graphics,
+      [&](PassBuilder& b, Empty&) {
+        b.read(t, Access::SampledRead);
+        b.sideEffect();
+      },
+      kNoExecute);
+  graph.addPass<Empty>(
+      "sample in compute", PassType::Compute,
+      [&](PassBuilder& b, Empty&) {
+        b.read(t, Access::SampledRead);
+        b.sideEffect();
+      },
+      kNoExecute);
   graph.compile();
   EXPECT_EQ(graph.barriersBefore("sample in fragment").size(), 1u);
   EXPECT_EQ(graph.barriersBefore("sample in fragment again").size(), 0u) << "already visible";
@@ -214,21 +249,27 @@ TEST(FrameGraph, ReadsInANewStageOfTheSameLayoutStillWaitForTheWrite) {
 TEST(FrameGraph, StaleVersionsAndMisuseAreRejected) {
   FrameGraph graph;
   TextureHandle v0, v1;
-  graph.addPass<Empty>("first", PassType::Compute, [&](PassBuilder& b, Empty&) {
-    v0 = b.createTexture("t", colour());
-    v1 = b.write(v0, Access::StorageWrite);
-  }, kNoExecute);
-  EXPECT_THROW(graph.addPass<Empty>("stale", PassType::Compute, [&](PassBuilder& b, Empty&) {
-    b.read(v0, Access::SampledRead);
-  }, kNoExecute), engine::Error);
-  EXPECT_THROW(graph.addPass<Empty>("compute attachment", PassType::Compute,
-                                    [&](PassBuilder& b, Empty&) {
-                                      b.colorAttachment(v1, VK_ATTACHMENT_LOAD_OP_LOAD);
-                                    }, kNoExecute), engine::Error);
-  EXPECT_THROW(graph.addPass<Empty>("write as read", PassType::Compute,
-                                    [&](PassBuilder& b, Empty&) {
-                                      b.read(v1, Access::StorageWrite);
-                                    }, kNoExecute), engine::Error);
+  graph.addPass<Empty>(
+      "first", PassType::Compute,
+      [&](PassBuilder& b, Empty&) {
+        v0 = b.createTexture("t", colour());
+        v1 = b.write(v0, Access::StorageWrite);
+      },
+      kNoExecute);
+  EXPECT_THROW(graph.addPass<Empty>(
+                   "stale", PassType::Compute,
+                   [&](PassBuilder& b, Empty&) { b.read(v0, Access::SampledRead); }, kNoExecute),
+               engine::Error);
+  EXPECT_THROW(
+      graph.addPass<Empty>(
+          "compute attachment", PassType::Compute,
+          [&](PassBuilder& b, Empty&) { b.colorAttachment(v1, VK_ATTACHMENT_LOAD_OP_LOAD); },
+          kNoExecute),
+      engine::Error);
+  EXPECT_THROW(graph.addPass<Empty>(
+                   "write as read", PassType::Compute,
+                   [&](PassBuilder& b, Empty&) { b.read(v1, Access::StorageWrite); }, kNoExecute),
+               engine::Error);
 }
 
 }  // namespace

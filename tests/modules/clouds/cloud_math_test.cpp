@@ -29,8 +29,8 @@ double integrateOverSphere(const std::function<double(double)>& phase) {
 
 TEST(CloudMath, HenyeyGreensteinIntegratesToOne) {
   for (float g : {-0.99f, -0.5f, 0.0f, 0.3f, 0.8f, 0.95f, 0.99f}) {
-    const double total = integrateOverSphere(
-        [g](double mu) { return henyeyGreenstein(static_cast<float>(mu), g); });
+    const double total =
+        integrateOverSphere([g](double mu) { return henyeyGreenstein(static_cast<float>(mu), g); });
     EXPECT_NEAR(total, 1.0, 2e-3) << "g = " << g;
   }
 }
@@ -90,8 +90,8 @@ TEST(CloudMath, RaySphereIsPreciseAtPlanetScale) {
         }
         // Tolerance: float rounding of the inputs themselves (mu in particular) moves the
         // exact answer; allow 1 mm plus a relative 2e-6.
-        for (const auto& [got, want] : {std::pair{double(r.x), exact.first},
-                                        std::pair{double(r.y), exact.second}}) {
+        for (const auto& [got, want] :
+             {std::pair{double(r.x), exact.first}, std::pair{double(r.y), exact.second}}) {
           EXPECT_NEAR(got, want, 1e-3 + 2e-6 * std::abs(want))
               << "h " << h << " mu " << mu << " a " << a;
         }

@@ -30,7 +30,8 @@ clouds::tools::CpuTextures syntheticTextures() {
   fill(t.curl, 128u * 128u, 3);
   fill(t.weather, 512u * 512u, 4);
   t.weatherMaxFine = clouds::tools::weatherMaxima(t.weather, kWeatherMapSize, kWeatherMaxFineSize);
-  t.weatherMaxCoarse = clouds::tools::weatherMaxima(t.weatherMaxFine, kWeatherMaxFineSize, kWeatherMaxCoarseSize);
+  t.weatherMaxCoarse =
+      clouds::tools::weatherMaxima(t.weatherMaxFine, kWeatherMaxFineSize, kWeatherMaxCoarseSize);
   return t;
 }
 
@@ -92,7 +93,8 @@ TEST(CloudModelCpu, HomogeneousSlabTransmittanceMatchesBeerLambert) {
         const float sigma = static_cast<float>(tau / thickness);
         u = uniformsFor(slabSettings(sigma, step), 300.0, pitch, extent);
         u.flags |= kFlagHomogeneous;
-        const auto frame = clouds::tools::renderCpuReference(textures(), u, slabSettings(sigma, step), {}, 1);
+        const auto frame =
+            clouds::tools::renderCpuReference(textures(), u, slabSettings(sigma, step), {}, 1);
         const double expected = std::exp(-double(sigma) * path);
         EXPECT_NEAR(frame.radiance[0].a, expected, 2e-5 + 1e-5 * expected)
             << "tau " << tau << " pitch " << pitch << " step " << step;
@@ -126,8 +128,8 @@ TEST(CloudModelCpu, SlabRadianceConvergesAsStepsDouble) {
     u.flags |= kFlagHomogeneous;
     const auto frame = clouds::tools::renderCpuReference(textures(), u, s, {}, 1);
     const vec3 dir = pixelRayDirection(vec2(0.5f, 0.5f), vec2(1.0f, 1.0f), u);
-    const double phase = dualLobePhase(dot(dir, sun), s.phaseForwardG, s.phaseBackwardG,
-                                       s.phaseBackwardWeight);
+    const double phase =
+        dualLobePhase(dot(dir, sun), s.phaseForwardG, s.phaseBackwardG, s.phaseBackwardWeight);
     const double expected = slabSingleScattering(sigma, thickness, std::sin(elevation), phase);
     errors.push_back(std::abs(frame.radiance[0].r - expected) / expected);
   }

@@ -122,8 +122,8 @@ bool createWithFailure(int n, std::string& failureReport) {
     EXPECT_EQ(error.code, clouds::ErrorCode::OutOfMemory) << n << ": " << error.message;
   }
   for (const auto& [handle, call] : test::shim::counts().live) {
-    failureReport += "creation " + std::to_string(n) + " failing leaked an object of " + call +
-                     "\n";
+    failureReport +=
+        "creation " + std::to_string(n) + " failing leaked an object of " + call + "\n";
   }
   test::shim::counts().live.clear();
   // The device goes here: the validation layer reports any object still alive on it.

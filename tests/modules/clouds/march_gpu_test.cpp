@@ -80,8 +80,8 @@ TEST_F(CloudMarch, HomogeneousSlabTransmittanceMatchesBeerLambert) {
           const double path = std::max(0.0, end - double(segment.x));
           const double expected = std::exp(-double(u.extinctionPerMetre) * path);
           const float got = frame.radiance[std::size_t{y} * extent.width + x].a;
-          ASSERT_NEAR(got, expected, 1e-3) << "tau " << tau << " pitch " << pitch << " pixel "
-                                           << x << "," << y << " path " << path;
+          ASSERT_NEAR(got, expected, 1e-3) << "tau " << tau << " pitch " << pitch << " pixel " << x
+                                           << "," << y << " path " << path;
         }
       }
     }
@@ -97,8 +97,8 @@ TEST_F(CloudMarch, WhiteFurnaceConservesEnergy) {
         view.position.y = altitude;
         view.ambientTop = glm::vec3(1.0f);
         view.ambientBottom = glm::vec3(1.0f);
-        const clouds::tools::CloudFrame frame =
-            harness().render(view, clouds::tools::singleFrame(furnaceSettings(density, steps)), extent);
+        const clouds::tools::CloudFrame frame = harness().render(
+            view, clouds::tools::singleFrame(furnaceSettings(density, steps)), extent);
         for (const glm::vec4& p : frame.radiance) {
           for (int c = 0; c < 3; ++c) {
             ASSERT_NEAR(p[c] + p.a, 1.0f, 1e-3f)
@@ -113,14 +113,16 @@ TEST_F(CloudMarch, WhiteFurnaceConservesEnergy) {
 TEST_F(CloudMarch, SkyTextureAmbientKeepsTheFurnaceWhite) {
   // A uniform sky radiance of 1 replaces the ambient colours (set to 0 here): the furnace still
   // composites to 1, so the sky pass averaged the texture correctly.
-  engine::gfx::Image sky(device(), engine::gfx::ImageDesc{VK_IMAGE_TYPE_2D, VK_FORMAT_R32G32B32A32_SFLOAT,
-                                                          {16, 8, 1}, 1, 1,
-                                                          VK_IMAGE_USAGE_SAMPLED_BIT |
-                                                              VK_IMAGE_USAGE_TRANSFER_DST_BIT,
-                                                          "test sky"});
+  engine::gfx::Image sky(
+      device(), engine::gfx::ImageDesc{VK_IMAGE_TYPE_2D,
+                                       VK_FORMAT_R32G32B32A32_SFLOAT,
+                                       {16, 8, 1},
+                                       1,
+                                       1,
+                                       VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT,
+                                       "test sky"});
   std::vector<float> ones(16 * 8 * 4, 1.0f);
-  engine::gfx::uploadToImage(device(), sky,
-                             std::as_bytes(std::span(ones)),
+  engine::gfx::uploadToImage(device(), sky, std::as_bytes(std::span(ones)),
                              engine::gfx::ImageState{VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL,
                                                      VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
                                                      VK_ACCESS_2_SHADER_SAMPLED_READ_BIT});
@@ -128,7 +130,8 @@ TEST_F(CloudMarch, SkyTextureAmbientKeepsTheFurnaceWhite) {
   view.ambientTop = glm::vec3(0.0f);
   view.ambientBottom = glm::vec3(0.0f);
   view.skyView = sky.view();
-  const clouds::tools::CloudFrame frame = harness().render(view, furnaceSettings(1.0f, 128), {48, 27});
+  const clouds::tools::CloudFrame frame =
+      harness().render(view, furnaceSettings(1.0f, 128), {48, 27});
   float opacity = 0.0f;
   for (const glm::vec4& p : frame.radiance) {
     opacity = std::max(opacity, 1.0f - p.a);
@@ -203,10 +206,10 @@ InvalidCounts countInvalid(engine::gfx::Device& device, VkImageView radiance, Vk
     desc.debugName = "count invalid";
     return new engine::gfx::Pipeline(device, desc);
   }();
-  engine::gfx::Buffer counters(device, engine::gfx::BufferDesc{16, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT |
-                                                                      VK_BUFFER_USAGE_TRANSFER_DST_BIT,
-                                                               engine::gfx::MemoryUsage::Readback,
-                                                               "invalid counters"});
+  engine::gfx::Buffer counters(
+      device, engine::gfx::BufferDesc{
+                  16, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT,
+                  engine::gfx::MemoryUsage::Readback, "invalid counters"});
   std::memset(counters.mapped(), 0, 16);
   engine::gfx::DescriptorArena arena(device, "count invalid descriptors");
   device.immediateSubmit([&](VkCommandBuffer cmd) {
@@ -215,7 +218,8 @@ InvalidCounts countInvalid(engine::gfx::Device& device, VkImageView radiance, Vk
     engine::gfx::bindPipeline(device, cmd, *pipeline, arena, writer);
     const std::uint32_t size[2] = {extent.width, extent.height};
     vkCmdPushConstants(cmd, pipeline->layout(), pipeline->pushConstantStages(), 0, 8, size);
-    vkCmdDispatch(cmd, engine::gfx::groupCount(extent.width, 8), engine::gfx::groupCount(extent.height, 8), 1);
+    vkCmdDispatch(cmd, engine::gfx::groupCount(extent.width, 8),
+                  engine::gfx::groupCount(extent.height, 8), 1);
     engine::gfx::bufferBarrier(cmd, counters.vk(), VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
                                VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT, VK_PIPELINE_STAGE_2_HOST_BIT,
                                VK_ACCESS_2_HOST_READ_BIT);
@@ -228,9 +232,9 @@ InvalidCounts countInvalid(engine::gfx::Device& device, VkImageView radiance, Vk
 TEST_F(CloudMarch, HardCasesProduceNoNanInfOrNegativeValues) {
   const VkExtent2D extent{40, 24};
   int cases = 0;
-  for (double altitude : {300.0, 2600.0, 9000.0}) {          // below, inside, above the layer
-    for (double pitch : {-89.9, -3.0, 0.0, 0.05, 89.9}) {    // vertical and grazing rays
-      for (double sun : {-20.0, -0.5, 0.0, 12.0, 90.0}) {    // sun below the horizon to zenith
+  for (double altitude : {300.0, 2600.0, 9000.0}) {        // below, inside, above the layer
+    for (double pitch : {-89.9, -3.0, 0.0, 0.05, 89.9}) {  // vertical and grazing rays
+      for (double sun : {-20.0, -0.5, 0.0, 12.0, 90.0}) {  // sun below the horizon to zenith
         for (float density : {0.0f, 1.0f, 1e6f}) {
           for (float coverage : {0.0f, 1.0f}) {
             CloudView view;
@@ -265,10 +269,16 @@ TEST_F(CloudMarch, TheCounterCatchesInvalidValues) {
   using engine::gfx::Image;
   using engine::gfx::ImageDesc;
   const VkImageUsageFlags usage = VK_IMAGE_USAGE_STORAGE_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT;
-  Image radiance(device(), ImageDesc{VK_IMAGE_TYPE_2D, VK_FORMAT_R16G16B16A16_SFLOAT, {4, 2, 1},
-                                     1, 1, usage, "seeded radiance"});
-  Image depth(device(), ImageDesc{VK_IMAGE_TYPE_2D, VK_FORMAT_R32G32_SFLOAT, {4, 2, 1}, 1, 1,
-                                  usage, "seeded depth"});
+  Image radiance(device(), ImageDesc{VK_IMAGE_TYPE_2D,
+                                     VK_FORMAT_R16G16B16A16_SFLOAT,
+                                     {4, 2, 1},
+                                     1,
+                                     1,
+                                     usage,
+                                     "seeded radiance"});
+  Image depth(
+      device(),
+      ImageDesc{VK_IMAGE_TYPE_2D, VK_FORMAT_R32G32_SFLOAT, {4, 2, 1}, 1, 1, usage, "seeded depth"});
   const std::uint16_t one = 0x3C00, nan = 0x7E00, inf = 0x7C00, minusOne = 0xBC00, two = 0x4000;
   std::vector<std::uint16_t> texels(8 * 4, one);
   texels[1 * 4 + 0] = nan;
@@ -342,18 +352,24 @@ TEST_F(CloudMarch, FramesFarFromTheOriginMatchTheOrigin) {
     far.position.x += distance;
     far.position.z -= distance;
     const clouds::tools::CloudFrame atFar = harness().render(far, s, extent);
-    EXPECT_GE(clouds::tools::psnr(atOrigin.radiance, atFar.radiance, 1.0), 60.0) << distance << " m";
+    EXPECT_GE(clouds::tools::psnr(atOrigin.radiance, atFar.radiance, 1.0), 60.0)
+        << distance << " m";
   }
   CloudView shifted = origin;
   shifted.position.x += 3000.0;  // and a real move does change the picture
-  EXPECT_LT(clouds::tools::psnr(atOrigin.radiance, harness().render(shifted, s, extent).radiance, 1.0), 40.0);
+  EXPECT_LT(
+      clouds::tools::psnr(atOrigin.radiance, harness().render(shifted, s, extent).radiance, 1.0),
+      40.0);
 }
 
 TEST_F(CloudMarch, PaintedWeatherMapControlsCoverage) {
   const VkExtent2D extent{48, 27};
   auto paint = [&](std::uint8_t coverage) {
-    engine::gfx::Image image(device(), engine::gfx::ImageDesc{VK_IMAGE_TYPE_2D, VK_FORMAT_R8G8B8A8_UNORM,
-                                                              {8, 8, 1}, 1, 1,
+    engine::gfx::Image image(device(), engine::gfx::ImageDesc{VK_IMAGE_TYPE_2D,
+                                                              VK_FORMAT_R8G8B8A8_UNORM,
+                                                              {8, 8, 1},
+                                                              1,
+                                                              1,
                                                               VK_IMAGE_USAGE_SAMPLED_BIT |
                                                                   VK_IMAGE_USAGE_TRANSFER_DST_BIT,
                                                               "painted weather"});

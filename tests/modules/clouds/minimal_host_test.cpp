@@ -17,7 +17,9 @@ namespace {
 
 namespace fs = std::filesystem;
 
-int exitCode(int status) { return WIFEXITED(status) ? WEXITSTATUS(status) : -1; }
+int exitCode(int status) {
+  return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+}
 
 int run(const std::string& arguments) {
   const std::string command = std::string(MINIMAL_HOST_EXE) + " --validation " + arguments;
@@ -28,10 +30,10 @@ int run(const std::string& arguments) {
 // has no messenger and prints to stdout. Returns the exit code and the output.
 int runUnderLayer(const std::string& arguments, std::string& output) {
   const fs::path log = fs::temp_directory_path() / "cloudscape_minimal_host_layer.log";
-  const std::string command = "env -u CLOUDSCAPE_VALIDATION "
-                              "VK_INSTANCE_LAYERS=VK_LAYER_KHRONOS_validation " +
-                              std::string(MINIMAL_HOST_EXE) + " " + arguments + " > " +
-                              log.string() + " 2>&1";
+  const std::string command =
+      "env -u CLOUDSCAPE_VALIDATION "
+      "VK_INSTANCE_LAYERS=VK_LAYER_KHRONOS_validation " +
+      std::string(MINIMAL_HOST_EXE) + " " + arguments + " > " + log.string() + " 2>&1";
   const int code = exitCode(std::system(command.c_str()));
   std::ifstream in(log);
   std::stringstream text;
@@ -50,7 +52,8 @@ TEST(MinimalHost, RendersCloudsValidationClean) {
   const fs::path dir = fs::temp_directory_path() / "cloudscape_minimal_host";
   fs::create_directories(dir);
   ASSERT_EQ(run("--width 192 --height 108 --output " + (dir / "clouds.ppm").string()), 0);
-  ASSERT_EQ(run("--width 192 --height 108 --no-clouds --output " + (dir / "plain.ppm").string()), 0);
+  ASSERT_EQ(run("--width 192 --height 108 --no-clouds --output " + (dir / "plain.ppm").string()),
+            0);
   const auto clouds = engine::assets::readImage(dir / "clouds.ppm");
   const auto plain = engine::assets::readImage(dir / "plain.ppm");
   ASSERT_EQ(clouds.width, 192u);
@@ -86,9 +89,8 @@ TEST(MinimalHost, AHostThatEnablesNothingOptionalIsValidationClean) {
   EXPECT_EQ(occurrences(log, "VUID"), 0u) << log;
   // Negative control: a host that tells the module VK_EXT_debug_utils is enabled when it is
   // not makes it call the extension, and the layer says so, in this very setup.
-  ASSERT_EQ(runUnderLayer("--width 96 --height 54 --frames 2 --claim-debug-utils --output " +
-                              output,
-                          log),
+  ASSERT_EQ(runUnderLayer(
+                "--width 96 --height 54 --frames 2 --claim-debug-utils --output " + output, log),
             0);
   EXPECT_GT(occurrences(log, "Validation Error"), 0u) << log;
 }

@@ -55,8 +55,8 @@ bool tiles(const SeamStatistics& s, std::string* why) {
   const auto [lo, hi] = std::minmax_element(s.lines.begin(), s.lines.end());
   const bool ok = *hi > 0.0 && s.seam >= 0.75 * *lo && s.seam <= 1.25 * *hi;
   if (why != nullptr) {
-    *why = "seam " + std::to_string(s.seam) + ", interior lines in [" + std::to_string(*lo) +
-           ", " + std::to_string(*hi) + "]";
+    *why = "seam " + std::to_string(s.seam) + ", interior lines in [" + std::to_string(*lo) + ", " +
+           std::to_string(*hi) + "]";
   }
   return ok;
 }
@@ -70,7 +70,8 @@ class NoiseTiling : public test::GpuTest {};
 
 TEST_F(NoiseTiling, ShapeDetailAndCurlTexturesTileOnEveryAxisAndChannel) {
   clouds::tools::CloudHarness harness(device(), {16, 16});
-  harness.render(clouds::tools::CloudView{}, clouds::Settings{}, {16, 16});  // generates the textures
+  harness.render(clouds::tools::CloudView{}, clouds::Settings{},
+                 {16, 16});  // generates the textures
   const auto shape = harness.readShapeNoise();
   const auto detail = harness.readDetailNoise();
   const auto curl = harness.readCurlNoise();
@@ -78,32 +79,35 @@ TEST_F(NoiseTiling, ShapeDetailAndCurlTexturesTileOnEveryAxisAndChannel) {
     for (int axis = 0; axis < 3; ++axis) {
       const std::string where =
           " channel " + std::to_string(channel) + " axis " + std::to_string(axis);
-      expectTiles(seamStatistics(128, 128, axis,
-                                 [&](int x, int y, int z) {
-                                   return shape[4 * ((std::size_t(z) * 128 + std::size_t(y)) * 128 +
-                                                     std::size_t(x)) +
-                                                std::size_t(channel)] /
-                                          255.0;
-                                 }),
-                  "shape noise" + where);
+      expectTiles(
+          seamStatistics(
+              128, 128, axis,
+              [&](int x, int y, int z) {
+                return shape[4 * ((std::size_t(z) * 128 + std::size_t(y)) * 128 + std::size_t(x)) +
+                             std::size_t(channel)] /
+                       255.0;
+              }),
+          "shape noise" + where);
       if (channel < 3) {
-        expectTiles(seamStatistics(32, 32, axis,
-                                   [&](int x, int y, int z) {
-                                     return detail[4 * ((std::size_t(z) * 32 + std::size_t(y)) * 32 +
-                                                        std::size_t(x)) +
-                                                   std::size_t(channel)] /
-                                            255.0;
-                                   }),
-                    "detail noise" + where);
+        expectTiles(
+            seamStatistics(
+                32, 32, axis,
+                [&](int x, int y, int z) {
+                  return detail[4 * ((std::size_t(z) * 32 + std::size_t(y)) * 32 + std::size_t(x)) +
+                                std::size_t(channel)] /
+                         255.0;
+                }),
+            "detail noise" + where);
       }
       if (channel < 2 && axis < 2) {
-        expectTiles(seamStatistics(128, 1, axis,
-                                   [&](int x, int y, int) {
-                                     return curl[4 * (std::size_t(y) * 128 + std::size_t(x)) +
-                                                 std::size_t(channel)] /
-                                            255.0;
-                                   }),
-                    "curl noise" + where);
+        expectTiles(
+            seamStatistics(
+                128, 1, axis,
+                [&](int x, int y, int) {
+                  return curl[4 * (std::size_t(y) * 128 + std::size_t(x)) + std::size_t(channel)] /
+                         255.0;
+                }),
+            "curl noise" + where);
       }
     }
   }

@@ -10,8 +10,8 @@
 #include "cpu_reference.h"
 
 namespace {
-using test::allValid;
 using clouds::tools::CloudView;
+using test::allValid;
 using test::cumulusView;
 using test::kExtent;
 using test::maxAbsDifference;
@@ -71,8 +71,10 @@ TEST_F(CloudTemporal, TemporalUpsamplingConvergesToDetailFinerThanTheTrace) {
   std::vector<glm::vec3> image;
   double lateChange = 0.0;
   for (int frame = 0; frame < 136; ++frame) {
-    std::vector<glm::vec3> next = clouds::tools::tonemappedPixels(r->render(view, upsampled, kExtent), view);
-    if (frame >= 128) lateChange = std::max(lateChange, clouds::tools::imageError(next, image).meanAbs);
+    std::vector<glm::vec3> next =
+        clouds::tools::tonemappedPixels(r->render(view, upsampled, kExtent), view);
+    if (frame >= 128)
+      lateChange = std::max(lateChange, clouds::tools::imageError(next, image).meanAbs);
     image = std::move(next);
   }
   EXPECT_LT(lateChange, 2.0 / 255.0) << "converged: little changes from frame to frame";
@@ -112,9 +114,11 @@ TEST_F(CloudTemporal, TemporalUpsamplingHelpsUnderWindDriftToo) {
                                  16),
       view);
   const double upsampledPsnr =
-      clouds::tools::imageError(clouds::tools::tonemappedPixels(withUpsampling, view), reference).psnr();
+      clouds::tools::imageError(clouds::tools::tonemappedPixels(withUpsampling, view), reference)
+          .psnr();
   const double traceOnlyPsnr =
-      clouds::tools::imageError(clouds::tools::tonemappedPixels(withoutUpsampling, view), reference).psnr();
+      clouds::tools::imageError(clouds::tools::tonemappedPixels(withoutUpsampling, view), reference)
+          .psnr();
   // Less than in a still view (the detail the own samples hold scrolls with the wind, so they
   // are clamped to this frame's trace neighbourhood), but still well above the trace alone:
   // measured 29.2 dB against 24.9 (still: 31.8).

@@ -117,7 +117,8 @@ TEST(TemporalState, UpsamplingRaysVisitEveryOutputPixelOfTheirTracePixelFirst) {
   std::set<std::pair<int, int>> hit;
   for (std::uint32_t round = 0; round < 4; ++round) {
     context.temporalIndex = round * 16 + 5;
-    const glm::vec2 offset = glm::vec2(clouds::detail::buildUniforms(in, s, context).subpixelOffset);
+    const glm::vec2 offset =
+        glm::vec2(clouds::detail::buildUniforms(in, s, context).subpixelOffset);
     ASSERT_LT(glm::max(std::abs(offset.x), std::abs(offset.y)), 0.5f) << "inside the pixel";
     const glm::ivec2 outputPixel(glm::floor((offset + 0.5f) * 2.0f));
     hit.insert({outputPixel.x, outputPixel.y});
@@ -130,7 +131,8 @@ TEST(TemporalState, UpsamplingRaysVisitEveryOutputPixelOfTheirTracePixelFirst) {
   EXPECT_EQ(hit.size(), 4u);
   // A frame rebuilt without output history marches through pixel centres.
   context.useOutputHistory = false;
-  EXPECT_EQ(glm::vec2(clouds::detail::buildUniforms(in, s, context).subpixelOffset), glm::vec2(0.0f));
+  EXPECT_EQ(glm::vec2(clouds::detail::buildUniforms(in, s, context).subpixelOffset),
+            glm::vec2(0.0f));
 }
 
 TEST(TemporalState, AFrameIsStillOnlyWhenNothingMoved) {

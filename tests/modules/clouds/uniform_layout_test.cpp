@@ -5,8 +5,8 @@
 #include <gtest/gtest.h>
 
 #include <array>
-#include <cstdio>
 #include <cstddef>
+#include <cstdio>
 #include <map>
 #include <memory>
 #include <regex>
@@ -18,31 +18,85 @@ namespace {
 
 using clouds::shader::CloudUniforms;
 
-#define FIELD(name) {#name, offsetof(CloudUniforms, name)}
-const std::map<std::string, std::size_t> kCppOffsets = {
-    FIELD(inverseProjection), FIELD(viewToWorld), FIELD(previousClipFromView),
-    FIELD(previousClipOrigin), FIELD(cameraAltitudeMetres), FIELD(planetRadiusMetres),
-    FIELD(layerBottomMetres), FIELD(layerTopMetres), FIELD(sunDirection), FIELD(padding0),
-    FIELD(sunIlluminance), FIELD(sunStrength), FIELD(ambientTop), FIELD(ambientStrength),
-    FIELD(ambientBottom), FIELD(ambientOcclusionStrength), FIELD(shapeOffsetMetres),
-    FIELD(shapeTileMetres), FIELD(detailOffsetMetres), FIELD(detailTileMetres),
-    FIELD(weatherOffsetMetres), FIELD(weatherTileMetres), FIELD(padding1),
-    FIELD(curlOffsetMetres), FIELD(curlTileMetres), FIELD(curlStrengthMetres),
-    FIELD(windDirection), FIELD(skewMetres), FIELD(padding2), FIELD(fineCellMetres),
-    FIELD(coarseCellMetres), FIELD(padding3), FIELD(padding4), FIELD(extinctionPerMetre),
-    FIELD(coverage), FIELD(cloudType), FIELD(typeVariation), FIELD(anvilBias),
-    FIELD(detailErosion), FIELD(detailDistanceMetres), FIELD(densityVariation),
-    FIELD(phaseForwardG), FIELD(phaseBackwardG), FIELD(phaseBackwardWeight), FIELD(albedo),
-    FIELD(msOctaves), FIELD(msExtinctionScale), FIELD(msContribution),
-    FIELD(msEccentricityScale), FIELD(inScatterStrength), FIELD(inScatterDepthMetres),
-    FIELD(padding5), FIELD(padding6), FIELD(viewStepMetres), FIELD(viewStepGrowth),
-    FIELD(maxDistanceMetres), FIELD(transmittanceCutoff), FIELD(lightConeMetres),
-    FIELD(lightConeSpread), FIELD(coarseStepFactor), FIELD(emptySamplesToCoarse),
-    FIELD(temporalIndex), FIELD(maxViewSteps), FIELD(flags), FIELD(padding7),
-    FIELD(traceExtent), FIELD(outputExtent), FIELD(tilePhase), FIELD(tileSize),
-    FIELD(lastFreshPixel), FIELD(temporalFreshWeight), FIELD(historyClampMargin),
-    FIELD(traceScale), FIELD(historyClampSpreadPixels), FIELD(subpixelOffset),
-    FIELD(upsamplingMaxSamples), FIELD(padding8)};
+#define FIELD(name) \
+  { #name, offsetof(CloudUniforms, name) }
+const std::map<std::string, std::size_t> kCppOffsets = {FIELD(inverseProjection),
+                                                        FIELD(viewToWorld),
+                                                        FIELD(previousClipFromView),
+                                                        FIELD(previousClipOrigin),
+                                                        FIELD(cameraAltitudeMetres),
+                                                        FIELD(planetRadiusMetres),
+                                                        FIELD(layerBottomMetres),
+                                                        FIELD(layerTopMetres),
+                                                        FIELD(sunDirection),
+                                                        FIELD(padding0),
+                                                        FIELD(sunIlluminance),
+                                                        FIELD(sunStrength),
+                                                        FIELD(ambientTop),
+                                                        FIELD(ambientStrength),
+                                                        FIELD(ambientBottom),
+                                                        FIELD(ambientOcclusionStrength),
+                                                        FIELD(shapeOffsetMetres),
+                                                        FIELD(shapeTileMetres),
+                                                        FIELD(detailOffsetMetres),
+                                                        FIELD(detailTileMetres),
+                                                        FIELD(weatherOffsetMetres),
+                                                        FIELD(weatherTileMetres),
+                                                        FIELD(padding1),
+                                                        FIELD(curlOffsetMetres),
+                                                        FIELD(curlTileMetres),
+                                                        FIELD(curlStrengthMetres),
+                                                        FIELD(windDirection),
+                                                        FIELD(skewMetres),
+                                                        FIELD(padding2),
+                                                        FIELD(fineCellMetres),
+                                                        FIELD(coarseCellMetres),
+                                                        FIELD(padding3),
+                                                        FIELD(padding4),
+                                                        FIELD(extinctionPerMetre),
+                                                        FIELD(coverage),
+                                                        FIELD(cloudType),
+                                                        FIELD(typeVariation),
+                                                        FIELD(anvilBias),
+                                                        FIELD(detailErosion),
+                                                        FIELD(detailDistanceMetres),
+                                                        FIELD(densityVariation),
+                                                        FIELD(phaseForwardG),
+                                                        FIELD(phaseBackwardG),
+                                                        FIELD(phaseBackwardWeight),
+                                                        FIELD(albedo),
+                                                        FIELD(msOctaves),
+                                                        FIELD(msExtinctionScale),
+                                                        FIELD(msContribution),
+                                                        FIELD(msEccentricityScale),
+                                                        FIELD(inScatterStrength),
+                                                        FIELD(inScatterDepthMetres),
+                                                        FIELD(padding5),
+                                                        FIELD(padding6),
+                                                        FIELD(viewStepMetres),
+                                                        FIELD(viewStepGrowth),
+                                                        FIELD(maxDistanceMetres),
+                                                        FIELD(transmittanceCutoff),
+                                                        FIELD(lightConeMetres),
+                                                        FIELD(lightConeSpread),
+                                                        FIELD(coarseStepFactor),
+                                                        FIELD(emptySamplesToCoarse),
+                                                        FIELD(temporalIndex),
+                                                        FIELD(maxViewSteps),
+                                                        FIELD(flags),
+                                                        FIELD(padding7),
+                                                        FIELD(traceExtent),
+                                                        FIELD(outputExtent),
+                                                        FIELD(tilePhase),
+                                                        FIELD(tileSize),
+                                                        FIELD(lastFreshPixel),
+                                                        FIELD(temporalFreshWeight),
+                                                        FIELD(historyClampMargin),
+                                                        FIELD(traceScale),
+                                                        FIELD(historyClampSpreadPixels),
+                                                        FIELD(subpixelOffset),
+                                                        FIELD(upsamplingMaxSamples),
+                                                        FIELD(padding8)};
 #undef FIELD
 
 std::string reflect() {
@@ -75,7 +129,8 @@ TEST(UniformLayout, GlslAndCppAgreeOnEveryFieldOfTheBlock) {
     EXPECT_EQ(cpp->second, offset) << name;
   }
   std::smatch size;
-  ASSERT_TRUE(std::regex_search(reflection, size, std::regex(R"(FrameUniforms: offset -1, type \w+, size (\d+))")))
+  ASSERT_TRUE(std::regex_search(reflection, size,
+                                std::regex(R"(FrameUniforms: offset -1, type \w+, size (\d+))")))
       << reflection;
   EXPECT_EQ(std::stoul(size[1]), sizeof(CloudUniforms));
 }

@@ -2,8 +2,8 @@
 // a map prepared a band of rows per frame equals one generated at once.
 #include <gtest/gtest.h>
 
-#include "cpu_reference.h"
 #include "cloud_gpu_fixture.h"
+#include "cpu_reference.h"
 
 namespace {
 

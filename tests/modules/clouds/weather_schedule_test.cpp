@@ -95,7 +95,7 @@ TEST(WeatherSchedule, ANewRecipeDiscardsThePreparedRows) {
   WeatherSchedule schedule(kRows, kRowsPerFrame);
   schedule.useRecipe(1.0, 0.0005);
   schedule.plan(5, true);
-  schedule.plan(5, true);  // rows [0, 32) of period 6 with the old recipe
+  schedule.plan(5, true);           // rows [0, 32) of period 6 with the old recipe
   schedule.useRecipe(1.0, 0.0005);  // unchanged: nothing forgotten
   EXPECT_FALSE(schedule.plan(5, true).swap);
   schedule.useRecipe(1.1, 0.0005);  // a new period length: period 5 means another time now

@@ -28,8 +28,11 @@ std::unique_ptr<engine::gfx::Image> loadWeatherMap(engine::gfx::Device& device,
     texels[i] = static_cast<std::uint8_t>(std::clamp(image.pixels[i], 0.0f, 1.0f) * 255.0f + 0.5f);
   }
   auto gpu = std::make_unique<engine::gfx::Image>(
-      device, engine::gfx::ImageDesc{VK_IMAGE_TYPE_2D, VK_FORMAT_R8G8B8A8_UNORM,
-                                     {image.width, image.height, 1}, 1, 1,
+      device, engine::gfx::ImageDesc{VK_IMAGE_TYPE_2D,
+                                     VK_FORMAT_R8G8B8A8_UNORM,
+                                     {image.width, image.height, 1},
+                                     1,
+                                     1,
                                      VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT,
                                      "painted weather map"});
   engine::gfx::uploadToImage(device, *gpu, std::as_bytes(std::span(texels)),

@@ -10,9 +10,8 @@ using namespace engine;
 
 clouds::Settings cloudSettings(engine::ecs::World& world) {
   clouds::Settings layerSettings;
-  world.view<const CloudLayer>().each([&](const CloudLayer& layer) {
-    layerSettings = layer.settings;
-  });
+  world.view<const CloudLayer>().each(
+      [&](const CloudLayer& layer) { layerSettings = layer.settings; });
   clouds::Settings settings = layerSettings;
   world.view<const render::Camera>().each([&](engine::ecs::Entity entity, const render::Camera&) {
     if (const auto* quality = world.tryGet<const CloudQuality>(entity)) {

@@ -28,8 +28,8 @@ void CloudsModule::install(engine::ecs::World& world, engine::ecs::Scheduler& /*
   const CloudLayer* layer = nullptr;
   world.view<const CloudLayer>().each([&](const CloudLayer& l) { layer = &l; });
   // Creating the feature may throw ModuleUnsupported: then nothing is registered.
-  feature_ = std::make_unique<CloudFeature>(
-      world, world.ctx().get<engine::render::RenderDevice>(), *layer);
+  feature_ = std::make_unique<CloudFeature>(world, world.ctx().get<engine::render::RenderDevice>(),
+                                            *layer);
   world.ctx().emplaceOrReplace<CloudStatus>();
   if (!world.ctx().has<engine::render::RenderFeatures>()) {
     world.ctx().emplace<engine::render::RenderFeatures>();

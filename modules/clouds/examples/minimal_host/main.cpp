@@ -131,7 +131,8 @@ Gpu createGpu(bool validation) {
   }
 
   // The module needs synchronization2 and storage images of extended formats (RG32F).
-  VkPhysicalDeviceVulkan13Features features13{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_3_FEATURES};
+  VkPhysicalDeviceVulkan13Features features13{
+      VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_3_FEATURES};
   features13.synchronization2 = VK_TRUE;
   VkPhysicalDeviceFeatures2 features{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_FEATURES_2};
   features.pNext = &features13;
@@ -209,19 +210,18 @@ HostBuffer createHostBuffer(const Gpu& gpu, VkDeviceSize size, VkBufferUsageFlag
   vkGetBufferMemoryRequirements(gpu.device, b.buffer, &req);
   VkMemoryAllocateInfo alloc{VK_STRUCTURE_TYPE_MEMORY_ALLOCATE_INFO};
   alloc.allocationSize = req.size;
-  alloc.memoryTypeIndex = memoryType(
-      gpu, req.memoryTypeBits,
-      VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT | VK_MEMORY_PROPERTY_HOST_COHERENT_BIT);
+  alloc.memoryTypeIndex =
+      memoryType(gpu, req.memoryTypeBits,
+                 VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT | VK_MEMORY_PROPERTY_HOST_COHERENT_BIT);
   vkCheck(vkAllocateMemory(gpu.device, &alloc, nullptr, &b.memory), "vkAllocateMemory");
   vkBindBufferMemory(gpu.device, b.buffer, b.memory, 0);
   vkMapMemory(gpu.device, b.memory, 0, VK_WHOLE_SIZE, 0, &b.mapped);
   return b;
 }
 
-void imageBarrier(VkCommandBuffer cmd, VkImage image, VkImageAspectFlags aspect,
-                  VkImageLayout from, VkImageLayout to, VkPipelineStageFlags2 srcStage,
-                  VkAccessFlags2 srcAccess, VkPipelineStageFlags2 dstStage,
-                  VkAccessFlags2 dstAccess) {
+void imageBarrier(VkCommandBuffer cmd, VkImage image, VkImageAspectFlags aspect, VkImageLayout from,
+                  VkImageLayout to, VkPipelineStageFlags2 srcStage, VkAccessFlags2 srcAccess,
+                  VkPipelineStageFlags2 dstStage, VkAccessFlags2 dstAccess) {
   VkImageMemoryBarrier2 b{VK_STRUCTURE_TYPE_IMAGE_MEMORY_BARRIER_2};
   b.srcStageMask = srcStage;
   b.srcAccessMask = srcAccess;
@@ -252,9 +252,15 @@ glm::mat4 viewMatrix(const Camera& c) {
   const glm::vec3 r = glm::normalize(glm::cross(c.forward, glm::vec3(0, 1, 0)));
   const glm::vec3 u = glm::cross(r, c.forward);
   glm::mat4 v(1.0f);
-  v[0][0] = r.x; v[1][0] = r.y; v[2][0] = r.z;
-  v[0][1] = u.x; v[1][1] = u.y; v[2][1] = u.z;
-  v[0][2] = -c.forward.x; v[1][2] = -c.forward.y; v[2][2] = -c.forward.z;
+  v[0][0] = r.x;
+  v[1][0] = r.y;
+  v[2][0] = r.z;
+  v[0][1] = u.x;
+  v[1][1] = u.y;
+  v[2][1] = u.z;
+  v[0][2] = -c.forward.x;
+  v[1][2] = -c.forward.y;
+  v[2][2] = -c.forward.z;
   v[3][0] = -glm::dot(r, c.position);
   v[3][1] = -glm::dot(u, c.position);
   v[3][2] = glm::dot(c.forward, c.position);
@@ -301,7 +307,8 @@ void buildScene(const Camera& camera, VkExtent2D extent, const glm::vec3& sun,
   const glm::mat3 viewToWorld = glm::transpose(glm::mat3(viewMatrix(camera)));
   for (std::uint32_t y = 0; y < extent.height; ++y) {
     for (std::uint32_t x = 0; x < extent.width; ++x) {
-      const glm::vec2 ndc = (glm::vec2(x, y) + 0.5f) / glm::vec2(extent.width, extent.height) * 2.0f - 1.0f;
+      const glm::vec2 ndc =
+          (glm::vec2(x, y) + 0.5f) / glm::vec2(extent.width, extent.height) * 2.0f - 1.0f;
       const glm::vec4 v = inverseProjection * glm::vec4(ndc, 1.0f, 1.0f);
       const glm::vec3 dir = glm::normalize(viewToWorld * (glm::vec3(v) / v.w));
       float t = dir.y < 0.0f ? -camera.position.y / dir.y : -1.0f;
@@ -492,10 +499,9 @@ int main(int argc, char** argv) {
                  VK_ACCESS_2_TRANSFER_WRITE_BIT);
     vkCmdCopyBufferToImage(cmd, colourUpload.buffer, colour.image,
                            VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1, &region);
-    imageBarrier(cmd, colour.image, VK_IMAGE_ASPECT_COLOR_BIT,
-                 VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, VK_IMAGE_LAYOUT_GENERAL,
-                 VK_PIPELINE_STAGE_2_TRANSFER_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT,
-                 VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
+    imageBarrier(cmd, colour.image, VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
+                 VK_IMAGE_LAYOUT_GENERAL, VK_PIPELINE_STAGE_2_TRANSFER_BIT,
+                 VK_ACCESS_2_TRANSFER_WRITE_BIT, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
                  VK_ACCESS_2_SHADER_STORAGE_READ_BIT | VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT);
 
     clouds::FrameInputs inputs;
@@ -523,8 +529,8 @@ int main(int argc, char** argv) {
                  VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
                  VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT, VK_PIPELINE_STAGE_2_TRANSFER_BIT,
                  VK_ACCESS_2_TRANSFER_READ_BIT);
-    vkCmdCopyImageToBuffer(cmd, colour.image, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
-                           readback.buffer, 1, &region);
+    vkCmdCopyImageToBuffer(cmd, colour.image, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, readback.buffer,
+                           1, &region);
     vkCheck(vkEndCommandBuffer(cmd), "vkEndCommandBuffer");
     VkSubmitInfo submit{VK_STRUCTURE_TYPE_SUBMIT_INFO};
     submit.commandBufferCount = 1;

@@ -47,14 +47,14 @@ namespace clouds {
 // What went wrong, for hosts to branch on; Error::message says which field or call, and why.
 enum class ErrorCode : std::uint32_t {
   None = 0,
-  InvalidCreateInfo,      // a CreateInfo field is missing or out of range
-  MissingFunction,        // the proc-addr functions lack an entry point the module needs
-  UnsupportedDevice,      // the device lacks a format feature the module needs
-  OutOfMemory,            // a Vulkan allocation failed (host or device memory)
-  VulkanFailure,          // another Vulkan call failed (the message names it and its VkResult)
-  InvalidSettings,        // a Settings field is out of range (validateSettings())
-  InvalidInputs,          // a FrameInputs field, or a composite() argument, is invalid
-  NotPrepared,            // dispatch() needs prepare() with these settings or this extent first
+  InvalidCreateInfo,  // a CreateInfo field is missing or out of range
+  MissingFunction,    // the proc-addr functions lack an entry point the module needs
+  UnsupportedDevice,  // the device lacks a format feature the module needs
+  OutOfMemory,        // a Vulkan allocation failed (host or device memory)
+  VulkanFailure,      // another Vulkan call failed (the message names it and its VkResult)
+  InvalidSettings,    // a Settings field is out of range (validateSettings())
+  InvalidInputs,      // a FrameInputs field, or a composite() argument, is invalid
+  NotPrepared,        // dispatch() needs prepare() with these settings or this extent first
 };
 const char* errorCodeName(ErrorCode code);
 
@@ -298,8 +298,8 @@ struct FrameInputs {
   // Lighting in the host's radiometric units (see the conventions above).
   glm::vec3 sunDirection{0.0f, 1.0f, 0.0f};  // unit, towards the sun
   glm::vec3 sunIlluminance{10.0f};           // illuminance of the sun at the clouds, RGB
-  glm::vec3 ambientTop{1.0f};     // sky radiance lighting cloud tops, RGB per steradian
-  glm::vec3 ambientBottom{0.5f};  // radiance lighting cloud bases, RGB per steradian
+  glm::vec3 ambientTop{1.0f};                // sky radiance lighting cloud tops, RGB per steradian
+  glm::vec3 ambientBottom{0.5f};             // radiance lighting cloud bases, RGB per steradian
   // Optional sky radiance as an equirectangular image (u = azimuth, v = 0 at the zenith),
   // sampled in `skyLayout`; when set it replaces ambientTop/ambientBottom.
   VkImageView skyView = VK_NULL_HANDLE;
@@ -378,8 +378,7 @@ class Context {
   // color = color * transmittance + radiance, written by a compute shader (synchronise the
   // colour's next use from VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT). Records into
   // `commandBuffer`; `extent` must be the last dispatch's renderExtent.
-  bool composite(VkCommandBuffer commandBuffer, VkImageView color, VkExtent2D extent,
-                 Error* error);
+  bool composite(VkCommandBuffer commandBuffer, VkImageView color, VkExtent2D extent, Error* error);
 
   Outputs outputs() const;
   FrameReport lastFrameReport() const;

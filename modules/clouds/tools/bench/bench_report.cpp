@@ -7,9 +7,9 @@
 #include <fstream>
 #include <sstream>
 
+#include <nlohmann/json.hpp>
 #include "engine/assets/image_metrics.h"
 #include "engine/core/error.h"
-#include <nlohmann/json.hpp>
 
 namespace bench {
 namespace {

@@ -81,8 +81,9 @@ struct Reference {
   std::vector<double> milliseconds;
 };
 
-Reference renderReference(clouds::tools::CloudHarness& harness, const clouds::tools::CloudView& view,
-                          const clouds::Settings& look, VkExtent2D extent, std::uint32_t frames) {
+Reference renderReference(clouds::tools::CloudHarness& harness,
+                          const clouds::tools::CloudView& view, const clouds::Settings& look,
+                          VkExtent2D extent, std::uint32_t frames) {
   const clouds::Settings settings = clouds::settingsFor(clouds::Quality::Reference, look);
   harness.cut();
   clouds::tools::CloudFrame sum;
@@ -157,8 +158,8 @@ BenchResults runBenchmark(engine::gfx::Device& device, const RunOptions& options
   harnessOptions.passTimings = true;
   std::vector<Instance> instances;
   for (const BenchConfig& config : results.configs) {
-    instances.push_back(
-        Instance{&config, std::make_unique<clouds::tools::CloudHarness>(device, extent, harnessOptions)});
+    instances.push_back(Instance{
+        &config, std::make_unique<clouds::tools::CloudHarness>(device, extent, harnessOptions)});
   }
   clouds::tools::CloudHarness referenceHarness(device, extent, harnessOptions);
 
@@ -169,9 +170,9 @@ BenchResults runBenchmark(engine::gfx::Device& device, const RunOptions& options
     progress(view.name + ": Reference (" + std::to_string(options.referenceFrames) + " frames)");
     const Reference reference =
         renderReference(referenceHarness, view.view, view.look, extent, options.referenceFrames);
-    results.references.push_back(
-        ReferenceMeasurement{view.name, median(reference.milliseconds),
-                             clouds::tools::imageError(reference.firstPixels, reference.pixels).psnr()});
+    results.references.push_back(ReferenceMeasurement{
+        view.name, median(reference.milliseconds),
+        clouds::tools::imageError(reference.firstPixels, reference.pixels).psnr()});
 
     progress(view.name + ": " + std::to_string(instances.size()) + " configurations");
     std::vector<clouds::Settings> settings;
@@ -197,8 +198,9 @@ BenchResults runBenchmark(engine::gfx::Device& device, const RunOptions& options
             instances[i].config->preset && instances[i].config->quality == clouds::Quality::High;
         if (high && (rendered & (rendered - 1)) == 0 && rendered >= 8) {  // 8, 16, 32, ...
           const clouds::tools::CloudFrame out = harness.render(view.view, settings[i], extent);
-          const double psnr =
-              clouds::tools::imageError(clouds::tools::tonemappedPixels(out, view.view), reference.pixels).psnr();
+          const double psnr = clouds::tools::imageError(
+                                  clouds::tools::tonemappedPixels(out, view.view), reference.pixels)
+                                  .psnr();
           results.highConvergence[view.name].push_back(ConvergencePoint{rendered, psnr});
         } else {
           renderOrThrow(harness, view.view, settings[i], extent);
@@ -213,9 +215,10 @@ BenchResults runBenchmark(engine::gfx::Device& device, const RunOptions& options
       }
     }
     for (std::size_t i = 0; i < instances.size(); ++i) {
-      const clouds::tools::CloudFrame last = instances[i].harness->render(view.view, settings[i], extent);
-      const engine::assets::ImageError error =
-          clouds::tools::imageError(clouds::tools::tonemappedPixels(last, view.view), reference.pixels);
+      const clouds::tools::CloudFrame last =
+          instances[i].harness->render(view.view, settings[i], extent);
+      const engine::assets::ImageError error = clouds::tools::imageError(
+          clouds::tools::tonemappedPixels(last, view.view), reference.pixels);
       Measurement m = summarise(instances[i].config->name, view.name, samples[i]);
       m.psnr = m.minPsnr = error.psnr();
       m.meanAbs = error.meanAbs;
@@ -258,7 +261,8 @@ BenchResults runBenchmark(engine::gfx::Device& device, const RunOptions& options
       clouds::tools::CloudHarness& harness = *instances[i].harness;
       if (measured) {
         const clouds::tools::CloudFrame out = harness.render(pose, settings[i], extent);
-        errors[i].push_back(clouds::tools::imageError(clouds::tools::tonemappedPixels(out, pose), reference.pixels));
+        errors[i].push_back(clouds::tools::imageError(clouds::tools::tonemappedPixels(out, pose),
+                                                      reference.pixels));
       } else {
         renderOrThrow(harness, pose, settings[i], extent);
       }

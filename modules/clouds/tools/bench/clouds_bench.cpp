@@ -75,8 +75,8 @@ int main(int argc, char** argv) {
     std::printf("wrote %s/{results.csv, results.md, plots.json} in %.0f s\n",
                 std::filesystem::absolute(out).string().c_str(), results.seconds);
     // The plots are drawn by matplotlib (Debian's python3-matplotlib) from plots.json.
-    const std::string draw = std::string("\"") + CLOUDS_PLOT_PYTHON + "\" \"" +
-                             CLOUDS_PLOT_SCRIPT + "\" \"" + (out / "plots.json").string() + "\"";
+    const std::string draw = std::string("\"") + CLOUDS_PLOT_PYTHON + "\" \"" + CLOUDS_PLOT_SCRIPT +
+                             "\" \"" + (out / "plots.json").string() + "\"";
     if (std::system(draw.c_str()) != 0) {
       std::fprintf(stderr, "clouds_bench: drawing the plots failed (%s)\n", draw.c_str());
       return 4;

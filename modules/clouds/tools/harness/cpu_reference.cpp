@@ -37,10 +37,12 @@ vec4 fetchCurl(ivec2 t) {
   return texel(gTextures->curl, std::size_t(t.y) * kCurlNoiseSize + std::size_t(t.x));
 }
 vec4 fetchWeatherMaxFine(ivec2 t) {
-  return texel(gTextures->weatherMaxFine, std::size_t(t.y) * kWeatherMaxFineSize + std::size_t(t.x));
+  return texel(gTextures->weatherMaxFine,
+               std::size_t(t.y) * kWeatherMaxFineSize + std::size_t(t.x));
 }
 vec4 fetchMaximaSource(ivec2 t) {
-  return texel(*gMaximaSource, std::size_t(t.y) * std::size_t(gMaximaSourceSize) + std::size_t(t.x));
+  return texel(*gMaximaSource,
+               std::size_t(t.y) * std::size_t(gMaximaSourceSize) + std::size_t(t.x));
 }
 vec4 fetchWeatherMaxCoarse(ivec2 t) {
   return texel(gTextures->weatherMaxCoarse,
@@ -73,8 +75,12 @@ std::vector<std::uint8_t> weatherMaxima(const std::vector<std::uint8_t>& source,
 }
 
 CpuTextures readTextures(CloudHarness& harness) {
-  CpuTextures textures{harness.readShapeNoise(), harness.readDetailNoise(),
-                       harness.readCurlNoise(), harness.readWeatherMap(), {}, {}};
+  CpuTextures textures{harness.readShapeNoise(),
+                       harness.readDetailNoise(),
+                       harness.readCurlNoise(),
+                       harness.readWeatherMap(),
+                       {},
+                       {}};
   textures.weatherMaxFine = weatherMaxima(textures.weather, kWeatherMapSize, kWeatherMaxFineSize);
   textures.weatherMaxCoarse =
       weatherMaxima(textures.weatherMaxFine, kWeatherMaxFineSize, kWeatherMaxCoarseSize);
@@ -95,9 +101,10 @@ CloudFrame renderCpuReference(const CpuTextures& textures, const CloudUniforms& 
   frame.depth.resize(pixels);
   auto work = [&](unsigned first) {
     for (std::size_t i = first; i < pixels; i += threads) {
-      const uvec2 pixel(static_cast<uint>(i % u.traceExtent.x), static_cast<uint>(i / u.traceExtent.x));
-      const vec2 centre = vec2(pixel) + 0.5f +
-                          (variant.jitter == 2u ? u.subpixelOffset : vec2(0.0f));
+      const uvec2 pixel(static_cast<uint>(i % u.traceExtent.x),
+                        static_cast<uint>(i / u.traceExtent.x));
+      const vec2 centre =
+          vec2(pixel) + 0.5f + (variant.jitter == 2u ? u.subpixelOffset : vec2(0.0f));
       const vec2 extent = vec2(u.traceExtent.x, u.traceExtent.y);
       const vec3 direction = pixelRayDirection(centre, extent, u);
       const float sceneDistance =

@@ -8,8 +8,8 @@
 #include <cstdio>
 #include <cstdlib>
 #include <map>
-#include <vector>
 #include <string>
+#include <vector>
 
 #include "cloud_harness.h"
 #include "engine/core/error.h"
@@ -61,13 +61,15 @@ int main(int argc, char** argv) {
     s.msExtinctionScale = static_cast<float>(get("msA", s.msExtinctionScale));
     s.msContribution = static_cast<float>(get("msB", s.msContribution));
     s.msEccentricityScale = static_cast<float>(get("msC", s.msEccentricityScale));
-    s.multipleScatteringOctaves = static_cast<std::uint32_t>(get("msN", s.multipleScatteringOctaves));
+    s.multipleScatteringOctaves =
+        static_cast<std::uint32_t>(get("msN", s.multipleScatteringOctaves));
     s.phaseForwardG = static_cast<float>(get("g", s.phaseForwardG));
     s.layerBottomMetres = static_cast<float>(get("bottom", s.layerBottomMetres));
     s.layerTopMetres = static_cast<float>(get("top", s.layerTopMetres));
     s.viewStepMetres = static_cast<float>(get("step", s.viewStepMetres));
     s.anvilBias = static_cast<float>(get("anvil", s.anvilBias));
-    if (kv.count("quality")) s = clouds::settingsFor(static_cast<clouds::Quality>(get("quality", 2)), s);
+    if (kv.count("quality"))
+      s = clouds::settingsFor(static_cast<clouds::Quality>(get("quality", 2)), s);
     if (kv.count("detailDistance")) s.detailDistanceMetres = float(get("detailDistance", 0));
     if (kv.count("cutoff")) s.transmittanceCutoff = float(get("cutoff", 0));
     if (kv.count("maxSteps")) s.maxViewSteps = std::uint32_t(get("maxSteps", 0));
@@ -81,8 +83,8 @@ int main(int argc, char** argv) {
         harness.render(view, s, extent, static_cast<std::uint32_t>(get("frames", 1)));
     const double ms =
         std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
-    engine::assets::writePng(argv[1], clouds::tools::previewImage(frame, view,
-                                                         static_cast<float>(get("exposure", 1))));
+    engine::assets::writePng(
+        argv[1], clouds::tools::previewImage(frame, view, static_cast<float>(get("exposure", 1))));
     if (const int repeats = static_cast<int>(get("timing", 0)); repeats > 0) {
       // Median GPU time of the module's frame after the first (JIT and noise) frames.
       std::vector<double> times;
@@ -90,7 +92,8 @@ int main(int argc, char** argv) {
       for (int i = 0; i < repeats; ++i) {
         harness.render(view, s, extent);
         times.push_back(harness.lastGpuMilliseconds());
-        for (const clouds::PassTiming& t : harness.lastPassTimings()) passes[t.name].push_back(t.milliseconds);
+        for (const clouds::PassTiming& t : harness.lastPassTimings())
+          passes[t.name].push_back(t.milliseconds);
       }
       auto median = [](std::vector<double> v) {
         std::sort(v.begin(), v.end());
@@ -98,10 +101,11 @@ int main(int argc, char** argv) {
       };
       std::sort(times.begin(), times.end());
       std::printf("GPU time %ux%u: median %.1f ms, min %.1f, max %.1f over %d frames\n",
-                  extent.width, extent.height, times[times.size() / 2], times.front(),
-                  times.back(), repeats);
+                  extent.width, extent.height, times[times.size() / 2], times.front(), times.back(),
+                  repeats);
       std::printf("median per pass:");
-      for (const auto& [name, values] : passes) std::printf(" %s %.2f ms;", name.c_str(), median(values));
+      for (const auto& [name, values] : passes)
+        std::printf(" %s %.2f ms;", name.c_str(), median(values));
       std::printf("\n");
     }
     if (get("dumpTextures", 0) != 0) {
@@ -124,16 +128,21 @@ int main(int argc, char** argv) {
         }
         return image;
       };
-      engine::assets::writePng(std::string(argv[1]) + ".shape.png", slices(harness.readShapeNoise(), 128));
-      engine::assets::writePng(std::string(argv[1]) + ".detail.png", slices(harness.readDetailNoise(), 32));
+      engine::assets::writePng(std::string(argv[1]) + ".shape.png",
+                               slices(harness.readShapeNoise(), 128));
+      engine::assets::writePng(std::string(argv[1]) + ".detail.png",
+                               slices(harness.readDetailNoise(), 32));
     }
     if (get("compare", 0) != 0) {
       // Error against the Reference mode of the same view (a fresh renderer).
       clouds::tools::CloudHarness reference(device, extent);
-      const clouds::tools::CloudFrame truth = reference.render(view, clouds::referenceSettings(s), extent);
-      engine::assets::writePng(std::string(argv[1]) + ".reference.png", clouds::tools::previewImage(truth, view));
-      const engine::assets::ImageError e = clouds::tools::imageError(clouds::tools::tonemappedPixels(frame, view),
-                                                  clouds::tools::tonemappedPixels(truth, view));
+      const clouds::tools::CloudFrame truth =
+          reference.render(view, clouds::referenceSettings(s), extent);
+      engine::assets::writePng(std::string(argv[1]) + ".reference.png",
+                               clouds::tools::previewImage(truth, view));
+      const engine::assets::ImageError e =
+          clouds::tools::imageError(clouds::tools::tonemappedPixels(frame, view),
+                                    clouds::tools::tonemappedPixels(truth, view));
       std::printf("vs reference: PSNR %.2f dB, mean abs %.4f, max abs %.4f\n", e.psnr(), e.meanAbs,
                   e.maxAbs);
     }
@@ -145,9 +154,10 @@ int main(int argc, char** argv) {
       minT = std::min(minT, p.a);
       maxL = std::max(maxL, std::max(p.r, std::max(p.g, p.b)));
     }
-    std::printf("wrote %s (%.0f ms wall incl. noise generation; mean opacity %.3f, min T %.3f, "
-                "max radiance %.2f)\n",
-                argv[1], ms, coverage / double(frame.radiance.size()), minT, maxL);
+    std::printf(
+        "wrote %s (%.0f ms wall incl. noise generation; mean opacity %.3f, min T %.3f, "
+        "max radiance %.2f)\n",
+        argv[1], ms, coverage / double(frame.radiance.size()), minT, maxL);
   } catch (const engine::Error& e) {
     std::fprintf(stderr, "error: %s\n", e.what());
     return 1;

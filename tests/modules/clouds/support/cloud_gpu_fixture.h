@@ -54,7 +54,8 @@ inline bool allValid(const clouds::tools::CloudFrame& frame) {
   return true;
 }
 
-inline float maxAbsDifference(const clouds::tools::CloudFrame& a, const clouds::tools::CloudFrame& b) {
+inline float maxAbsDifference(const clouds::tools::CloudFrame& a,
+                              const clouds::tools::CloudFrame& b) {
   float worst = 0.0f;
   for (std::size_t i = 0; i < a.radiance.size(); ++i) {
     const glm::vec4 d = glm::abs(a.radiance[i] - b.radiance[i]);

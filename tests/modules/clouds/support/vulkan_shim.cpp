@@ -55,7 +55,8 @@ VKAPI_ATTR VkResult VKAPI_CALL createPipelines(VkDevice device, VkPipelineCache 
   if (failNow()) return VK_ERROR_OUT_OF_DEVICE_MEMORY;
   const VkResult result = realCreatePipelines(device, cache, count, infos, allocator, out);
   if (result == VK_SUCCESS) {
-    for (std::uint32_t i = 0; i < count; ++i) gCounts.live[bits(out[i])] = "vkCreateComputePipelines";
+    for (std::uint32_t i = 0; i < count; ++i)
+      gCounts.live[bits(out[i])] = "vkCreateComputePipelines";
   }
   return result;
 }
@@ -99,20 +100,20 @@ struct Entry {
   PFN_vkVoidFunction* real;
 };
 
-#define SHIM_CREATE(name, Info, Handle)                                                  \
-  Entry {                                                                                \
-    #name, reinterpret_cast<PFN_vkVoidFunction>(&create<PFN_##name, k_##name, Info, Handle>), \
-        reinterpret_cast<PFN_vkVoidFunction*>(&Real<PFN_##name>::fn)                     \
+#define SHIM_CREATE(name, Info, Handle)                                                          \
+  Entry {                                                                                        \
+#name, reinterpret_cast < PFN_vkVoidFunction>(&create <PFN_##name, k_##name, Info, Handle>), \
+        reinterpret_cast < PFN_vkVoidFunction*>(&Real <PFN_##name>::fn)                          \
   }
-#define SHIM_DESTROY(name, Handle)                                                      \
-  Entry {                                                                               \
-    #name, reinterpret_cast<PFN_vkVoidFunction>(&destroy<PFN_##name, Handle>),          \
-        reinterpret_cast<PFN_vkVoidFunction*>(&Real<PFN_##name>::fn)                    \
+#define SHIM_DESTROY(name, Handle)                                                \
+  Entry {                                                                         \
+#name, reinterpret_cast < PFN_vkVoidFunction>(&destroy <PFN_##name, Handle>), \
+        reinterpret_cast < PFN_vkVoidFunction*>(&Real <PFN_##name>::fn)           \
   }
-#define SHIM_COMMAND(name)                                                          \
-  Entry {                                                                           \
-    #name, reinterpret_cast<PFN_vkVoidFunction>(&Command<PFN_##name>::call),        \
-        reinterpret_cast<PFN_vkVoidFunction*>(&Command<PFN_##name>::real)           \
+#define SHIM_COMMAND(name)                                                      \
+  Entry {                                                                       \
+#name, reinterpret_cast < PFN_vkVoidFunction>(&Command <PFN_##name>::call), \
+        reinterpret_cast < PFN_vkVoidFunction*>(&Command <PFN_##name>::real)    \
   }
 
 const Entry kEntries[] = {
@@ -171,8 +172,12 @@ VKAPI_ATTR PFN_vkVoidFunction VKAPI_CALL shimGetDeviceProcAddr(VkDevice device, 
 
 }  // namespace
 
-PFN_vkGetDeviceProcAddr getDeviceProcAddr() { return &shimGetDeviceProcAddr; }
-Counts& counts() { return gCounts; }
+PFN_vkGetDeviceProcAddr getDeviceProcAddr() {
+  return &shimGetDeviceProcAddr;
+}
+Counts& counts() {
+  return gCounts;
+}
 
 void resetCounts() {
   gCounts.creations = 0;
@@ -185,6 +190,8 @@ void failCreation(int n) {
   gFailed = false;
 }
 
-bool failed() { return gFailed; }
+bool failed() {
+  return gFailed;
+}
 
 }  // namespace test::shim

@@ -11,9 +11,9 @@ namespace engine::assets {
 struct ImageError {
   double meanSquared = 0.0;  // over every compared value
   double meanAbs = 0.0;
-  double maxAbs = 0.0;             // the largest difference of any compared value
-  std::size_t pixelsOver = 0;      // pixels whose largest channel difference exceeds the
-                                   //   threshold given to compareImages()
+  double maxAbs = 0.0;         // the largest difference of any compared value
+  std::size_t pixelsOver = 0;  // pixels whose largest channel difference exceeds the
+                               //   threshold given to compareImages()
   std::size_t pixels = 0;
   // Peak signal-to-noise ratio in dB for values whose range is [0, peak]; 200 for identical
   // images (an "infinite" PSNR that still sorts and averages); 0 when nothing was compared

@@ -112,8 +112,7 @@ class Context {
   template <class T>
   struct Holder final : Entry {
     template <class... Args>
-    explicit Holder(Args&&... args)
-        : value(detail::construct<T>(std::forward<Args>(args)...)) {}
+    explicit Holder(Args&&... args) : value(detail::construct<T>(std::forward<Args>(args)...)) {}
     T value;
   };
 

@@ -114,8 +114,14 @@ class EventQueue final : public EventQueueBase {
  public:
   EventQueue() = default;
 
-  void send(const T& event) { newer_.push_back(event); ++sent_; }
-  void send(T&& event) { newer_.push_back(std::move(event)); ++sent_; }
+  void send(const T& event) {
+    newer_.push_back(event);
+    ++sent_;
+  }
+  void send(T&& event) {
+    newer_.push_back(std::move(event));
+    ++sent_;
+  }
   /// Constructs the event in place from `args`.
   template <class... Args>
   T& emplace(Args&&... args) {
@@ -159,8 +165,8 @@ class EventQueue final : public EventQueueBase {
  private:
   friend class EventReader<T>;
 
-  std::vector<T> older_;  // sent during the previous frame
-  std::vector<T> newer_;  // sent during this frame
+  std::vector<T> older_;          // sent during the previous frame
+  std::vector<T> newer_;          // sent during this frame
   std::uint64_t olderStart_ = 0;  // sequence number of older_[0]
   std::uint64_t newerStart_ = 0;  // sequence number of newer_[0]
   std::uint64_t sent_ = 0;
@@ -203,8 +209,7 @@ class EventReader {
   std::uint64_t missedCount() const noexcept { return missed_; }
 
  private:
-  std::span<const T> unreadPart(const std::vector<T>& buffer,
-                                std::uint64_t start) const noexcept {
+  std::span<const T> unreadPart(const std::vector<T>& buffer, std::uint64_t start) const noexcept {
     const std::uint64_t skip = cursor_ > start ? cursor_ - start : 0;
     const auto skipped = static_cast<std::size_t>(std::min<std::uint64_t>(skip, buffer.size()));
     return std::span<const T>(buffer).subspan(skipped);

@@ -35,11 +35,16 @@ inline constexpr std::array<Phase, kPhaseCount> kAllPhases = {
 /// "Input", "Simulate", ... for logs and debug listings.
 constexpr std::string_view phaseName(Phase phase) noexcept {
   switch (phase) {
-    case Phase::Input: return "Input";
-    case Phase::Simulate: return "Simulate";
-    case Phase::PreRender: return "PreRender";
-    case Phase::Render: return "Render";
-    case Phase::PostRender: return "PostRender";
+    case Phase::Input:
+      return "Input";
+    case Phase::Simulate:
+      return "Simulate";
+    case Phase::PreRender:
+      return "PreRender";
+    case Phase::Render:
+      return "Render";
+    case Phase::PostRender:
+      return "PostRender";
   }
   return "?";
 }

@@ -47,8 +47,8 @@ class View {
   static_assert(detail::kUniqueTypes<Ts...>, "a view lists each component type once");
 
   template <class T>
-  using StorageFor = std::conditional_t<std::is_const_v<T>, const Storage<std::remove_const_t<T>>,
-                                        Storage<T>>;
+  using StorageFor =
+      std::conditional_t<std::is_const_v<T>, const Storage<std::remove_const_t<T>>, Storage<T>>;
 
  public:
   /// Usually created by World::view(); the storages must outlive the view.

@@ -96,9 +96,11 @@ class Device {
 // Handle -> VkObjectType for the types the engine names and releases.
 template <typename Handle>
 constexpr VkObjectType objectType();
-#define ENGINE_GFX_OBJECT_TYPE(Handle, Type) \
-  template <>                                \
-  constexpr VkObjectType objectType<Handle>() { return Type; }
+#define ENGINE_GFX_OBJECT_TYPE(Handle, Type)    \
+  template <>                                   \
+  constexpr VkObjectType objectType<Handle>() { \
+    return Type;                                \
+  }
 ENGINE_GFX_OBJECT_TYPE(VkBuffer, VK_OBJECT_TYPE_BUFFER)
 ENGINE_GFX_OBJECT_TYPE(VkImage, VK_OBJECT_TYPE_IMAGE)
 ENGINE_GFX_OBJECT_TYPE(VkImageView, VK_OBJECT_TYPE_IMAGE_VIEW)

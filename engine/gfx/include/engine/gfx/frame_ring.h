@@ -6,8 +6,8 @@
 #include <vulkan/vulkan.h>
 
 #include <array>
-#include <cstring>
 #include <cstdint>
+#include <cstring>
 #include <memory>
 #include <span>
 

@@ -19,9 +19,9 @@ struct DescriptorBinding {
   std::uint32_t binding = 0;
   VkDescriptorType type = VK_DESCRIPTOR_TYPE_STORAGE_IMAGE;
   // The resource the pipeline will see at run time; warm-up binds a 1-texel stand-in like it.
-  VkFormat format = VK_FORMAT_UNDEFINED;              // images: the bound view's format
-  VkImageViewType viewType = VK_IMAGE_VIEW_TYPE_2D;   // images: the bound view's type
-  VkFilter filter = VK_FILTER_LINEAR;                 // samplers
+  VkFormat format = VK_FORMAT_UNDEFINED;             // images: the bound view's format
+  VkImageViewType viewType = VK_IMAGE_VIEW_TYPE_2D;  // images: the bound view's type
+  VkFilter filter = VK_FILTER_LINEAR;                // samplers
   VkSamplerAddressMode addressMode = VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE;  // samplers
 };
 

@@ -17,7 +17,7 @@ struct SwapchainImage {
   VkImage image = VK_NULL_HANDLE;
   VkImageView view = VK_NULL_HANDLE;
   std::uint32_t index = 0;
-  VkSemaphore acquired = VK_NULL_HANDLE;       // the frame's submission waits on it
+  VkSemaphore acquired = VK_NULL_HANDLE;        // the frame's submission waits on it
   VkSemaphore renderFinished = VK_NULL_HANDLE;  // the frame's submission signals it
 };
 

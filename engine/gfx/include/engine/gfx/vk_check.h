@@ -20,9 +20,9 @@ void throwVulkanError(VkResult result, const char* expression, const char* file,
 
 }  // namespace engine::gfx
 
-#define GFX_CHECK(expr)                                                              \
-  do {                                                                               \
-    const VkResult gfxCheckResult_ = (expr);                                         \
-    if (gfxCheckResult_ != VK_SUCCESS)                                               \
-      ::engine::gfx::throwVulkanError(gfxCheckResult_, #expr, __FILE__, __LINE__);   \
+#define GFX_CHECK(expr)                                                            \
+  do {                                                                             \
+    const VkResult gfxCheckResult_ = (expr);                                       \
+    if (gfxCheckResult_ != VK_SUCCESS)                                             \
+      ::engine::gfx::throwVulkanError(gfxCheckResult_, #expr, __FILE__, __LINE__); \
   } while (0)

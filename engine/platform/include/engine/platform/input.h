@@ -8,12 +8,53 @@
 namespace engine::platform {
 
 enum class Key : std::uint8_t {
-  W, A, S, D, Q, E, R, F, T, G, H, P, C, V, B, N, M,
-  Up, Down, Left, Right,
-  Space, LeftShift, LeftControl, Tab, Escape, Enter,
-  Num1, Num2, Num3, Num4, Num5, Num6, Num7, Num8, Num9, Num0,
-  Minus, Equal, LeftBracket, RightBracket,
-  F1, F2, F3, F4, F5, F12,
+  W,
+  A,
+  S,
+  D,
+  Q,
+  E,
+  R,
+  F,
+  T,
+  G,
+  H,
+  P,
+  C,
+  V,
+  B,
+  N,
+  M,
+  Up,
+  Down,
+  Left,
+  Right,
+  Space,
+  LeftShift,
+  LeftControl,
+  Tab,
+  Escape,
+  Enter,
+  Num1,
+  Num2,
+  Num3,
+  Num4,
+  Num5,
+  Num6,
+  Num7,
+  Num8,
+  Num9,
+  Num0,
+  Minus,
+  Equal,
+  LeftBracket,
+  RightBracket,
+  F1,
+  F2,
+  F3,
+  F4,
+  F5,
+  F12,
   Count
 };
 
@@ -25,7 +66,7 @@ const char* keyName(Key key);
 struct InputState {
   std::array<bool, static_cast<std::size_t>(Key::Count)> down{};
   std::array<bool, static_cast<std::size_t>(Key::Count)> pressed{};  // went down this frame
-  double mouseDeltaX = 0.0;  // pixels moved this frame
+  double mouseDeltaX = 0.0;                                          // pixels moved this frame
   double mouseDeltaY = 0.0;
   double scrollY = 0.0;
   bool mouseCaptured = false;

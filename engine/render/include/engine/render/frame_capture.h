@@ -39,7 +39,7 @@ class FrameCapture {
   VkExtent2D extent_{0, 0};
   VkFormat displayFormat_ = VK_FORMAT_UNDEFINED;
   VkFormat hdrFormat_ = VK_FORMAT_UNDEFINED;
-  std::optional<std::filesystem::path> armed_;    // waiting for the next execute
+  std::optional<std::filesystem::path> armed_;     // waiting for the next execute
   std::optional<std::filesystem::path> inFlight_;  // copied, waiting to be written
   assets::ImageRgba8 display_;
   assets::ImageRgba32f hdr_;

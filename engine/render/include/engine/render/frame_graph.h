@@ -270,12 +270,11 @@ class FrameGraph {
 };
 
 template <typename Data, typename Setup, typename Execute>
-const Data& FrameGraph::addPass(const char* name, PassType type, Setup&& setup,
-                                Execute&& execute) {
+const Data& FrameGraph::addPass(const char* name, PassType type, Setup&& setup, Execute&& execute) {
   static_assert(std::is_invocable_v<Execute, const Data&, PassContext&>,
                 "execute must be callable as execute(const Data&, PassContext&)");
-  auto executor = std::make_unique<Executor<Data, std::decay_t<Execute>>>(
-      std::forward<Execute>(execute));
+  auto executor =
+      std::make_unique<Executor<Data, std::decay_t<Execute>>>(std::forward<Execute>(execute));
   auto* typed = executor.get();
   const std::uint16_t pass = beginPass(name, type, std::move(executor));
   PassBuilder builder(*this, pass);

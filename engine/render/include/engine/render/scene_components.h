@@ -28,8 +28,8 @@ glm::mat4 projectionOf(const Camera& camera, float aspect);
 
 // The sun as a directional light.
 struct Sun {
-  glm::dvec3 direction{0.0, 1.0, 0.0};   // unit, towards the sun
-  glm::vec3 illuminance{10.0f};          // linear RGB, the renderer's radiometric unit
+  glm::dvec3 direction{0.0, 1.0, 0.0};  // unit, towards the sun
+  glm::vec3 illuminance{10.0f};         // linear RGB, the renderer's radiometric unit
 };
 
 // Sky radiance used for ambient light and as the backdrop: zenith and horizon colours, and the
