@@ -129,6 +129,8 @@ void Hud::prepare(ecs::World& world, VkExtent2D extent, std::span<const gfx::Tim
                   report.traceExtent.width, report.traceExtent.height,
                   report.tileSize * report.tileSize,
                   report.historyUsed ? "reprojected" : report.resetReason);
+      ImGui::Text("clouds GPU memory %.1f MiB%s", double(status->memory.totalBytes()) / 1048576.0,
+                  status->lastError.empty() ? "" : "  (error: see the log)");
     });
     world.view<const TimeOfDay>().each([&](const TimeOfDay& t) {
       const int minutes = int(std::fmod(t.hours, 24.0) * 60.0);

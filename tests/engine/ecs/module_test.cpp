@@ -117,6 +117,28 @@ TEST(Module, UnsupportedModuleIsSkippedWithAWarning) {
   app.runFrame();  // the rest still runs
 }
 
+// Supported on paper, but creating its GPU objects fails: install() says so by throwing
+// ModuleUnsupported before it registers anything.
+class FailingGpuModule final : public Module {
+ public:
+  std::string_view name() const override { return "volumetrics"; }
+  void install(World&, Scheduler&) override {
+    throw engine::ecs::ModuleUnsupported("the device cannot create the volume textures");
+  }
+};
+
+TEST(Module, AModuleThatFindsItCannotRunWhileInstallingIsSkippedWithAWarning) {
+  LogCapture capture;
+  App app;
+  EXPECT_FALSE(app.addModule<FailingGpuModule>());
+  EXPECT_FALSE(app.hasModule("volumetrics"));
+  EXPECT_EQ(app.skippedModules(), (std::vector<std::string>{"volumetrics"}));
+  ASSERT_EQ(capture.warnings.size(), 1u);
+  EXPECT_NE(capture.warnings[0].find("volume textures"), std::string::npos) << capture.warnings[0];
+  EXPECT_TRUE(app.addModule<PhysicsModule>()) << "the rest of the app still installs";
+  app.runFrame();
+}
+
 TEST(Module, InstallModuleChecksSupportAgainstTheWorld) {
   LogCapture capture;
   World world;

@@ -51,6 +51,9 @@ bool sameImages(const clouds::Outputs& a, const clouds::Outputs& b) {
 CloudFeature::CloudFeature(engine::ecs::World& world, const RenderDevice& device,
                            const CloudLayer& layer)
     : world_(world), device_(*device.device), framesInFlight_(device.framesInFlight) {
+  if (device.hdrFormat != kCompositeFormat) {
+    throw engine::ecs::ModuleUnsupported("the clouds composite needs an RGBA16F scene colour");
+  }
   if (layer.weatherMap) weatherMap_ = loadWeatherMap(device_, *layer.weatherMap);
   clouds::CreateInfo info;
   info.instance = device_.vkInstance();
@@ -71,9 +74,6 @@ CloudFeature::CloudFeature(engine::ecs::World& world, const RenderDevice& device
   if (!context_) {
     throw engine::ecs::ModuleUnsupported("the clouds module cannot run on this device: " +
                                          error.message + " (" + errorCodeName(error.code) + ")");
-  }
-  if (device.hdrFormat != kCompositeFormat) {
-    throw engine::ecs::ModuleUnsupported("the clouds composite needs an RGBA16F scene colour");
   }
 }
 

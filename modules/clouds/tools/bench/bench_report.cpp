@@ -107,7 +107,7 @@ void writeCsv(const std::filesystem::path& file, const BenchResults& results) {
   out << "config,sweep,value,preset,view,gpu_ms_median,gpu_ms_min,gpu_ms_max,psnr_db,"
          "min_psnr_db,mean_abs,max_abs,view_samples_per_ray,light_samples_per_ray,"
          "early_exit_fraction,rays_per_frame,scene_distance_ms,march_ms,reconstruct_ms,"
-         "upsample_ms,weather_ms_when_run\n";
+         "upsample_ms,weather_ms_when_run,gpu_memory_mib\n";
   for (const Measurement& m : results.measurements) {
     const BenchConfig* config = nullptr;
     for (const BenchConfig& c : results.configs) {
@@ -120,14 +120,14 @@ void writeCsv(const std::filesystem::path& file, const BenchResults& results) {
         << m.lightSamplesPerRay << ',' << m.earlyExitFraction << ',' << m.raysPerFrame << ','
         << passMs(m, "scene distance") << ',' << passMs(m, "march") << ','
         << passMs(m, "reconstruct") << ',' << passMs(m, "upsample") << ',' << passMs(m, "weather")
-        << '\n';
+        << ',' << m.memoryMiB << '\n';
   }
   // The Reference mode itself: one frame's time, and one frame against the averaged Reference.
   for (const ReferenceMeasurement& r : results.references) {
     // No error for the fly-through's Reference (it is not compared with itself).
     out << "\"Reference\",,,1,\"" << r.view << "\"," << r.medianMs << ",,,"
         << (r.view == kFlyThrough ? std::string() : std::to_string(r.singleFramePsnr))
-        << ",,,,,,,,,,,,\n";
+        << ",,,,,,,,,,,,,\n";
   }
 }
 
@@ -201,16 +201,17 @@ void writeMarkdown(const std::filesystem::path& file, const BenchResults& result
   // --- Presets ---------------------------------------------------------------------------
   out << "\n## Presets\n\n| preset | ms per frame (static mean) | x cheaper than Reference | "
          "PSNR static (pooled / worst) | fly-through ms | fly-through PSNR (mean / worst) | "
-         "view samples per ray | light samples per ray | early exits |\n"
-         "|---|---|---|---|---|---|---|---|---|\n";
+         "view samples per ray | light samples per ray | early exits | GPU memory (MiB) |\n"
+         "|---|---|---|---|---|---|---|---|---|---|\n";
   for (const BenchConfig& c : results.configs) {
     if (!c.preset) continue;
     const Aggregate s = aggregateStatic(results, c.name);
     const Aggregate f = aggregateFlyThrough(results, c.name);
-    double viewSamples = 0.0, lightSamples = 0.0, exits = 0.0;
+    double viewSamples = 0.0, lightSamples = 0.0, exits = 0.0, memory = 0.0;
     for (const std::string& view : views) {
       const Measurement* m = results.find(c.name, view);
       if (m == nullptr) continue;
+      memory = std::max(memory, m->memoryMiB);
       viewSamples += m->viewSamplesPerRay / double(views.size());
       lightSamples += m->lightSamplesPerRay / double(views.size());
       exits += m->earlyExitFraction / double(views.size());
@@ -220,7 +221,8 @@ void writeMarkdown(const std::filesystem::path& file, const BenchResults& result
         << format("%.1f", s.psnr) << " / " << format("%.1f", s.minPsnr) << " | "
         << format("%.1f", f.milliseconds) << " | " << format("%.1f", f.psnr) << " / "
         << format("%.1f", f.minPsnr) << " | " << format("%.1f", viewSamples) << " | "
-        << format("%.1f", lightSamples) << " | " << format("%.0f%%", exits * 100.0) << " |\n";
+        << format("%.1f", lightSamples) << " | " << format("%.0f%%", exits * 100.0) << " | "
+        << format("%.1f", memory) << " |\n";
   }
   out << "| Reference (one frame) | " << format("%.0f", referenceMean) << " | 1 | ";
   double referenceMse = 0.0;
@@ -232,7 +234,7 @@ void writeMarkdown(const std::filesystem::path& file, const BenchResults& result
   }
   out << format("%.1f", psnrFromMeanSquared(referenceMse / std::max(referenceViews, 1)))
       << " (one frame against the average of " << o.referenceFrames << ") | "
-      << format("%.0f", referenceMs(results, kFlyThrough)) << " | | | | |\n";
+      << format("%.0f", referenceMs(results, kFlyThrough)) << " | | | | | |\n";
 
   // --- Convergence ------------------------------------------------------------------------
   if (!results.highConvergence.empty()) {

@@ -32,9 +32,11 @@ struct Samples {
   std::vector<double> milliseconds;
   std::map<std::string, std::vector<double>> passMilliseconds;
   clouds::WorkCounters work;
+  std::uint64_t memoryBytes = 0;
 
   void record(const clouds::tools::CloudHarness& harness) {
     milliseconds.push_back(harness.lastGpuMilliseconds());
+    memoryBytes = harness.memoryUsage().totalBytes();
     for (const clouds::PassTiming& pass : harness.lastPassTimings()) {
       passMilliseconds[pass.name].push_back(pass.milliseconds);
     }
@@ -64,6 +66,7 @@ Measurement summarise(const std::string& config, const std::string& view, const 
   m.raysPerFrame =
       double(s.work.tracedPixels) / double(std::max<std::size_t>(s.milliseconds.size(), 1));
   for (const auto& [name, values] : s.passMilliseconds) m.passMs[name] = median(values);
+  m.memoryMiB = double(s.memoryBytes) / (1024.0 * 1024.0);
   return m;
 }
 

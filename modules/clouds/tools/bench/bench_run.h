@@ -47,6 +47,7 @@ struct Measurement {
   double earlyExitFraction = 0.0;
   double raysPerFrame = 0.0;
   std::map<std::string, double> passMs;  // median per pass
+  double memoryMiB = 0.0;                // the module's GPU memory (Context::memoryUsage)
 };
 
 // How High converges on a static view: PSNR against the Reference after so many frames.

@@ -93,6 +93,7 @@ class CloudHarness {
   std::vector<clouds::PassTiming> lastPassTimings() const;
 
   clouds::Context& context() { return *context_; }
+  clouds::MemoryUsage memoryUsage() const { return context_->memoryUsage(); }
   // The module's images (internal access, context_access.h).
   const clouds::detail::ModuleImages& moduleImages() const;
   // The host depth values of the last render with groundDepth (reversed-Z), else empty.

@@ -1,0 +1,55 @@
+// The clouds' engine module on a real device: with a renderer's RenderDevice it installs,
+// registers its render feature and publishes a CloudStatus; where the module cannot run (here:
+// a scene colour format its composite cannot write) it skips itself with a warning and the
+// app runs on without clouds.
+#include <gtest/gtest.h>
+
+#include <string>
+#include <vector>
+
+#include "clouds/ecs/cloud_components.h"
+#include "clouds/ecs/clouds_module.h"
+#include "engine/core/log.h"
+#include "engine/ecs/app.h"
+#include "engine/render/render_feature.h"
+#include "gpu_test.h"
+
+namespace {
+
+using CloudsModuleOnDevice = test::GpuTest;
+
+engine::render::RenderDevice renderDevice(engine::gfx::Device& device, VkFormat hdr) {
+  return engine::render::RenderDevice{&device, hdr, VK_FORMAT_D32_SFLOAT, 2, {640, 360}};
+}
+
+TEST_F(CloudsModuleOnDevice, InstallsAndRegistersItsRenderFeature) {
+  engine::ecs::App app;
+  app.world().ctx().emplace<engine::render::RenderDevice>(
+      renderDevice(device(), VK_FORMAT_R16G16B16A16_SFLOAT));
+  app.world().emplace<clouds::ecs::CloudLayer>(app.world().create(), clouds::ecs::CloudLayer{});
+  ASSERT_TRUE(app.addModule<clouds::ecs::CloudsModule>());
+  const auto& features = app.world().ctx().get<engine::render::RenderFeatures>().features;
+  ASSERT_EQ(features.size(), 1u);
+  EXPECT_STREQ(features[0]->name(), "clouds");
+  EXPECT_TRUE(app.world().ctx().has<clouds::ecs::CloudStatus>());
+}
+
+TEST_F(CloudsModuleOnDevice, ADeviceItCannotUseMakesItSkipItselfWithAWarning) {
+  std::vector<std::string> warnings;
+  auto previous = engine::log::setSink([&](engine::log::Level level, std::string_view message) {
+    if (level == engine::log::Level::Warning) warnings.emplace_back(message);
+  });
+  engine::ecs::App app;
+  app.world().ctx().emplace<engine::render::RenderDevice>(
+      renderDevice(device(), VK_FORMAT_R8G8B8A8_UNORM));
+  app.world().emplace<clouds::ecs::CloudLayer>(app.world().create(), clouds::ecs::CloudLayer{});
+  EXPECT_FALSE(app.addModule<clouds::ecs::CloudsModule>());
+  engine::log::setSink(std::move(previous));
+  EXPECT_FALSE(app.world().ctx().has<engine::render::RenderFeatures>());
+  ASSERT_EQ(warnings.size(), 1u);
+  EXPECT_NE(warnings[0].find("clouds"), std::string::npos) << warnings[0];
+  EXPECT_NE(warnings[0].find("RGBA16F"), std::string::npos) << warnings[0];
+  app.runFrame();  // the rest of the app runs on
+}
+
+}  // namespace
