@@ -197,9 +197,12 @@ void logRun(ecs::World& world, const Renderer& renderer, const LoopStats& stats)
   const auto* clouds = world.ctx().tryGet<clouds::ecs::CloudStatus>();
   if (clouds == nullptr) return;
   const ::clouds::FrameReport& r = clouds->report;
-  log::info("clouds, last frame: trace " + std::to_string(r.traceExtent.width) + "x" +
-            std::to_string(r.traceExtent.height) + ", 1 in " +
-            std::to_string(r.tileSize * r.tileSize) + " pixels marched, " +
+  const std::string marched = r.tileSize == 0
+                                  ? std::string("nothing marched")
+                                  : "trace " + std::to_string(r.traceExtent.width) + "x" +
+                                        std::to_string(r.traceExtent.height) + ", 1 in " +
+                                        std::to_string(r.tileSize * r.tileSize) + " pixels marched";
+  log::info("clouds, last frame: " + marched + ", " +
             (r.historyUsed ? std::string("history reprojected")
                            : "no history: " + std::string(r.resetReason)));
   std::vector<std::pair<std::string, double>> passes;

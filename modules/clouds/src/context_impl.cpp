@@ -197,8 +197,8 @@ void Context::Impl::bindAndDispatch(VkCommandBuffer cmd, Program program, VkPipe
   fn.vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pipeline);
   fn.vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, programs_[program].layout(), 0, 1,
                              &set, 0, nullptr);
-  const std::uint32_t group = shader::kWorkgroupSize2D;
-  fn.vkCmdDispatch(cmd, (width + group - 1) / group, (height + group - 1) / group, 1);
+  fn.vkCmdDispatch(cmd, detail::groupsFor(width, shader::kWorkgroupSize2D),
+                   detail::groupsFor(height, shader::kWorkgroupSize2D), 1);
 }
 
 namespace {
@@ -225,19 +225,8 @@ void Context::Impl::dispatch(const FrameInputs& inputs, const Settings& settings
 
   const VkExtent2D traceExtent = detail::traceExtentFor(inputs.renderExtent, settings.traceScale);
   const detail::TemporalFrame temporal = temporal_.plan(inputs, settings, traceExtent);
-  detail::UniformContext uniformContext;
-  uniformContext.reversedZ = info_.reversedZ;
-  uniformContext.hasDepth = inputs.depthView != VK_NULL_HANDLE;
-  uniformContext.traceExtent = traceExtent;
-  uniformContext.fullExtent = inputs.renderExtent;
-  uniformContext.temporalIndex = temporal.temporalIndex;
-  uniformContext.tileSize = temporal.tileSize;
-  uniformContext.phase = temporal.phase;
-  uniformContext.useOutputHistory = temporal.useOutputHistory;
-  uniformContext.cameraDelta = temporal.cameraDelta;
-  uniformContext.deltaSeconds = temporal.deltaSeconds;
-  uniformContext.previousView = temporal.previousView;
-  uniformContext.previousProjection = temporal.previousProjection;
+  const detail::UniformContext uniformContext{info_.reversedZ, inputs.depthView != VK_NULL_HANDLE,
+                                              traceExtent, inputs.renderExtent, temporal};
   lastUniforms_ = detail::buildUniforms(inputs, settings, uniformContext);
   lastUniforms_.flags |= debugFlags_;
   if (skyIsClear(settings)) {

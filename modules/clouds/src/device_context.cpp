@@ -98,6 +98,15 @@ UniqueMemory DeviceContext::allocateMemory(const VkMemoryAllocateInfo& info,
                                                                 "vkAllocateMemory", name);
 }
 
+UniqueMemory DeviceContext::allocateFor(const VkMemoryRequirements& requirements,
+                                        VkMemoryPropertyFlags preferred,
+                                        const std::string& name) const {
+  VkMemoryAllocateInfo info{VK_STRUCTURE_TYPE_MEMORY_ALLOCATE_INFO};
+  info.allocationSize = requirements.size;
+  info.memoryTypeIndex = memoryType(requirements.memoryTypeBits, preferred);
+  return allocateMemory(info, name + " memory");
+}
+
 UniqueSampler DeviceContext::createSampler(const VkSamplerCreateInfo& info,
                                            const std::string& name) const {
   return make<UniqueSampler, &VulkanFunctions::vkCreateSampler>(info, VK_OBJECT_TYPE_SAMPLER,

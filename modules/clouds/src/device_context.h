@@ -55,6 +55,9 @@ class DeviceContext {
   UniqueImageView createImageView(const VkImageViewCreateInfo& info, const std::string& name) const;
   UniqueBuffer createBuffer(const VkBufferCreateInfo& info, const std::string& name) const;
   UniqueMemory allocateMemory(const VkMemoryAllocateInfo& info, const std::string& name) const;
+  // Memory for `requirements`, of a type with `preferred` properties when one exists.
+  UniqueMemory allocateFor(const VkMemoryRequirements& requirements,
+                           VkMemoryPropertyFlags preferred, const std::string& name) const;
   UniqueSampler createSampler(const VkSamplerCreateInfo& info, const std::string& name) const;
   UniqueShaderModule createShaderModule(const VkShaderModuleCreateInfo& info,
                                         const std::string& name) const;
@@ -78,6 +81,16 @@ class DeviceContext {
   bool debugUtils_;
   VkPhysicalDeviceMemoryProperties memory_{};
 };
+
+// The stages and accesses the module's compute passes synchronise on.
+inline constexpr VkPipelineStageFlags2 kComputeStage = VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT;
+inline constexpr VkAccessFlags2 kStorageWrite = VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT;
+inline constexpr VkAccessFlags2 kStorageRead = VK_ACCESS_2_SHADER_STORAGE_READ_BIT;
+
+// Workgroups to cover `size` items with groups of `group`.
+constexpr std::uint32_t groupsFor(std::uint32_t size, std::uint32_t group) {
+  return (size + group - 1) / group;
+}
 
 // One image barrier in GENERAL layout or a transition, for compute-only module work.
 void barrier(const DeviceContext& context, VkCommandBuffer cmd, VkImage image,

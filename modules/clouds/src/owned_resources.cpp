@@ -20,11 +20,7 @@ OwnedImage::OwnedImage(const DeviceContext& context, VkImageType type, VkFormat 
 
   VkMemoryRequirements requirements{};
   fn.vkGetImageMemoryRequirements(context.device(), image_.get(), &requirements);
-  VkMemoryAllocateInfo allocation{VK_STRUCTURE_TYPE_MEMORY_ALLOCATE_INFO};
-  allocation.allocationSize = requirements.size;
-  allocation.memoryTypeIndex =
-      context.memoryType(requirements.memoryTypeBits, VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT);
-  memory_ = context.allocateMemory(allocation, name + " memory");
+  memory_ = context.allocateFor(requirements, VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT, name);
   bytes_ = requirements.size;
   check(fn.vkBindImageMemory(context.device(), image_.get(), memory_.get(), 0),
         "vkBindImageMemory");
@@ -48,13 +44,11 @@ OwnedBuffer::OwnedBuffer(const DeviceContext& context, VkDeviceSize size, VkBuff
 
   VkMemoryRequirements requirements{};
   fn.vkGetBufferMemoryRequirements(context.device(), buffer_.get(), &requirements);
-  VkMemoryAllocateInfo allocation{VK_STRUCTURE_TYPE_MEMORY_ALLOCATE_INFO};
-  allocation.allocationSize = requirements.size;
-  allocation.memoryTypeIndex = context.memoryType(
-      requirements.memoryTypeBits,
+  memory_ = context.allocateFor(
+      requirements,
       hostVisible ? VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT | VK_MEMORY_PROPERTY_HOST_COHERENT_BIT
-                  : VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT);
-  memory_ = context.allocateMemory(allocation, name + " memory");
+                  : VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT,
+      name);
   bytes_ = requirements.size;
   check(fn.vkBindBufferMemory(context.device(), buffer_.get(), memory_.get(), 0),
         "vkBindBufferMemory");

@@ -11,9 +11,9 @@ using detail::Program;
 
 namespace {
 
-constexpr VkPipelineStageFlags2 kCompute = VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT;
-constexpr VkAccessFlags2 kStorageWrite = VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT;
-constexpr VkAccessFlags2 kStorageRead = VK_ACCESS_2_SHADER_STORAGE_READ_BIT;
+using detail::kStorageRead;
+using detail::kStorageWrite;
+constexpr VkPipelineStageFlags2 kCompute = detail::kComputeStage;
 // Where host passes may read the outputs.
 constexpr VkPipelineStageFlags2 kHostReadStages =
     VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT | VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT;

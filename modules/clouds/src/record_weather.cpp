@@ -11,13 +11,9 @@ using detail::Program;
 
 namespace {
 
-constexpr VkPipelineStageFlags2 kCompute = VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT;
-constexpr VkAccessFlags2 kStorageWrite = VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT;
-constexpr VkAccessFlags2 kStorageRead = VK_ACCESS_2_SHADER_STORAGE_READ_BIT;
-
-std::uint32_t groups(std::uint32_t size, std::uint32_t group) {
-  return (size + group - 1) / group;
-}
+using detail::kStorageRead;
+using detail::kStorageWrite;
+constexpr VkPipelineStageFlags2 kCompute = detail::kComputeStage;
 
 }  // namespace
 
@@ -47,10 +43,10 @@ void Context::Impl::recordNoise(VkCommandBuffer cmd) {
     fn.vkCmdPushConstants(cmd, program.layout(), VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof(constants),
                           &constants);
     if (job.volume) {
-      const std::uint32_t n = groups(job.size, shader::kWorkgroupSize3D);
+      const std::uint32_t n = detail::groupsFor(job.size, shader::kWorkgroupSize3D);
       fn.vkCmdDispatch(cmd, n, n, n);
     } else {
-      const std::uint32_t n = groups(job.size, shader::kWorkgroupSize2D);
+      const std::uint32_t n = detail::groupsFor(job.size, shader::kWorkgroupSize2D);
       fn.vkCmdDispatch(cmd, n, n, 1);
     }
   }
@@ -63,8 +59,8 @@ void Context::Impl::recordWeather(VkCommandBuffer cmd, const FrameInputs& inputs
                                   const Settings& settings, Slot& slot) {
   if (inputs.weatherView != VK_NULL_HANDLE) {
     const auto& fn = device_.fn();
-    const std::uint32_t n =
-        groups(static_cast<std::uint32_t>(shader::kWeatherMapSize), shader::kWorkgroupSize2D);
+    const std::uint32_t n = detail::groupsFor(static_cast<std::uint32_t>(shader::kWeatherMapSize),
+                                              shader::kWorkgroupSize2D);
     // A painted map: resampled every frame (the host may repaint it at any time).
     beginPass(cmd, detail::Pass::Weather, "clouds: weather resample");
     detail::SetWriter(device_, slot.weatherResample)
@@ -128,8 +124,8 @@ void Context::Impl::recordWeatherRows(VkCommandBuffer cmd, const Settings& setti
   fn.vkCmdPushConstants(cmd, generator.layout(), VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof(constants),
                         &constants);
   const auto width = static_cast<std::uint32_t>(shader::kWeatherMapSize);
-  fn.vkCmdDispatch(cmd, groups(width, shader::kWorkgroupSize2D),
-                   groups(work.endRow - work.firstRow, shader::kWorkgroupSize2D), 1);
+  fn.vkCmdDispatch(cmd, detail::groupsFor(width, shader::kWorkgroupSize2D),
+                   detail::groupsFor(work.endRow - work.firstRow, shader::kWorkgroupSize2D), 1);
   detail::memoryBarrier(device_, cmd, kCompute, kStorageWrite, kCompute, kStorageRead);
 }
 
@@ -150,7 +146,7 @@ void Context::Impl::recordWeatherMaxima(VkCommandBuffer cmd) {
                                &level.set, 0, nullptr);
     fn.vkCmdPushConstants(cmd, maxima.layout(), VK_SHADER_STAGE_COMPUTE_BIT, 0,
                           sizeof(level.constants), &level.constants);
-    const std::uint32_t n = groups(level.constants.targetSize, shader::kWorkgroupSize2D);
+    const std::uint32_t n = detail::groupsFor(level.constants.targetSize, shader::kWorkgroupSize2D);
     fn.vkCmdDispatch(cmd, n, n, 1);
     detail::memoryBarrier(device_, cmd, kCompute, kStorageWrite, kCompute, kStorageRead);
   }

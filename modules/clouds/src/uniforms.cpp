@@ -93,7 +93,7 @@ shader::CloudUniforms buildUniforms(const FrameInputs& in, const Settings& s,
   u.lightConeSpread = s.lightConeSpread;
   u.coarseStepFactor = s.coarseStepFactor;
   u.emptySamplesToCoarse = static_cast<float>(s.emptySamplesToCoarse);
-  u.temporalIndex = context.temporalIndex;
+  u.temporalIndex = context.temporal.temporalIndex;
   u.maxViewSteps = s.maxViewSteps;
   u.flags = (context.reversedZ ? shader::kFlagReversedZ : 0u) |
             (context.hasDepth ? shader::kFlagHasDepth : 0u);
@@ -106,25 +106,25 @@ shader::CloudUniforms buildUniforms(const FrameInputs& in, const Settings& s,
   // Folded here once per frame so that the passes take one matrix product per pixel: a view
   // direction goes straight to the history's clip space, and the camera offset is a constant.
   const glm::mat4 previousViewProjection =
-      context.previousProjection * glm::mat4(glm::mat3(context.previousView));
+      context.temporal.previousProjection * glm::mat4(glm::mat3(context.temporal.previousView));
   u.previousClipFromView = previousViewProjection * u.viewToWorld;
   const glm::dvec2 drift =
-      wind * (static_cast<double>(s.windSpeedMetresPerSecond) * context.deltaSeconds);
-  const glm::dvec3 moved = context.cameraDelta - glm::dvec3(drift.x, 0.0, drift.y);
+      wind * (static_cast<double>(s.windSpeedMetresPerSecond) * context.temporal.deltaSeconds);
+  const glm::dvec3 moved = context.temporal.cameraDelta - glm::dvec3(drift.x, 0.0, drift.y);
   u.previousClipOrigin = previousViewProjection * glm::vec4(glm::vec3(moved), 1.0f);
   u.temporalFreshWeight = s.temporalFreshWeight;
   u.historyClampMargin = s.historyClampMargin;
   u.traceScale = s.traceScale;
   u.historyClampSpreadPixels = s.historyClampSpreadPixels;
 
-  const std::uint32_t k = context.tileSize;
+  const std::uint32_t k = context.temporal.tileSize;
   const auto lastFresh = [&](std::uint32_t extent, std::uint32_t phase) {
     return extent > phase ? (extent - 1 - phase) / k * k + phase : phase;
   };
   u.tileSize = k;
-  u.tilePhase = context.phase;
-  u.lastFreshPixel = lastFresh(context.traceExtent.width, context.phase.x) |
-                     lastFresh(context.traceExtent.height, context.phase.y) << 16u;
+  u.tilePhase = context.temporal.phase;
+  u.lastFreshPixel = lastFresh(context.traceExtent.width, context.temporal.phase.x) |
+                     lastFresh(context.traceExtent.height, context.temporal.phase.y) << 16u;
   // Rays move inside their pixels from one refresh of a pixel to the next. A pixel is
   // refreshed once per round of k x k frames, so the sequence advances once per round. Its
   // points are stratified over the output pixels a trace pixel covers (m x m of them at trace
@@ -132,13 +132,15 @@ shader::CloudUniforms buildUniforms(const FrameInputs& in, const Settings& s,
   // rounds move inside them along a Halton (2, 3) sequence, so temporal upsampling gets an own
   // sample for every output pixel as early as possible. Temporal upsampling only moves the
   // rays while it accumulates: a frame rebuilt from its own samples wants them centred.
-  const bool subpixel = s.jitter == Jitter::BayerHaltonSubpixel || context.useOutputHistory;
+  const bool subpixel =
+      s.jitter == Jitter::BayerHaltonSubpixel || context.temporal.useOutputHistory;
   if (subpixel) {
     const std::uint32_t m = s.traceScale <= 0.25f ? 4u : s.traceScale <= 0.5f ? 2u : 1u;
     // The frame after a reset (index 0) marches without accumulating: the rounds start at
     // index 1, so that its pixels' next refresh (index k * k) is still in round 0.
-    const std::uint32_t index =
-        context.useOutputHistory ? std::max(context.temporalIndex, 1u) - 1u : context.temporalIndex;
+    const std::uint32_t index = context.temporal.useOutputHistory
+                                    ? std::max(context.temporal.temporalIndex, 1u) - 1u
+                                    : context.temporal.temporalIndex;
     const std::uint32_t round = index / (k * k);
     const glm::uvec2 outputPixel = tilePhase(m, round);
     const std::uint32_t n = (round / (m * m)) % 64u + 1u;

@@ -4,6 +4,7 @@
 // so the GPU only ever sees small camera-relative numbers.
 #include "cloud_types.h"
 #include "clouds/clouds.h"
+#include "temporal_state.h"
 
 namespace clouds::detail {
 
@@ -12,15 +13,8 @@ struct UniformContext {
   bool hasDepth = false;
   VkExtent2D traceExtent{0, 0};
   VkExtent2D fullExtent{0, 0};
-  // Temporal reconstruction (defaults: a single self-contained frame, every pixel marched).
-  std::uint32_t temporalIndex = 0;
-  std::uint32_t tileSize = 1;
-  glm::uvec2 phase{0, 0};
-  bool useOutputHistory = false;  // temporal upsampling reads last frame's output history
-  glm::dvec3 cameraDelta{0.0};    // camera position now minus the history's (m)
-  double deltaSeconds = 0.0;      // time since the history's frame (s), for the wind's drift
-  glm::mat4 previousView{1.0f};   // the view and projection the history was made with
-  glm::mat4 previousProjection{1.0f};
+  // The frame's temporal plan (defaults: a single self-contained frame, every pixel marched).
+  TemporalFrame temporal;
 };
 
 shader::CloudUniforms buildUniforms(const FrameInputs& inputs, const Settings& settings,

@@ -112,25 +112,25 @@ TEST(TemporalState, UpsamplingRaysVisitEveryOutputPixelOfTheirTracePixelFirst) {
   clouds::detail::UniformContext context;
   context.traceExtent = {80, 45};
   context.fullExtent = {160, 90};
-  context.tileSize = 4;
-  context.useOutputHistory = true;
+  context.temporal.tileSize = 4;
+  context.temporal.useOutputHistory = true;
   std::set<std::pair<int, int>> hit;
   for (std::uint32_t round = 0; round < 4; ++round) {
-    context.temporalIndex = round * 16 + 5;
+    context.temporal.temporalIndex = round * 16 + 5;
     const glm::vec2 offset =
         glm::vec2(clouds::detail::buildUniforms(in, s, context).subpixelOffset);
     ASSERT_LT(glm::max(std::abs(offset.x), std::abs(offset.y)), 0.5f) << "inside the pixel";
     const glm::ivec2 outputPixel(glm::floor((offset + 0.5f) * 2.0f));
     hit.insert({outputPixel.x, outputPixel.y});
     for (std::uint32_t frame : {1u, 11u, 16u}) {  // the frame after a reset is index 0
-      context.temporalIndex = round * 16 + frame;
+      context.temporal.temporalIndex = round * 16 + frame;
       EXPECT_EQ(glm::vec2(clouds::detail::buildUniforms(in, s, context).subpixelOffset), offset)
           << "one offset per round, frame " << frame;
     }
   }
   EXPECT_EQ(hit.size(), 4u);
   // A frame rebuilt without output history marches through pixel centres.
-  context.useOutputHistory = false;
+  context.temporal.useOutputHistory = false;
   EXPECT_EQ(glm::vec2(clouds::detail::buildUniforms(in, s, context).subpixelOffset),
             glm::vec2(0.0f));
 }
