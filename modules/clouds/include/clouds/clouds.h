@@ -50,7 +50,7 @@ enum class ErrorCode : std::uint32_t {
   InvalidCreateInfo,  // a CreateInfo field is missing or out of range
   MissingFunction,    // the proc-addr functions lack an entry point the module needs
   UnsupportedDevice,  // the device lacks a format feature the module needs
-  OutOfMemory,        // a Vulkan allocation failed (host or device memory)
+  OutOfMemory,        // a Vulkan allocation failed (host, device or descriptor-pool memory)
   VulkanFailure,      // another Vulkan call failed (the message names it and its VkResult)
   InvalidSettings,    // a Settings field is out of range (validateSettings())
   InvalidInputs,      // a FrameInputs field, or a composite() argument, is invalid
