@@ -7,8 +7,8 @@
 # "<NAMESPACE>/<file>.spv.h". A compile error fails the build as `ERROR: <file>:<line>: ...`;
 # included headers are tracked through glslangValidator's depfile; no .spv is committed.
 #
-# The clouds module has its own copy of this (modules/clouds/cmake/GlslEmbed.cmake) because it
-# must build without the engine, and the engine must not reach into a module.
+# The effect modules have their own (modules/vkfx/cmake/VkfxShaders.cmake) because they must
+# build without the engine, and the engine must not reach into a module.
 find_program(GLSLANG_VALIDATOR glslangValidator REQUIRED)
 
 function(cloudscape_add_shaders target)

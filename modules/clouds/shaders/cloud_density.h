@@ -9,7 +9,7 @@
 #include "cloud_math.h"
 #include "cloud_types.h"
 
-CLOUDS_SHADER_BEGIN
+VKFX_SHADER_BEGIN(clouds::shader)
 
 struct WeatherSample {
   float coverage;  // [0, 1]: fraction of the sky this column can fill
@@ -18,7 +18,7 @@ struct WeatherSample {
 };
 
 // Height-gradient ramps (up start, up end, down start, down end) as fractions of the layer.
-CLOUDS_INLINE vec4 typeProfile(float type) {
+VKFX_INLINE vec4 typeProfile(float type) {
   const vec4 stratus = vec4(0.0f, 0.06f, 0.16f, 0.28f);
   const vec4 stratocumulus = vec4(0.02f, 0.16f, 0.42f, 0.62f);
   const vec4 cumulus = vec4(0.0f, 0.12f, 0.72f, 1.0f);
@@ -28,7 +28,7 @@ CLOUDS_INLINE vec4 typeProfile(float type) {
 }
 
 // Probability of cloud at `heightFraction` (0 = layer bottom, 1 = top) for a cloud type.
-CLOUDS_INLINE float heightGradient(float heightFraction, float type) {
+VKFX_INLINE float heightGradient(float heightFraction, float type) {
   const vec4 r = typeProfile(type);
   return remapClamped(heightFraction, r.x, r.y, 0.0f, 1.0f) *
          remapClamped(heightFraction, r.z, r.w, 1.0f, 0.0f);
@@ -37,13 +37,13 @@ CLOUDS_INLINE float heightGradient(float heightFraction, float type) {
 // The coverage of a weather texel under the global coverage c: texel + 2 c - 1, so c = 0 is a
 // clear sky, c = 1 overcast and 0.5 the map as painted. (The host side uses it too, to know a
 // sky that cannot hold cloud.)
-CLOUDS_INLINE float layerCoverage(float weatherCoverage, float coverage) {
+VKFX_INLINE float layerCoverage(float weatherCoverage, float coverage) {
   return saturate(weatherCoverage + 2.0f * coverage - 1.0f);
 }
 
 // Decodes an RGBA8 weather texel under the global settings: coverage by layerCoverage(), type
 // = settings type moved by the map's variation, density = mix(1, texel density, variation).
-CLOUDS_INLINE WeatherSample decodeWeather(vec4 texel, IN(CloudUniforms) u) {
+VKFX_INLINE WeatherSample decodeWeather(vec4 texel, IN(CloudUniforms) u) {
   WeatherSample w;
   w.coverage = layerCoverage(texel.x, u.coverage);
   w.type = saturate(u.cloudType + (texel.y - 0.5f) * u.typeVariation);
@@ -52,8 +52,8 @@ CLOUDS_INLINE WeatherSample decodeWeather(vec4 texel, IN(CloudUniforms) u) {
 }
 
 // Density from the low-frequency shape noise alone (the "cheap" sample), in [0, 1].
-CLOUDS_INLINE float baseDensity(vec4 shapeNoise, float heightFraction, IN(WeatherSample) w,
-                                float anvilBias) {
+VKFX_INLINE float baseDensity(vec4 shapeNoise, float heightFraction, IN(WeatherSample) w,
+                              float anvilBias) {
   if (heightFraction < 0.0f || heightFraction > 1.0f) return 0.0f;
   const float lowFrequencyFbm =
       dot(vec3(shapeNoise.y, shapeNoise.z, shapeNoise.w), vec3(0.625f, 0.25f, 0.125f));
@@ -69,14 +69,13 @@ CLOUDS_INLINE float baseDensity(vec4 shapeNoise, float heightFraction, IN(Weathe
 }
 
 // Erodes a base density by the high-frequency detail noise (wispy low, billowy high).
-CLOUDS_INLINE float erodeDensity(float base, vec4 detailNoise, float heightFraction,
-                                 float erosion) {
+VKFX_INLINE float erodeDensity(float base, vec4 detailNoise, float heightFraction, float erosion) {
   const float fbm =
       dot(vec3(detailNoise.x, detailNoise.y, detailNoise.z), vec3(0.625f, 0.25f, 0.125f));
   const float modifier = mix(fbm, 1.0f - fbm, saturate(heightFraction * 10.0f));
   return saturate(remap(base, modifier * erosion, 1.0f, 0.0f, 1.0f));
 }
 
-CLOUDS_SHADER_END
+VKFX_SHADER_END
 
 #endif

@@ -12,11 +12,11 @@
 #include "cloud_math.h"
 #include "cloud_types.h"
 
-CLOUDS_SHADER_BEGIN
+VKFX_SHADER_BEGIN(clouds::shader)
 
 // Sun light reaching a sample and scattered towards the viewer (1/sr), per unit illuminance.
-CLOUDS_INLINE float directScattering(float lightOpticalDepth, float cosTheta, IN(CloudUniforms) u,
-                                     uint multipleScattering) {
+VKFX_INLINE float directScattering(float lightOpticalDepth, float cosTheta, IN(CloudUniforms) u,
+                                   uint multipleScattering) {
   const float forwardG = u.phaseForwardG;
   const float backwardG = u.phaseBackwardG;
   const float blend = u.phaseBackwardWeight;
@@ -44,7 +44,7 @@ CLOUDS_INLINE float directScattering(float lightOpticalDepth, float cosTheta, IN
 // Nubis 2017 in-scatter probability: few scattering contributors at cloud edges (thin coarse
 // cloud around the sample) and at cloud bases. `localOpticalDepth` is the coarse extinction
 // times a short distance (CloudUniforms.inScatterDepthMetres): ~0 at edges, >= 1 inside. In [0, 1].
-CLOUDS_INLINE float inScatterProbability(float localOpticalDepth, float heightFraction) {
+VKFX_INLINE float inScatterProbability(float localOpticalDepth, float heightFraction) {
   const float depthProbability = 0.05f + pow(saturate(localOpticalDepth),
                                              remapClamped(heightFraction, 0.3f, 0.85f, 0.5f, 2.0f));
   const float verticalProbability =
@@ -55,9 +55,9 @@ CLOUDS_INLINE float inScatterProbability(float localOpticalDepth, float heightFr
 // Radiance scattered towards the viewer at a sample, per unit scattering coefficient (before
 // the albedo). `coarseDensity` is the low-frequency density in [0, 1], `coarseExtinction` its
 // extinction (1/m).
-CLOUDS_INLINE vec3 sampleRadiance(float lightOpticalDepth, float cosTheta, float coarseDensity,
-                                  float coarseExtinction, float heightFraction, IN(CloudUniforms) u,
-                                  uint multipleScattering) {
+VKFX_INLINE vec3 sampleRadiance(float lightOpticalDepth, float cosTheta, float coarseDensity,
+                                float coarseExtinction, float heightFraction, IN(CloudUniforms) u,
+                                uint multipleScattering) {
   const float direct = directScattering(lightOpticalDepth, cosTheta, u, multipleScattering);
   const float localOpticalDepth = coarseExtinction * u.inScatterDepthMetres;
   const float inScatter = mix(1.0f, inScatterProbability(localOpticalDepth, heightFraction),
@@ -71,6 +71,6 @@ CLOUDS_INLINE vec3 sampleRadiance(float lightOpticalDepth, float cosTheta, float
   return sun + ambient;
 }
 
-CLOUDS_SHADER_END
+VKFX_SHADER_END
 
 #endif

@@ -28,7 +28,7 @@
 #define CLOUDS_WHEN(condition) \
   for (int whenOnce_ = 0; whenOnce_ < ((condition) ? 1 : 0); ++whenOnce_)
 
-CLOUDS_SHADER_BEGIN
+VKFX_SHADER_BEGIN(clouds::shader)
 
 const float kInfiniteDistance = 1e30f;
 const int kMaxSkips = 96;  // empty weather cells a view ray may jump over
@@ -55,7 +55,7 @@ struct MarchResult {
 // Altitude after travelling `t` along a ray from `altitude` whose cosine with the local up is
 // `cosZenith`. Written as altitude + delta / (sqrt(r0^2 + delta) + r0) to avoid subtracting
 // two planet radii in float.
-CLOUDS_INLINE float altitudeAlongRay(float t, float cosZenith, float altitude, float radius) {
+VKFX_INLINE float altitudeAlongRay(float t, float cosZenith, float altitude, float radius) {
   const float r0 = radius + altitude;
   const float delta = t * (t + 2.0f * r0 * cosZenith);
   return altitude + delta / (sqrt(max(r0 * r0 + delta, 0.0f)) + r0);
@@ -63,7 +63,7 @@ CLOUDS_INLINE float altitudeAlongRay(float t, float cosZenith, float altitude, f
 
 // The [start, end) distances of a view ray inside the cloud shell; end <= start when the ray
 // misses it or hits the ground first.
-CLOUDS_INLINE vec2 layerSegment(float altitude, float cosZenith, IN(CloudUniforms) u) {
+VKFX_INLINE vec2 layerSegment(float altitude, float cosZenith, IN(CloudUniforms) u) {
   const float radius = u.planetRadiusMetres;
   const float bottom = u.layerBottomMetres;
   const float top = u.layerTopMetres;
@@ -89,7 +89,7 @@ CLOUDS_INLINE vec2 layerSegment(float altitude, float cosZenith, IN(CloudUniform
   return vec2(start, end);
 }
 
-CLOUDS_INLINE float viewStepLength(float t, IN(CloudUniforms) u) {
+VKFX_INLINE float viewStepLength(float t, IN(CloudUniforms) u) {
   return u.viewStepMetres + u.viewStepGrowth * t;
 }
 
@@ -102,15 +102,15 @@ struct FieldSample {
   float baseSigmaT;  // extinction of the low-frequency density alone (1/m)
 };
 
-CLOUDS_INLINE vec3 noisePosition(vec3 flatOffset, float altitude, float heightFraction,
-                                 IN(CloudUniforms) u) {
+VKFX_INLINE vec3 noisePosition(vec3 flatOffset, float altitude, float heightFraction,
+                               IN(CloudUniforms) u) {
   // Skew the shape downwind with height (Nubis: clouds lean with the wind as they rise).
   const vec2 skew = u.windDirection * (u.skewMetres * saturate(heightFraction));
   return vec3(flatOffset.x + skew.x, altitude, flatOffset.z + skew.y);
 }
 
-CLOUDS_INLINE FieldSample sampleField(vec3 flatOffset, float altitude, float distance,
-                                      uint wantDetail, IN(CloudUniforms) u) {
+VKFX_INLINE FieldSample sampleField(vec3 flatOffset, float altitude, float distance,
+                                    uint wantDetail, IN(CloudUniforms) u) {
   FieldSample s;
   const float bottom = u.layerBottomMetres;
   const float top = u.layerTopMetres;
@@ -152,7 +152,7 @@ CLOUDS_INLINE FieldSample sampleField(vec3 flatOffset, float altitude, float dis
 
 // Distance along the flat (x, z) direction `d` from `p` to the boundary of its `cell`-metre
 // grid cell, a little beyond so the next query lands in the next cell; 1e30 when d is vertical.
-CLOUDS_INLINE float cellExitDistance(vec2 p, vec2 d, float cell) {
+VKFX_INLINE float cellExitDistance(vec2 p, vec2 d, float cell) {
   const vec2 base = floor(p / cell) * cell;
   float exitX = kInfiniteDistance;
   float exitZ = kInfiniteDistance;
@@ -165,8 +165,8 @@ CLOUDS_INLINE float cellExitDistance(vec2 p, vec2 d, float cell) {
 
 // True when a weather cell's maxima (R coverage, G type) leave no cloud at `altitude`: zero
 // coverage, or (for a ray whose altitude only grows) above the tallest cloud type's top.
-CLOUDS_INLINE bool weatherCellEmpty(vec4 maxima, float altitude, bool ascending,
-                                    IN(CloudUniforms) u) {
+VKFX_INLINE bool weatherCellEmpty(vec4 maxima, float altitude, bool ascending,
+                                  IN(CloudUniforms) u) {
   const float coverage = layerCoverage(maxima.x, u.coverage);
   const float type = saturate(u.cloudType + (maxima.y - 0.5f) * u.typeVariation);
   const float top =
@@ -176,8 +176,7 @@ CLOUDS_INLINE bool weatherCellEmpty(vec4 maxima, float altitude, bool ascending,
 
 // Empty-space skipping: the distance to jump to from `t` (t itself when the sample's cell may
 // hold cloud), from the coarse then the fine grid of weather maxima.
-CLOUDS_INLINE float emptySpaceSkip(float t, vec3 rayDirection, float altitude,
-                                   IN(CloudUniforms) u) {
+VKFX_INLINE float emptySpaceSkip(float t, vec3 rayDirection, float altitude, IN(CloudUniforms) u) {
   const vec2 d = vec2(rayDirection.x, rayDirection.z);
   const vec2 p = u.weatherOffsetMetres + d * t;
   const bool ascending = rayDirection.y >= 0.0f;
@@ -195,15 +194,15 @@ CLOUDS_INLINE float emptySpaceSkip(float t, vec3 rayDirection, float altitude,
 }
 
 // A fixed unit vector per light sample: the cone kernel (deterministic, no arrays).
-CLOUDS_INLINE vec3 coneKernel(uint index) {
+VKFX_INLINE vec3 coneKernel(uint index) {
   const vec3 h = hashCell(ivec3(int(index), 17, 29), 977u) * 2.0f - 1.0f;
   return h / max(length(h), 1e-3f);
 }
 
 // Optical depth towards the sun from a cloudy sample; `steps` samples at distances growing
 // quadratically over the cone length, each spread sideways by the cone kernel.
-CLOUDS_INLINE float lightOpticalDepth(vec3 flatOffset, float altitude, float distance, uint steps,
-                                      IN(CloudUniforms) u, INOUT(float) samples) {
+VKFX_INLINE float lightOpticalDepth(vec3 flatOffset, float altitude, float distance, uint steps,
+                                    IN(CloudUniforms) u, INOUT(float) samples) {
   const vec3 sun = u.sunDirection;
   const float coneLength = u.lightConeMetres;
   const float spread = u.lightConeSpread;
@@ -225,7 +224,7 @@ CLOUDS_INLINE float lightOpticalDepth(vec3 flatOffset, float altitude, float dis
 }
 
 // View-space unit direction of the ray through a pixel centre (pixel units, y down).
-CLOUDS_INLINE vec3 viewRayDirection(vec2 pixelCentre, vec2 extent, IN(CloudUniforms) u) {
+VKFX_INLINE vec3 viewRayDirection(vec2 pixelCentre, vec2 extent, IN(CloudUniforms) u) {
   const vec2 ndc = pixelCentre / extent * 2.0f - 1.0f;
   // A point on the near plane: depth 1 with reversed-Z, 0 otherwise; finite either way.
   const float nearDepth = (u.flags & kFlagReversedZ) != 0u ? 1.0f : 0.0f;
@@ -235,14 +234,14 @@ CLOUDS_INLINE vec3 viewRayDirection(vec2 pixelCentre, vec2 extent, IN(CloudUnifo
 }
 
 // World-space unit direction of the view ray through a pixel centre (pixel units, y down).
-CLOUDS_INLINE vec3 pixelRayDirection(vec2 pixelCentre, vec2 extent, IN(CloudUniforms) u) {
+VKFX_INLINE vec3 pixelRayDirection(vec2 pixelCentre, vec2 extent, IN(CloudUniforms) u) {
   return vec3(u.viewToWorld * vec4(viewRayDirection(pixelCentre, extent, u), 0.0f));
 }
 
 // Distance along the pixel's ray to the host geometry for a depth-buffer value; the sky
 // (far plane, or depth 0 with reversed-Z) is kInfiniteDistance.
-CLOUDS_INLINE float sceneDistanceFromDepth(float depth, vec2 pixelCentre, vec2 extent,
-                                           IN(CloudUniforms) u) {
+VKFX_INLINE float sceneDistanceFromDepth(float depth, vec2 pixelCentre, vec2 extent,
+                                         IN(CloudUniforms) u) {
   const bool reversed = (u.flags & kFlagReversedZ) != 0u;
   if ((u.flags & kFlagHasDepth) == 0u) return kInfiniteDistance;
   if (reversed ? depth <= 0.0f : depth >= 1.0f) return kInfiniteDistance;
@@ -254,15 +253,15 @@ CLOUDS_INLINE float sceneDistanceFromDepth(float depth, vec2 pixelCentre, vec2 e
 
 // Ray-start jitter in [0, 1): a 4x4 Bayer pattern per pixel, moved by a Halton sequence over
 // the temporal index (frames since the history was reset) so accumulation sees new offsets.
-CLOUDS_INLINE float rayJitter(uvec2 pixel, uint temporalIndex, uint mode) {
+VKFX_INLINE float rayJitter(uvec2 pixel, uint temporalIndex, uint mode) {
   if (mode == 0u) return 0.5f;
   return fract(bayer4x4(pixel) + halton(temporalIndex % 64u + 1u, 2u));
 }
 
 // Marches one view ray. `rayDirection` is a unit world-space vector (y up), `sceneDistance`
 // the distance to the host's geometry along it (kInfiniteDistance for sky), `jitter` in [0, 1).
-CLOUDS_INLINE MarchResult marchClouds(vec3 rayDirection, float sceneDistance, float jitter,
-                                      IN(CloudUniforms) u, IN(MarchOptions) o) {
+VKFX_INLINE MarchResult marchClouds(vec3 rayDirection, float sceneDistance, float jitter,
+                                    IN(CloudUniforms) u, IN(MarchOptions) o) {
   MarchResult r;
   r.radiance = vec3(0.0f);
   r.transmittance = 1.0f;
@@ -348,6 +347,6 @@ CLOUDS_INLINE MarchResult marchClouds(vec3 rayDirection, float sceneDistance, fl
   return r;
 }
 
-CLOUDS_SHADER_END
+VKFX_SHADER_END
 
 #endif

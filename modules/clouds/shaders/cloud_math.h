@@ -5,34 +5,34 @@
 #ifndef CLOUDS_CLOUD_MATH_H
 #define CLOUDS_CLOUD_MATH_H
 
-#include "clouds_interop.h"
+#include "vkfx/shader_interop.h"
 
-CLOUDS_SHADER_BEGIN
+VKFX_SHADER_BEGIN(clouds::shader)
 
 const float kPi = 3.14159265358979f;
 // g beyond this makes HG a delta peak whose float evaluation overflows (g = 1 gives 0/0).
 const float kMaxPhaseG = 0.99f;
 
-CLOUDS_INLINE float saturate(float x) {
+VKFX_INLINE float saturate(float x) {
   return clamp(x, 0.0f, 1.0f);
 }
 
 // Maps `value` from [oldMin, oldMax] to [newMin, newMax] (no clamping), as in Nubis. A
 // degenerate source range maps everything to newMin instead of dividing by zero.
-CLOUDS_INLINE float remap(float value, float oldMin, float oldMax, float newMin, float newMax) {
+VKFX_INLINE float remap(float value, float oldMin, float oldMax, float newMin, float newMax) {
   const float range = oldMax - oldMin;
   const float t = abs(range) > 1e-7f ? (value - oldMin) / range : 0.0f;
   return newMin + t * (newMax - newMin);
 }
 
-CLOUDS_INLINE float remapClamped(float value, float oldMin, float oldMax, float newMin,
-                                 float newMax) {
+VKFX_INLINE float remapClamped(float value, float oldMin, float oldMax, float newMin,
+                               float newMax) {
   return mix(newMin, newMax, saturate(remap(value, oldMin, oldMax, 0.0f, 1.0f)));
 }
 
 // Henyey-Greenstein phase function, normalised over the sphere (units 1/sr). g is clamped to
 // [-0.99, 0.99] so g = +-1 cannot produce 0/0, and the base is kept positive.
-CLOUDS_INLINE float henyeyGreenstein(float cosTheta, float g) {
+VKFX_INLINE float henyeyGreenstein(float cosTheta, float g) {
   const float gc = clamp(g, -kMaxPhaseG, kMaxPhaseG);
   const float c = clamp(cosTheta, -1.0f, 1.0f);
   const float g2 = gc * gc;
@@ -42,19 +42,19 @@ CLOUDS_INLINE float henyeyGreenstein(float cosTheta, float g) {
 
 // Two HG lobes blended so the result stays normalised: a strong forward lobe gives the silver
 // lining towards the sun, a weak backward lobe keeps clouds facing away from the sun lit.
-CLOUDS_INLINE float dualLobePhase(float cosTheta, float forwardG, float backwardG, float blend) {
+VKFX_INLINE float dualLobePhase(float cosTheta, float forwardG, float backwardG, float blend) {
   const float w = saturate(blend);
   return mix(henyeyGreenstein(cosTheta, forwardG), henyeyGreenstein(cosTheta, backwardG), w);
 }
 
 // Beer-Lambert transmittance for an optical depth (>= 0). exp(-x) of a huge x is 0, never NaN.
-CLOUDS_INLINE float beerLambert(float opticalDepth) {
+VKFX_INLINE float beerLambert(float opticalDepth) {
   return exp(-max(opticalDepth, 0.0f));
 }
 
 // (1 - exp(-sigma * d)) / sigma, the in-scattering weight of a homogeneous step of length d
 // (Hillaire 2016), written so sigma = 0 gives d instead of 0/0.
-CLOUDS_INLINE float stepScatteringWeight(float sigmaT, float stepLength) {
+VKFX_INLINE float stepScatteringWeight(float sigmaT, float stepLength) {
   const float x = max(sigmaT, 0.0f) * stepLength;
   if (x < 1e-4f) return stepLength * (1.0f - 0.5f * x);
   return (1.0f - exp(-x)) / max(sigmaT, 1e-30f);
@@ -65,7 +65,7 @@ CLOUDS_INLINE float stepScatteringWeight(float sigmaT, float stepLength) {
 // of the ray with the local up. The altitude-difference form keeps float precision at planet
 // scale (a textbook |o - c|^2 - r^2 loses metres near the horizon). Returns the near and far
 // roots in x and y; y < 0 when the sphere is not hit at all (x = y = -1).
-CLOUDS_INLINE vec2 raySphere(float altitude, float cosZenith, float sphereAltitude, float radius) {
+VKFX_INLINE vec2 raySphere(float altitude, float cosZenith, float sphereAltitude, float radius) {
   const float distanceToCentre = radius + altitude;
   const float b = distanceToCentre * cosZenith;  // dot(origin - centre, direction)
   // c = |origin - centre|^2 - r^2, from the altitude difference.
@@ -81,7 +81,7 @@ CLOUDS_INLINE vec2 raySphere(float altitude, float cosZenith, float sphereAltitu
 }
 
 // Halton radical inverse, base 2 or 3 (jitter sequences).
-CLOUDS_INLINE float halton(uint index, uint base) {
+VKFX_INLINE float halton(uint index, uint base) {
   float f = 1.0f;
   float result = 0.0f;
   uint i = index;
@@ -94,7 +94,7 @@ CLOUDS_INLINE float halton(uint index, uint base) {
 }
 
 // 4x4 Bayer threshold in [0, 1) for a pixel.
-CLOUDS_INLINE float bayer4x4(uvec2 pixel) {
+VKFX_INLINE float bayer4x4(uvec2 pixel) {
   const uint x = pixel.x & 3u;
   const uint y = pixel.y & 3u;
   // Interleave the bits of x ^ y and y: the classic recursive Bayer construction.
@@ -103,6 +103,6 @@ CLOUDS_INLINE float bayer4x4(uvec2 pixel) {
   return (float(index) + 0.5f) / 16.0f;
 }
 
-CLOUDS_SHADER_END
+VKFX_SHADER_END
 
 #endif

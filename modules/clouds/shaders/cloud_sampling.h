@@ -8,7 +8,7 @@
 
 #include "cloud_types.h"
 
-CLOUDS_SHADER_BEGIN
+VKFX_SHADER_BEGIN(clouds::shader)
 
 // Prototypes: texel coordinates are already wrapped into the texture.
 vec4 fetchShapeNoise(ivec3 texel);
@@ -18,7 +18,7 @@ vec4 fetchCurl(ivec2 texel);
 vec4 fetchWeatherMaxFine(ivec2 texel);    // kWeatherMaxFineSize^2
 vec4 fetchWeatherMaxCoarse(ivec2 texel);  // kWeatherMaxCoarseSize^2
 
-CLOUDS_INLINE vec4 sampleShapeNoise(vec3 uvw) {
+VKFX_INLINE vec4 sampleShapeNoise(vec3 uvw) {
   const int mask = kShapeNoiseSize - 1;
   const vec3 p = uvw * float(kShapeNoiseSize) - 0.5f;
   const vec3 pFloor = floor(p);
@@ -37,7 +37,7 @@ CLOUDS_INLINE vec4 sampleShapeNoise(vec3 uvw) {
              mix(mix(c001, c101, f.x), mix(c011, c111, f.x), f.y), f.z);
 }
 
-CLOUDS_INLINE vec4 sampleDetailNoise(vec3 uvw) {
+VKFX_INLINE vec4 sampleDetailNoise(vec3 uvw) {
   const int mask = kDetailNoiseSize - 1;
   const vec3 p = uvw * float(kDetailNoiseSize) - 0.5f;
   const vec3 pFloor = floor(p);
@@ -56,7 +56,7 @@ CLOUDS_INLINE vec4 sampleDetailNoise(vec3 uvw) {
              mix(mix(c001, c101, f.x), mix(c011, c111, f.x), f.y), f.z);
 }
 
-CLOUDS_INLINE vec4 sampleWeather(vec2 uv) {
+VKFX_INLINE vec4 sampleWeather(vec2 uv) {
   const int mask = kWeatherMapSize - 1;
   const vec2 p = uv * float(kWeatherMapSize) - 0.5f;
   const vec2 pFloor = floor(p);
@@ -67,7 +67,7 @@ CLOUDS_INLINE vec4 sampleWeather(vec2 uv) {
              mix(fetchWeather(ivec2(i0.x, i1.y)), fetchWeather(ivec2(i1.x, i1.y)), f.x), f.y);
 }
 
-CLOUDS_INLINE vec2 sampleCurl(vec2 uv) {
+VKFX_INLINE vec2 sampleCurl(vec2 uv) {
   const int mask = kCurlNoiseSize - 1;
   const vec2 p = uv * float(kCurlNoiseSize) - 0.5f;
   const vec2 pFloor = floor(p);
@@ -79,6 +79,6 @@ CLOUDS_INLINE vec2 sampleCurl(vec2 uv) {
   return vec2(c.x, c.y) * 2.0f - 1.0f;
 }
 
-CLOUDS_SHADER_END
+VKFX_SHADER_END
 
 #endif

@@ -8,16 +8,16 @@
 #include "cloud_math.h"
 #include "cloud_types.h"
 
-CLOUDS_SHADER_BEGIN
+VKFX_SHADER_BEGIN(clouds::shader)
 
-CLOUDS_INLINE bool isFreshPixel(uvec2 pixel, IN(CloudUniforms) u) {
+VKFX_INLINE bool isFreshPixel(uvec2 pixel, IN(CloudUniforms) u) {
   // k is a power of two: a mask, not a modulo (integer division is scalarised on a CPU).
   const uint mask = u.tileSize - 1u;
   return (pixel.x & mask) == u.tilePhase.x && (pixel.y & mask) == u.tilePhase.y;
 }
 
 // Bilinear weights and the four fresh pixels around `pixel` on this frame's k-grid.
-CLOUDS_INLINE void freshNeighbours(uvec2 pixel, IN(CloudUniforms) u, OUT(ivec2) p00, OUT(vec2) f) {
+VKFX_INLINE void freshNeighbours(uvec2 pixel, IN(CloudUniforms) u, OUT(ivec2) p00, OUT(vec2) f) {
   const float k = float(u.tileSize);
   const vec2 phase = vec2(float(u.tilePhase.x), float(u.tilePhase.y));
   const vec2 grid = (vec2(pixel) - phase) / k;
@@ -36,7 +36,7 @@ struct DepthBlend {
   float opacitySum;   // sum of weight x opacity
 };
 
-CLOUDS_INLINE DepthBlend depthBlendStart() {
+VKFX_INLINE DepthBlend depthBlendStart() {
   DepthBlend b;
   b.front = 0.0f;
   b.weightedSum = 0.0f;
@@ -44,51 +44,50 @@ CLOUDS_INLINE DepthBlend depthBlendStart() {
   return b;
 }
 
-CLOUDS_INLINE void depthBlendAdd(INOUT(DepthBlend) b, float weight, float transmittance,
-                                 vec2 depth) {
+VKFX_INLINE void depthBlendAdd(INOUT(DepthBlend) b, float weight, float transmittance, vec2 depth) {
   if (weight > 0.0f && depth.x > 0.0f) b.front = b.front > 0.0f ? min(b.front, depth.x) : depth.x;
   const float opacity = weight * saturate(1.0f - transmittance);
   b.weightedSum += opacity * depth.y;
   b.opacitySum += opacity;
 }
 
-CLOUDS_INLINE vec2 depthBlendResult(DepthBlend b) {
+VKFX_INLINE vec2 depthBlendResult(DepthBlend b) {
   return vec2(b.front, b.opacitySum > 1e-6f ? b.weightedSum / b.opacitySum : 0.0f);
 }
 
 // A marched or reconstructed pixel in one RGBA32UI texel, so the passes that read several
 // neighbours (reconstruction, upsample) take one image load per neighbour instead of two:
 // x = half2(r, g), y = half2(b, transmittance), z = front depth, w = weighted depth (float).
-CLOUDS_INLINE uvec4 packCloudSample(vec4 radiance, vec2 depth) {
+VKFX_INLINE uvec4 packCloudSample(vec4 radiance, vec2 depth) {
   return uvec4(packHalf2x16(vec2(radiance.x, radiance.y)),
                packHalf2x16(vec2(radiance.z, radiance.w)), floatBitsToUint(depth.x),
                floatBitsToUint(depth.y));
 }
 
-CLOUDS_INLINE vec4 unpackCloudRadiance(uvec4 texel) {
+VKFX_INLINE vec4 unpackCloudRadiance(uvec4 texel) {
   const vec2 rg = unpackHalf2x16(texel.x);
   const vec2 ba = unpackHalf2x16(texel.y);
   return vec4(rg.x, rg.y, ba.x, ba.y);
 }
 
-CLOUDS_INLINE vec2 unpackCloudDepth(uvec4 texel) {
+VKFX_INLINE vec2 unpackCloudDepth(uvec4 texel) {
   return vec2(uintBitsToFloat(texel.z), uintBitsToFloat(texel.w));
 }
 
 // The output-resolution history of temporal upsampling is packed the same way, except that
 // the four low mantissa bits of the weighted depth carry how many of the pixel's own samples
 // it holds (0 to 15; a relative change of the depth under 2^-19, 2 cm at 10 km).
-CLOUDS_INLINE uvec4 packOutputHistory(vec4 radiance, vec2 depth, uint ownSamples) {
+VKFX_INLINE uvec4 packOutputHistory(vec4 radiance, vec2 depth, uint ownSamples) {
   uvec4 texel = packCloudSample(radiance, depth);
   texel.w = (texel.w & ~15u) | min(ownSamples, 15u);
   return texel;
 }
 
-CLOUDS_INLINE uint ownSampleCount(uvec4 texel) {
+VKFX_INLINE uint ownSampleCount(uvec4 texel) {
   return texel.w & 15u;
 }
 
-CLOUDS_INLINE vec2 unpackOutputHistoryDepth(uvec4 texel) {
+VKFX_INLINE vec2 unpackOutputHistoryDepth(uvec4 texel) {
   return vec2(uintBitsToFloat(texel.z), uintBitsToFloat(texel.w & ~15u));
 }
 
@@ -102,7 +101,7 @@ struct PreviousRay {
 };
 
 // `viewDirection`: the pixel's unit ray direction in this frame's view space.
-CLOUDS_INLINE PreviousRay previousRay(vec3 viewDirection, IN(CloudUniforms) u) {
+VKFX_INLINE PreviousRay previousRay(vec3 viewDirection, IN(CloudUniforms) u) {
   PreviousRay r;
   r.along = u.previousClipFromView * vec4(viewDirection, 0.0f);
   r.origin = u.previousClipOrigin;
@@ -111,7 +110,7 @@ CLOUDS_INLINE PreviousRay previousRay(vec3 viewDirection, IN(CloudUniforms) u) {
 
 // Image position (pixels of an image of `extent`) of the point `distance` metres along the
 // ray last frame; far off-screen when it was behind last frame's camera.
-CLOUDS_INLINE vec2 previousPosition(PreviousRay ray, float distance, vec2 extent) {
+VKFX_INLINE vec2 previousPosition(PreviousRay ray, float distance, vec2 extent) {
   const vec4 clip = ray.along * distance + ray.origin;
   if (clip.w <= 0.0f) return vec2(-1e6f);
   return (vec2(clip) / clip.w * 0.5f + 0.5f) * extent;
@@ -130,8 +129,8 @@ struct Reprojection {
 
 // `viewDirection`: the pixel's unit ray direction in this frame's view space; `cloudDepth`:
 // front and weighted depth (m), 0 without cloud.
-CLOUDS_INLINE Reprojection reprojectPixel(vec3 viewDirection, vec2 cloudDepth, vec2 extent,
-                                          IN(CloudUniforms) u) {
+VKFX_INLINE Reprojection reprojectPixel(vec3 viewDirection, vec2 cloudDepth, vec2 extent,
+                                        IN(CloudUniforms) u) {
   const PreviousRay ray = previousRay(viewDirection, u);
   const float far = u.maxDistanceMetres;
   Reprojection r;
@@ -142,10 +141,10 @@ CLOUDS_INLINE Reprojection reprojectPixel(vec3 viewDirection, vec2 cloudDepth, v
   return r;
 }
 
-CLOUDS_INLINE bool finiteVec4(vec4 v) {
+VKFX_INLINE bool finiteVec4(vec4 v) {
   return !(any(isnan(v)) || any(isinf(v)));
 }
 
-CLOUDS_SHADER_END
+VKFX_SHADER_END
 
 #endif

@@ -10,9 +10,9 @@
 #ifndef CLOUDS_CLOUD_TYPES_H
 #define CLOUDS_CLOUD_TYPES_H
 
-#include "clouds_interop.h"
+#include "vkfx/shader_interop.h"
 
-CLOUDS_SHADER_BEGIN
+VKFX_SHADER_BEGIN(clouds::shader)
 
 // --- Texture sizes (powers of two: wrapping is a bit mask) ----------------------------------
 const int kShapeNoiseSize = 128;  // low-frequency 3D noise, RGBA8
@@ -243,7 +243,7 @@ struct CompositeConstants {
   uvec2 padding0;
 };
 
-CLOUDS_SHADER_END
+VKFX_SHADER_END
 
 #ifdef __cplusplus
 #include <cstddef>

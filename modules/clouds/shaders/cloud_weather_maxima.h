@@ -8,12 +8,12 @@
 
 #include "cloud_types.h"
 
-CLOUDS_SHADER_BEGIN
+VKFX_SHADER_BEGIN(clouds::shader)
 
 // Prototype: the source level's texel (already wrapped into [0, sourceSize)).
 vec4 fetchMaximaSource(ivec2 texel);
 
-CLOUDS_INLINE vec2 weatherCellMaxima(ivec2 cell, int sourceSize, int cellSize) {
+VKFX_INLINE vec2 weatherCellMaxima(ivec2 cell, int sourceSize, int cellSize) {
   vec2 maxima = vec2(0.0f);
   for (int y = -1; y <= cellSize; ++y) {
     for (int x = -1; x <= cellSize; ++x) {
@@ -25,6 +25,6 @@ CLOUDS_INLINE vec2 weatherCellMaxima(ivec2 cell, int sourceSize, int cellSize) {
   return maxima;
 }
 
-CLOUDS_SHADER_END
+VKFX_SHADER_END
 
 #endif

@@ -131,13 +131,25 @@ std::string checkInputs(const FrameInputs& in, const CreateInfo& info) {
   return {};
 }
 
-// Runs `work`, turning a ModuleError into the error out-parameter.
+ErrorCode codeOf(vkfx::Failure failure) {
+  switch (failure) {
+    case vkfx::Failure::OutOfMemory:
+      return ErrorCode::OutOfMemory;
+    case vkfx::Failure::Unsupported:
+      return ErrorCode::UnsupportedDevice;
+    case vkfx::Failure::VulkanFailure:
+      break;
+  }
+  return ErrorCode::VulkanFailure;
+}
+
+// Runs `work`, turning a vkfx::Error into the error out-parameter.
 template <typename Work>
 bool guarded(Error* error, Work&& work) {
   try {
     work();
-  } catch (const detail::ModuleError& e) {
-    return fail(error, e.code(), e.what());
+  } catch (const vkfx::Error& e) {
+    return fail(error, codeOf(e.failure()), std::string("clouds: ") + e.what());
   } catch (const std::bad_alloc&) {
     return fail(error, ErrorCode::OutOfMemory, "clouds: out of host memory");
   }
@@ -153,7 +165,8 @@ std::unique_ptr<Context> Context::create(const CreateInfo& info, Error* error) {
   }
   detail::VulkanFunctions functions;
   std::string missing;
-  if (!functions.load(info, &missing)) {
+  if (!functions.load(info.instance, info.device, info.getInstanceProcAddr, info.getDeviceProcAddr,
+                      info.debugUtils, &missing)) {
     fail(error, ErrorCode::MissingFunction, "clouds: cannot load Vulkan function " + missing);
     return nullptr;
   }

@@ -20,11 +20,10 @@ constexpr VkFormat kStorageFormats[] = {VK_FORMAT_R8G8B8A8_UNORM, VK_FORMAT_R16G
 const detail::DeviceContext& checkedDevice(const detail::DeviceContext& device) {
   for (VkFormat format : kStorageFormats) {
     if (!device.supportsStorage(format)) {
-      throw detail::ModuleError(ErrorCode::UnsupportedDevice,
-                                "clouds: the device cannot use format " +
-                                    std::to_string(static_cast<int>(format)) +
-                                    " as a storage image (is shaderStorageImageExtendedFormats "
-                                    "enabled?)");
+      throw vkfx::Error(vkfx::Failure::Unsupported,
+                        "the device cannot use format " + std::to_string(static_cast<int>(format)) +
+                            " as a storage image (is shaderStorageImageExtendedFormats "
+                            "enabled?)");
     }
   }
   return device;
@@ -66,7 +65,7 @@ constexpr std::uint32_t kWeatherRowsAhead =
 
 Context::Impl::Impl(const CreateInfo& info, const detail::VulkanFunctions& functions)
     : info_(info),
-      device_(info, functions),
+      device_(info.device, info.physicalDevice, info.debugUtils, functions, "clouds"),
       programs_(checkedDevice(device_), info.compositeColorFormat != VK_FORMAT_UNDEFINED),
       images_(device_),
       nearestSampler_(makeSampler(device_, VK_FILTER_NEAREST, VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE,
@@ -76,7 +75,8 @@ Context::Impl::Impl(const CreateInfo& info, const detail::VulkanFunctions& funct
       pool_(makePool(device_, info.maxFramesInFlight)),
       weatherSchedule_(static_cast<std::uint32_t>(shader::kWeatherMapSize), kWeatherRowsAhead) {
   if (info.passTimings) {
-    timer_ = std::make_unique<detail::PassTimer>(device_, info.maxFramesInFlight);
+    timer_ =
+        std::make_unique<detail::PassTimer>(device_, info.maxFramesInFlight, detail::kPassNames);
   }
   writeFixedSets();
   slots_.resize(info.maxFramesInFlight);
@@ -182,11 +182,11 @@ std::string Context::Impl::unprepared(const Settings& settings, VkExtent2D rende
 
 void Context::Impl::beginPass(VkCommandBuffer cmd, detail::Pass pass, const char* label) {
   device_.beginLabel(cmd, label);
-  if (timer_) timer_->begin(cmd, pass);
+  if (timer_) timer_->begin(cmd, detail::index(pass));
 }
 
 void Context::Impl::endPass(VkCommandBuffer cmd, detail::Pass pass) {
-  if (timer_) timer_->end(cmd, pass);
+  if (timer_) timer_->end(cmd, detail::index(pass));
   device_.endLabel(cmd);
 }
 
@@ -301,7 +301,12 @@ WorkCounters Context::Impl::workCounters(std::uint64_t frameIndex) const {
 
 std::vector<PassTiming> Context::Impl::passTimings(std::uint64_t frameIndex) const {
   if (!timer_) return {};
-  return timer_->read(static_cast<std::uint32_t>(frameIndex % slots_.size()));
+  std::vector<PassTiming> timings;
+  for (const vkfx::PassTime& t :
+       timer_->read(static_cast<std::uint32_t>(frameIndex % slots_.size()))) {
+    timings.push_back(PassTiming{t.name, t.milliseconds});
+  }
+  return timings;
 }
 
 }  // namespace clouds

@@ -20,10 +20,9 @@
 
 #include "cloud_types.h"
 #include "clouds/clouds.h"
-#include "compute_program.h"
-#include "device_context.h"
+#include "kit.h"
 #include "module_images.h"
-#include "pass_timer.h"
+#include "passes.h"
 #include "programs.h"
 #include "temporal_state.h"
 #include "uniforms.h"
@@ -33,10 +32,10 @@ namespace clouds {
 
 class Context::Impl {
  public:
-  // Throws ModuleError when something cannot be created; what was created is destroyed.
+  // Throws vkfx::Error when something cannot be created; what was created is destroyed.
   Impl(const CreateInfo& info, const detail::VulkanFunctions& functions);
 
-  // Throws ModuleError (OutOfMemory, VulkanFailure).
+  // Throws vkfx::Error (OutOfMemory, VulkanFailure).
   void prepare(const Settings& settings, VkExtent2D renderExtent);
   // Empty when dispatch() can run `settings` at `renderExtent`, else what prepare() must make.
   std::string unprepared(const Settings& settings, VkExtent2D renderExtent) const;

@@ -16,7 +16,7 @@
 #include <vector>
 
 #include "clouds/clouds.h"
-#include "owned_resources.h"
+#include "kit.h"
 
 namespace clouds::detail {
 

@@ -7,7 +7,7 @@
 #include <vector>
 
 #include "clouds/clouds.h"
-#include "compute_program.h"
+#include "kit.h"
 #include "programs.h"
 
 namespace clouds::detail {

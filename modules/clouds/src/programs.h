@@ -7,7 +7,7 @@
 #include <cstdint>
 #include <memory>
 
-#include "compute_program.h"
+#include "kit.h"
 
 namespace clouds::detail {
 

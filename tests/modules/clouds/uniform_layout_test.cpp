@@ -102,7 +102,8 @@ const std::map<std::string, std::size_t> kCppOffsets = {FIELD(inverseProjection)
 std::string reflect() {
   const std::string command = std::string(GLSLANG_VALIDATOR) +
                               " --target-env vulkan1.2 -q --reflect-all-block-variables -I" +
-                              CLOUDS_SHADER_DIR + " " + PROBE_SHADER + " 2>&1";
+                              CLOUDS_SHADER_DIR + " -I" + VKFX_INCLUDE_DIR + " " + PROBE_SHADER +
+                              " 2>&1";
   std::unique_ptr<FILE, int (*)(FILE*)> pipe(popen(command.c_str(), "r"), pclose);
   std::string out;
   std::array<char, 4096> buffer{};

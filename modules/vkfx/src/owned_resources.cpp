@@ -1,6 +1,6 @@
-#include "owned_resources.h"
+#include "vkfx/owned_resources.h"
 
-namespace clouds::detail {
+namespace vkfx {
 
 OwnedImage::OwnedImage(const DeviceContext& context, VkImageType type, VkFormat format,
                        VkExtent3D extent, VkImageUsageFlags usage, const std::string& name)
@@ -58,4 +58,4 @@ OwnedBuffer::OwnedBuffer(const DeviceContext& context, VkDeviceSize size, VkBuff
   }
 }
 
-}  // namespace clouds::detail
+}  // namespace vkfx

@@ -1,20 +1,19 @@
 #pragma once
-// The Vulkan entry points the module uses, loaded through the host's vkGet*ProcAddr so the
-// module never links the loader and works with any host setup.
+// The Vulkan entry points an effect module uses, loaded through the host's vkGet*ProcAddr so
+// the module never links the loader and works with any host setup (static linking, volk, a
+// shim that counts or fails calls in tests).
 #include <vulkan/vulkan.h>
 
 #include <string>
 
-#include "clouds/clouds.h"
+namespace vkfx {
 
-namespace clouds::detail {
-
-#define CLOUDS_INSTANCE_FUNCTIONS(X)     \
+#define VKFX_INSTANCE_FUNCTIONS(X)       \
   X(vkGetPhysicalDeviceMemoryProperties) \
   X(vkGetPhysicalDeviceProperties)       \
   X(vkGetPhysicalDeviceFormatProperties)
 
-#define CLOUDS_DEVICE_FUNCTIONS(X) \
+#define VKFX_DEVICE_FUNCTIONS(X)   \
   X(vkCreateImage)                 \
   X(vkDestroyImage)                \
   X(vkGetImageMemoryRequirements)  \
@@ -56,24 +55,25 @@ namespace clouds::detail {
   X(vkCmdWriteTimestamp2)          \
   X(vkGetQueryPoolResults)
 
-// Loaded only when CreateInfo::debugUtils says the host enabled VK_EXT_debug_utils: loaders
-// return these entry points whether or not the extension is enabled, and calling them when it
-// is not is a validation error. Null otherwise (names and labels are then skipped).
-#define CLOUDS_OPTIONAL_DEVICE_FUNCTIONS(X) \
-  X(vkSetDebugUtilsObjectNameEXT)           \
-  X(vkCmdBeginDebugUtilsLabelEXT)           \
+// Loaded only when the host says it enabled VK_EXT_debug_utils: loaders return these entry
+// points whether or not the extension is enabled, and calling them when it is not is a
+// validation error. Null otherwise (names and labels are then skipped).
+#define VKFX_OPTIONAL_DEVICE_FUNCTIONS(X) \
+  X(vkSetDebugUtilsObjectNameEXT)         \
+  X(vkCmdBeginDebugUtilsLabelEXT)         \
   X(vkCmdEndDebugUtilsLabelEXT)
 
 struct VulkanFunctions {
-#define CLOUDS_DECLARE(name) PFN_##name name = nullptr;
-  CLOUDS_INSTANCE_FUNCTIONS(CLOUDS_DECLARE)
-  CLOUDS_DEVICE_FUNCTIONS(CLOUDS_DECLARE)
-  CLOUDS_OPTIONAL_DEVICE_FUNCTIONS(CLOUDS_DECLARE)
-#undef CLOUDS_DECLARE
+#define VKFX_DECLARE(name) PFN_##name name = nullptr;
+  VKFX_INSTANCE_FUNCTIONS(VKFX_DECLARE)
+  VKFX_DEVICE_FUNCTIONS(VKFX_DECLARE)
+  VKFX_OPTIONAL_DEVICE_FUNCTIONS(VKFX_DECLARE)
+#undef VKFX_DECLARE
 
   // Returns false and fills `missing` with the first required function the host's proc-addr
-  // functions do not provide.
-  bool load(const CreateInfo& info, std::string* missing);
+  // functions do not provide. `debugUtils`: the host enabled VK_EXT_debug_utils.
+  bool load(VkInstance instance, VkDevice device, PFN_vkGetInstanceProcAddr getInstanceProcAddr,
+            PFN_vkGetDeviceProcAddr getDeviceProcAddr, bool debugUtils, std::string* missing);
 };
 
-}  // namespace clouds::detail
+}  // namespace vkfx

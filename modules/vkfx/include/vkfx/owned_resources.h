@@ -2,14 +2,14 @@
 // Images and buffers the module allocates: each an object, its memory and (for images) a view,
 // owned from the line each is created, so a failure halfway leaves nothing behind. Destroyed
 // immediately when dropped: the Context's destructor contract says the GPU is done with them,
-// and images replaced while frames may be in flight go through ModuleImages' retire list.
+// and images replaced while frames may be in flight go through the module's retire list.
 #include <vulkan/vulkan.h>
 
 #include <string>
 
-#include "device_context.h"
+#include "vkfx/device_context.h"
 
-namespace clouds::detail {
+namespace vkfx {
 
 class OwnedImage {
  public:
@@ -54,4 +54,4 @@ class OwnedBuffer {
   void* mapped_ = nullptr;
 };
 
-}  // namespace clouds::detail
+}  // namespace vkfx

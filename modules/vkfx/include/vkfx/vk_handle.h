@@ -7,9 +7,9 @@
 
 #include <utility>
 
-#include "vulkan_functions.h"
+#include "vkfx/vulkan_functions.h"
 
-namespace clouds::detail {
+namespace vkfx {
 
 // `Destroy` is the VulkanFunctions member that destroys a `Handle`: every vkDestroy* and
 // vkFreeMemory has the shape (VkDevice, Handle, const VkAllocationCallbacks*).
@@ -62,4 +62,4 @@ using UniqueDescriptorPool =
     UniqueHandle<VkDescriptorPool, &VulkanFunctions::vkDestroyDescriptorPool>;
 using UniqueQueryPool = UniqueHandle<VkQueryPool, &VulkanFunctions::vkDestroyQueryPool>;
 
-}  // namespace clouds::detail
+}  // namespace vkfx

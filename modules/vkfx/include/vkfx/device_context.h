@@ -1,33 +1,39 @@
 #pragma once
-// The module's view of the host device: the function table, memory types, debug names and
-// labels (only with CreateInfo::debugUtils), and the creation of every Vulkan object the module
-// owns. Each create* returns the object already wrapped in its owner (vk_handle.h), so nothing
-// the module creates is ever held by a raw handle, and a failure is a ModuleError carrying the
-// public error code.
+// An effect module's view of the host device: the function table, memory types, debug names
+// and labels (only when the host enabled VK_EXT_debug_utils), and the creation of every Vulkan
+// object the module owns. Each create* returns the object already wrapped in its owner
+// (vk_handle.h), so nothing the module creates is ever held by a raw handle, and a failure is
+// a vkfx::Error the module's API boundary turns into its own error code.
 #include <vulkan/vulkan.h>
 
 #include <stdexcept>
 #include <string>
 
-#include "clouds/clouds.h"
-#include "vk_handle.h"
-#include "vulkan_functions.h"
+#include "vkfx/vk_handle.h"
+#include "vkfx/vulkan_functions.h"
 
-namespace clouds::detail {
+namespace vkfx {
 
-// Thrown inside the module on failures and caught at the public API boundary, which reports it
-// through the Error out-parameter (the public API does not throw).
-class ModuleError : public std::runtime_error {
- public:
-  ModuleError(ErrorCode code, const std::string& message)
-      : std::runtime_error(message), code_(code) {}
-  ErrorCode code() const { return code_; }
-
- private:
-  ErrorCode code_;
+// What kind of failure an Error is; modules map it to their public error codes.
+enum class Failure : std::uint32_t {
+  OutOfMemory,    // host, device or descriptor-pool memory
+  VulkanFailure,  // any other Vulkan error
+  Unsupported,    // the device lacks something the module needs
 };
 
-// Throws a ModuleError naming `what` unless `result` is VK_SUCCESS (OutOfMemory for the
+// Thrown inside a module on failures and caught at its public API boundary, which reports it
+// through its error out-parameter (module APIs do not throw).
+class Error : public std::runtime_error {
+ public:
+  Error(Failure failure, const std::string& message)
+      : std::runtime_error(message), failure_(failure) {}
+  Failure failure() const { return failure_; }
+
+ private:
+  Failure failure_;
+};
+
+// Throws an Error naming `what` unless `result` is VK_SUCCESS (OutOfMemory for the
 // out-of-memory results of host, device or descriptor pool, VulkanFailure otherwise).
 void check(VkResult result, const char* what);
 
@@ -38,11 +44,14 @@ std::uint64_t bits(Handle handle) {
 
 class DeviceContext {
  public:
-  DeviceContext(const CreateInfo& info, const VulkanFunctions& functions);
+  // `prefix` starts every debug name and error message ("clouds", "atmosphere").
+  DeviceContext(VkDevice device, VkPhysicalDevice physical, bool debugUtils,
+                const VulkanFunctions& functions, std::string prefix);
 
   const VulkanFunctions& fn() const { return fn_; }
   VkDevice device() const { return device_; }
   VkPhysicalDevice physicalDevice() const { return physical_; }
+  const std::string& prefix() const { return prefix_; }
   std::uint32_t memoryType(std::uint32_t typeBits, VkMemoryPropertyFlags wanted) const;
   bool supportsStorage(VkFormat format) const;
 
@@ -79,6 +88,7 @@ class DeviceContext {
   VkDevice device_;
   VkPhysicalDevice physical_;
   bool debugUtils_;
+  std::string prefix_;
   VkPhysicalDeviceMemoryProperties memory_{};
 };
 
@@ -100,4 +110,4 @@ void memoryBarrier(const DeviceContext& context, VkCommandBuffer cmd,
                    VkPipelineStageFlags2 srcStages, VkAccessFlags2 srcAccess,
                    VkPipelineStageFlags2 dstStages, VkAccessFlags2 dstAccess);
 
-}  // namespace clouds::detail
+}  // namespace vkfx

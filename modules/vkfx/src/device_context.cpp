@@ -1,6 +1,6 @@
-#include "device_context.h"
+#include "vkfx/device_context.h"
 
-namespace clouds::detail {
+namespace vkfx {
 
 void check(VkResult result, const char* what) {
   if (result == VK_SUCCESS) return;
@@ -8,16 +8,18 @@ void check(VkResult result, const char* what) {
   const bool outOfMemory =
       result == VK_ERROR_OUT_OF_HOST_MEMORY || result == VK_ERROR_OUT_OF_DEVICE_MEMORY ||
       result == VK_ERROR_OUT_OF_POOL_MEMORY || result == VK_ERROR_FRAGMENTED_POOL;
-  throw ModuleError(outOfMemory ? ErrorCode::OutOfMemory : ErrorCode::VulkanFailure,
-                    std::string("clouds: ") + what + " failed (VkResult " +
-                        std::to_string(static_cast<int>(result)) + ")");
+  throw Error(
+      outOfMemory ? Failure::OutOfMemory : Failure::VulkanFailure,
+      std::string(what) + " failed (VkResult " + std::to_string(static_cast<int>(result)) + ")");
 }
 
-DeviceContext::DeviceContext(const CreateInfo& info, const VulkanFunctions& functions)
+DeviceContext::DeviceContext(VkDevice device, VkPhysicalDevice physical, bool debugUtils,
+                             const VulkanFunctions& functions, std::string prefix)
     : fn_(functions),
-      device_(info.device),
-      physical_(info.physicalDevice),
-      debugUtils_(info.debugUtils) {
+      device_(device),
+      physical_(physical),
+      debugUtils_(debugUtils),
+      prefix_(std::move(prefix)) {
   fn_.vkGetPhysicalDeviceMemoryProperties(physical_, &memory_);
 }
 
@@ -31,7 +33,7 @@ std::uint32_t DeviceContext::memoryType(std::uint32_t typeBits,
   for (std::uint32_t i = 0; i < memory_.memoryTypeCount; ++i) {
     if (typeBits & (1u << i)) return i;  // no preferred type: any that fits
   }
-  throw ModuleError(ErrorCode::UnsupportedDevice, "clouds: no memory type fits a module resource");
+  throw Error(Failure::Unsupported, prefix_ + ": no memory type fits a module resource");
 }
 
 bool DeviceContext::supportsStorage(VkFormat format) const {
@@ -42,7 +44,7 @@ bool DeviceContext::supportsStorage(VkFormat format) const {
 
 void DeviceContext::name(VkObjectType type, std::uint64_t handle, const std::string& name) const {
   if (!debugUtils_ || fn_.vkSetDebugUtilsObjectNameEXT == nullptr || handle == 0) return;
-  const std::string full = "clouds: " + name;
+  const std::string full = prefix_ + ": " + name;
   VkDebugUtilsObjectNameInfoEXT info{VK_STRUCTURE_TYPE_DEBUG_UTILS_OBJECT_NAME_INFO_EXT};
   info.objectType = type;
   info.objectHandle = handle;
@@ -187,4 +189,4 @@ void memoryBarrier(const DeviceContext& context, VkCommandBuffer cmd,
   context.fn().vkCmdPipelineBarrier2(cmd, &dependency);
 }
 
-}  // namespace clouds::detail
+}  // namespace vkfx

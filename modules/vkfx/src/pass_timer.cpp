@@ -1,36 +1,13 @@
-#include "pass_timer.h"
+#include "vkfx/pass_timer.h"
 
-namespace clouds::detail {
-namespace {
+namespace vkfx {
 
-const char* passName(Pass pass) {
-  switch (pass) {
-    case Pass::Noise:
-      return "noise";
-    case Pass::Weather:
-      return "weather";
-    case Pass::SkyAmbient:
-      return "sky ambient";
-    case Pass::ClearSky:
-      return "clear sky";
-    case Pass::SceneDistance:
-      return "scene distance";
-    case Pass::March:
-      return "march";
-    case Pass::Reconstruct:
-      return "reconstruct";
-    case Pass::Upsample:
-      return "upsample";
-    case Pass::Count:
-      break;
-  }
-  return "?";
-}
-
-}  // namespace
-
-PassTimer::PassTimer(const DeviceContext& device, std::uint32_t slots)
-    : device_(device), recorded_(slots) {
+PassTimer::PassTimer(const DeviceContext& device, std::uint32_t slots,
+                     std::span<const char* const> names)
+    : device_(device),
+      names_(names),
+      passes_(static_cast<std::uint32_t>(names.size())),
+      recorded_(slots) {
   VkPhysicalDeviceProperties properties{};
   device.fn().vkGetPhysicalDeviceProperties(device.physicalDevice(), &properties);
   if (properties.limits.timestampComputeAndGraphics == VK_FALSE ||
@@ -40,7 +17,7 @@ PassTimer::PassTimer(const DeviceContext& device, std::uint32_t slots)
   nanosecondsPerTick_ = properties.limits.timestampPeriod;
   VkQueryPoolCreateInfo info{VK_STRUCTURE_TYPE_QUERY_POOL_CREATE_INFO};
   info.queryType = VK_QUERY_TYPE_TIMESTAMP;
-  info.queryCount = slots * kPasses * 2;
+  info.queryCount = slots * passes_ * 2;
   pool_ = device.createQueryPool(info, "pass timestamps");
 }
 
@@ -48,15 +25,15 @@ void PassTimer::beginFrame(VkCommandBuffer cmd, std::uint32_t slot) {
   slot_ = slot;
   recorded_[slot].clear();
   if (!pool_) return;
-  device_.fn().vkCmdResetQueryPool(cmd, pool_.get(), query(slot, Pass::Noise, 0), kPasses * 2);
+  device_.fn().vkCmdResetQueryPool(cmd, pool_.get(), query(slot, 0, 0), passes_ * 2);
 }
 
-void PassTimer::begin(VkCommandBuffer cmd, Pass pass) {
+void PassTimer::begin(VkCommandBuffer cmd, std::uint32_t pass) {
   if (!pool_) return;
   stamp(cmd, query(slot_, pass, 0));
 }
 
-void PassTimer::end(VkCommandBuffer cmd, Pass pass) {
+void PassTimer::end(VkCommandBuffer cmd, std::uint32_t pass) {
   if (!pool_) return;
   stamp(cmd, query(slot_, pass, 1));
   recorded_[slot_].push_back(pass);
@@ -82,19 +59,19 @@ void PassTimer::executionBarrier(VkCommandBuffer cmd) const {
   device_.fn().vkCmdPipelineBarrier2(cmd, &dependency);
 }
 
-std::vector<PassTiming> PassTimer::read(std::uint32_t slot) const {
-  std::vector<PassTiming> timings;
+std::vector<PassTime> PassTimer::read(std::uint32_t slot) const {
+  std::vector<PassTime> timings;
   if (!pool_) return timings;
-  for (Pass pass : recorded_[slot]) {
+  for (std::uint32_t pass : recorded_[slot]) {
     std::uint64_t ticks[2] = {0, 0};
     const VkResult result = device_.fn().vkGetQueryPoolResults(
         device_.device(), pool_.get(), query(slot, pass, 0), 2, sizeof(ticks), ticks,
         sizeof(std::uint64_t), VK_QUERY_RESULT_64_BIT);
     if (result != VK_SUCCESS) return {};  // not complete: the caller asked too early
     timings.push_back(
-        PassTiming{passName(pass), double(ticks[1] - ticks[0]) * nanosecondsPerTick_ * 1e-6});
+        PassTime{names_[pass], double(ticks[1] - ticks[0]) * nanosecondsPerTick_ * 1e-6});
   }
   return timings;
 }
 
-}  // namespace clouds::detail
+}  // namespace vkfx

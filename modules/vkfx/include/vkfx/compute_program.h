@@ -11,9 +11,9 @@
 #include <string>
 #include <vector>
 
-#include "device_context.h"
+#include "vkfx/device_context.h"
 
-namespace clouds::detail {
+namespace vkfx {
 
 // Specialization constant values (constant ids 0..count-1); fixed size so looking up a
 // variant every frame allocates nothing.
@@ -83,4 +83,4 @@ class SetWriter {
   std::size_t count_ = 0;
 };
 
-}  // namespace clouds::detail
+}  // namespace vkfx

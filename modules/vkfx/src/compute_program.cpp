@@ -1,8 +1,8 @@
-#include "compute_program.h"
+#include "vkfx/compute_program.h"
 
 #include <cstdlib>
 
-namespace clouds::detail {
+namespace vkfx {
 
 ComputeProgram::ComputeProgram(const DeviceContext& context, std::span<const std::uint32_t> spirv,
                                std::span<const Binding> bindings, std::uint32_t pushConstantBytes,
@@ -120,4 +120,4 @@ void SetWriter::commit() {
   count_ = 0;
 }
 
-}  // namespace clouds::detail
+}  // namespace vkfx
