@@ -21,6 +21,29 @@ VkBufferImageCopy wholeMip0(const Image& image) {
   return region;
 }
 
+std::vector<std::byte> readback(Device& device, VkImage source,
+                                const VkImageSubresourceRange& range,
+                                const VkBufferImageCopy& region, VkDeviceSize bytes,
+                                const ImageState& currentState) {
+  Buffer staging(device, BufferDesc{bytes, VK_BUFFER_USAGE_TRANSFER_DST_BIT, MemoryUsage::Readback,
+                                    "staging image readback"});
+  device.immediateSubmit([&](VkCommandBuffer cmd) {
+    imageBarrier(cmd, source, range, currentState, kTransferSrc);
+    vkCmdCopyImageToBuffer(cmd, source, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, staging.vk(), 1,
+                           &region);
+    // Back to the caller's layout; an undefined "current" state has no layout to return to.
+    ImageState back = currentState;
+    if (back.layout == VK_IMAGE_LAYOUT_UNDEFINED) back = kTransferSrc;
+    imageBarrier(cmd, source, range, kTransferSrc, back);
+    bufferBarrier(cmd, staging.vk(), VK_PIPELINE_STAGE_2_TRANSFER_BIT,
+                  VK_ACCESS_2_TRANSFER_WRITE_BIT, VK_PIPELINE_STAGE_2_HOST_BIT,
+                  VK_ACCESS_2_HOST_READ_BIT);
+  });
+  std::vector<std::byte> out(bytes);
+  std::memcpy(out.data(), staging.mapped(), bytes);
+  return out;
+}
+
 }  // namespace
 
 void uploadToBuffer(Device& device, const Buffer& destination, std::span<const std::byte> data,
@@ -59,25 +82,20 @@ void uploadToImage(Device& device, const Image& destination, std::span<const std
 
 std::vector<std::byte> readbackImage(Device& device, const Image& source,
                                      const ImageState& currentState) {
-  const VkDeviceSize bytes = imageBytes(source);
-  Buffer staging(device, BufferDesc{bytes, VK_BUFFER_USAGE_TRANSFER_DST_BIT, MemoryUsage::Readback,
-                                    "staging image readback"});
-  device.immediateSubmit([&](VkCommandBuffer cmd) {
-    imageBarrier(cmd, source.vk(), source.fullRange(), currentState, kTransferSrc);
-    const VkBufferImageCopy region = wholeMip0(source);
-    vkCmdCopyImageToBuffer(cmd, source.vk(), VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, staging.vk(), 1,
-                           &region);
-    // Back to the caller's layout; an undefined "current" state has no layout to return to.
-    ImageState back = currentState;
-    if (back.layout == VK_IMAGE_LAYOUT_UNDEFINED) back = kTransferSrc;
-    imageBarrier(cmd, source.vk(), source.fullRange(), kTransferSrc, back);
-    bufferBarrier(cmd, staging.vk(), VK_PIPELINE_STAGE_2_TRANSFER_BIT,
-                  VK_ACCESS_2_TRANSFER_WRITE_BIT, VK_PIPELINE_STAGE_2_HOST_BIT,
-                  VK_ACCESS_2_HOST_READ_BIT);
-  });
-  std::vector<std::byte> out(bytes);
-  std::memcpy(out.data(), staging.mapped(), bytes);
-  return out;
+  const VkBufferImageCopy region = wholeMip0(source);
+  return readback(device, source.vk(), source.fullRange(), region, imageBytes(source),
+                  currentState);
+}
+
+std::vector<std::byte> readbackImage(Device& device, VkImage source, VkFormat format,
+                                     VkExtent3D extent, const ImageState& currentState) {
+  VkBufferImageCopy region{};
+  region.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
+  region.imageExtent = extent;
+  const VkDeviceSize bytes =
+      VkDeviceSize{texelBytes(format)} * extent.width * extent.height * extent.depth;
+  return readback(device, source, {VK_IMAGE_ASPECT_COLOR_BIT, 0, 1, 0, 1}, region, bytes,
+                  currentState);
 }
 
 std::vector<std::byte> readbackBuffer(Device& device, const Buffer& source) {

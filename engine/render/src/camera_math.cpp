@@ -34,4 +34,31 @@ glm::mat4 lookTo(const glm::vec3& position, const glm::vec3& forward, const glm:
   return view;
 }
 
+glm::vec3 directionFromAngles(double azimuthDegrees, double elevationDegrees) {
+  const double a = glm::radians(azimuthDegrees);
+  const double e = glm::radians(elevationDegrees);
+  return glm::vec3(glm::dvec3(-std::sin(a) * std::cos(e), std::sin(e), -std::cos(a) * std::cos(e)));
+}
+
+std::vector<float> flatGroundDepth(const glm::mat4& view, const glm::mat4& projection,
+                                   float nearMetres, double heightMetres, std::uint32_t width,
+                                   std::uint32_t height) {
+  const glm::mat4 inverseProjection = glm::inverse(projection);
+  const glm::mat3 viewToWorld = glm::transpose(glm::mat3(view));
+  const glm::vec3 forward = -glm::vec3(viewToWorld[2]);
+  std::vector<float> depth(std::size_t{width} * height, 0.0f);
+  for (std::uint32_t y = 0; y < height; ++y) {
+    for (std::uint32_t x = 0; x < width; ++x) {
+      const glm::vec2 ndc = (glm::vec2(x, y) + 0.5f) / glm::vec2(width, height) * 2.0f - 1.0f;
+      const glm::vec4 p = inverseProjection * glm::vec4(ndc, 1.0f, 1.0f);
+      const glm::vec3 direction = glm::normalize(viewToWorld * (glm::vec3(p) / p.w));
+      if (direction.y >= -1e-4f) continue;
+      const double distance = heightMetres / -double(direction.y);
+      depth[std::size_t{y} * width + x] =
+          static_cast<float>(nearMetres / (distance * double(glm::dot(direction, forward))));
+    }
+  }
+  return depth;
+}
+
 }  // namespace engine::render

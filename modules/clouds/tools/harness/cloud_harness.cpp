@@ -17,16 +17,16 @@ namespace clouds::tools {
 
 using namespace engine;
 
+namespace {
+constexpr float kNearMetres = 0.5f;
+}  // namespace
+
 glm::vec3 sunDirection(const CloudView& v) {
-  const double e = glm::radians(v.sunElevationDegrees);
-  const double a = glm::radians(v.sunAzimuthDegrees);
-  return glm::vec3(glm::dvec3(-std::sin(a) * std::cos(e), std::sin(e), -std::cos(a) * std::cos(e)));
+  return render::directionFromAngles(v.sunAzimuthDegrees, v.sunElevationDegrees);
 }
 
 glm::vec3 forwardDirection(const CloudView& v) {
-  const double y = glm::radians(v.yawDegrees);
-  const double p = glm::radians(v.pitchDegrees);
-  return glm::vec3(glm::dvec3(-std::sin(y) * std::cos(p), std::sin(p), -std::cos(y) * std::cos(p)));
+  return render::directionFromAngles(v.yawDegrees, v.pitchDegrees);
 }
 
 glm::mat4 viewMatrix(const CloudView& v) {
@@ -36,7 +36,7 @@ glm::mat4 viewMatrix(const CloudView& v) {
 
 glm::mat4 projectionMatrix(const CloudView& v, VkExtent2D extent) {
   return render::perspectiveReversedZ(glm::radians(v.verticalFovDegrees),
-                                      float(extent.width) / float(extent.height), 0.5f);
+                                      float(extent.width) / float(extent.height), kNearMetres);
 }
 
 clouds::Settings singleFrame(clouds::Settings settings) {
@@ -81,25 +81,10 @@ void CloudHarness::prepareDepth(const CloudView& view, VkExtent2D extent) {
                                        VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT,
                                        "harness depth"});
   }
-  // A flat ground at y = 0, ray-cast on the CPU: reversed-Z depth = near / view z.
-  const glm::mat4 inverseProjection = glm::inverse(projectionMatrix(view, extent));
-  const glm::mat3 viewToWorld = glm::transpose(glm::mat3(viewMatrix(view)));
-  const glm::vec3 forward = forwardDirection(view);
-  std::vector<float> depth(std::size_t{extent.width} * extent.height);
-  for (std::uint32_t y = 0; y < extent.height; ++y) {
-    for (std::uint32_t x = 0; x < extent.width; ++x) {
-      const glm::vec2 ndc =
-          (glm::vec2(x, y) + 0.5f) / glm::vec2(extent.width, extent.height) * 2.0f - 1.0f;
-      const glm::vec4 p = inverseProjection * glm::vec4(ndc, 1.0f, 1.0f);
-      const glm::vec3 dir = glm::normalize(viewToWorld * (glm::vec3(p) / p.w));
-      float value = 0.0f;
-      if (dir.y < -1e-4f) {
-        const double t = view.position.y / -double(dir.y);
-        value = static_cast<float>(0.5 / (t * double(glm::dot(dir, forward))));
-      }
-      depth[std::size_t{y} * extent.width + x] = value;
-    }
-  }
+  // A flat ground at y = 0, ray-cast on the CPU.
+  const std::vector<float> depth =
+      render::flatGroundDepth(viewMatrix(view), projectionMatrix(view, extent), kNearMetres,
+                              view.position.y, extent.width, extent.height);
   depthValues_ = depth;
   gfx::uploadToImage(
       device_, depth_,
@@ -235,31 +220,12 @@ CloudFrame CloudHarness::render(const CloudView& view, const clouds::Settings& s
 namespace {
 
 std::vector<std::uint8_t> readTexels(gfx::Device& device, VkImage image, VkExtent3D extent) {
-  const std::size_t bytes = std::size_t{4} * extent.width * extent.height * extent.depth;
-  gfx::Buffer buffer(device, gfx::BufferDesc{bytes, VK_BUFFER_USAGE_TRANSFER_DST_BIT,
-                                             gfx::MemoryUsage::Readback, "harness texels"});
-  device.immediateSubmit([&](VkCommandBuffer cmd) {
-    const VkImageSubresourceRange range{VK_IMAGE_ASPECT_COLOR_BIT, 0, 1, 0, 1};
-    const gfx::ImageState general{VK_IMAGE_LAYOUT_GENERAL, VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT,
-                                  VK_ACCESS_2_MEMORY_WRITE_BIT};
-    const gfx::ImageState source{VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
-                                 VK_PIPELINE_STAGE_2_TRANSFER_BIT, VK_ACCESS_2_TRANSFER_READ_BIT};
-    gfx::imageBarrier(cmd, image, range, general, source);
-    VkBufferImageCopy region{};
-    region.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
-    region.imageExtent = extent;
-    vkCmdCopyImageToBuffer(cmd, image, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, buffer.vk(), 1,
-                           &region);
-    gfx::imageBarrier(cmd, image, range, source,
-                      {VK_IMAGE_LAYOUT_GENERAL, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
-                       VK_ACCESS_2_SHADER_STORAGE_READ_BIT | VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT});
-    gfx::bufferBarrier(cmd, buffer.vk(), VK_PIPELINE_STAGE_2_TRANSFER_BIT,
-                       VK_ACCESS_2_TRANSFER_WRITE_BIT, VK_PIPELINE_STAGE_2_HOST_BIT,
-                       VK_ACCESS_2_HOST_READ_BIT);
-  });
-  std::vector<std::uint8_t> texels(bytes);
-  std::memcpy(texels.data(), buffer.mapped(), bytes);
-  return texels;
+  const gfx::ImageState general{VK_IMAGE_LAYOUT_GENERAL, VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT,
+                                VK_ACCESS_2_MEMORY_READ_BIT | VK_ACCESS_2_MEMORY_WRITE_BIT};
+  const std::vector<std::byte> bytes =
+      gfx::readbackImage(device, image, VK_FORMAT_R8G8B8A8_UNORM, extent, general);
+  const auto* first = reinterpret_cast<const std::uint8_t*>(bytes.data());
+  return std::vector<std::uint8_t>(first, first + bytes.size());
 }
 
 }  // namespace

@@ -25,6 +25,9 @@ void uploadToImage(Device& device, const Image& destination, std::span<const std
 // packed, and returns the image to `currentState`.
 std::vector<std::byte> readbackImage(Device& device, const Image& source,
                                      const ImageState& currentState);
+// The same for an image another component owns (a module's output): colour aspect, one layer.
+std::vector<std::byte> readbackImage(Device& device, VkImage source, VkFormat format,
+                                     VkExtent3D extent, const ImageState& currentState);
 
 std::vector<std::byte> readbackBuffer(Device& device, const Buffer& source);
 

@@ -1,8 +1,8 @@
 #pragma once
-// A vkGetDeviceProcAddr to hand the clouds module instead of the loader's: every object the
-// module creates and every command it records goes through it. It counts them, keeps the set
-// of objects still alive, and can make the Nth creation fail with
-// VK_ERROR_OUT_OF_DEVICE_MEMORY (fault injection). One shim per process; not thread-safe.
+// A vkGetDeviceProcAddr to hand a module (clouds, atmosphere) instead of the loader's: every
+// object the module creates and every command it records goes through it. It counts them, keeps the
+// set of objects still alive, and can make the Nth creation fail with VK_ERROR_OUT_OF_DEVICE_MEMORY
+// (fault injection). One shim per process; not thread-safe.
 #include <vulkan/vulkan.h>
 
 #include <cstdint>
@@ -19,7 +19,7 @@ struct Counts {
   std::map<std::uint64_t, std::string> live;
 };
 
-// The proc-addr function to put in clouds::CreateInfo::getDeviceProcAddr.
+// The proc-addr function to put in a module's CreateInfo::getDeviceProcAddr.
 PFN_vkGetDeviceProcAddr getDeviceProcAddr();
 Counts& counts();
 // Zeroes the counts (the live set stays).

@@ -1,0 +1,242 @@
+// atmosphere::Context: the public API. It checks every argument, turns internal failures into
+// Error codes (the API never throws) and forwards to Context::Impl.
+#include <cmath>
+#include <new>
+
+#include "context_impl.h"
+
+namespace atmosphere {
+
+const char* errorCodeName(ErrorCode code) {
+  switch (code) {
+    case ErrorCode::None:
+      return "None";
+    case ErrorCode::InvalidCreateInfo:
+      return "InvalidCreateInfo";
+    case ErrorCode::MissingFunction:
+      return "MissingFunction";
+    case ErrorCode::UnsupportedDevice:
+      return "UnsupportedDevice";
+    case ErrorCode::OutOfMemory:
+      return "OutOfMemory";
+    case ErrorCode::VulkanFailure:
+      return "VulkanFailure";
+    case ErrorCode::InvalidParameters:
+      return "InvalidParameters";
+    case ErrorCode::InvalidSettings:
+      return "InvalidSettings";
+    case ErrorCode::InvalidInputs:
+      return "InvalidInputs";
+    case ErrorCode::NotPrepared:
+      return "NotPrepared";
+  }
+  return "?";
+}
+
+namespace {
+
+bool fail(Error* error, ErrorCode code, const std::string& message) {
+  if (error != nullptr) *error = Error{code, message};
+  return false;
+}
+
+bool succeed(Error* error) {
+  if (error != nullptr) *error = Error{};
+  return true;
+}
+
+bool finite(const glm::mat4& m) {
+  for (int c = 0; c < 4; ++c) {
+    for (int r = 0; r < 4; ++r) {
+      if (!std::isfinite(m[c][r])) return false;
+    }
+  }
+  return true;
+}
+
+bool finite(const glm::vec3& v) {
+  return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
+}
+
+std::string extentText(VkExtent2D e) {
+  return std::to_string(e.width) + "x" + std::to_string(e.height);
+}
+
+std::string checkExtent(const char* field, VkExtent2D extent, const CreateInfo& info) {
+  if (extent.width == 0 || extent.height == 0 || extent.width > info.maxRenderExtent.width ||
+      extent.height > info.maxRenderExtent.height) {
+    return std::string(field) + " = " + extentText(extent) +
+           ": must be non-zero and within CreateInfo.maxRenderExtent (" +
+           extentText(info.maxRenderExtent) + ")";
+  }
+  return {};
+}
+
+std::string checkCreateInfo(const CreateInfo& info) {
+  if (info.device == VK_NULL_HANDLE || info.physicalDevice == VK_NULL_HANDLE ||
+      info.instance == VK_NULL_HANDLE || info.getDeviceProcAddr == nullptr ||
+      info.getInstanceProcAddr == nullptr) {
+    return "CreateInfo: instance, physicalDevice, device and both proc-addr functions are "
+           "required";
+  }
+  if (info.maxFramesInFlight < 1 || info.maxFramesInFlight > 8) {
+    return "CreateInfo.maxFramesInFlight = " + std::to_string(info.maxFramesInFlight) +
+           ": must be in [1, 8]";
+  }
+  if (info.maxRenderExtent.width == 0 || info.maxRenderExtent.height == 0 ||
+      info.maxRenderExtent.width > 16384 || info.maxRenderExtent.height > 16384) {
+    return "CreateInfo.maxRenderExtent = " + extentText(info.maxRenderExtent) +
+           ": must be in [1, 16384] per side";
+  }
+  if (info.colorFormat != VK_FORMAT_R16G16B16A16_SFLOAT) {
+    return "CreateInfo.colorFormat = " + std::to_string(static_cast<int>(info.colorFormat)) +
+           ": only R16G16B16A16_SFLOAT is supported";
+  }
+  return {};
+}
+
+std::string checkInputs(const FrameInputs& in, const CreateInfo& info) {
+  if (in.commandBuffer == VK_NULL_HANDLE) return "FrameInputs.commandBuffer: must not be null";
+  if (std::string problem = checkExtent("FrameInputs.renderExtent", in.renderExtent, info);
+      !problem.empty()) {
+    return problem;
+  }
+  if (!finite(in.view)) return "FrameInputs.view: must be finite";
+  if (!finite(in.projection) || std::abs(glm::determinant(in.projection)) < 1e-30f) {
+    return "FrameInputs.projection: must be finite and invertible";
+  }
+  for (double c : {in.cameraPosition.x, in.cameraPosition.y, in.cameraPosition.z}) {
+    if (!std::isfinite(c)) return "FrameInputs.cameraPosition: must be finite";
+  }
+  if (!finite(in.sunDirection) || glm::length(in.sunDirection) < 1e-6f) {
+    return "FrameInputs.sunDirection: must be finite and not zero";
+  }
+  const glm::vec3& e = in.sunIlluminance;
+  if (!finite(e) || e.x < 0.0f || e.y < 0.0f || e.z < 0.0f) {
+    return "FrameInputs.sunIlluminance: must be finite and not negative";
+  }
+  return {};
+}
+
+ErrorCode codeOf(vkfx::Failure failure) {
+  switch (failure) {
+    case vkfx::Failure::OutOfMemory:
+      return ErrorCode::OutOfMemory;
+    case vkfx::Failure::Unsupported:
+      return ErrorCode::UnsupportedDevice;
+    case vkfx::Failure::VulkanFailure:
+      break;
+  }
+  return ErrorCode::VulkanFailure;
+}
+
+template <typename Work>
+bool guarded(Error* error, Work&& work) {
+  try {
+    work();
+  } catch (const vkfx::Error& e) {
+    return fail(error, codeOf(e.failure()), std::string("atmosphere: ") + e.what());
+  } catch (const std::bad_alloc&) {
+    return fail(error, ErrorCode::OutOfMemory, "atmosphere: out of host memory");
+  }
+  return succeed(error);
+}
+
+}  // namespace
+
+std::unique_ptr<Context> Context::create(const CreateInfo& info, Error* error) {
+  if (std::string problem = checkCreateInfo(info); !problem.empty()) {
+    fail(error, ErrorCode::InvalidCreateInfo, problem);
+    return nullptr;
+  }
+  detail::VulkanFunctions functions;
+  std::string missing;
+  if (!functions.load(info.instance, info.device, info.getInstanceProcAddr, info.getDeviceProcAddr,
+                      info.debugUtils, &missing)) {
+    fail(error, ErrorCode::MissingFunction, "atmosphere: cannot load Vulkan function " + missing);
+    return nullptr;
+  }
+  std::unique_ptr<Impl> impl;
+  if (!guarded(error, [&] { impl = std::make_unique<Impl>(info, functions); })) return nullptr;
+  return std::unique_ptr<Context>(new Context(std::move(impl)));
+}
+
+Context::Context(std::unique_ptr<Impl> impl) : impl_(std::move(impl)) {}
+Context::~Context() = default;
+
+bool Context::prepare(const Parameters& parameters, const Settings& settings,
+                      VkExtent2D renderExtent, Error* error) {
+  if (std::string problem = validateParameters(parameters); !problem.empty()) {
+    return fail(error, ErrorCode::InvalidParameters, problem);
+  }
+  if (std::string problem = validateSettings(settings); !problem.empty()) {
+    return fail(error, ErrorCode::InvalidSettings, problem);
+  }
+  if (std::string problem = checkExtent("renderExtent", renderExtent, impl_->createInfo());
+      !problem.empty()) {
+    return fail(error, ErrorCode::InvalidInputs, "prepare: " + problem);
+  }
+  return guarded(error, [&] { impl_->prepare(parameters, settings); });
+}
+
+bool Context::prepared(const Parameters& parameters, const Settings& settings,
+                       VkExtent2D renderExtent) const {
+  return validateParameters(parameters).empty() && validateSettings(settings).empty() &&
+         checkExtent("", renderExtent, impl_->createInfo()).empty() &&
+         impl_->unprepared(parameters, settings).empty();
+}
+
+bool Context::dispatch(const FrameInputs& inputs, const Parameters& parameters,
+                       const Settings& settings, Error* error) {
+  if (std::string problem = checkInputs(inputs, impl_->createInfo()); !problem.empty()) {
+    return fail(error, ErrorCode::InvalidInputs, problem);
+  }
+  if (std::string problem = validateParameters(parameters); !problem.empty()) {
+    return fail(error, ErrorCode::InvalidParameters, problem);
+  }
+  if (std::string problem = validateSettings(settings); !problem.empty()) {
+    return fail(error, ErrorCode::InvalidSettings, problem);
+  }
+  if (std::string missing = impl_->unprepared(parameters, settings); !missing.empty()) {
+    return fail(error, ErrorCode::NotPrepared,
+                "dispatch: " + missing +
+                    " are not prepared: call Context::prepare() with them "
+                    "outside command recording");
+  }
+  impl_->dispatch(inputs, parameters, settings);
+  return succeed(error);
+}
+
+bool Context::render(VkCommandBuffer commandBuffer, VkImageView color, VkImageView depth,
+                     VkImageLayout depthLayout, VkExtent2D extent, Error* error) {
+  if (!impl_->dispatched()) {
+    return fail(error, ErrorCode::InvalidInputs, "render: dispatch() first, this frame");
+  }
+  if (commandBuffer == VK_NULL_HANDLE || color == VK_NULL_HANDLE) {
+    return fail(error, ErrorCode::InvalidInputs,
+                "render: the command buffer and the colour view are required");
+  }
+  const VkExtent2D last = impl_->lastExtent();
+  if (extent.width != last.width || extent.height != last.height) {
+    return fail(error, ErrorCode::InvalidInputs,
+                "render: extent " + extentText(extent) +
+                    " must equal the last dispatch's renderExtent (" + extentText(last) + ")");
+  }
+  impl_->render(commandBuffer, color, depth, depthLayout);
+  return succeed(error);
+}
+
+Outputs Context::outputs() const {
+  return impl_->outputs();
+}
+SkyLighting Context::skyLighting(std::uint64_t frameIndex) const {
+  return impl_->skyLighting(frameIndex);
+}
+MemoryUsage Context::memoryUsage() const {
+  return impl_->memoryUsage();
+}
+std::vector<PassTiming> Context::passTimings(std::uint64_t frameIndex) const {
+  return impl_->passTimings(frameIndex);
+}
+
+}  // namespace atmosphere

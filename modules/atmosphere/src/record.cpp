@@ -1,0 +1,180 @@
+// Recording the atmosphere's frame (dispatch) and its pass over the host's colour (render).
+// Every image stays in GENERAL: written as storage, sampled by later passes and by hosts.
+#include "context_impl.h"
+#include "uniforms.h"
+
+namespace atmosphere {
+
+using detail::Program;
+
+namespace {
+
+constexpr VkPipelineStageFlags2 kCompute = detail::kComputeStage;
+constexpr VkAccessFlags2 kSampled = VK_ACCESS_2_SHADER_SAMPLED_READ_BIT;
+// Where hosts may read the outputs.
+constexpr VkPipelineStageFlags2 kReadStages =
+    VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT | VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT;
+
+}  // namespace
+
+void Context::Impl::beginPass(VkCommandBuffer cmd, Program program) {
+  device_.beginLabel(cmd, detail::kPassNames[detail::index(program)]);
+  if (timer_) timer_->begin(cmd, detail::index(program));
+}
+
+void Context::Impl::endPass(VkCommandBuffer cmd, Program program) {
+  if (timer_) timer_->end(cmd, detail::index(program));
+  device_.endLabel(cmd);
+}
+
+void Context::Impl::bindAndDispatch(VkCommandBuffer cmd, Program program, const Slot& slot,
+                                    std::uint32_t x, std::uint32_t y, std::uint32_t z) {
+  const auto& fn = device_.fn();
+  const detail::ComputeProgram& p = programs_[program];
+  fn.vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, p.find());
+  fn.vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, p.layout(), 0, 1,
+                             &slot.sets[detail::index(program)], 0, nullptr);
+  fn.vkCmdDispatch(cmd, x, y, z);
+}
+
+void Context::Impl::dispatch(const FrameInputs& inputs, const Parameters& parameters,
+                             const Settings& settings) {
+  const auto& fn = device_.fn();
+  const VkCommandBuffer cmd = inputs.commandBuffer;
+  releaseRetired(inputs.frameIndex);
+  const auto slotIndex = static_cast<std::uint32_t>(inputs.frameIndex % slots_.size());
+  Slot& slot = slots_[slotIndex];
+  device_.beginLabel(cmd, "atmosphere");
+  if (timer_) timer_->beginFrame(cmd, slotIndex);
+  for (VkImage image : pendingLayouts_) {
+    detail::barrier(device_, cmd, image, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_GENERAL,
+                    VK_PIPELINE_STAGE_2_NONE, VK_ACCESS_2_NONE, kCompute,
+                    kSampled | detail::kStorageWrite);
+  }
+  pendingLayouts_.clear();
+
+  lastUniforms_ = detail::buildUniforms(inputs, parameters, settings, info_.reversedZ);
+  // Earlier commands may still read this slot's uniforms and the images written below.
+  detail::memoryBarrier(device_, cmd, kReadStages, VK_ACCESS_2_UNIFORM_READ_BIT | kSampled,
+                        VK_PIPELINE_STAGE_2_TRANSFER_BIT | kCompute,
+                        VK_ACCESS_2_TRANSFER_WRITE_BIT | detail::kStorageWrite);
+  fn.vkCmdUpdateBuffer(cmd, slot.uniforms.buffer(), 0, sizeof(lastUniforms_), &lastUniforms_);
+  detail::memoryBarrier(device_, cmd, VK_PIPELINE_STAGE_2_TRANSFER_BIT,
+                        VK_ACCESS_2_TRANSFER_WRITE_BIT, kCompute, VK_ACCESS_2_UNIFORM_READ_BIT);
+  writeSets(slot, VK_NULL_HANDLE, VK_IMAGE_LAYOUT_UNDEFINED, VK_NULL_HANDLE);
+
+  const std::uint32_t group = shader::kWorkgroupSize2D;
+  const auto barrierToReads = [&] {
+    detail::memoryBarrier(device_, cmd, kCompute, detail::kStorageWrite, kCompute, kSampled);
+  };
+  if (lutsDirty_) {
+    // Depend only on the parameters: recorded when they (or their recipe) changed.
+    beginPass(cmd, Program::Transmittance);
+    bindAndDispatch(cmd, Program::Transmittance, slot,
+                    detail::groupsFor(settings.transmittanceWidth, group),
+                    detail::groupsFor(settings.transmittanceHeight, group));
+    barrierToReads();
+    endPass(cmd, Program::Transmittance);
+    beginPass(cmd, Program::MultiScattering);
+    bindAndDispatch(cmd, Program::MultiScattering, slot,
+                    detail::groupsFor(settings.multiScatteringSize, group),
+                    detail::groupsFor(settings.multiScatteringSize, group));
+    barrierToReads();
+    endPass(cmd, Program::MultiScattering);
+    lutsDirty_ = false;
+    ++lutBuilds_;
+  }
+  beginPass(cmd, Program::SkyView);
+  bindAndDispatch(cmd, Program::SkyView, slot, detail::groupsFor(settings.skyViewWidth, group),
+                  detail::groupsFor(settings.skyViewHeight, group));
+  barrierToReads();
+  endPass(cmd, Program::SkyView);
+  beginPass(cmd, Program::AerialPerspective);
+  bindAndDispatch(cmd, Program::AerialPerspective, slot,
+                  detail::groupsFor(settings.aerialPerspectiveWidth, group),
+                  detail::groupsFor(settings.aerialPerspectiveHeight, group));
+  barrierToReads();
+  endPass(cmd, Program::AerialPerspective);
+  beginPass(cmd, Program::Environment);
+  bindAndDispatch(cmd, Program::Environment, slot, 1, 1);
+  // The outputs, to hosts' compute and fragment shaders; the measurement, to the host.
+  detail::memoryBarrier(device_, cmd, kCompute, detail::kStorageWrite, kReadStages, kSampled);
+  detail::memoryBarrier(device_, cmd, kCompute, detail::kStorageWrite, VK_PIPELINE_STAGE_2_HOST_BIT,
+                        VK_ACCESS_2_HOST_READ_BIT);
+  endPass(cmd, Program::Environment);
+  device_.endLabel(cmd);
+
+  slot.lightingFrame = inputs.frameIndex;
+  lastSlot_ = slotIndex;
+  lastFrameIndex_ = inputs.frameIndex;
+  lastExtent_ = inputs.renderExtent;
+  aerialPerspectiveRange_ = settings.aerialPerspectiveRangeMetres;
+}
+
+void Context::Impl::writeSets(Slot& slot, VkImageView depth, VkImageLayout depthLayout,
+                              VkImageView color) {
+  using namespace shader;
+  const VkSampler linear = linearSampler_.get();
+  const VkImageLayout general = VK_IMAGE_LAYOUT_GENERAL;
+  const VkBuffer uniforms = slot.uniforms.buffer();
+  const VkDeviceSize bytes = sizeof(AtmosphereUniforms);
+  const auto set = [&](Program p) { return slot.sets[detail::index(p)]; };
+  if (color != VK_NULL_HANDLE) {
+    // render(): the host's colour and depth change from call to call.
+    const bool hasDepth = depth != VK_NULL_HANDLE;
+    detail::SetWriter(device_, set(Program::Apply))
+        .uniformBuffer(kBindingUniforms, uniforms, bytes)
+        .sampledImage(kBindingTransmittance, transmittance_.view(), linear, general)
+        .sampledImage(kBindingSkyView, skyView_.view(), linear, general)
+        .sampledImage(kBindingAerialPerspective, aerialPerspective_.view(), linear, general)
+        .sampledImage(kBindingHostDepth, hasDepth ? depth : depthPlaceholder_.view(),
+                      nearestSampler_.get(), hasDepth ? depthLayout : general)
+        .storageImage(kBindingTarget, color)
+        .commit();
+    return;
+  }
+  detail::SetWriter(device_, set(Program::Transmittance))
+      .uniformBuffer(kBindingUniforms, uniforms, bytes)
+      .storageImage(kBindingTarget, transmittance_.view())
+      .commit();
+  detail::SetWriter(device_, set(Program::MultiScattering))
+      .uniformBuffer(kBindingUniforms, uniforms, bytes)
+      .sampledImage(kBindingTransmittance, transmittance_.view(), linear, general)
+      .storageImage(kBindingTarget, multiScattering_.view())
+      .commit();
+  for (Program p : {Program::SkyView, Program::AerialPerspective}) {
+    detail::SetWriter(device_, set(p))
+        .uniformBuffer(kBindingUniforms, uniforms, bytes)
+        .sampledImage(kBindingTransmittance, transmittance_.view(), linear, general)
+        .sampledImage(kBindingMultiScattering, multiScattering_.view(), linear, general)
+        .storageImage(kBindingTarget,
+                      p == Program::SkyView ? skyView_.view() : aerialPerspective_.view())
+        .commit();
+  }
+  detail::SetWriter(device_, set(Program::Environment))
+      .uniformBuffer(kBindingUniforms, uniforms, bytes)
+      .sampledImage(kBindingTransmittance, transmittance_.view(), linear, general)
+      .sampledImage(kBindingSkyView, skyView_.view(), linear, general)
+      .storageImage(kBindingTarget, environment_.view())
+      .storageBuffer(kBindingSkyLighting, slot.lighting.buffer(), sizeof(shader::SkyLighting))
+      .commit();
+}
+
+void Context::Impl::render(VkCommandBuffer cmd, VkImageView color, VkImageView depth,
+                           VkImageLayout depthLayout) {
+  Slot& slot = slots_[lastSlot_];
+  writeSets(slot, depth, depthLayout, color);
+  beginPass(cmd, Program::Apply);
+  const detail::ComputeProgram& p = programs_[Program::Apply];
+  const auto& fn = device_.fn();
+  fn.vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE,
+                       p.find(detail::applyKey(depth != VK_NULL_HANDLE)));
+  fn.vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, p.layout(), 0, 1,
+                             &slot.sets[detail::index(Program::Apply)], 0, nullptr);
+  const std::uint32_t group = shader::kWorkgroupSize2D;
+  fn.vkCmdDispatch(cmd, detail::groupsFor(lastExtent_.width, group),
+                   detail::groupsFor(lastExtent_.height, group), 1);
+  endPass(cmd, Program::Apply);
+}
+
+}  // namespace atmosphere

@@ -1,0 +1,53 @@
+#include "uniforms.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace atmosphere::detail {
+
+shader::AtmosphereUniforms buildUniforms(const FrameInputs& in, const Parameters& p,
+                                         const Settings& s, bool reversedZ) {
+  shader::AtmosphereUniforms u{};
+  u.inverseProjection = glm::inverse(in.projection);
+  // The view's rotation only: view -> world for directions.
+  u.viewToWorld = glm::mat4(glm::transpose(glm::mat3(in.view)));
+
+  u.rayleighScattering = p.rayleighScatteringPerMetre;
+  u.rayleighScaleHeight = p.rayleighScaleHeightMetres;
+  u.mieScattering = p.mieScatteringPerMetre;
+  u.mieScaleHeight = p.mieScaleHeightMetres;
+  u.mieAbsorption = p.mieExtinctionPerMetre - p.mieScatteringPerMetre;
+  u.miePhaseG = p.miePhaseG;
+  u.ozoneAbsorption = p.ozoneAbsorptionPerMetre;
+  u.ozoneCentre = p.ozoneCentreMetres;
+  u.groundAlbedo = p.groundAlbedo;
+  u.ozoneHalfWidth = p.ozoneHalfWidthMetres;
+  u.bottomRadius = p.bottomRadiusMetres;
+  u.topRadius = p.topRadiusMetres;
+  // At least a metre above the ground: a camera on or below it would see the sky-view LUT's
+  // horizon collapse.
+  u.cameraRadius =
+      static_cast<float>(double(p.bottomRadiusMetres) + std::max(in.cameraPosition.y, 1.0));
+  u.sunAngularRadius = p.sunAngularRadiusRadians;
+  const float sunLength = glm::length(in.sunDirection);
+  u.sunDirection = sunLength > 1e-6f ? in.sunDirection / sunLength : glm::vec3(0, 1, 0);
+  u.sunIlluminance = in.sunIlluminance;
+  u.maxRadiance = kMaxRadiance;
+
+  u.transmittanceSize = glm::uvec2(s.transmittanceWidth, s.transmittanceHeight);
+  u.transmittanceSamples = s.transmittanceSamples;
+  u.multiScatteringSize = s.multiScatteringSize;
+  u.multiScatteringDirections = s.multiScatteringDirections;
+  u.multiScatteringSamples = s.multiScatteringSamples;
+  u.skyViewSize = glm::uvec2(s.skyViewWidth, s.skyViewHeight);
+  u.skyViewSamples = s.skyViewSamples;
+  u.flags = reversedZ ? shader::kFlagReversedZ : 0u;
+  u.outputExtent = glm::uvec2(in.renderExtent.width, in.renderExtent.height);
+  u.aerialPerspectiveSize =
+      glm::uvec4(s.aerialPerspectiveWidth, s.aerialPerspectiveHeight, s.aerialPerspectiveSlices,
+                 s.aerialPerspectiveSamplesPerSlice);
+  u.aerialPerspectiveRange = s.aerialPerspectiveRangeMetres;
+  return u;
+}
+
+}  // namespace atmosphere::detail

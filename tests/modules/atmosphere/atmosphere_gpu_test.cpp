@@ -1,0 +1,350 @@
+// The atmosphere module on the GPU against its CPU reference (the same model in double
+// precision): the LUTs texel for texel, the rendered sky and the hazed ground against direct
+// integrals, the sky map and its measurement; and the hard cases (a sun sweep through
+// twilight to night, cameras on the ground, in space and far from the origin, extreme air).
+// Validation is on; any message fails the test.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <glm/gtc/constants.hpp>
+
+#include "atmosphere_harness.h"
+#include "atmosphere_reference.h"
+#include "context_access.h"
+#include "gpu_test.h"
+
+namespace {
+
+using atmosphere::tools::AtmosphereHarness;
+using atmosphere::tools::FloatImage;
+using atmosphere::tools::SkyView;
+
+constexpr VkExtent2D kExtent{160, 90};
+
+using AtmosphereGpu = test::GpuTest;
+
+std::vector<glm::dvec3> rgbOf(const FloatImage& image) {
+  std::vector<glm::dvec3> rgb;
+  rgb.reserve(image.texels.size());
+  for (const glm::vec4& t : image.texels) rgb.emplace_back(t);
+  return rgb;
+}
+
+std::vector<glm::dvec3> rgbOf(const atmosphere::reference::Lut& lut) {
+  return lut.texels;
+}
+
+double luminance(glm::dvec3 c) {
+  return 0.2126 * c.r + 0.7152 * c.g + 0.0722 * c.b;
+}
+
+// The world direction through pixel (x, y) of `view`, as the module computes it.
+glm::dvec3 pixelDirection(const SkyView& view, std::uint32_t x, std::uint32_t y,
+                          VkExtent2D extent) {
+  const glm::mat4 inverseProjection =
+      glm::inverse(atmosphere::tools::projectionMatrix(view, extent));
+  const glm::mat3 viewToWorld = glm::transpose(glm::mat3(atmosphere::tools::viewMatrix(view)));
+  const glm::vec2 ndc =
+      (glm::vec2(x, y) + 0.5f) / glm::vec2(extent.width, extent.height) * 2.0f - 1.0f;
+  const glm::vec4 p = inverseProjection * glm::vec4(ndc, 1.0f, 1.0f);
+  return glm::normalize(glm::dvec3(viewToWorld * (glm::vec3(p) / p.w)));
+}
+
+TEST_F(AtmosphereGpu, LutsMatchTheCpuReference) {
+  AtmosphereHarness harness(device(), kExtent);
+  const atmosphere::Parameters earth;
+  const atmosphere::Settings settings = atmosphere::settingsFor(atmosphere::Quality::High);
+  SkyView view;
+  view.sunElevationDegrees = 20.0;
+  harness.render(view, earth, settings, kExtent);
+  const atmosphere::reference::Reference reference(earth, settings);
+  const double transmittance = atmosphere::tools::psnrRgb(rgbOf(harness.readTransmittance()),
+                                                          rgbOf(reference.transmittance()));
+  const double multiScattering = atmosphere::tools::psnrRgb(rgbOf(harness.readMultiScattering()),
+                                                            rgbOf(reference.multiScattering()));
+  const double skyView = atmosphere::tools::psnrRgb(
+      rgbOf(harness.readSkyView()),
+      rgbOf(reference.skyView(view.position.y, std::sin(glm::radians(view.sunElevationDegrees)))));
+  EXPECT_GE(transmittance, 40.0);
+  EXPECT_GE(multiScattering, 40.0);
+  EXPECT_GE(skyView, 40.0);
+  std::printf("GPU against CPU (dB): transmittance %.1f, multiple scattering %.1f, sky view %.1f\n",
+              transmittance, multiScattering, skyView);
+}
+
+// The module's sky for `view` against the reference's direct integral along every pixel's ray
+// (no sky-view LUT: 400 samples, the sunlit ground below the horizon), both times the sun's
+// illuminance. The sun's disc must be out of the frame.
+double skyPsnr(AtmosphereHarness& harness, const SkyView& view,
+               const atmosphere::Settings& settings) {
+  const atmosphere::Parameters earth;
+  const FloatImage image = harness.render(view, earth, settings, kExtent);
+  const atmosphere::reference::Reference reference(earth, atmosphere::Settings{});
+  const glm::dvec3 sun = glm::dvec3(atmosphere::tools::sunDirection(view));
+  std::vector<glm::dvec3> expected;
+  for (std::uint32_t y = 0; y < kExtent.height; ++y) {
+    for (std::uint32_t x = 0; x < kExtent.width; ++x) {
+      const glm::dvec3 direction = pixelDirection(view, x, y, kExtent);
+      expected.push_back(
+          reference.scattering(view.position.y, direction, sun, 400, 1e12, true).luminance *
+          glm::dvec3(view.sunIlluminance));
+    }
+  }
+  return atmosphere::tools::psnrRgb(rgbOf(image), expected);
+}
+
+TEST_F(AtmosphereGpu, SkyMatchesTheDirectIntegralAtNoonAndAtSunset) {
+  AtmosphereHarness harness(device(), kExtent);
+  const atmosphere::Settings high = atmosphere::settingsFor(atmosphere::Quality::High);
+  SkyView noon;
+  noon.sunElevationDegrees = 60.0;
+  noon.sunAzimuthDegrees = 180.0;  // behind the camera
+  noon.pitchDegrees = 20.0;
+  noon.sunIlluminance = glm::vec3(120.0f);
+  SkyView sunset = noon;
+  sunset.sunElevationDegrees = 2.0;
+  sunset.sunAzimuthDegrees = 60.0;  // to the side, the disc out of the frame
+  sunset.pitchDegrees = 5.0;
+  SkyView fromAltitude = noon;  // the planet's curve and the ground below the horizon
+  fromAltitude.position.y = 12000.0;
+  fromAltitude.pitchDegrees = -20.0;
+  for (const auto& [name, view] : {std::pair{"noon", noon}, std::pair{"sunset", sunset},
+                                   std::pair{"12 km, looking down", fromAltitude}}) {
+    const double psnr = skyPsnr(harness, view, high);
+    EXPECT_GE(psnr, 40.0) << name;
+    std::printf("sky at %s: %.1f dB\n", name, psnr);
+  }
+}
+
+TEST_F(AtmosphereGpu, AerialPerspectiveHazesTheGroundAsTheDirectIntegralDoes) {
+  AtmosphereHarness harness(device(), kExtent);
+  const atmosphere::Parameters earth;
+  SkyView view;
+  view.position.y = 800.0;
+  view.pitchDegrees = -12.0;
+  view.sunElevationDegrees = 25.0;
+  view.sunAzimuthDegrees = 140.0;
+  view.groundDepth = true;
+  view.groundColour = glm::vec3(0.02f, 0.03f, 0.015f);
+  view.sunIlluminance = glm::vec3(1.0f);
+  const FloatImage image =
+      harness.render(view, earth, atmosphere::settingsFor(atmosphere::Quality::High), kExtent);
+  const atmosphere::reference::Reference reference(earth, atmosphere::Settings{});
+  const glm::dvec3 sun = glm::dvec3(atmosphere::tools::sunDirection(view));
+  std::vector<glm::dvec3> got;
+  std::vector<glm::dvec3> expected;
+  double nearHaze = -1.0;
+  double farHaze = -1.0;
+  for (std::uint32_t y = 0; y < kExtent.height; ++y) {
+    for (std::uint32_t x = 0; x < kExtent.width; ++x) {
+      const glm::dvec3 direction = pixelDirection(view, x, y, kExtent);
+      if (direction.y > -0.02) continue;  // the ground within the froxels' range
+      const double distance = view.position.y / -direction.y;
+      const atmosphere::model::Scattering s =
+          reference.scattering(view.position.y, direction, sun, 400, distance);
+      // The froxels hold one transmittance for the three channels (their mean).
+      const double t = (s.transmittance.r + s.transmittance.g + s.transmittance.b) / 3.0;
+      expected.push_back(glm::dvec3(view.groundColour) * t + s.luminance);
+      got.emplace_back(image.at(x, y));
+      const double haze = 1.0 - t;
+      if (distance < 5000.0) nearHaze = std::max(nearHaze, haze);
+      if (distance > 20000.0) farHaze = std::max(farHaze, haze);
+    }
+  }
+  ASSERT_GT(got.size(), 1000u);
+  const double psnr = atmosphere::tools::psnrRgb(got, expected);
+  EXPECT_GE(psnr, 35.0);
+  std::printf("hazed ground: %.1f dB over %zu pixels\n", psnr, got.size());
+  EXPECT_GT(farHaze, 2.0 * nearHaze) << "far ground is hazier than near ground";
+}
+
+TEST_F(AtmosphereGpu, EnvironmentMapAndItsMeasurementMatchTheSky) {
+  AtmosphereHarness harness(device(), kExtent);
+  const atmosphere::Parameters earth;
+  SkyView view;
+  view.sunElevationDegrees = 30.0;
+  view.sunAzimuthDegrees = 75.0;
+  view.sunIlluminance = glm::vec3(100.0f, 98.0f, 95.0f);
+  harness.render(view, earth, atmosphere::settingsFor(atmosphere::Quality::High), kExtent);
+  const FloatImage environment = harness.readEnvironment();
+  const atmosphere::reference::Reference reference(earth, atmosphere::Settings{});
+  const glm::dvec3 sun = glm::dvec3(atmosphere::tools::sunDirection(view));
+  std::vector<glm::dvec3> expected;
+  glm::dvec4 upper(0.0);
+  const std::uint32_t w = environment.extent.width;
+  const std::uint32_t h = environment.extent.height;
+  for (std::uint32_t y = 0; y < h; ++y) {
+    for (std::uint32_t x = 0; x < w; ++x) {
+      // The documented layout: u the azimuth from +X towards +Z, v = 0 at the zenith.
+      const double azimuth = 2.0 * glm::pi<double>() * (x + 0.5) / w;
+      const double elevation = glm::pi<double>() * (0.5 - (y + 0.5) / h);
+      const glm::dvec3 direction(std::cos(azimuth) * std::cos(elevation), std::sin(elevation),
+                                 std::sin(azimuth) * std::cos(elevation));
+      expected.push_back(
+          reference.scattering(view.position.y, direction, sun, 400, 1e12, true).luminance *
+          glm::dvec3(view.sunIlluminance));
+      if (elevation > 0.0)
+        upper += glm::dvec4(glm::dvec3(environment.at(x, y)), 1.0) * std::cos(elevation);
+    }
+  }
+  EXPECT_GE(atmosphere::tools::psnrRgb(rgbOf(environment), expected), 40.0);
+  const atmosphere::SkyLighting measured = harness.lastSkyLighting();
+  ASSERT_TRUE(measured.valid);
+  const glm::dvec3 mean = glm::dvec3(upper) / upper.w;
+  for (int c = 0; c < 3; ++c) EXPECT_NEAR(measured.meanUpper[c], mean[c], 1e-3 * mean[c]);
+  EXPECT_NEAR(measured.meanUpperLuminance, luminance(mean), 1e-3 * luminance(mean));
+  EXPECT_GT(measured.zenith.b, measured.zenith.r) << "a blue zenith";
+  EXPECT_GT(measured.horizon.g, measured.zenith.g) << "a brighter horizon";
+}
+
+TEST_F(AtmosphereGpu, SunDiscIsDrawnLimbDarkenedThroughTheAir) {
+  AtmosphereHarness harness(device(), kExtent);
+  SkyView view;
+  view.sunElevationDegrees = 10.0;
+  view.sunAzimuthDegrees = 0.0;
+  view.yawDegrees = 0.0;
+  view.pitchDegrees = 10.0;
+  view.verticalFovDegrees = 1.2f;  // the disc (0.53 degrees) fills a good part of the frame
+  view.sunIlluminance = glm::vec3(1.0f);
+  const atmosphere::Parameters earth;
+  const FloatImage image =
+      harness.render(view, earth, atmosphere::settingsFor(atmosphere::Quality::High), kExtent);
+  const glm::vec4 centre = image.at(kExtent.width / 2, kExtent.height / 2);
+  const glm::vec4 corner = image.at(0, 0);
+  const glm::vec3 transmittance = atmosphere::sunTransmittance(
+      earth, view.position.y, glm::dvec3(atmosphere::tools::sunDirection(view)));
+  const double expectedCentre =
+      transmittance.g * atmosphere::model::sunDiscRadiance(1.0, earth.sunAngularRadiusRadians);
+  EXPECT_NEAR(centre.g, expectedCentre, 0.03 * expectedCentre);
+  EXPECT_GT(centre.r / centre.b, 1.2) << "the low sun is reddened by the air";
+  EXPECT_LT(corner.g, 1e-3 * centre.g) << "outside the disc only sky";
+  // Towards the limb the disc darkens: compare a pixel at 80% of its radius.
+  const double pixelsPerRadian = kExtent.height / glm::radians(double(view.verticalFovDegrees));
+  const auto limbX = static_cast<std::uint32_t>(
+      kExtent.width / 2.0 + 0.8 * earth.sunAngularRadiusRadians * pixelsPerRadian);
+  EXPECT_LT(image.at(limbX, kExtent.height / 2).g, 0.8 * centre.g);
+}
+
+TEST_F(AtmosphereGpu, SunSweepThroughTwilightToNightStaysFiniteAndSmooth) {
+  AtmosphereHarness harness(device(), kExtent);
+  const atmosphere::Parameters earth;
+  const atmosphere::Settings medium = atmosphere::settingsFor(atmosphere::Quality::Medium);
+  SkyView view;
+  view.pitchDegrees = 15.0;
+  view.sunAzimuthDegrees = 150.0;           // the disc out of the frame: the sky alone
+  view.sunIlluminance = glm::vec3(127.0f);  // kilolux
+  std::vector<double> mean;                 // of the frame
+  std::vector<double> upper;                // of the upper hemisphere (SkyLighting)
+  for (int elevation = -20; elevation <= 90; ++elevation) {
+    view.sunElevationDegrees = elevation;
+    const FloatImage image = harness.render(view, earth, medium, kExtent);
+    double sum = 0.0;
+    std::size_t invalid = 0;
+    for (const glm::vec4& p : image.texels) {
+      if (!std::isfinite(p.r) || !std::isfinite(p.g) || !std::isfinite(p.b) || p.r < 0.0f ||
+          p.g < 0.0f || p.b < 0.0f) {
+        ++invalid;
+      }
+      sum += luminance(glm::dvec3(p));
+    }
+    EXPECT_EQ(invalid, 0u) << "sun elevation " << elevation;
+    mean.push_back(sum / double(image.texels.size()));
+    upper.push_back(harness.lastSkyLighting().meanUpperLuminance);
+  }
+  // The sky's mean luminance (the upper hemisphere's, measured by the module) never drops as
+  // the sun rises. While it is brighter than a millionth of noon's (a dark night sky's few
+  // millicandela per square metre) it changes by at most a factor 3.5 from one degree to the
+  // next: twilight fades by a factor 2 to 3.2 a degree here, and skies measured in twilight
+  // fade by about one order of magnitude per 2 to 3 degrees of solar depression.
+  const double night = 1e-6 * upper.back();
+  for (std::size_t i = 1; i < upper.size(); ++i) {
+    const int elevation = -20 + int(i);
+    EXPECT_GE(upper[i], upper[i - 1]) << "at " << elevation;
+    if (upper[i - 1] > night) {
+      EXPECT_LT(upper[i] / upper[i - 1], 3.5) << "at " << elevation;
+    }
+  }
+  EXPECT_LT(upper.front(), night) << "20 degrees under the horizon it is night";
+  EXPECT_LT(mean.front(), 1e-6 * mean.back());
+}
+
+TEST_F(AtmosphereGpu, HardCasesStayFinite) {
+  AtmosphereHarness harness(device(), kExtent);
+  struct Case {
+    const char* name;
+    glm::dvec3 position;
+    double pitch;
+    atmosphere::Parameters parameters;
+  };
+  atmosphere::Parameters dense;
+  dense.rayleighScatteringPerMetre = glm::vec3(1e-3f);
+  dense.mieScatteringPerMetre = glm::vec3(1e-3f);
+  dense.mieExtinctionPerMetre = glm::vec3(1e-3f);
+  dense.miePhaseG = 0.99f;
+  atmosphere::Parameters vacuum;
+  vacuum.rayleighScatteringPerMetre = glm::vec3(0.0f);
+  vacuum.mieScatteringPerMetre = glm::vec3(0.0f);
+  vacuum.mieExtinctionPerMetre = glm::vec3(0.0f);
+  vacuum.ozoneAbsorptionPerMetre = glm::vec3(0.0f);
+  atmosphere::Parameters thin;
+  thin.topRadiusMetres = thin.bottomRadiusMetres + 1.0f;
+  atmosphere::Parameters backward;
+  backward.miePhaseG = -0.99f;
+  const Case cases[] = {
+      {"on the ground", {0.0, 0.0, 0.0}, 0.0, {}},
+      {"below the ground", {0.0, -50.0, 0.0}, -10.0, {}},
+      {"in space", {0.0, 400e3, 0.0}, -60.0, {}},
+      {"far from the origin", {3e7, 900.0, -2e7}, 2.0, {}},
+      {"dense air", {0.0, 300.0, 0.0}, 5.0, dense},
+      {"no air", {0.0, 300.0, 0.0}, 5.0, vacuum},
+      {"a one-metre atmosphere", {0.0, 300.0, 0.0}, 5.0, thin},
+      {"backward Mie", {0.0, 300.0, 0.0}, 5.0, backward},
+  };
+  for (const Case& c : cases) {
+    for (double sun : {-90.0, -0.3, 0.0, 0.3, 90.0}) {
+      SkyView view;
+      view.position = c.position;
+      view.pitchDegrees = c.pitch;
+      view.sunElevationDegrees = sun;
+      view.sunAzimuthDegrees = 10.0;
+      view.groundDepth = c.position.y > 0.0;
+      view.groundColour = glm::vec3(0.1f);
+      view.sunIlluminance = glm::vec3(127.0f);
+      const FloatImage image = harness.render(
+          view, c.parameters, atmosphere::settingsFor(atmosphere::Quality::Low), kExtent);
+      std::size_t invalid = 0;
+      for (const glm::vec4& p : image.texels) {
+        if (!std::isfinite(p.r + p.g + p.b) || std::min({p.r, p.g, p.b}) < 0.0f) ++invalid;
+      }
+      const atmosphere::SkyLighting lighting = harness.lastSkyLighting();
+      EXPECT_EQ(invalid, 0u) << c.name << ", sun at " << sun;
+      EXPECT_TRUE(std::isfinite(lighting.meanUpperLuminance)) << c.name << ", sun at " << sun;
+    }
+  }
+}
+
+TEST_F(AtmosphereGpu, LutsThatDependOnlyOnTheParametersAreBuiltWhenTheyChange) {
+  AtmosphereHarness harness(device(), kExtent);
+  const auto builds = [&] {
+    return atmosphere::detail::ContextAccess::impl(harness.context()).lutBuilds();
+  };
+  atmosphere::Parameters earth;
+  atmosphere::Settings settings = atmosphere::settingsFor(atmosphere::Quality::Medium);
+  SkyView view;
+  for (int frame = 0; frame < 3; ++frame) {
+    view.sunElevationDegrees = 10.0 * frame;  // the time of day runs: no rebuild
+    harness.render(view, earth, settings, kExtent);
+  }
+  EXPECT_EQ(builds(), 1u);
+  earth.miePhaseG = 0.7f;
+  harness.render(view, earth, settings, kExtent);
+  EXPECT_EQ(builds(), 2u) << "new parameters";
+  settings.skyViewSamples += 4;
+  harness.render(view, earth, settings, kExtent);
+  EXPECT_EQ(builds(), 2u) << "a per-frame setting";
+  settings.transmittanceSamples += 4;
+  harness.render(view, earth, settings, kExtent);
+  EXPECT_EQ(builds(), 3u) << "a LUT's recipe";
+}
+
+}  // namespace
