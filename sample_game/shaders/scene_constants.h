@@ -18,10 +18,12 @@ struct SceneFrame {
   vec4 skyZenith;       // rgb sky radiance straight up
   vec4 skyHorizon;      // rgb at the horizon
   vec4 skyGround;       // rgb bounced light from below
-  vec4 fog;             // x density (1/m), yzw unused
+  vec4 fog;             // x density (1/m) of the fog alternative; y the aerial perspective's
+                        //   range (m), z its slices (vkfx/aerial_perspective.glsl); w unused
+  vec4 sunAboveAir;     // rgb the sun's illuminance above the air (the haze's radiance scale)
   uvec4 extent;         // xy output size (px)
 };
-SHADER_STATIC_ASSERT(sizeof(SceneFrame) == 64 + 11 * 16);
+SHADER_STATIC_ASSERT(sizeof(SceneFrame) == 64 + 12 * 16);
 
 // Sky radiance along a view direction: a zenith-to-horizon blend, ground below, a sun disc and
 // its glow. Shared so the terrain's fog fades to exactly the sky behind it.

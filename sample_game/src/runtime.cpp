@@ -4,6 +4,7 @@
 #include <chrono>
 #include <cstdio>
 #include <memory>
+#include <span>
 #include <thread>
 
 #include "clouds/ecs/cloud_components.h"
@@ -43,10 +44,24 @@ struct Presentation {
   render::SwapchainTarget* swapchain = nullptr;  // the target, when windowed
 };
 
-// What the frame loop measured.
+// What the frame loop measured: the frame rate after the warm-up, and every pass's GPU time
+// in each measured frame (timestamps of the latest completed frame), in order of first use.
 struct LoopStats {
   std::uint64_t measuredFrames = 0;
   double measuredSeconds = 0.0;
+  std::vector<std::pair<std::string, std::vector<double>>> passMilliseconds;
+
+  void addPassTimes(std::span<const engine::gfx::TimedScope> scopes) {
+    for (const auto& scope : scopes) {
+      auto it = std::find_if(passMilliseconds.begin(), passMilliseconds.end(),
+                             [&](const auto& entry) { return entry.first == scope.name; });
+      if (it == passMilliseconds.end()) {
+        passMilliseconds.push_back({scope.name, {}});
+        it = std::prev(passMilliseconds.end());
+      }
+      it->second.push_back(scope.milliseconds);
+    }
+  }
 };
 
 constexpr std::uint64_t kWarmUpFrames = 3;  // noise generation and shader JIT happen first
@@ -121,8 +136,8 @@ bool gatherInput(ecs::World& world, platform::Window* window, render::SwapchainT
   return true;
 }
 
-LoopStats runFrames(ecs::App& app, platform::Window* window, render::SwapchainTarget* swapchain,
-                    const RunPlan& plan) {
+LoopStats runFrames(ecs::App& app, const Renderer& renderer, platform::Window* window,
+                    render::SwapchainTarget* swapchain, const RunPlan& plan) {
   ecs::World& world = app.world();
   const Options& options = plan.options;
   auto& time = world.ctx().get<ecs::FrameTime>();
@@ -145,7 +160,10 @@ LoopStats runFrames(ecs::App& app, platform::Window* window, render::SwapchainTa
     }
     app.runFrame();
     if (frame + 1 == kWarmUpFrames) measureStart = std::chrono::steady_clock::now();
-    if (frame + 1 > kWarmUpFrames) ++stats.measuredFrames;
+    if (frame + 1 > kWarmUpFrames) {
+      ++stats.measuredFrames;
+      stats.addPassTimes(renderer.lastGpuTimings());
+    }
     if (world.ctx().get<ExitRequest>().requested) break;
   }
   stats.measuredSeconds =
@@ -194,6 +212,19 @@ void logRun(ecs::World& world, const Renderer& renderer, const LoopStats& stats)
   for (const auto& scope : renderer.lastGpuTimings())
     gpu.emplace_back(scope.name, scope.milliseconds);
   log::info("GPU time of the last frame: " + timingList(gpu));
+  if (!stats.passMilliseconds.empty()) {
+    std::vector<std::pair<std::string, double>> medians;
+    double total = 0.0;
+    for (auto [name, times] : stats.passMilliseconds) {
+      std::nth_element(times.begin(), times.begin() + std::ptrdiff_t(times.size() / 2),
+                       times.end());
+      medians.emplace_back(name, times[times.size() / 2]);
+      total += medians.back().second;
+    }
+    char sum[64];
+    std::snprintf(sum, sizeof(sum), " (sum %.2f ms)", total);
+    log::info("GPU time per pass, median of the measured frames: " + timingList(medians) + sum);
+  }
   const auto* clouds = world.ctx().tryGet<clouds::ecs::CloudStatus>();
   if (clouds == nullptr) return;
   const ::clouds::FrameReport& r = clouds->report;
@@ -249,7 +280,7 @@ int run(Options commandLine) {
     app.scheduler().add(ecs::Phase::Render, "render frame",
                         [&renderer](ecs::World& world) { renderer.renderFrame(world); });
 
-    const LoopStats stats = runFrames(app, window.get(), presentation.swapchain, plan);
+    const LoopStats stats = runFrames(app, renderer, window.get(), presentation.swapchain, plan);
     renderer.finish();
     if (options.describe) {
       printDescription(app, renderer, plan);

@@ -9,8 +9,10 @@
 #include "engine/ecs/frame_time.h"
 #include "engine/platform/input.h"
 #include "engine/render/camera_math.h"
+#include "engine/render/exposure.h"
 #include "engine/render/scene_components.h"
 #include "game/cloud_quality_controls.h"
+#include "game/exposure_control.h"
 #include "game/flight.h"
 #include "game/game_components.h"
 #include "game/terrain_height.h"
@@ -171,13 +173,63 @@ TEST(TimeOfDay, TheSunFollowsADailyArc) {
   EXPECT_LT(sample::sunDirectionAt(t).x, -0.99);
   t.hours = 0.0;
   EXPECT_LT(sample::sunDirectionAt(t).y, -0.5);
-  EXPECT_LT(glm::length(sample::sunLightFor(t).illuminance), 1e-3f) << "no sun at night";
+  const engine::render::Sun midnight = sample::sunLightFor(t);
+  EXPECT_LT(glm::length(sample::analyticSunTransmittance(0.0, midnight.direction)), 1e-3f)
+      << "no sun at night";
   t.hours = 12.0;
-  const glm::vec3 noon = sample::sunLightFor(t).illuminance;
+  const engine::render::Sun noon = sample::sunLightFor(t);
+  EXPECT_EQ(noon.illuminance, midnight.illuminance) << "above the air the sun is the same";
+  EXPECT_EQ(noon.illuminance.r, noon.illuminance.b) << "and white";
+  const glm::vec3 atNoon = sample::analyticSunTransmittance(0.0, noon.direction);
   t.hours = 18.2;
-  const glm::vec3 dusk = sample::sunLightFor(t).illuminance;
-  EXPECT_GT(noon.b, dusk.b * 3.0f);
-  EXPECT_GT(dusk.r / dusk.b, noon.r / noon.b) << "redder near the horizon";
+  const glm::vec3 atDusk = sample::analyticSunTransmittance(0.0, sample::sunLightFor(t).direction);
+  EXPECT_GT(atNoon.b, atDusk.b * 3.0f);
+  EXPECT_GT(atDusk.r / atDusk.b, atNoon.r / atNoon.b) << "redder near the horizon";
+  EXPECT_GT(sample::analyticSunTransmittance(4000.0, sample::sunLightFor(t).direction).b, atDusk.b)
+      << "less air above a mountain";
+}
+
+// A world lit by the analytic sky at a time of day, with the sample's auto-exposure.
+struct LitWorld {
+  engine::ecs::App app;
+  explicit LitWorld(double hours) {
+    auto& world = app.world();
+    world.ctx().emplace<engine::ecs::FrameTime>();
+    world.ctx().emplace<engine::render::Exposure>();
+    Camera camera;
+    camera.position = {0.0, 500.0, 0.0};
+    world.emplace<Camera>(world.create(), camera);
+    sample::TimeOfDay time;
+    time.hours = hours;
+    world.emplace<engine::render::Sun>(world.create(), sample::sunLightFor(time));
+    sample::installAnalyticSky(world, app.scheduler());
+    sample::installExposureControl(app.scheduler());
+  }
+  float ev100() {
+    app.runFrame();
+    return app.world().ctx().get<engine::render::Exposure>().ev100;
+  }
+};
+
+TEST(Exposure, AutoExposureMetersDaylightAndClampsTheNight) {
+  LitWorld noon(12.0);
+  const float noonEv = noon.ev100();
+  EXPECT_GT(noonEv, 14.0f) << "sunny 16: about EV 15 under a high sun";
+  EXPECT_LT(noonEv, 16.5f);
+  LitWorld dusk(18.2);
+  EXPECT_LT(dusk.ev100(), noonEv - 3.0f) << "a low sun through much air is many stops darker";
+  LitWorld night(0.0);
+  const float nightEv = night.ev100();
+  EXPECT_FLOAT_EQ(nightEv, engine::render::Exposure{}.minEv100) << "night stays dark";
+  EXPECT_TRUE(std::isfinite(sample::meteredEv100(night.app.world())));
+}
+
+TEST(Exposure, ManualExposureIsLeftAlone) {
+  LitWorld noon(12.0);
+  auto& exposure = noon.app.world().ctx().get<engine::render::Exposure>();
+  exposure.mode = engine::render::Exposure::Mode::Manual;
+  exposure.ev100 = 9.0f;
+  EXPECT_FLOAT_EQ(noon.ev100(), 9.0f);
 }
 
 TEST(Terrain, PlacementCentresSmallMeshesAndScalesThemUp) {

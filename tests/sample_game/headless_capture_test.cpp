@@ -59,17 +59,19 @@ TEST(HeadlessCapture, WritesPngAndExrOfTheLastFrame) {
   ASSERT_EQ(exr.height, 90u);
   for (float v : exr.pixels) ASSERT_TRUE(std::isfinite(v));
 
-  // The default scene: terrain fills the bottom rows (darker, green-dominant), the top row is
-  // sky or cloud (bright), and somewhere there are white clouds (near-grey, bright).
-  double topBrightness = 0.0, bottomBrightness = 0.0;
+  // The default scene: terrain fills the bottom rows (green over blue), the top row is sky
+  // (blue over red) or cloud, and somewhere there are white clouds (near-grey, bright). (Sunlit
+  // ground and the blue sky have similar luminances in physical units: colour tells them apart.)
+  double topBlueness = 0.0, bottomBlueness = 0.0;
   for (std::uint32_t x = 0; x < png.width; ++x) {
     const float* top = png.at(x, 1);
     const float* bottom = png.at(x, png.height - 2);
-    topBrightness += top[0] + top[1] + top[2];
-    bottomBrightness += bottom[0] + bottom[1] + bottom[2];
+    topBlueness += top[2] - top[0];
+    bottomBlueness += bottom[2] - bottom[0];
     EXPECT_GT(bottom[1], bottom[2]) << "the ground in front should be terrain, not sky";
   }
-  EXPECT_GT(topBrightness, bottomBrightness);
+  EXPECT_GT(topBlueness, 0.1 * png.width) << "a blue sky above";
+  EXPECT_LT(bottomBlueness, 0.0) << "warm ground below";
   int cloudy = 0;
   for (std::uint32_t y = 0; y < png.height / 2; ++y) {
     for (std::uint32_t x = 0; x < png.width; ++x) {
@@ -113,10 +115,15 @@ TEST(HeadlessCapture, EachSceneGetsOnlyThePassesAndPipelinesItNeeds) {
       {scene("clouds_only.json"),
        R"("passes": ["sky", "clouds", "clouds composite", "tonemap", "capture"])",
        R"("pipelines": ["tonemap", "sky", "clouds module"])", R"("modules": ["clouds"])"},
+      // An atmosphere draws the sky: no gradient sky pass or pipeline.
+      {scene("atmosphere_only.json"),
+       R"("passes": ["atmosphere", "atmosphere sky", "tonemap", "capture"])",
+       R"("pipelines": ["tonemap", "atmosphere module"])", R"("modules": ["atmosphere"])"},
       {std::string(SAMPLE_ASSET_DIR) + "/scenes/default.json",
-       R"("passes": ["sky", "terrain", "clouds", "clouds composite", "tonemap", "capture"])",
-       R"("pipelines": ["tonemap", "sky", "terrain", "clouds module"])",
-       R"("modules": ["clouds"])"},
+       R"("passes": ["atmosphere", "atmosphere sky", "terrain", "clouds", "clouds composite", )"
+       R"("tonemap", "capture"])",
+       R"("pipelines": ["tonemap", "terrain", "atmosphere module", "clouds module"])",
+       R"("modules": ["atmosphere", "clouds"])"},
   };
   for (const Case& c : cases) {
     const std::string out =

@@ -63,6 +63,33 @@ TEST(Scenes, ValuesArriveInTheDescription) {
   const sample::SceneDescription ultra = loadSceneDescription(writeScene("quality.json", R"({
     "name": "q", "camera": {"position": [0, 10, 0], "cloudQuality": "ultra"}})"));
   EXPECT_EQ(ultra.camera.cloudQuality, clouds::Quality::Ultra);
+  EXPECT_FALSE(s.atmosphere.has_value()) << "no atmosphere unless the scene asks";
+  EXPECT_FALSE(s.fog.has_value());
+}
+
+TEST(Scenes, AtmosphereFogAndExposureArriveInTheDescription) {
+  const sample::SceneDescription s = loadSceneDescription(writeScene("air.json", R"({
+    "name": "a", "camera": {"position": [0, 10, 0], "atmosphereQuality": "high"},
+    "atmosphere": {"preset": "hazy", "miePhaseG": 0.7, "groundAlbedo": [0.1, 0.2, 0.3]},
+    "exposure": {"mode": "manual", "ev100": 12.5, "adaptationSeconds": 2}
+  })"));
+  ASSERT_TRUE(s.atmosphere.has_value());
+  const atmosphere::Parameters earth;
+  EXPECT_FLOAT_EQ(s.atmosphere->parameters.mieScatteringPerMetre.g,
+                  4.0f * earth.mieScatteringPerMetre.g)
+      << "the hazy preset";
+  EXPECT_FLOAT_EQ(s.atmosphere->parameters.miePhaseG, 0.7f) << "an override over the preset";
+  EXPECT_EQ(s.atmosphere->parameters.groundAlbedo, glm::vec3(0.1f, 0.2f, 0.3f));
+  EXPECT_EQ(s.camera.atmosphereQuality, atmosphere::Quality::High);
+  EXPECT_FALSE(s.exposure.automatic);
+  EXPECT_DOUBLE_EQ(s.exposure.ev100, 12.5);
+  EXPECT_DOUBLE_EQ(s.exposure.adaptationSeconds, 2.0);
+
+  const sample::SceneDescription fogged = loadSceneDescription(writeScene("fog.json", R"({
+    "name": "f", "camera": {"position": [0, 10, 0]}, "fog": {"densityPerMetre": 1e-4}})"));
+  ASSERT_TRUE(fogged.fog.has_value());
+  EXPECT_DOUBLE_EQ(fogged.fog->densityPerMetre, 1e-4);
+  EXPECT_FALSE(fogged.atmosphere.has_value());
 }
 
 TEST(Scenes, MalformedScenesNameFilePathAndReason) {
@@ -99,6 +126,33 @@ TEST(Scenes, MalformedScenesNameFilePathAndReason) {
       {"quality.json",
        R"({"name": "x", "camera": {"position": [0, 1, 0], "cloudQuality": "extreme"}})",
        "camera.cloudQuality: must be one of low, medium, high, ultra, reference"},
+      {"both.json",
+       R"({"name": "x", "camera": {"position": [0, 1, 0]}, "atmosphere": {},
+           "fog": {"densityPerMetre": 1e-5}})",
+       "fog: a scene has an atmosphere or fog, not both"},
+      {"preset.json",
+       R"({"name": "x", "camera": {"position": [0, 1, 0]}, "atmosphere": {"preset": "mars"}})",
+       "atmosphere.preset: must be one of earth, hazy"},
+      {"extinction.json",
+       R"({"name": "x", "camera": {"position": [0, 1, 0]},
+           "atmosphere": {"mieScatteringPerMetre": [1e-4, 1e-4, 1e-4],
+                          "mieExtinctionPerMetre": [1e-5, 1e-5, 1e-5]}})",
+       "atmosphere: Parameters.mieExtinctionPerMetre"},
+      {"albedo.json",
+       R"({"name": "x", "camera": {"position": [0, 1, 0]},
+           "atmosphere": {"groundAlbedo": [0.1, 2, 0.1]}})",
+       "atmosphere.groundAlbedo"},
+      {"exposure.json",
+       R"({"name": "x", "camera": {"position": [0, 1, 0]}, "exposure": {"mode": "magic"}})",
+       "exposure.mode: must be one of auto, manual"},
+      {"ev.json", R"({"name": "x", "camera": {"position": [0, 1, 0]}, "exposure": {"ev100": 99}})",
+       "exposure.ev100: must be in [-10, 25], got 99"},
+      {"fogrange.json",
+       R"({"name": "x", "camera": {"position": [0, 1, 0]}, "fog": {"densityPerMetre": -1}})",
+       "fog.densityPerMetre: must be in [0, 0.01], got -1"},
+      {"atmospherequality.json",
+       R"({"name": "x", "camera": {"position": [0, 1, 0], "atmosphereQuality": "ultra"}})",
+       "camera.atmosphereQuality: must be one of low, medium, high, reference"},
   };
   for (const Case& c : cases) {
     const fs::path path = writeScene(c.file, c.json);

@@ -4,6 +4,11 @@ namespace engine::render {
 
 RenderFeature::~RenderFeature() = default;
 
+SceneTextures RenderFeature::addPassesBeforeScene(FrameGraph& /*graph*/,
+                                                  const SceneTextures& scene) {
+  return scene;
+}
+
 void RenderFeature::finish(std::uint64_t /*lastFrameIndex*/) {}
 
 }  // namespace engine::render

@@ -55,6 +55,8 @@ ResourceState stateFor(Access access, PassType type, bool depthFormat) {
       return {depthFormat ? VK_IMAGE_LAYOUT_DEPTH_READ_ONLY_OPTIMAL
                           : VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL,
               shaderStages(type), VK_ACCESS_2_SHADER_SAMPLED_READ_BIT};
+    case Access::SampledReadGeneral:
+      return {VK_IMAGE_LAYOUT_GENERAL, shaderStages(type), VK_ACCESS_2_SHADER_SAMPLED_READ_BIT};
     case Access::StorageRead:
       return {VK_IMAGE_LAYOUT_GENERAL, shaderStages(type), VK_ACCESS_2_SHADER_STORAGE_READ_BIT};
     case Access::StorageWrite:
@@ -97,6 +99,7 @@ ResourceState stateFor(Access access, PassType type, bool depthFormat) {
 VkImageUsageFlags imageUsageFor(Access access) {
   switch (access) {
     case Access::SampledRead:
+    case Access::SampledReadGeneral:
       return VK_IMAGE_USAGE_SAMPLED_BIT;
     case Access::StorageRead:
     case Access::StorageWrite:
@@ -139,6 +142,8 @@ const char* accessName(Access access) {
   switch (access) {
     case Access::SampledRead:
       return "SampledRead";
+    case Access::SampledReadGeneral:
+      return "SampledReadGeneral";
     case Access::StorageRead:
       return "StorageRead";
     case Access::StorageWrite:

@@ -19,4 +19,10 @@ glm::mat4 projectionOf(const Camera& camera, float aspect) {
   return perspectiveReversedZ(camera.verticalFovRadians, aspect, camera.nearMetres);
 }
 
+glm::vec3 sunIlluminanceAt(const Sun& sun, const SunTransmittance* transmittance,
+                           double altitudeMetres) {
+  if (transmittance == nullptr || !transmittance->at) return sun.illuminance;
+  return sun.illuminance * transmittance->at(altitudeMetres, sun.direction);
+}
+
 }  // namespace engine::render

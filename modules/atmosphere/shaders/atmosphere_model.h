@@ -18,7 +18,7 @@
 //     texel centres at the ends (fromUnitToSubUv).
 //   sky view (W x H, for the camera's altitude): u = sqrt of the azimuth from the sun, v = the
 //     view zenith angle, non-linear so the horizon gets most texels; upper half sky, lower half
-//     towards the ground.
+//     the ground seen through the air (its sunlit albedo included).
 #ifndef ATMOSPHERE_MODEL_H
 #define ATMOSPHERE_MODEL_H
 
@@ -139,32 +139,33 @@ VKFX_INLINE vec2 multiScatteringUv(real r, real muSun, IN(AtmosphereModel) a, re
   return vec2(fromUnitToSubUv(u, size), fromUnitToSubUv(v, size));
 }
 
-// The sky-view LUT for a camera at radius r: texture coordinates of a view direction (its
-// zenith cosine, and the cosine of its azimuth from the sun's) and back.
-VKFX_INLINE vec2 skyViewUv(real viewZenithCos, real lightViewCos, real r, IN(AtmosphereModel) a,
-                           vec2 size) {
+// The sky-view LUT for a camera at radius r. Its v splits at the horizon, which lies `beta`
+// below the level (horizonDip()): the upper half holds the sky, the lower half the directions
+// that hit the ground, each with its texels crowded towards the horizon; u holds the azimuth
+// from the sun, crowded towards the sun (Hillaire 2020, section 5.3). Texture coordinates of a
+// view direction (its zenith cosine and the cosine of its azimuth from the sun's) and back.
+VKFX_INLINE real horizonDip(real r, IN(AtmosphereModel) a) {
   const real toHorizon = sqrt(max((r - a.bottomRadius) * (r + a.bottomRadius), 0.0));
-  const real beta = acos(clamp(toHorizon / r, -1.0, 1.0));  // horizon below the level
+  return acos(clamp(toHorizon / r, -1.0, 1.0));
+}
+
+VKFX_INLINE vec2 skyViewUv(real viewZenithCos, real lightViewCos, real beta, vec2 size) {
   const real zenithHorizonAngle = kPi - beta;
   const real viewZenith = acos(clamp(viewZenithCos, -1.0, 1.0));
   real v;
-  if (!rayHitsGround(r, viewZenithCos, a)) {
-    const real coord = 1.0 - sqrt(max(1.0 - viewZenith / zenithHorizonAngle, 0.0));
-    v = coord * 0.5;
+  if (viewZenith <= zenithHorizonAngle) {
+    v = (1.0 - sqrt(max(1.0 - viewZenith / zenithHorizonAngle, 0.0))) * 0.5;
   } else {
-    const real coord = sqrt(max((viewZenith - zenithHorizonAngle) / max(beta, 1e-6), 0.0));
-    v = coord * 0.5 + 0.5;
+    v = sqrt(max((viewZenith - zenithHorizonAngle) / max(beta, 1e-6), 0.0)) * 0.5 + 0.5;
   }
   const real u = sqrt(clamp(-lightViewCos * 0.5 + 0.5, 0.0, 1.0));
   return vec2(fromUnitToSubUv(u, size.x), fromUnitToSubUv(v, size.y));
 }
 
-VKFX_INLINE void skyViewParams(vec2 uv, real r, IN(AtmosphereModel) a, vec2 size,
-                               OUT(real) viewZenithCos, OUT(real) lightViewCos) {
+VKFX_INLINE void skyViewParams(vec2 uv, real beta, vec2 size, OUT(real) viewZenithCos,
+                               OUT(real) lightViewCos) {
   const real u = clamp(fromSubUvToUnit(uv.x, size.x), 0.0, 1.0);
   const real v = clamp(fromSubUvToUnit(uv.y, size.y), 0.0, 1.0);
-  const real toHorizon = sqrt(max((r - a.bottomRadius) * (r + a.bottomRadius), 0.0));
-  const real beta = acos(clamp(toHorizon / r, -1.0, 1.0));
   const real zenithHorizonAngle = kPi - beta;
   if (v < 0.5) {
     const real coord = 1.0 - 2.0 * v;
@@ -291,24 +292,6 @@ VKFX_INLINE Scattering integrateScattering(vec3 origin, vec3 direction, vec3 sun
   return s;
 }
 
-// The sunlit ground (Lambertian) that a ray from radius r along `direction` (unit; the planet's
-// up is +Y at the ray's origin) hits, seen through the air in front of it, for a sun of unit
-// illuminance; 0 when the ray misses the ground. The transmittance between the origin and the
-// ground is the ratio of two to-the-top transmittances along the reversed ray (which misses the
-// ground), from the LUT.
-VKFX_INLINE vec3 groundThroughAir(real r, vec3 direction, vec3 sun, IN(AtmosphereModel) a) {
-  if (!rayHitsGround(r, direction.y, a)) return vec3(0.0);
-  const real t = raySphere(r, direction.y, a.bottomRadius);
-  const vec3 up = normalize(vec3(0.0, r, 0.0) + direction * t);
-  const vec3 fromGround =
-      sampleTransmittance(transmittanceUv(a.bottomRadius, -dot(up, direction), a));
-  const vec3 fromOrigin = sampleTransmittance(transmittanceUv(r, -direction.y, a));
-  const vec3 between = clamp(fromGround / max(fromOrigin, vec3(1e-6)), vec3(0.0), vec3(1.0));
-  const real muSun = dot(up, sun);
-  return between * sunTransmittance(a.bottomRadius, muSun, a) * max(muSun, 0.0) * a.groundAlbedo /
-         kPi;
-}
-
 // Sky-view LUT direction for its parameters: Y up at the camera, the sun in the XY plane.
 VKFX_INLINE vec3 skyViewDirection(real viewZenithCos, real lightViewCos) {
   const real viewZenithSin = sqrt(max(1.0 - viewZenithCos * viewZenithCos, 0.0));
@@ -367,14 +350,16 @@ VKFX_INLINE vec3 multipleScatteringTexel(vec2 uv, real size, uint directions, ui
 
 // --- The sun disc ------------------------------------------------------------------------------
 // Radiance of the sun's disc seen from the top of the atmosphere, for a sun of unit
-// illuminance, at angle cosine `cosAngle` from its centre; 0 outside. Limb darkening after
-// Neckel & Labs' linear law with coefficient 0.6, normalised so the disc integrates to 1.
-VKFX_INLINE real sunDiscRadiance(real cosAngle, real angularRadius) {
-  const real cosRadius = cos(angularRadius);
-  if (cosAngle < cosRadius) return 0.0;
-  const real solidAngle = 2.0 * kPi * (1.0 - cosRadius);
-  const real fromCentre = acos(clamp(cosAngle, -1.0, 1.0)) / angularRadius;
-  const real mu = sqrt(max(1.0 - fromCentre * fromCentre, 0.0));
+// illuminance, at a direction `versine` = 1 - cos(angle from its centre) from it, for a disc of
+// `radiusVersine` = 1 - cos(angular radius); 0 outside. Versines keep float precision where
+// cosines of such small angles round to 1: for unit vectors a and b, 1 - dot(a, b) is exactly
+// dot(a - b, a - b) / 2. Limb darkening after Neckel & Labs' linear law with coefficient 0.6,
+// normalised so the disc integrates to 1; the distance from the centre in disc radii is
+// sqrt(versine / radiusVersine), exact to (angular radius)^2 / 12.
+VKFX_INLINE real sunDiscRadiance(real versine, real radiusVersine) {
+  if (versine > radiusVersine) return 0.0;
+  const real solidAngle = 2.0 * kPi * radiusVersine;
+  const real mu = sqrt(max(1.0 - versine / radiusVersine, 0.0));
   const real darkening = 1.0 - 0.6 * (1.0 - mu);
   return darkening / (solidAngle * (1.0 - 0.6 / 3.0));
 }

@@ -27,7 +27,9 @@ const uint kBindingHostDepth = 6u;          // apply.comp: the host's depth, sam
 const uint kBindingSkyLighting = 7u;        // environment.comp: SkyLighting, host-visible
 
 // --- Specialization constants -------------------------------------------------------------------
-const uint kSpecHasDepth = 0u;  // apply.comp: 0 every pixel is sky, 1 the host's depth is bound
+const uint kSpecHasDepth = 0u;   // apply.comp: 0 every pixel is sky, 1 the host's depth is bound
+const uint kSpecReversedZ = 1u;  // apply.comp: 1 the host's far plane is depth 0, else 1
+const uint kApplySpecCount = 2u;
 
 // --- Flags in AtmosphereUniforms.flags ----------------------------------------------------------
 const uint kFlagReversedZ = 1u;  // host depth: near = 1, far/sky = 0
@@ -40,6 +42,7 @@ struct AtmosphereUniforms {
   // Camera (this frame's, camera-relative).
   mat4 inverseProjection;  // host clip space -> view space
   mat4 viewToWorld;        // rotation only
+  mat4 clipToWorldRay;     // viewToWorld * inverseProjection: a pixel's (ndc, far, 1) -> ray
 
   // The model (atmosphere_model.h), per metre and in metres.
   vec3 rayleighScattering;
@@ -54,12 +57,14 @@ struct AtmosphereUniforms {
   float ozoneHalfWidth;
   float bottomRadius;
   float topRadius;
-  float cameraRadius;      // the camera's distance from the planet's centre
-  float sunAngularRadius;  // radians
-  vec3 sunDirection;       // unit, towards the sun (world)
-  float padding0;
-  vec3 sunIlluminance;  // at the top of the atmosphere, host units
-  float maxRadiance;    // the sun disc is clamped to this (half-float targets)
+  float cameraRadius;       // the camera's distance from the planet's centre
+  float sunAngularRadius;   // radians
+  vec3 sunDirection;        // unit, towards the sun (world)
+  float sunRadiusVersine;   // 1 - cos(the sun's angular radius), computed in double
+  vec3 sunIlluminance;      // at the top of the atmosphere, host units
+  float maxRadiance;        // the sun disc is clamped to this (half-float targets)
+  vec3 sunDiscIlluminance;  // sunIlluminance * the transmittance from the camera to the sun
+  float horizonDip;         // radians the horizon lies below the level (horizonDip())
 
   // LUT sizes and sample counts (Settings).
   uvec2 transmittanceSize;
@@ -73,9 +78,9 @@ struct AtmosphereUniforms {
   uvec2 outputExtent;            // px
   uvec4 aerialPerspectiveSize;   // xyz froxels, w samples per slice
   float aerialPerspectiveRange;  // m
+  float padding0;
   float padding1;
   float padding2;
-  float padding3;
 };
 
 // What environment.comp measures of the sky for the host (read back once a frame completes):
@@ -96,23 +101,26 @@ VKFX_SHADER_END
 #define ATMOSPHERE_ASSERT_OFFSET(type, field, offset) \
   static_assert(offsetof(atmosphere::shader::type, field) == (offset), #type "." #field)
 ATMOSPHERE_ASSERT_OFFSET(AtmosphereUniforms, viewToWorld, 64);
-ATMOSPHERE_ASSERT_OFFSET(AtmosphereUniforms, rayleighScattering, 128);
-ATMOSPHERE_ASSERT_OFFSET(AtmosphereUniforms, mieScattering, 144);
-ATMOSPHERE_ASSERT_OFFSET(AtmosphereUniforms, mieAbsorption, 160);
-ATMOSPHERE_ASSERT_OFFSET(AtmosphereUniforms, ozoneAbsorption, 176);
-ATMOSPHERE_ASSERT_OFFSET(AtmosphereUniforms, groundAlbedo, 192);
-ATMOSPHERE_ASSERT_OFFSET(AtmosphereUniforms, bottomRadius, 208);
-ATMOSPHERE_ASSERT_OFFSET(AtmosphereUniforms, sunDirection, 224);
-ATMOSPHERE_ASSERT_OFFSET(AtmosphereUniforms, sunIlluminance, 240);
-ATMOSPHERE_ASSERT_OFFSET(AtmosphereUniforms, maxRadiance, 252);
-ATMOSPHERE_ASSERT_OFFSET(AtmosphereUniforms, transmittanceSize, 256);
-ATMOSPHERE_ASSERT_OFFSET(AtmosphereUniforms, multiScatteringDirections, 272);
-ATMOSPHERE_ASSERT_OFFSET(AtmosphereUniforms, skyViewSize, 280);
-ATMOSPHERE_ASSERT_OFFSET(AtmosphereUniforms, skyViewSamples, 288);
-ATMOSPHERE_ASSERT_OFFSET(AtmosphereUniforms, outputExtent, 296);
-ATMOSPHERE_ASSERT_OFFSET(AtmosphereUniforms, aerialPerspectiveSize, 304);
-ATMOSPHERE_ASSERT_OFFSET(AtmosphereUniforms, aerialPerspectiveRange, 320);
-static_assert(sizeof(atmosphere::shader::AtmosphereUniforms) == 336);
+ATMOSPHERE_ASSERT_OFFSET(AtmosphereUniforms, clipToWorldRay, 128);
+ATMOSPHERE_ASSERT_OFFSET(AtmosphereUniforms, rayleighScattering, 192);
+ATMOSPHERE_ASSERT_OFFSET(AtmosphereUniforms, mieScattering, 208);
+ATMOSPHERE_ASSERT_OFFSET(AtmosphereUniforms, mieAbsorption, 224);
+ATMOSPHERE_ASSERT_OFFSET(AtmosphereUniforms, ozoneAbsorption, 240);
+ATMOSPHERE_ASSERT_OFFSET(AtmosphereUniforms, groundAlbedo, 256);
+ATMOSPHERE_ASSERT_OFFSET(AtmosphereUniforms, bottomRadius, 272);
+ATMOSPHERE_ASSERT_OFFSET(AtmosphereUniforms, sunDirection, 288);
+ATMOSPHERE_ASSERT_OFFSET(AtmosphereUniforms, sunIlluminance, 304);
+ATMOSPHERE_ASSERT_OFFSET(AtmosphereUniforms, maxRadiance, 316);
+ATMOSPHERE_ASSERT_OFFSET(AtmosphereUniforms, sunDiscIlluminance, 320);
+ATMOSPHERE_ASSERT_OFFSET(AtmosphereUniforms, horizonDip, 332);
+ATMOSPHERE_ASSERT_OFFSET(AtmosphereUniforms, transmittanceSize, 336);
+ATMOSPHERE_ASSERT_OFFSET(AtmosphereUniforms, multiScatteringDirections, 352);
+ATMOSPHERE_ASSERT_OFFSET(AtmosphereUniforms, skyViewSize, 360);
+ATMOSPHERE_ASSERT_OFFSET(AtmosphereUniforms, skyViewSamples, 368);
+ATMOSPHERE_ASSERT_OFFSET(AtmosphereUniforms, outputExtent, 376);
+ATMOSPHERE_ASSERT_OFFSET(AtmosphereUniforms, aerialPerspectiveSize, 384);
+ATMOSPHERE_ASSERT_OFFSET(AtmosphereUniforms, aerialPerspectiveRange, 400);
+static_assert(sizeof(atmosphere::shader::AtmosphereUniforms) == 416);
 static_assert(sizeof(atmosphere::shader::SkyLighting) == 64);
 #undef ATMOSPHERE_ASSERT_OFFSET
 #endif

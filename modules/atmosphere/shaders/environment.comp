@@ -41,7 +41,7 @@ void main() {
     const float elevation = kPi * (0.5 - uv.y);
     const vec3 direction =
         vec3(cos(azimuth) * cos(elevation), sin(elevation), sin(azimuth) * cos(elevation));
-    const vec3 radiance = skyRadiance(direction, a) * u.sunIlluminance;
+    const vec3 radiance = skyRadiance(direction) * u.sunIlluminance;
     imageStore(target, ivec2(texel), vec4(radiance, 1.0));
     // An equirectangular texel's solid angle goes with cos(elevation).
     const vec4 weighted = vec4(radiance, 1.0) * cos(elevation);

@@ -58,7 +58,7 @@ VkExtent3D extent2(std::uint32_t w, std::uint32_t h) {
 Context::Impl::Impl(const CreateInfo& info, const detail::VulkanFunctions& functions)
     : info_(info),
       device_(info.device, info.physicalDevice, info.debugUtils, functions, "atmosphere"),
-      programs_(checkedDevice(device_)),
+      programs_(checkedDevice(device_), info.reversedZ),
       linearSampler_(makeSampler(device_, VK_FILTER_LINEAR, "linear sampler")),
       nearestSampler_(makeSampler(device_, VK_FILTER_NEAREST, "nearest sampler")),
       pool_(makePool(device_, info.maxFramesInFlight)) {
@@ -179,7 +179,7 @@ Outputs Context::Impl::outputs() const {
   o.multipleScattering = out(multiScattering_);
   o.skyView = out(skyView_);
   o.aerialPerspective = out(aerialPerspective_);
-  o.aerialPerspectiveRangeMetres = aerialPerspectiveRange_;
+  o.aerialPerspectiveRangeMetres = sizedFor_ ? sizedFor_->aerialPerspectiveRangeMetres : 0.0f;
   o.environment = out(environment_);
   return o;
 }

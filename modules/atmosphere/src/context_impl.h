@@ -108,7 +108,6 @@ class Context::Impl {
   std::optional<std::uint64_t> lastFrameIndex_;
   std::uint32_t lastSlot_ = 0;
   VkExtent2D lastExtent_{0, 0};
-  float aerialPerspectiveRange_ = 0.0f;
   shader::AtmosphereUniforms lastUniforms_{};
 };
 

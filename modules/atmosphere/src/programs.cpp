@@ -57,7 +57,6 @@ std::vector<ProgramDesc> programTable() {
       {Program::Apply,
        apply_comp_spv,
        {uniforms,
-        transmittance,
         {kBindingSkyView, kTexture},
         {kBindingAerialPerspective, kTexture},
         {kBindingHostDepth, kTexture},
@@ -68,20 +67,21 @@ std::vector<ProgramDesc> programTable() {
 
 }  // namespace
 
-SpecializationKey applyKey(bool hasDepth) {
+SpecializationKey applyKey(bool hasDepth, bool reversedZ) {
   SpecializationKey key;
   key.values[kSpecHasDepth] = hasDepth ? 1u : 0u;
-  key.count = 1;
+  key.values[kSpecReversedZ] = reversedZ ? 1u : 0u;
+  key.count = kApplySpecCount;
   return key;
 }
 
-Programs::Programs(const DeviceContext& device) {
+Programs::Programs(const DeviceContext& device, bool reversedZ) {
   for (const ProgramDesc& desc : programTable()) {
     auto& program = programs_[index(desc.program)];
     program = std::make_unique<ComputeProgram>(device, desc.spirv, desc.bindings, 0u, desc.name);
     if (desc.program == Program::Apply) {
-      program->prepare(applyKey(false));
-      program->prepare(applyKey(true));
+      program->prepare(applyKey(false, reversedZ));
+      program->prepare(applyKey(true, reversedZ));
     } else {
       program->prepare();
     }

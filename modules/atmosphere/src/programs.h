@@ -29,11 +29,12 @@ constexpr std::uint32_t index(Program program) {
   return static_cast<std::uint32_t>(program);
 }
 
-SpecializationKey applyKey(bool hasDepth);
+SpecializationKey applyKey(bool hasDepth, bool reversedZ);
 
 class Programs {
  public:
-  explicit Programs(const DeviceContext& device);
+  // `reversedZ`: the host's depth convention (CreateInfo), compiled into the render pass.
+  Programs(const DeviceContext& device, bool reversedZ);
   ComputeProgram& operator[](Program program) { return *programs_[index(program)]; }
   const ComputeProgram& operator[](Program program) const { return *programs_[index(program)]; }
 

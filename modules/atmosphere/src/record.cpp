@@ -108,7 +108,6 @@ void Context::Impl::dispatch(const FrameInputs& inputs, const Parameters& parame
   lastSlot_ = slotIndex;
   lastFrameIndex_ = inputs.frameIndex;
   lastExtent_ = inputs.renderExtent;
-  aerialPerspectiveRange_ = settings.aerialPerspectiveRangeMetres;
 }
 
 void Context::Impl::writeSets(Slot& slot, VkImageView depth, VkImageLayout depthLayout,
@@ -124,7 +123,6 @@ void Context::Impl::writeSets(Slot& slot, VkImageView depth, VkImageLayout depth
     const bool hasDepth = depth != VK_NULL_HANDLE;
     detail::SetWriter(device_, set(Program::Apply))
         .uniformBuffer(kBindingUniforms, uniforms, bytes)
-        .sampledImage(kBindingTransmittance, transmittance_.view(), linear, general)
         .sampledImage(kBindingSkyView, skyView_.view(), linear, general)
         .sampledImage(kBindingAerialPerspective, aerialPerspective_.view(), linear, general)
         .sampledImage(kBindingHostDepth, hasDepth ? depth : depthPlaceholder_.view(),
@@ -168,7 +166,7 @@ void Context::Impl::render(VkCommandBuffer cmd, VkImageView color, VkImageView d
   const detail::ComputeProgram& p = programs_[Program::Apply];
   const auto& fn = device_.fn();
   fn.vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE,
-                       p.find(detail::applyKey(depth != VK_NULL_HANDLE)));
+                       p.find(detail::applyKey(depth != VK_NULL_HANDLE, info_.reversedZ)));
   fn.vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, p.layout(), 0, 1,
                              &slot.sets[detail::index(Program::Apply)], 0, nullptr);
   const std::uint32_t group = shader::kWorkgroupSize2D;

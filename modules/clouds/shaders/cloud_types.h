@@ -59,6 +59,7 @@ const uint kUpsampleDepthOut = 4u;
 const uint kUpsampleFresh = 5u;
 const uint kUpsampleHistory = 6u;
 const uint kUpsampleHistoryOut = 7u;
+const uint kUpsampleAerialPerspective = 8u;  // the host's haze (FrameInputs::aerialPerspective)
 // composite.comp
 const uint kCompositeHostColor = 0u;
 const uint kCompositeClouds = 1u;
@@ -91,7 +92,8 @@ const uint kReconstructSpecCount = 1u;
 // upsample.comp
 const uint kSpecTemporalUpsampling = 0u;  // 0/1: accumulate the output-resolution history
 const uint kSpecOutputHistory = 1u;       // 0 none, 1 read in place (nothing moved), 2 reprojected
-const uint kUpsampleSpecCount = 2u;
+const uint kSpecAerialPerspective = 2u;   // 0/1: haze the output (FrameInputs::aerialPerspective)
+const uint kUpsampleSpecCount = 3u;
 // The history variants of kSpecHistory and kSpecOutputHistory.
 const uint kHistoryNone = 0u;
 const uint kHistoryInPlace = 1u;
@@ -211,6 +213,14 @@ struct CloudUniforms {
                                //   jitter mode 2: accumulating frames supersamples)
   float upsamplingMaxSamples;  // temporal upsampling: own samples averaged before a running mean
   float padding8;
+
+  // The host's aerial perspective (vkfx/aerial_perspective.glsl), when it gives one.
+  vec3 aerialPerspectiveScale;    // multiplies the volume's radiance
+  float aerialPerspectiveRange;   // m, the distance of its last slice
+  float aerialPerspectiveSlices;  // its depth in slices
+  float padding9;
+  float padding10;
+  float padding11;
 };
 
 // Push constants of the noise generators.
@@ -281,7 +291,10 @@ CLOUDS_ASSERT_OFFSET(CloudUniforms, tileSize, 536);
 CLOUDS_ASSERT_OFFSET(CloudUniforms, temporalFreshWeight, 544);
 CLOUDS_ASSERT_OFFSET(CloudUniforms, subpixelOffset, 560);
 CLOUDS_ASSERT_OFFSET(CloudUniforms, upsamplingMaxSamples, 568);
-static_assert(sizeof(clouds::shader::CloudUniforms) == 576);
+CLOUDS_ASSERT_OFFSET(CloudUniforms, aerialPerspectiveScale, 576);
+CLOUDS_ASSERT_OFFSET(CloudUniforms, aerialPerspectiveRange, 588);
+CLOUDS_ASSERT_OFFSET(CloudUniforms, aerialPerspectiveSlices, 592);
+static_assert(sizeof(clouds::shader::CloudUniforms) == 608);
 static_assert(sizeof(clouds::shader::NoiseConstants) == 16);
 static_assert(sizeof(clouds::shader::WeatherConstants) == 16);
 static_assert(sizeof(clouds::shader::MaximaConstants) == 16);

@@ -14,8 +14,11 @@
 // moving past near cloud sees what the trace resolution gives. Whether there is history, and
 // whether anything moved, are per-frame variants (kSpecOutputHistory).
 //
+// With the host's aerial perspective (kSpecAerialPerspective) the output is hazed: hazed().
+//
 // Inputs: 0 CloudUniforms; 1 reconstructed samples (trace res, packed: cloud_temporal.h);
-// 2 host depth; 5 this frame's marched samples (trace res); 6 last frame's output history.
+// 2 host depth; 5 this frame's marched samples (trace res); 6 last frame's output history;
+// 8 the host's aerial perspective (3D).
 // Outputs: 3 RGBA16F radiance + transmittance, 4 RG32F depths (output res); 7 this frame's
 // output history (output res, packed with the own-sample count).
 // References: Karis 2014 (temporal accumulation, neighbourhood clamp); Schneider 2015.
@@ -28,6 +31,8 @@ layout(constant_id = kSpecTemporalUpsampling) const uint kTemporalUpsampling = 0
 // the clouds held still (each pixel's history is where it was: no reprojection, one load),
 // 2 reprojected (kSpecOutputHistory).
 layout(constant_id = kSpecOutputHistory) const uint kOutputHistory = 0u;
+// 1: the host gave an aerial perspective; the output is hazed with it (kSpecAerialPerspective).
+layout(constant_id = kSpecAerialPerspective) const uint kAerialPerspective = 0u;
 #include "frame_uniforms.glsl"
 layout(binding = kUpsampleTraceSamples, rgba32ui) uniform readonly uimage2D traceSamples;
 layout(binding = kUpsampleHostDepth) uniform sampler2D hostDepth;
@@ -36,6 +41,9 @@ layout(binding = kUpsampleDepthOut, rg32f) uniform writeonly image2D outDepth;
 layout(binding = kUpsampleFresh, rgba32ui) uniform readonly uimage2D freshSamples;
 layout(binding = kUpsampleHistory, rgba32ui) uniform readonly uimage2D outputHistory;
 layout(binding = kUpsampleHistoryOut, rgba32ui) uniform writeonly uimage2D outputHistoryOut;
+layout(binding = kUpsampleAerialPerspective) uniform sampler3D aerialPerspective;
+
+#include "vkfx/aerial_perspective.glsl"
 
 #include "cloud_march.h"
 
@@ -81,6 +89,20 @@ vec4 outputHistoryAt(vec2 position, out vec2 depth, out uint ownSamples) {
   return weightSum > 0.0f ? radiance / weightSum : vec4(0.0f, 0.0f, 0.0f, 1.0f);
 }
 
+// The clouds seen through the air in front of them (Hillaire 2016; Schneider 2022): their
+// radiance attenuated and the haze in front added at their transmittance-weighted depth, as
+// much of it as the clouds cover, rgb * T_air + L_air * (1 - T_clouds); the host's background
+// behind the clouds carries its own haze. The histories keep the unhazed clouds (the haze moves
+// with the camera, the clouds do not).
+vec4 hazed(uvec2 pixel, vec4 radiance, vec2 depth) {
+  if (kAerialPerspective == 0u) return radiance;
+  const vec2 uv = (vec2(pixel) + 0.5f) / vec2(u.outputExtent);
+  const vec4 air = aerialPerspectiveAt(aerialPerspective, uv, depth.y, u.aerialPerspectiveRange,
+                                       u.aerialPerspectiveSlices);
+  const vec3 inScattered = air.rgb * u.aerialPerspectiveScale * (1.0f - radiance.a);
+  return vec4(radiance.rgb * air.a + inScattered, radiance.a);
+}
+
 // The depth-aware bilinear estimate from the four trace pixels around this one.
 void spatialEstimate(uvec2 pixel, float scene, vec2 scale, out vec4 radiance, out vec2 depth,
                      out vec4 lo, out vec4 hi) {
@@ -120,7 +142,7 @@ void main() {
   vec2 spatialDepth;
   spatialEstimate(pixel, scene, scale, spatial, spatialDepth, lo, hi);
   if (kTemporalUpsampling == 0u) {
-    imageStore(outRadiance, ivec2(pixel), spatial);
+    imageStore(outRadiance, ivec2(pixel), hazed(pixel, spatial, spatialDepth));
     imageStore(outDepth, ivec2(pixel), vec4(spatialDepth, 0.0f, 0.0f));
     return;
   }
@@ -202,6 +224,6 @@ void main() {
   const vec4 radiance = mix(spatial, own, trust);
   const vec2 depth = depthBlendResult(blend);
   imageStore(outputHistoryOut, ivec2(pixel), packOutputHistory(own, ownDepth, ownSamples));
-  imageStore(outRadiance, ivec2(pixel), radiance);
+  imageStore(outRadiance, ivec2(pixel), hazed(pixel, radiance, depth));
   imageStore(outDepth, ivec2(pixel), vec4(depth, 0.0f, 0.0f));
 }

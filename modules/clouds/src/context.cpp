@@ -128,6 +128,17 @@ std::string checkInputs(const FrameInputs& in, const CreateInfo& info) {
   if (!std::isfinite(in.timeSeconds) || in.timeSeconds < 0.0) {
     return "FrameInputs.timeSeconds = " + std::to_string(in.timeSeconds) + ": must be >= 0";
   }
+  const FrameInputs::AerialPerspective& haze = in.aerialPerspective;
+  if (haze.view != VK_NULL_HANDLE) {
+    if (haze.slices == 0) return "FrameInputs.aerialPerspective.slices: must be >= 1";
+    if (!std::isfinite(haze.rangeMetres) || haze.rangeMetres <= 0.0f) {
+      return "FrameInputs.aerialPerspective.rangeMetres = " + std::to_string(haze.rangeMetres) +
+             ": must be > 0";
+    }
+    if (!finite(haze.radianceScale) || !nonNegative(haze.radianceScale)) {
+      return "FrameInputs.aerialPerspective.radianceScale: must be finite and not negative";
+    }
+  }
   return {};
 }
 

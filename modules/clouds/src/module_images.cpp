@@ -60,6 +60,8 @@ ModuleImages::ModuleImages(const DeviceContext& device) : device_(device) {
            "no host depth", VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL);
   samplesPlaceholder =
       make(VK_IMAGE_TYPE_2D, kSampleFormat, {1, 1, 1}, kStorage, "no output history");
+  hazePlaceholder = make(VK_IMAGE_TYPE_3D, kRadianceFormat, {1, 1, 1}, VK_IMAGE_USAGE_SAMPLED_BIT,
+                         "no aerial perspective", VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL);
 }
 
 OwnedImage ModuleImages::make(VkImageType type, VkFormat format, VkExtent3D extent,
@@ -153,7 +155,7 @@ MemoryUsage ModuleImages::memoryUsage() const {
   m.traceBytes =
       sceneDistance.bytes() + traceSamples.bytes() + history[0].bytes() + history[1].bytes();
   m.upsamplingBytes = outputHistory[0].bytes() + outputHistory[1].bytes();
-  m.bufferBytes = depthPlaceholder.bytes() + samplesPlaceholder.bytes();
+  m.bufferBytes = depthPlaceholder.bytes() + samplesPlaceholder.bytes() + hazePlaceholder.bytes();
   for (const Retired& r : retired_) m.retiredBytes += r.image.bytes();
   return m;
 }

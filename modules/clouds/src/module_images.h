@@ -51,6 +51,7 @@ class ModuleImages {
   OwnedImage weatherMaxCoarse;
   OwnedImage depthPlaceholder;    // 1 x 1 sampled R32F: no host depth
   OwnedImage samplesPlaceholder;  // 1 x 1 storage RGBA32UI: no output history
+  OwnedImage hazePlaceholder;     // 1 x 1 x 1 sampled RGBA16F: no aerial perspective
   // Sized by grow().
   OwnedImage radiance;  // outputs, output resolution
   OwnedImage depth;

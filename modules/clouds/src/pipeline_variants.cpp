@@ -26,10 +26,11 @@ SpecializationKey reconstructKey(std::uint32_t history) {
   return key;
 }
 
-SpecializationKey upsampleKey(bool temporalUpsampling, std::uint32_t outputHistory) {
+SpecializationKey upsampleKey(bool temporalUpsampling, std::uint32_t outputHistory, bool hazed) {
   SpecializationKey key;
   key.values[shader::kSpecTemporalUpsampling] = temporalUpsampling ? 1u : 0u;
   key.values[shader::kSpecOutputHistory] = outputHistory;
+  key.values[shader::kSpecAerialPerspective] = hazed ? 1u : 0u;
   key.count = shader::kUpsampleSpecCount;
   return key;
 }
@@ -47,7 +48,9 @@ std::vector<std::pair<Program, SpecializationKey>> variantsFor(const Settings& s
   const bool upsampling = upsamplesTemporally(settings);
   for (std::uint32_t history : histories) {
     if (!upsampling && history != shader::kHistoryNone) continue;
-    variants.emplace_back(Program::Upsample, upsampleKey(upsampling, history));
+    for (bool hazed : {false, true}) {
+      variants.emplace_back(Program::Upsample, upsampleKey(upsampling, history, hazed));
+    }
   }
   return variants;
 }

@@ -15,9 +15,11 @@ namespace clouds::detail {
 SpecializationKey marchKey(const Settings& settings, bool workCounters);
 // `history`: kHistoryNone, kHistoryInPlace or kHistoryReprojected (cloud_types.h).
 SpecializationKey reconstructKey(std::uint32_t history);
-SpecializationKey upsampleKey(bool temporalUpsampling, std::uint32_t outputHistory);
+// `hazed`: the host gave an aerial perspective this frame.
+SpecializationKey upsampleKey(bool temporalUpsampling, std::uint32_t outputHistory, bool hazed);
 
-// Every variant `settings` can select in some frame (with or without history, still or moving).
+// Every variant `settings` can select in some frame (with or without history, still or moving,
+// with or without the host's aerial perspective).
 std::vector<std::pair<Program, SpecializationKey>> variantsFor(const Settings& settings,
                                                                bool workCounters);
 

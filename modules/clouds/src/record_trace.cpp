@@ -68,6 +68,8 @@ void Context::Impl::recordTrace(VkCommandBuffer cmd, const FrameInputs& inputs,
   const VkImageLayout depthLayout =
       hasDepth ? inputs.depthLayout : VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL;
   const VkSampler nearest = nearestSampler_.get();
+  const FrameInputs::AerialPerspective& haze = inputs.aerialPerspective;
+  const bool hazed = haze.view != VK_NULL_HANDLE;
   const VkBuffer uniforms = slot.uniforms.buffer();
   const VkDeviceSize uniformBytes = sizeof(shader::CloudUniforms);
   const detail::OwnedImage& historyIn = im.history[temporal.readHistory];
@@ -113,6 +115,9 @@ void Context::Impl::recordTrace(VkCommandBuffer cmd, const FrameInputs& inputs,
       .storageImage(kUpsampleFresh, im.traceSamples.view())
       .storageImage(kUpsampleHistory, outputHistoryIn)
       .storageImage(kUpsampleHistoryOut, outputHistoryOut)
+      .sampledImage(kUpsampleAerialPerspective, hazed ? haze.view : im.hazePlaceholder.view(),
+                    linearSampler_.get(),
+                    hazed ? haze.layout : VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL)
       .commit();
 
   // Everything these passes write may still be read by earlier commands (last frame's
@@ -156,9 +161,10 @@ void Context::Impl::recordTrace(VkCommandBuffer cmd, const FrameInputs& inputs,
 
   beginPass(cmd, detail::Pass::Upsample, "clouds: upsample");
   const std::uint32_t outputHistory = historyVariant(temporal.useOutputHistory, temporal.still);
-  bindAndDispatch(cmd, Program::Upsample,
-                  programs_[Program::Upsample].find(detail::upsampleKey(upsampling, outputHistory)),
-                  slot.upsample, inputs.renderExtent.width, inputs.renderExtent.height);
+  bindAndDispatch(
+      cmd, Program::Upsample,
+      programs_[Program::Upsample].find(detail::upsampleKey(upsampling, outputHistory, hazed)),
+      slot.upsample, inputs.renderExtent.width, inputs.renderExtent.height);
   for (const detail::OwnedImage* image : {&im.radiance, &im.depth}) {
     detail::barrier(device_, cmd, image->image(), VK_IMAGE_LAYOUT_GENERAL, VK_IMAGE_LAYOUT_GENERAL,
                     kCompute, kStorageWrite, kHostReadStages, kHostReadAccess);

@@ -148,6 +148,11 @@ shader::CloudUniforms buildUniforms(const FrameInputs& in, const Settings& s,
     u.subpixelOffset = (glm::vec2(outputPixel) + inside) / float(m) - 0.5f;
   }
   u.upsamplingMaxSamples = static_cast<float>(s.upsamplingMaxSamples);
+  if (in.aerialPerspective.view != VK_NULL_HANDLE) {
+    u.aerialPerspectiveScale = in.aerialPerspective.radianceScale;
+    u.aerialPerspectiveRange = in.aerialPerspective.rangeMetres;
+    u.aerialPerspectiveSlices = static_cast<float>(in.aerialPerspective.slices);
+  }
   return u;
 }
 

@@ -25,7 +25,7 @@ struct TimeOfDay {
   double hoursPerSecond = 0.0;  // automatic advance
   double maxElevationDegrees = 65.0;
   double azimuthOffsetDegrees = 0.0;
-  double illuminance = 10.0;
+  double illuminance = 127.0;  // klx above the air
 };
 
 // Marks the terrain entity; the renderer loads and draws the mesh.

@@ -1,11 +1,14 @@
 #include "render/renderer.h"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 
+#include "engine/core/error.h"
 #include "engine/core/log.h"
 #include "engine/ecs/frame_time.h"
 #include "engine/render/camera_math.h"
+#include "engine/render/exposure.h"
 #include "engine/render/scene_components.h"
 #include "render/hud.h"
 #include "render/terrain_renderer.h"
@@ -22,15 +25,22 @@ Renderer::Renderer(gfx::Device& device, render::PresentTarget& target, ecs::Worl
       options_(options),
       ring_(device),
       tonemapper_(device, kHdrFormat, target.format()),
-      sky_(device, kHdrFormat),
       capture_(device) {
-  std::vector<const gfx::Pipeline*> pipelines = {&tonemapper_.pipeline(), &sky_.pipeline()};
-  if (const auto* mesh = world.ctx().tryGet<TerrainMesh>()) {
-    terrain_ = std::make_unique<TerrainRenderer>(device, *mesh->mesh, kHdrFormat, kDepthFormat);
-    pipelines.push_back(&terrain_->pipeline());
-  }
+  std::vector<const gfx::Pipeline*> pipelines = {&tonemapper_.pipeline()};
   if (const auto* features = world.ctx().tryGet<render::RenderFeatures>()) {
     features_ = features->features;
+  }
+  // A feature that draws the sky also hazes: the terrain reads its aerial perspective.
+  const bool featureSky = std::any_of(features_.begin(), features_.end(),
+                                      [](const render::RenderFeature* f) { return f->drawsSky(); });
+  if (!featureSky) {
+    sky_ = std::make_unique<SkyPass>(device, kHdrFormat);
+    pipelines.push_back(&sky_->pipeline());
+  }
+  if (const auto* mesh = world.ctx().tryGet<TerrainMesh>()) {
+    terrain_ = std::make_unique<TerrainRenderer>(device, *mesh->mesh, kHdrFormat, kDepthFormat,
+                                                 featureSky);
+    pipelines.push_back(&terrain_->pipeline());
   }
   if (options.hud) {
     hud_ = std::make_unique<Hud>(device, target.format());
@@ -61,15 +71,25 @@ void Renderer::rebuildGraph(VkExtent2D extent) {
   render::TextureDesc hdrDesc;
   hdrDesc.extent = {extent.width, extent.height, 1};
   hdrDesc.format = kHdrFormat;
-  render::TextureHandle hdr = addSkyPass(graph, sky_, hdrDesc, &sceneFrame_);
-  render::TextureHandle depth;
-  if (terrain_) {
-    const SceneTargets scene = addTerrainPass(graph, *terrain_, hdr, kDepthFormat, &sceneFrame_);
-    hdr = scene.hdr;
-    depth = scene.depth;
+  // What the scene reads, made before it: a feature's sky and its light, or the renderer's own
+  // gradient sky.
+  render::SceneTextures scene;
+  scene.extent = extent;
+  for (render::RenderFeature* feature : features_) {
+    scene = feature->addPassesBeforeScene(graph, scene);
   }
-  render::SceneTextures scene{hdr, depth};
+  if (sky_) scene.hdr = addSkyPass(graph, *sky_, hdrDesc, &sceneFrame_);
+  require(scene.hdr.valid(), "Renderer", "a feature that draws the sky made no scene colour");
+  hazeRangeMetres_ = scene.aerialPerspectiveRangeMetres;
+  hazeSlices_ = scene.aerialPerspectiveSlices;
+  if (terrain_) {
+    const SceneTargets targets = addTerrainPass(
+        graph, *terrain_, scene.hdr, scene.aerialPerspective, kDepthFormat, &sceneFrame_);
+    scene.hdr = targets.hdr;
+    scene.depth = targets.depth;
+  }
   for (render::RenderFeature* feature : features_) scene = feature->addPasses(graph, scene);
+  render::TextureHandle hdr = scene.hdr;
   hdr = scene.hdr;
   render::TextureHandle display =
       render::addTonemapPass(graph, tonemapper_, hdr, targetHandle_, &tonemap_);
@@ -85,7 +105,10 @@ void Renderer::updateFrameConstants(ecs::World& world, VkExtent2D extent) {
   render::Sun sun;
   world.view<const render::Sun>().each([&](const render::Sun& s) { sun = s; });
   const render::SkyLight sky = world.ctx().get<render::SkyLight>();
-  const render::Atmosphere atmosphere = world.ctx().get<render::Atmosphere>();
+  const render::Fog fog = world.ctx().get<render::Fog>();
+  // The terrain is lit by the sun as it reaches the ground through the scene's air.
+  const glm::vec3 sunAtGround =
+      render::sunIlluminanceAt(sun, world.ctx().tryGet<render::SunTransmittance>(), 0.0);
 
   const float aspect = float(extent.width) / float(extent.height);
   const glm::mat4 view = render::viewRotation(camera);
@@ -102,13 +125,14 @@ void Renderer::updateFrameConstants(ecs::World& world, VkExtent2D extent) {
   f.cameraUp = glm::vec4(up, tanY);
   f.cameraForward = glm::vec4(forward, 0.0f);
   f.sunDirection = glm::vec4(glm::vec3(sun.direction), 8.0f);
-  f.sunIlluminance = glm::vec4(sun.illuminance, 0.0f);
+  f.sunIlluminance = glm::vec4(sunAtGround, 0.0f);
   f.skyZenith = glm::vec4(sky.zenith, 0.0f);
   f.skyHorizon = glm::vec4(sky.horizon, 0.0f);
   f.skyGround = glm::vec4(sky.ground, 0.0f);
-  f.fog = glm::vec4(atmosphere.fogDensityPerMetre, 0.0f, 0.0f, 0.0f);
+  f.fog = glm::vec4(fog.densityPerMetre, hazeRangeMetres_, float(hazeSlices_), 0.0f);
+  f.sunAboveAir = glm::vec4(sun.illuminance, 0.0f);
   f.extent = glm::uvec4(extent.width, extent.height, 0u, 0u);
-  tonemap_.exposure = atmosphere.exposure;
+  tonemap_.exposure = render::exposureScale(world.ctx().get<render::Exposure>().ev100);
 
   if (terrain_) terrain_->cull(f.viewProjection, camera.position);
 }
@@ -166,7 +190,8 @@ std::vector<std::string> Renderer::passNames() const {
 }
 
 std::vector<std::string> Renderer::pipelineNames() const {
-  std::vector<std::string> names = {tonemapper_.pipeline().name(), sky_.pipeline().name()};
+  std::vector<std::string> names = {tonemapper_.pipeline().name()};
+  if (sky_) names.push_back(sky_->pipeline().name());
   if (terrain_) names.push_back(terrain_->pipeline().name());
   if (hud_) names.push_back(hud_->pipeline().name());
   for (const render::RenderFeature* feature : features_) {

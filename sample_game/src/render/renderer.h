@@ -1,12 +1,14 @@
 #pragma once
 // The sample's renderer. It looks at the world once to decide which passes the scene needs:
-//   sky -> [terrain] -> [render features: clouds, clouds composite] -> tonemap -> [hud] -> capture
-// (terrain only with a terrain; the features installed modules registered in
-// engine::render::RenderFeatures, e.g. the clouds only with a cloud layer: their pipelines are
-// not even created otherwise), prepares the features and rebuilds the frame graph when the
-// output size or a feature's resources change, and each frame fills the per-frame constants
-// from the world, records, submits and presents. Windowed and headless runs use it
-// identically; only the PresentTarget differs.
+//   [features before the scene: atmosphere, atmosphere sky] or [sky] -> [terrain] ->
+//   [features after the scene: clouds, clouds composite] -> tonemap -> [hud] -> capture
+// (its own gradient sky only when no feature draws the sky; the terrain hazed by the sky
+// feature's aerial perspective, else fogged; terrain only with a terrain; the
+// features installed modules registered in engine::render::RenderFeatures, e.g. the clouds only
+// with a cloud layer: their pipelines are not even created otherwise), prepares the features and
+// rebuilds the frame graph when the output size or a feature's resources change, and each frame
+// fills the per-frame constants from the world, records, submits and presents. Windowed and
+// headless runs use it identically; only the PresentTarget differs.
 #include <filesystem>
 #include <memory>
 #include <optional>
@@ -66,7 +68,7 @@ class Renderer {
   RendererOptions options_;
   engine::gfx::FrameRing ring_;
   engine::render::Tonemapper tonemapper_;
-  SkyPass sky_;
+  std::unique_ptr<SkyPass> sky_;  // when no feature draws the sky
   std::unique_ptr<TerrainRenderer> terrain_;
   std::vector<engine::render::RenderFeature*> features_;  // owned by their modules
   std::unique_ptr<Hud> hud_;
@@ -75,6 +77,8 @@ class Renderer {
   engine::render::TextureHandle targetHandle_;
   VkExtent2D graphExtent_{0, 0};
   SceneFrameBinding sceneFrame_{};
+  float hazeRangeMetres_ = 0.0f;  // the aerial perspective the terrain reads (graph build)
+  std::uint32_t hazeSlices_ = 0;
   engine::render::TonemapSettings tonemap_{};
   engine::ecs::EventReader<CaptureFrame> captureReader_;
 };

@@ -8,6 +8,8 @@
 #include "engine/gfx/upload.h"
 #include "sample_shaders/terrain.frag.spv.h"
 #include "sample_shaders/terrain.vert.spv.h"
+#include "sample_shaders/terrain_hazed.frag.spv.h"
+#include "sample_shaders/terrain_hazed.vert.spv.h"
 
 namespace sample {
 
@@ -126,7 +128,8 @@ bool boxInFrustum(const glm::mat4& m, const glm::vec3& lo, const glm::vec3& hi) 
 }
 
 TerrainRenderer::TerrainRenderer(gfx::Device& device, const assets::MeshData& mesh,
-                                 VkFormat hdrFormat, VkFormat depthFormat) {
+                                 VkFormat hdrFormat, VkFormat depthFormat, bool aerialPerspective)
+    : aerialPerspective_(aerialPerspective) {
   std::vector<TerrainVertex> vertices(mesh.positions.size());
   for (std::size_t i = 0; i < vertices.size(); ++i) {
     vertices[i] = {mesh.positions[i], mesh.normals[i], glm::vec3(mesh.colors[i])};
@@ -155,9 +158,18 @@ TerrainRenderer::TerrainRenderer(gfx::Device& device, const assets::MeshData& me
   gfx::uploadToBuffer(device, indices_, std::as_bytes(std::span(indices)));
 
   gfx::GraphicsPipelineDesc desc;
-  desc.vertexSpirv = terrain_vert_spv;
-  desc.fragmentSpirv = terrain_frag_spv;
+  desc.vertexSpirv = aerialPerspective ? std::span<const std::uint32_t>(terrain_hazed_vert_spv)
+                                       : std::span<const std::uint32_t>(terrain_vert_spv);
+  desc.fragmentSpirv = aerialPerspective ? std::span<const std::uint32_t>(terrain_hazed_frag_spv)
+                                         : std::span<const std::uint32_t>(terrain_frag_spv);
   desc.bindings = {{0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER}};
+  if (aerialPerspective) {
+    gfx::SamplerDesc clamped;
+    clamped.debugName = "terrain haze";
+    sampler_ = gfx::Sampler(device, clamped);
+    desc.bindings.push_back({1, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER,
+                             VK_FORMAT_R16G16B16A16_SFLOAT, VK_IMAGE_VIEW_TYPE_3D});
+  }
   desc.colorFormats = {hdrFormat};
   desc.depthFormat = depthFormat;
   desc.depthTest = true;
@@ -200,10 +212,11 @@ void TerrainRenderer::draw(VkCommandBuffer cmd) const {
 }
 
 SceneTargets addTerrainPass(render::FrameGraph& graph, const TerrainRenderer& terrain,
-                            render::TextureHandle hdr, VkFormat depthFormat,
-                            const SceneFrameBinding* frame) {
+                            render::TextureHandle hdr, render::TextureHandle aerialPerspective,
+                            VkFormat depthFormat, const SceneFrameBinding* frame) {
   struct Data {
     SceneTargets targets;
+    render::TextureHandle haze;
   };
   const Data& data = graph.addPass<Data>(
       "terrain", render::PassType::Graphics,
@@ -213,10 +226,17 @@ SceneTargets addTerrainPass(render::FrameGraph& graph, const TerrainRenderer& te
         d.targets.depth = builder.createTexture("scene depth", depthDesc);
         d.targets.depth = builder.depthAttachment(d.targets.depth, VK_ATTACHMENT_LOAD_OP_CLEAR);
         d.targets.hdr = builder.colorAttachment(hdr, VK_ATTACHMENT_LOAD_OP_LOAD);
+        if (terrain.hazedByAerialPerspective()) {
+          d.haze = builder.read(aerialPerspective, render::Access::SampledReadGeneral);
+        }
       },
-      [&terrain, frame](const Data&, render::PassContext& context) {
+      [&terrain, frame](const Data& d, render::PassContext& context) {
         gfx::DescriptorWriter writer;
         writer.uniformBuffer(0, frame->slice.buffer, frame->slice.offset, frame->slice.size);
+        if (d.haze.valid()) {
+          writer.combinedImageSampler(1, context.view(d.haze), terrain.hazeSampler(),
+                                      VK_IMAGE_LAYOUT_GENERAL);
+        }
         context.bind(terrain.pipeline(), writer);
         terrain.draw(context.cmd());
       });

@@ -1,7 +1,8 @@
 #pragma once
 // The terrain on the GPU: one vertex and index buffer, the triangles sorted into a grid of
 // chunks with bounding boxes so each frame draws only the chunks in the view frustum, and a
-// depth-tested (reversed-Z) graphics pipeline lit by the sun and sky with distance fog.
+// depth-tested (reversed-Z) graphics pipeline lit by the sun and sky and hazed by the
+// atmosphere's aerial perspective, or by distance fog in scenes without one.
 #include <array>
 #include <vector>
 
@@ -47,10 +48,13 @@ bool boxInFrustum(const glm::mat4& viewProjection, const glm::vec3& boundsMin,
 
 class TerrainRenderer {
  public:
+  // `aerialPerspective`: hazed by a feature's aerial perspective (else by the fog).
   TerrainRenderer(engine::gfx::Device& device, const engine::assets::MeshData& mesh,
-                  VkFormat hdrFormat, VkFormat depthFormat);
+                  VkFormat hdrFormat, VkFormat depthFormat, bool aerialPerspective);
 
   const engine::gfx::Pipeline& pipeline() const { return pipeline_; }
+  bool hazedByAerialPerspective() const { return aerialPerspective_; }
+  VkSampler hazeSampler() const { return sampler_.vk(); }
   // Frustum culling for this frame (camera-relative view-projection and camera position).
   void cull(const glm::mat4& viewProjection, const glm::dvec3& cameraPosition);
   void draw(VkCommandBuffer cmd) const;
@@ -64,6 +68,8 @@ class TerrainRenderer {
   std::vector<TerrainChunk> chunks_;
   std::vector<IndexRange> visible_;  // this frame's draws; capacity reserved once
   std::size_t visibleCount_ = 0;
+  bool aerialPerspective_ = false;
+  engine::gfx::Sampler sampler_;  // the aerial perspective's: linear, clamped
   engine::gfx::Pipeline pipeline_;
 };
 
@@ -72,9 +78,11 @@ struct SceneTargets {
   engine::render::TextureHandle depth;
 };
 
-// "terrain": draws the visible chunks over `hdr` into a new reversed-Z depth buffer.
+// "terrain": draws the visible chunks over `hdr` (the sky) into a new reversed-Z depth buffer,
+// hazed by `aerialPerspective` when the terrain renderer was made for it.
 SceneTargets addTerrainPass(engine::render::FrameGraph& graph, const TerrainRenderer& terrain,
-                            engine::render::TextureHandle hdr, VkFormat depthFormat,
+                            engine::render::TextureHandle hdr,
+                            engine::render::TextureHandle aerialPerspective, VkFormat depthFormat,
                             const SceneFrameBinding* frame);
 
 }  // namespace sample

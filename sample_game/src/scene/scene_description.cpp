@@ -23,6 +23,9 @@ CameraDescription readCamera(const JsonReader& r) {
   const std::string quality =
       r.choice("cloudQuality", {"low", "medium", "high", "ultra", "reference"}, "medium");
   clouds::parseQuality(quality, &c.cloudQuality);
+  const std::string sky =
+      r.choice("atmosphereQuality", {"low", "medium", "high", "reference"}, "medium");
+  atmosphere::parseQuality(sky, &c.atmosphereQuality);
   r.finish();
   return c;
 }
@@ -103,12 +106,53 @@ CloudDescription readClouds(const JsonReader& r, const std::filesystem::path& sc
   return c;
 }
 
+glm::vec3 coefficients(const JsonReader& r, const std::string& key, const glm::vec3& fallback) {
+  return glm::vec3(r.vec3(key, 0.0, 1e-3, glm::dvec3(fallback)));
+}
+
 AtmosphereDescription readAtmosphere(const JsonReader& r) {
   AtmosphereDescription a;
-  a.fogDensityPerMetre = r.number("fogDensityPerMetre", 0.0, 0.01, a.fogDensityPerMetre);
-  a.exposure = r.number("exposure", 0.01, 100.0, a.exposure);
+  atmosphere::Parameters& p = a.parameters;
+  if (r.choice("preset", {"earth", "hazy"}, "earth") == "hazy") {
+    // Continental haze: four times Earth's clear-day aerosols, a thicker aerosol layer.
+    p.mieScatteringPerMetre *= 4.0f;
+    p.mieExtinctionPerMetre *= 4.0f;
+    p.mieScaleHeightMetres = 1800.0f;
+  }
+  p.rayleighScatteringPerMetre =
+      coefficients(r, "rayleighScatteringPerMetre", p.rayleighScatteringPerMetre);
+  p.rayleighScaleHeightMetres =
+      float(r.number("rayleighScaleHeightMetres", 10.0, 1e6, p.rayleighScaleHeightMetres));
+  p.mieScatteringPerMetre = coefficients(r, "mieScatteringPerMetre", p.mieScatteringPerMetre);
+  p.mieExtinctionPerMetre = coefficients(r, "mieExtinctionPerMetre", p.mieExtinctionPerMetre);
+  p.mieScaleHeightMetres =
+      float(r.number("mieScaleHeightMetres", 10.0, 1e6, p.mieScaleHeightMetres));
+  p.miePhaseG = float(r.number("miePhaseG", -0.99, 0.99, p.miePhaseG));
+  p.ozoneAbsorptionPerMetre = coefficients(r, "ozoneAbsorptionPerMetre", p.ozoneAbsorptionPerMetre);
+  p.groundAlbedo = glm::vec3(r.vec3("groundAlbedo", 0.0, 1.0, glm::dvec3(p.groundAlbedo)));
   r.finish();
+  // Cross-field rules (extinction at least scattering) are the module's; report them here too.
+  if (const std::string problem = atmosphere::validateParameters(p); !problem.empty()) {
+    throw engine::Error(r.file() + ": atmosphere: " + problem);
+  }
   return a;
+}
+
+FogDescription readFog(const JsonReader& r) {
+  FogDescription f;
+  f.densityPerMetre = r.number("densityPerMetre", 0.0, 0.01);
+  r.finish();
+  return f;
+}
+
+ExposureDescription readExposure(const JsonReader& r) {
+  ExposureDescription e;
+  e.automatic = r.choice("mode", {"auto", "manual"}, "auto") == "auto";
+  e.ev100 = r.number("ev100", -10.0, 25.0, e.ev100);
+  e.compensationEv = r.number("compensationEv", -10.0, 10.0, e.compensationEv);
+  e.adaptationSeconds = r.number("adaptationSeconds", 0.0, 60.0, e.adaptationSeconds);
+  r.finish();
+  return e;
 }
 
 }  // namespace
@@ -125,6 +169,11 @@ SceneDescription loadSceneDescription(const std::filesystem::path& file) {
   if (root.has("terrain")) scene.terrain = readTerrain(root.object("terrain"), dir);
   if (root.has("clouds")) scene.clouds = readClouds(root.object("clouds"), dir);
   if (root.has("atmosphere")) scene.atmosphere = readAtmosphere(root.object("atmosphere"));
+  if (root.has("fog")) scene.fog = readFog(root.object("fog"));
+  if (scene.atmosphere && scene.fog) {
+    root.fail("fog", "a scene has an atmosphere or fog, not both (the atmosphere hazes itself)");
+  }
+  if (root.has("exposure")) scene.exposure = readExposure(root.object("exposure"));
   root.finish();
   return scene;
 }

@@ -7,6 +7,7 @@
 
 #include <glm/glm.hpp>
 
+#include "atmosphere/atmosphere.h"
 #include "clouds/clouds.h"
 
 namespace sample {
@@ -20,6 +21,8 @@ struct CameraDescription {
   // Cost/accuracy preset of this camera's clouds ("low", "medium", "high", "ultra",
   // "reference"); --quality and the number keys 1-5 override it.
   clouds::Quality cloudQuality = clouds::Quality::Medium;
+  // Cost/accuracy preset of this camera's atmosphere ("low", "medium", "high", "reference").
+  atmosphere::Quality atmosphereQuality = atmosphere::Quality::Medium;
 };
 
 struct SunDescription {
@@ -27,7 +30,7 @@ struct SunDescription {
   double hoursPerSecond = 0.0;        // how fast time of day advances (0: frozen)
   double maxElevationDegrees = 65.0;  // at noon
   double azimuthOffsetDegrees = 0.0;  // rotates the sun's path around the vertical
-  double illuminance = 10.0;          // scale of the sun's linear RGB illuminance
+  double illuminance = 127.0;  // klx at the top of the atmosphere (white); the air reddens it
 };
 
 struct TerrainDescription {
@@ -41,9 +44,22 @@ struct CloudDescription {
   std::optional<std::filesystem::path> weatherMap;  // painted map (PNG), relative to the scene
 };
 
+// The physical sky and haze (the atmosphere module): a named preset ("earth", "hazy") with
+// any of its parameters overridden.
 struct AtmosphereDescription {
-  double fogDensityPerMetre = 2e-5;
-  double exposure = 1.0;
+  atmosphere::Parameters parameters;
+};
+
+// The cheap alternative to an atmosphere: the renderer's gradient sky and exponential fog.
+struct FogDescription {
+  double densityPerMetre = 2e-5;
+};
+
+struct ExposureDescription {
+  bool automatic = true;        // "auto": metered from the sun and sky; "manual": ev100
+  double ev100 = 15.0;          // manual
+  double compensationEv = 0.0;  // auto
+  double adaptationSeconds = 0.5;
 };
 
 struct SceneDescription {
@@ -53,7 +69,9 @@ struct SceneDescription {
   SunDescription sun;
   std::optional<TerrainDescription> terrain;
   std::optional<CloudDescription> clouds;
-  AtmosphereDescription atmosphere;
+  std::optional<AtmosphereDescription> atmosphere;  // exclusive with fog
+  std::optional<FogDescription> fog;
+  ExposureDescription exposure;
 };
 
 // Reads and validates a scene file. Throws engine::Error "<file>: <json path>: <reason>" for

@@ -1,12 +1,16 @@
 #include "scene/scene_loader.h"
 
+#include "atmosphere/ecs/atmosphere_components.h"
+#include "atmosphere/ecs/atmosphere_module.h"
 #include "clouds/ecs/cloud_components.h"
 #include "clouds/ecs/clouds_module.h"
 #include "engine/core/log.h"
 #include "engine/ecs/frame_time.h"
 #include "engine/platform/input.h"
+#include "engine/render/exposure.h"
 #include "engine/render/scene_components.h"
 #include "game/cloud_quality_controls.h"
+#include "game/exposure_control.h"
 #include "game/flight.h"
 #include "game/game_components.h"
 #include "game/terrain_height.h"
@@ -49,10 +53,16 @@ void populateScene(ecs::App& app, const SceneDescription& scene,
   world.ctx().emplaceOrReplace<platform::InputState>();
   world.ctx().emplaceOrReplace<CaptureRequest>();
   world.ctx().emplaceOrReplace<ExitRequest>();
-  render::Atmosphere atmosphere;
-  atmosphere.fogDensityPerMetre = static_cast<float>(scene.atmosphere.fogDensityPerMetre);
-  atmosphere.exposure = static_cast<float>(scene.atmosphere.exposure);
-  world.ctx().emplaceOrReplace<render::Atmosphere>(atmosphere);
+  render::Exposure exposure;
+  exposure.mode =
+      scene.exposure.automatic ? render::Exposure::Mode::Auto : render::Exposure::Mode::Manual;
+  exposure.ev100 = static_cast<float>(scene.exposure.ev100);
+  exposure.compensationEv = static_cast<float>(scene.exposure.compensationEv);
+  exposure.adaptationSeconds = static_cast<float>(scene.exposure.adaptationSeconds);
+  world.ctx().emplaceOrReplace<render::Exposure>(exposure);
+  render::Fog fog;
+  if (scene.fog) fog.densityPerMetre = static_cast<float>(scene.fog->densityPerMetre);
+  world.ctx().emplaceOrReplace<render::Fog>(fog);
 
   // The player: a camera flown like an aircraft.
   const ecs::Entity player = world.create();
@@ -66,6 +76,8 @@ void populateScene(ecs::App& app, const SceneDescription& scene,
   world.emplace<Aircraft>(player, aircraft);
   world.emplace<clouds::ecs::CloudQuality>(player,
                                            clouds::ecs::CloudQuality{scene.camera.cloudQuality});
+  world.emplace<atmosphere::ecs::AtmosphereQuality>(
+      player, atmosphere::ecs::AtmosphereQuality{scene.camera.atmosphereQuality});
 
   // The sun and its clock.
   const ecs::Entity sun = world.create();
@@ -77,7 +89,9 @@ void populateScene(ecs::App& app, const SceneDescription& scene,
   time.illuminance = scene.sun.illuminance;
   world.emplace<TimeOfDay>(sun, time);
   world.emplace<render::Sun>(sun, sunLightFor(time));
-  world.ctx().emplaceOrReplace<render::SkyLight>(skyLightFor(sunDirectionAt(time)));
+  // Until a sky measures itself, the analytic sky's light.
+  world.ctx().emplaceOrReplace<render::SkyLight>(
+      skyLightFor(sunDirectionAt(time), time.illuminance));
 
   // The terrain, for both the renderer and the ground collision.
   if (terrain) {
@@ -85,6 +99,12 @@ void populateScene(ecs::App& app, const SceneDescription& scene,
     world.ctx().emplaceOrReplace<TerrainMesh>(TerrainMesh{terrain->mesh});
     const ecs::Entity entity = world.create();
     world.emplace<TerrainInstance>(entity, TerrainInstance{terrain->path});
+  }
+
+  // The air, as data; the atmosphere module installs only when this exists.
+  if (scene.atmosphere) {
+    world.emplace<atmosphere::ecs::Atmosphere>(
+        world.create(), atmosphere::ecs::Atmosphere{scene.atmosphere->parameters});
   }
 
   // The clouds, as data; the module below installs only when this exists.
@@ -98,9 +118,15 @@ void populateScene(ecs::App& app, const SceneDescription& scene,
   installTimeOfDay(app.scheduler());
   installFlight(app.scheduler());
   installCloudQualityControls(app.scheduler());
+  // The atmosphere first: its passes draw the sky the clouds' passes read. It installs only
+  // with an Atmosphere and a device that can run it; otherwise the analytic sky stands in.
+  if (!app.addModule<atmosphere::ecs::AtmosphereModule>()) {
+    installAnalyticSky(world, app.scheduler());
+  }
   // Installs only with a cloud layer and a device that can run it; otherwise it warns and the
   // scene runs without clouds.
   app.addModule<clouds::ecs::CloudsModule>();
+  installExposureControl(app.scheduler());
 }
 
 }  // namespace sample

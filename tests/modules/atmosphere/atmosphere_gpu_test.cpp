@@ -214,7 +214,8 @@ TEST_F(AtmosphereGpu, SunDiscIsDrawnLimbDarkenedThroughTheAir) {
   const glm::vec3 transmittance = atmosphere::sunTransmittance(
       earth, view.position.y, glm::dvec3(atmosphere::tools::sunDirection(view)));
   const double expectedCentre =
-      transmittance.g * atmosphere::model::sunDiscRadiance(1.0, earth.sunAngularRadiusRadians);
+      transmittance.g * atmosphere::model::sunDiscRadiance(
+                            0.0, 1.0 - std::cos(double(earth.sunAngularRadiusRadians)));
   EXPECT_NEAR(centre.g, expectedCentre, 0.03 * expectedCentre);
   EXPECT_GT(centre.r / centre.b, 1.2) << "the low sun is reddened by the air";
   EXPECT_LT(corner.g, 1e-3 * centre.g) << "outside the disc only sky";

@@ -95,18 +95,19 @@ TEST(AtmosphereModel, PhaseFunctionsIntegrateToOneOverTheSphere) {
 
 TEST(AtmosphereModel, SunDiscCarriesTheSunsIlluminanceAndDarkensTowardsItsLimb) {
   const double radius = Parameters{}.sunAngularRadiusRadians;
+  const auto versine = [](double angle) { return 2.0 * std::pow(std::sin(0.5 * angle), 2.0); };
   const int steps = 20000;
   double illuminance = 0.0;
   for (int i = 0; i < steps; ++i) {
     const double angle = (i + 0.5) * radius / steps;
-    illuminance += atmosphere::model::sunDiscRadiance(std::cos(angle), radius) * 2.0 * kPi *
+    illuminance += atmosphere::model::sunDiscRadiance(versine(angle), versine(radius)) * 2.0 * kPi *
                    std::sin(angle) * radius / steps;
   }
   EXPECT_NEAR(illuminance, 1.0, 1e-3);
-  const double centre = atmosphere::model::sunDiscRadiance(1.0, radius);
-  const double limb = atmosphere::model::sunDiscRadiance(std::cos(radius * 0.999), radius);
+  const double centre = atmosphere::model::sunDiscRadiance(0.0, versine(radius));
+  const double limb = atmosphere::model::sunDiscRadiance(versine(radius * 0.999), versine(radius));
   EXPECT_NEAR(limb / centre, 0.4 + 0.6 * std::sqrt(1.0 - 0.999 * 0.999), 1e-3);
-  EXPECT_EQ(atmosphere::model::sunDiscRadiance(std::cos(radius * 1.01), radius), 0.0);
+  EXPECT_EQ(atmosphere::model::sunDiscRadiance(versine(radius * 1.01), versine(radius)), 0.0);
 }
 
 TEST(AtmosphereModel, LutParameterisationsRoundTrip) {
@@ -129,8 +130,11 @@ TEST(AtmosphereModel, LutParameterisationsRoundTrip) {
         const dvec2 texel = (glm::floor(uv * size) + 0.5) / size;
         double viewZenithCos = 0.0;
         double lightViewCos = 0.0;
-        skyViewParams(texel, cameraRadius, a, size, viewZenithCos, lightViewCos);
-        const dvec2 again = skyViewUv(viewZenithCos, lightViewCos, cameraRadius, a, size);
+        const double beta = horizonDip(cameraRadius, a);
+        skyViewParams(texel, beta, size, viewZenithCos, lightViewCos);
+        const dvec2 again = skyViewUv(viewZenithCos, lightViewCos, beta, size);
+        // The lower half of the LUT is exactly the directions that hit the ground.
+        EXPECT_EQ(rayHitsGround(cameraRadius, viewZenithCos, a), texel.y > 0.5) << altitude;
         EXPECT_NEAR(again.x, texel.x, 1e-6) << altitude;
         EXPECT_NEAR(again.y, texel.y, 1e-6) << altitude;
       }

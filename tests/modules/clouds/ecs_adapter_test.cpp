@@ -88,6 +88,39 @@ TEST(CloudsEcsAdapter, TheInputsComeFromTheWorldAndTheHostFrame) {
       << "a teleport is a camera cut";
 }
 
+TEST(CloudsEcsAdapter, TheSunReachesTheLayerThroughTheAirAndTheHostsHazeIsPassedOn) {
+  AdapterWorld w;
+  engine::render::Sun s;
+  s.direction = glm::normalize(glm::dvec3(0.0, 0.2, 1.0));
+  s.illuminance = glm::vec3(100.0f);
+  w.world.emplace<engine::render::Sun>(w.world.create(), s);
+  double askedAltitude = -1.0;
+  w.world.ctx().emplace<engine::render::SunTransmittance>(
+      engine::render::SunTransmittance{[&](double altitude, const glm::dvec3&) {
+        askedAltitude = altitude;
+        return glm::vec3(0.9f, 0.6f, 0.3f);
+      }});
+  clouds::ecs::HostFrame host = hostFrame();
+  host.aerialPerspectiveView = reinterpret_cast<VkImageView>(std::uintptr_t{0x1234});
+  host.aerialPerspectiveSlices = 32;
+  host.aerialPerspectiveRangeMetres = 80000.0f;
+  const clouds::FrameInputs in = clouds::ecs::cloudFrameInputs(w.world, host);
+  const clouds::Settings layer = clouds::ecs::cloudSettings(w.world);
+  EXPECT_DOUBLE_EQ(askedAltitude, 0.5 * (double(layer.layerBottomMetres) + layer.layerTopMetres))
+      << "the sun as it reaches the middle of the layer";
+  for (int c = 0; c < 3; ++c) {
+    EXPECT_FLOAT_EQ(in.sunIlluminance[c], glm::vec3(90.0f, 60.0f, 30.0f)[c]);
+  }
+  EXPECT_EQ(in.aerialPerspective.view, host.aerialPerspectiveView);
+  EXPECT_EQ(in.aerialPerspective.slices, 32u);
+  EXPECT_EQ(in.aerialPerspective.rangeMetres, 80000.0f);
+  EXPECT_EQ(in.aerialPerspective.radianceScale, s.illuminance)
+      << "the haze is in units of the sun above the air";
+  EXPECT_EQ(clouds::ecs::cloudFrameInputs(w.world, hostFrame()).aerialPerspective.view,
+            VK_NULL_HANDLE)
+      << "no haze without the host's";
+}
+
 TEST(CloudsEcsAdapter, TheModuleNeedsACloudLayerAndARenderer) {
   clouds::ecs::CloudsModule module;
   engine::ecs::World world;

@@ -96,7 +96,13 @@ const std::map<std::string, std::size_t> kCppOffsets = {FIELD(inverseProjection)
                                                         FIELD(historyClampSpreadPixels),
                                                         FIELD(subpixelOffset),
                                                         FIELD(upsamplingMaxSamples),
-                                                        FIELD(padding8)};
+                                                        FIELD(padding8),
+                                                        FIELD(aerialPerspectiveScale),
+                                                        FIELD(aerialPerspectiveRange),
+                                                        FIELD(aerialPerspectiveSlices),
+                                                        FIELD(padding9),
+                                                        FIELD(padding10),
+                                                        FIELD(padding11)};
 #undef FIELD
 
 std::string reflect() {

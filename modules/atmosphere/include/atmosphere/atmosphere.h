@@ -141,13 +141,14 @@ struct Outputs {
   OutputImage transmittance;       // the parameterisation of atmosphere_model.h
   OutputImage multipleScattering;  // ditto
   OutputImage skyView;             // ditto, for this frame's camera altitude; unit sun
-  // The aerial perspective: 3D, x and y this frame's screen (its view and projection), slice
-  // s (texel centre) at aerialPerspectiveRangeMetres * ((s + 0.5) / slices)^2 along each
-  // pixel's ray, so a distance d reads w = sqrt(d / range); rgb the radiance the air in front
-  // scatters towards the camera for a sun of unit illuminance (multiply by sunIlluminance), a
-  // the transmittance (mean of the channels).
+  // The aerial perspective, laid out as vkfx/aerial_perspective.glsl says (read it with that
+  // header's aerialPerspectiveAt()): 3D, x and y this frame's screen (its view and
+  // projection), slice s (texel centre) at aerialPerspectiveRangeMetres * ((s + 0.5) /
+  // slices)^2 along each pixel's ray; rgb the radiance the air in front scatters towards the
+  // camera for a sun of unit illuminance (multiply by sunIlluminance), a the transmittance
+  // (mean of the channels).
   OutputImage aerialPerspective;
-  float aerialPerspectiveRangeMetres = 0.0f;
+  float aerialPerspectiveRangeMetres = 0.0f;  // of the prepared settings
   // The sky's radiance around the camera in host units, equirectangular (64 x 32): u the
   // azimuth from +X towards +Z, v = 0 at the zenith, 0.5 at the horizon, 1 at the nadir (the
   // clouds module's FrameInputs::skyView convention).

@@ -91,16 +91,18 @@ Lut Reference::skyView(double altitudeMetres, double sunZenithCos) const {
   Lut lut;
   lut.width = settings_.skyViewWidth;
   lut.height = settings_.skyViewHeight;
-  const double r = a.bottomRadius + std::max(altitudeMetres, 1.0);
+  // As the GPU's uniforms have them: the camera's radius in float, the dip from it in double.
+  const double r = double(float(a.bottomRadius + std::max(altitudeMetres, 1.0)));
   const glm::dvec2 size(lut.width, lut.height);
+  const double beta = horizonDip(r, a);
   fill(lut, &transmittance_, &multiScattering_, [&](std::uint32_t x, std::uint32_t y) {
     double viewZenithCos = 0.0;
     double lightViewCos = 0.0;
-    skyViewParams((glm::dvec2(x, y) + 0.5) / size, r, a, size, viewZenithCos, lightViewCos);
+    skyViewParams((glm::dvec2(x, y) + 0.5) / size, beta, size, viewZenithCos, lightViewCos);
     const Scattering s =
         integrateScattering(glm::dvec3(0.0, r, 0.0), skyViewDirection(viewZenithCos, lightViewCos),
                             sunInSkyViewFrame(sunZenithCos), 1e9, settings_.skyViewSamples,
-                            kPhaseAtmosphere, 1u, double(settings_.multiScatteringSize), 0u, a);
+                            kPhaseAtmosphere, 1u, double(settings_.multiScatteringSize), 1u, a);
     return s.luminance;
   });
   return lut;

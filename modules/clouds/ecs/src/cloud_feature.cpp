@@ -114,16 +114,11 @@ void CloudFeature::reportError(const clouds::Error& error) {
   errorLogged_ = true;
 }
 
-void CloudFeature::dispatch(VkCommandBuffer cmd, VkExtent2D extent, VkImageView depth,
-                            std::uint64_t frameIndex) {
-  HostFrame host;
-  host.commandBuffer = cmd;
-  host.extent = extent;
-  host.depthView = depth;
-  host.weatherView = weatherMap_ ? weatherMap_->view() : VK_NULL_HANDLE;
-  host.frameIndex = frameIndex;
+void CloudFeature::dispatch(const HostFrame& host) {
+  HostFrame frame = host;
+  frame.weatherView = weatherMap_ ? weatherMap_->view() : VK_NULL_HANDLE;
   clouds::Error error;
-  dispatched_ = context_->dispatch(cloudFrameInputs(world_, host), settings_, &error);
+  dispatched_ = context_->dispatch(cloudFrameInputs(world_, frame), settings_, &error);
   if (dispatched_) {
     world_.ctx().get<CloudStatus>().lastError.clear();
   } else {
@@ -158,20 +153,37 @@ SceneTextures CloudFeature::addPasses(FrameGraph& graph, const SceneTextures& sc
   const TextureHandle depth = import("cloud depth", imported_.depth);
 
   struct MarchData {
-    TextureHandle sceneDepth, radiance, depth;
+    TextureHandle sceneDepth, skyRadiance, aerialPerspective, radiance, depth;
   };
   const MarchData& march = graph.addPass<MarchData>(
       "clouds", PassType::Compute,
       [&](PassBuilder& builder, MarchData& d) {
         if (scene.depth.valid()) d.sceneDepth = builder.read(scene.depth, Access::SampledRead);
+        if (scene.skyRadiance.valid()) {
+          d.skyRadiance = builder.read(scene.skyRadiance, Access::SampledReadGeneral);
+        }
+        if (scene.aerialPerspective.valid()) {
+          d.aerialPerspective = builder.read(scene.aerialPerspective, Access::SampledReadGeneral);
+        }
         d.radiance = builder.write(radiance, Access::StorageWrite);
         d.depth = builder.write(depth, Access::StorageWrite);
       },
-      [this](const MarchData& d, PassContext& context) {
+      [this, slices = scene.aerialPerspectiveSlices, range = scene.aerialPerspectiveRangeMetres](
+          const MarchData& d, PassContext& context) {
+        const auto viewOf = [&](TextureHandle h) {
+          return h.valid() ? context.view(h) : VK_NULL_HANDLE;
+        };
         const VkExtent3D extent = context.extent(d.radiance);
-        const VkImageView sceneDepth =
-            d.sceneDepth.valid() ? context.view(d.sceneDepth) : VK_NULL_HANDLE;
-        dispatch(context.cmd(), {extent.width, extent.height}, sceneDepth, context.frameIndex());
+        HostFrame host;
+        host.commandBuffer = context.cmd();
+        host.extent = {extent.width, extent.height};
+        host.depthView = viewOf(d.sceneDepth);
+        host.skyRadianceView = viewOf(d.skyRadiance);
+        host.aerialPerspectiveView = viewOf(d.aerialPerspective);
+        host.aerialPerspectiveSlices = slices;
+        host.aerialPerspectiveRangeMetres = range;
+        host.frameIndex = context.frameIndex();
+        dispatch(host);
       });
 
   struct CompositeData {
@@ -187,7 +199,9 @@ SceneTextures CloudFeature::addPasses(FrameGraph& graph, const SceneTextures& sc
         const VkExtent3D extent = context.extent(d.hdr);
         composite(context.cmd(), context.view(d.hdr), {extent.width, extent.height});
       });
-  return SceneTextures{composited.hdr, scene.depth};
+  SceneTextures out = scene;
+  out.hdr = composited.hdr;
+  return out;
 }
 
 }  // namespace clouds::ecs

@@ -2,8 +2,10 @@
 // The clouds module as a render feature of the engine: it owns a clouds::Context on the
 // engine's device (and the layer's painted weather map, when it has one), prepares it outside
 // the frame, and adds two passes to the renderer's frame graph:
-//   "clouds"            reads the scene depth and records Context::dispatch with the inputs
-//                       built from the world at that moment (cloud_frame.h);
+//   "clouds"            reads the scene depth (and the sky's radiance and the aerial
+//                       perspective when a feature that draws the sky provides them) and
+//                       records Context::dispatch with the inputs built from the world at that
+//                       moment (cloud_frame.h);
 //   "clouds composite"  applies the result over the scene colour (colour * T + radiance).
 // The module's outputs are imported into the graph so later passes can read them.
 #include <memory>
@@ -17,6 +19,7 @@
 namespace clouds::ecs {
 
 struct CloudLayer;
+struct HostFrame;
 
 class CloudFeature final : public engine::render::RenderFeature {
  public:
@@ -33,8 +36,7 @@ class CloudFeature final : public engine::render::RenderFeature {
   void finish(std::uint64_t lastFrameIndex) override;
 
  private:
-  void dispatch(VkCommandBuffer cmd, VkExtent2D extent, VkImageView depth,
-                std::uint64_t frameIndex);
+  void dispatch(const HostFrame& host);
   void composite(VkCommandBuffer cmd, VkImageView color, VkExtent2D extent);
   void reportError(const clouds::Error& error);
 

@@ -37,13 +37,25 @@ clouds::FrameInputs cloudFrameInputs(engine::ecs::World& world, const HostFrame&
     in.cameraPosition = camera.position;
     in.reset = camera.cut;
   });
+  const clouds::Settings settings = cloudSettings(world);
+  const double layerMiddle = 0.5 * (double(settings.layerBottomMetres) + settings.layerTopMetres);
+  const auto* transmittance = world.ctx().tryGet<render::SunTransmittance>();
   world.view<const render::Sun>().each([&](const render::Sun& sun) {
     in.sunDirection = glm::vec3(sun.direction);
-    in.sunIlluminance = sun.illuminance;
+    in.sunIlluminance = render::sunIlluminanceAt(sun, transmittance, layerMiddle);
+    in.aerialPerspective.radianceScale = sun.illuminance;
   });
   if (const auto* sky = world.ctx().tryGet<render::SkyLight>()) {
     in.ambientTop = sky->zenith;
     in.ambientBottom = glm::mix(sky->horizon, sky->ground, 0.5f);
+  }
+  in.skyView = host.skyRadianceView;
+  in.skyLayout = VK_IMAGE_LAYOUT_GENERAL;
+  if (host.aerialPerspectiveView != VK_NULL_HANDLE) {
+    in.aerialPerspective.view = host.aerialPerspectiveView;
+    in.aerialPerspective.layout = VK_IMAGE_LAYOUT_GENERAL;
+    in.aerialPerspective.slices = host.aerialPerspectiveSlices;
+    in.aerialPerspective.rangeMetres = host.aerialPerspectiveRangeMetres;
   }
   if (const auto* time = world.ctx().tryGet<engine::ecs::FrameTime>()) {
     in.timeSeconds = time->elapsedSeconds;

@@ -305,6 +305,21 @@ struct FrameInputs {
   VkImageView skyView = VK_NULL_HANDLE;
   VkImageLayout skyLayout = VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL;
 
+  // Optional aerial perspective: the haze between the camera and every distance, as a 3D
+  // volume laid out as vkfx/aerial_perspective.glsl says (the atmosphere module's
+  // Outputs::aerialPerspective). With it the clouds' radiance output is hazed at their
+  // transmittance-weighted depth, rgb * T_air + L_air * (1 - T_clouds), the way the host's
+  // geometry is hazed by the same volume; the transmittance output stays the clouds' own.
+  struct AerialPerspective {
+    VkImageView view = VK_NULL_HANDLE;  // 3D; none: the clouds are not hazed
+    VkImageLayout layout = VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL;  // sampled in this layout
+    std::uint32_t slices = 0;                                         // its depth, >= 1 with a view
+    float rangeMetres = 0.0f;       // the distance of its last slice, > 0 with a view
+    glm::vec3 radianceScale{1.0f};  // multiplies its rgb (the atmosphere's: the sun's
+                                    //   illuminance at the top of the atmosphere), >= 0
+  };
+  AerialPerspective aerialPerspective;
+
   // Optional painted weather map (R coverage, G type, B density; any size, sampled with
   // bilinear filtering in `weatherLayout`) replacing the procedural one.
   VkImageView weatherView = VK_NULL_HANDLE;

@@ -109,6 +109,7 @@ clouds::FrameInputs CloudHarness::makeInputs(const CloudView& view, VkExtent2D e
   in.timeSeconds = view.timeSeconds;
   in.weatherView = view.weatherView;
   in.skyView = view.skyView;
+  in.aerialPerspective = view.aerialPerspective;
   in.frameIndex = frameIndex_;
   in.reset = cutNext_;
   return in;

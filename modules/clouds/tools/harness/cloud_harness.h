@@ -40,6 +40,8 @@ struct CloudView {
   // Optional host images (sampled, SHADER_READ_ONLY_OPTIMAL): painted weather, sky radiance.
   VkImageView weatherView = VK_NULL_HANDLE;
   VkImageView skyView = VK_NULL_HANDLE;
+  // Optional haze (FrameInputs::aerialPerspective), its view sampled in SHADER_READ_ONLY_OPTIMAL.
+  clouds::FrameInputs::AerialPerspective aerialPerspective;
 };
 
 glm::vec3 sunDirection(const CloudView& view);

@@ -1,9 +1,10 @@
 #pragma once
-// Effects that modules add to a renderer they do not own (the clouds; later the atmosphere,
-// god rays...). The renderer publishes a RenderDevice before GPU modules install; a module
-// that installs registers its RenderFeature in RenderFeatures; the renderer then prepares each
-// feature outside command recording and lets it add its passes after the opaque scene, in
-// registration order. A scene without the module has no feature and runs none of its code.
+// Effects that modules add to a renderer they do not own (the atmosphere, the clouds; later god
+// rays...). The renderer publishes a RenderDevice before GPU modules install; a module that
+// installs registers its RenderFeature in RenderFeatures; the renderer then prepares each
+// feature outside command recording and lets it add its passes before the opaque scene (what
+// the scene reads: the sky, its light and haze) and after it (the clouds), in registration
+// order. A scene without the module has no feature and runs none of its code.
 #include <vulkan/vulkan.h>
 
 #include <cstdint>
@@ -23,22 +24,42 @@ struct RenderDevice {
   VkExtent2D maxExtent{0, 0};  // the largest output the renderer will ask for
 };
 
-// The scene's colour and depth at the output extent; `depth` is invalid when the scene has no
-// geometry.
+// What the passes so far made of the scene, at the output extent `extent`: its colour and
+// depth (`depth` invalid when the scene has no geometry). A feature that draws the sky also
+// hands the renderer and later features its light: the sky's radiance around the camera and
+// the aerial perspective (invalid when no feature provides them). A renderer given an aerial
+// perspective hazes the geometry it draws with it (vkfx/aerial_perspective.glsl).
 struct SceneTextures {
   TextureHandle hdr;
   TextureHandle depth;
+  VkExtent2D extent{0, 0};
+  // The sky's radiance (kcd/m^2), equirectangular: u the azimuth from +X towards +Z, v = 0 at
+  // the zenith, 0.5 at the horizon. Kept in GENERAL (read it with Access::SampledReadGeneral).
+  TextureHandle skyRadiance;
+  // The haze between the camera and every distance, laid out as vkfx/aerial_perspective.glsl
+  // says, its radiance per unit of Sun::illuminance. Kept in GENERAL.
+  TextureHandle aerialPerspective;
+  std::uint32_t aerialPerspectiveSlices = 0;
+  float aerialPerspectiveRangeMetres = 0.0f;
 };
 
 class RenderFeature {
  public:
   virtual ~RenderFeature();
   virtual const char* name() const = 0;
+  // Whether the feature draws the sky (in addPassesBeforeScene): then the renderer draws none
+  // of its own, draws its geometry over the feature's and hazes it with the feature's aerial
+  // perspective.
+  virtual bool drawsSky() const { return false; }
   // Outside command recording, before the frame `frameIndex` is recorded (every frame before
   // frameIndex - framesInFlight has completed): create pipelines and grow resources for an
   // output of `extent`. Returns true when the textures addPasses() imported changed, so the
   // graph must be rebuilt.
   virtual bool prepare(VkExtent2D extent, std::uint64_t frameIndex) = 0;
+  // Adds the passes the renderer's opaque scene depends on, before it: `scene` has only the
+  // extent and what earlier features provided. A feature that draws the sky creates the scene
+  // colour with the sky in it and returns it with the sky's light. Default: none.
+  virtual SceneTextures addPassesBeforeScene(FrameGraph& graph, const SceneTextures& scene);
   // Adds the feature's passes after the opaque scene; returns the scene textures later passes
   // use (the colour with the effect applied).
   virtual SceneTextures addPasses(FrameGraph& graph, const SceneTextures& scene) = 0;

@@ -11,11 +11,12 @@ enum class PassType : std::uint8_t { Compute, Graphics, Transfer };
 
 enum class Access : std::uint8_t {
   // textures
-  SampledRead,      // texture()/texelFetch() in a shader (SHADER_READ_ONLY, or depth read-only)
-  StorageRead,      // imageLoad() (GENERAL)
-  StorageWrite,     // imageStore(), possibly with imageLoad() of the same texels (GENERAL)
-  ColorAttachment,  // colour target of a graphics pass
-  DepthAttachment,  // depth target of a graphics pass, tested and written
+  SampledRead,         // texture()/texelFetch() in a shader (SHADER_READ_ONLY, or depth read-only)
+  SampledReadGeneral,  // texture() of an image kept in GENERAL (a module's output it rewrites)
+  StorageRead,         // imageLoad() (GENERAL)
+  StorageWrite,        // imageStore(), possibly with imageLoad() of the same texels (GENERAL)
+  ColorAttachment,     // colour target of a graphics pass
+  DepthAttachment,     // depth target of a graphics pass, tested and written
   DepthReadOnlyAttachment,  // depth target tested but not written
   TransferSrc,
   TransferDst,

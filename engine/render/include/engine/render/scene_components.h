@@ -1,7 +1,8 @@
 #pragma once
 // Components every renderer of the engine understands, independent of any game: the viewpoint,
-// the sun, the sky's light and the atmosphere. Effect adapters (the clouds) read these to build
-// their per-frame inputs; games write them.
+// the sun and what the air lets through of it, the sky's light, fog. Effect adapters (the
+// clouds, the atmosphere) read and provide these; games write them.
+#include <functional>
 #include <glm/glm.hpp>
 #include <glm/gtc/quaternion.hpp>
 
@@ -26,23 +27,45 @@ glm::mat4 viewRotation(const Camera& camera);
 // (camera_math.h). Every pass that draws or traces with the camera uses this one.
 glm::mat4 projectionOf(const Camera& camera, float aspect);
 
+// Units: the renderer's radiometric unit is the kilo-candela per square metre (kcd/m^2) for
+// radiance and the kilolux (klx) for illuminance, linear Rec. 709 RGB whose luminance weights
+// are (0.2126, 0.7152, 0.0722). Sunlight above the air is about 127 klx, a clear noon sky a few
+// kcd/m^2; the tonemap's exposure (exposure.h) brings that to the display.
+
 // The sun as a directional light.
 struct Sun {
   glm::dvec3 direction{0.0, 1.0, 0.0};  // unit, towards the sun
-  glm::vec3 illuminance{10.0f};         // linear RGB, the renderer's radiometric unit
+  glm::vec3 illuminance{127.0f};        // klx, RGB, at the top of the atmosphere: what reaches
+                                        //   a point is this times SunTransmittance there
 };
 
-// Sky radiance used for ambient light and as the backdrop: zenith and horizon colours, and the
-// light bounced up from the ground.
+// Context singleton: how much of the sun's light the scene's air lets through to an altitude.
+// The atmosphere module provides it from its model when the scene has one; a game without one
+// provides its own (the sample's analytic air mass). Absent: nothing is in the way.
+struct SunTransmittance {
+  // RGB transmittance in [0, 1] from the top of the atmosphere to `altitudeMetres` at the
+  // camera's place on the planet, for a sun towards `sunDirection`; 0 below the horizon.
+  std::function<glm::vec3(double altitudeMetres, const glm::dvec3& sunDirection)> at;
+};
+
+// The sun's illuminance reaching `altitudeMetres` (klx, RGB): Sun::illuminance through the
+// world's SunTransmittance, if it has one.
+glm::vec3 sunIlluminanceAt(const Sun& sun, const SunTransmittance* transmittance,
+                           double altitudeMetres);
+
+// Context singleton: sky radiance (kcd/m^2, RGB) for ambient light: the sky straight up, at the
+// horizon, and the light coming up from below (ground and air). The atmosphere module measures
+// it from its sky; a game without one sets it itself.
 struct SkyLight {
-  glm::vec3 zenith{0.15f, 0.28f, 0.65f};
-  glm::vec3 horizon{0.55f, 0.62f, 0.75f};
-  glm::vec3 ground{0.12f, 0.12f, 0.1f};
+  glm::vec3 zenith{1.5f, 2.8f, 6.5f};
+  glm::vec3 horizon{5.5f, 6.2f, 7.5f};
+  glm::vec3 ground{1.2f, 1.2f, 1.0f};
 };
 
-struct Atmosphere {
-  float fogDensityPerMetre = 2e-5f;  // exponential haze over distance (aerial perspective hook)
-  float exposure = 1.0f;             // linear multiplier before tonemapping
+// Context singleton: exponential distance fog towards the sky, the cheap alternative for scenes
+// without an atmosphere module (which hazes with its aerial perspective instead).
+struct Fog {
+  float densityPerMetre = 0.0f;  // 0: no fog
 };
 
 }  // namespace engine::render

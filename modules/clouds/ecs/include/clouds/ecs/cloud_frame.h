@@ -1,6 +1,7 @@
 #pragma once
 // The one place the clouds module's per-frame inputs are made: from the world (the camera and
-// its CloudQuality, the sun, the sky light, the cloud layer, the frame time) and what the
+// its CloudQuality, the sun and what the air lets through of it, the sky light, the cloud
+// layer, the frame time) and what the
 // renderer provides for the frame (command buffer, size, depth). They only read the world
 // (it is non-const because views create missing storages), and need no GPU to be tested.
 #include <vulkan/vulkan.h>
@@ -19,6 +20,12 @@ struct HostFrame {
   VkImageView depthView = VK_NULL_HANDLE;  // none when the scene has no geometry
   VkImageLayout depthLayout = VK_IMAGE_LAYOUT_DEPTH_READ_ONLY_OPTIMAL;
   VkImageView weatherView = VK_NULL_HANDLE;  // the layer's painted weather map, if it has one
+  // What a feature that draws the sky provides (engine::render::SceneTextures), if one does:
+  // the sky's radiance for the clouds' ambient, and the haze for their radiance. Both GENERAL.
+  VkImageView skyRadianceView = VK_NULL_HANDLE;
+  VkImageView aerialPerspectiveView = VK_NULL_HANDLE;
+  std::uint32_t aerialPerspectiveSlices = 0;
+  float aerialPerspectiveRangeMetres = 0.0f;
   std::uint64_t frameIndex = 0;
 };
 
@@ -26,7 +33,10 @@ struct HostFrame {
 // CloudQuality preset, or the layer's settings as they are without one.
 clouds::Settings cloudSettings(engine::ecs::World& world);
 
-// This frame's inputs. The module remembers the previous camera itself.
+// This frame's inputs. The module remembers the previous camera itself. The sun reaching the
+// clouds is the Sun through the world's SunTransmittance at the layer's middle altitude (the
+// atmosphere's, when the scene has one: sunset clouds are lit by the sun its air reddens); their
+// ambient is the sky's radiance when the host provides it, else the SkyLight singleton.
 clouds::FrameInputs cloudFrameInputs(engine::ecs::World& world, const HostFrame& host);
 
 }  // namespace clouds::ecs

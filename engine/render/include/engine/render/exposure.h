@@ -1,0 +1,46 @@
+#pragma once
+// Camera exposure in photographic units, for the renderer's physical light (kcd/m^2 and klx,
+// scene_components.h). EV100 is the exposure value at ISO 100: a radiance of
+// 1.2 * 2^EV100 cd/m^2 reaches the display's white before the tonemap curve (saturation-based
+// sensitivity, Lagarde & de Rousiers 2014, "Moving Frostbite to PBR"), so the tonemap's linear
+// multiplier for kcd/m^2 is 1000 / (1.2 * 2^EV100).
+//
+// Auto-exposure meters as an incident-light meter held at the camera, facing up: it reads the
+// illuminance the sun (through the air) and the sky put on a horizontal surface and sets
+// EV100 = log2(E * 100 / C) with the meter calibration C = 250 lx s (ISO 2720), plus the
+// compensation. Noon sunlight (about 100 klx) meters EV100 15, the photographers' "sunny 16";
+// an overcast scene meters what its sky and sun give, with clouds in front of the sun unseen.
+// The result adapts towards the metered value exponentially, with a time constant, and is
+// clamped, so night stays dark instead of being exposed to grey.
+#include <glm/glm.hpp>
+
+namespace engine::render {
+
+struct SkyLight;
+
+// Context singleton: the exposure the tonemap applies.
+struct Exposure {
+  enum class Mode { Auto, Manual };
+  Mode mode = Mode::Auto;
+  float ev100 = 15.0f;             // Manual: the exposure. Auto: the adapted value (the system's)
+  float compensationEv = 0.0f;     // Auto: added to the metered value (+1: twice as bright)
+  float adaptationSeconds = 0.5f;  // Auto: time constant of the adaptation, >= 0
+  float minEv100 = -2.0f;          // Auto: the metered value is clamped to these
+  float maxEv100 = 17.0f;
+  bool adapted = false;  // Auto: false until the first metered value, which is taken at once
+};
+
+// EV100 an incident-light meter (C = 250) reads under `lux`; lux <= 0 reads as 1e-3 lx.
+float ev100FromIlluminance(double lux);
+// The linear multiplier from kcd/m^2 to the tonemap's input at `ev100`.
+float exposureScale(float ev100);
+// Illuminance (klx) on a horizontal surface: the sun's (`sunKilolux` RGB, `sunDirectionY` the
+// sine of its elevation) plus the sky's, from its cosine-weighted mean radiance estimated as
+// 0.8 zenith + 0.2 horizon (exact for a sky mixed by sqrt(sin(elevation)) between the two);
+// the luminance of the RGB sum.
+double horizontalIlluminanceKilolux(const glm::vec3& sunKilolux, double sunDirectionY,
+                                    const SkyLight& sky);
+// `current` moved towards `target` over `dtSeconds` with time constant `tauSeconds`.
+float adaptEv100(float current, float target, double dtSeconds, double tauSeconds);
+
+}  // namespace engine::render

@@ -1,0 +1,195 @@
+#include "atmosphere_feature.h"
+
+#include <cstring>
+
+#include "atmosphere/ecs/atmosphere_components.h"
+#include "atmosphere/ecs/atmosphere_frame.h"
+#include "engine/core/log.h"
+#include "engine/ecs/module.h"
+#include "engine/render/scene_components.h"
+
+namespace atmosphere::ecs {
+
+using namespace engine::render;
+
+namespace {
+
+constexpr VkFormat kColorFormat = VK_FORMAT_R16G16B16A16_SFLOAT;
+
+bool sameImages(const atmosphere::Outputs& a, const atmosphere::Outputs& b) {
+  return a.environment.image == b.environment.image &&
+         a.aerialPerspective.image == b.aerialPerspective.image;
+}
+
+bool sameParameters(const atmosphere::Parameters& a, const atmosphere::Parameters& b) {
+  return std::memcmp(&a, &b, sizeof(a)) == 0;
+}
+
+}  // namespace
+
+AtmosphereFeature::AtmosphereFeature(engine::ecs::World& world, const RenderDevice& device)
+    : world_(world), device_(*device.device), framesInFlight_(device.framesInFlight) {
+  if (device.hdrFormat != kColorFormat) {
+    throw engine::ecs::ModuleUnsupported("the atmosphere draws into an RGBA16F scene colour");
+  }
+  atmosphere::CreateInfo info;
+  info.instance = device_.vkInstance();
+  info.physicalDevice = device_.physical();
+  info.device = device_.vk();
+  info.getInstanceProcAddr = vkGetInstanceProcAddr;
+  info.getDeviceProcAddr = vkGetDeviceProcAddr;
+  info.debugUtils = device_.instance().debugUtilsEnabled();
+  info.colorFormat = kColorFormat;
+  info.depthFormat = device.depthFormat;
+  info.maxRenderExtent = device.maxExtent;
+  info.maxFramesInFlight = device.framesInFlight;
+  info.reversedZ = true;
+  info.passTimings = true;  // a few timestamps: where its time goes, for HUD and logs
+  atmosphere::Error error;
+  context_ = atmosphere::Context::create(info, &error);
+  if (!context_) {
+    throw engine::ecs::ModuleUnsupported("the atmosphere module cannot run on this device: " +
+                                         error.message + " (" + errorCodeName(error.code) + ")");
+  }
+  parameters_ = atmosphereParameters(world_);
+  publishSunTransmittance();
+}
+
+AtmosphereFeature::~AtmosphereFeature() {
+  // The module's objects may still be used by frames in flight.
+  device_.waitIdle();
+}
+
+void AtmosphereFeature::publishSunTransmittance() {
+  if (published_ && sameParameters(*published_, parameters_)) return;
+  world_.ctx().emplaceOrReplace<SunTransmittance>(
+      SunTransmittance{[parameters = parameters_](double altitude, const glm::dvec3& sun) {
+        return atmosphere::sunTransmittance(parameters, altitude, sun);
+      }});
+  published_ = parameters_;
+}
+
+void AtmosphereFeature::publishMeasurements(std::uint64_t completedFrame) {
+  auto& status = world_.ctx().get<AtmosphereStatus>();
+  status.memory = context_->memoryUsage();
+  status.passTimings = context_->passTimings(completedFrame);
+  const atmosphere::SkyLighting sky = context_->skyLighting(completedFrame);
+  if (sky.valid) {
+    status.sky = sky;
+    world_.ctx().emplaceOrReplace<SkyLight>(skyLightFrom(sky));
+  }
+}
+
+bool AtmosphereFeature::prepare(VkExtent2D extent, std::uint64_t frameIndex) {
+  // The slot about to be reused holds the latest completed frame's measurements.
+  if (frameIndex >= framesInFlight_) publishMeasurements(frameIndex - framesInFlight_);
+  parameters_ = atmosphereParameters(world_);
+  settings_ = atmosphereSettings(world_);
+  publishSunTransmittance();
+  atmosphere::Error error;
+  if (!context_->prepare(parameters_, settings_, extent, &error)) reportError(error);
+  return !sameImages(context_->outputs(), imported_);
+}
+
+void AtmosphereFeature::finish(std::uint64_t lastFrameIndex) {
+  publishMeasurements(lastFrameIndex);
+}
+
+void AtmosphereFeature::reportError(const atmosphere::Error& error) {
+  world_.ctx().get<AtmosphereStatus>().lastError = error.message;
+  // Parameters are validated when a scene loads; reaching this is a bug worth seeing once.
+  if (!errorLogged_) {
+    engine::log::error(std::string("atmosphere: ") + error.message + " (" +
+                       errorCodeName(error.code) + ")");
+  }
+  errorLogged_ = true;
+}
+
+void AtmosphereFeature::dispatch(VkCommandBuffer cmd, VkExtent2D extent, std::uint64_t frameIndex) {
+  atmosphere::Error error;
+  dispatched_ = context_->dispatch(atmosphereFrameInputs(world_, cmd, extent, frameIndex),
+                                   parameters_, settings_, &error);
+  if (dispatched_) {
+    world_.ctx().get<AtmosphereStatus>().lastError.clear();
+  } else {
+    reportError(error);
+  }
+}
+
+void AtmosphereFeature::drawSky(VkCommandBuffer cmd, VkImageView color, VkExtent2D extent) {
+  if (!dispatched_) return;  // reported; the frame keeps whatever the colour holds
+  atmosphere::Error error;
+  if (!context_->render(cmd, color, VK_NULL_HANDLE, VK_IMAGE_LAYOUT_UNDEFINED, extent, &error)) {
+    reportError(error);
+  }
+}
+
+SceneTextures AtmosphereFeature::addPassesBeforeScene(FrameGraph& graph,
+                                                      const SceneTextures& scene) {
+  imported_ = context_->outputs();
+  // The module keeps its outputs in GENERAL between frames and synchronises its own writes.
+  const ResourceState general{VK_IMAGE_LAYOUT_GENERAL, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
+                              VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT};
+  auto import = [&](const char* name, const atmosphere::OutputImage& image, VkImageType type) {
+    ImportedTexture texture;
+    texture.image = image.image;
+    texture.view = image.view;
+    texture.desc.extent = image.extent;
+    texture.desc.format = image.format;
+    texture.desc.type = type;
+    texture.initial = general;
+    texture.final = general;
+    return graph.importTexture(name, texture);
+  };
+  const TextureHandle environment = import("sky radiance", imported_.environment, VK_IMAGE_TYPE_2D);
+  const TextureHandle froxels =
+      import("aerial perspective", imported_.aerialPerspective, VK_IMAGE_TYPE_3D);
+
+  struct DispatchData {
+    TextureHandle environment, froxels;
+  };
+  const DispatchData& made = graph.addPass<DispatchData>(
+      "atmosphere", PassType::Compute,
+      [&](PassBuilder& builder, DispatchData& d) {
+        d.environment = builder.write(environment, Access::StorageWrite);
+        d.froxels = builder.write(froxels, Access::StorageWrite);
+        builder.sideEffect();  // the sky's measurement, read back by the host
+      },
+      [this, extent = scene.extent](const DispatchData&, PassContext& context) {
+        dispatch(context.cmd(), extent, context.frameIndex());
+      });
+
+  // The sky in every pixel of a new scene colour; the renderer draws its geometry over it and
+  // hazes it itself (Context::render with the host's depth does both for hosts that cannot).
+  struct SkyData {
+    TextureHandle hdr;
+  };
+  TextureDesc hdrDesc;
+  hdrDesc.extent = {scene.extent.width, scene.extent.height, 1};
+  hdrDesc.format = kColorFormat;
+  const SkyData& sky = graph.addPass<SkyData>(
+      "atmosphere sky", PassType::Compute,
+      [&](PassBuilder& builder, SkyData& d) {
+        d.hdr = builder.write(builder.createTexture("scene hdr", hdrDesc), Access::StorageWrite);
+        // Ordered after the dispatch, whose LUTs it reads (synchronised by the module).
+        builder.read(made.environment, Access::SampledReadGeneral);
+      },
+      [this](const SkyData& d, PassContext& context) {
+        const VkExtent3D extent = context.extent(d.hdr);
+        drawSky(context.cmd(), context.view(d.hdr), {extent.width, extent.height});
+      });
+
+  SceneTextures out = scene;
+  out.hdr = sky.hdr;
+  out.skyRadiance = made.environment;
+  out.aerialPerspective = made.froxels;
+  out.aerialPerspectiveSlices = imported_.aerialPerspective.extent.depth;
+  out.aerialPerspectiveRangeMetres = imported_.aerialPerspectiveRangeMetres;
+  return out;
+}
+
+SceneTextures AtmosphereFeature::addPasses(FrameGraph& /*graph*/, const SceneTextures& scene) {
+  return scene;  // the renderer hazed its geometry with the aerial perspective
+}
+
+}  // namespace atmosphere::ecs

@@ -1,0 +1,54 @@
+#pragma once
+// The atmosphere module as a render feature of the engine: it owns an atmosphere::Context on
+// the engine's device, prepares it outside the frame (and publishes what the last completed
+// frame measured), and adds two passes before the renderer's opaque scene:
+//   "atmosphere"      records Context::dispatch (LUTs, froxels, the sky map) with the inputs
+//                     built from the world at that moment;
+//   "atmosphere sky"  records Context::render without depth into a new scene colour: the sky
+//                     and the sun's disc in every pixel, for the renderer to draw over.
+// The sky map and the froxels are imported into the graph and handed on (SceneTextures): the
+// renderer hazes its geometry with the froxels, the clouds read both.
+#include <memory>
+#include <optional>
+
+#include "atmosphere/atmosphere.h"
+#include "engine/ecs/world.h"
+#include "engine/render/render_feature.h"
+
+namespace atmosphere::ecs {
+
+class AtmosphereFeature final : public engine::render::RenderFeature {
+ public:
+  // Throws engine::ecs::ModuleUnsupported when the module cannot be created on this device.
+  AtmosphereFeature(engine::ecs::World& world, const engine::render::RenderDevice& device);
+  ~AtmosphereFeature() override;
+
+  const char* name() const override { return "atmosphere"; }
+  bool drawsSky() const override { return true; }
+  bool prepare(VkExtent2D extent, std::uint64_t frameIndex) override;
+  engine::render::SceneTextures addPassesBeforeScene(
+      engine::render::FrameGraph& graph, const engine::render::SceneTextures& scene) override;
+  engine::render::SceneTextures addPasses(engine::render::FrameGraph& graph,
+                                          const engine::render::SceneTextures& scene) override;
+  void finish(std::uint64_t lastFrameIndex) override;
+
+ private:
+  void publishMeasurements(std::uint64_t completedFrame);
+  void publishSunTransmittance();
+  void dispatch(VkCommandBuffer cmd, VkExtent2D extent, std::uint64_t frameIndex);
+  void drawSky(VkCommandBuffer cmd, VkImageView color, VkExtent2D extent);
+  void reportError(const atmosphere::Error& error);
+
+  engine::ecs::World& world_;
+  engine::gfx::Device& device_;
+  std::uint32_t framesInFlight_;
+  std::unique_ptr<atmosphere::Context> context_;
+  atmosphere::Parameters parameters_;  // this frame's, decided in prepare()
+  atmosphere::Settings settings_;
+  std::optional<atmosphere::Parameters> published_;  // what SunTransmittance integrates
+  atmosphere::Outputs imported_;                     // the outputs the graph imported
+  bool dispatched_ = false;                          // this frame's dispatch succeeded
+  bool errorLogged_ = false;
+};
+
+}  // namespace atmosphere::ecs

@@ -1,0 +1,43 @@
+#include "game/exposure_control.h"
+
+#include <algorithm>
+
+#include "engine/ecs/frame_time.h"
+#include "engine/render/exposure.h"
+#include "engine/render/scene_components.h"
+
+namespace sample {
+
+using namespace engine;
+
+float meteredEv100(ecs::World& world) {
+  double altitude = 0.0;
+  world.view<const render::Camera>().each(
+      [&](const render::Camera& camera) { altitude = camera.position.y; });
+  const auto* transmittance = world.ctx().tryGet<render::SunTransmittance>();
+  glm::vec3 sun(0.0f);
+  double sunUp = 0.0;
+  world.view<const render::Sun>().each([&](const render::Sun& s) {
+    sun = render::sunIlluminanceAt(s, transmittance, altitude);
+    sunUp = s.direction.y;
+  });
+  const render::SkyLight sky = world.ctx().get<render::SkyLight>();
+  const double kilolux = render::horizontalIlluminanceKilolux(sun, sunUp, sky);
+  return render::ev100FromIlluminance(kilolux * 1000.0);
+}
+
+void installExposureControl(ecs::Scheduler& scheduler) {
+  scheduler.add(ecs::Phase::PreRender, "auto exposure", [](ecs::World& world) {
+    auto& exposure = world.ctx().get<render::Exposure>();
+    if (exposure.mode != render::Exposure::Mode::Auto) return;
+    const float target = std::clamp(meteredEv100(world) - exposure.compensationEv,
+                                    exposure.minEv100, exposure.maxEv100);
+    const double dt = world.ctx().get<ecs::FrameTime>().deltaSeconds;
+    exposure.ev100 = exposure.adapted ? render::adaptEv100(exposure.ev100, target, dt,
+                                                           exposure.adaptationSeconds)
+                                      : target;
+    exposure.adapted = true;
+  });
+}
+
+}  // namespace sample
