@@ -115,13 +115,11 @@ TEST(HeadlessCapture, EachSceneGetsOnlyThePassesAndPipelinesItNeeds) {
       {scene("clouds_only.json"),
        R"("passes": ["sky", "clouds", "clouds composite", "tonemap", "capture"])",
        R"("pipelines": ["tonemap", "sky", "clouds module"])", R"("modules": ["clouds"])"},
-      // An atmosphere draws the sky: no gradient sky pass or pipeline.
-      {scene("atmosphere_only.json"),
-       R"("passes": ["atmosphere", "atmosphere sky", "tonemap", "capture"])",
+      // An atmosphere draws the sky in the scene pass: no gradient sky pass or pipeline.
+      {scene("atmosphere_only.json"), R"("passes": ["atmosphere", "scene", "tonemap", "capture"])",
        R"("pipelines": ["tonemap", "atmosphere module"])", R"("modules": ["atmosphere"])"},
       {std::string(SAMPLE_ASSET_DIR) + "/scenes/default.json",
-       R"("passes": ["atmosphere", "atmosphere sky", "terrain", "clouds", "clouds composite", )"
-       R"("tonemap", "capture"])",
+       R"("passes": ["atmosphere", "scene", "clouds", "clouds composite", "tonemap", "capture"])",
        R"("pipelines": ["tonemap", "terrain", "atmosphere module", "clouds module"])",
        R"("modules": ["atmosphere", "clouds"])"},
   };

@@ -46,20 +46,28 @@ VKAPI_ATTR void VKAPI_CALL destroy(VkDevice device, Handle handle,
   Real<Pfn>::fn(device, handle, allocator);
 }
 
-PFN_vkCreateComputePipelines realCreatePipelines = nullptr;
-VKAPI_ATTR VkResult VKAPI_CALL createPipelines(VkDevice device, VkPipelineCache cache,
-                                               std::uint32_t count,
-                                               const VkComputePipelineCreateInfo* infos,
-                                               const VkAllocationCallbacks* allocator,
-                                               VkPipeline* out) {
-  if (failNow()) return VK_ERROR_OUT_OF_DEVICE_MEMORY;
-  const VkResult result = realCreatePipelines(device, cache, count, infos, allocator, out);
-  if (result == VK_SUCCESS) {
-    for (std::uint32_t i = 0; i < count; ++i)
-      gCounts.live[bits(out[i])] = "vkCreateComputePipelines";
+// vkCreateComputePipelines and vkCreateGraphicsPipelines: one creation per call.
+template <typename Info, const char* Name>
+struct CreatePipelines {
+  using Pfn = VkResult(VKAPI_PTR*)(VkDevice, VkPipelineCache, std::uint32_t, const Info*,
+                                   const VkAllocationCallbacks*, VkPipeline*);
+  static inline Pfn real = nullptr;
+  static VKAPI_ATTR VkResult VKAPI_CALL call(VkDevice device, VkPipelineCache cache,
+                                             std::uint32_t count, const Info* infos,
+                                             const VkAllocationCallbacks* allocator,
+                                             VkPipeline* out) {
+    if (failNow()) return VK_ERROR_OUT_OF_DEVICE_MEMORY;
+    const VkResult result = real(device, cache, count, infos, allocator, out);
+    if (result == VK_SUCCESS) {
+      for (std::uint32_t i = 0; i < count; ++i) gCounts.live[bits(out[i])] = Name;
+    }
+    return result;
   }
-  return result;
-}
+};
+constexpr char kComputePipelines[] = "vkCreateComputePipelines";
+constexpr char kGraphicsPipelines[] = "vkCreateGraphicsPipelines";
+using ComputePipelines = CreatePipelines<VkComputePipelineCreateInfo, kComputePipelines>;
+using GraphicsPipelines = CreatePipelines<VkGraphicsPipelineCreateInfo, kGraphicsPipelines>;
 
 PFN_vkAllocateDescriptorSets realAllocateSets = nullptr;
 VKAPI_ATTR VkResult VKAPI_CALL allocateSets(VkDevice device,
@@ -139,14 +147,19 @@ const Entry kEntries[] = {
     SHIM_DESTROY(vkDestroyPipeline, VkPipeline),
     SHIM_DESTROY(vkDestroyDescriptorPool, VkDescriptorPool),
     SHIM_DESTROY(vkDestroyQueryPool, VkQueryPool),
-    Entry{"vkCreateComputePipelines", reinterpret_cast<PFN_vkVoidFunction>(&createPipelines),
-          reinterpret_cast<PFN_vkVoidFunction*>(&realCreatePipelines)},
+    Entry{kComputePipelines, reinterpret_cast<PFN_vkVoidFunction>(&ComputePipelines::call),
+          reinterpret_cast<PFN_vkVoidFunction*>(&ComputePipelines::real)},
+    Entry{kGraphicsPipelines, reinterpret_cast<PFN_vkVoidFunction>(&GraphicsPipelines::call),
+          reinterpret_cast<PFN_vkVoidFunction*>(&GraphicsPipelines::real)},
     Entry{"vkAllocateDescriptorSets", reinterpret_cast<PFN_vkVoidFunction>(&allocateSets),
           reinterpret_cast<PFN_vkVoidFunction*>(&realAllocateSets)},
     SHIM_COMMAND(vkCmdBindPipeline),
     SHIM_COMMAND(vkCmdBindDescriptorSets),
     SHIM_COMMAND(vkCmdPushConstants),
     SHIM_COMMAND(vkCmdDispatch),
+    SHIM_COMMAND(vkCmdDraw),
+    SHIM_COMMAND(vkCmdSetViewport),
+    SHIM_COMMAND(vkCmdSetScissor),
     SHIM_COMMAND(vkCmdPipelineBarrier2),
     SHIM_COMMAND(vkCmdUpdateBuffer),
     SHIM_COMMAND(vkCmdFillBuffer),

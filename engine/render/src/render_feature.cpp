@@ -9,6 +9,8 @@ SceneTextures RenderFeature::addPassesBeforeScene(FrameGraph& /*graph*/,
   return scene;
 }
 
+void RenderFeature::drawSkyInScenePass(VkCommandBuffer /*cmd*/) {}
+
 void RenderFeature::finish(std::uint64_t /*lastFrameIndex*/) {}
 
 }  // namespace engine::render

@@ -28,15 +28,6 @@ vec3 sampleTransmittance(vec2 uv) { return vec3(1.0); }
 vec3 sampleMultiScattering(vec2 uv) { return vec3(0.0); }
 #include "sky_radiance.glsl"
 
-// The sky towards `direction`, with the sun's disc seen through the air (its centre's
-// transmittance, a per-frame constant: across the half-degree disc it barely changes).
-vec3 sky(vec3 direction) {
-  const vec3 fromSun = direction - u.sunDirection;
-  const float disc = sunDiscRadiance(0.5 * dot(fromSun, fromSun), u.sunRadiusVersine);
-  const vec3 radiance = skyRadiance(direction) * u.sunIlluminance + disc * u.sunDiscIlluminance;
-  return min(radiance, vec3(u.maxRadiance));
-}
-
 // Every pixel pays for every line here (lavapipe runs both sides of a branch), so the pass is
 // straight-line: the sky and the haze for each pixel, then a select.
 void main() {
@@ -63,5 +54,6 @@ void main() {
   const vec3 hazed = colour.rgb * haze.a + haze.rgb * u.sunIlluminance;
 
   const bool isSky = reversed ? depth <= 0.0 : depth >= 1.0;
-  imageStore(hostColor, ivec2(pixel), isSky ? vec4(sky(direction), 1.0) : vec4(hazed, colour.a));
+  const vec4 result = isSky ? vec4(skyWithSun(direction), 1.0) : vec4(hazed, colour.a);
+  imageStore(hostColor, ivec2(pixel), result);
 }

@@ -28,7 +28,7 @@ const uint kBindingSkyLighting = 7u;        // environment.comp: SkyLighting, ho
 
 // --- Specialization constants -------------------------------------------------------------------
 const uint kSpecHasDepth = 0u;   // apply.comp: 0 every pixel is sky, 1 the host's depth is bound
-const uint kSpecReversedZ = 1u;  // apply.comp: 1 the host's far plane is depth 0, else 1
+const uint kSpecReversedZ = 1u;  // apply.comp, sky_draw.vert: 1 the far plane is depth 0, else 1
 const uint kApplySpecCount = 2u;
 
 // --- Flags in AtmosphereUniforms.flags ----------------------------------------------------------

@@ -15,7 +15,12 @@ layout(binding = kBindingUniforms, std140) uniform Uniforms {
 
 AtmosphereUniforms u;
 
+// Compute shaders index with the dispatch depth; the sky's draw (a graphics pipeline, which has
+// no workgroups) defines ATMOSPHERE_GRAPHICS and indexes with the instance index, also 0.
+#ifndef ATMOSPHERE_GRAPHICS
 void loadUniforms() { u = frameUniforms[gl_NumWorkGroups.z - 1u]; }
+#endif
+void loadUniformsAt(uint zero) { u = frameUniforms[zero]; }
 
 AtmosphereModel modelOf(AtmosphereUniforms v) {
   AtmosphereModel a;

@@ -10,4 +10,14 @@ vec3 skyRadiance(vec3 direction) {
   return textureLod(skyViewLut, uv, 0.0).rgb;
 }
 
+// The sky towards `direction` in the host's units, with the sun's disc seen through the air (its
+// centre's transmittance, a per-frame constant: across the half-degree disc it barely changes),
+// clamped to what the host's colour holds.
+vec3 skyWithSun(vec3 direction) {
+  const vec3 fromSun = direction - u.sunDirection;
+  const float disc = sunDiscRadiance(0.5 * dot(fromSun, fromSun), u.sunRadiusVersine);
+  const vec3 radiance = skyRadiance(direction) * u.sunIlluminance + disc * u.sunDiscIlluminance;
+  return min(radiance, vec3(u.maxRadiance));
+}
+
 #endif

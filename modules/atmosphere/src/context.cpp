@@ -226,6 +226,21 @@ bool Context::render(VkCommandBuffer commandBuffer, VkImageView color, VkImageVi
   return succeed(error);
 }
 
+bool Context::drawSky(VkCommandBuffer commandBuffer, Error* error) {
+  if (!impl_->drawsSky()) {
+    return fail(error, ErrorCode::InvalidInputs,
+                "drawSky: CreateInfo.skyPassColorFormat was VK_FORMAT_UNDEFINED at create()");
+  }
+  if (!impl_->dispatched()) {
+    return fail(error, ErrorCode::InvalidInputs, "drawSky: dispatch() first, this frame");
+  }
+  if (commandBuffer == VK_NULL_HANDLE) {
+    return fail(error, ErrorCode::InvalidInputs, "drawSky: the command buffer is required");
+  }
+  impl_->drawSky(commandBuffer);
+  return succeed(error);
+}
+
 Outputs Context::outputs() const {
   return impl_->outputs();
 }

@@ -35,7 +35,7 @@ detail::UniqueSampler makeSampler(const detail::DeviceContext& device, VkFilter 
 }
 
 detail::UniqueDescriptorPool makePool(const detail::DeviceContext& device, std::uint32_t frames) {
-  // Per slot: six sets, at most 6 bindings each.
+  // Per slot: six sets for the programs and one for the sky's draw, at most 6 bindings each.
   const VkDescriptorPoolSize sizes[] = {
       {VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, 8 * frames},
       {VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 16 * frames},
@@ -62,6 +62,10 @@ Context::Impl::Impl(const CreateInfo& info, const detail::VulkanFunctions& funct
       linearSampler_(makeSampler(device_, VK_FILTER_LINEAR, "linear sampler")),
       nearestSampler_(makeSampler(device_, VK_FILTER_NEAREST, "nearest sampler")),
       pool_(makePool(device_, info.maxFramesInFlight)) {
+  if (info.skyPassColorFormat != VK_FORMAT_UNDEFINED) {
+    skyDraw_ = std::make_unique<detail::SkyDraw>(device_, info.skyPassColorFormat, info.depthFormat,
+                                                 info.reversedZ);
+  }
   if (info.passTimings) {
     timer_ =
         std::make_unique<detail::PassTimer>(device_, info.maxFramesInFlight, detail::kPassNames);
@@ -82,12 +86,14 @@ Context::Impl::Impl(const CreateInfo& info, const detail::VulkanFunctions& funct
     slot.lighting = detail::OwnedBuffer(device_, sizeof(shader::SkyLighting),
                                         VK_BUFFER_USAGE_STORAGE_BUFFER_BIT,
                                         "sky lighting " + std::to_string(i), /*hostVisible=*/true);
-    for (std::size_t p = 0; p < kPrograms; ++p) slot.sets[p] = allocateSet(Program(p));
+    for (std::size_t p = 0; p < kPrograms; ++p) {
+      slot.sets[p] = allocateSet(programs_[Program(p)].setLayout());
+    }
+    if (skyDraw_) slot.skyDrawSet = allocateSet(skyDraw_->setLayout());
   }
 }
 
-VkDescriptorSet Context::Impl::allocateSet(Program program) {
-  const VkDescriptorSetLayout layout = programs_[program].setLayout();
+VkDescriptorSet Context::Impl::allocateSet(VkDescriptorSetLayout layout) {
   VkDescriptorSetAllocateInfo info{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_ALLOCATE_INFO};
   info.descriptorPool = pool_.get();
   info.descriptorSetCount = 1;

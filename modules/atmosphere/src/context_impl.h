@@ -23,6 +23,7 @@
 #include "atmosphere_types.h"
 #include "kit.h"
 #include "programs.h"
+#include "sky_draw.h"
 
 namespace atmosphere {
 
@@ -38,6 +39,8 @@ class Context::Impl {
   // Inputs, parameters and settings are valid and prepared (context.cpp checks).
   void dispatch(const FrameInputs& inputs, const Parameters& parameters, const Settings& settings);
   void render(VkCommandBuffer cmd, VkImageView color, VkImageView depth, VkImageLayout layout);
+  void drawSky(VkCommandBuffer cmd);
+  bool drawsSky() const { return skyDraw_ != nullptr; }
 
   Outputs outputs() const;
   SkyLighting skyLighting(std::uint64_t frameIndex) const;
@@ -66,13 +69,14 @@ class Context::Impl {
     detail::OwnedBuffer lighting;  // host-visible SkyLighting
     std::optional<std::uint64_t> lightingFrame;
     std::array<VkDescriptorSet, kPrograms> sets{};
+    VkDescriptorSet skyDrawSet = VK_NULL_HANDLE;  // with CreateInfo::skyPassColorFormat
   };
   struct Retired {
     detail::OwnedImage image;
     std::optional<std::uint64_t> lastUse;
   };
 
-  VkDescriptorSet allocateSet(detail::Program program);
+  VkDescriptorSet allocateSet(VkDescriptorSetLayout layout);
   detail::OwnedImage makeImage(VkImageType type, VkExtent3D extent, const std::string& name);
   void replace(detail::OwnedImage& slot, detail::OwnedImage replacement);
   void releaseRetired(std::uint64_t frameIndex);
@@ -86,6 +90,7 @@ class Context::Impl {
   CreateInfo info_;
   detail::DeviceContext device_;
   detail::Programs programs_;
+  std::unique_ptr<detail::SkyDraw> skyDraw_;  // drawSky(), when the host asked for it
   detail::UniqueSampler linearSampler_;
   detail::UniqueSampler nearestSampler_;
   detail::UniqueDescriptorPool pool_;

@@ -12,8 +12,9 @@ namespace {
 constexpr VkPipelineStageFlags2 kCompute = detail::kComputeStage;
 constexpr VkAccessFlags2 kSampled = VK_ACCESS_2_SHADER_SAMPLED_READ_BIT;
 // Where hosts may read the outputs.
-constexpr VkPipelineStageFlags2 kReadStages =
-    VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT | VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT;
+constexpr VkPipelineStageFlags2 kReadStages = VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT |
+                                              VK_PIPELINE_STAGE_2_VERTEX_SHADER_BIT |
+                                              VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT;
 
 }  // namespace
 
@@ -60,7 +61,7 @@ void Context::Impl::dispatch(const FrameInputs& inputs, const Parameters& parame
                         VK_ACCESS_2_TRANSFER_WRITE_BIT | detail::kStorageWrite);
   fn.vkCmdUpdateBuffer(cmd, slot.uniforms.buffer(), 0, sizeof(lastUniforms_), &lastUniforms_);
   detail::memoryBarrier(device_, cmd, VK_PIPELINE_STAGE_2_TRANSFER_BIT,
-                        VK_ACCESS_2_TRANSFER_WRITE_BIT, kCompute, VK_ACCESS_2_UNIFORM_READ_BIT);
+                        VK_ACCESS_2_TRANSFER_WRITE_BIT, kReadStages, VK_ACCESS_2_UNIFORM_READ_BIT);
   writeSets(slot, VK_NULL_HANDLE, VK_IMAGE_LAYOUT_UNDEFINED, VK_NULL_HANDLE);
 
   const std::uint32_t group = shader::kWorkgroupSize2D;
@@ -149,6 +150,12 @@ void Context::Impl::writeSets(Slot& slot, VkImageView depth, VkImageLayout depth
                       p == Program::SkyView ? skyView_.view() : aerialPerspective_.view())
         .commit();
   }
+  if (skyDraw_) {
+    detail::SetWriter(device_, slot.skyDrawSet)
+        .uniformBuffer(kBindingUniforms, uniforms, bytes)
+        .sampledImage(kBindingSkyView, skyView_.view(), linear, general)
+        .commit();
+  }
   detail::SetWriter(device_, set(Program::Environment))
       .uniformBuffer(kBindingUniforms, uniforms, bytes)
       .sampledImage(kBindingTransmittance, transmittance_.view(), linear, general)
@@ -173,6 +180,20 @@ void Context::Impl::render(VkCommandBuffer cmd, VkImageView color, VkImageView d
   fn.vkCmdDispatch(cmd, detail::groupsFor(lastExtent_.width, group),
                    detail::groupsFor(lastExtent_.height, group), 1);
   endPass(cmd, Program::Apply);
+}
+
+void Context::Impl::drawSky(VkCommandBuffer cmd) {
+  const Slot& slot = slots_[lastSlot_];
+  const auto& fn = device_.fn();
+  fn.vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, skyDraw_->pipeline());
+  fn.vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, skyDraw_->layout(), 0, 1,
+                             &slot.skyDrawSet, 0, nullptr);
+  const VkViewport viewport{0.0f, 0.0f, float(lastExtent_.width), float(lastExtent_.height),
+                            0.0f, 1.0f};
+  const VkRect2D scissor{{0, 0}, lastExtent_};
+  fn.vkCmdSetViewport(cmd, 0, 1, &viewport);
+  fn.vkCmdSetScissor(cmd, 0, 1, &scissor);
+  fn.vkCmdDraw(cmd, 3, 1, 0, 0);
 }
 
 }  // namespace atmosphere

@@ -145,6 +145,16 @@ UniqueQueryPool DeviceContext::createQueryPool(const VkQueryPoolCreateInfo& info
                                                                     "vkCreateQueryPool", name);
 }
 
+UniquePipeline DeviceContext::createGraphicsPipeline(const VkGraphicsPipelineCreateInfo& info,
+                                                     const std::string& name) const {
+  VkPipeline handle = VK_NULL_HANDLE;
+  check(fn_.vkCreateGraphicsPipelines(device_, VK_NULL_HANDLE, 1, &info, nullptr, &handle),
+        "vkCreateGraphicsPipelines");
+  UniquePipeline owned(fn_, device_, handle);
+  this->name(VK_OBJECT_TYPE_PIPELINE, bits(handle), name);
+  return owned;
+}
+
 UniquePipeline DeviceContext::createComputePipeline(const VkComputePipelineCreateInfo& info,
                                                     const std::string& name) const {
   VkPipeline handle = VK_NULL_HANDLE;

@@ -1,8 +1,11 @@
 #include "render/renderer.h"
 
+#include "render/scene_pass.h"
+
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <iterator>
 
 #include "engine/core/error.h"
 #include "engine/core/log.h"
@@ -31,8 +34,9 @@ Renderer::Renderer(gfx::Device& device, render::PresentTarget& target, ecs::Worl
     features_ = features->features;
   }
   // A feature that draws the sky also hazes: the terrain reads its aerial perspective.
-  const bool featureSky = std::any_of(features_.begin(), features_.end(),
-                                      [](const render::RenderFeature* f) { return f->drawsSky(); });
+  std::copy_if(features_.begin(), features_.end(), std::back_inserter(skyDrawers_),
+               [](const render::RenderFeature* f) { return f->drawsSky(); });
+  const bool featureSky = !skyDrawers_.empty();
   if (!featureSky) {
     sky_ = std::make_unique<SkyPass>(device, kHdrFormat);
     pipelines.push_back(&sky_->pipeline());
@@ -79,12 +83,12 @@ void Renderer::rebuildGraph(VkExtent2D extent) {
     scene = feature->addPassesBeforeScene(graph, scene);
   }
   if (sky_) scene.hdr = addSkyPass(graph, *sky_, hdrDesc, &sceneFrame_);
-  require(scene.hdr.valid(), "Renderer", "a feature that draws the sky made no scene colour");
   hazeRangeMetres_ = scene.aerialPerspectiveRangeMetres;
   hazeSlices_ = scene.aerialPerspectiveSlices;
-  if (terrain_) {
-    const SceneTargets targets = addTerrainPass(
-        graph, *terrain_, scene.hdr, scene.aerialPerspective, kDepthFormat, &sceneFrame_);
+  // The opaque scene, and a feature's sky behind it: a graphics pass whenever either exists.
+  if (terrain_ || !skyDrawers_.empty()) {
+    const SceneTargets targets = addScenePass(graph, terrain_.get(), scene, skyDrawers_, kHdrFormat,
+                                              kDepthFormat, &sceneFrame_);
     scene.hdr = targets.hdr;
     scene.depth = targets.depth;
   }

@@ -70,7 +70,8 @@ class Renderer {
   engine::render::Tonemapper tonemapper_;
   std::unique_ptr<SkyPass> sky_;  // when no feature draws the sky
   std::unique_ptr<TerrainRenderer> terrain_;
-  std::vector<engine::render::RenderFeature*> features_;  // owned by their modules
+  std::vector<engine::render::RenderFeature*> features_;    // owned by their modules
+  std::vector<engine::render::RenderFeature*> skyDrawers_;  // those of them that draw the sky
   std::unique_ptr<Hud> hud_;
   engine::render::FrameCapture capture_;
   std::unique_ptr<engine::render::FrameGraph> graph_;

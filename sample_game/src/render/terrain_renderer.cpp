@@ -211,36 +211,4 @@ void TerrainRenderer::draw(VkCommandBuffer cmd) const {
   }
 }
 
-SceneTargets addTerrainPass(render::FrameGraph& graph, const TerrainRenderer& terrain,
-                            render::TextureHandle hdr, render::TextureHandle aerialPerspective,
-                            VkFormat depthFormat, const SceneFrameBinding* frame) {
-  struct Data {
-    SceneTargets targets;
-    render::TextureHandle haze;
-  };
-  const Data& data = graph.addPass<Data>(
-      "terrain", render::PassType::Graphics,
-      [&](render::PassBuilder& builder, Data& d) {
-        render::TextureDesc depthDesc = graph.textureDesc(hdr);
-        depthDesc.format = depthFormat;
-        d.targets.depth = builder.createTexture("scene depth", depthDesc);
-        d.targets.depth = builder.depthAttachment(d.targets.depth, VK_ATTACHMENT_LOAD_OP_CLEAR);
-        d.targets.hdr = builder.colorAttachment(hdr, VK_ATTACHMENT_LOAD_OP_LOAD);
-        if (terrain.hazedByAerialPerspective()) {
-          d.haze = builder.read(aerialPerspective, render::Access::SampledReadGeneral);
-        }
-      },
-      [&terrain, frame](const Data& d, render::PassContext& context) {
-        gfx::DescriptorWriter writer;
-        writer.uniformBuffer(0, frame->slice.buffer, frame->slice.offset, frame->slice.size);
-        if (d.haze.valid()) {
-          writer.combinedImageSampler(1, context.view(d.haze), terrain.hazeSampler(),
-                                      VK_IMAGE_LAYOUT_GENERAL);
-        }
-        context.bind(terrain.pipeline(), writer);
-        terrain.draw(context.cmd());
-      });
-  return data.targets;
-}
-
 }  // namespace sample

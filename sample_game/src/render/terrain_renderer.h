@@ -73,16 +73,4 @@ class TerrainRenderer {
   engine::gfx::Pipeline pipeline_;
 };
 
-struct SceneTargets {
-  engine::render::TextureHandle hdr;
-  engine::render::TextureHandle depth;
-};
-
-// "terrain": draws the visible chunks over `hdr` (the sky) into a new reversed-Z depth buffer,
-// hazed by `aerialPerspective` when the terrain renderer was made for it.
-SceneTargets addTerrainPass(engine::render::FrameGraph& graph, const TerrainRenderer& terrain,
-                            engine::render::TextureHandle hdr,
-                            engine::render::TextureHandle aerialPerspective, VkFormat depthFormat,
-                            const SceneFrameBinding* frame);
-
 }  // namespace sample

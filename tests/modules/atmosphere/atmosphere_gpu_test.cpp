@@ -226,6 +226,40 @@ TEST_F(AtmosphereGpu, SunDiscIsDrawnLimbDarkenedThroughTheAir) {
   EXPECT_LT(image.at(limbX, kExtent.height / 2).g, 0.8 * centre.g);
 }
 
+// drawSky() inside the host's scene pass draws the sky render() draws, pixel for pixel, and
+// leaves the host's geometry alone (the depth test keeps it to the far plane's pixels).
+TEST_F(AtmosphereGpu, DrawSkyInTheHostsPassDrawsTheSameSkyAndOnlyTheSky) {
+  AtmosphereHarness harness(device(), kExtent);
+  const atmosphere::Parameters earth;
+  const atmosphere::Settings settings = atmosphere::settingsFor(atmosphere::Quality::Medium);
+  for (double elevation : {35.0, 2.0}) {
+    SkyView view;
+    view.sunElevationDegrees = elevation;
+    view.sunAzimuthDegrees = 10.0;  // in the frame: the disc is drawn both ways too
+    view.pitchDegrees = 3.0;
+    view.groundDepth = true;
+    view.groundColour = glm::vec3(0.25f, 0.5f, 0.125f);
+    const FloatImage rendered = harness.render(view, earth, settings, kExtent);
+    const FloatImage drawn = harness.drawSky(view, earth, settings, kExtent);
+    std::vector<glm::dvec3> renderedSky, drawnSky;
+    std::size_t ground = 0;
+    for (std::size_t i = 0; i < drawn.texels.size(); ++i) {
+      const glm::vec3 d(drawn.texels[i]);
+      if (d == view.groundColour) {
+        ++ground;
+        continue;
+      }
+      renderedSky.emplace_back(glm::vec3(rendered.texels[i]));
+      drawnSky.emplace_back(d);
+    }
+    EXPECT_GT(ground, drawn.texels.size() / 5) << "the ground kept its colour, unhazed";
+    EXPECT_GT(drawnSky.size(), drawn.texels.size() / 5);
+    const double psnr = atmosphere::tools::psnrRgb(drawnSky, renderedSky);
+    std::printf("drawSky against render() at %.0f degrees: %.1f dB\n", elevation, psnr);
+    EXPECT_GT(psnr, 60.0) << elevation;
+  }
+}
+
 TEST_F(AtmosphereGpu, SunSweepThroughTwilightToNightStaysFiniteAndSmooth) {
   AtmosphereHarness harness(device(), kExtent);
   const atmosphere::Parameters earth;

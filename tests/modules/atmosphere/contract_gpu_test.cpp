@@ -29,6 +29,7 @@ atmosphere::CreateInfo shimmedInfo(engine::gfx::Device& device) {
   info.getDeviceProcAddr = test::shim::getDeviceProcAddr();
   info.maxRenderExtent = {640, 360};
   info.maxFramesInFlight = 2;
+  info.skyPassColorFormat = VK_FORMAT_R16G16B16A16_SFLOAT;  // drawSky()'s pipeline too
   return info;
 }
 
@@ -234,6 +235,8 @@ TEST_F(Contract, EveryErrorHasACode) {
     EXPECT_FALSE(context->render(cmd, colour.view(), VK_NULL_HANDLE, VK_IMAGE_LAYOUT_GENERAL,
                                  kExtent, &error));
     EXPECT_EQ(error.code, atmosphere::ErrorCode::InvalidInputs) << "render() before dispatch()";
+    EXPECT_FALSE(context->drawSky(cmd, &error));
+    EXPECT_EQ(error.code, atmosphere::ErrorCode::InvalidInputs) << "drawSky() before dispatch()";
     atmosphere::FrameInputs in = frame(cmd, kExtent, 0);
     in.sunIlluminance = glm::vec3(-1.0f);
     EXPECT_FALSE(context->dispatch(in, {}, {}, &error));
@@ -252,6 +255,18 @@ TEST_F(Contract, EveryErrorHasACode) {
     EXPECT_FALSE(context->render(cmd, colour.view(), VK_NULL_HANDLE, VK_IMAGE_LAYOUT_GENERAL,
                                  {80, 45}, &error));
     EXPECT_NE(error.message.find("extent"), std::string::npos) << error.message;
+    EXPECT_FALSE(context->drawSky(VK_NULL_HANDLE, &error));
+    EXPECT_EQ(error.code, atmosphere::ErrorCode::InvalidInputs);
+  });
+  // A context made without a sky pass format has no drawSky().
+  info = shimmedInfo(device);
+  info.skyPassColorFormat = VK_FORMAT_UNDEFINED;
+  auto computeOnly = atmosphere::Context::create(info, &error);
+  ASSERT_TRUE(computeOnly) << error.message;
+  device.immediateSubmit([&](VkCommandBuffer cmd) {
+    EXPECT_FALSE(computeOnly->drawSky(cmd, &error));
+    EXPECT_EQ(error.code, atmosphere::ErrorCode::InvalidInputs);
+    EXPECT_NE(error.message.find("skyPassColorFormat"), std::string::npos) << error.message;
   });
   for (atmosphere::ErrorCode code :
        {atmosphere::ErrorCode::None, atmosphere::ErrorCode::InvalidCreateInfo,

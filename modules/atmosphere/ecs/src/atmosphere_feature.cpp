@@ -44,6 +44,7 @@ AtmosphereFeature::AtmosphereFeature(engine::ecs::World& world, const RenderDevi
   info.maxRenderExtent = device.maxExtent;
   info.maxFramesInFlight = device.framesInFlight;
   info.reversedZ = true;
+  info.skyPassColorFormat = kColorFormat;  // the sky is drawn in the renderer's scene pass
   info.passTimings = true;  // a few timestamps: where its time goes, for HUD and logs
   atmosphere::Error error;
   context_ = atmosphere::Context::create(info, &error);
@@ -116,12 +117,10 @@ void AtmosphereFeature::dispatch(VkCommandBuffer cmd, VkExtent2D extent, std::ui
   }
 }
 
-void AtmosphereFeature::drawSky(VkCommandBuffer cmd, VkImageView color, VkExtent2D extent) {
-  if (!dispatched_) return;  // reported; the frame keeps whatever the colour holds
+void AtmosphereFeature::drawSkyInScenePass(VkCommandBuffer cmd) {
+  if (!dispatched_) return;  // reported; the sky's pixels keep the pass's clear colour
   atmosphere::Error error;
-  if (!context_->render(cmd, color, VK_NULL_HANDLE, VK_IMAGE_LAYOUT_UNDEFINED, extent, &error)) {
-    reportError(error);
-  }
+  if (!context_->drawSky(cmd, &error)) reportError(error);
 }
 
 SceneTextures AtmosphereFeature::addPassesBeforeScene(FrameGraph& graph,
@@ -159,28 +158,9 @@ SceneTextures AtmosphereFeature::addPassesBeforeScene(FrameGraph& graph,
         dispatch(context.cmd(), extent, context.frameIndex());
       });
 
-  // The sky in every pixel of a new scene colour; the renderer draws its geometry over it and
-  // hazes it itself (Context::render with the host's depth does both for hosts that cannot).
-  struct SkyData {
-    TextureHandle hdr;
-  };
-  TextureDesc hdrDesc;
-  hdrDesc.extent = {scene.extent.width, scene.extent.height, 1};
-  hdrDesc.format = kColorFormat;
-  const SkyData& sky = graph.addPass<SkyData>(
-      "atmosphere sky", PassType::Compute,
-      [&](PassBuilder& builder, SkyData& d) {
-        d.hdr = builder.write(builder.createTexture("scene hdr", hdrDesc), Access::StorageWrite);
-        // Ordered after the dispatch, whose LUTs it reads (synchronised by the module).
-        builder.read(made.environment, Access::SampledReadGeneral);
-      },
-      [this](const SkyData& d, PassContext& context) {
-        const VkExtent3D extent = context.extent(d.hdr);
-        drawSky(context.cmd(), context.view(d.hdr), {extent.width, extent.height});
-      });
-
+  // The sky itself is drawn in the renderer's scene pass, after its geometry, where only the
+  // pixels the geometry left empty are shaded (drawSkyInScenePass).
   SceneTextures out = scene;
-  out.hdr = sky.hdr;
   out.skyRadiance = made.environment;
   out.aerialPerspective = made.froxels;
   out.aerialPerspectiveSlices = imported_.aerialPerspective.extent.depth;

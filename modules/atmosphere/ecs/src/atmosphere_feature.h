@@ -25,6 +25,7 @@ class AtmosphereFeature final : public engine::render::RenderFeature {
 
   const char* name() const override { return "atmosphere"; }
   bool drawsSky() const override { return true; }
+  void drawSkyInScenePass(VkCommandBuffer cmd) override;
   bool prepare(VkExtent2D extent, std::uint64_t frameIndex) override;
   engine::render::SceneTextures addPassesBeforeScene(
       engine::render::FrameGraph& graph, const engine::render::SceneTextures& scene) override;
@@ -36,7 +37,6 @@ class AtmosphereFeature final : public engine::render::RenderFeature {
   void publishMeasurements(std::uint64_t completedFrame);
   void publishSunTransmittance();
   void dispatch(VkCommandBuffer cmd, VkExtent2D extent, std::uint64_t frameIndex);
-  void drawSky(VkCommandBuffer cmd, VkImageView color, VkExtent2D extent);
   void reportError(const atmosphere::Error& error);
 
   engine::ecs::World& world_;

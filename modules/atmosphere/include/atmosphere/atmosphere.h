@@ -9,7 +9,9 @@
 //      depend only on the parameters when they changed (transmittance, multiple scattering),
 //      then the sky-view LUT, the aerial-perspective froxels and the sky-radiance map;
 //   4. context->render(...)                               the sky and the sun's disc where the
-//      host's depth is far, the aerial perspective over its geometry, in place on its colour;
+//      host's depth is far, the aerial perspective over its geometry, in place on its colour
+//      (a compute pass); or context->drawSky(...) inside the host's scene pass after its
+//      geometry (only the sky's pixels are shaded; the host hazes its geometry itself);
 //      context->outputs()                                the LUTs, froxels and sky map for
 //      other effects (clouds hazed and lit by the sky) to read.
 // Never submits, waits or presents; records only into the host's command buffer.
@@ -111,6 +113,10 @@ struct CreateInfo {
   VkExtent2D maxRenderExtent{1920, 1080};       // a bound, [1, 16384] per side
   std::uint32_t maxFramesInFlight = 2;          // [1, 8], as the clouds module's
   bool reversedZ = true;
+  // The colour format of the host's scene pass drawSky() draws in (dynamic rendering, with a
+  // depth attachment of depthFormat); VK_FORMAT_UNDEFINED: no drawSky(), and no graphics
+  // pipeline is made (then the device needs no dynamicRendering).
+  VkFormat skyPassColorFormat = VK_FORMAT_UNDEFINED;
   bool passTimings = false;  // timestamps per pass for passTimings()
 };
 
@@ -211,6 +217,15 @@ class Context {
   // distance. Without a depth view every pixel is sky. Written by a compute shader.
   bool render(VkCommandBuffer commandBuffer, VkImageView color, VkImageView depth,
               VkImageLayout depthLayout, VkExtent2D extent, Error* error);
+
+  // The sky and the sun's disc drawn inside the host's dynamic-rendering pass (colour
+  // CreateInfo::skyPassColorFormat, depth CreateInfo::depthFormat, the extent of this frame's
+  // dispatch()), after dispatch() this frame: a triangle over the screen at the far plane, depth
+  // test EQUAL, no depth write. Drawn after the opaque geometry, it shades only the pixels the
+  // geometry left at the far plane; it does not haze the geometry (read outputs()'s aerial
+  // perspective where you shade it). Sets its own pipeline, descriptor set, viewport and
+  // scissor. Needs the device's dynamicRendering feature.
+  bool drawSky(VkCommandBuffer commandBuffer, Error* error);
 
   Outputs outputs() const;
   // The sky measured in frame `frameIndex`, which must have completed (and be one of the last

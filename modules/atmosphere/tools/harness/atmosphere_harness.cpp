@@ -66,7 +66,8 @@ AtmosphereHarness::AtmosphereHarness(gfx::Device& device, VkExtent2D maxExtent, 
   info.getInstanceProcAddr = vkGetInstanceProcAddr;
   info.getDeviceProcAddr = vkGetDeviceProcAddr;
   info.maxRenderExtent = maxExtent;
-  info.maxFramesInFlight = 1;  // every frame is submitted and waited for
+  info.maxFramesInFlight = 1;               // every frame is submitted and waited for
+  info.skyPassColorFormat = kColourFormat;  // drawSky() too
   info.passTimings = passTimings;
   Error error;
   context_ = Context::create(info, &error);
@@ -81,22 +82,24 @@ void AtmosphereHarness::prepareHostImages(const SkyView& view, VkExtent2D extent
   if (!colour_ || colour_.extent().width != extent.width ||
       colour_.extent().height != extent.height) {
     colour_ = gfx::Image(
+        device_,
+        gfx::ImageDesc{VK_IMAGE_TYPE_2D,
+                       kColourFormat,
+                       {extent.width, extent.height, 1},
+                       1,
+                       1,
+                       VK_IMAGE_USAGE_STORAGE_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT |
+                           VK_IMAGE_USAGE_TRANSFER_SRC_BIT | VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT,
+                       "harness colour"});
+    depth_ = gfx::Image(
         device_, gfx::ImageDesc{VK_IMAGE_TYPE_2D,
-                                kColourFormat,
+                                VK_FORMAT_D32_SFLOAT,
                                 {extent.width, extent.height, 1},
                                 1,
                                 1,
-                                VK_IMAGE_USAGE_STORAGE_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT |
-                                    VK_IMAGE_USAGE_TRANSFER_SRC_BIT,
-                                "harness colour"});
-    depth_ = gfx::Image(device_,
-                        gfx::ImageDesc{VK_IMAGE_TYPE_2D,
-                                       VK_FORMAT_D32_SFLOAT,
-                                       {extent.width, extent.height, 1},
-                                       1,
-                                       1,
-                                       VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT,
-                                       "harness depth"});
+                                VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT |
+                                    VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT,
+                                "harness depth"});
   }
   // The host's frame: the ground drawn in one colour where the depth sees it.
   std::vector<float> depth(std::size_t{extent.width} * extent.height, 0.0f);
@@ -118,8 +121,9 @@ void AtmosphereHarness::prepareHostImages(const SkyView& view, VkExtent2D extent
   gfx::uploadToImage(device_, colour_, std::as_bytes(std::span(colour)), kColourForModule);
 }
 
-std::string AtmosphereHarness::tryRender(const SkyView& view, const Parameters& parameters,
-                                         const Settings& settings, VkExtent2D extent) {
+template <typename Draw>
+std::string AtmosphereHarness::record(const SkyView& view, const Parameters& parameters,
+                                      const Settings& settings, VkExtent2D extent, Draw&& draw) {
   prepareHostImages(view, extent);
   Error error;
   if (!context_->prepare(parameters, settings, extent, &error)) return error.message;
@@ -137,9 +141,7 @@ std::string AtmosphereHarness::tryRender(const SkyView& view, const Parameters& 
     in.sunIlluminance = view.sunIlluminance;
     in.frameIndex = frameIndex_;
     const std::uint32_t scope = timer_->begin(cmd, "atmosphere");
-    ok = context_->dispatch(in, parameters, settings, &error) &&
-         context_->render(cmd, colour_.view(), view.groundDepth ? depth_.view() : VK_NULL_HANDLE,
-                          VK_IMAGE_LAYOUT_DEPTH_READ_ONLY_OPTIMAL, extent, &error);
+    ok = context_->dispatch(in, parameters, settings, &error) && draw(cmd, error);
     timer_->end(cmd, scope);
   });
   const auto scopes = timer_->resolve();
@@ -149,11 +151,67 @@ std::string AtmosphereHarness::tryRender(const SkyView& view, const Parameters& 
   return {};
 }
 
+std::string AtmosphereHarness::tryRender(const SkyView& view, const Parameters& parameters,
+                                         const Settings& settings, VkExtent2D extent) {
+  return record(view, parameters, settings, extent, [&](VkCommandBuffer cmd, Error& error) {
+    return context_->render(cmd, colour_.view(), view.groundDepth ? depth_.view() : VK_NULL_HANDLE,
+                            VK_IMAGE_LAYOUT_DEPTH_READ_ONLY_OPTIMAL, extent, &error);
+  });
+}
+
 FloatImage AtmosphereHarness::render(const SkyView& view, const Parameters& parameters,
                                      const Settings& settings, VkExtent2D extent) {
   if (std::string error = tryRender(view, parameters, settings, extent); !error.empty()) {
     throw engine::Error("atmosphere: " + error);
   }
+  FloatImage image;
+  image.extent = colour_.extent();
+  image.texels = unpackHalves(gfx::readbackImage(device_, colour_, kColourForModule));
+  return image;
+}
+
+FloatImage AtmosphereHarness::drawSky(const SkyView& view, const Parameters& parameters,
+                                      const Settings& settings, VkExtent2D extent) {
+  const std::string problem =
+      record(view, parameters, settings, extent, [&](VkCommandBuffer cmd, Error& error) {
+        // The host's uploads (previous submissions) before the attachments are used.
+        VkMemoryBarrier2 uploads{VK_STRUCTURE_TYPE_MEMORY_BARRIER_2};
+        uploads.srcStageMask = VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT;
+        uploads.srcAccessMask = VK_ACCESS_2_MEMORY_WRITE_BIT;
+        uploads.dstStageMask = VK_PIPELINE_STAGE_2_ALL_GRAPHICS_BIT;
+        uploads.dstAccessMask = VK_ACCESS_2_MEMORY_READ_BIT | VK_ACCESS_2_MEMORY_WRITE_BIT;
+        VkDependencyInfo dependency{VK_STRUCTURE_TYPE_DEPENDENCY_INFO};
+        dependency.memoryBarrierCount = 1;
+        dependency.pMemoryBarriers = &uploads;
+        vkCmdPipelineBarrier2(cmd, &dependency);
+        VkRenderingAttachmentInfo colour{VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO};
+        colour.imageView = colour_.view();
+        colour.imageLayout = VK_IMAGE_LAYOUT_GENERAL;
+        colour.loadOp = VK_ATTACHMENT_LOAD_OP_LOAD;
+        colour.storeOp = VK_ATTACHMENT_STORE_OP_STORE;
+        VkRenderingAttachmentInfo depth{VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO};
+        depth.imageView = depth_.view();
+        depth.imageLayout = VK_IMAGE_LAYOUT_DEPTH_READ_ONLY_OPTIMAL;
+        depth.loadOp = VK_ATTACHMENT_LOAD_OP_LOAD;
+        depth.storeOp = VK_ATTACHMENT_STORE_OP_NONE;
+        VkRenderingInfo rendering{VK_STRUCTURE_TYPE_RENDERING_INFO};
+        rendering.renderArea = {{0, 0}, extent};
+        rendering.layerCount = 1;
+        rendering.colorAttachmentCount = 1;
+        rendering.pColorAttachments = &colour;
+        rendering.pDepthAttachment = &depth;
+        vkCmdBeginRendering(cmd, &rendering);
+        const bool drawn = context_->drawSky(cmd, &error);
+        vkCmdEndRendering(cmd);
+        // Back to what readback and render() expect.
+        uploads.srcStageMask = VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT;
+        uploads.srcAccessMask = VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT;
+        uploads.dstStageMask = VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT;
+        uploads.dstAccessMask = VK_ACCESS_2_MEMORY_READ_BIT | VK_ACCESS_2_MEMORY_WRITE_BIT;
+        vkCmdPipelineBarrier2(cmd, &dependency);
+        return drawn;
+      });
+  if (!problem.empty()) throw engine::Error("atmosphere: " + problem);
   FloatImage image;
   image.extent = colour_.extent();
   image.texels = unpackHalves(gfx::readbackImage(device_, colour_, kColourForModule));

@@ -58,6 +58,11 @@ class AtmosphereHarness {
   std::string tryRender(const SkyView& view, const Parameters& parameters, const Settings& settings,
                         VkExtent2D extent);
 
+  // The same frame drawn the other way: dispatch(), then drawSky() inside a dynamic-rendering
+  // pass over the host's colour (the ground, unhazed) and its depth, as a host's scene pass
+  // draws it after its geometry.
+  FloatImage drawSky(const SkyView& view, const Parameters& parameters, const Settings& settings,
+                     VkExtent2D extent);
   // The module's outputs after the last render.
   FloatImage read(const OutputImage& output);
   FloatImage readTransmittance() { return read(context_->outputs().transmittance); }
@@ -74,6 +79,10 @@ class AtmosphereHarness {
 
  private:
   void prepareHostImages(const SkyView& view, VkExtent2D extent);
+  // Prepares and records dispatch() and then `draw` (render() or drawSky()); the error message.
+  template <typename Draw>
+  std::string record(const SkyView& view, const Parameters& parameters, const Settings& settings,
+                     VkExtent2D extent, Draw&& draw);
 
   engine::gfx::Device& device_;
   std::unique_ptr<Context> context_;

@@ -74,6 +74,8 @@ class DeviceContext {
                                   const std::string& name) const;
   UniquePipelineLayout createPipelineLayout(const VkPipelineLayoutCreateInfo& info,
                                             const std::string& name) const;
+  UniquePipeline createGraphicsPipeline(const VkGraphicsPipelineCreateInfo& info,
+                                        const std::string& name) const;
   UniquePipeline createComputePipeline(const VkComputePipelineCreateInfo& info,
                                        const std::string& name) const;
   UniqueDescriptorPool createDescriptorPool(const VkDescriptorPoolCreateInfo& info,

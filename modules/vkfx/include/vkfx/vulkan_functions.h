@@ -35,6 +35,7 @@ namespace vkfx {
   X(vkCreatePipelineLayout)        \
   X(vkDestroyPipelineLayout)       \
   X(vkCreateComputePipelines)      \
+  X(vkCreateGraphicsPipelines)     \
   X(vkDestroyPipeline)             \
   X(vkCreateDescriptorPool)        \
   X(vkDestroyDescriptorPool)       \
@@ -44,6 +45,9 @@ namespace vkfx {
   X(vkCmdBindDescriptorSets)       \
   X(vkCmdPushConstants)            \
   X(vkCmdDispatch)                 \
+  X(vkCmdDraw)                     \
+  X(vkCmdSetViewport)              \
+  X(vkCmdSetScissor)               \
   X(vkCmdPipelineBarrier2)         \
   X(vkCmdUpdateBuffer)             \
   X(vkCmdFillBuffer)               \

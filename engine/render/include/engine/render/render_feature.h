@@ -47,18 +47,22 @@ class RenderFeature {
  public:
   virtual ~RenderFeature();
   virtual const char* name() const = 0;
-  // Whether the feature draws the sky (in addPassesBeforeScene): then the renderer draws none
-  // of its own, draws its geometry over the feature's and hazes it with the feature's aerial
-  // perspective.
+  // Whether the feature draws the sky (drawSkyInScenePass()): then the renderer draws none of
+  // its own, has a scene pass even without geometry, and hazes its geometry with the feature's
+  // aerial perspective.
   virtual bool drawsSky() const { return false; }
+  // Inside the renderer's scene pass (dynamic rendering: RenderDevice's hdr colour and depth,
+  // the frame's extent), after its opaque geometry: draws the sky where the depth is still the
+  // far plane. Only for features that draw the sky.
+  virtual void drawSkyInScenePass(VkCommandBuffer cmd);
   // Outside command recording, before the frame `frameIndex` is recorded (every frame before
   // frameIndex - framesInFlight has completed): create pipelines and grow resources for an
   // output of `extent`. Returns true when the textures addPasses() imported changed, so the
   // graph must be rebuilt.
   virtual bool prepare(VkExtent2D extent, std::uint64_t frameIndex) = 0;
   // Adds the passes the renderer's opaque scene depends on, before it: `scene` has only the
-  // extent and what earlier features provided. A feature that draws the sky creates the scene
-  // colour with the sky in it and returns it with the sky's light. Default: none.
+  // extent and what earlier features provided. A feature that draws the sky returns the sky's
+  // light and haze (SceneTextures::skyRadiance, aerialPerspective). Default: none.
   virtual SceneTextures addPassesBeforeScene(FrameGraph& graph, const SceneTextures& scene);
   // Adds the feature's passes after the opaque scene; returns the scene textures later passes
   // use (the colour with the effect applied).
