@@ -54,7 +54,11 @@ Renderer::Renderer(gfx::Device& device, render::PresentTarget& target, ecs::Worl
   const double ms = gfx::warmUpPipelines(device, pipelines);
   // The features build their pipelines and size their resources for the first frame now,
   // outside any recording (each frame prepares them again: cheap when nothing changed).
-  for (render::RenderFeature* feature : features_) feature->prepare(target.extent(), 0);
+  // (A window's swapchain may not exist yet: then the first frame prepares them.)
+  const VkExtent2D first = target.extent();
+  if (first.width > 0 && first.height > 0) {
+    for (render::RenderFeature* feature : features_) feature->prepare(first, 0);
+  }
   const double featureMs =
       std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count() -
       ms;
