@@ -9,6 +9,12 @@ SceneTextures RenderFeature::addPassesBeforeScene(FrameGraph& /*graph*/,
   return scene;
 }
 
+bool usableRenderDevice(const RenderDevice* device, std::string& reason) {
+  if (device != nullptr && device->device != nullptr) return true;
+  reason = "no renderer published a RenderDevice";
+  return false;
+}
+
 void RenderFeature::drawSkyInScenePass(VkCommandBuffer /*cmd*/) {}
 
 void RenderFeature::finish(std::uint64_t /*lastFrameIndex*/) {}

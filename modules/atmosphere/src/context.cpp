@@ -4,6 +4,7 @@
 #include <new>
 
 #include "context_impl.h"
+#include "vkfx/api_boundary.h"
 
 namespace atmosphere {
 
@@ -35,59 +36,15 @@ const char* errorCodeName(ErrorCode code) {
 
 namespace {
 
-bool fail(Error* error, ErrorCode code, const std::string& message) {
-  if (error != nullptr) *error = Error{code, message};
-  return false;
-}
-
-bool succeed(Error* error) {
-  if (error != nullptr) *error = Error{};
-  return true;
-}
-
-bool finite(const glm::mat4& m) {
-  for (int c = 0; c < 4; ++c) {
-    for (int r = 0; r < 4; ++r) {
-      if (!std::isfinite(m[c][r])) return false;
-    }
-  }
-  return true;
-}
-
-bool finite(const glm::vec3& v) {
-  return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
-}
-
-std::string extentText(VkExtent2D e) {
-  return std::to_string(e.width) + "x" + std::to_string(e.height);
-}
-
-std::string checkExtent(const char* field, VkExtent2D extent, const CreateInfo& info) {
-  if (extent.width == 0 || extent.height == 0 || extent.width > info.maxRenderExtent.width ||
-      extent.height > info.maxRenderExtent.height) {
-    return std::string(field) + " = " + extentText(extent) +
-           ": must be non-zero and within CreateInfo.maxRenderExtent (" +
-           extentText(info.maxRenderExtent) + ")";
-  }
-  return {};
-}
+using vkfx::checkExtent;
+using vkfx::extentText;
+using vkfx::fail;
+using vkfx::finite;
+using vkfx::nonNegative;
+using vkfx::succeed;
 
 std::string checkCreateInfo(const CreateInfo& info) {
-  if (info.device == VK_NULL_HANDLE || info.physicalDevice == VK_NULL_HANDLE ||
-      info.instance == VK_NULL_HANDLE || info.getDeviceProcAddr == nullptr ||
-      info.getInstanceProcAddr == nullptr) {
-    return "CreateInfo: instance, physicalDevice, device and both proc-addr functions are "
-           "required";
-  }
-  if (info.maxFramesInFlight < 1 || info.maxFramesInFlight > 8) {
-    return "CreateInfo.maxFramesInFlight = " + std::to_string(info.maxFramesInFlight) +
-           ": must be in [1, 8]";
-  }
-  if (info.maxRenderExtent.width == 0 || info.maxRenderExtent.height == 0 ||
-      info.maxRenderExtent.width > 16384 || info.maxRenderExtent.height > 16384) {
-    return "CreateInfo.maxRenderExtent = " + extentText(info.maxRenderExtent) +
-           ": must be in [1, 16384] per side";
-  }
+  if (std::string problem = vkfx::checkDeviceAndLimits(info); !problem.empty()) return problem;
   if (info.colorFormat != VK_FORMAT_R16G16B16A16_SFLOAT) {
     return "CreateInfo.colorFormat = " + std::to_string(static_cast<int>(info.colorFormat)) +
            ": only R16G16B16A16_SFLOAT is supported";
@@ -112,34 +69,16 @@ std::string checkInputs(const FrameInputs& in, const CreateInfo& info) {
     return "FrameInputs.sunDirection: must be finite and not zero";
   }
   const glm::vec3& e = in.sunIlluminance;
-  if (!finite(e) || e.x < 0.0f || e.y < 0.0f || e.z < 0.0f) {
+  if (!finite(e) || !nonNegative(e)) {
     return "FrameInputs.sunIlluminance: must be finite and not negative";
   }
   return {};
 }
 
-ErrorCode codeOf(vkfx::Failure failure) {
-  switch (failure) {
-    case vkfx::Failure::OutOfMemory:
-      return ErrorCode::OutOfMemory;
-    case vkfx::Failure::Unsupported:
-      return ErrorCode::UnsupportedDevice;
-    case vkfx::Failure::VulkanFailure:
-      break;
-  }
-  return ErrorCode::VulkanFailure;
-}
-
+// Runs `work`, turning what it throws into the error out-parameter.
 template <typename Work>
 bool guarded(Error* error, Work&& work) {
-  try {
-    work();
-  } catch (const vkfx::Error& e) {
-    return fail(error, codeOf(e.failure()), std::string("atmosphere: ") + e.what());
-  } catch (const std::bad_alloc&) {
-    return fail(error, ErrorCode::OutOfMemory, "atmosphere: out of host memory");
-  }
-  return succeed(error);
+  return vkfx::guarded(error, "atmosphere", std::forward<Work>(work));
 }
 
 }  // namespace

@@ -13,6 +13,7 @@ using detail::Program;
 namespace {
 
 constexpr VkFormat kLutFormat = VK_FORMAT_R16G16B16A16_SFLOAT;
+constexpr VkSamplerAddressMode kClamp = VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE;
 
 const detail::DeviceContext& checkedDevice(const detail::DeviceContext& device) {
   if (!device.supportsStorage(kLutFormat)) {
@@ -20,18 +21,6 @@ const detail::DeviceContext& checkedDevice(const detail::DeviceContext& device) 
                       "the device cannot use RGBA16F as a storage image");
   }
   return device;
-}
-
-detail::UniqueSampler makeSampler(const detail::DeviceContext& device, VkFilter filter,
-                                  const char* name) {
-  VkSamplerCreateInfo info{VK_STRUCTURE_TYPE_SAMPLER_CREATE_INFO};
-  info.magFilter = filter;
-  info.minFilter = filter;
-  info.mipmapMode = VK_SAMPLER_MIPMAP_MODE_NEAREST;
-  info.addressModeU = VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE;
-  info.addressModeV = VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE;
-  info.addressModeW = VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE;
-  return device.createSampler(info, name);
 }
 
 detail::UniqueDescriptorPool makePool(const detail::DeviceContext& device, std::uint32_t frames) {
@@ -59,8 +48,8 @@ Context::Impl::Impl(const CreateInfo& info, const detail::VulkanFunctions& funct
     : info_(info),
       device_(info.device, info.physicalDevice, info.debugUtils, functions, "atmosphere"),
       programs_(checkedDevice(device_), info.reversedZ),
-      linearSampler_(makeSampler(device_, VK_FILTER_LINEAR, "linear sampler")),
-      nearestSampler_(makeSampler(device_, VK_FILTER_NEAREST, "nearest sampler")),
+      linearSampler_(device_.createSampler(VK_FILTER_LINEAR, kClamp, "linear sampler")),
+      nearestSampler_(device_.createSampler(VK_FILTER_NEAREST, kClamp, "nearest sampler")),
       pool_(makePool(device_, info.maxFramesInFlight)) {
   if (info.skyPassColorFormat != VK_FORMAT_UNDEFINED) {
     skyDraw_ = std::make_unique<detail::SkyDraw>(device_, info.skyPassColorFormat, info.depthFormat,

@@ -64,38 +64,25 @@ void Context::Impl::dispatch(const FrameInputs& inputs, const Parameters& parame
                         VK_ACCESS_2_TRANSFER_WRITE_BIT, kReadStages, VK_ACCESS_2_UNIFORM_READ_BIT);
   writeSets(slot, VK_NULL_HANDLE, VK_IMAGE_LAYOUT_UNDEFINED, VK_NULL_HANDLE);
 
-  const std::uint32_t group = shader::kWorkgroupSize2D;
-  const auto barrierToReads = [&] {
+  // A pass over a width x height texture whose result the next passes sample.
+  const auto lutPass = [&](Program program, std::uint32_t width, std::uint32_t height) {
+    const std::uint32_t group = shader::kWorkgroupSize2D;
+    beginPass(cmd, program);
+    bindAndDispatch(cmd, program, slot, detail::groupsFor(width, group),
+                    detail::groupsFor(height, group));
     detail::memoryBarrier(device_, cmd, kCompute, detail::kStorageWrite, kCompute, kSampled);
+    endPass(cmd, program);
   };
   if (lutsDirty_) {
     // Depend only on the parameters: recorded when they (or their recipe) changed.
-    beginPass(cmd, Program::Transmittance);
-    bindAndDispatch(cmd, Program::Transmittance, slot,
-                    detail::groupsFor(settings.transmittanceWidth, group),
-                    detail::groupsFor(settings.transmittanceHeight, group));
-    barrierToReads();
-    endPass(cmd, Program::Transmittance);
-    beginPass(cmd, Program::MultiScattering);
-    bindAndDispatch(cmd, Program::MultiScattering, slot,
-                    detail::groupsFor(settings.multiScatteringSize, group),
-                    detail::groupsFor(settings.multiScatteringSize, group));
-    barrierToReads();
-    endPass(cmd, Program::MultiScattering);
+    lutPass(Program::Transmittance, settings.transmittanceWidth, settings.transmittanceHeight);
+    lutPass(Program::MultiScattering, settings.multiScatteringSize, settings.multiScatteringSize);
     lutsDirty_ = false;
     ++lutBuilds_;
   }
-  beginPass(cmd, Program::SkyView);
-  bindAndDispatch(cmd, Program::SkyView, slot, detail::groupsFor(settings.skyViewWidth, group),
-                  detail::groupsFor(settings.skyViewHeight, group));
-  barrierToReads();
-  endPass(cmd, Program::SkyView);
-  beginPass(cmd, Program::AerialPerspective);
-  bindAndDispatch(cmd, Program::AerialPerspective, slot,
-                  detail::groupsFor(settings.aerialPerspectiveWidth, group),
-                  detail::groupsFor(settings.aerialPerspectiveHeight, group));
-  barrierToReads();
-  endPass(cmd, Program::AerialPerspective);
+  lutPass(Program::SkyView, settings.skyViewWidth, settings.skyViewHeight);
+  lutPass(Program::AerialPerspective, settings.aerialPerspectiveWidth,
+          settings.aerialPerspectiveHeight);
   beginPass(cmd, Program::Environment);
   bindAndDispatch(cmd, Program::Environment, slot, 1, 1);
   // The outputs, to hosts' compute and fragment shaders; the measurement, to the host.

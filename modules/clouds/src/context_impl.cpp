@@ -29,18 +29,6 @@ const detail::DeviceContext& checkedDevice(const detail::DeviceContext& device) 
   return device;
 }
 
-detail::UniqueSampler makeSampler(const detail::DeviceContext& device, VkFilter filter,
-                                  VkSamplerAddressMode address, const char* name) {
-  VkSamplerCreateInfo info{VK_STRUCTURE_TYPE_SAMPLER_CREATE_INFO};
-  info.magFilter = filter;
-  info.minFilter = filter;
-  info.mipmapMode = VK_SAMPLER_MIPMAP_MODE_NEAREST;
-  info.addressModeU = address;
-  info.addressModeV = VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE;
-  info.addressModeW = VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE;
-  return device.createSampler(info, name);
-}
-
 detail::UniqueDescriptorPool makePool(const detail::DeviceContext& device, std::uint32_t frames) {
   // Fixed sets: 3 noise generators, 2 weather generators, 3 maxima. Per slot: 7 sets.
   const VkDescriptorPoolSize sizes[] = {
@@ -68,10 +56,10 @@ Context::Impl::Impl(const CreateInfo& info, const detail::VulkanFunctions& funct
       device_(info.device, info.physicalDevice, info.debugUtils, functions, "clouds"),
       programs_(checkedDevice(device_), info.compositeColorFormat != VK_FORMAT_UNDEFINED),
       images_(device_),
-      nearestSampler_(makeSampler(device_, VK_FILTER_NEAREST, VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE,
-                                  "nearest sampler")),
-      linearSampler_(
-          makeSampler(device_, VK_FILTER_LINEAR, VK_SAMPLER_ADDRESS_MODE_REPEAT, "linear sampler")),
+      nearestSampler_(device_.createSampler(
+          VK_FILTER_NEAREST, VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE, "nearest sampler")),
+      linearSampler_(device_.createSampler(VK_FILTER_LINEAR, VK_SAMPLER_ADDRESS_MODE_REPEAT,
+                                           "linear sampler")),
       pool_(makePool(device_, info.maxFramesInFlight)),
       weatherSchedule_(static_cast<std::uint32_t>(shader::kWeatherMapSize), kWeatherRowsAhead) {
   if (info.passTimings) {

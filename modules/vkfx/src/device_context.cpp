@@ -115,6 +115,18 @@ UniqueSampler DeviceContext::createSampler(const VkSamplerCreateInfo& info,
                                                                 "vkCreateSampler", name);
 }
 
+UniqueSampler DeviceContext::createSampler(VkFilter filter, VkSamplerAddressMode addressU,
+                                           const std::string& name) const {
+  VkSamplerCreateInfo info{VK_STRUCTURE_TYPE_SAMPLER_CREATE_INFO};
+  info.magFilter = filter;
+  info.minFilter = filter;
+  info.mipmapMode = VK_SAMPLER_MIPMAP_MODE_NEAREST;
+  info.addressModeU = addressU;
+  info.addressModeV = VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE;
+  info.addressModeW = VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE;
+  return createSampler(info, name);
+}
+
 UniqueShaderModule DeviceContext::createShaderModule(const VkShaderModuleCreateInfo& info,
                                                      const std::string& name) const {
   return make<UniqueShaderModule, &VulkanFunctions::vkCreateShaderModule>(

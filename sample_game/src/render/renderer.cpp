@@ -97,8 +97,7 @@ void Renderer::rebuildGraph(VkExtent2D extent) {
     scene.depth = targets.depth;
   }
   for (render::RenderFeature* feature : features_) scene = feature->addPasses(graph, scene);
-  render::TextureHandle hdr = scene.hdr;
-  hdr = scene.hdr;
+  const render::TextureHandle hdr = scene.hdr;
   render::TextureHandle display =
       render::addTonemapPass(graph, tonemapper_, hdr, targetHandle_, &tonemap_);
   if (hud_) display = addHudPass(graph, *hud_, display);

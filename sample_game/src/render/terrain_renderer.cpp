@@ -4,7 +4,6 @@
 #include <cstring>
 #include <unordered_map>
 
-#include "engine/gfx/descriptors.h"
 #include "engine/gfx/upload.h"
 #include "sample_shaders/terrain.frag.spv.h"
 #include "sample_shaders/terrain.vert.spv.h"

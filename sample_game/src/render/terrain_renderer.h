@@ -11,8 +11,6 @@
 #include "engine/assets/gltf_loader.h"
 #include "engine/gfx/pipelines.h"
 #include "engine/gfx/resources.h"
-#include "engine/render/frame_graph.h"
-#include "render/sky_pass.h"
 
 namespace sample {
 

@@ -33,12 +33,7 @@ AtmosphereFeature::AtmosphereFeature(engine::ecs::World& world, const RenderDevi
     throw engine::ecs::ModuleUnsupported("the atmosphere draws into an RGBA16F scene colour");
   }
   atmosphere::CreateInfo info;
-  info.instance = device_.vkInstance();
-  info.physicalDevice = device_.physical();
-  info.device = device_.vk();
-  info.getInstanceProcAddr = vkGetInstanceProcAddr;
-  info.getDeviceProcAddr = vkGetDeviceProcAddr;
-  info.debugUtils = device_.instance().debugUtilsEnabled();
+  engine::render::describeDevice(device_, info);
   info.colorFormat = kColorFormat;
   info.depthFormat = device.depthFormat;
   info.maxRenderExtent = device.maxExtent;

@@ -16,12 +16,8 @@ bool AtmosphereModule::supported(const engine::ecs::World& world, std::string& r
     reason = "the scene has no atmosphere";
     return false;
   }
-  const auto* device = world.ctx().tryGet<engine::render::RenderDevice>();
-  if (device == nullptr || device->device == nullptr) {
-    reason = "no renderer published a RenderDevice";
-    return false;
-  }
-  return true;
+  return engine::render::usableRenderDevice(world.ctx().tryGet<engine::render::RenderDevice>(),
+                                            reason);
 }
 
 void AtmosphereModule::install(engine::ecs::World& world, engine::ecs::Scheduler& /*scheduler*/) {

@@ -56,12 +56,7 @@ CloudFeature::CloudFeature(engine::ecs::World& world, const RenderDevice& device
   }
   if (layer.weatherMap) weatherMap_ = loadWeatherMap(device_, *layer.weatherMap);
   clouds::CreateInfo info;
-  info.instance = device_.vkInstance();
-  info.physicalDevice = device_.physical();
-  info.device = device_.vk();
-  info.getInstanceProcAddr = vkGetInstanceProcAddr;
-  info.getDeviceProcAddr = vkGetDeviceProcAddr;
-  info.debugUtils = device_.instance().debugUtilsEnabled();
+  engine::render::describeDevice(device_, info);
   info.depthFormat = device.depthFormat;
   info.compositeColorFormat = kCompositeFormat;
   info.maxRenderExtent = device.maxExtent;

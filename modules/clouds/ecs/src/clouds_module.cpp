@@ -16,12 +16,8 @@ bool CloudsModule::supported(const engine::ecs::World& world, std::string& reaso
     reason = "the scene has no cloud layer";
     return false;
   }
-  const auto* device = world.ctx().tryGet<engine::render::RenderDevice>();
-  if (device == nullptr || device->device == nullptr) {
-    reason = "no renderer published a RenderDevice";
-    return false;
-  }
-  return true;
+  return engine::render::usableRenderDevice(world.ctx().tryGet<engine::render::RenderDevice>(),
+                                            reason);
 }
 
 void CloudsModule::install(engine::ecs::World& world, engine::ecs::Scheduler& /*scheduler*/) {

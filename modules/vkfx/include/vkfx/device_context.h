@@ -68,6 +68,10 @@ class DeviceContext {
   UniqueMemory allocateFor(const VkMemoryRequirements& requirements,
                            VkMemoryPropertyFlags preferred, const std::string& name) const;
   UniqueSampler createSampler(const VkSamplerCreateInfo& info, const std::string& name) const;
+  // A sampler without mipmaps, clamped to the edges in v and w and `addressU` in u (REPEAT for
+  // maps that wrap around in azimuth or tile).
+  UniqueSampler createSampler(VkFilter filter, VkSamplerAddressMode addressU,
+                              const std::string& name) const;
   UniqueShaderModule createShaderModule(const VkShaderModuleCreateInfo& info,
                                         const std::string& name) const;
   UniqueSetLayout createSetLayout(const VkDescriptorSetLayoutCreateInfo& info,

@@ -8,6 +8,7 @@
 #include <vulkan/vulkan.h>
 
 #include <cstdint>
+#include <string>
 #include <vector>
 
 #include "engine/gfx/device.h"
@@ -23,6 +24,22 @@ struct RenderDevice {
   std::uint32_t framesInFlight = 0;
   VkExtent2D maxExtent{0, 0};  // the largest output the renderer will ask for
 };
+
+// For a GPU module's supported(): whether `device` (the world's RenderDevice, null when no
+// renderer published one) can be used; if not, says why in `reason`.
+bool usableRenderDevice(const RenderDevice* device, std::string& reason);
+
+// Fills the device fields every drop-in module's CreateInfo has (clouds, atmosphere): the
+// handles, the loader's proc-addr functions, and whether VK_EXT_debug_utils is enabled.
+template <typename ModuleCreateInfo>
+void describeDevice(const gfx::Device& device, ModuleCreateInfo& info) {
+  info.instance = device.vkInstance();
+  info.physicalDevice = device.physical();
+  info.device = device.vk();
+  info.getInstanceProcAddr = vkGetInstanceProcAddr;
+  info.getDeviceProcAddr = vkGetDeviceProcAddr;
+  info.debugUtils = device.instance().debugUtilsEnabled();
+}
 
 // What the passes so far made of the scene, at the output extent `extent`: its colour and
 // depth (`depth` invalid when the scene has no geometry). A feature that draws the sky also
