@@ -2,7 +2,7 @@
 // quality preset and along one-knob sweeps, times the module on the GPU (timestamps, median,
 // interleaved) and measures the error against the converged Reference mode, then writes
 // results.csv, results.md and plots.json into the output folder, then draws plot_static.png and
-// plot_fly_through.png from plots.json with plot_benchmark.py.
+// plot_fly_through.png from plots.json with tools/plot_benchmark.py.
 // Usage: clouds_bench OUT_DIR [--width 640 --height 360] [--quick] [--validation]
 // A benchmark, not a test: it asserts nothing, and a full run takes about a quarter of an hour
 // on the 2-core lavapipe machine (--quick: 320x180 and fewer frames, a few minutes).

@@ -1,11 +1,12 @@
 #!/usr/bin/env python3
-"""Draws the clouds benchmark's plots of error against cost from its plots.json.
+"""Draws a benchmark's plots of error against cost from its plots.json.
 
 Usage: plot_benchmark.py OUT_DIR/plots.json
 
-clouds_bench writes plots.json (one entry per plot: file name, title, axis labels, and series
-of points with GPU milliseconds, PSNR in dB and a label) and runs this script, which writes each
-plot as a PNG next to the JSON. Needs matplotlib (Debian: python3-matplotlib).
+The modules' benchmarks (clouds_bench, atmosphere_bench) write plots.json (one entry per plot:
+file name, title, axis labels, and series of points with GPU milliseconds, PSNR in dB and a
+label; a series is either a knob's sweep or the quality presets) and run this script, which
+writes each plot as a PNG next to the JSON. Needs matplotlib (Debian: python3-matplotlib).
 """
 import json
 import pathlib

@@ -1,0 +1,124 @@
+#include "bench_cases.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "engine/assets/image_metrics.h"
+
+namespace atmosphere::bench {
+namespace {
+
+tools::SkyView sky(double altitude, double pitch, double sunElevation, double sunAzimuth,
+                   bool ground) {
+  tools::SkyView v;
+  v.position = {0.0, altitude, 0.0};
+  v.pitchDegrees = pitch;
+  v.sunElevationDegrees = sunElevation;
+  v.sunAzimuthDegrees = sunAzimuth;
+  v.sunIlluminance = glm::vec3(127.0f);  // klx above the air, the sample's units
+  v.groundDepth = ground;
+  // A sunlit field of albedo 0.15 under a high sun (kcd/m^2); the haze in front is the test.
+  v.groundColour = glm::vec3(4.0f, 4.5f, 3.0f);
+  return v;
+}
+
+Config sweepPoint(const std::string& sweep, const std::string& value, Settings settings) {
+  return Config{sweep + " " + value, sweep, false, settings};
+}
+
+}  // namespace
+
+std::vector<View> benchmarkViews() {
+  return {
+      {"noon, over the plain", sky(300.0, 4.0, 60.0, 160.0, true)},
+      {"afternoon, looking down from 3 km", sky(3000.0, -12.0, 30.0, 120.0, true)},
+      {"sunset, towards the sun", sky(500.0, 3.0, 2.0, 15.0, true)},
+      {"twilight, sun 4 degrees down", sky(300.0, 12.0, -4.0, 20.0, false)},
+      {"from 12 km", sky(12000.0, -8.0, 20.0, 200.0, true)},
+  };
+}
+
+std::vector<Config> benchmarkConfigs() {
+  std::vector<Config> configs;
+  for (Quality q : {Quality::Low, Quality::Medium, Quality::High}) {
+    configs.push_back({qualityName(q), "", true, settingsFor(q)});
+  }
+  const Settings medium = settingsFor(Quality::Medium);
+  for (auto [w, h] : {std::pair{64u, 36u}, {96u, 54u}, {192u, 108u}, {256u, 144u}}) {
+    Settings s = medium;
+    s.skyViewWidth = w;
+    s.skyViewHeight = h;
+    configs.push_back(sweepPoint("sky-view size", std::to_string(w) + "x" + std::to_string(h), s));
+  }
+  for (std::uint32_t n : {8u, 12u, 24u, 32u}) {
+    Settings s = medium;
+    s.skyViewSamples = n;
+    configs.push_back(sweepPoint("sky-view samples", std::to_string(n), s));
+  }
+  for (std::uint32_t n : {16u, 32u, 48u}) {
+    Settings s = medium;
+    s.aerialPerspectiveWidth = s.aerialPerspectiveHeight = n;
+    configs.push_back(sweepPoint("froxels across", std::to_string(n), s));
+  }
+  for (std::uint32_t n : {16u, 24u, 48u}) {
+    Settings s = medium;
+    s.aerialPerspectiveSlices = n;
+    configs.push_back(sweepPoint("froxel slices", std::to_string(n), s));
+  }
+  for (std::uint32_t n : {2u, 4u}) {
+    Settings s = medium;
+    s.aerialPerspectiveSamplesPerSlice = n;
+    configs.push_back(sweepPoint("samples per slice", std::to_string(n), s));
+  }
+  for (std::uint32_t n : {10u, 20u, 80u}) {
+    Settings s = medium;
+    s.transmittanceSamples = n;
+    configs.push_back(sweepPoint("transmittance samples", std::to_string(n), s));
+  }
+  for (auto [w, h] : {std::pair{128u, 32u}, {512u, 128u}}) {
+    Settings s = medium;
+    s.transmittanceWidth = w;
+    s.transmittanceHeight = h;
+    configs.push_back(
+        sweepPoint("transmittance size", std::to_string(w) + "x" + std::to_string(h), s));
+  }
+  for (std::uint32_t n : {4u, 16u}) {
+    Settings s = medium;
+    s.multiScatteringDirections = n;
+    configs.push_back(sweepPoint("multiple-scattering directions", std::to_string(n), s));
+  }
+  for (std::uint32_t n : {10u, 40u, 80u}) {
+    Settings s = medium;
+    s.multiScatteringSamples = n;
+    configs.push_back(sweepPoint("multiple-scattering samples", std::to_string(n), s));
+  }
+  for (std::uint32_t n : {16u, 64u}) {
+    Settings s = medium;
+    s.multiScatteringSize = n;
+    configs.push_back(sweepPoint("multiple-scattering size", std::to_string(n), s));
+  }
+  return configs;
+}
+
+double displayPsnr(const tools::FloatImage& image, const tools::FloatImage& reference) {
+  double luminanceSum = 0.0;
+  for (const glm::vec4& t : reference.texels) {
+    luminanceSum += 0.2126 * t.r + 0.7152 * t.g + 0.0722 * t.b;
+  }
+  const double mean = luminanceSum / double(std::max<std::size_t>(reference.texels.size(), 1));
+  const double exposure = 0.18 / std::max(mean, 1e-9);
+  const auto display = [&](const tools::FloatImage& source) {
+    std::vector<float> rgb;
+    rgb.reserve(source.texels.size() * 3);
+    for (const glm::vec4& t : source.texels) {
+      for (int c = 0; c < 3; ++c) {
+        const double x = std::max(double(t[c]), 0.0) * exposure;
+        rgb.push_back(float(x / (1.0 + x)));
+      }
+    }
+    return rgb;
+  };
+  return engine::assets::compareImages(display(image), display(reference), 3, 3).psnr(1.0);
+}
+
+}  // namespace atmosphere::bench
