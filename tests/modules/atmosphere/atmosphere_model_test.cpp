@@ -110,6 +110,25 @@ TEST(AtmosphereModel, SunDiscCarriesTheSunsIlluminanceAndDarkensTowardsItsLimb) 
   EXPECT_EQ(atmosphere::model::sunDiscRadiance(versine(radius * 1.01), versine(radius)), 0.0);
 }
 
+TEST(AtmosphereModel, TheMultipleScatteringLutCrowdsItsTexelsAtTheTerminator) {
+  using namespace atmosphere::model;
+  const atmosphere::reference::Reference reference(Parameters{}, atmosphere::Settings{});
+  const AtmosphereModel& a = reference.model();
+  // The sun-angle step between neighbouring texels of a 32-texel LUT, at the terminator and at
+  // the zenith: twilight, where the upper air's light changes fastest, gets the finer one.
+  const auto step = [&](double muSun) {
+    double altitude = 0.0;
+    double lo = 0.0;
+    double hi = 0.0;
+    const dvec2 uv = multiScatteringUv(a.bottomRadius, muSun, a, 32.0);
+    multiScatteringParams(uv - dvec2(0.5 / 32.0, 0.0), 32.0, a, altitude, lo);
+    multiScatteringParams(uv + dvec2(0.5 / 32.0, 0.0), 32.0, a, altitude, hi);
+    return hi - lo;
+  };
+  EXPECT_LT(step(-0.07), 0.6 * (2.0 / 31.0)) << "finer than a linear axis at 4 degrees down";
+  EXPECT_LT(step(-0.07), 0.5 * step(0.9));
+}
+
 TEST(AtmosphereModel, LutParameterisationsRoundTrip) {
   using namespace atmosphere::model;
   const atmosphere::reference::Reference reference(Parameters{}, atmosphere::Settings{});
@@ -124,6 +143,12 @@ TEST(AtmosphereModel, LutParameterisationsRoundTrip) {
       EXPECT_NEAR(back.x, uv.x, 1e-6);
       EXPECT_NEAR(back.y, uv.y, 1e-6);
       EXPECT_FALSE(rayHitsGround(r, mu, a)) << "the LUT holds only rays that miss the ground";
+      double msAltitude = 0.0;
+      double muSun = 0.0;
+      multiScatteringParams(uv, 16.0, a, msAltitude, muSun);
+      const dvec2 msBack = multiScatteringUv(a.bottomRadius + msAltitude, muSun, a, 16.0);
+      EXPECT_NEAR(msBack.x, uv.x, 1e-6);
+      EXPECT_NEAR(msBack.y, uv.y, 1e-6);
       for (double altitude : {1.0, 300.0, 20000.0}) {
         const double cameraRadius = a.bottomRadius + altitude;
         const dvec2 size(192, 108);
