@@ -124,8 +124,9 @@ Settings settingsFor(Quality quality) {
       s.aerialPerspectiveSamplesPerSlice = 1;
       break;
     case Quality::Medium:
-      s.skyViewWidth = 128;
-      s.skyViewHeight = 72;
+      // 96 x 54: 0.1 dB under 128 x 72 for 70% of the sky-view LUT's time (atmosphere_bench).
+      s.skyViewWidth = 96;
+      s.skyViewHeight = 54;
       s.skyViewSamples = 16;
       s.aerialPerspectiveWidth = 24;
       s.aerialPerspectiveHeight = 24;
