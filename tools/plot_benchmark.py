@@ -32,7 +32,9 @@ def draw(plot, folder):
     for index, series in enumerate(sweeps):
         points = series["points"]
         colour = SWEEP_COLOURS[index % len(SWEEP_COLOURS)]
-        axes.plot([p["gpu_ms"] for p in points], [p["psnr_db"] for p in points], "-o",
+        # Past the palette, the colours come round again with dotted lines and diamonds.
+        style = "-o" if index < len(SWEEP_COLOURS) else ":D"
+        axes.plot([p["gpu_ms"] for p in points], [p["psnr_db"] for p in points], style,
                   color=colour, markersize=4, linewidth=1.2, label=series["name"])
         for p in points:
             if p["label"]:

@@ -22,10 +22,6 @@ tools::SkyView sky(double altitude, double pitch, double sunElevation, double su
   return v;
 }
 
-Config sweepPoint(const std::string& sweep, const std::string& value, Settings settings) {
-  return Config{sweep + " " + value, sweep, false, settings};
-}
-
 }  // namespace
 
 std::vector<View> benchmarkViews() {
@@ -44,59 +40,39 @@ std::vector<Config> benchmarkConfigs() {
     configs.push_back({qualityName(q), "", true, settingsFor(q)});
   }
   const Settings medium = settingsFor(Quality::Medium);
-  for (auto [w, h] : {std::pair{64u, 36u}, {96u, 54u}, {192u, 108u}, {256u, 144u}}) {
-    Settings s = medium;
-    s.skyViewWidth = w;
-    s.skyViewHeight = h;
-    configs.push_back(sweepPoint("sky-view size", std::to_string(w) + "x" + std::to_string(h), s));
-  }
-  for (std::uint32_t n : {8u, 12u, 24u, 32u}) {
-    Settings s = medium;
-    s.skyViewSamples = n;
-    configs.push_back(sweepPoint("sky-view samples", std::to_string(n), s));
-  }
-  for (std::uint32_t n : {16u, 32u, 48u}) {
-    Settings s = medium;
-    s.aerialPerspectiveWidth = s.aerialPerspectiveHeight = n;
-    configs.push_back(sweepPoint("froxels across", std::to_string(n), s));
-  }
-  for (std::uint32_t n : {16u, 24u, 48u}) {
-    Settings s = medium;
-    s.aerialPerspectiveSlices = n;
-    configs.push_back(sweepPoint("froxel slices", std::to_string(n), s));
-  }
-  for (std::uint32_t n : {2u, 4u}) {
-    Settings s = medium;
-    s.aerialPerspectiveSamplesPerSlice = n;
-    configs.push_back(sweepPoint("samples per slice", std::to_string(n), s));
-  }
-  for (std::uint32_t n : {10u, 20u, 80u}) {
-    Settings s = medium;
-    s.transmittanceSamples = n;
-    configs.push_back(sweepPoint("transmittance samples", std::to_string(n), s));
-  }
-  for (auto [w, h] : {std::pair{128u, 32u}, {512u, 128u}}) {
-    Settings s = medium;
-    s.transmittanceWidth = w;
-    s.transmittanceHeight = h;
-    configs.push_back(
-        sweepPoint("transmittance size", std::to_string(w) + "x" + std::to_string(h), s));
-  }
-  for (std::uint32_t n : {4u, 16u}) {
-    Settings s = medium;
-    s.multiScatteringDirections = n;
-    configs.push_back(sweepPoint("multiple-scattering directions", std::to_string(n), s));
-  }
-  for (std::uint32_t n : {10u, 40u, 80u}) {
-    Settings s = medium;
-    s.multiScatteringSamples = n;
-    configs.push_back(sweepPoint("multiple-scattering samples", std::to_string(n), s));
-  }
-  for (std::uint32_t n : {16u, 64u}) {
-    Settings s = medium;
-    s.multiScatteringSize = n;
-    configs.push_back(sweepPoint("multiple-scattering size", std::to_string(n), s));
-  }
+  // One knob (one or two Settings fields set to the same value) at each value, around Medium.
+  using Field = std::uint32_t Settings::*;
+  const auto sweep = [&](const std::string& name, std::initializer_list<Field> fields,
+                         std::initializer_list<std::uint32_t> values) {
+    for (std::uint32_t value : values) {
+      Settings s = medium;
+      for (Field field : fields) s.*field = value;
+      configs.push_back({name + " " + std::to_string(value), name, false, s});
+    }
+  };
+  // A width and a height, named "WxH".
+  const auto sweepSize = [&](const std::string& name, Field width, Field height,
+                             std::initializer_list<std::pair<std::uint32_t, std::uint32_t>> sizes) {
+    for (auto [w, h] : sizes) {
+      Settings s = medium;
+      s.*width = w;
+      s.*height = h;
+      configs.push_back({name + " " + std::to_string(w) + "x" + std::to_string(h), name, false, s});
+    }
+  };
+  sweepSize("sky-view size", &Settings::skyViewWidth, &Settings::skyViewHeight,
+            {{64u, 36u}, {128u, 72u}, {192u, 108u}, {256u, 144u}});
+  sweep("sky-view samples", {&Settings::skyViewSamples}, {8u, 12u, 24u, 32u});
+  sweep("froxels across", {&Settings::aerialPerspectiveWidth, &Settings::aerialPerspectiveHeight},
+        {16u, 32u, 48u});
+  sweep("froxel slices", {&Settings::aerialPerspectiveSlices}, {16u, 24u, 48u});
+  sweep("samples per slice", {&Settings::aerialPerspectiveSamplesPerSlice}, {2u, 4u});
+  sweep("transmittance samples", {&Settings::transmittanceSamples}, {10u, 20u, 80u});
+  sweepSize("transmittance size", &Settings::transmittanceWidth, &Settings::transmittanceHeight,
+            {{128u, 32u}, {512u, 128u}});
+  sweep("multiple-scattering directions", {&Settings::multiScatteringDirections}, {4u, 16u});
+  sweep("multiple-scattering samples", {&Settings::multiScatteringSamples}, {10u, 40u, 80u});
+  sweep("multiple-scattering size", {&Settings::multiScatteringSize}, {16u, 64u});
   return configs;
 }
 
