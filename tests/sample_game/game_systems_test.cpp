@@ -217,7 +217,12 @@ TEST(Exposure, AutoExposureMetersDaylightAndClampsTheNight) {
   EXPECT_GT(noonEv, 14.0f) << "sunny 16: about EV 15 under a high sun";
   EXPECT_LT(noonEv, 16.5f);
   LitWorld dusk(18.2);
-  EXPECT_LT(dusk.ev100(), noonEv - 3.0f) << "a low sun through much air is many stops darker";
+  const float duskEv = dusk.ev100();
+  EXPECT_LT(duskEv, noonEv - 3.0f) << "a low sun through much air is many stops darker";
+  const float duskMetered = sample::meteredEv100(dusk.app.world());
+  ASSERT_LT(duskMetered, 10.0f);
+  EXPECT_FLOAT_EQ(duskEv, duskMetered - engine::render::dimLightCompensationEv(duskMetered))
+      << "dusk is exposed darker than the meter reads";
   LitWorld night(0.0);
   const float nightEv = night.ev100();
   EXPECT_FLOAT_EQ(nightEv, engine::render::Exposure{}.minEv100) << "night stays dark";

@@ -20,6 +20,12 @@ float ev100FromIlluminance(double lux) {
   return static_cast<float>(std::log2(std::max(lux, 1e-3) * 100.0 / kMeterCalibration));
 }
 
+float dimLightCompensationEv(float meteredEv100) {
+  constexpr float kDaylightEv = 10.0f;
+  constexpr float kStopsPerEv = 0.3f;  // -3 stops at EV100 0
+  return -kStopsPerEv * std::clamp(kDaylightEv - meteredEv100, 0.0f, kDaylightEv);
+}
+
 float exposureScale(float ev100) {
   return static_cast<float>(1000.0 / (1.2 * std::exp2(double(ev100))));
 }

@@ -30,8 +30,11 @@ void installExposureControl(ecs::Scheduler& scheduler) {
   scheduler.add(ecs::Phase::PreRender, "auto exposure", [](ecs::World& world) {
     auto& exposure = world.ctx().get<render::Exposure>();
     if (exposure.mode != render::Exposure::Mode::Auto) return;
-    const float target = std::clamp(meteredEv100(world) - exposure.compensationEv,
-                                    exposure.minEv100, exposure.maxEv100);
+    // Compensations are in stops of brightness (+1: twice as bright), EV100 the other way.
+    const float metered = meteredEv100(world);
+    const float target =
+        std::clamp(metered - exposure.compensationEv - render::dimLightCompensationEv(metered),
+                   exposure.minEv100, exposure.maxEv100);
     const double dt = world.ctx().get<ecs::FrameTime>().deltaSeconds;
     exposure.ev100 = exposure.adapted ? render::adaptEv100(exposure.ev100, target, dt,
                                                            exposure.adaptationSeconds)

@@ -19,6 +19,15 @@ TEST(Exposure, NoonSunlightMetersSunny16) {
   EXPECT_TRUE(std::isfinite(ev100FromIlluminance(-5.0)));
 }
 
+TEST(Exposure, DimLightIsExposedDarkerThanTheMeterSays) {
+  EXPECT_EQ(dimLightCompensationEv(15.0f), 0.0f) << "daylight as metered";
+  EXPECT_EQ(dimLightCompensationEv(10.0f), 0.0f);
+  EXPECT_NEAR(dimLightCompensationEv(5.0f), -1.5f, 1e-6f);
+  EXPECT_NEAR(dimLightCompensationEv(0.0f), -3.0f, 1e-6f);
+  EXPECT_NEAR(dimLightCompensationEv(-5.0f), -3.0f, 1e-6f) << "no darker than 3 stops";
+  EXPECT_LT(dimLightCompensationEv(6.0f), dimLightCompensationEv(7.0f)) << "monotonic";
+}
+
 TEST(Exposure, ScaleMapsTheSaturatingRadianceToOne) {
   // At EV100 e, 1.2 * 2^e cd/m^2 (in kcd/m^2 here) reaches the display's white.
   for (float ev : {-2.0f, 0.0f, 9.5f, 15.0f}) {

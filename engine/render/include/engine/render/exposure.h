@@ -10,8 +10,10 @@
 // EV100 = log2(E * 100 / C) with the meter calibration C = 250 lx s (ISO 2720), plus the
 // compensation. Noon sunlight (about 100 klx) meters EV100 15, the photographers' "sunny 16";
 // an overcast scene meters what its sky and sun give, with clouds in front of the sun unseen.
-// The result adapts towards the metered value exponentially, with a time constant, and is
-// clamped, so night stays dark instead of being exposed to grey.
+// Below daylight the meter is trusted less and less (dimLightCompensationEv): an incident
+// reading of a twilight sky alone would expose it to near white, where the eye (and a
+// photographer) sees dusk as dusk. The result adapts towards the metered value exponentially,
+// with a time constant, and is clamped, so night stays dark instead of being exposed to grey.
 #include <glm/glm.hpp>
 
 namespace engine::render {
@@ -32,6 +34,10 @@ struct Exposure {
 
 // EV100 an incident-light meter (C = 250) reads under `lux`; lux <= 0 reads as 1e-3 lx.
 float ev100FromIlluminance(double lux);
+// The exposure compensation (stops of brightness, +1 twice as bright) for a metered `ev100`
+// in dim light: 0 in daylight (EV100 >= 10, the sun up
+// by a few degrees), falling linearly to -3 stops at EV100 0 (deep twilight) and staying there.
+float dimLightCompensationEv(float meteredEv100);
 // The linear multiplier from kcd/m^2 to the tonemap's input at `ev100`.
 float exposureScale(float ev100);
 // Illuminance (klx) on a horizontal surface: the sun's (`sunKilolux` RGB, `sunDirectionY` the
