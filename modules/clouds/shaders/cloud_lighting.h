@@ -14,29 +14,50 @@
 
 VKFX_SHADER_BEGIN(clouds::shader)
 
-// Sun light reaching a sample and scattered towards the viewer (1/sr), per unit illuminance.
-VKFX_INLINE float directScattering(float lightOpticalDepth, float cosTheta, IN(CloudUniforms) u,
-                                   uint multipleScattering) {
-  const float forwardG = u.phaseForwardG;
-  const float backwardG = u.phaseBackwardG;
-  const float blend = u.phaseBackwardWeight;
-  if (multipleScattering == 0u) {
-    return beerLambert(lightOpticalDepth) * dualLobePhase(cosTheta, forwardG, backwardG, blend);
-  }
+// The phase of each multiple-scattering octave (1/sr): octave n scatters with the lobes'
+// eccentricities scaled by c^n. The angle to the sun is the same all along a ray, so a march
+// computes these once per ray, and a sample pays one exponential per octave, not two phase
+// functions. Octaves 0-3 in `low`, 4-7 in `high`.
+struct OctavePhases {
+  vec4 low;
+  vec4 high;
+};
+
+VKFX_INLINE OctavePhases octavePhases(float cosTheta, IN(CloudUniforms) u) {
+  OctavePhases phases;
+  phases.low = vec4(0.0f);
+  phases.high = vec4(0.0f);
   const int octaves = int(clamp(u.msOctaves, 1.0f, 8.0f));
-  const float a = u.msExtinctionScale;
-  const float b = u.msContribution;
-  const float c = u.msEccentricityScale;
+  float eccentricity = 1.0f;
+  for (int n = 0; n < octaves; ++n) {
+    const float phase = dualLobePhase(cosTheta, u.phaseForwardG * eccentricity,
+                                      u.phaseBackwardG * eccentricity, u.phaseBackwardWeight);
+    if (n < 4) {
+      phases.low[n] = phase;
+    } else {
+      phases.high[n - 4] = phase;
+    }
+    eccentricity *= u.msEccentricityScale;
+  }
+  return phases;
+}
+
+// Sun light reaching a sample and scattered towards the viewer (1/sr), per unit illuminance.
+// With multiple scattering, Wrenninge's octaves: octave n sees the light's optical depth scaled
+// by a^n and contributes b^n (the defaults are tuned so that a thick sunlit cloud reflects
+// most of the sun, as measured clouds do: march_gpu_test's sunlit slab).
+VKFX_INLINE float directScattering(float lightOpticalDepth, IN(OctavePhases) phases,
+                                   IN(CloudUniforms) u, uint multipleScattering) {
+  if (multipleScattering == 0u) return beerLambert(lightOpticalDepth) * phases.low.x;
+  const int octaves = int(clamp(u.msOctaves, 1.0f, 8.0f));
   float extinctionScale = 1.0f;
   float contribution = 1.0f;
-  float eccentricity = 1.0f;
   float sum = 0.0f;
   for (int n = 0; n < octaves; ++n) {
-    sum += contribution * beerLambert(lightOpticalDepth * extinctionScale) *
-           dualLobePhase(cosTheta, forwardG * eccentricity, backwardG * eccentricity, blend);
-    extinctionScale *= a;
-    contribution *= b;
-    eccentricity *= c;
+    const float phase = n < 4 ? phases.low[n] : phases.high[n - 4];
+    sum += contribution * beerLambert(lightOpticalDepth * extinctionScale) * phase;
+    extinctionScale *= u.msExtinctionScale;
+    contribution *= u.msContribution;
   }
   return sum;
 }
@@ -55,10 +76,10 @@ VKFX_INLINE float inScatterProbability(float localOpticalDepth, float heightFrac
 // Radiance scattered towards the viewer at a sample, per unit scattering coefficient (before
 // the albedo). `coarseDensity` is the low-frequency density in [0, 1], `coarseExtinction` its
 // extinction (1/m).
-VKFX_INLINE vec3 sampleRadiance(float lightOpticalDepth, float cosTheta, float coarseDensity,
-                                float coarseExtinction, float heightFraction, IN(CloudUniforms) u,
-                                uint multipleScattering) {
-  const float direct = directScattering(lightOpticalDepth, cosTheta, u, multipleScattering);
+VKFX_INLINE vec3 sampleRadiance(float lightOpticalDepth, IN(OctavePhases) phases,
+                                float coarseDensity, float coarseExtinction, float heightFraction,
+                                IN(CloudUniforms) u, uint multipleScattering) {
+  const float direct = directScattering(lightOpticalDepth, phases, u, multipleScattering);
   const float localOpticalDepth = coarseExtinction * u.inScatterDepthMetres;
   const float inScatter = mix(1.0f, inScatterProbability(localOpticalDepth, heightFraction),
                               saturate(u.inScatterStrength));

@@ -277,7 +277,7 @@ VKFX_INLINE MarchResult marchClouds(vec3 rayDirection, float sceneDistance, floa
   const vec2 segment = layerSegment(altitude, cosZenith, u);
   const float start = segment.x;
   const float end = min(min(segment.y, sceneDistance), u.maxDistanceMetres);
-  const float cosTheta = dot(rayDirection, u.sunDirection);
+  const OctavePhases phases = octavePhases(dot(rayDirection, u.sunDirection), u);
   const float albedo = u.albedo;
   const float cutoff = u.transmittanceCutoff;
   const float coarseFactor = max(u.coarseStepFactor, 1.0f);
@@ -320,7 +320,7 @@ VKFX_INLINE MarchResult marchClouds(vec3 rayDirection, float sceneDistance, floa
     CLOUDS_WHEN(field.sigmaT > 0.0f) {
       const float tau = lightOpticalDepth(flatOffset, sampleAltitude, sampleDistance, o.lightSteps,
                                           u, r.lightSamples);
-      const vec3 light = sampleRadiance(tau, cosTheta, field.base, field.baseSigmaT,
+      const vec3 light = sampleRadiance(tau, phases, field.base, field.baseSigmaT,
                                         field.heightFraction, u, o.multipleScattering);
       const float stepTransmittance = beerLambert(field.sigmaT * stepLength);
       // Energy-conserving step (Hillaire 2016): the scattered light of a homogeneous step is

@@ -178,7 +178,6 @@ Settings settingsFor(Quality quality, const Settings& base) {
       s.viewStepMetres = 120.0f;
       s.viewStepGrowth = 0.008f;
       s.lightSteps = 3;
-      s.multipleScatteringOctaves = 3;
       s.detailDistanceMetres = 60000.0f;
       break;
     case Quality::Medium:
@@ -188,7 +187,6 @@ Settings settingsFor(Quality quality, const Settings& base) {
       s.viewStepMetres = 60.0f;
       s.viewStepGrowth = 0.004f;
       s.lightSteps = 6;
-      s.multipleScatteringOctaves = 4;
       s.detailDistanceMetres = 60000.0f;
       break;
     case Quality::High:
@@ -198,7 +196,6 @@ Settings settingsFor(Quality quality, const Settings& base) {
       s.viewStepMetres = 60.0f;
       s.viewStepGrowth = 0.004f;
       s.lightSteps = 6;
-      s.multipleScatteringOctaves = 4;
       s.detailDistanceMetres = 60000.0f;  // to the max distance: far clouds seen from above
                                           // are visibly fatter without their erosion
       s.transmittanceCutoff = 0.005f;
@@ -211,7 +208,6 @@ Settings settingsFor(Quality quality, const Settings& base) {
       s.viewStepMetres = 40.0f;
       s.viewStepGrowth = 0.003f;
       s.lightSteps = 10;
-      s.multipleScatteringOctaves = 4;
       s.detailDistanceMetres = 60000.0f;
       s.transmittanceCutoff = 0.002f;
       break;

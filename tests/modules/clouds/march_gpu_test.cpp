@@ -110,6 +110,51 @@ TEST_F(CloudMarch, WhiteFurnaceConservesEnergy) {
   }
 }
 
+// The multiple-scattering term's physical anchor: sunlight on a thick, non-absorbing cloud is
+// mostly reflected (two-stream theory puts the plane albedo of an optical depth of 100 with
+// g = 0.85 at 0.92). Single scattering alone reflects a small fraction of it, which is why the
+// octaves exist; with too little of them (b = 0.7 and 4 octaves, the defaults until 2026-11,
+// reflected 0.23 to 0.44 here) a sunlit cloud side reads as grey as its ambient-lit base. The
+// check is on the reflectance factor (the radiance over a white Lambertian plane's) at six
+// geometries: each above 0.5 and, since it may exceed 1 towards a low sun as thick clouds' does,
+// below 1.3; their mean, a rough stand-in for the plane albedo, between 0.6 and 1.
+TEST_F(CloudMarch, AThickSunlitSlabReflectsMostOfTheSun) {
+  const VkExtent2D extent{8, 8};
+  const DebugFlags homogeneous(kFlagHomogeneous);
+  clouds::Settings s = clouds::tools::singleFrame({});
+  s.emptySpaceSkipping = false;
+  s.albedo = 1.0f;
+  s.ambientStrength = 0.0f;
+  s.inScatterStrength = 0.0f;  // an art term: the physics alone here
+  s.maxViewSteps = 512;
+  s.lightSteps = 16;
+  double sum = 0.0;
+  int geometries = 0;
+  for (double sunElevation : {80.0, 50.0, 25.0}) {
+    for (double viewPitch : {-85.0, -40.0}) {
+      CloudView view;
+      view.position.y = double(s.layerTopMetres) + 500.0;
+      view.pitchDegrees = viewPitch;
+      view.verticalFovDegrees = 5.0f;
+      view.sunElevationDegrees = sunElevation;
+      view.sunAzimuthDegrees = 90.0;  // beside the view: neither glory nor forward peak
+      view.sunIlluminance = glm::vec3(1.0f);
+      const clouds::tools::CloudFrame frame = harness().render(view, s, extent);
+      double radiance = 0.0;
+      for (const glm::vec4& p : frame.radiance) radiance += p.r;
+      radiance /= double(frame.radiance.size());
+      // Bidirectional reflectance factor: the radiance over that of a white Lambertian plane.
+      const double reflectance = kPi * radiance / std::sin(glm::radians(sunElevation));
+      EXPECT_GT(reflectance, 0.5) << "sun " << sunElevation << " view pitch " << viewPitch;
+      EXPECT_LT(reflectance, 1.3) << "sun " << sunElevation << " view pitch " << viewPitch;
+      sum += reflectance;
+      ++geometries;
+    }
+  }
+  EXPECT_GT(sum / geometries, 0.6);
+  EXPECT_LT(sum / geometries, 1.0);
+}
+
 TEST_F(CloudMarch, SkyTextureAmbientKeepsTheFurnaceWhite) {
   // A uniform sky radiance of 1 replaces the ambient colours (set to 0 here): the furnace still
   // composites to 1, so the sky pass averaged the texture correctly.

@@ -85,9 +85,11 @@ TEST_F(CloudTemporal, TemporalUpsamplingConvergesToDetailFinerThanTheTrace) {
           reference)
           .psnr();
   // At 160 x 90 the cloud tops are smaller in pixels than at the benchmark's 640 x 360 (where
-  // High's 35 dB target is measured): measured here 24.9 dB with the trace alone, 31.8 dB
-  // upsampled.
-  EXPECT_GE(upsampledPsnr, 30.0) << "trace only: " << traceOnlyPsnr << " dB";
+  // High's 35 dB target is measured). Measured here 22.1 dB with the trace alone, 27.7 dB
+  // upsampled, since the multiple-scattering retune (2026-11) lit the tops with most of the sun
+  // (their shading has twice the contrast it had, and detail is harder to match); before it,
+  // 24.9 and 31.8 dB. The gain over the trace is the property; the floor guards a collapse.
+  EXPECT_GE(upsampledPsnr, 26.0) << "trace only: " << traceOnlyPsnr << " dB";
   EXPECT_GE(upsampledPsnr, traceOnlyPsnr + 5.0) << "trace only: " << traceOnlyPsnr << " dB";
 }
 

@@ -192,9 +192,9 @@ struct Settings {
   float phaseBackwardG = -0.3f;      // [-1, 1] backward HG lobe
   float phaseBackwardWeight = 0.3f;  // [0, 1] blend towards the backward lobe
   bool multipleScattering = true;    // octave approximation of multiple scattering
-  std::uint32_t multipleScatteringOctaves = 4;  // [1, 8]
+  std::uint32_t multipleScatteringOctaves = 6;  // [1, 8]
   float msExtinctionScale = 0.3f;               // [0, 1] a: extinction factor per octave
-  float msContribution = 0.7f;                  // [0, 1] b: energy factor per octave
+  float msContribution = 0.85f;                 // [0, 1] b: energy factor per octave
   float msEccentricityScale = 0.5f;             // [0, 1] c: phase g factor per octave
   float inScatterStrength = 1.0f;               // [0, 1] Nubis dark edges and bases (0: off)
   float inScatterDepthMetres = 60.0f;           // [0, 10000] the coarse cloud over this distance

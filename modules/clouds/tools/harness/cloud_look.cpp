@@ -1,0 +1,113 @@
+#include "cloud_look.h"
+
+#include <algorithm>
+#include <cmath>
+#include <vector>
+
+namespace clouds::tools {
+
+namespace {
+
+double median(std::vector<double> values) {
+  if (values.empty()) return 0.0;
+  const auto middle = values.begin() + std::ptrdiff_t(values.size() / 2);
+  std::nth_element(values.begin(), middle, values.end());
+  return *middle;
+}
+
+// World direction (camera-relative, unit) through the centre of pixel (x, y), y down.
+glm::dvec3 pixelDirection(const CloudView& view, VkExtent2D extent, std::uint32_t x,
+                          std::uint32_t y) {
+  const glm::dvec3 forward = glm::dvec3(forwardDirection(view));
+  const glm::dvec3 right = glm::normalize(glm::cross(forward, glm::dvec3(0, 1, 0)));
+  const glm::dvec3 up = glm::cross(right, forward);
+  const double tanY = std::tan(glm::radians(double(view.verticalFovDegrees)) * 0.5);
+  const double tanX = tanY * double(extent.width) / double(extent.height);
+  const double u = (x + 0.5) / extent.width * 2.0 - 1.0;
+  const double v = (y + 0.5) / extent.height * 2.0 - 1.0;
+  return glm::normalize(forward + right * (u * tanX) - up * (v * tanY));
+}
+
+}  // namespace
+
+double luminance(const glm::vec3& rgb) {
+  return 0.2126 * rgb.r + 0.7152 * rgb.g + 0.0722 * rgb.b;
+}
+
+CloudLook measureLook(const CloudFrame& frame, const CloudView& view,
+                      const clouds::Settings& settings) {
+  const double planetRadius = settings.planetRadiusMetres;
+  const double bottom = settings.layerBottomMetres;
+  const double thickness = double(settings.layerTopMetres) - bottom;
+  // Heights above a spherical planet whose surface is at y = 0 below the origin.
+  const glm::dvec3 planetCentre{0.0, -planetRadius, 0.0};
+  std::vector<double> flank, base;
+  CloudLook look;
+  for (std::uint32_t y = 0; y < frame.extent.height; ++y) {
+    for (std::uint32_t x = 0; x < frame.extent.width; ++x) {
+      const std::size_t i = std::size_t(y) * frame.extent.width + x;
+      const glm::vec4 radiance = frame.radiance[i];
+      if (!(radiance.a < kOpaqueTransmittance)) continue;
+      ++look.cloudPixels;
+      const double distance = frame.depth[i].y;  // transmittance-weighted: the seen surface
+      const glm::dvec3 point = view.position + pixelDirection(view, frame.extent, x, y) * distance;
+      const double altitude = glm::length(point - planetCentre) - planetRadius;
+      const double heightFraction = (altitude - bottom) / thickness;
+      const double l = luminance(glm::vec3(radiance));
+      if (heightFraction < kBaseHeightFraction) base.push_back(l);
+      if (heightFraction > kFlankHeightFraction) flank.push_back(l);
+    }
+  }
+  look.flankPixels = flank.size();
+  look.basePixels = base.size();
+  look.flankLuminance = median(std::move(flank));
+  look.baseLuminance = median(std::move(base));
+  if (look.flankPixels > 0 && look.basePixels > 0 && look.baseLuminance > 0.0) {
+    look.flankToBase = look.flankLuminance / look.baseLuminance;
+  }
+  return look;
+}
+
+double meanRelativeChangeOverClouds(const CloudFrame& a, const CloudFrame& b) {
+  double sum = 0.0;
+  std::size_t count = 0;
+  for (std::size_t i = 0; i < a.radiance.size() && i < b.radiance.size(); ++i) {
+    if (!(a.radiance[i].a < kOpaqueTransmittance || b.radiance[i].a < kOpaqueTransmittance)) {
+      continue;
+    }
+    const double la = luminance(glm::vec3(a.radiance[i]));
+    const double lb = luminance(glm::vec3(b.radiance[i]));
+    sum += std::abs(la - lb) / std::max(lb, 1e-6);
+    ++count;
+  }
+  return count > 0 ? sum / double(count) : 0.0;
+}
+
+LookScene noonCumulus() {
+  LookScene scene;
+  CloudView& view = scene.view;
+  view.position = {0.0, 300.0, 0.0};
+  view.yawDegrees = 10.0;
+  view.pitchDegrees = 20.0;
+  view.verticalFovDegrees = 60.0f;
+  // The sun of cumulus_noon.json at 12:00: 70 degrees up, behind the camera.
+  view.sunElevationDegrees = 70.0;
+  view.sunAzimuthDegrees = 180.0;
+  // Light in physical units (kilolux, kcd/m^2) as the sample's Earth atmosphere gives it for
+  // that sun: the sun's illuminance at the middle of the layer, the zenith sky's radiance
+  // above and, below, the mean of the horizon's and the sunlit ground's (a bright ground
+  // under a high sun lights cloud bases; the sample passes the same two values).
+  view.sunIlluminance = {121.3f, 113.5f, 103.7f};
+  view.ambientTop = {0.86f, 1.83f, 4.30f};
+  view.ambientBottom = {7.76f, 9.23f, 11.27f};
+  view.timeSeconds = 5.0;
+  clouds::Settings& s = scene.settings;  // cumulus_noon.json's layer
+  s.layerBottomMetres = 1600.0f;
+  s.layerTopMetres = 3800.0f;
+  s.coverage = 0.52f;
+  s.cloudType = 1.0f;
+  s.typeVariation = 0.2f;
+  return scene;
+}
+
+}  // namespace clouds::tools

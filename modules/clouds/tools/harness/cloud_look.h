@@ -1,0 +1,49 @@
+#pragma once
+// Measures of the clouds' look on a rendered frame, for the tests that hold each lighting term
+// to a visible effect and for the review set's reported figures. The classic photographic
+// description of a fair-weather cumulus at noon is "bright sunlit flanks over a flat grey
+// base": flankToBase puts a number on it.
+#include <cstddef>
+
+#include "cloud_harness.h"
+
+namespace clouds::tools {
+
+struct CloudLook {
+  std::size_t cloudPixels = 0;  // opaque cloud (transmittance below kOpaqueTransmittance)
+  std::size_t flankPixels = 0;  // opaque, seen surface above kFlankHeightFraction of the layer
+  std::size_t basePixels = 0;   // opaque, seen surface below kBaseHeightFraction of the layer
+  double flankLuminance = 0.0;  // median luminance (radiance units) of the flank pixels
+  double baseLuminance = 0.0;   // median luminance of the base pixels
+  double flankToBase = 0.0;     // flankLuminance / baseLuminance (0 when either set is empty)
+};
+
+// A pixel counts as cloud when its transmittance is below this (nearly opaque, so its radiance
+// is the cloud's own and not the background's).
+inline constexpr float kOpaqueTransmittance = 0.1f;
+// The seen surface is where the transmittance-weighted depth puts it; its height as a fraction
+// of the layer's thickness classifies it (cumulus bases are flat at the layer's bottom).
+inline constexpr double kBaseHeightFraction = 0.1;
+inline constexpr double kFlankHeightFraction = 0.3;
+
+// `frame` rendered from `view` with `settings` (for the layer's bounds and planet radius).
+CloudLook measureLook(const CloudFrame& frame, const CloudView& view,
+                      const clouds::Settings& settings);
+
+// Mean over the pixels that are cloud in either frame of |L_a - L_b| / L_b (L: luminance of
+// the radiance): how much a change (a term switched off) alters the clouds, as a fraction.
+double meanRelativeChangeOverClouds(const CloudFrame& a, const CloudFrame& b);
+
+// Luminance of linear Rec.709 RGB.
+double luminance(const glm::vec3& rgb);
+
+// The canonical look view: a fair-weather cumulus field at noon (sun 70 degrees up, the
+// scene cumulus_noon.json's clouds), seen from 300 m looking up 20 degrees, lit in the
+// proportions the project's atmosphere gives at noon (see cloud_look.cpp).
+struct LookScene {
+  CloudView view;
+  clouds::Settings settings;
+};
+LookScene noonCumulus();
+
+}  // namespace clouds::tools

@@ -1,0 +1,92 @@
+// clouds_look: the look of the clouds in figures. Renders the canonical noon cumulus view
+// (cloud_look.h: physical noon light, seen from the ground) converged at full resolution, and
+// prints the HDR luminance ratio of sunlit flank to base, then what switching each lighting
+// term off does to it and to the clouds' luminance. Optionally writes the previews as PNG.
+// Usage: clouds_look [OUT_DIR] [--width W --height H]
+#include <cstdio>
+#include <cstring>
+#include <filesystem>
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "cloud_harness.h"
+#include "cloud_look.h"
+#include "engine/core/error.h"
+#include "engine/gfx/instance.h"
+
+namespace {
+
+using clouds::tools::CloudFrame;
+using clouds::tools::CloudLook;
+
+struct TermOff {
+  const char* name;
+  std::function<void(clouds::Settings&)> apply;
+};
+
+const std::vector<TermOff>& termsOff() {
+  static const std::vector<TermOff> terms = {
+      {"in-scatter probability", [](clouds::Settings& s) { s.inScatterStrength = 0.0f; }},
+      {"multiple scattering", [](clouds::Settings& s) { s.multipleScatteringOctaves = 1; }},
+      {"ambient occlusion", [](clouds::Settings& s) { s.ambientOcclusionStrength = 0.0f; }},
+      {"ambient", [](clouds::Settings& s) { s.ambientStrength = 0.0f; }},
+  };
+  return terms;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  std::filesystem::path outDir;
+  VkExtent2D extent{320, 180};
+  for (int i = 1; i < argc; ++i) {
+    const std::string arg = argv[i];
+    if (arg == "--width" && i + 1 < argc) {
+      extent.width = std::uint32_t(std::stoul(argv[++i]));
+    } else if (arg == "--height" && i + 1 < argc) {
+      extent.height = std::uint32_t(std::stoul(argv[++i]));
+    } else {
+      outDir = arg;
+    }
+  }
+  try {
+    engine::gfx::Instance instance(engine::gfx::InstanceDesc{});
+    engine::gfx::Device device(instance, engine::gfx::DeviceDesc{});
+    clouds::tools::CloudHarness harness(device, extent);
+    const clouds::tools::LookScene scene = clouds::tools::noonCumulus();
+    const auto render = [&](const clouds::Settings& s) {
+      return harness.renderAveraged(scene.view, s, extent, 8);
+    };
+    const clouds::Settings look =
+        clouds::tools::singleFrame(clouds::settingsFor(clouds::Quality::High, scene.settings));
+    const CloudFrame full = render(look);
+    const CloudLook base = clouds::tools::measureLook(full, scene.view, look);
+    std::printf("noon cumulus, %ux%u, High lighting at full resolution (8 frames averaged)\n",
+                extent.width, extent.height);
+    std::printf("  cloud pixels %zu (flank %zu, base %zu)\n", base.cloudPixels, base.flankPixels,
+                base.basePixels);
+    std::printf("  flank %.2f, base %.2f kcd/m^2: flank/base %.2f\n", base.flankLuminance,
+                base.baseLuminance, base.flankToBase);
+    if (!outDir.empty()) {
+      std::filesystem::create_directories(outDir);
+      engine::assets::writePng(outDir / "noon_cumulus.png",
+                               clouds::tools::previewImage(full, scene.view, 0.08f));
+    }
+    for (const TermOff& term : termsOff()) {
+      clouds::Settings s = look;
+      term.apply(s);
+      const CloudFrame off = render(s);
+      const CloudLook l = clouds::tools::measureLook(off, scene.view, s);
+      std::printf(
+          "  %-24s off: flank %.2f, base %.2f: flank/base %.2f; clouds' luminance changed "
+          "%.1f%%\n",
+          term.name, l.flankLuminance, l.baseLuminance, l.flankToBase,
+          100.0 * clouds::tools::meanRelativeChangeOverClouds(off, full));
+    }
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "clouds_look: %s\n", e.what());
+    return 1;
+  }
+  return 0;
+}
