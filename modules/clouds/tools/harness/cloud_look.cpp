@@ -110,4 +110,31 @@ LookScene noonCumulus() {
   return scene;
 }
 
+LookScene cumulusTowardsTheSun() {
+  LookScene scene = noonCumulus();
+  // Beside the large cumulus up and to the right of the noon view's centre.
+  scene.view.sunElevationDegrees = 33.0;
+  scene.view.sunAzimuthDegrees = scene.view.yawDegrees - 25.0;
+  return scene;
+}
+
+double cloudLuminanceNearTheSun(const CloudFrame& frame, const CloudView& view, double degrees,
+                                std::size_t* pixels) {
+  const glm::dvec3 sun = glm::dvec3(sunDirection(view));
+  const double cosLimit = std::cos(glm::radians(degrees));
+  double sum = 0.0;
+  std::size_t count = 0;
+  for (std::uint32_t y = 0; y < frame.extent.height; ++y) {
+    for (std::uint32_t x = 0; x < frame.extent.width; ++x) {
+      const glm::vec4 radiance = frame.radiance[std::size_t(y) * frame.extent.width + x];
+      if (radiance.a > 0.95f) continue;
+      if (glm::dot(pixelDirection(view, frame.extent, x, y), sun) < cosLimit) continue;
+      sum += luminance(glm::vec3(radiance));
+      ++count;
+    }
+  }
+  if (pixels != nullptr) *pixels = count;
+  return count > 0 ? sum / double(count) : 0.0;
+}
+
 }  // namespace clouds::tools

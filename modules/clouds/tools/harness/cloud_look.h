@@ -46,4 +46,14 @@ struct LookScene {
 };
 LookScene noonCumulus();
 
+// The same view and light with the sun in the frame (33 degrees up, beside a cumulus): the view
+// of the forward-scattering lobe, the silver lining of thin cloud around the sun.
+LookScene cumulusTowardsTheSun();
+
+// Mean luminance (radiance units, premultiplied: thin edges count for their opacity) over the
+// pixels within `degrees` of the sun whose cloud opacity is at least 5%; 0 when there are none.
+// `pixels` (optional) receives their count.
+double cloudLuminanceNearTheSun(const CloudFrame& frame, const CloudView& view, double degrees,
+                                std::size_t* pixels = nullptr);
+
 }  // namespace clouds::tools

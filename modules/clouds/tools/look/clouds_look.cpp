@@ -84,6 +84,26 @@ int main(int argc, char** argv) {
           term.name, l.flankLuminance, l.baseLuminance, l.flankToBase,
           100.0 * clouds::tools::meanRelativeChangeOverClouds(off, full));
     }
+    // The forward lobe towards a low sun.
+    const clouds::tools::LookScene sunward = clouds::tools::cumulusTowardsTheSun();
+    const clouds::Settings sunwardLook =
+        clouds::tools::singleFrame(clouds::settingsFor(clouds::Quality::High, sunward.settings));
+    clouds::Settings noForwardLobe = sunwardLook;
+    noForwardLobe.phaseForwardG = 0.0f;
+    std::size_t nearSun = 0;
+    const CloudFrame sunwardFrame = harness.renderAveraged(sunward.view, sunwardLook, extent, 8);
+    const double withLobe =
+        clouds::tools::cloudLuminanceNearTheSun(sunwardFrame, sunward.view, 15.0, &nearSun);
+    if (!outDir.empty()) {
+      engine::assets::writePng(outDir / "cumulus_towards_the_sun.png",
+                               clouds::tools::previewImage(sunwardFrame, sunward.view, 0.08f));
+    }
+    const double withoutLobe = clouds::tools::cloudLuminanceNearTheSun(
+        harness.renderAveraged(sunward.view, noForwardLobe, extent, 8), sunward.view, 15.0);
+    std::printf(
+        "towards the sun: cloud within 15 degrees of it (%zu pixels) %.2f "
+        "kcd/m^2, %.2f with the forward lobe off (g = 0)\n",
+        nearSun, withLobe, withoutLobe);
   } catch (const std::exception& e) {
     std::fprintf(stderr, "clouds_look: %s\n", e.what());
     return 1;
