@@ -1,6 +1,7 @@
-// Golden frames: the sample renders a handful of small views headless from a script (ground
-// view of clouds over mountains, terrain hiding clouds, a cloud in front of a mountain, above
-// the layer, inside a cloud) and each is compared with its committed golden image by the
+// Golden frames: the sample renders small views headless from scripts (ground view of clouds
+// over mountains, terrain hiding clouds, a cloud in front of a mountain, above the layer,
+// inside a cloud, noon, sunset, cumulus overhead, towards the sun, an overcast stratus deck: the
+// review set's views among them) and each is compared with its committed golden image by the
 // tolerance tree in golden_compare.h. Every run writes the actual images to
 // build/golden_output/ (what tools/promote_goldens.sh copies into tests/goldens/); a failing
 // view also gets <name>_actual/_expected/_diff.png in build/golden_failures/.
@@ -27,22 +28,42 @@ std::vector<std::string> captureNames(const fs::path& script) {
   return names;
 }
 
+// A scene and the script that takes the sample through its golden views.
+struct GoldenRun {
+  fs::path scene;
+  fs::path script;
+};
+
+std::vector<GoldenRun> goldenRuns() {
+  const fs::path tests = SAMPLE_TEST_DIR;
+  return {
+      // Clouds over mountains, occlusion both ways, above and inside the layer, noon, sunset,
+      // cumulus overhead and towards the sun.
+      {tests / "scenes/golden.json", tests / "scripts/golden_views.json"},
+      // A stratus deck (the project's overcast scene, as the review set shows it).
+      {fs::path(SAMPLE_ASSET_DIR) / "scenes/overcast_stratus.json",
+       tests / "scripts/golden_overcast_views.json"},
+  };
+}
+
 TEST(GoldenFrames, ScriptedViewsMatchTheirGoldens) {
-  const fs::path script = fs::path(SAMPLE_TEST_DIR) / "scripts/golden_views.json";
   const fs::path output = GOLDEN_OUTPUT_DIR;
   const fs::path failures = GOLDEN_FAILURE_DIR;
   fs::remove_all(output);
   fs::remove_all(failures);
-  const std::string command = std::string(SAMPLE_GAME_EXE) +
-                              " --headless --validation --width 256 --height 144 --fixed-dt 0.05"
-                              " --scene " +
-                              std::string(SAMPLE_TEST_DIR) + "/scenes/golden.json" + " --script " +
-                              script.string() + " --capture " + output.string();
-  ASSERT_EQ(std::system(command.c_str()), 0) << command;
+  std::vector<std::string> names;
+  for (const GoldenRun& run : goldenRuns()) {
+    const std::string command = std::string(SAMPLE_GAME_EXE) +
+                                " --headless --validation --width 256 --height 144 --fixed-dt 0.05"
+                                " --quality high --scene " +
+                                run.scene.string() + " --script " + run.script.string() +
+                                " --capture " + output.string();
+    ASSERT_EQ(std::system(command.c_str()), 0) << command;
+    for (std::string& name : captureNames(run.script)) names.push_back(std::move(name));
+  }
 
   const test::GoldenTolerance tolerance;
-  const std::vector<std::string> names = captureNames(script);
-  ASSERT_GE(names.size(), 5u);
+  ASSERT_GE(names.size(), 10u);
   for (const std::string& name : names) {
     const fs::path actualPath = output / (name + ".png");
     const fs::path goldenPath = fs::path(GOLDEN_DIR) / (name + ".png");
