@@ -65,13 +65,17 @@ struct LoopStats {
 };
 
 constexpr std::uint64_t kWarmUpFrames = 3;  // noise generation and shader JIT happen first
+// A run without a display renders this many frames and captures the last: the default Medium
+// clouds refresh each trace pixel once in 16 frames, so by the 48th every pixel has been
+// traced three times and the picture has converged (the 5th was soft and blotchy).
+constexpr std::uint64_t kHeadlessPreviewFrames = 48;
 
 RunPlan planRun(Options options) {
   RunPlan plan;
   plan.windowed = !options.headless && platform::Window::displayAvailable();
   if (!options.headless && !plan.windowed && !options.describe) {
     log::info("no display found (DISPLAY/WAYLAND_DISPLAY unset): running headless");
-    if (options.frames == 0) options.frames = 5;
+    if (options.frames == 0) options.frames = kHeadlessPreviewFrames;
     if (!options.captureDir) options.captureDir = "out";
   }
   if (options.scene.empty()) {
