@@ -10,10 +10,6 @@ namespace engine::render {
 namespace {
 constexpr double kMeterCalibration = 250.0;  // C of an incident-light meter, lx s (ISO 2720)
 constexpr double kPi = 3.14159265358979;
-
-double luminance(const glm::dvec3& c) {
-  return 0.2126 * c.r + 0.7152 * c.g + 0.0722 * c.b;
-}
 }  // namespace
 
 float ev100FromIlluminance(double lux) {

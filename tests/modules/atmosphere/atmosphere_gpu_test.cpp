@@ -11,6 +11,7 @@
 #include "atmosphere_harness.h"
 #include "atmosphere_reference.h"
 #include "context_access.h"
+#include "engine/render/scene_components.h"
 #include "gpu_test.h"
 
 namespace {
@@ -18,6 +19,7 @@ namespace {
 using atmosphere::tools::AtmosphereHarness;
 using atmosphere::tools::FloatImage;
 using atmosphere::tools::SkyView;
+using engine::render::luminance;
 
 constexpr VkExtent2D kExtent{160, 90};
 
@@ -32,10 +34,6 @@ std::vector<glm::dvec3> rgbOf(const FloatImage& image) {
 
 std::vector<glm::dvec3> rgbOf(const atmosphere::reference::Lut& lut) {
   return lut.texels;
-}
-
-double luminance(glm::dvec3 c) {
-  return 0.2126 * c.r + 0.7152 * c.g + 0.0722 * c.b;
 }
 
 // The world direction through pixel (x, y) of `view`, as the module computes it.

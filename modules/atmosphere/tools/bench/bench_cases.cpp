@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "engine/assets/image_metrics.h"
+#include "engine/render/scene_components.h"
 
 namespace atmosphere::bench {
 namespace {
@@ -79,7 +80,7 @@ std::vector<Config> benchmarkConfigs() {
 double displayPsnr(const tools::FloatImage& image, const tools::FloatImage& reference) {
   double luminanceSum = 0.0;
   for (const glm::vec4& t : reference.texels) {
-    luminanceSum += 0.2126 * t.r + 0.7152 * t.g + 0.0722 * t.b;
+    luminanceSum += engine::render::luminance(glm::dvec3(t));
   }
   const double mean = luminanceSum / double(std::max<std::size_t>(reference.texels.size(), 1));
   const double exposure = 0.18 / std::max(mean, 1e-9);

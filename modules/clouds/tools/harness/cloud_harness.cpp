@@ -39,6 +39,18 @@ glm::mat4 projectionMatrix(const CloudView& v, VkExtent2D extent) {
                                       float(extent.width) / float(extent.height), kNearMetres);
 }
 
+PixelRays::PixelRays(const CloudView& view, VkExtent2D extent)
+    : inverseProjection_(glm::inverse(projectionMatrix(view, extent))),
+      viewToWorld_(glm::transpose(glm::mat3(viewMatrix(view)))),
+      extent_(extent) {}
+
+glm::vec3 PixelRays::direction(std::uint32_t x, std::uint32_t y) const {
+  const glm::vec2 ndc =
+      (glm::vec2(x, y) + 0.5f) / glm::vec2(extent_.width, extent_.height) * 2.0f - 1.0f;
+  const glm::vec4 p = inverseProjection_ * glm::vec4(ndc, 1.0f, 1.0f);
+  return glm::normalize(viewToWorld_ * (glm::vec3(p) / p.w));
+}
+
 clouds::Settings singleFrame(clouds::Settings settings) {
   settings.traceScale = 1.0f;
   settings.updateInterval = 1;
@@ -296,16 +308,11 @@ std::vector<std::uint8_t> CloudHarness::readWeatherMap() {
 std::vector<glm::vec3> tonemappedPixels(const CloudFrame& frame, const CloudView& view,
                                         float exposure) {
   std::vector<glm::vec3> pixels(std::size_t{frame.extent.width} * frame.extent.height);
-  const glm::mat4 inverseProjection = glm::inverse(projectionMatrix(view, frame.extent));
-  const glm::mat3 viewToWorld = glm::transpose(glm::mat3(viewMatrix(view)));
+  const PixelRays rays(view, frame.extent);
   for (std::uint32_t y = 0; y < frame.extent.height; ++y) {
     for (std::uint32_t x = 0; x < frame.extent.width; ++x) {
       const std::size_t i = std::size_t{y} * frame.extent.width + x;
-      const glm::vec2 ndc =
-          (glm::vec2(x, y) + 0.5f) / glm::vec2(frame.extent.width, frame.extent.height) * 2.0f -
-          1.0f;
-      const glm::vec4 p = inverseProjection * glm::vec4(ndc, 1.0f, 1.0f);
-      const glm::vec3 dir = glm::normalize(viewToWorld * (glm::vec3(p) / p.w));
+      const glm::vec3 dir = rays.direction(x, y);
       const glm::vec3 background = dir.y > 0.0f
                                        ? glm::mix(glm::vec3(0.55f, 0.62f, 0.75f),
                                                   glm::vec3(0.15f, 0.28f, 0.65f), std::sqrt(dir.y))

@@ -49,6 +49,19 @@ glm::vec3 forwardDirection(const CloudView& view);
 glm::mat4 viewMatrix(const CloudView& view);
 glm::mat4 projectionMatrix(const CloudView& view, VkExtent2D extent);
 
+// The directions (world, camera-relative, unit) of the rays through pixel centres, y down:
+// what the module marches for `view` at `extent`. Built once per image.
+class PixelRays {
+ public:
+  PixelRays(const CloudView& view, VkExtent2D extent);
+  glm::vec3 direction(std::uint32_t x, std::uint32_t y) const;
+
+ private:
+  glm::mat4 inverseProjection_;
+  glm::mat3 viewToWorld_;
+  VkExtent2D extent_;
+};
+
 struct CloudFrame {
   VkExtent2D extent{};
   std::vector<glm::vec4> radiance;  // rgb radiance, a transmittance

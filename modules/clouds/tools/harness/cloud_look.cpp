@@ -4,6 +4,8 @@
 #include <cmath>
 #include <vector>
 
+#include "engine/render/scene_components.h"
+
 namespace clouds::tools {
 
 namespace {
@@ -15,24 +17,11 @@ double median(std::vector<double> values) {
   return *middle;
 }
 
-// World direction (camera-relative, unit) through the centre of pixel (x, y), y down.
-glm::dvec3 pixelDirection(const CloudView& view, VkExtent2D extent, std::uint32_t x,
-                          std::uint32_t y) {
-  const glm::dvec3 forward = glm::dvec3(forwardDirection(view));
-  const glm::dvec3 right = glm::normalize(glm::cross(forward, glm::dvec3(0, 1, 0)));
-  const glm::dvec3 up = glm::cross(right, forward);
-  const double tanY = std::tan(glm::radians(double(view.verticalFovDegrees)) * 0.5);
-  const double tanX = tanY * double(extent.width) / double(extent.height);
-  const double u = (x + 0.5) / extent.width * 2.0 - 1.0;
-  const double v = (y + 0.5) / extent.height * 2.0 - 1.0;
-  return glm::normalize(forward + right * (u * tanX) - up * (v * tanY));
+double luminance(const glm::vec4& radiance) {
+  return engine::render::luminance(glm::dvec3(glm::vec3(radiance)));
 }
 
 }  // namespace
-
-double luminance(const glm::vec3& rgb) {
-  return 0.2126 * rgb.r + 0.7152 * rgb.g + 0.0722 * rgb.b;
-}
 
 CloudLook measureLook(const CloudFrame& frame, const CloudView& view,
                       const clouds::Settings& settings) {
@@ -43,6 +32,7 @@ CloudLook measureLook(const CloudFrame& frame, const CloudView& view,
   const glm::dvec3 planetCentre{0.0, -planetRadius, 0.0};
   std::vector<double> flank, base;
   CloudLook look;
+  const PixelRays rays(view, frame.extent);
   for (std::uint32_t y = 0; y < frame.extent.height; ++y) {
     for (std::uint32_t x = 0; x < frame.extent.width; ++x) {
       const std::size_t i = std::size_t(y) * frame.extent.width + x;
@@ -50,10 +40,10 @@ CloudLook measureLook(const CloudFrame& frame, const CloudView& view,
       if (!(radiance.a < kOpaqueTransmittance)) continue;
       ++look.cloudPixels;
       const double distance = frame.depth[i].y;  // transmittance-weighted: the seen surface
-      const glm::dvec3 point = view.position + pixelDirection(view, frame.extent, x, y) * distance;
+      const glm::dvec3 point = view.position + glm::dvec3(rays.direction(x, y)) * distance;
       const double altitude = glm::length(point - planetCentre) - planetRadius;
       const double heightFraction = (altitude - bottom) / thickness;
-      const double l = luminance(glm::vec3(radiance));
+      const double l = luminance(radiance);
       if (heightFraction < kBaseHeightFraction) base.push_back(l);
       if (heightFraction > kFlankHeightFraction) flank.push_back(l);
     }
@@ -75,8 +65,8 @@ double meanRelativeChangeOverClouds(const CloudFrame& a, const CloudFrame& b) {
     if (!(a.radiance[i].a < kOpaqueTransmittance || b.radiance[i].a < kOpaqueTransmittance)) {
       continue;
     }
-    const double la = luminance(glm::vec3(a.radiance[i]));
-    const double lb = luminance(glm::vec3(b.radiance[i]));
+    const double la = luminance(a.radiance[i]);
+    const double lb = luminance(b.radiance[i]);
     sum += std::abs(la - lb) / std::max(lb, 1e-6);
     ++count;
   }
@@ -110,6 +100,10 @@ LookScene noonCumulus() {
   return scene;
 }
 
+clouds::Settings lookSettings(const LookScene& scene) {
+  return singleFrame(clouds::settingsFor(clouds::Quality::High, scene.settings));
+}
+
 LookScene cumulusTowardsTheSun() {
   LookScene scene = noonCumulus();
   // Beside the large cumulus up and to the right of the noon view's centre.
@@ -122,19 +116,35 @@ double cloudLuminanceNearTheSun(const CloudFrame& frame, const CloudView& view, 
                                 std::size_t* pixels) {
   const glm::dvec3 sun = glm::dvec3(sunDirection(view));
   const double cosLimit = std::cos(glm::radians(degrees));
+  const PixelRays rays(view, frame.extent);
   double sum = 0.0;
   std::size_t count = 0;
   for (std::uint32_t y = 0; y < frame.extent.height; ++y) {
     for (std::uint32_t x = 0; x < frame.extent.width; ++x) {
       const glm::vec4 radiance = frame.radiance[std::size_t(y) * frame.extent.width + x];
       if (radiance.a > 0.95f) continue;
-      if (glm::dot(pixelDirection(view, frame.extent, x, y), sun) < cosLimit) continue;
-      sum += luminance(glm::vec3(radiance));
+      if (glm::dot(glm::dvec3(rays.direction(x, y)), sun) < cosLimit) continue;
+      sum += luminance(radiance);
       ++count;
     }
   }
   if (pixels != nullptr) *pixels = count;
   return count > 0 ? sum / double(count) : 0.0;
+}
+
+ForwardLobeEffect measureForwardLobe(CloudHarness& harness, VkExtent2D extent) {
+  const LookScene scene = cumulusTowardsTheSun();
+  const clouds::Settings look = lookSettings(scene);
+  clouds::Settings isotropic = look;
+  isotropic.phaseForwardG = 0.0f;
+  ForwardLobeEffect effect;
+  effect.withLobe = harness.renderAveraged(scene.view, look, extent, kLookFrames);
+  effect.withLobeLuminance =
+      cloudLuminanceNearTheSun(effect.withLobe, scene.view, kNearTheSunDegrees, &effect.pixels);
+  effect.isotropicLuminance =
+      cloudLuminanceNearTheSun(harness.renderAveraged(scene.view, isotropic, extent, kLookFrames),
+                               scene.view, kNearTheSunDegrees);
+  return effect;
 }
 
 }  // namespace clouds::tools

@@ -34,9 +34,6 @@ CloudLook measureLook(const CloudFrame& frame, const CloudView& view,
 // the radiance): how much a change (a term switched off) alters the clouds, as a fraction.
 double meanRelativeChangeOverClouds(const CloudFrame& a, const CloudFrame& b);
 
-// Luminance of linear Rec.709 RGB.
-double luminance(const glm::vec3& rgb);
-
 // The canonical look view: a fair-weather cumulus field at noon (sun 70 degrees up, the
 // scene cumulus_noon.json's clouds), seen from 300 m looking up 20 degrees, lit in the
 // proportions the project's atmosphere gives at noon (see cloud_look.cpp).
@@ -45,6 +42,12 @@ struct LookScene {
   clouds::Settings settings;
 };
 LookScene noonCumulus();
+
+// The settings the look is measured with: High's lighting, every pixel marched every frame
+// (the reconstruction is not what is measured), and the frames averaged per measurement (the
+// rays move inside their pixels: a converged picture).
+clouds::Settings lookSettings(const LookScene& scene);
+inline constexpr std::uint32_t kLookFrames = 8;
 
 // The same view and light with the sun in the frame (33 degrees up, beside a cumulus): the view
 // of the forward-scattering lobe, the silver lining of thin cloud around the sun.
@@ -55,5 +58,17 @@ LookScene cumulusTowardsTheSun();
 // `pixels` (optional) receives their count.
 double cloudLuminanceNearTheSun(const CloudFrame& frame, const CloudView& view, double degrees,
                                 std::size_t* pixels = nullptr);
+
+// The forward lobe's silver lining: cumulusTowardsTheSun() rendered with lookSettings() and
+// again with the forward lobe isotropic (phaseForwardG 0), the cloud within kNearTheSunDegrees
+// of the sun measured in both.
+inline constexpr double kNearTheSunDegrees = 15.0;
+struct ForwardLobeEffect {
+  CloudFrame withLobe;        // the frame with the lobe (for a preview)
+  double withLobeLuminance;   // cloudLuminanceNearTheSun() of it
+  double isotropicLuminance;  // the same with the forward lobe isotropic
+  std::size_t pixels;         // cloud pixels near the sun (with the lobe)
+};
+ForwardLobeEffect measureForwardLobe(CloudHarness& harness, VkExtent2D extent);
 
 }  // namespace clouds::tools

@@ -17,6 +17,9 @@
 
 namespace {
 
+// The previews' exposure: noon cloud of ~10 kcd/m^2 to a light grey.
+constexpr float kPreviewExposure = 0.08f;
+
 using clouds::tools::CloudFrame;
 using clouds::tools::CloudLook;
 
@@ -56,14 +59,13 @@ int main(int argc, char** argv) {
     clouds::tools::CloudHarness harness(device, extent);
     const clouds::tools::LookScene scene = clouds::tools::noonCumulus();
     const auto render = [&](const clouds::Settings& s) {
-      return harness.renderAveraged(scene.view, s, extent, 8);
+      return harness.renderAveraged(scene.view, s, extent, clouds::tools::kLookFrames);
     };
-    const clouds::Settings look =
-        clouds::tools::singleFrame(clouds::settingsFor(clouds::Quality::High, scene.settings));
+    const clouds::Settings look = clouds::tools::lookSettings(scene);
     const CloudFrame full = render(look);
     const CloudLook base = clouds::tools::measureLook(full, scene.view, look);
-    std::printf("noon cumulus, %ux%u, High lighting at full resolution (8 frames averaged)\n",
-                extent.width, extent.height);
+    std::printf("noon cumulus, %ux%u, High lighting at full resolution (%u frames averaged)\n",
+                extent.width, extent.height, clouds::tools::kLookFrames);
     std::printf("  cloud pixels %zu (flank %zu, base %zu)\n", base.cloudPixels, base.flankPixels,
                 base.basePixels);
     std::printf("  flank %.2f, base %.2f kcd/m^2: flank/base %.2f\n", base.flankLuminance,
@@ -71,7 +73,7 @@ int main(int argc, char** argv) {
     if (!outDir.empty()) {
       std::filesystem::create_directories(outDir);
       engine::assets::writePng(outDir / "noon_cumulus.png",
-                               clouds::tools::previewImage(full, scene.view, 0.08f));
+                               clouds::tools::previewImage(full, scene.view, kPreviewExposure));
     }
     for (const TermOff& term : termsOff()) {
       clouds::Settings s = look;
@@ -84,26 +86,20 @@ int main(int argc, char** argv) {
           term.name, l.flankLuminance, l.baseLuminance, l.flankToBase,
           100.0 * clouds::tools::meanRelativeChangeOverClouds(off, full));
     }
-    // The forward lobe towards a low sun.
-    const clouds::tools::LookScene sunward = clouds::tools::cumulusTowardsTheSun();
-    const clouds::Settings sunwardLook =
-        clouds::tools::singleFrame(clouds::settingsFor(clouds::Quality::High, sunward.settings));
-    clouds::Settings noForwardLobe = sunwardLook;
-    noForwardLobe.phaseForwardG = 0.0f;
-    std::size_t nearSun = 0;
-    const CloudFrame sunwardFrame = harness.renderAveraged(sunward.view, sunwardLook, extent, 8);
-    const double withLobe =
-        clouds::tools::cloudLuminanceNearTheSun(sunwardFrame, sunward.view, 15.0, &nearSun);
+    // The forward lobe towards the sun.
+    const clouds::tools::ForwardLobeEffect lobe =
+        clouds::tools::measureForwardLobe(harness, extent);
     if (!outDir.empty()) {
-      engine::assets::writePng(outDir / "cumulus_towards_the_sun.png",
-                               clouds::tools::previewImage(sunwardFrame, sunward.view, 0.08f));
+      engine::assets::writePng(
+          outDir / "cumulus_towards_the_sun.png",
+          clouds::tools::previewImage(lobe.withLobe, clouds::tools::cumulusTowardsTheSun().view,
+                                      kPreviewExposure));
     }
-    const double withoutLobe = clouds::tools::cloudLuminanceNearTheSun(
-        harness.renderAveraged(sunward.view, noForwardLobe, extent, 8), sunward.view, 15.0);
     std::printf(
-        "towards the sun: cloud within 15 degrees of it (%zu pixels) %.2f "
-        "kcd/m^2, %.2f with the forward lobe off (g = 0)\n",
-        nearSun, withLobe, withoutLobe);
+        "towards the sun: cloud within %.0f degrees of it (%zu pixels) %.2f kcd/m^2, %.2f with "
+        "the forward lobe off (g = 0)\n",
+        clouds::tools::kNearTheSunDegrees, lobe.pixels, lobe.withLobeLuminance,
+        lobe.isotropicLuminance);
   } catch (const std::exception& e) {
     std::fprintf(stderr, "clouds_look: %s\n", e.what());
     return 1;

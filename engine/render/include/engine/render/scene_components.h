@@ -32,6 +32,11 @@ glm::mat4 projectionOf(const Camera& camera, float aspect);
 // are (0.2126, 0.7152, 0.0722). Sunlight above the air is about 127 klx, a clear noon sky a few
 // kcd/m^2; the tonemap's exposure (exposure.h) brings that to the display.
 
+// Luminance of linear Rec. 709 RGB, in the unit of the RGB (kcd/m^2 for radiance).
+inline double luminance(const glm::dvec3& rgb) {
+  return 0.2126 * rgb.r + 0.7152 * rgb.g + 0.0722 * rgb.b;
+}
+
 // The sun as a directional light.
 struct Sun {
   glm::dvec3 direction{0.0, 1.0, 0.0};  // unit, towards the sun
