@@ -157,24 +157,26 @@ UniqueQueryPool DeviceContext::createQueryPool(const VkQueryPoolCreateInfo& info
                                                                     "vkCreateQueryPool", name);
 }
 
-UniquePipeline DeviceContext::createGraphicsPipeline(const VkGraphicsPipelineCreateInfo& info,
-                                                     const std::string& name) const {
+template <auto Create, typename Info>
+UniquePipeline DeviceContext::makePipeline(const Info& info, const char* what,
+                                           const std::string& name) const {
   VkPipeline handle = VK_NULL_HANDLE;
-  check(fn_.vkCreateGraphicsPipelines(device_, VK_NULL_HANDLE, 1, &info, nullptr, &handle),
-        "vkCreateGraphicsPipelines");
+  check((fn_.*Create)(device_, VK_NULL_HANDLE, 1, &info, nullptr, &handle), what);
   UniquePipeline owned(fn_, device_, handle);
   this->name(VK_OBJECT_TYPE_PIPELINE, bits(handle), name);
   return owned;
 }
 
+UniquePipeline DeviceContext::createGraphicsPipeline(const VkGraphicsPipelineCreateInfo& info,
+                                                     const std::string& name) const {
+  return makePipeline<&VulkanFunctions::vkCreateGraphicsPipelines>(
+      info, "vkCreateGraphicsPipelines", name);
+}
+
 UniquePipeline DeviceContext::createComputePipeline(const VkComputePipelineCreateInfo& info,
                                                     const std::string& name) const {
-  VkPipeline handle = VK_NULL_HANDLE;
-  check(fn_.vkCreateComputePipelines(device_, VK_NULL_HANDLE, 1, &info, nullptr, &handle),
-        "vkCreateComputePipelines");
-  UniquePipeline owned(fn_, device_, handle);
-  this->name(VK_OBJECT_TYPE_PIPELINE, bits(handle), name);
-  return owned;
+  return makePipeline<&VulkanFunctions::vkCreateComputePipelines>(info, "vkCreateComputePipelines",
+                                                                  name);
 }
 
 void barrier(const DeviceContext& context, VkCommandBuffer cmd, VkImage image,

@@ -5,9 +5,9 @@
 #include <vector>
 
 #include "engine/core/error.h"
-#include "engine/core/log.h"
 #include "engine/ecs/app.h"
 #include "engine/ecs/module.h"
+#include "log_capture.h"
 #include "test_components.h"
 
 namespace {
@@ -69,22 +69,7 @@ class CloudsModule final : public Module {
   bool installed = false;
 };
 
-// Captures warnings for the duration of a test.
-class LogCapture {
- public:
-  LogCapture() {
-    previous_ = engine::log::setSink([this](engine::log::Level level, std::string_view message) {
-      if (level == engine::log::Level::Warning) warnings.emplace_back(message);
-    });
-  }
-  ~LogCapture() { engine::log::setSink(std::move(previous_)); }
-  LogCapture(const LogCapture&) = delete;
-  LogCapture& operator=(const LogCapture&) = delete;
-  std::vector<std::string> warnings;
-
- private:
-  engine::log::Sink previous_;
-};
+using test::LogCapture;
 
 TEST(Module, InstallRegistersSingletonsAndSystems) {
   App app;

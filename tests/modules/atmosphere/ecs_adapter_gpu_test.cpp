@@ -9,11 +9,11 @@
 
 #include "atmosphere/ecs/atmosphere_components.h"
 #include "atmosphere/ecs/atmosphere_module.h"
-#include "engine/core/log.h"
 #include "engine/ecs/app.h"
 #include "engine/render/render_feature.h"
 #include "engine/render/scene_components.h"
 #include "gpu_test.h"
+#include "log_capture.h"
 
 namespace {
 
@@ -48,17 +48,14 @@ TEST_F(AtmosphereModuleOnDevice, InstallsDrawsTheSkyAndPublishesTheSunThroughIts
 }
 
 TEST_F(AtmosphereModuleOnDevice, ADeviceItCannotUseMakesItSkipItselfWithAWarning) {
-  std::vector<std::string> warnings;
-  auto previous = engine::log::setSink([&](engine::log::Level level, std::string_view message) {
-    if (level == engine::log::Level::Warning) warnings.emplace_back(message);
-  });
+  test::LogCapture log;
+  const std::vector<std::string>& warnings = log.warnings;
   engine::ecs::App app;
   app.world().ctx().emplace<engine::render::RenderDevice>(
       renderDevice(device(), VK_FORMAT_R8G8B8A8_UNORM));
   app.world().emplace<atmosphere::ecs::Atmosphere>(app.world().create(),
                                                    atmosphere::ecs::Atmosphere{});
   EXPECT_FALSE(app.addModule<atmosphere::ecs::AtmosphereModule>());
-  engine::log::setSink(std::move(previous));
   EXPECT_FALSE(app.world().ctx().has<engine::render::RenderFeatures>());
   EXPECT_FALSE(app.world().ctx().has<engine::render::SunTransmittance>());
   ASSERT_EQ(warnings.size(), 1u);

@@ -9,10 +9,10 @@
 
 #include "clouds/ecs/cloud_components.h"
 #include "clouds/ecs/clouds_module.h"
-#include "engine/core/log.h"
 #include "engine/ecs/app.h"
 #include "engine/render/render_feature.h"
 #include "gpu_test.h"
+#include "log_capture.h"
 
 namespace {
 
@@ -35,16 +35,13 @@ TEST_F(CloudsModuleOnDevice, InstallsAndRegistersItsRenderFeature) {
 }
 
 TEST_F(CloudsModuleOnDevice, ADeviceItCannotUseMakesItSkipItselfWithAWarning) {
-  std::vector<std::string> warnings;
-  auto previous = engine::log::setSink([&](engine::log::Level level, std::string_view message) {
-    if (level == engine::log::Level::Warning) warnings.emplace_back(message);
-  });
+  test::LogCapture log;
+  const std::vector<std::string>& warnings = log.warnings;
   engine::ecs::App app;
   app.world().ctx().emplace<engine::render::RenderDevice>(
       renderDevice(device(), VK_FORMAT_R8G8B8A8_UNORM));
   app.world().emplace<clouds::ecs::CloudLayer>(app.world().create(), clouds::ecs::CloudLayer{});
   EXPECT_FALSE(app.addModule<clouds::ecs::CloudsModule>());
-  engine::log::setSink(std::move(previous));
   EXPECT_FALSE(app.world().ctx().has<engine::render::RenderFeatures>());
   ASSERT_EQ(warnings.size(), 1u);
   EXPECT_NE(warnings[0].find("clouds"), std::string::npos) << warnings[0];

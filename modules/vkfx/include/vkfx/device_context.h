@@ -89,6 +89,9 @@ class DeviceContext {
  private:
   template <typename Unique, auto Create, typename Info>
   Unique make(const Info& info, VkObjectType type, const char* what, const std::string& name) const;
+  // One pipeline through vkCreate{Graphics,Compute}Pipelines (no cache).
+  template <auto Create, typename Info>
+  UniquePipeline makePipeline(const Info& info, const char* what, const std::string& name) const;
 
   VulkanFunctions fn_;
   VkDevice device_;
