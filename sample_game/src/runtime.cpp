@@ -74,9 +74,14 @@ RunPlan planRun(Options options) {
   RunPlan plan;
   plan.windowed = !options.headless && platform::Window::displayAvailable();
   if (!options.headless && !plan.windowed && !options.describe) {
-    log::info("no display found (DISPLAY/WAYLAND_DISPLAY unset): running headless");
     if (options.frames == 0) options.frames = kHeadlessPreviewFrames;
     if (!options.captureDir) options.captureDir = "out";
+    log::info("no display found (DISPLAY/WAYLAND_DISPLAY unset): running headless for " +
+              std::to_string(options.frames) + " frames and capturing the last into " +
+              options.captureDir->string() +
+              (options.frames == kHeadlessPreviewFrames
+                   ? " (converged: every cloud pixel traced three times)"
+                   : ""));
   }
   if (options.scene.empty()) {
     options.scene = std::filesystem::path(CLOUDSCAPE_ASSET_SOURCE_DIR) / "scenes/default.json";
