@@ -175,10 +175,12 @@ VKFX_INLINE bool weatherCellEmpty(vec4 maxima, float altitude, bool ascending,
 }
 
 // Empty-space skipping: the distance to jump to from `t` (t itself when the sample's cell may
-// hold cloud), from the coarse then the fine grid of weather maxima.
-VKFX_INLINE float emptySpaceSkip(float t, vec3 rayDirection, float altitude, IN(CloudUniforms) u) {
+// hold cloud), from the coarse then the fine grid of weather maxima, for a ray that starts at
+// the camera-relative flat offset `origin` (x, z).
+VKFX_INLINE float emptySpaceSkip(vec2 origin, float t, vec3 rayDirection, float altitude,
+                                 IN(CloudUniforms) u) {
   const vec2 d = vec2(rayDirection.x, rayDirection.z);
-  const vec2 p = u.weatherOffsetMetres + d * t;
+  const vec2 p = u.weatherOffsetMetres + origin + d * t;
   const bool ascending = rayDirection.y >= 0.0f;
   const float coarse = u.coarseCellMetres;
   const ivec2 coarseCell = ivec2(floor(p / coarse)) & (kWeatherMaxCoarseSize - 1);
@@ -294,8 +296,9 @@ VKFX_INLINE MarchResult marchClouds(vec3 rayDirection, float sceneDistance, floa
   for (int i = 0; i < maxSteps + kMaxSkips; ++i) {
     if (t >= end || r.transmittance < cutoff || samples >= maxSteps) break;
     if (o.emptySpace != 0u) {
-      const float skipTo = emptySpaceSkip(
-          t, rayDirection, altitudeAlongRay(t, cosZenith, altitude, u.planetRadiusMetres), u);
+      const float skipTo =
+          emptySpaceSkip(vec2(0.0f), t, rayDirection,
+                         altitudeAlongRay(t, cosZenith, altitude, u.planetRadiusMetres), u);
       if (skipTo > t) {
         t = skipTo;
         r.skippedCells += 1.0f;

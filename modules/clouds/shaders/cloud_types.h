@@ -60,6 +60,12 @@ const uint kUpsampleFresh = 5u;
 const uint kUpsampleHistory = 6u;
 const uint kUpsampleHistoryOut = 7u;
 const uint kUpsampleAerialPerspective = 8u;  // the host's haze (FrameInputs::aerialPerspective)
+// cloud_shadow_map.comp (binding 0: the CloudUniforms of the frame the map is made in)
+const uint kShadowShapeNoise = 1u;
+const uint kShadowWeatherMap = 2u;
+const uint kShadowWeatherMaxFine = 3u;
+const uint kShadowWeatherMaxCoarse = 4u;
+const uint kShadowMapOut = 5u;  // the cascade atlas (vkfx/cloud_shadow.h), RGBA16F
 // composite.comp
 const uint kCompositeHostColor = 0u;
 const uint kCompositeClouds = 1u;
@@ -94,6 +100,9 @@ const uint kSpecTemporalUpsampling = 0u;  // 0/1: accumulate the output-resoluti
 const uint kSpecOutputHistory = 1u;       // 0 none, 1 read in place (nothing moved), 2 reprojected
 const uint kSpecAerialPerspective = 2u;   // 0/1: haze the output (FrameInputs::aerialPerspective)
 const uint kUpsampleSpecCount = 3u;
+// cloud_shadow_map.comp
+const uint kSpecShadowEmptySpace = 0u;  // 0/1: skip empty weather cells
+const uint kShadowSpecCount = 1u;
 // The history variants of kSpecHistory and kSpecOutputHistory.
 const uint kHistoryNone = 0u;
 const uint kHistoryInPlace = 1u;
@@ -247,6 +256,20 @@ struct MaximaConstants {
   uint padding0;
 };
 
+// Push constants of the shadow map: the cascade one dispatch makes (cloud_shadow_march.h).
+struct ShadowMapConstants {
+  vec4 axisU;        // xyz U (unit), w: u of texel 0's centre (m, camera-relative)
+  vec4 axisV;        // xyz V (unit), w: v of texel 0's centre
+  vec4 light;        // xyz L, the direction the rays go (unit, towards the sun), w texel size (m)
+  ivec2 worldTexel;  // texel 0's index on the cascade's world grid (the jitter's seed)
+  uint cascade;      // which cascade of the atlas
+  uint resolution;   // texels per cascade side
+  uint steps;        // samples along each ray
+  uint padding0;
+  uint padding1;
+  uint padding2;
+};
+
 // Push constants of the composite helper.
 struct CompositeConstants {
   uvec2 extent;  // host colour extent (px)
@@ -299,6 +322,7 @@ static_assert(sizeof(clouds::shader::NoiseConstants) == 16);
 static_assert(sizeof(clouds::shader::WeatherConstants) == 16);
 static_assert(sizeof(clouds::shader::MaximaConstants) == 16);
 static_assert(sizeof(clouds::shader::CompositeConstants) == 16);
+static_assert(sizeof(clouds::shader::ShadowMapConstants) == 80);
 #undef CLOUDS_ASSERT_OFFSET
 #endif
 

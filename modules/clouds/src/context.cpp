@@ -52,8 +52,22 @@ std::string checkCreateInfo(const CreateInfo& info) {
   return {};
 }
 
-std::string checkInputs(const FrameInputs& in, const CreateInfo& info) {
+// What both dispatch() and dispatchShadowMap() read: the command buffer, camera position, sun,
+// time.
+std::string checkSharedInputs(const FrameInputs& in) {
   if (in.commandBuffer == VK_NULL_HANDLE) return "FrameInputs.commandBuffer: must not be null";
+  for (double c : {in.cameraPosition.x, in.cameraPosition.y, in.cameraPosition.z}) {
+    if (!std::isfinite(c)) return "FrameInputs.cameraPosition: must be finite";
+  }
+  if (!finite(in.sunDirection)) return "FrameInputs.sunDirection: must be finite";
+  if (!std::isfinite(in.timeSeconds) || in.timeSeconds < 0.0) {
+    return "FrameInputs.timeSeconds = " + std::to_string(in.timeSeconds) + ": must be >= 0";
+  }
+  return {};
+}
+
+std::string checkInputs(const FrameInputs& in, const CreateInfo& info) {
+  if (std::string problem = checkSharedInputs(in); !problem.empty()) return problem;
   if (std::string problem = checkExtent("FrameInputs.renderExtent", in.renderExtent, info);
       !problem.empty()) {
     return problem;
@@ -63,10 +77,6 @@ std::string checkInputs(const FrameInputs& in, const CreateInfo& info) {
   if (std::abs(glm::determinant(in.projection)) < 1e-30f) {
     return "FrameInputs.projection: must be invertible";
   }
-  for (double c : {in.cameraPosition.x, in.cameraPosition.y, in.cameraPosition.z}) {
-    if (!std::isfinite(c)) return "FrameInputs.cameraPosition: must be finite";
-  }
-  if (!finite(in.sunDirection)) return "FrameInputs.sunDirection: must be finite";
   const struct {
     const char* field;
     const glm::vec3& value;
@@ -77,9 +87,6 @@ std::string checkInputs(const FrameInputs& in, const CreateInfo& info) {
     if (!finite(value) || !nonNegative(value)) {
       return std::string(field) + ": must be finite and not negative";
     }
-  }
-  if (!std::isfinite(in.timeSeconds) || in.timeSeconds < 0.0) {
-    return "FrameInputs.timeSeconds = " + std::to_string(in.timeSeconds) + ": must be >= 0";
   }
   const FrameInputs::AerialPerspective& haze = in.aerialPerspective;
   if (haze.view != VK_NULL_HANDLE) {
@@ -152,6 +159,22 @@ bool Context::dispatch(const FrameInputs& inputs, const Settings& settings, Erro
                     "these settings and render extent outside command recording");
   }
   impl_->dispatch(inputs, settings);
+  return succeed(error);
+}
+
+bool Context::dispatchShadowMap(const FrameInputs& inputs, const Settings& settings, Error* error) {
+  if (std::string problem = checkSharedInputs(inputs); !problem.empty()) {
+    return fail(error, ErrorCode::InvalidInputs, "dispatchShadowMap: " + problem);
+  }
+  if (std::string problem = validateSettings(settings); !problem.empty()) {
+    return fail(error, ErrorCode::InvalidSettings, problem);
+  }
+  if (!impl_->shadowPrepared(settings)) {
+    return fail(error, ErrorCode::NotPrepared,
+                "dispatchShadowMap: the shadow map for these settings does not exist yet: call "
+                "Context::prepare() with them outside command recording");
+  }
+  impl_->dispatchShadowMap(inputs, settings);
   return succeed(error);
 }
 

@@ -30,7 +30,7 @@ const detail::DeviceContext& checkedDevice(const detail::DeviceContext& device) 
 }
 
 detail::UniqueDescriptorPool makePool(const detail::DeviceContext& device, std::uint32_t frames) {
-  // Fixed sets: 3 noise generators, 2 weather generators, 3 maxima. Per slot: 7 sets.
+  // Fixed sets: 3 noise generators, 2 weather generators, 3 maxima. Per slot: 8 sets.
   const VkDescriptorPoolSize sizes[] = {
       {VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, 16 + 32 * frames},
       {VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 4 + 8 * frames},
@@ -86,6 +86,11 @@ Context::Impl::Impl(const CreateInfo& info, const detail::VulkanFunctions& funct
     if (programs_.has(Program::Composite)) slot.composite = allocateSet(Program::Composite);
     slot.skyAmbient = allocateSet(Program::SkyAmbient);
     slot.weatherResample = allocateSet(Program::WeatherResample);
+    slot.shadowUniforms =
+        detail::OwnedBuffer(device_, sizeof(shader::CloudUniforms),
+                            VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT,
+                            "shadow uniforms " + std::to_string(i));
+    slot.shadowMap = allocateSet(Program::ShadowMap);
   }
 }
 
@@ -139,6 +144,12 @@ detail::ImageSizes imageSizesFor(const Settings& settings, VkExtent2D renderExte
           upsamplesTemporally(settings)};
 }
 
+// The shadow map's cascade atlas: the cascades side by side ({0, 0}: none).
+VkExtent2D shadowExtentFor(const Settings& settings) {
+  return {settings.shadowMapResolution * settings.shadowCascades,
+          settings.shadowCascades > 0 ? settings.shadowMapResolution : 0};
+}
+
 }  // namespace
 
 void Context::Impl::prepare(const Settings& settings, VkExtent2D renderExtent) {
@@ -149,6 +160,7 @@ void Context::Impl::prepare(const Settings& settings, VkExtent2D renderExtent) {
   if (!images_.fit(sizes) && images_.grow(sizes, lastFrameIndex_)) {
     temporal_.forget("images resized");
   }
+  if (images_.fitShadow(shadowExtentFor(settings), lastFrameIndex_)) shadowCascades_.forget();
   // Images retired before any frame used them can go now.
   images_.releaseRetired(lastFrameIndex_.value_or(0), info_.maxFramesInFlight);
 }
@@ -165,7 +177,16 @@ std::string Context::Impl::unprepared(const Settings& settings, VkExtent2D rende
     return "images for a " + std::to_string(renderExtent.width) + "x" +
            std::to_string(renderExtent.height) + " render extent at these settings";
   }
+  if (!images_.shadowFits(shadowExtentFor(settings))) {
+    return "the shadow map for these shadow settings";
+  }
   return {};
+}
+
+bool Context::Impl::shadowPrepared(const Settings& settings) const {
+  if (settings.shadowCascades == 0) return true;
+  return programs_[Program::ShadowMap].find(detail::shadowMapKey(settings)) != VK_NULL_HANDLE &&
+         images_.shadowFits(shadowExtentFor(settings));
 }
 
 void Context::Impl::beginPass(VkCommandBuffer cmd, detail::Pass pass, const char* label) {
@@ -200,16 +221,41 @@ bool skyIsClear(const Settings& s) {
 
 }  // namespace
 
-void Context::Impl::dispatch(const FrameInputs& inputs, const Settings& settings) {
+void Context::Impl::startFrame(const FrameInputs& inputs, const Settings& settings, Slot& slot) {
+  if (lastFrameIndex_ == inputs.frameIndex) return;  // the frame's other call did it
   const VkCommandBuffer cmd = inputs.commandBuffer;
   images_.releaseRetired(inputs.frameIndex, info_.maxFramesInFlight);
-  const auto slotIndex = static_cast<std::uint32_t>(inputs.frameIndex % slots_.size());
-  Slot& slot = slots_[slotIndex];
-  device_.beginLabel(cmd, "clouds");
-  if (timer_) timer_->beginFrame(cmd, slotIndex);
+  if (timer_) timer_->beginFrame(cmd, static_cast<std::uint32_t>(&slot - slots_.data()));
   images_.recordInitialLayouts(cmd);
   if (!noiseGenerated_) recordNoise(cmd);
   recordWeather(cmd, inputs, settings, slot);
+  lastFrameIndex_ = inputs.frameIndex;
+  shadowCascadesMade_ = 0;
+}
+
+void Context::Impl::dispatchShadowMap(const FrameInputs& inputs, const Settings& settings) {
+  if (settings.shadowCascades == 0) return;
+  const VkCommandBuffer cmd = inputs.commandBuffer;
+  const auto slotIndex = static_cast<std::uint32_t>(inputs.frameIndex % slots_.size());
+  Slot& slot = slots_[slotIndex];
+  device_.beginLabel(cmd, "clouds: shadow map");
+  startFrame(inputs, settings, slot);
+  const detail::ShadowPlan plan = shadowCascades_.plan(inputs, settings);
+  if (!plan.jobs.empty()) recordShadowMap(cmd, inputs, settings, plan, slot);
+  shadowCascades_.commit(plan, inputs, settings);
+  for (const detail::CascadeJob& job : plan.jobs) shadowCascadesMade_ |= 1u << job.cascade;
+  shadowParameters_ =
+      shadowCascades_.parameters(inputs.cameraPosition, inputs.timeSeconds, settings);
+  report_.shadowCascadesMade = shadowCascadesMade_;
+  device_.endLabel(cmd);
+}
+
+void Context::Impl::dispatch(const FrameInputs& inputs, const Settings& settings) {
+  const VkCommandBuffer cmd = inputs.commandBuffer;
+  const auto slotIndex = static_cast<std::uint32_t>(inputs.frameIndex % slots_.size());
+  Slot& slot = slots_[slotIndex];
+  device_.beginLabel(cmd, "clouds");
+  startFrame(inputs, settings, slot);
 
   const VkExtent2D traceExtent = detail::traceExtentFor(inputs.renderExtent, settings.traceScale);
   const detail::TemporalFrame temporal = temporal_.plan(inputs, settings, traceExtent);
@@ -221,19 +267,19 @@ void Context::Impl::dispatch(const FrameInputs& inputs, const Settings& settings
     // Nothing can be marched: the outputs are the empty sky, and the next frame starts afresh.
     recordClearSky(cmd, slot);
     temporal_.forget("after a clear sky");
-    report_ = FrameReport{{0, 0}, 0, false, temporal.insideLayer, "clear sky: nothing to march"};
+    report_ = FrameReport{
+        {0, 0}, 0, false, temporal.insideLayer, "clear sky: nothing to march", shadowCascadesMade_};
   } else {
     recordUniforms(cmd, slot, lastUniforms_);
     if (inputs.skyView != VK_NULL_HANDLE) recordSkyAmbient(cmd, inputs, slot);
     recordTrace(cmd, inputs, settings, temporal, traceExtent, slot);
     temporal_.commit(temporal, inputs, settings, traceExtent);
-    report_ = FrameReport{traceExtent, temporal.tileSize, temporal.useHistory, temporal.insideLayer,
-                          temporal.resetReason};
+    report_ = FrameReport{traceExtent,          temporal.tileSize,    temporal.useHistory,
+                          temporal.insideLayer, temporal.resetReason, shadowCascadesMade_};
   }
   device_.endLabel(cmd);
   lastSlot_ = slotIndex;
   lastExtent_ = inputs.renderExtent;
-  lastFrameIndex_ = inputs.frameIndex;
 }
 
 void Context::Impl::composite(VkCommandBuffer cmd, VkImageView color, VkExtent2D extent) {
@@ -264,13 +310,20 @@ Outputs Context::Impl::outputs() const {
   out.radiance = {radiance.image(), radiance.view(), radiance.format()};
   out.depth = {depth.image(), depth.view(), depth.format()};
   out.extent = lastExtent_;
+  const detail::OwnedImage& shadow = images_.shadowMap;
+  if (shadow) {
+    out.shadowMap = {shadow.image(), shadow.view(), shadow.format()};
+    out.shadowParameters = shadowParameters_;
+  }
   return out;
 }
 
 MemoryUsage Context::Impl::memoryUsage() const {
   MemoryUsage usage = images_.memoryUsage();
-  for (const Slot& slot : slots_)
-    usage.bufferBytes += slot.uniforms.bytes() + slot.counters.bytes();
+  for (const Slot& slot : slots_) {
+    usage.bufferBytes +=
+        slot.uniforms.bytes() + slot.counters.bytes() + slot.shadowUniforms.bytes();
+  }
   return usage;
 }
 

@@ -3,8 +3,10 @@
 // and tools reach through detail::ContextAccess (context_access.h).
 //
 // A frame: [first frame: noise generation] -> weather map and its maxima (when due) ->
-// uniforms -> [sky ambient] -> conservative scene distance at trace resolution -> march (one
-// pixel per tile) -> temporal reconstruction -> depth-aware upsample into the outputs.
+// [the shadow map's cascades due: dispatchShadowMap()] -> uniforms -> [sky ambient] ->
+// conservative scene distance at trace resolution -> march (one pixel per tile) -> temporal
+// reconstruction -> depth-aware upsample into the outputs. The steps up to the weather run
+// once per frame, in whichever of dispatchShadowMap() and dispatch() comes first.
 //
 // Where the code lives:
 //   context.cpp          the public API: argument checks, error codes, forwarding here
@@ -13,6 +15,8 @@
 //   programs.cpp         the pass table (shaders, bindings, push constants)
 //   record_weather.cpp   noise generation, the weather map and its maxima
 //   record_trace.cpp     uniforms, sky ambient, scene distance, march, reconstruct, upsample
+//   shadow_cascades.cpp  where the shadow map's cascades lie and when each is remade
+//   record_shadow.cpp    the shadow map's cascades
 #include <array>
 #include <memory>
 #include <optional>
@@ -24,6 +28,7 @@
 #include "module_images.h"
 #include "passes.h"
 #include "programs.h"
+#include "shadow_cascades.h"
 #include "temporal_state.h"
 #include "uniforms.h"
 #include "weather_schedule.h"
@@ -41,6 +46,10 @@ class Context::Impl {
   std::string unprepared(const Settings& settings, VkExtent2D renderExtent) const;
   // Records a frame; the inputs and settings are valid and prepared (context.cpp checks).
   void dispatch(const FrameInputs& inputs, const Settings& settings);
+  // Whether dispatchShadowMap() can run `settings` (its pipeline and image exist).
+  bool shadowPrepared(const Settings& settings) const;
+  // Records the frame's shadow-map cascades (same preconditions).
+  void dispatchShadowMap(const FrameInputs& inputs, const Settings& settings);
   void composite(VkCommandBuffer cmd, VkImageView color, VkExtent2D extent);
 
   Outputs outputs() const;
@@ -56,6 +65,9 @@ class Context::Impl {
   // The weather map in use (the other one is being prepared for the next period).
   const detail::OwnedImage& weatherMap() const { return images_.weatherMaps[currentWeather_]; }
   const shader::CloudUniforms& lastUniforms() const { return lastUniforms_; }
+  // The uniforms and per-cascade constants of the last shadow-map cascades recorded.
+  const shader::CloudUniforms& lastShadowUniforms() const { return lastShadowUniforms_; }
+  const std::vector<shader::ShadowMapConstants>& lastShadowJobs() const { return lastShadowJobs_; }
   std::uint64_t weatherUpdates() const { return weatherUpdates_; }
   // Test-only uniform flags (e.g. shader::kFlagHomogeneous) ORed into every frame.
   void setDebugFlags(std::uint32_t flags) { debugFlags_ = flags; }
@@ -73,9 +85,14 @@ class Context::Impl {
     VkDescriptorSet composite = VK_NULL_HANDLE;
     VkDescriptorSet skyAmbient = VK_NULL_HANDLE;
     VkDescriptorSet weatherResample = VK_NULL_HANDLE;
+    detail::OwnedBuffer shadowUniforms;  // the CloudUniforms the shadow map is made with
+    VkDescriptorSet shadowMap = VK_NULL_HANDLE;
   };
 
   VkDescriptorSet allocateSet(detail::Program program);
+  // What each frame records once, before its first pass: retiring images, the pass timer's
+  // frame, first layouts, the noise (first frame) and the weather.
+  void startFrame(const FrameInputs& inputs, const Settings& settings, Slot& slot);
   void writeFixedSets();
   // A debug label and, with CreateInfo::passTimings, timestamps around a pass.
   void beginPass(VkCommandBuffer cmd, detail::Pass pass, const char* label);
@@ -90,6 +107,10 @@ class Context::Impl {
   void recordWeatherRows(VkCommandBuffer cmd, const Settings& settings,
                          const detail::WeatherWork& work, double mapTimeSeconds);
   void recordWeatherMaxima(VkCommandBuffer cmd);
+
+  // record_shadow.cpp
+  void recordShadowMap(VkCommandBuffer cmd, const FrameInputs& inputs, const Settings& settings,
+                       const detail::ShadowPlan& plan, Slot& slot);
 
   // record_trace.cpp
   void recordUniforms(VkCommandBuffer cmd, Slot& slot, const shader::CloudUniforms& uniforms);
@@ -121,12 +142,18 @@ class Context::Impl {
   detail::WeatherSchedule weatherSchedule_;
   std::uint32_t currentWeather_ = 0;  // index into images_.weatherMaps
   std::uint64_t weatherUpdates_ = 0;
-  std::optional<std::uint64_t> lastFrameIndex_;  // of the last dispatch
+  // The last frame that recorded anything (startFrame()): the last use of the current images.
+  std::optional<std::uint64_t> lastFrameIndex_;
   std::uint32_t lastSlot_ = 0;
   VkExtent2D lastExtent_{0, 0};
   detail::TemporalState temporal_;
+  detail::ShadowCascades shadowCascades_;
+  ShadowMapParameters shadowParameters_{};
+  std::uint32_t shadowCascadesMade_ = 0;  // this frame's (FrameReport::shadowCascadesMade)
   FrameReport report_{};
   shader::CloudUniforms lastUniforms_{};
+  shader::CloudUniforms lastShadowUniforms_{};
+  std::vector<shader::ShadowMapConstants> lastShadowJobs_;
   std::uint32_t debugFlags_ = 0;
 };
 

@@ -129,6 +129,24 @@ bool ModuleImages::grow(const ImageSizes& sizes, std::optional<std::uint64_t> la
   return historyLost;
 }
 
+bool ModuleImages::shadowFits(VkExtent2D extent) const {
+  if (extent.width == 0 || extent.height == 0) return !shadowMap;
+  return shadowMap && shadowMap.extent().width == extent.width &&
+         shadowMap.extent().height == extent.height;
+}
+
+bool ModuleImages::fitShadow(VkExtent2D extent, std::optional<std::uint64_t> lastUse) {
+  if (shadowFits(extent)) return false;
+  OwnedImage replacement;
+  if (extent.width > 0 && extent.height > 0) {
+    // Its layout depends on the cascades and resolution: the size is exact, not grown.
+    replacement =
+        make(VK_IMAGE_TYPE_2D, kRadianceFormat, extent3(extent), kOutput, "cloud shadow map");
+  }
+  replace(shadowMap, std::move(replacement), lastUse);
+  return true;
+}
+
 void ModuleImages::releaseRetired(std::uint64_t frameIndex, std::uint32_t framesInFlight) {
   std::erase_if(retired_, [&](const Retired& r) {
     return !r.lastUse || frameIndex >= *r.lastUse + framesInFlight;
@@ -155,6 +173,7 @@ MemoryUsage ModuleImages::memoryUsage() const {
   m.traceBytes =
       sceneDistance.bytes() + traceSamples.bytes() + history[0].bytes() + history[1].bytes();
   m.upsamplingBytes = outputHistory[0].bytes() + outputHistory[1].bytes();
+  m.shadowBytes = shadowMap.bytes();
   m.bufferBytes = depthPlaceholder.bytes() + samplesPlaceholder.bytes() + hazePlaceholder.bytes();
   for (const Retired& r : retired_) m.retiredBytes += r.image.bytes();
   return m;

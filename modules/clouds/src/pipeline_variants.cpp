@@ -35,6 +35,13 @@ SpecializationKey upsampleKey(bool temporalUpsampling, std::uint32_t outputHisto
   return key;
 }
 
+SpecializationKey shadowMapKey(const Settings& settings) {
+  SpecializationKey key;
+  key.values[shader::kSpecShadowEmptySpace] = settings.emptySpaceSkipping ? 1u : 0u;
+  key.count = shader::kShadowSpecCount;
+  return key;
+}
+
 std::vector<std::pair<Program, SpecializationKey>> variantsFor(const Settings& settings,
                                                                bool workCounters) {
   const std::uint32_t histories[] = {shader::kHistoryNone, shader::kHistoryInPlace,
@@ -52,6 +59,9 @@ std::vector<std::pair<Program, SpecializationKey>> variantsFor(const Settings& s
       variants.emplace_back(Program::Upsample, upsampleKey(upsampling, history, hazed));
     }
   }
+  // No shadow map, no shadow pipeline.
+  if (settings.shadowCascades > 0)
+    variants.emplace_back(Program::ShadowMap, shadowMapKey(settings));
   return variants;
 }
 

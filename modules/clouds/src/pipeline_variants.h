@@ -18,6 +18,9 @@ SpecializationKey reconstructKey(std::uint32_t history);
 // `hazed`: the host gave an aerial perspective this frame.
 SpecializationKey upsampleKey(bool temporalUpsampling, std::uint32_t outputHistory, bool hazed);
 
+// The shadow map's (its empty-space skipping follows Settings::emptySpaceSkipping).
+SpecializationKey shadowMapKey(const Settings& settings);
+
 // Every variant `settings` can select in some frame (with or without history, still or moving,
 // with or without the host's aerial perspective).
 std::vector<std::pair<Program, SpecializationKey>> variantsFor(const Settings& settings,

@@ -5,6 +5,7 @@
 
 #include "cloud_types.h"
 #include "clouds_shaders/cloud_march.comp.spv.h"
+#include "clouds_shaders/cloud_shadow_map.comp.spv.h"
 #include "clouds_shaders/composite.comp.spv.h"
 #include "clouds_shaders/depth_downsample.comp.spv.h"
 #include "clouds_shaders/noise_curl.comp.spv.h"
@@ -113,6 +114,16 @@ std::vector<ProgramDesc> programTable() {
         {kUpsampleAerialPerspective, kTexture}},
        0,
        "upsample"},
+      {Program::ShadowMap,
+       cloud_shadow_map_comp_spv,
+       {{kBindingUniforms, kUniforms},
+        {kShadowShapeNoise, kImage},
+        {kShadowWeatherMap, kImage},
+        {kShadowWeatherMaxFine, kImage},
+        {kShadowWeatherMaxCoarse, kImage},
+        {kShadowMapOut, kImage}},
+       sizeof(ShadowMapConstants),
+       "shadow map"},
       {Program::Composite,
        composite_comp_spv,
        {{kCompositeHostColor, kImage}, {kCompositeClouds, kImage}},
@@ -130,9 +141,9 @@ Programs::Programs(const DeviceContext& device, bool composite) {
     program = std::make_unique<ComputeProgram>(device, desc.spirv, desc.bindings,
                                                desc.pushConstantBytes, desc.name);
     // Programs without specialization constants have one variant: made now.
-    const bool specialised = desc.program == Program::March ||
-                             desc.program == Program::Reconstruct ||
-                             desc.program == Program::Upsample;
+    const bool specialised =
+        desc.program == Program::March || desc.program == Program::Reconstruct ||
+        desc.program == Program::Upsample || desc.program == Program::ShadowMap;
     if (!specialised) program->prepare();
   }
 }

@@ -24,6 +24,7 @@ enum class Program : std::uint32_t {
   Reconstruct,      // reconstruct.comp: temporal reconstruction at trace resolution
   Upsample,         // upsample.comp: depth-aware (and temporal) upsampling to the output
   Composite,        // composite.comp: the clouds over the host's colour
+  ShadowMap,        // cloud_shadow_map.comp: one cascade of the cloud shadow map
   Count
 };
 

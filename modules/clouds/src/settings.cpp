@@ -98,6 +98,12 @@ std::string validateSettings(const Settings& s) {
   c.range("historyResetAngleDegrees", s.historyResetAngleDegrees, 0.1f, 180.0f);
   c.range("relightResetDegrees", s.relightResetDegrees, 0.01f, 180.0f);
   c.range("relightResetRatio", s.relightResetRatio, 0.001f, 10.0f);
+  c.range("shadowCascades", s.shadowCascades, 0u, 4u);
+  c.range("shadowMapResolution", s.shadowMapResolution, 16u, 1024u);
+  c.range("shadowNearSideMetres", s.shadowNearSideMetres, 500.0f, 1e6f);
+  c.range("shadowCascadeRatio", s.shadowCascadeRatio, 1.5f, 8.0f);
+  c.range("shadowSteps", s.shadowSteps, 1u, 256u);
+  c.range("shadowCascadesPerFrame", s.shadowCascadesPerFrame, 1u, 4u);
   c.require(s.jitter == Jitter::None || s.jitter == Jitter::BayerHalton ||
                 s.jitter == Jitter::BayerHaltonSubpixel,
             "Settings.jitter: unknown mode " + std::to_string(static_cast<unsigned>(s.jitter)));

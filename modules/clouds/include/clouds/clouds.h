@@ -10,6 +10,9 @@
 //      host's command buffer (never submits, waits, presents, creates or allocates);
 //   4. context->outputs()                           the module's images for the host to read,
 //      or context->composite(...)                   to apply the clouds over a host colour image.
+// A host whose scene is shadowed by the clouds also calls, each frame before the passes that
+// read it (typically before its scene pass, and before dispatch()),
+//      context->dispatchShadowMap(FrameInputs, Settings)   the cloud shadow map (Outputs).
 //
 // Ownership: the host owns the instance, device, queue, command buffers, submission, its depth
 // and colour images. The module owns its pipelines, noise textures, weather map, uniform
@@ -102,8 +105,9 @@ struct CreateInfo {
 
 // GPU time of one of the module's passes in a frame (CreateInfo::passTimings). A frame has, in
 // recording order: "noise" (its first frame only), "weather" (frames that make or resample a
-// weather map), "sky ambient" (with FrameInputs::skyView), then either "clear sky" (nothing to
-// march) or "scene distance", "march", "reconstruct", "upsample".
+// weather map), "shadow map" (dispatchShadowMap() with cascades due), "sky ambient" (with
+// FrameInputs::skyView), then either "clear sky" (nothing to march) or "scene distance",
+// "march", "reconstruct", "upsample".
 struct PassTiming {
   const char* name = "";  // static storage: valid for the life of the program
   double milliseconds = 0.0;
@@ -128,6 +132,8 @@ struct FrameReport {
   // Why the history was not used ("" when it was). Static storage: valid for the life of the
   // program.
   const char* resetReason = "";
+  // The shadow-map cascades this frame's dispatchShadowMap() made (bit c: cascade c).
+  std::uint32_t shadowCascadesMade = 0;
 };
 
 // The GPU memory the module holds, by purpose (bytes of its VkDeviceMemory allocations).
@@ -137,12 +143,13 @@ struct MemoryUsage {
   std::uint64_t outputBytes = 0;      // radiance and depth at the prepared render extent
   std::uint64_t traceBytes = 0;       // scene distance, samples and two histories (trace extent)
   std::uint64_t upsamplingBytes = 0;  // two output-resolution histories (temporal upsampling)
+  std::uint64_t shadowBytes = 0;      // the cloud shadow map (Settings::shadowCascades)
   std::uint64_t bufferBytes = 0;      // uniforms, work counters, placeholders
   std::uint64_t retiredBytes = 0;     // images a larger prepare() replaced, freed once the
                                       //   frames in flight that may use them have retired
   std::uint64_t totalBytes() const {
-    return noiseBytes + weatherBytes + outputBytes + traceBytes + upsamplingBytes + bufferBytes +
-           retiredBytes;
+    return noiseBytes + weatherBytes + outputBytes + traceBytes + upsamplingBytes + shadowBytes +
+           bufferBytes + retiredBytes;
   }
 };
 
@@ -255,6 +262,20 @@ struct Settings {
   float historyResetAngleDegrees = 30.0f;      // [0.1, 180] camera turn in one frame that resets
   float relightResetDegrees = 2.0f;            // [0.01, 180] sun turn in one frame that resets
   float relightResetRatio = 0.2f;              // [0.001, 10] relative change of sun illuminance
+
+  // --- Cloud shadow map (Context::dispatchShadowMap(), Outputs::shadowMap) -----------------
+  // A Beer shadow map of the clouds for the host's receivers: square cascades seen along the
+  // sun, centred near the camera (below it when it flies above the layer), each
+  // shadowCascadeRatio times the side of the one before, snapped to whole texels. Each texel
+  // marches its sun ray through the layer with the low-frequency shape, like the light
+  // samples. Cascades are remade in turn (the finest every other time); a camera cut, a jump,
+  // new settings or a turn of the sun remakes them all at once.
+  std::uint32_t shadowCascades = 4;          // [0, 4] 0: no shadow map, no pass, no memory
+  std::uint32_t shadowMapResolution = 128;   // [16, 1024] texels per cascade side
+  float shadowNearSideMetres = 10000.0f;     // [500, 1e6] side of the finest cascade
+  float shadowCascadeRatio = 3.0f;           // [1.5, 8] side of a cascade over the one before
+  std::uint32_t shadowSteps = 16;            // [1, 256] samples along each texel's sun ray
+  std::uint32_t shadowCascadesPerFrame = 1;  // [1, 4] cascades remade per frame
 };
 
 // Quality presets, cheapest first; Reference is referenceSettings().
@@ -338,6 +359,20 @@ struct OutputImage {
   VkFormat format = VK_FORMAT_UNDEFINED;
 };
 
+// Where the cascades of the cloud shadow map lie, relative to the camera of the last
+// dispatchShadowMap(); std140-compatible (13 vec4s), so a host copies it into its own uniform
+// block. The lookup, as GLSL and C++: vkfx/cloud_shadow.h (CloudShadowParameters), in short:
+// for a camera-relative position p (m) and cascade c, with U, V, L = cascade[3c .. 3c+2].xyz,
+//   uv = (dot(U, p) - cascade[3c].w, dot(V, p) - cascade[3c+1].w) * cascade[3c+2].w
+// is in [0, 1]^2 inside the cascade; its texel t (at atlas uv ((c + uv.x) / cascades, uv.y))
+// gives the optical depth t.r * clamp((t.g - h) / max(t.g - t.b, 1), 0, 1) above the altitude
+// h = info.z + p.y, and the transmittance is exp(-depth). Use the finest cascade that holds p.
+struct ShadowMapParameters {
+  glm::vec4 cascade[12]{};  // per cascade: (U, u0), (V, v0), (L, 1 / side)
+  glm::vec4 info{0.0f};     // cascades (0: no shadow), texels per side, camera altitude (m),
+                            //   blend band (fraction of a side)
+};
+
 // After dispatch() the outputs are in VK_IMAGE_LAYOUT_GENERAL with their writes visible to
 // compute- and fragment-shader reads. The images may be larger than the last dispatch's
 // renderExtent (they are sized by prepare()); only `extent` from their origin is valid. A
@@ -350,6 +385,12 @@ struct Outputs {
   // mean distance (m) of the cloud (for haze blending and reprojection); 0 where no cloud.
   OutputImage depth;
   VkExtent2D extent{0, 0};
+  // The cloud shadow map (Settings::shadowCascades > 0; else null): RGBA16F, cascades side by
+  // side (shadowMapResolution x cascades wide, shadowMapResolution high), in GENERAL with the
+  // writes of the last dispatchShadowMap() visible to compute- and fragment-shader reads.
+  // Texel: optical depth of its sun ray, altitude (m) of its highest and lowest cloud, 1.
+  OutputImage shadowMap;
+  ShadowMapParameters shadowParameters;  // info.x = 0 while there is no map
 };
 
 namespace detail {
@@ -387,6 +428,14 @@ class Context {
   // and allocates nothing. Returns false and fills `error` (InvalidInputs, InvalidSettings,
   // NotPrepared), naming the field; nothing is recorded then.
   bool dispatch(const FrameInputs& inputs, const Settings& settings, Error* error);
+
+  // Records this frame's cloud shadow map (Settings::shadowCascades > 0; with 0 it records
+  // nothing and succeeds): the cascades due this frame, with the weather map (and, on the
+  // module's first frame, the noise) they need. Reads the camera, sun, time, weather and frame
+  // fields of `inputs` (not its depth, extent or projection). Call it before the host's passes
+  // that read Outputs::shadowMap and, in a frame that also has dispatch(), before it with the
+  // same frameIndex. Creates and allocates nothing. Fails like dispatch().
+  bool dispatchShadowMap(const FrameInputs& inputs, const Settings& settings, Error* error);
 
   // Applies the last dispatch's clouds over `color` (format CreateInfo::compositeColorFormat,
   // STORAGE usage, in VK_IMAGE_LAYOUT_GENERAL, writes visible to compute shaders):

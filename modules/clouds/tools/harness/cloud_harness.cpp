@@ -12,6 +12,30 @@
 #include "engine/gfx/upload.h"
 #include "engine/render/camera_math.h"
 #include "tonemap_operator.h"
+#include "vkfx/cloud_shadow.h"
+
+namespace {
+// The map whose lookup runs (ShadowMapImage::transmittance, one thread at a time per map).
+thread_local const clouds::tools::ShadowMapImage* tShadowMap = nullptr;
+}  // namespace
+
+namespace vkfx::shader {
+// The receivers' fetch, as a linear sampler clamped to the edge reads the atlas.
+vec4 fetchCloudShadow(vec2 uv) {
+  const auto& map = *tShadowMap;
+  const vec2 p = uv * vec2(map.width, map.height) - 0.5f;
+  const vec2 base = floor(p);
+  const vec2 f = p - base;
+  const auto at = [&](int x, int y) {
+    const int cx = std::clamp(x, 0, int(map.width) - 1);
+    const int cy = std::clamp(y, 0, int(map.height) - 1);
+    return map.texels[std::size_t(cy) * map.width + std::size_t(cx)];
+  };
+  const int x = int(base.x);
+  const int y = int(base.y);
+  return mix(mix(at(x, y), at(x + 1, y), f.x), mix(at(x, y + 1), at(x + 1, y + 1), f.x), f.y);
+}
+}  // namespace vkfx::shader
 
 namespace clouds::tools {
 
@@ -20,6 +44,16 @@ using namespace engine;
 namespace {
 constexpr float kNearMetres = 0.5f;
 }  // namespace
+
+float ShadowMapImage::transmittance(const glm::vec3& relative) const {
+  tShadowMap = this;
+  vkfx::shader::CloudShadowParameters p;
+  static_assert(sizeof(p) == sizeof(parameters));
+  std::memcpy(&p, &parameters, sizeof(p));
+  const float t = vkfx::shader::cloudShadowTransmittance(p, relative);
+  tShadowMap = nullptr;
+  return t;
+}
 
 glm::vec3 sunDirection(const CloudView& v) {
   return render::directionFromAngles(v.sunAzimuthDegrees, v.sunElevationDegrees);
@@ -228,6 +262,48 @@ CloudFrame CloudHarness::render(const CloudView& view, const clouds::Settings& s
   }
   std::memcpy(frame.depth.data(), depth.mapped(), pixels * 8);
   return frame;
+}
+
+ShadowMapImage CloudHarness::renderShadowMap(const CloudView& view,
+                                             const clouds::Settings& settings,
+                                             std::uint32_t frames) {
+  clouds::Error error;
+  for (std::uint32_t i = 0; i < frames; ++i) {
+    if (!context_->prepare(settings, {16, 16}, &error)) {
+      throw engine::Error("clouds prepare: " + error.message);
+    }
+    bool ok = true;
+    device_.immediateSubmit([&](VkCommandBuffer cmd) {
+      lastInputs_ = makeInputs(view, {16, 16}, cmd);
+      ok = context_->dispatchShadowMap(lastInputs_, settings, &error);
+    });
+    if (!ok) throw engine::Error("clouds dispatchShadowMap: " + error.message);
+    cutNext_ = false;
+    ++frameIndex_;
+  }
+  return readShadowMap();
+}
+
+ShadowMapImage CloudHarness::readShadowMap() {
+  const clouds::Outputs out = context_->outputs();
+  ShadowMapImage map;
+  map.parameters = out.shadowParameters;
+  if (out.shadowMap.image == VK_NULL_HANDLE) return map;
+  const VkExtent3D extent = moduleImages().shadowMap.extent();
+  const gfx::ImageState general{VK_IMAGE_LAYOUT_GENERAL, VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT,
+                                VK_ACCESS_2_MEMORY_READ_BIT | VK_ACCESS_2_MEMORY_WRITE_BIT};
+  const std::vector<std::byte> bytes = gfx::readbackImage(
+      device_, out.shadowMap.image, VK_FORMAT_R16G16B16A16_SFLOAT, extent, general);
+  map.width = extent.width;
+  map.height = extent.height;
+  map.texels.resize(std::size_t{extent.width} * extent.height);
+  const auto* halves = reinterpret_cast<const std::uint16_t*>(bytes.data());
+  for (std::size_t i = 0; i < map.texels.size(); ++i) {
+    map.texels[i] =
+        glm::vec4(glm::unpackHalf1x16(halves[4 * i + 0]), glm::unpackHalf1x16(halves[4 * i + 1]),
+                  glm::unpackHalf1x16(halves[4 * i + 2]), glm::unpackHalf1x16(halves[4 * i + 3]));
+  }
+  return map;
 }
 
 namespace {

@@ -68,6 +68,18 @@ struct CloudFrame {
   std::vector<glm::vec2> depth;     // front depth, weighted depth (m)
 };
 
+// The cloud shadow map as read back (Outputs::shadowMap): texels (optical depth, highest and
+// lowest cloud altitude, 1), row-major, and where its cascades lay.
+struct ShadowMapImage {
+  std::uint32_t width = 0;
+  std::uint32_t height = 0;
+  std::vector<glm::vec4> texels;
+  clouds::ShadowMapParameters parameters;
+  // The receivers' lookup (vkfx/cloud_shadow.h) on these texels, filtered as a linear clamped
+  // sampler filters: the clouds' transmittance towards the sun at a camera-relative position.
+  float transmittance(const glm::vec3& relative) const;
+};
+
 // `settings` rendered as one self-contained frame: every pixel marched at full resolution, no
 // history. What the CPU reference computes, and what analytic tests compare against.
 clouds::Settings singleFrame(clouds::Settings settings);
@@ -96,6 +108,12 @@ class CloudHarness {
                             VkExtent2D extent, std::uint32_t frames);
   // Prepares and records one frame, returning the module's error message instead of throwing.
   std::string tryRender(const CloudView& view, const clouds::Settings& settings, VkExtent2D extent);
+
+  // Records `frames` frames of dispatchShadowMap() alone for `view` (each a frame of the
+  // sequence) and reads the shadow map back. Throws engine::Error when the module refuses.
+  ShadowMapImage renderShadowMap(const CloudView& view, const clouds::Settings& settings,
+                                 std::uint32_t frames = 1);
+  ShadowMapImage readShadowMap();
 
   // Marks the next frame as a camera cut (FrameInputs::reset).
   void cut() { cutNext_ = true; }

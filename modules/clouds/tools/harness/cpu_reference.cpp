@@ -5,6 +5,7 @@
 #include <thread>
 
 #include "cloud_march.h"
+#include "cloud_shadow_march.h"
 #include "cloud_weather_maxima.h"
 #include "uniforms.h"
 
@@ -120,6 +121,39 @@ CloudFrame renderCpuReference(const CpuTextures& textures, const CloudUniforms& 
   for (auto& w : workers) w.join();
   gTextures = nullptr;
   return frame;
+}
+
+glm::vec4 cpuShadowTexel(const CpuTextures& textures, const CloudUniforms& u,
+                         const ShadowMapConstants& c, glm::uvec2 texel, bool emptySpaceSkipping) {
+  gTextures = &textures;
+  // As cloud_shadow_map.comp computes it.
+  const float size = c.light.w;
+  const vec3 base = vec3(c.axisU) * (c.axisU.w + float(texel.x) * size) +
+                    vec3(c.axisV) * (c.axisV.w + float(texel.y) * size);
+  const float jitter =
+      hashCell(ivec3(c.worldTexel + ivec2(texel), static_cast<int>(c.cascade)), 4099u).x;
+  const ShadowColumn column =
+      marchShadowColumn(base, vec3(c.light), c.steps, jitter, emptySpaceSkipping ? 1u : 0u, u);
+  gTextures = nullptr;
+  return vec4(std::min(column.opticalDepth, 64.0f), column.frontAltitude, column.backAltitude,
+              1.0f);
+}
+
+double cpuSunOpticalDepth(const CpuTextures& textures, const CloudUniforms& u,
+                          const glm::vec3& relative, const glm::vec3& light, float stepMetres) {
+  gTextures = &textures;
+  const double altitude = double(u.cameraAltitudeMetres) + double(relative.y);
+  const double start = std::max(0.0, (double(u.layerBottomMetres) - altitude) / light.y);
+  const double end = (double(u.layerTopMetres) - altitude) / light.y;
+  double tau = 0.0;
+  for (double t = start + 0.5 * stepMetres; t < end; t += stepMetres) {
+    const vec3 p = relative + light * float(t);
+    const FieldSample s =
+        sampleField(vec3(p.x, 0.0f, p.z), float(altitude + t * light.y), 0.0f, 0u, u);
+    tau += double(s.sigmaT) * std::min(double(stepMetres), end - (t - 0.5 * stepMetres));
+  }
+  gTextures = nullptr;
+  return tau;
 }
 
 }  // namespace clouds::tools

@@ -35,4 +35,18 @@ CloudFrame renderCpuReference(const CpuTextures& textures,
                               const clouds::Settings& settings, const std::vector<float>& depth,
                               unsigned threads = 2);
 
+// What cloud_shadow_map.comp should store at `texel` of the cascade a dispatch made with
+// `constants` (Context internals: lastShadowUniforms(), lastShadowJobs()), before the RGBA16F
+// rounding: the shared column march on the CPU.
+glm::vec4 cpuShadowTexel(const CpuTextures& textures, const clouds::shader::CloudUniforms& uniforms,
+                         const clouds::shader::ShadowMapConstants& constants, glm::uvec2 texel,
+                         bool emptySpaceSkipping);
+
+// The ground truth a shadow lookup approximates: the clouds' optical depth between a
+// camera-relative point and the sun along `light`, marched in steps of `stepMetres` with the
+// low-frequency shape (the model the shadow map and the light samples use), no skipping.
+double cpuSunOpticalDepth(const CpuTextures& textures,
+                          const clouds::shader::CloudUniforms& uniforms, const glm::vec3& relative,
+                          const glm::vec3& light, float stepMetres);
+
 }  // namespace clouds::tools

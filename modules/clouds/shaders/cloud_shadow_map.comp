@@ -1,0 +1,53 @@
+#version 460
+// Cloud shadow map (compute): one cascade of the Beer shadow map per dispatch, one invocation
+// per texel. Each texel's sun ray is marched up through the layer with the shared model
+// (cloud_shadow_march.h) and stored as the receivers read it (vkfx/cloud_shadow.h): optical
+// depth, highest and lowest cloud altitude.
+// Inputs: binding 0 CloudUniforms (this frame's field: camera-relative offsets, coverage,
+// extinction); 1 shape noise; 2 weather map; 3-4 weather maxima (empty-space skipping); push
+// constants ShadowMapConstants (the cascade's placement). Output: 5 the cascade atlas (its
+// square for this cascade).
+// References: Schneider & Vos 2017 (Nubis); Hillaire 2016 (Beer shadow maps, Frostbite).
+#extension GL_GOOGLE_include_directive : require
+
+#include "cloud_types.h"
+#include "vkfx/cloud_shadow.h"
+
+layout(local_size_x = kWorkgroupSize2D, local_size_y = kWorkgroupSize2D) in;
+
+layout(constant_id = kSpecShadowEmptySpace) const uint kEmptySpace = 1u;
+
+#include "frame_uniforms.glsl"
+layout(binding = kShadowShapeNoise, rgba8) uniform readonly image3D shapeNoise;
+layout(binding = kShadowWeatherMap, rgba8) uniform readonly image2D weatherMap;
+layout(binding = kShadowWeatherMaxFine, rgba8) uniform readonly image2D weatherMaxFine;
+layout(binding = kShadowWeatherMaxCoarse, rgba8) uniform readonly image2D weatherMaxCoarse;
+layout(binding = kShadowMapOut, rgba16f) uniform writeonly image2D shadowMap;
+layout(push_constant) uniform Constants { ShadowMapConstants c; };
+
+vec4 fetchShapeNoise(ivec3 texel) { return imageLoad(shapeNoise, texel); }
+vec4 fetchWeather(ivec2 texel) { return imageLoad(weatherMap, texel); }
+vec4 fetchWeatherMaxFine(ivec2 texel) { return imageLoad(weatherMaxFine, texel); }
+vec4 fetchWeatherMaxCoarse(ivec2 texel) { return imageLoad(weatherMaxCoarse, texel); }
+// The shadow rays take no detail: these are never reached.
+vec4 fetchDetailNoise(ivec3 texel) { return vec4(0.0f); }
+vec4 fetchCurl(ivec2 texel) { return vec4(0.5f); }
+
+#include "cloud_shadow_march.h"
+
+void main() {
+  loadFrameUniforms();
+  const uvec2 texel = gl_GlobalInvocationID.xy;
+  if (any(greaterThanEqual(texel, uvec2(c.resolution)))) return;
+  const float size = c.light.w;
+  const vec3 base = vec3(c.axisU) * (c.axisU.w + float(texel.x) * size) +
+                    vec3(c.axisV) * (c.axisV.w + float(texel.y) * size);
+  // A jitter fixed to the texel's place in the world: the map does not shimmer as it scrolls.
+  const float jitter =
+      hashCell(ivec3(c.worldTexel + ivec2(texel), int(c.cascade)), 4099u).x;
+  const ShadowColumn column =
+      marchShadowColumn(base, vec3(c.light), c.steps, jitter, kEmptySpace, u);
+  imageStore(shadowMap, ivec2(c.cascade * c.resolution + texel.x, texel.y),
+             vec4(min(column.opticalDepth, kCloudShadowMaxDepth), column.frontAltitude,
+                  column.backAltitude, 1.0f));
+}

@@ -1,0 +1,76 @@
+// Recording the cloud shadow map: this frame's field uniforms into the slot's shadow buffer,
+// then one dispatch per cascade due (shadow_cascades.h decides which), ending with the atlas
+// visible to the host's compute and fragment shaders.
+#include "context_impl.h"
+#include "pipeline_variants.h"
+
+namespace clouds {
+
+using detail::Program;
+
+namespace {
+
+constexpr VkPipelineStageFlags2 kCompute = detail::kComputeStage;
+// Where host passes read the shadow map (sampled, in GENERAL).
+constexpr VkPipelineStageFlags2 kHostReadStages =
+    VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT | VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT;
+constexpr VkAccessFlags2 kHostReadAccess =
+    VK_ACCESS_2_SHADER_STORAGE_READ_BIT | VK_ACCESS_2_SHADER_SAMPLED_READ_BIT;
+
+}  // namespace
+
+void Context::Impl::recordShadowMap(VkCommandBuffer cmd, const FrameInputs& inputs,
+                                    const Settings& settings, const detail::ShadowPlan& plan,
+                                    Slot& slot) {
+  const auto& fn = device_.fn();
+  const detail::ModuleImages& im = images_;
+  beginPass(cmd, detail::Pass::ShadowMap, "clouds: shadow map");
+
+  // The field as this frame's march sees it (camera-relative offsets, coverage, extinction);
+  // the view and temporal fields are not read.
+  shader::CloudUniforms uniforms =
+      detail::buildUniforms(inputs, settings, detail::UniformContext{info_.reversedZ});
+  uniforms.flags |= debugFlags_;
+  lastShadowUniforms_ = uniforms;
+  lastShadowJobs_.clear();
+  // The slot's previous frame has completed (host contract); earlier commands of this queue may
+  // still read the buffer, and the host's passes the map.
+  detail::memoryBarrier(device_, cmd, kHostReadStages | kCompute,
+                        VK_ACCESS_2_UNIFORM_READ_BIT | kHostReadAccess,
+                        VK_PIPELINE_STAGE_2_TRANSFER_BIT | kCompute,
+                        VK_ACCESS_2_TRANSFER_WRITE_BIT | detail::kStorageWrite);
+  fn.vkCmdUpdateBuffer(cmd, slot.shadowUniforms.buffer(), 0, sizeof(uniforms), &uniforms);
+  detail::memoryBarrier(device_, cmd, VK_PIPELINE_STAGE_2_TRANSFER_BIT,
+                        VK_ACCESS_2_TRANSFER_WRITE_BIT, kCompute, VK_ACCESS_2_UNIFORM_READ_BIT);
+
+  using namespace shader;
+  detail::SetWriter(device_, slot.shadowMap)
+      .uniformBuffer(kBindingUniforms, slot.shadowUniforms.buffer(), sizeof(CloudUniforms))
+      .storageImage(kShadowShapeNoise, im.shapeNoise.view())
+      .storageImage(kShadowWeatherMap, weatherMap().view())
+      .storageImage(kShadowWeatherMaxFine, im.weatherMaxFine.view())
+      .storageImage(kShadowWeatherMaxCoarse, im.weatherMaxCoarse.view())
+      .storageImage(kShadowMapOut, im.shadowMap.view())
+      .commit();
+
+  const detail::ComputeProgram& program = programs_[Program::ShadowMap];
+  fn.vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE,
+                       program.find(detail::shadowMapKey(settings)));
+  fn.vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, program.layout(), 0, 1,
+                             &slot.shadowMap, 0, nullptr);
+  const std::uint32_t groups = detail::groupsFor(settings.shadowMapResolution, kWorkgroupSize2D);
+  for (const detail::CascadeJob& job : plan.jobs) {
+    const ShadowMapConstants constants =
+        shadowCascades_.constants(job, inputs.cameraPosition, settings);
+    fn.vkCmdPushConstants(cmd, program.layout(), VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof(constants),
+                          &constants);
+    lastShadowJobs_.push_back(constants);
+    fn.vkCmdDispatch(cmd, groups, groups, 1);
+  }
+  detail::barrier(device_, cmd, im.shadowMap.image(), VK_IMAGE_LAYOUT_GENERAL,
+                  VK_IMAGE_LAYOUT_GENERAL, kCompute, detail::kStorageWrite, kHostReadStages,
+                  kHostReadAccess);
+  endPass(cmd, detail::Pass::ShadowMap);
+}
+
+}  // namespace clouds

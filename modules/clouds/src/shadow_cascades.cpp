@@ -1,0 +1,184 @@
+#include "shadow_cascades.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstddef>
+
+#include "cloud_shadow_march.h"
+#include "temporal_state.h"
+
+namespace clouds::detail {
+namespace {
+
+// A cascade is remade at once when its time is this old (s) or negative: the weather and the
+// clouds' shapes have moved on from what the wind's drift can account for.
+constexpr double kMaxCascadeAgeSeconds = 10.0;
+// Fraction of a side over which a cascade blends into the next (vkfx/cloud_shadow.h).
+constexpr float kBlendBand = 0.1f;
+
+double angleDegrees(const glm::dvec3& a, const glm::dvec3& b) {
+  return glm::degrees(std::acos(std::clamp(glm::dot(a, b), -1.0, 1.0)));
+}
+
+bool shadowSettingsDiffer(const Settings& a, const Settings& b) {
+  return a.shadowCascades != b.shadowCascades || a.shadowMapResolution != b.shadowMapResolution ||
+         a.shadowNearSideMetres != b.shadowNearSideMetres ||
+         a.shadowCascadeRatio != b.shadowCascadeRatio || a.shadowSteps != b.shadowSteps ||
+         a.layerBottomMetres != b.layerBottomMetres || a.layerTopMetres != b.layerTopMetres;
+}
+
+glm::dvec3 windDrift(const Settings& s, double seconds) {
+  const glm::dvec2 wind = glm::normalize(glm::dvec2(s.windDirection)) *
+                          (static_cast<double>(s.windSpeedMetresPerSecond) * seconds);
+  return {wind.x, 0.0, wind.y};
+}
+
+}  // namespace
+
+ShadowBasis shadowBasis(const glm::vec3& sunDirection) {
+  const float length = glm::length(sunDirection);
+  const glm::vec3 sun =
+      length > 1e-6f && std::isfinite(length) ? sunDirection / length : glm::vec3(0, 1, 0);
+  ShadowBasis b;
+  b.light = glm::normalize(glm::dvec3(shader::shadowLightDirection(sun)));
+  const glm::dvec2 horizontal(b.light.z, -b.light.x);
+  const double h = glm::length(horizontal);
+  b.u = h > 1e-6 ? glm::dvec3(horizontal.x / h, 0.0, horizontal.y / h) : glm::dvec3(1, 0, 0);
+  b.v = glm::normalize(glm::cross(b.light, b.u));
+  return b;
+}
+
+double cascadeSideMetres(const Settings& s, std::uint32_t c) {
+  return static_cast<double>(s.shadowNearSideMetres) *
+         std::pow(static_cast<double>(s.shadowCascadeRatio), static_cast<double>(c));
+}
+
+std::uint32_t cascadeForTurn(std::uint64_t turn, std::uint32_t cascades) {
+  if (cascades <= 1 || turn % 2 == 0) return 0;
+  return 1 + static_cast<std::uint32_t>((turn / 2) % (cascades - 1));
+}
+
+CascadeJob ShadowCascades::placement(std::uint32_t c, const FrameInputs& in,
+                                     const Settings& s) const {
+  CascadeJob job;
+  job.cascade = c;
+  job.basis = shadowBasis(in.sunDirection);
+  const double n = s.shadowMapResolution;
+  job.texelMetres = cascadeSideMetres(s, c) / n;
+  // The focus: the camera, or the cloud base below it when it flies higher (its shadows fall
+  // on what it looks down at).
+  const glm::dvec3 focus(in.cameraPosition.x,
+                         std::clamp(in.cameraPosition.y, 0.0, double(s.layerBottomMetres)),
+                         in.cameraPosition.z);
+  const glm::dvec2 plane(glm::dot(focus, job.basis.u), glm::dot(focus, job.basis.v));
+  const glm::dvec2 centreTexel = glm::floor(plane / job.texelMetres);
+  const auto half = static_cast<std::int64_t>(s.shadowMapResolution / 2);
+  job.cornerTexel = glm::i64vec2(static_cast<std::int64_t>(centreTexel.x) - half,
+                                 static_cast<std::int64_t>(centreTexel.y) - half);
+  return job;
+}
+
+bool ShadowCascades::stale(const Made& made, const CascadeJob& now, const FrameInputs& in,
+                           const Settings& s) const {
+  if (!made.valid || in.reset) return true;
+  if (shadowSettingsDiffer(settings_, s) || cloudsLookDifferent(settings_, s)) return true;
+  if (in.weatherView != weatherView_) return true;
+  if (angleDegrees(made.basis.light, now.basis.light) > double(s.relightResetDegrees)) return true;
+  const double age = in.timeSeconds - made.timeSeconds;
+  if (age < 0.0 || age > kMaxCascadeAgeSeconds) return true;
+  // The focus left the middle half of the cascade (measured on this frame's grid).
+  const auto quarter = static_cast<std::int64_t>(s.shadowMapResolution / 4);
+  const glm::i64vec2 moved = now.cornerTexel - made.cornerTexel;
+  const bool sameGrid = made.texelMetres == now.texelMetres;
+  return !sameGrid || std::abs(moved.x) > quarter || std::abs(moved.y) > quarter;
+}
+
+ShadowPlan ShadowCascades::plan(const FrameInputs& in, const Settings& s) const {
+  ShadowPlan plan;
+  plan.nextTurn = turn_;
+  std::vector<CascadeJob>& jobs = plan.jobs;
+  const std::uint32_t cascades = std::min<std::uint32_t>(
+      s.shadowCascades, static_cast<std::uint32_t>(vkfx::shader::kCloudShadowMaxCascades));
+  if (cascades == 0) return plan;
+  std::array<bool, vkfx::shader::kCloudShadowMaxCascades> chosen{};
+  for (std::uint32_t c = 0; c < cascades; ++c) {
+    CascadeJob job = placement(c, in, s);
+    if (stale(made_[c], job, in, s)) {
+      jobs.push_back(job);
+      chosen[c] = true;
+    }
+  }
+  // Then the cascades whose turn it is, up to the per-frame budget (a frame that had to remake
+  // some at once spends its budget on those).
+  const std::uint32_t budget = std::min(s.shadowCascadesPerFrame, cascades);
+  const std::uint64_t lastTurn = turn_ + 2 * cascades;
+  for (; jobs.size() < budget && plan.nextTurn < lastTurn; ++plan.nextTurn) {
+    const std::uint32_t c = cascadeForTurn(plan.nextTurn, cascades);
+    if (chosen[c]) continue;
+    jobs.push_back(placement(c, in, s));
+    chosen[c] = true;
+  }
+  return plan;
+}
+
+void ShadowCascades::commit(const ShadowPlan& plan, const FrameInputs& in, const Settings& s) {
+  for (const CascadeJob& job : plan.jobs) {
+    made_[job.cascade] = Made{true, job.basis, job.cornerTexel, job.texelMetres, in.timeSeconds};
+  }
+  turn_ = plan.nextTurn;
+  for (std::uint32_t c = s.shadowCascades; c < made_.size(); ++c) made_[c] = Made{};
+  settings_ = s;
+  weatherView_ = in.weatherView;
+}
+
+ShadowMapParameters ShadowCascades::parameters(const glm::dvec3& camera, double timeSeconds,
+                                               const Settings& s) const {
+  ShadowMapParameters p;
+  std::uint32_t cascades = 0;
+  for (std::uint32_t c = 0; c < s.shadowCascades && c < made_.size() && made_[c].valid; ++c) {
+    const Made& m = made_[c];
+    // Between refreshes the clouds drifted with the wind: a receiver now is shadowed by the
+    // cloud that was upwind of it when the cascade was made.
+    const glm::dvec3 drift = windDrift(s, timeSeconds - m.timeSeconds);
+    const double side = m.texelMetres * s.shadowMapResolution;
+    const auto edge = [&](const glm::dvec3& axis, std::int64_t corner) {
+      return static_cast<float>(static_cast<double>(corner) * m.texelMetres -
+                                glm::dot(camera, axis) + glm::dot(drift, axis));
+    };
+    p.cascade[3 * c] = glm::vec4(glm::vec3(m.basis.u), edge(m.basis.u, m.cornerTexel.x));
+    p.cascade[3 * c + 1] = glm::vec4(glm::vec3(m.basis.v), edge(m.basis.v, m.cornerTexel.y));
+    p.cascade[3 * c + 2] = glm::vec4(glm::vec3(m.basis.light), static_cast<float>(1.0 / side));
+    cascades = c + 1;
+  }
+  p.info = glm::vec4(static_cast<float>(cascades), static_cast<float>(s.shadowMapResolution),
+                     static_cast<float>(camera.y), kBlendBand);
+  return p;
+}
+
+shader::ShadowMapConstants ShadowCascades::constants(const CascadeJob& job,
+                                                     const glm::dvec3& camera,
+                                                     const Settings& s) const {
+  shader::ShadowMapConstants k{};
+  const auto centre = [&](const glm::dvec3& axis, std::int64_t corner) {
+    return static_cast<float>((static_cast<double>(corner) + 0.5) * job.texelMetres -
+                              glm::dot(camera, axis));
+  };
+  k.axisU = glm::vec4(glm::vec3(job.basis.u), centre(job.basis.u, job.cornerTexel.x));
+  k.axisV = glm::vec4(glm::vec3(job.basis.v), centre(job.basis.v, job.cornerTexel.y));
+  k.light = glm::vec4(glm::vec3(job.basis.light), static_cast<float>(job.texelMetres));
+  // The jitter's seed: the texel's place on the world grid (wrapping is harmless for a hash).
+  k.worldTexel =
+      glm::ivec2(static_cast<std::int32_t>(static_cast<std::uint32_t>(job.cornerTexel.x)),
+                 static_cast<std::int32_t>(static_cast<std::uint32_t>(job.cornerTexel.y)));
+  k.cascade = job.cascade;
+  k.resolution = s.shadowMapResolution;
+  k.steps = s.shadowSteps;
+  return k;
+}
+
+}  // namespace clouds::detail
+
+// The public struct is the shaders' parameter block, field for field.
+static_assert(sizeof(clouds::ShadowMapParameters) == sizeof(vkfx::shader::CloudShadowParameters));
+static_assert(offsetof(clouds::ShadowMapParameters, info) ==
+              offsetof(vkfx::shader::CloudShadowParameters, info));

@@ -1,0 +1,92 @@
+#pragma once
+// The cloud shadow map's cascades as plain logic (unit-tested without a GPU): where each
+// cascade lies, which cascades a frame remakes, and the lookup parameters hosts read
+// (vkfx/cloud_shadow.h).
+//
+// Placement: cascade c is a square of side shadowNearSideMetres x ratio^c seen along the light
+// direction, on a grid of whole texels fixed in the world (plane coordinates along U and V, in
+// double precision), centred on the texel nearest to the camera's focus: the camera itself, or
+// the cloud base below it when it flies higher. Moving the camera moves the square by whole
+// texels, so every texel keeps the very same sun ray and the map does not swim.
+//
+// Refresh: a cascade is remade in turn (the finest every other turn, the others round-robin),
+// shadowCascadesPerFrame per frame. It is remade at once when it was never made, on a camera
+// cut, when the settings or the weather map changed, when the camera's focus left the middle
+// half of it, when the sun turned more than Settings::relightResetDegrees since, or when the
+// time since it was made is negative or long. Between refreshes the wind's drift of the clouds
+// since the cascade was made moves its lookup, so shadows travel with the clouds.
+#include <array>
+#include <cstdint>
+#include <glm/glm.hpp>
+#include <vector>
+
+#include "cloud_types.h"
+#include "clouds/clouds.h"
+#include "vkfx/cloud_shadow.h"
+
+namespace clouds::detail {
+
+// An orthonormal frame for the shadow rays: L towards the sun (its elevation raised to the
+// map's minimum), U horizontal and perpendicular to it, V = L x U.
+struct ShadowBasis {
+  glm::dvec3 u{1.0, 0.0, 0.0};
+  glm::dvec3 v{0.0, 0.0, 1.0};
+  glm::dvec3 light{0.0, 1.0, 0.0};
+};
+ShadowBasis shadowBasis(const glm::vec3& sunDirection);
+
+// Side (m) of cascade `c`.
+double cascadeSideMetres(const Settings& settings, std::uint32_t c);
+
+// The order in which cascades take their turns: the finest every other turn, the others in
+// turn between (for one cascade, always it).
+std::uint32_t cascadeForTurn(std::uint64_t turn, std::uint32_t cascades);
+
+// A cascade to make this frame.
+struct CascadeJob {
+  std::uint32_t cascade = 0;
+  ShadowBasis basis;
+  glm::i64vec2 cornerTexel{0, 0};  // world grid index (along U, V) of the cascade's texel 0
+  double texelMetres = 0.0;
+};
+
+// What a frame makes: the cascades that must be remade at once, then those whose turn it is.
+struct ShadowPlan {
+  std::vector<CascadeJob> jobs;
+  std::uint64_t nextTurn = 0;  // the turn the next frame starts from
+};
+
+class ShadowCascades {
+ public:
+  ShadowPlan plan(const FrameInputs& inputs, const Settings& settings) const;
+  // The plan's jobs were recorded in this frame.
+  void commit(const ShadowPlan& plan, const FrameInputs& inputs, const Settings& settings);
+  // The map's contents are gone (its image was replaced): everything is remade next time.
+  void forget() { made_ = {}; }
+
+  // The lookup parameters relative to the camera at `cameraPosition` at `timeSeconds`.
+  ShadowMapParameters parameters(const glm::dvec3& cameraPosition, double timeSeconds,
+                                 const Settings& settings) const;
+  // The shadow-map shader's push constants for `job`, camera-relative.
+  shader::ShadowMapConstants constants(const CascadeJob& job, const glm::dvec3& cameraPosition,
+                                       const Settings& settings) const;
+
+ private:
+  struct Made {
+    bool valid = false;
+    ShadowBasis basis;
+    glm::i64vec2 cornerTexel{0, 0};
+    double texelMetres = 0.0;
+    double timeSeconds = 0.0;
+  };
+  CascadeJob placement(std::uint32_t c, const FrameInputs& inputs, const Settings& settings) const;
+  bool stale(const Made& made, const CascadeJob& now, const FrameInputs& inputs,
+             const Settings& settings) const;
+
+  std::array<Made, vkfx::shader::kCloudShadowMaxCascades> made_{};
+  std::uint64_t turn_ = 0;
+  Settings settings_{};  // those the made cascades were made with
+  VkImageView weatherView_ = VK_NULL_HANDLE;
+};
+
+}  // namespace clouds::detail

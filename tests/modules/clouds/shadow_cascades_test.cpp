@@ -1,0 +1,168 @@
+// The shadow map's cascade bookkeeping without a GPU: the turn order, which events remake a
+// cascade at once, whole-texel placement, and the wind's drift in the lookup parameters.
+#include <gtest/gtest.h>
+
+#include <bit>
+
+#include "cloud_shadow_march.h"
+#include "shadow_cascades.h"
+
+namespace {
+
+using clouds::detail::cascadeForTurn;
+using clouds::detail::ShadowCascades;
+
+clouds::FrameInputs camera() {
+  clouds::FrameInputs in;
+  in.cameraPosition = {1000.0, 300.0, -2000.0};
+  in.sunDirection = glm::normalize(glm::vec3(0.3f, 0.6f, -0.5f));
+  in.timeSeconds = 10.0;
+  return in;
+}
+
+std::uint32_t madeMask(const clouds::detail::ShadowPlan& plan) {
+  std::uint32_t mask = 0;
+  for (const auto& job : plan.jobs) mask |= 1u << job.cascade;
+  return mask;
+}
+
+// Plans and commits a frame; returns the cascades it made.
+std::uint32_t frame(ShadowCascades& cascades, const clouds::FrameInputs& in,
+                    const clouds::Settings& s) {
+  const clouds::detail::ShadowPlan plan = cascades.plan(in, s);
+  cascades.commit(plan, in, s);
+  return madeMask(plan);
+}
+
+TEST(ShadowCascades, TheFinestTakesEveryOtherTurn) {
+  const std::uint32_t four[] = {0, 1, 0, 2, 0, 3, 0, 1};
+  for (std::uint64_t t = 0; t < 8; ++t) EXPECT_EQ(cascadeForTurn(t, 4), four[t]);
+  for (std::uint64_t t = 0; t < 4; ++t) EXPECT_EQ(cascadeForTurn(t, 1), 0u);
+  for (std::uint64_t t = 0; t < 4; ++t) EXPECT_EQ(cascadeForTurn(t, 2), t % 2);
+}
+
+TEST(ShadowCascades, AFirstFrameMakesAllThenOnePerFrame) {
+  ShadowCascades cascades;
+  clouds::Settings s;
+  clouds::FrameInputs in = camera();
+  EXPECT_EQ(frame(cascades, in, s), 0xFu);
+  const std::uint32_t expected[] = {1, 2, 1, 4, 1, 8, 1, 2};
+  for (std::uint32_t e : expected) {
+    in.timeSeconds += 1.0 / 30.0;
+    EXPECT_EQ(frame(cascades, in, s), e);
+  }
+  s.shadowCascadesPerFrame = 4;
+  in.timeSeconds += 1.0 / 30.0;
+  EXPECT_EQ(frame(cascades, in, s), 0xFu) << "four per frame: all of them";
+}
+
+TEST(ShadowCascades, CutsJumpsTurnsAndNewSettingsRemakeEverything) {
+  clouds::Settings s;
+  auto settled = [&](ShadowCascades& c, clouds::FrameInputs& in) {
+    frame(c, in, s);
+    in.timeSeconds += 0.03;
+    frame(c, in, s);  // one cascade: settled
+    in.timeSeconds += 0.03;
+  };
+  {
+    ShadowCascades c;
+    clouds::FrameInputs in = camera();
+    settled(c, in);
+    in.reset = true;
+    EXPECT_EQ(frame(c, in, s), 0xFu) << "camera cut";
+  }
+  {
+    ShadowCascades c;
+    clouds::FrameInputs in = camera();
+    settled(c, in);
+    in.cameraPosition.x += 50000.0;
+    EXPECT_EQ(frame(c, in, s) & 0x7u, 0x7u) << "a 50 km jump leaves the three finest behind";
+  }
+  {
+    ShadowCascades c;
+    clouds::FrameInputs in = camera();
+    settled(c, in);
+    in.sunDirection = glm::normalize(glm::vec3(-0.3f, 0.6f, -0.5f));
+    EXPECT_EQ(frame(c, in, s), 0xFu) << "the sun turned";
+  }
+  {
+    ShadowCascades c;
+    clouds::FrameInputs in = camera();
+    settled(c, in);
+    clouds::Settings denser = s;
+    denser.coverage = 0.8f;
+    EXPECT_EQ(frame(c, in, denser), 0xFu) << "new settings";
+  }
+  {
+    ShadowCascades c;
+    clouds::FrameInputs in = camera();
+    settled(c, in);
+    in.timeSeconds -= 5.0;
+    EXPECT_EQ(frame(c, in, s), 0xFu) << "time went back";
+  }
+  {
+    ShadowCascades c;
+    clouds::FrameInputs in = camera();
+    settled(c, in);
+    in.cameraPosition.x += 30.0;
+    EXPECT_EQ(std::popcount(frame(c, in, s)), 1) << "a small move only takes its turn";
+  }
+}
+
+TEST(ShadowCascades, CascadesLieOnWholeTexelsAroundTheCamera) {
+  ShadowCascades cascades;
+  clouds::Settings s;
+  clouds::FrameInputs in = camera();
+  const auto plan = cascades.plan(in, s);
+  ASSERT_EQ(plan.jobs.size(), 4u);
+  for (const auto& job : plan.jobs) {
+    const double side = clouds::detail::cascadeSideMetres(s, job.cascade);
+    EXPECT_DOUBLE_EQ(job.texelMetres, side / s.shadowMapResolution);
+    // The camera (below the cloud base) is within a texel of the middle.
+    const double u = glm::dot(in.cameraPosition, job.basis.u) / job.texelMetres;
+    const double v = glm::dot(in.cameraPosition, job.basis.v) / job.texelMetres;
+    EXPECT_NEAR(u - double(job.cornerTexel.x), s.shadowMapResolution / 2.0, 1.0);
+    EXPECT_NEAR(v - double(job.cornerTexel.y), s.shadowMapResolution / 2.0, 1.0);
+    // The rays go towards the sun, across an orthonormal frame.
+    EXPECT_NEAR(glm::dot(job.basis.light, glm::dvec3(in.sunDirection)), 1.0, 1e-6);
+    EXPECT_NEAR(glm::dot(job.basis.u, job.basis.light), 0.0, 1e-9);
+    EXPECT_NEAR(glm::dot(job.basis.v, job.basis.light), 0.0, 1e-9);
+  }
+  // A move of a fraction of a texel keeps every cascade where it was.
+  clouds::FrameInputs moved = in;
+  moved.cameraPosition += glm::dvec3(0.3, 0.0, 0.2);
+  const auto again = cascades.plan(moved, s);
+  int same = 0;
+  for (std::size_t i = 0; i < 4; ++i) same += again.jobs[i].cornerTexel == plan.jobs[i].cornerTexel;
+  EXPECT_GE(same, 3);
+}
+
+TEST(ShadowCascades, ALowSunIsRaisedToTheMapsMinimum) {
+  const auto basis = clouds::detail::shadowBasis({1.0f, -0.2f, 0.0f});
+  EXPECT_NEAR(basis.light.y, clouds::shader::kShadowMinSunSine, 1e-6);
+  EXPECT_GT(basis.light.x, 0.99);
+  const auto zenith = clouds::detail::shadowBasis({0.0f, 1.0f, 0.0f});
+  EXPECT_NEAR(glm::length(zenith.u), 1.0, 1e-9);
+  EXPECT_NEAR(glm::dot(zenith.u, zenith.light), 0.0, 1e-9);
+}
+
+TEST(ShadowCascades, ParametersCarryTheWindsDriftSinceACascadeWasMade) {
+  ShadowCascades cascades;
+  clouds::Settings s;
+  s.windDirection = {1.0f, 0.0f};
+  s.windSpeedMetresPerSecond = 20.0f;
+  clouds::FrameInputs in = camera();
+  frame(cascades, in, s);
+  const clouds::ShadowMapParameters now = cascades.parameters(in.cameraPosition, 10.0, s);
+  const clouds::ShadowMapParameters later = cascades.parameters(in.cameraPosition, 12.0, s);
+  for (int c = 0; c < 4; ++c) {
+    const glm::vec4 u = now.cascade[3 * c];
+    // 40 m of drift along +x, seen along U.
+    EXPECT_NEAR(later.cascade[3 * c].w - u.w, 40.0f * u.x, 1e-2f);
+  }
+  EXPECT_EQ(now.info.x, 4.0f);
+  EXPECT_EQ(now.info.y, float(s.shadowMapResolution));
+  EXPECT_EQ(now.info.z, 300.0f);
+}
+
+}  // namespace
