@@ -118,10 +118,18 @@ TEST(HeadlessCapture, EachSceneGetsOnlyThePassesAndPipelinesItNeeds) {
       // An atmosphere draws the sky in the scene pass: no gradient sky pass or pipeline.
       {scene("atmosphere_only.json"), R"("passes": ["atmosphere", "scene", "tonemap", "capture"])",
        R"("pipelines": ["tonemap", "atmosphere module"])", R"("modules": ["atmosphere"])"},
+      // Clouds over terrain shadow it: their shadow map first, the terrain's shadowed variant.
       {std::string(SAMPLE_ASSET_DIR) + "/scenes/default.json",
-       R"("passes": ["atmosphere", "scene", "clouds", "clouds composite", "tonemap", "capture"])",
-       R"("pipelines": ["tonemap", "terrain", "atmosphere module", "clouds module"])",
+       R"("passes": ["cloud shadows", "atmosphere", "scene", "clouds", "clouds composite", )"
+       R"("tonemap", "capture"])",
+       R"x("pipelines": ["tonemap", "terrain (cloud shadows)", "atmosphere module", )x"
+       R"x("clouds module"])x",
        R"("modules": ["atmosphere", "clouds"])"},
+      // A layer that casts no shadows: no shadow pass, the plain terrain.
+      {scene("unshadowed_clouds.json"),
+       R"("passes": ["sky", "terrain", "clouds", "clouds composite", "tonemap", "capture"])",
+       R"("pipelines": ["tonemap", "sky", "terrain", "clouds module"])",
+       R"("modules": ["clouds"])"},
   };
   for (const Case& c : cases) {
     const std::string out =
@@ -130,6 +138,34 @@ TEST(HeadlessCapture, EachSceneGetsOnlyThePassesAndPipelinesItNeeds) {
     EXPECT_NE(out.find(c.pipelines), std::string::npos) << c.scene << "\n" << out;
     EXPECT_NE(out.find(c.modules), std::string::npos) << c.scene << "\n" << out;
   }
+}
+
+// Clouds shadow the terrain: seen from above the layer, broken cumulus darkens the ground in
+// patches (the direct sun gone, the sky's light left), and nothing else changes.
+TEST(HeadlessCapture, CloudsShadowTheTerrainInPatches) {
+  const fs::path lit = freshDir("unshadowed");
+  const fs::path shadowed = freshDir("shadowed");
+  const std::string common =
+      "--headless --frames 4 --width 160 --height 90 --validation --capture ";
+  ASSERT_EQ(runSample(common + lit.string() + " --scene " + scene("unshadowed_range.json")), 0);
+  ASSERT_EQ(runSample(common + shadowed.string() + " --scene " + scene("shadowed_range.json")), 0);
+  const ImageRgba32f a = engine::assets::readImage(lit / "frame_0003.exr");
+  const ImageRgba32f b = engine::assets::readImage(shadowed / "frame_0003.exr");
+  ASSERT_EQ(a.pixels.size(), b.pixels.size());
+  std::size_t darker = 0;
+  std::size_t brighter = 0;
+  const std::size_t pixels = a.pixels.size() / 4;
+  for (std::size_t i = 0; i < pixels; ++i) {
+    const float la = a.pixels[4 * i] + a.pixels[4 * i + 1] + a.pixels[4 * i + 2];
+    const float lb = b.pixels[4 * i] + b.pixels[4 * i + 1] + b.pixels[4 * i + 2];
+    darker += lb < 0.6f * la ? 1u : 0u;
+    brighter += lb > 1.01f * la ? 1u : 0u;
+  }
+  std::printf("cloud shadows: %.1f%% of pixels 40%% darker, %.2f%% brighter\n",
+              100.0 * double(darker) / double(pixels), 100.0 * double(brighter) / double(pixels));
+  EXPECT_GT(darker, pixels / 20) << "too little of the ground is shadowed";
+  EXPECT_LT(darker, pixels * 3 / 4) << "the ground is shadowed everywhere";
+  EXPECT_EQ(brighter, 0u) << "a shadow only takes light away";
 }
 
 TEST(HeadlessCapture, FliesOverAUserSuppliedTerrain) {

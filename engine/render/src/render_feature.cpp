@@ -4,6 +4,10 @@ namespace engine::render {
 
 RenderFeature::~RenderFeature() = default;
 
+SceneTextures RenderFeature::addShadowPasses(FrameGraph& /*graph*/, const SceneTextures& scene) {
+  return scene;
+}
+
 SceneTextures RenderFeature::addPassesBeforeScene(FrameGraph& /*graph*/,
                                                   const SceneTextures& scene) {
   return scene;

@@ -18,7 +18,9 @@ struct ShadowColumn {
   float opticalDepth;  // of the whole ray through the layer
   // The optical depth counts each cloudy sample for its whole step, so the cloud spans from
   // the bottom of the lowest cloudy step to the top of the highest (exact for a uniform slab).
-  float frontAltitude;  // m: top of the highest cloudy step; the layer bottom when none
+  // A ray without cloud spans the whole layer: filtering it with a cloudy neighbour then fades
+  // the optical depth without dragging the neighbour's cloud down to the layer's bottom.
+  float frontAltitude;  // m: top of the highest cloudy step; the layer top when none
   float backAltitude;   // m: bottom of the lowest cloudy step; the layer bottom when none
   float samples;        // density samples taken
 };
@@ -30,7 +32,7 @@ VKFX_INLINE ShadowColumn marchShadowColumn(vec3 base, vec3 light, uint steps, fl
                                            uint emptySpace, IN(CloudUniforms) u) {
   ShadowColumn column;
   column.opticalDepth = 0.0f;
-  column.frontAltitude = u.layerBottomMetres;
+  column.frontAltitude = u.layerTopMetres;
   column.backAltitude = u.layerBottomMetres;
   column.samples = 0.0f;
   const float baseAltitude = u.cameraAltitudeMetres + base.y;

@@ -128,6 +128,10 @@ Settings referenceSettings(const Settings& base) {
   s.transmittanceCutoff = 1e-4f;
   s.detailDistanceMetres = std::max(base.detailDistanceMetres, base.maxDistanceMetres);
   s.jitter = Jitter::BayerHaltonSubpixel;
+  // The shadow map, fine and fresh (whether there is one at all is the base's).
+  s.shadowMapResolution = 512;
+  s.shadowSteps = 64;
+  s.shadowCascadesPerFrame = 4;
   return s;
 }
 
@@ -220,6 +224,12 @@ Settings settingsFor(Quality quality, const Settings& base) {
     case Quality::Reference:
       break;
   }
+  // The shadow map's cost knobs (whether there is one at all is the base's): samples along
+  // each texel's sun ray, and texels for Ultra.
+  const std::uint32_t shadowSteps[] = {8, 12, 16, 24};
+  s.shadowSteps = shadowSteps[static_cast<std::size_t>(quality)];
+  s.shadowMapResolution = quality == Quality::Ultra ? 256u : 128u;
+  s.shadowCascadesPerFrame = 1;
   return s;
 }
 

@@ -41,9 +41,12 @@ Renderer::Renderer(gfx::Device& device, render::PresentTarget& target, ecs::Worl
     sky_ = std::make_unique<SkyPass>(device, kHdrFormat);
     pipelines.push_back(&sky_->pipeline());
   }
+  const bool cloudShadows =
+      std::any_of(features_.begin(), features_.end(),
+                  [](const render::RenderFeature* f) { return f->castsCloudShadow(); });
   if (const auto* mesh = world.ctx().tryGet<TerrainMesh>()) {
     terrain_ = std::make_unique<TerrainRenderer>(device, *mesh->mesh, kHdrFormat, kDepthFormat,
-                                                 featureSky);
+                                                 featureSky, cloudShadows);
     pipelines.push_back(&terrain_->pipeline());
   }
   if (options.hud) {
@@ -83,6 +86,12 @@ void Renderer::rebuildGraph(VkExtent2D extent) {
   // gradient sky.
   render::SceneTextures scene;
   scene.extent = extent;
+  scene.cloudShadowReceived =
+      (terrain_ && terrain_->shadowedByClouds()) ||
+      std::any_of(features_.begin(), features_.end(),
+                  [](const render::RenderFeature* f) { return f->receivesCloudShadow(); });
+  // What shadows the frame, then what the scene reads (the sky and its haze may read shadows).
+  for (render::RenderFeature* feature : features_) scene = feature->addShadowPasses(graph, scene);
   for (render::RenderFeature* feature : features_) {
     scene = feature->addPassesBeforeScene(graph, scene);
   }

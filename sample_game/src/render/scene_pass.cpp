@@ -13,6 +13,7 @@ SceneTargets addScenePass(render::FrameGraph& graph, const TerrainRenderer* terr
   struct Data {
     SceneTargets targets;
     render::TextureHandle haze;
+    render::TextureHandle cloudShadow;
   };
   const bool featureSky = !skyDrawers.empty();
   const Data& data = graph.addPass<Data>(
@@ -31,19 +32,33 @@ SceneTargets addScenePass(render::FrameGraph& graph, const TerrainRenderer* terr
         if (terrain != nullptr && terrain->hazedByAerialPerspective()) {
           d.haze = builder.read(scene.aerialPerspective, render::Access::SampledReadGeneral);
         }
+        if (terrain != nullptr && terrain->shadowedByClouds()) {
+          d.cloudShadow = builder.read(scene.cloudShadow, render::Access::SampledReadGeneral);
+        }
         // The sky reads what the feature recorded before the scene (ordered after it; the
         // feature synchronises its own images).
         if (featureSky && scene.skyRadiance.valid()) {
           builder.read(scene.skyRadiance, render::Access::SampledReadGeneral);
         }
       },
-      [terrain, frame, skyDrawers](const Data& d, render::PassContext& context) {
+      [terrain, frame, skyDrawers, shadowParameters = scene.cloudShadowParameters](
+          const Data& d, render::PassContext& context) {
         if (terrain != nullptr) {
           gfx::DescriptorWriter writer;
-          writer.uniformBuffer(0, frame->slice.buffer, frame->slice.offset, frame->slice.size);
+          writer.uniformBuffer(TerrainRenderer::kFrameBinding, frame->slice.buffer,
+                               frame->slice.offset, frame->slice.size);
           if (d.haze.valid()) {
-            writer.combinedImageSampler(1, context.view(d.haze), terrain->hazeSampler(),
+            writer.combinedImageSampler(TerrainRenderer::kHazeBinding, context.view(d.haze),
+                                        terrain->linearSampler(), VK_IMAGE_LAYOUT_GENERAL);
+          }
+          if (d.cloudShadow.valid()) {
+            // The map's pass has executed: this frame's parameters are filled.
+            const gfx::ConstantRing::Slice parameters = context.constants().push(*shadowParameters);
+            writer.combinedImageSampler(TerrainRenderer::kCloudShadowBinding,
+                                        context.view(d.cloudShadow), terrain->linearSampler(),
                                         VK_IMAGE_LAYOUT_GENERAL);
+            writer.uniformBuffer(TerrainRenderer::kCloudShadowParametersBinding, parameters.buffer,
+                                 parameters.offset, parameters.size);
           }
           context.bind(terrain->pipeline(), writer);
           terrain->draw(context.cmd());

@@ -9,6 +9,10 @@
 #include "sample_shaders/terrain.vert.spv.h"
 #include "sample_shaders/terrain_hazed.frag.spv.h"
 #include "sample_shaders/terrain_hazed.vert.spv.h"
+#include "sample_shaders/terrain_hazed_shadowed.frag.spv.h"
+#include "sample_shaders/terrain_hazed_shadowed.vert.spv.h"
+#include "sample_shaders/terrain_shadowed.frag.spv.h"
+#include "sample_shaders/terrain_shadowed.vert.spv.h"
 
 namespace sample {
 
@@ -127,8 +131,9 @@ bool boxInFrustum(const glm::mat4& m, const glm::vec3& lo, const glm::vec3& hi) 
 }
 
 TerrainRenderer::TerrainRenderer(gfx::Device& device, const assets::MeshData& mesh,
-                                 VkFormat hdrFormat, VkFormat depthFormat, bool aerialPerspective)
-    : aerialPerspective_(aerialPerspective) {
+                                 VkFormat hdrFormat, VkFormat depthFormat, bool aerialPerspective,
+                                 bool cloudShadows)
+    : aerialPerspective_(aerialPerspective), cloudShadows_(cloudShadows) {
   std::vector<TerrainVertex> vertices(mesh.positions.size());
   for (std::size_t i = 0; i < vertices.size(); ++i) {
     vertices[i] = {mesh.positions[i], mesh.normals[i], glm::vec3(mesh.colors[i])};
@@ -156,18 +161,33 @@ TerrainRenderer::TerrainRenderer(gfx::Device& device, const assets::MeshData& me
   gfx::uploadToBuffer(device, vertices_, std::as_bytes(std::span(vertices)));
   gfx::uploadToBuffer(device, indices_, std::as_bytes(std::span(indices)));
 
+  using Spirv = std::span<const std::uint32_t>;
   gfx::GraphicsPipelineDesc desc;
-  desc.vertexSpirv = aerialPerspective ? std::span<const std::uint32_t>(terrain_hazed_vert_spv)
-                                       : std::span<const std::uint32_t>(terrain_vert_spv);
-  desc.fragmentSpirv = aerialPerspective ? std::span<const std::uint32_t>(terrain_hazed_frag_spv)
-                                         : std::span<const std::uint32_t>(terrain_frag_spv);
-  desc.bindings = {{0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER}};
+  // The shader variants (terrain_vertex.glsl, terrain_fragment.glsl): hazed or fogged, with or
+  // without cloud shadows.
   if (aerialPerspective) {
+    desc.vertexSpirv =
+        cloudShadows ? Spirv(terrain_hazed_shadowed_vert_spv) : Spirv(terrain_hazed_vert_spv);
+    desc.fragmentSpirv =
+        cloudShadows ? Spirv(terrain_hazed_shadowed_frag_spv) : Spirv(terrain_hazed_frag_spv);
+  } else {
+    desc.vertexSpirv = cloudShadows ? Spirv(terrain_shadowed_vert_spv) : Spirv(terrain_vert_spv);
+    desc.fragmentSpirv = cloudShadows ? Spirv(terrain_shadowed_frag_spv) : Spirv(terrain_frag_spv);
+  }
+  desc.bindings = {{kFrameBinding, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER}};
+  if (aerialPerspective || cloudShadows) {
     gfx::SamplerDesc clamped;
-    clamped.debugName = "terrain haze";
+    clamped.debugName = "terrain linear clamped";
     sampler_ = gfx::Sampler(device, clamped);
-    desc.bindings.push_back({1, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER,
+  }
+  if (aerialPerspective) {
+    desc.bindings.push_back({kHazeBinding, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER,
                              VK_FORMAT_R16G16B16A16_SFLOAT, VK_IMAGE_VIEW_TYPE_3D});
+  }
+  if (cloudShadows) {
+    desc.bindings.push_back({kCloudShadowBinding, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER,
+                             VK_FORMAT_R16G16B16A16_SFLOAT, VK_IMAGE_VIEW_TYPE_2D});
+    desc.bindings.push_back({kCloudShadowParametersBinding, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER});
   }
   desc.colorFormats = {hdrFormat};
   desc.depthFormat = depthFormat;
@@ -178,7 +198,7 @@ TerrainRenderer::TerrainRenderer(gfx::Device& device, const assets::MeshData& me
   desc.vertexAttributes = {{0, 0, VK_FORMAT_R32G32B32_SFLOAT, offsetof(TerrainVertex, position)},
                            {1, 0, VK_FORMAT_R32G32B32_SFLOAT, offsetof(TerrainVertex, normal)},
                            {2, 0, VK_FORMAT_R32G32B32_SFLOAT, offsetof(TerrainVertex, color)}};
-  desc.debugName = "terrain";
+  desc.debugName = cloudShadows ? "terrain (cloud shadows)" : "terrain";
   pipeline_ = gfx::Pipeline(device, desc);
 }
 
@@ -190,13 +210,17 @@ void TerrainRenderer::cull(const glm::mat4& viewProjection, const glm::dvec3& ca
     if (!boxInFrustum(viewProjection, lo, hi)) continue;
     // Distance from the camera (the origin here) to the nearest point of the box.
     const float distance = glm::length(glm::max(glm::max(lo, -hi), glm::vec3(0.0f)));
-    visible_[visibleCount_++] = chunk.lods[lodForDistance(distance)];
+    visible_[visibleCount_++] = {distance, chunk.lods[lodForDistance(distance)]};
   }
+  // Nearest first: the depth test then rejects what is hidden before it is shaded (a CPU
+  // rasteriser pays for every fragment it shades).
+  std::sort(visible_.begin(), visible_.begin() + std::ptrdiff_t(visibleCount_),
+            [](const VisibleChunk& a, const VisibleChunk& b) { return a.distance < b.distance; });
 }
 
 std::uint64_t TerrainRenderer::visibleTriangles() const {
   std::uint64_t triangles = 0;
-  for (std::size_t v = 0; v < visibleCount_; ++v) triangles += visible_[v].indexCount / 3;
+  for (std::size_t v = 0; v < visibleCount_; ++v) triangles += visible_[v].range.indexCount / 3;
   return triangles;
 }
 
@@ -206,7 +230,8 @@ void TerrainRenderer::draw(VkCommandBuffer cmd) const {
   vkCmdBindVertexBuffers(cmd, 0, 1, &vertexBuffer, &offset);
   vkCmdBindIndexBuffer(cmd, indices_.vk(), 0, VK_INDEX_TYPE_UINT32);
   for (std::size_t v = 0; v < visibleCount_; ++v) {
-    vkCmdDrawIndexed(cmd, visible_[v].indexCount, 1, visible_[v].firstIndex, 0, 0);
+    const IndexRange& range = visible_[v].range;
+    vkCmdDrawIndexed(cmd, range.indexCount, 1, range.firstIndex, 0, 0);
   }
 }
 

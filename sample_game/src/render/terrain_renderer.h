@@ -1,8 +1,9 @@
 #pragma once
 // The terrain on the GPU: one vertex and index buffer, the triangles sorted into a grid of
 // chunks with bounding boxes so each frame draws only the chunks in the view frustum, and a
-// depth-tested (reversed-Z) graphics pipeline lit by the sun and sky and hazed by the
-// atmosphere's aerial perspective, or by distance fog in scenes without one.
+// depth-tested (reversed-Z) graphics pipeline lit by the sun (through the clouds' shadow map
+// in scenes whose clouds cast shadows) and sky, and hazed by the atmosphere's aerial
+// perspective, or by distance fog in scenes without one.
 #include <array>
 #include <vector>
 
@@ -46,13 +47,23 @@ bool boxInFrustum(const glm::mat4& viewProjection, const glm::vec3& boundsMin,
 
 class TerrainRenderer {
  public:
+  // Descriptor bindings of the terrain pipeline.
+  static constexpr std::uint32_t kFrameBinding = 0;        // SceneFrame
+  static constexpr std::uint32_t kHazeBinding = 1;         // the aerial perspective (3D)
+  static constexpr std::uint32_t kCloudShadowBinding = 2;  // the clouds' shadow map
+  static constexpr std::uint32_t kCloudShadowParametersBinding = 3;
+
   // `aerialPerspective`: hazed by a feature's aerial perspective (else by the fog).
+  // `cloudShadows`: lit through the clouds' shadow map (SceneTextures::cloudShadow).
   TerrainRenderer(engine::gfx::Device& device, const engine::assets::MeshData& mesh,
-                  VkFormat hdrFormat, VkFormat depthFormat, bool aerialPerspective);
+                  VkFormat hdrFormat, VkFormat depthFormat, bool aerialPerspective,
+                  bool cloudShadows);
 
   const engine::gfx::Pipeline& pipeline() const { return pipeline_; }
   bool hazedByAerialPerspective() const { return aerialPerspective_; }
-  VkSampler hazeSampler() const { return sampler_.vk(); }
+  bool shadowedByClouds() const { return cloudShadows_; }
+  // Linear, clamped: the aerial perspective's and the cloud shadow map's.
+  VkSampler linearSampler() const { return sampler_.vk(); }
   // Frustum culling for this frame (camera-relative view-projection and camera position).
   void cull(const glm::mat4& viewProjection, const glm::dvec3& cameraPosition);
   void draw(VkCommandBuffer cmd) const;
@@ -64,10 +75,15 @@ class TerrainRenderer {
   engine::gfx::Buffer vertices_;
   engine::gfx::Buffer indices_;
   std::vector<TerrainChunk> chunks_;
-  std::vector<IndexRange> visible_;  // this frame's draws; capacity reserved once
+  struct VisibleChunk {
+    float distance = 0.0f;  // m, from the camera to the chunk's box
+    IndexRange range;
+  };
+  std::vector<VisibleChunk> visible_;  // this frame's draws, nearest first; sized once
   std::size_t visibleCount_ = 0;
   bool aerialPerspective_ = false;
-  engine::gfx::Sampler sampler_;  // the aerial perspective's: linear, clamped
+  bool cloudShadows_ = false;
+  engine::gfx::Sampler sampler_;
   engine::gfx::Pipeline pipeline_;
 };
 

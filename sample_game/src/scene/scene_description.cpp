@@ -96,6 +96,8 @@ CloudDescription readClouds(const JsonReader& r, const std::filesystem::path& sc
     s.sunStrength = float(l.number("sunStrength", 0.0, 100.0, s.sunStrength));
     l.finish();
   }
+  // Whether the layer casts shadows (its shadow map): off, no shadow pass, map or pipeline.
+  if (!r.boolean("shadows", true)) s.shadowCascades = 0;
   c.noiseSeed = static_cast<std::uint32_t>(r.integer("noiseSeed", 0, 0xffffffffLL, c.noiseSeed));
   if (r.has("weatherMap")) c.weatherMap = resolveFile(r, "weatherMap", sceneDir);
   r.finish();

@@ -43,7 +43,25 @@ std::unique_ptr<engine::gfx::Image> loadWeatherMap(engine::gfx::Device& device,
 }
 
 bool sameImages(const clouds::Outputs& a, const clouds::Outputs& b) {
-  return a.radiance.image == b.radiance.image && a.depth.image == b.depth.image;
+  return a.radiance.image == b.radiance.image && a.depth.image == b.depth.image &&
+         a.shadowMap.image == b.shadowMap.image;
+}
+
+// The module's outputs are kept in GENERAL between frames, their writes synchronised by the
+// module: the graph sees them as imported storage images.
+engine::render::TextureHandle importOutput(engine::render::FrameGraph& graph, const char* name,
+                                           const clouds::OutputImage& image, VkExtent3D extent) {
+  const engine::render::ResourceState general{VK_IMAGE_LAYOUT_GENERAL,
+                                              VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
+                                              VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT};
+  engine::render::ImportedTexture texture;
+  texture.image = image.image;
+  texture.view = image.view;
+  texture.desc.extent = extent;
+  texture.desc.format = image.format;
+  texture.initial = general;
+  texture.final = general;
+  return graph.importTexture(name, texture);
 }
 
 }  // namespace
@@ -55,6 +73,7 @@ CloudFeature::CloudFeature(engine::ecs::World& world, const RenderDevice& device
     throw engine::ecs::ModuleUnsupported("the clouds composite needs an RGBA16F scene colour");
   }
   if (layer.weatherMap) weatherMap_ = loadWeatherMap(device_, *layer.weatherMap);
+  castsShadow_ = layer.settings.shadowCascades > 0;
   clouds::CreateInfo info;
   engine::render::describeDevice(device_, info);
   info.depthFormat = device.depthFormat;
@@ -121,31 +140,63 @@ void CloudFeature::dispatch(const HostFrame& host) {
   }
 }
 
+void CloudFeature::dispatchShadowMap(const HostFrame& host) {
+  HostFrame frame = host;
+  frame.weatherView = weatherMap_ ? weatherMap_->view() : VK_NULL_HANDLE;
+  clouds::Error error;
+  if (context_->dispatchShadowMap(cloudFrameInputs(world_, frame), settings_, &error)) {
+    const clouds::ShadowMapParameters& p = context_->outputs().shadowParameters;
+    static_assert(sizeof(p) == sizeof(shadowParameters_));
+    std::copy(std::begin(p.cascade), std::end(p.cascade), shadowParameters_.begin());
+    shadowParameters_.back() = p.info;
+  } else {
+    shadowParameters_ = {};  // no shadow rather than a stale one
+    reportError(error);
+  }
+}
+
 void CloudFeature::composite(VkCommandBuffer cmd, VkImageView color, VkExtent2D extent) {
   if (!dispatched_) return;  // no clouds this frame: the scene colour stays as it is
   clouds::Error error;
   if (!context_->composite(cmd, color, extent, &error)) reportError(error);
 }
 
+SceneTextures CloudFeature::addShadowPasses(FrameGraph& graph, const SceneTextures& scene) {
+  imported_ = context_->outputs();
+  // No receiver in this frame, no map.
+  if (!castsShadow_ || !scene.cloudShadowReceived || imported_.shadowMap.image == VK_NULL_HANDLE) {
+    return scene;
+  }
+  const VkExtent3D extent{settings_.shadowMapResolution * settings_.shadowCascades,
+                          settings_.shadowMapResolution, 1};
+  const TextureHandle map = importOutput(graph, "cloud shadow map", imported_.shadowMap, extent);
+  struct ShadowData {
+    TextureHandle map;
+  };
+  const ShadowData& shadow = graph.addPass<ShadowData>(
+      "cloud shadows", PassType::Compute,
+      [&](PassBuilder& builder, ShadowData& d) {
+        d.map = builder.write(map, Access::StorageWrite);
+      },
+      [this, sceneExtent = scene.extent](const ShadowData&, PassContext& context) {
+        HostFrame host;
+        host.commandBuffer = context.cmd();
+        host.extent = sceneExtent;
+        host.frameIndex = context.frameIndex();
+        dispatchShadowMap(host);
+      });
+  SceneTextures out = scene;
+  out.cloudShadow = shadow.map;
+  out.cloudShadowParameters = &shadowParameters_;
+  return out;
+}
+
 SceneTextures CloudFeature::addPasses(FrameGraph& graph, const SceneTextures& scene) {
   imported_ = context_->outputs();
-  const TextureDesc& hdrDesc = graph.textureDesc(scene.hdr);
-  // The module keeps its outputs in GENERAL between frames and synchronises its own writes;
-  // the graph sees them as imported storage images.
-  const ResourceState general{VK_IMAGE_LAYOUT_GENERAL, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
-                              VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT};
-  auto import = [&](const char* name, const clouds::OutputImage& image) {
-    ImportedTexture texture;
-    texture.image = image.image;
-    texture.view = image.view;
-    texture.desc.extent = hdrDesc.extent;
-    texture.desc.format = image.format;
-    texture.initial = general;
-    texture.final = general;
-    return graph.importTexture(name, texture);
-  };
-  const TextureHandle radiance = import("cloud radiance", imported_.radiance);
-  const TextureHandle depth = import("cloud depth", imported_.depth);
+  const VkExtent3D sceneExtent = graph.textureDesc(scene.hdr).extent;
+  const TextureHandle radiance =
+      importOutput(graph, "cloud radiance", imported_.radiance, sceneExtent);
+  const TextureHandle depth = importOutput(graph, "cloud depth", imported_.depth, sceneExtent);
 
   struct MarchData {
     TextureHandle sceneDepth, skyRadiance, aerialPerspective, radiance, depth;

@@ -1,7 +1,12 @@
 #pragma once
 // The clouds module as a render feature of the engine: it owns a clouds::Context on the
 // engine's device (and the layer's painted weather map, when it has one), prepares it outside
-// the frame, and adds two passes to the renderer's frame graph:
+// the frame, and adds its passes to the renderer's frame graph: first, when the layer casts
+// shadows,
+//   "cloud shadows"     records Context::dispatchShadowMap (the cascades due this frame) and
+//                       hands the map and its parameters to the passes after it (the haze,
+//                       the terrain);
+// then after the opaque scene:
 //   "clouds"            reads the scene depth (and the sky's radiance and the aerial
 //                       perspective when a feature that draws the sky provides them) and
 //                       records Context::dispatch with the inputs built from the world at that
@@ -30,13 +35,17 @@ class CloudFeature final : public engine::render::RenderFeature {
   ~CloudFeature() override;
 
   const char* name() const override { return "clouds"; }
+  bool castsCloudShadow() const override { return castsShadow_; }
   bool prepare(VkExtent2D extent, std::uint64_t frameIndex) override;
+  engine::render::SceneTextures addShadowPasses(
+      engine::render::FrameGraph& graph, const engine::render::SceneTextures& scene) override;
   engine::render::SceneTextures addPasses(engine::render::FrameGraph& graph,
                                           const engine::render::SceneTextures& scene) override;
   void finish(std::uint64_t lastFrameIndex) override;
 
  private:
   void dispatch(const HostFrame& host);
+  void dispatchShadowMap(const HostFrame& host);
   void composite(VkCommandBuffer cmd, VkImageView color, VkExtent2D extent);
   void reportError(const clouds::Error& error);
 
@@ -47,7 +56,10 @@ class CloudFeature final : public engine::render::RenderFeature {
   std::unique_ptr<clouds::Context> context_;
   clouds::Settings settings_;  // this frame's, decided in prepare()
   clouds::Outputs imported_;   // the outputs the graph imported
-  bool dispatched_ = false;    // this frame's dispatch succeeded
+  bool castsShadow_ = false;   // the layer's settings have a shadow map
+  // This frame's shadow-map parameters, filled when "cloud shadows" executes.
+  engine::render::CloudShadowParameterBlock shadowParameters_{};
+  bool dispatched_ = false;  // this frame's dispatch succeeded
   bool errorLogged_ = false;
 };
 

@@ -11,7 +11,9 @@
 // the texels [c N, (c + 1) N) x [0, N) for N texels per side). Texel: r the optical depth of
 // the whole sun ray through the cloud layer (dimensionless, capped at kCloudShadowMaxDepth),
 // g the altitude (m) of the ray's highest cloud, b the altitude of its lowest, a 1. A ray
-// with no cloud stores 0 and the altitudes of the layer's bottom. Filter it linearly, clamped.
+// with no cloud stores 0 and the altitudes of the layer's top and bottom (so that filtering it
+// with a cloudy neighbour fades the depth and keeps the neighbour's cloud where it is). Filter
+// it linearly, clamped.
 //
 // Each cascade is an orthographic view along the sun: texel (i, j) of cascade c is the sun ray
 // through the camera-relative point (u0 + (i + 0.5) s) U + (v0 + (j + 0.5) s) V, with U, V two
@@ -56,57 +58,97 @@ VKFX_INLINE float cloudShadowOpticalDepth(vec4 texel, float altitudeMetres) {
   return texel.x * inside;
 }
 
-// The cascade's [0, 1] coordinates of a camera-relative position.
-VKFX_INLINE vec2 cloudShadowCascadeUv(IN(CloudShadowParameters) p, int c, vec3 relative) {
-  const vec4 u = p.cascade[3 * c];
-  const vec4 v = p.cascade[3 * c + 1];
-  const float inverseSide = p.cascade[3 * c + 2].w;
-  return vec2(dot(vec3(u), relative) - u.w, dot(vec3(v), relative) - v.w) * inverseSide;
+// A cascade's [0, 1] coordinates of a camera-relative position.
+VKFX_INLINE vec2 cloudShadowCascadeUv(vec4 u, vec4 v, vec4 light, vec3 relative) {
+  return vec2(dot(vec3(u), relative) - u.w, dot(vec3(v), relative) - v.w) * light.w;
 }
 
-// How far inside its cascade a point is: 1 in the middle, 0 at (and beyond) the edge band.
+// How far inside its cascade a point at `uv` is: 1 in the middle, 0 at and beyond the edge
+// band (a fraction `band` of the side).
 VKFX_INLINE float cloudShadowCascadeWeight(vec2 uv, float band) {
   const vec2 edge = min(uv, vec2(1.0f) - uv);
   return clamp(min(edge.x, edge.y) / max(band, 1e-6f), 0.0f, 1.0f);
 }
 
-// Optical depth from cascade `c` at a camera-relative position.
-VKFX_INLINE float cloudShadowCascadeDepth(IN(CloudShadowParameters) p, int c, vec3 relative) {
-  const float n = p.info.y;
-  const float cascades = p.info.x;
+// Optical depth from cascade `c` at cascade coordinates `uv` for a receiver at an altitude;
+// `info` is CloudShadowParameters::info.
+VKFX_INLINE float cloudShadowCascadeDepth(vec4 info, float c, vec2 uv, float altitudeMetres) {
+  const float n = info.y;
   // Clamp half a texel inside the cascade: linear filtering must not read its neighbour.
-  const vec2 uv =
-      clamp(cloudShadowCascadeUv(p, c, relative), vec2(0.5f / n), vec2(1.0f - 0.5f / n));
-  const vec2 atlas = vec2((float(c) + uv.x) / cascades, uv.y);
-  return cloudShadowOpticalDepth(fetchCloudShadow(atlas), p.info.z + relative.y);
+  const vec2 inside = clamp(uv, vec2(0.5f / n), vec2(1.0f - 0.5f / n));
+  const vec2 atlas = vec2((c + inside.x) / max(info.x, 1.0f), inside.y);
+  return cloudShadowOpticalDepth(fetchCloudShadow(atlas), altitudeMetres);
 }
 
-// The clouds' transmittance towards the sun at a camera-relative position (metres; y up):
-// from the finest cascade that holds it, blended into the next one near its edge, and fading
-// to 1 (no shadow) at the edge of the last one. Two reads at most.
-VKFX_INLINE float cloudShadowTransmittance(IN(CloudShadowParameters) p, vec3 relative) {
-  const int cascades = int(p.info.x);
-  const float band = p.info.w;
-  // The finest cascade whose inner part holds the point, and its weight.
-  int first = cascades;
-  float weight = 0.0f;
-  for (int c = cascades - 1; c >= 0; --c) {
-    const float w = cloudShadowCascadeWeight(cloudShadowCascadeUv(p, c, relative), band);
-    if (w > 0.0f) {
-      first = c;
-      weight = w;
-    }
-  }
-  if (first >= cascades) return 1.0f;
-  const float depth = cloudShadowCascadeDepth(p, first, relative);
-  float blended = depth * weight;
-  if (weight < 1.0f) {
-    const float next =
-        first + 1 < cascades ? cloudShadowCascadeDepth(p, first + 1, relative) : 0.0f;
-    blended += next * (1.0f - weight);
-  }
-  return exp(-blended);
+// Every cascade's coordinates of a camera-relative position: cascades 0 and 1 in `uv01`
+// (xy, zw), 2 and 3 in `uv23`. They are affine in the position, so a rasteriser may compute
+// them per vertex and interpolate them exactly. The arguments are the parameter block's fields
+// one by one (CLOUD_SHADOW_COORDINATES below unpacks a block): a CPU Vulkan device copies a
+// block passed whole into every invocation's memory.
+VKFX_INLINE void cloudShadowCoordinatesOf(vec4 u0, vec4 v0, vec4 l0, vec4 u1, vec4 v1, vec4 l1,
+                                          vec4 u2, vec4 v2, vec4 l2, vec4 u3, vec4 v3, vec4 l3,
+                                          vec3 relative, OUT(vec4) uv01, OUT(vec4) uv23) {
+  const vec2 c0 = cloudShadowCascadeUv(u0, v0, l0, relative);
+  const vec2 c1 = cloudShadowCascadeUv(u1, v1, l1, relative);
+  const vec2 c2 = cloudShadowCascadeUv(u2, v2, l2, relative);
+  const vec2 c3 = cloudShadowCascadeUv(u3, v3, l3, relative);
+  uv01 = vec4(c0.x, c0.y, c1.x, c1.y);
+  uv23 = vec4(c2.x, c2.y, c3.x, c3.y);
 }
+
+// The clouds' transmittance towards the sun for a receiver at `altitudeMetres` whose cascade
+// coordinates are `uv01`, `uv23` (cloudShadowCoordinatesOf()): from the finest cascade that
+// holds it, blended into the next near its edge, and fading to 1 (no shadow) at the edge of
+// the last one. One read, two in a blend band.
+VKFX_INLINE float cloudShadowTransmittanceAt(vec4 info, vec4 uv01, vec4 uv23,
+                                             float altitudeMetres) {
+  const float count = info.x;
+  const float band = info.w;
+  const vec2 c0 = vec2(uv01.x, uv01.y);
+  const vec2 c1 = vec2(uv01.z, uv01.w);
+  const vec2 c2 = vec2(uv23.x, uv23.y);
+  const vec2 c3 = vec2(uv23.z, uv23.w);
+  // Cascades the map does not have hold nothing.
+  const float w0 = count > 0.5f ? cloudShadowCascadeWeight(c0, band) : 0.0f;
+  const float w1 = count > 1.5f ? cloudShadowCascadeWeight(c1, band) : 0.0f;
+  const float w2 = count > 2.5f ? cloudShadowCascadeWeight(c2, band) : 0.0f;
+  const float w3 = count > 3.5f ? cloudShadowCascadeWeight(c3, band) : 0.0f;
+  // The finest cascade that holds the position (a), and the next one (b).
+  const float first = w0 > 0.0f ? 0.0f : w1 > 0.0f ? 1.0f : w2 > 0.0f ? 2.0f : 3.0f;
+  const float weight = w0 > 0.0f ? w0 : w1 > 0.0f ? w1 : w2 > 0.0f ? w2 : w3;
+  const vec2 a = first < 0.5f ? c0 : first < 1.5f ? c1 : first < 2.5f ? c2 : c3;
+  const vec2 b = first < 0.5f ? c1 : first < 1.5f ? c2 : c3;
+  // Loops of 0 or 1 trips: a CPU device skips them when no lane of a group needs them, where
+  // it would run an if's body regardless. Past the last cascade the blend goes to no shadow.
+  float depthA = 0.0f;
+  float depthB = 0.0f;
+  for (int i = 0; i < (weight > 0.0f ? 1 : 0); ++i) {
+    depthA = cloudShadowCascadeDepth(info, first, a, altitudeMetres);
+  }
+  for (int i = 0; i < (weight < 1.0f && first + 1.0f < count ? 1 : 0); ++i) {
+    depthB = cloudShadowCascadeDepth(info, first + 1.0f, b, altitudeMetres);
+  }
+  return exp(-(depthA * weight + depthB * (1.0f - weight)));
+}
+
+// The clouds' transmittance towards the sun at a camera-relative position (metres; y up).
+VKFX_INLINE float cloudShadowTransmittance(IN(CloudShadowParameters) p, vec3 relative) {
+  if (p.info.x < 0.5f) return 1.0f;  // no map
+  vec4 uv01;
+  vec4 uv23;
+  cloudShadowCoordinatesOf(p.cascade[0], p.cascade[1], p.cascade[2], p.cascade[3], p.cascade[4],
+                           p.cascade[5], p.cascade[6], p.cascade[7], p.cascade[8], p.cascade[9],
+                           p.cascade[10], p.cascade[11], relative, uv01, uv23);
+  return cloudShadowTransmittanceAt(p.info, uv01, uv23, p.info.z + relative.y);
+}
+
+// For shaders: cloudShadowCoordinatesOf() with the fields of a parameter block in a uniform
+// block, read in place.
+#define CLOUD_SHADOW_COORDINATES(block, relative, uv01, uv23)                                      \
+  cloudShadowCoordinatesOf(block.cascade[0], block.cascade[1], block.cascade[2], block.cascade[3], \
+                           block.cascade[4], block.cascade[5], block.cascade[6], block.cascade[7], \
+                           block.cascade[8], block.cascade[9], block.cascade[10],                  \
+                           block.cascade[11], relative, uv01, uv23)
 
 VKFX_SHADER_END
 

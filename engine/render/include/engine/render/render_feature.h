@@ -2,12 +2,15 @@
 // Effects that modules add to a renderer they do not own (the atmosphere, the clouds; later god
 // rays...). The renderer publishes a RenderDevice before GPU modules install; a module that
 // installs registers its RenderFeature in RenderFeatures; the renderer then prepares each
-// feature outside command recording and lets it add its passes before the opaque scene (what
-// the scene reads: the sky, its light and haze) and after it (the clouds), in registration
-// order. A scene without the module has no feature and runs none of its code.
+// feature outside command recording and lets it add its passes in three phases, each in
+// registration order: what shadows the rest of the frame (the clouds' shadow map), what the
+// opaque scene reads (the sky, its light and haze), and what goes after the scene (the
+// clouds). A scene without the module has no feature and runs none of its code.
 #include <vulkan/vulkan.h>
 
+#include <array>
 #include <cstdint>
+#include <glm/glm.hpp>
 #include <string>
 #include <vector>
 
@@ -41,6 +44,10 @@ void describeDevice(const gfx::Device& device, ModuleCreateInfo& info) {
   info.debugUtils = device.instance().debugUtilsEnabled();
 }
 
+// The lookup parameters of a cloud shadow map for this frame (vkfx/cloud_shadow.h's
+// CloudShadowParameters: 13 vec4s, std140), as a receiver copies them into its uniforms.
+using CloudShadowParameterBlock = std::array<glm::vec4, 13>;
+
 // What the passes so far made of the scene, at the output extent `extent`: its colour and
 // depth (`depth` invalid when the scene has no geometry). A feature that draws the sky also
 // hands the renderer and later features its light: the sky's radiance around the camera and
@@ -58,12 +65,26 @@ struct SceneTextures {
   TextureHandle aerialPerspective;
   std::uint32_t aerialPerspectiveSlices = 0;
   float aerialPerspectiveRangeMetres = 0.0f;
+  // The clouds' shadow for receivers lit by the sun (vkfx/cloud_shadow.h), kept in GENERAL,
+  // and its parameters, which the pass that writes the map fills when it executes: a pass that
+  // reads the map (and so runs after it) reads them at its own execution. Invalid / null when
+  // nothing casts cloud shadows.
+  TextureHandle cloudShadow;
+  const CloudShadowParameterBlock* cloudShadowParameters = nullptr;
+  // Set by the renderer before the shadow passes: whether anything in the frame receives cloud
+  // shadows (its geometry, or a feature that does). Without a receiver, no map is made.
+  bool cloudShadowReceived = false;
 };
 
 class RenderFeature {
  public:
   virtual ~RenderFeature();
   virtual const char* name() const = 0;
+  // Whether the feature casts cloud shadows (addShadowPasses() provides
+  // SceneTextures::cloudShadow): receivers build their pipelines to read them.
+  virtual bool castsCloudShadow() const { return false; }
+  // Whether the feature reads SceneTextures::cloudShadow when it exists.
+  virtual bool receivesCloudShadow() const { return false; }
   // Whether the feature draws the sky (drawSkyInScenePass()): then the renderer draws none of
   // its own, has a scene pass even without geometry, and hazes its geometry with the feature's
   // aerial perspective.
@@ -77,6 +98,9 @@ class RenderFeature {
   // output of `extent`. Returns true when the textures addPasses() imported changed, so the
   // graph must be rebuilt.
   virtual bool prepare(VkExtent2D extent, std::uint64_t frameIndex) = 0;
+  // Adds the passes that shadow the rest of the frame, before any feature's
+  // addPassesBeforeScene() (whose haze may read them) and the scene. Default: none.
+  virtual SceneTextures addShadowPasses(FrameGraph& graph, const SceneTextures& scene);
   // Adds the passes the renderer's opaque scene depends on, before it: `scene` has only the
   // extent and what earlier features provided. A feature that draws the sky returns the sky's
   // light and haze (SceneTextures::skyRadiance, aerialPerspective). Default: none.

@@ -1,0 +1,51 @@
+// The terrain's fragment stage: the surface lit by the sun (through the clouds' shadow map with
+// TERRAIN_CLOUD_SHADOWS) and the sky, then hazed by the aerial perspective its vertices read
+// (TERRAIN_HAZED: a scene with an atmosphere) or, the cheap alternative, fogged towards the
+// gradient sky behind the fragment.
+#extension GL_GOOGLE_include_directive : require
+#include "scene_constants.h"
+
+layout(binding = 0, std140) uniform Frame { SceneFrame frame; };
+#include "terrain_lighting.glsl"
+layout(location = 0) in vec3 inRelative;
+layout(location = 1) in vec3 inNormal;
+layout(location = 2) in vec3 inColor;
+layout(location = 0) out vec4 outColor;
+
+#ifdef TERRAIN_HAZED
+layout(location = 3) in vec4 inHaze;
+#endif
+
+#ifdef TERRAIN_CLOUD_SHADOWS
+layout(binding = 2) uniform sampler2D cloudShadowMap;
+vec4 fetchCloudShadow(vec2 uv) { return textureLod(cloudShadowMap, uv, 0.0); }
+#include "vkfx/cloud_shadow.h"
+layout(binding = 3, std140) uniform CloudShadow { CloudShadowParameters cloudShadow; };
+layout(location = 4) in vec4 inShadowUv01;
+layout(location = 5) in vec4 inShadowUv23;
+#endif
+
+// The share of the sun the fragment sees.
+float sunVisibility() {
+#ifdef TERRAIN_CLOUD_SHADOWS
+  return cloudShadowTransmittanceAt(cloudShadow.info, inShadowUv01, inShadowUv23,
+                                    cloudShadow.info.z + inRelative.y);
+#else
+  return 1.0;
+#endif
+}
+
+void main() {
+  const vec3 lit = terrainLit(inColor, inNormal, sunVisibility());
+#ifdef TERRAIN_HAZED
+  outColor = vec4(lit * inHaze.a + inHaze.rgb, 1.0f);
+#else
+  const float distance = length(inRelative);
+  const vec3 view = inRelative / max(distance, 1e-3f);
+  const vec3 sky = skyRadiance(view, frame.sunDirection.xyz, frame.skyZenith.rgb,
+                               frame.skyHorizon.rgb, frame.skyGround.rgb,
+                               frame.sunIlluminance.rgb, 0.0f);
+  const float transmittance = exp(-frame.fog.x * distance);
+  outColor = vec4(mix(sky, lit, transmittance), 1.0f);
+#endif
+}
