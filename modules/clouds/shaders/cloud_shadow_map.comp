@@ -39,14 +39,7 @@ void main() {
   loadFrameUniforms();
   const uvec2 texel = gl_GlobalInvocationID.xy;
   if (any(greaterThanEqual(texel, uvec2(c.resolution)))) return;
-  const float size = c.light.w;
-  const vec3 base = vec3(c.axisU) * (c.axisU.w + float(texel.x) * size) +
-                    vec3(c.axisV) * (c.axisV.w + float(texel.y) * size);
-  // A jitter fixed to the texel's place in the world: the map does not shimmer as it scrolls.
-  const float jitter =
-      hashCell(ivec3(c.worldTexel + ivec2(texel), int(c.cascade)), 4099u).x;
-  const ShadowColumn column =
-      marchShadowColumn(base, vec3(c.light), c.steps, jitter, kEmptySpace, u);
+  const ShadowColumn column = marchShadowTexel(c, texel, kEmptySpace, u);
   imageStore(shadowMap, ivec2(c.cascade * c.resolution + texel.x, texel.y),
              vec4(min(column.opticalDepth, kCloudShadowMaxDepth), column.frontAltitude,
                   column.backAltitude, 1.0f));

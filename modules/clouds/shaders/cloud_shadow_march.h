@@ -76,6 +76,18 @@ VKFX_INLINE ShadowColumn marchShadowColumn(vec3 base, vec3 light, uint steps, fl
   return column;
 }
 
+// Texel `texel` of the cascade a dispatch makes with `c`: its ray through the camera-relative
+// point at the texel's centre, jittered by a hash of the texel's place on the world grid (so
+// the map does not shimmer as the cascade scrolls).
+VKFX_INLINE ShadowColumn marchShadowTexel(IN(ShadowMapConstants) c, uvec2 texel, uint emptySpace,
+                                          IN(CloudUniforms) u) {
+  const float size = c.light.w;
+  const vec3 base = vec3(c.axisU) * (c.axisU.w + float(texel.x) * size) +
+                    vec3(c.axisV) * (c.axisV.w + float(texel.y) * size);
+  const float jitter = hashCell(ivec3(c.worldTexel + ivec2(texel), int(c.cascade)), 4099u).x;
+  return marchShadowColumn(base, vec3(c.light), c.steps, jitter, emptySpace, u);
+}
+
 // The light direction a shadow map is made with: the sun, raised to kShadowMinSunSine of
 // elevation when lower (a sun at the horizon would make every ray through the layer endless;
 // below a few degrees the air has already taken nearly all of its light).

@@ -61,7 +61,7 @@ void Context::Impl::recordShadowMap(VkCommandBuffer cmd, const FrameInputs& inpu
   const std::uint32_t groups = detail::groupsFor(settings.shadowMapResolution, kWorkgroupSize2D);
   for (const detail::CascadeJob& job : plan.jobs) {
     const ShadowMapConstants constants =
-        shadowCascades_.constants(job, inputs.cameraPosition, settings);
+        detail::shadowMapConstants(job, inputs.cameraPosition, settings);
     fn.vkCmdPushConstants(cmd, program.layout(), VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof(constants),
                           &constants);
     lastShadowJobs_.push_back(constants);

@@ -155,9 +155,8 @@ ShadowMapParameters ShadowCascades::parameters(const glm::dvec3& camera, double 
   return p;
 }
 
-shader::ShadowMapConstants ShadowCascades::constants(const CascadeJob& job,
-                                                     const glm::dvec3& camera,
-                                                     const Settings& s) const {
+shader::ShadowMapConstants shadowMapConstants(const CascadeJob& job, const glm::dvec3& camera,
+                                              const Settings& s) {
   shader::ShadowMapConstants k{};
   const auto centre = [&](const glm::dvec3& axis, std::int64_t corner) {
     return static_cast<float>((static_cast<double>(corner) + 0.5) * job.texelMetres -

@@ -56,6 +56,11 @@ struct ShadowPlan {
   std::uint64_t nextTurn = 0;  // the turn the next frame starts from
 };
 
+// The shadow-map shader's push constants for `job`, camera-relative.
+shader::ShadowMapConstants shadowMapConstants(const CascadeJob& job,
+                                              const glm::dvec3& cameraPosition,
+                                              const Settings& settings);
+
 class ShadowCascades {
  public:
   ShadowPlan plan(const FrameInputs& inputs, const Settings& settings) const;
@@ -67,9 +72,6 @@ class ShadowCascades {
   // The lookup parameters relative to the camera at `cameraPosition` at `timeSeconds`.
   ShadowMapParameters parameters(const glm::dvec3& cameraPosition, double timeSeconds,
                                  const Settings& settings) const;
-  // The shadow-map shader's push constants for `job`, camera-relative.
-  shader::ShadowMapConstants constants(const CascadeJob& job, const glm::dvec3& cameraPosition,
-                                       const Settings& settings) const;
 
  private:
   struct Made {

@@ -7,6 +7,7 @@
 #include <cmath>
 #include <cstring>
 
+#include "cloud_gpu_fixture.h"
 #include "cloud_harness.h"
 #include "cloud_march.h"
 #include "clouds_test_shaders/count_invalid.comp.spv.h"
@@ -22,22 +23,7 @@ namespace {
 using namespace clouds::shader;
 using clouds::tools::CloudView;
 
-class CloudMarch : public test::GpuTest {
- protected:
-  // Sets test-only uniform flags for a scope (also when an assertion returns early).
-  struct DebugFlags {
-    explicit DebugFlags(std::uint32_t flags) { impl().setDebugFlags(flags); }
-    ~DebugFlags() { impl().setDebugFlags(0); }
-  };
-  static clouds::Context::Impl& impl() {
-    return clouds::detail::ContextAccess::impl(harness().context());
-  }
-  static clouds::tools::CloudHarness& harness() {
-    // One harness (and one noise generation) for the whole binary.
-    static clouds::tools::CloudHarness* h = new clouds::tools::CloudHarness(device(), {160, 90});
-    return *h;
-  }
-};
+using CloudMarch = test::SharedHarnessTest<160, 90>;
 
 clouds::Settings furnaceSettings(float density, std::uint32_t steps) {
   clouds::Settings s;

@@ -9,6 +9,7 @@
 #include <cmath>
 #include <cstdio>
 
+#include "cloud_gpu_fixture.h"
 #include "cloud_harness.h"
 #include "context_access.h"
 #include "cpu_reference.h"
@@ -21,20 +22,7 @@ namespace {
 using clouds::tools::CloudView;
 using clouds::tools::ShadowMapImage;
 
-class CloudShadow : public test::GpuTest {
- protected:
-  struct DebugFlags {
-    explicit DebugFlags(std::uint32_t flags) { impl().setDebugFlags(flags); }
-    ~DebugFlags() { impl().setDebugFlags(0); }
-  };
-  static clouds::Context::Impl& impl() {
-    return clouds::detail::ContextAccess::impl(harness().context());
-  }
-  static clouds::tools::CloudHarness& harness() {
-    static clouds::tools::CloudHarness* h = new clouds::tools::CloudHarness(device(), {64, 64});
-    return *h;
-  }
-};
+using CloudShadow = test::SharedHarnessTest<64, 64>;
 
 // Broken cumulus seen from near the ground, the sun 35 degrees up.
 CloudView groundView() {

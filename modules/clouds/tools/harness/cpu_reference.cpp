@@ -8,6 +8,7 @@
 #include "cloud_shadow_march.h"
 #include "cloud_weather_maxima.h"
 #include "uniforms.h"
+#include "vkfx/cloud_shadow.h"
 
 namespace clouds::shader {
 namespace {
@@ -126,17 +127,10 @@ CloudFrame renderCpuReference(const CpuTextures& textures, const CloudUniforms& 
 glm::vec4 cpuShadowTexel(const CpuTextures& textures, const CloudUniforms& u,
                          const ShadowMapConstants& c, glm::uvec2 texel, bool emptySpaceSkipping) {
   gTextures = &textures;
-  // As cloud_shadow_map.comp computes it.
-  const float size = c.light.w;
-  const vec3 base = vec3(c.axisU) * (c.axisU.w + float(texel.x) * size) +
-                    vec3(c.axisV) * (c.axisV.w + float(texel.y) * size);
-  const float jitter =
-      hashCell(ivec3(c.worldTexel + ivec2(texel), static_cast<int>(c.cascade)), 4099u).x;
-  const ShadowColumn column =
-      marchShadowColumn(base, vec3(c.light), c.steps, jitter, emptySpaceSkipping ? 1u : 0u, u);
+  const ShadowColumn column = marchShadowTexel(c, texel, emptySpaceSkipping ? 1u : 0u, u);
   gTextures = nullptr;
-  return vec4(std::min(column.opticalDepth, 64.0f), column.frontAltitude, column.backAltitude,
-              1.0f);
+  return vec4(std::min(column.opticalDepth, vkfx::shader::kCloudShadowMaxDepth),
+              column.frontAltitude, column.backAltitude, 1.0f);
 }
 
 double cpuSunOpticalDepth(const CpuTextures& textures, const CloudUniforms& u,

@@ -5,6 +5,7 @@
 #include <memory>
 
 #include "cloud_harness.h"
+#include "context_access.h"
 #include "gpu_test.h"
 
 namespace test {
@@ -22,6 +23,27 @@ class CloudGpuTest : public test::GpuTest {
     options.workCounters = true;
     options.passTimings = true;
     return std::make_unique<clouds::tools::CloudHarness>(device(), kExtent, options);
+  }
+};
+
+// A fixture whose tests share one harness (and one noise generation) per test binary, of
+// Width x Height at most, and reach the module's internals: test-only uniform flags for a
+// scope, the last uniforms.
+template <std::uint32_t Width, std::uint32_t Height>
+class SharedHarnessTest : public test::GpuTest {
+ protected:
+  // Sets test-only uniform flags for a scope (also when an assertion returns early).
+  struct DebugFlags {
+    explicit DebugFlags(std::uint32_t flags) { impl().setDebugFlags(flags); }
+    ~DebugFlags() { impl().setDebugFlags(0); }
+  };
+  static clouds::Context::Impl& impl() {
+    return clouds::detail::ContextAccess::impl(harness().context());
+  }
+  static clouds::tools::CloudHarness& harness() {
+    static clouds::tools::CloudHarness* h =
+        new clouds::tools::CloudHarness(device(), {Width, Height});
+    return *h;
   }
 };
 
