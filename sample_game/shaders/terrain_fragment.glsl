@@ -1,7 +1,7 @@
-// The terrain's fragment stage: the surface lit by the sun (through the clouds' shadow map with
-// TERRAIN_CLOUD_SHADOWS) and the sky, then hazed by the aerial perspective its vertices read
-// (TERRAIN_HAZED: a scene with an atmosphere) or, the cheap alternative, fogged towards the
-// gradient sky behind the fragment.
+// The terrain's fragment stage: the surface lit by the sun (through the clouds' shadow map and
+// the terrain's own shadow in it with TERRAIN_CLOUD_SHADOWS) and the sky, then hazed by the
+// aerial perspective its vertices read (TERRAIN_HAZED: a scene with an atmosphere) or, the
+// cheap alternative, fogged towards the gradient sky behind the fragment.
 #extension GL_GOOGLE_include_directive : require
 #include "scene_constants.h"
 
@@ -19,17 +19,20 @@ layout(location = 3) in vec4 inHaze;
 #ifdef TERRAIN_CLOUD_SHADOWS
 layout(binding = 2) uniform sampler2D cloudShadowMap;
 vec4 fetchCloudShadow(vec2 uv) { return textureLod(cloudShadowMap, uv, 0.0); }
+vec4 gatherCloudShadowTerrain(vec2 uv) { return textureGather(cloudShadowMap, uv, 3); }
 #include "vkfx/cloud_shadow.h"
 layout(binding = 3, std140) uniform CloudShadow { CloudShadowParameters cloudShadow; };
 layout(location = 4) in vec4 inShadowUv01;
 layout(location = 5) in vec4 inShadowUv23;
 #endif
 
-// The share of the sun the fragment sees.
+// The share of the sun the fragment sees: what the clouds let through, and none where the
+// terrain itself hides the sun (the map's terrain channel, from the scene's heightfield).
 float sunVisibility() {
 #ifdef TERRAIN_CLOUD_SHADOWS
-  return cloudShadowTransmittanceAt(cloudShadow.info, inShadowUv01, inShadowUv23,
-                                    cloudShadow.info.z + inRelative.y);
+  const vec2 sun = cloudShadowAt(cloudShadow.info, inShadowUv01, inShadowUv23,
+                                 cloudShadow.info.z + inRelative.y);
+  return sun.x * sun.y;
 #else
   return 1.0;
 #endif

@@ -28,6 +28,7 @@ layout(location = 3) out vec4 outHaze;  // rgb in-scattered (kcd/m^2), a transmi
 
 #ifdef TERRAIN_CLOUD_SHADOWS
 vec4 fetchCloudShadow(vec2 uv) { return vec4(0.0); }  // the vertex stage reads no map
+vec4 gatherCloudShadowTerrain(vec2 uv) { return vec4(0.0); }
 #include "vkfx/cloud_shadow.h"
 layout(binding = 3, std140) uniform CloudShadow { CloudShadowParameters cloudShadow; };
 layout(location = 4) out vec4 outShadowUv01;  // cascades 0 and 1

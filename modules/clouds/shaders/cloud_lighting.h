@@ -75,15 +75,15 @@ VKFX_INLINE float inScatterProbability(float localOpticalDepth, float heightFrac
 
 // Radiance scattered towards the viewer at a sample, per unit scattering coefficient (before
 // the albedo). `coarseDensity` is the low-frequency density in [0, 1], `coarseExtinction` its
-// extinction (1/m).
-VKFX_INLINE vec3 sampleRadiance(float lightOpticalDepth, IN(OctavePhases) phases,
+// extinction (1/m); `sunLight` in [0, 1] the share of the sun not hidden by the terrain.
+VKFX_INLINE vec3 sampleRadiance(float lightOpticalDepth, float sunLight, IN(OctavePhases) phases,
                                 float coarseDensity, float coarseExtinction, float heightFraction,
                                 IN(CloudUniforms) u, uint multipleScattering) {
   const float direct = directScattering(lightOpticalDepth, phases, u, multipleScattering);
   const float localOpticalDepth = coarseExtinction * u.inScatterDepthMetres;
   const float inScatter = mix(1.0f, inScatterProbability(localOpticalDepth, heightFraction),
                               saturate(u.inScatterStrength));
-  const vec3 sun = u.sunIlluminance * (direct * inScatter * u.sunStrength);
+  const vec3 sun = u.sunIlluminance * (direct * inScatter * sunLight * u.sunStrength);
   const vec3 sky = mix(u.ambientBottom, u.ambientTop, saturate(heightFraction));
   // Nubis 2022 ambient scattering: pow(1 - profile, 0.5) darkens the inside of dense cloud.
   const float occlusion = sqrt(saturate(1.0f - coarseDensity));

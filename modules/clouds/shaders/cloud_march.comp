@@ -7,9 +7,10 @@
 // images; reconstruct.comp turns them into a full picture.
 // Inputs: binding 0 CloudUniforms; 1-4 shape noise, detail noise, weather map, curl noise
 // (RGBA8, imageLoad); 5 scene distance (R32F, trace res); 7-8 weather maxima (empty-space
-// skipping). Outputs: 6 the marched samples (radiance, transmittance, front and weighted
-// depth in metres; packed, cloud_temporal.h); 9 work counters. Feature toggles are
-// specialization constants.
+// skipping); with the terrain's shadow, 10-11 the cloud shadow map and its parameters (its
+// terrain channel, vkfx/cloud_shadow.h). Outputs: 6 the marched samples (radiance,
+// transmittance, front and weighted depth in metres; packed, cloud_temporal.h); 9 work
+// counters. Feature toggles are specialization constants.
 // References: Schneider & Vos 2017 (Nubis); Schneider 2022 (Nubis Evolved); Hillaire 2016.
 #extension GL_GOOGLE_include_directive : require
 
@@ -24,6 +25,7 @@ layout(constant_id = kSpecMultipleScattering) const uint kMultipleScattering = 1
 layout(constant_id = kSpecLightSteps) const uint kLightSteps = 6u;
 layout(constant_id = kSpecCounters) const uint kCounters = 0u;
 layout(constant_id = kSpecEmptySpace) const uint kEmptySpace = 1u;
+layout(constant_id = kSpecTerrainShadow) const uint kTerrainShadow = 0u;
 
 #include "frame_uniforms.glsl"
 layout(binding = kMarchShapeNoise, rgba8) uniform readonly image3D shapeNoise;
@@ -42,6 +44,26 @@ vec4 fetchWeather(ivec2 texel) { return imageLoad(weatherMap, texel); }
 vec4 fetchCurl(ivec2 texel) { return imageLoad(curlNoise, texel); }
 vec4 fetchWeatherMaxFine(ivec2 texel) { return imageLoad(weatherMaxFine, texel); }
 vec4 fetchWeatherMaxCoarse(ivec2 texel) { return imageLoad(weatherMaxCoarse, texel); }
+
+layout(binding = kMarchCloudShadow) uniform sampler2D cloudShadowMap;
+vec4 fetchCloudShadow(vec2 uv) { return textureLod(cloudShadowMap, uv, 0.0f); }
+vec4 gatherCloudShadowTerrain(vec2 uv) { return textureGather(cloudShadowMap, uv, 3); }
+#include "vkfx/cloud_shadow.h"
+// Indexed like frame_uniforms.glsl's block, for the same reason.
+layout(binding = kMarchCloudShadowParameters, std140) uniform CloudShadow {
+  CloudShadowParameters cloudShadow[1];
+};
+
+// The share of the sun that a sample at a camera-relative (x, z) and an altitude gets past the
+// terrain: read from the shadow map's terrain channel when the host gave its terrain.
+float terrainSunLight(vec3 flatOffset, float altitude) {
+  if (kTerrainShadow == 0u) return 1.0f;
+  const vec3 relative = vec3(flatOffset.x, altitude - u.cameraAltitudeMetres, flatOffset.z);
+  vec4 uv01;
+  vec4 uv23;
+  CLOUD_SHADOW_COORDINATES(cloudShadow[gl_NumWorkGroups.z - 1u], relative, uv01, uv23);
+  return cloudShadowAt(cloudShadow[gl_NumWorkGroups.z - 1u].info, uv01, uv23, altitude).y;
+}
 
 #include "cloud_march.h"
 #include "cloud_temporal.h"

@@ -33,6 +33,10 @@ VKFX_SHADER_BEGIN(clouds::shader)
 const float kInfiniteDistance = 1e30f;
 const int kMaxSkips = 96;  // empty weather cells a view ray may jump over
 
+// The includer's: the share of the sun [0, 1] a sample at a camera-relative (x, z) and an
+// altitude (m) gets past the host's terrain (1 where the includer knows no terrain).
+float terrainSunLight(vec3 flatOffset, float altitude);
+
 struct MarchOptions {
   uint detail;              // high-frequency erosion
   uint cheapSampling;       // coarse steps in empty space
@@ -323,7 +327,8 @@ VKFX_INLINE MarchResult marchClouds(vec3 rayDirection, float sceneDistance, floa
     CLOUDS_WHEN(field.sigmaT > 0.0f) {
       const float tau = lightOpticalDepth(flatOffset, sampleAltitude, sampleDistance, o.lightSteps,
                                           u, r.lightSamples);
-      const vec3 light = sampleRadiance(tau, phases, field.base, field.baseSigmaT,
+      const float sunLight = terrainSunLight(flatOffset, sampleAltitude);
+      const vec3 light = sampleRadiance(tau, sunLight, phases, field.base, field.baseSigmaT,
                                         field.heightFraction, u, o.multipleScattering);
       const float stepTransmittance = beerLambert(field.sigmaT * stepLength);
       // Energy-conserving step (Hillaire 2016): the scattered light of a homogeneous step is

@@ -2,7 +2,7 @@
 // Cloud shadow map (compute): one cascade of the Beer shadow map per dispatch, one invocation
 // per texel. Each texel's sun ray is marched up through the layer with the shared model
 // (cloud_shadow_march.h) and stored as the receivers read it (vkfx/cloud_shadow.h): optical
-// depth, highest and lowest cloud altitude.
+// depth, highest and lowest cloud altitude; no terrain (terrain_shadow_map.comp writes that).
 // Inputs: binding 0 CloudUniforms (this frame's field: camera-relative offsets, coverage,
 // extinction); 1 shape noise; 2 weather map; 3-4 weather maxima (empty-space skipping); push
 // constants ShadowMapConstants (the cascade's placement). Output: 5 the cascade atlas (its
@@ -32,6 +32,7 @@ vec4 fetchWeatherMaxCoarse(ivec2 texel) { return imageLoad(weatherMaxCoarse, tex
 // The shadow rays take no detail: these are never reached.
 vec4 fetchDetailNoise(ivec3 texel) { return vec4(0.0f); }
 vec4 fetchCurl(ivec2 texel) { return vec4(0.5f); }
+float terrainSunLight(vec3 flatOffset, float altitude) { return 1.0f; }
 
 #include "cloud_shadow_march.h"
 
@@ -42,5 +43,5 @@ void main() {
   const ShadowColumn column = marchShadowTexel(c, texel, kEmptySpace, u);
   imageStore(shadowMap, ivec2(c.cascade * c.resolution + texel.x, texel.y),
              vec4(min(column.opticalDepth, kCloudShadowMaxDepth), column.frontAltitude,
-                  column.backAltitude, 1.0f));
+                  column.backAltitude, kCloudShadowNoTerrain));
 }

@@ -47,6 +47,8 @@ const uint kMarchSamplesOut = 6u;
 const uint kMarchWeatherMaxFine = 7u;
 const uint kMarchWeatherMaxCoarse = 8u;
 const uint kMarchCounters = 9u;
+const uint kMarchCloudShadow = 10u;            // the shadow map (terrain channel), sampled
+const uint kMarchCloudShadowParameters = 11u;  // its CloudShadowParameters (uniform block)
 // reconstruct.comp
 const uint kReconstructFresh = 1u;
 const uint kReconstructHistory = 2u;
@@ -66,6 +68,9 @@ const uint kShadowWeatherMap = 2u;
 const uint kShadowWeatherMaxFine = 3u;
 const uint kShadowWeatherMaxCoarse = 4u;
 const uint kShadowMapOut = 5u;  // the cascade atlas (vkfx/cloud_shadow.h), RGBA16F
+// terrain_shadow_map.comp
+const uint kTerrainShadowHeight = 0u;  // the host's heightfield, sampled
+const uint kTerrainShadowMap = 1u;     // the cascade atlas: its terrain channel is written
 // composite.comp
 const uint kCompositeHostColor = 0u;
 const uint kCompositeClouds = 1u;
@@ -91,7 +96,8 @@ const uint kSpecMultipleScattering = 3u;  // 0/1: octave multiple-scattering app
 const uint kSpecLightSteps = 4u;          // light samples per view sample (>= 0)
 const uint kSpecCounters = 5u;            // 0/1: accumulate work counters (benchmarks, tests)
 const uint kSpecEmptySpace = 6u;          // 0/1: skip empty weather cells
-const uint kMarchSpecCount = 7u;
+const uint kSpecTerrainShadow = 7u;       // 0/1: the terrain's shadow takes the sun from clouds
+const uint kMarchSpecCount = 8u;
 // reconstruct.comp
 const uint kSpecHistory = 0u;  // 0 none, 1 read in place (nothing moved), 2 reprojected
 const uint kReconstructSpecCount = 1u;
@@ -270,6 +276,22 @@ struct ShadowMapConstants {
   uint padding2;
 };
 
+// Push constants of the terrain's shadow (terrain_shadow_march.h): the cascade, and where the
+// host's heightfield lies.
+struct TerrainShadowConstants {
+  ShadowMapConstants cascade;
+  vec2 heightOriginMetres;  // the heightfield's (0, 0) corner, camera-relative (x, z)
+  vec2 heightInverseSize;   // 1 / its extent along x and z (1/m)
+  float minAltitudeMetres;  // the terrain's lowest and highest altitude
+  float maxAltitudeMetres;
+  float biasMetres;  // subtracted from the stored altitude (vkfx/cloud_shadow.h)
+  uint steps;        // heightfield samples along each ray
+  float cameraAltitudeMetres;
+  uint padding0;
+  uint padding1;
+  uint padding2;
+};
+
 // Push constants of the composite helper.
 struct CompositeConstants {
   uvec2 extent;  // host colour extent (px)
@@ -323,6 +345,7 @@ static_assert(sizeof(clouds::shader::WeatherConstants) == 16);
 static_assert(sizeof(clouds::shader::MaximaConstants) == 16);
 static_assert(sizeof(clouds::shader::CompositeConstants) == 16);
 static_assert(sizeof(clouds::shader::ShadowMapConstants) == 80);
+static_assert(sizeof(clouds::shader::TerrainShadowConstants) == 128);
 #undef CLOUDS_ASSERT_OFFSET
 #endif
 

@@ -52,9 +52,28 @@ std::string checkCreateInfo(const CreateInfo& info) {
   return {};
 }
 
+std::string checkTerrain(const FrameInputs::Terrain& t) {
+  if (t.heightView == VK_NULL_HANDLE) return {};
+  for (double c : {t.originMetres.x, t.originMetres.y}) {
+    if (!std::isfinite(c)) return "FrameInputs.terrain.originMetres: must be finite";
+  }
+  for (double c : {t.sizeMetres.x, t.sizeMetres.y}) {
+    if (!std::isfinite(c) || c <= 0.0) return "FrameInputs.terrain.sizeMetres: must be > 0";
+  }
+  if (!std::isfinite(t.minAltitudeMetres) || !std::isfinite(t.maxAltitudeMetres) ||
+      t.maxAltitudeMetres < t.minAltitudeMetres || t.minAltitudeMetres < -20000.0f ||
+      t.maxAltitudeMetres > 20000.0f) {
+    return "FrameInputs.terrain.minAltitudeMetres = " + std::to_string(t.minAltitudeMetres) +
+           ", maxAltitudeMetres = " + std::to_string(t.maxAltitudeMetres) +
+           ": must be finite, min <= max, within [-20000, 20000]";
+  }
+  return {};
+}
+
 // What both dispatch() and dispatchShadowMap() read: the command buffer, camera position, sun,
-// time.
+// time, terrain.
 std::string checkSharedInputs(const FrameInputs& in) {
+  if (std::string problem = checkTerrain(in.terrain); !problem.empty()) return problem;
   if (in.commandBuffer == VK_NULL_HANDLE) return "FrameInputs.commandBuffer: must not be null";
   for (double c : {in.cameraPosition.x, in.cameraPosition.y, in.cameraPosition.z}) {
     if (!std::isfinite(c)) return "FrameInputs.cameraPosition: must be finite";

@@ -30,7 +30,7 @@ const detail::DeviceContext& checkedDevice(const detail::DeviceContext& device) 
 }
 
 detail::UniqueDescriptorPool makePool(const detail::DeviceContext& device, std::uint32_t frames) {
-  // Fixed sets: 3 noise generators, 2 weather generators, 3 maxima. Per slot: 8 sets.
+  // Fixed sets: 3 noise generators, 2 weather generators, 3 maxima. Per slot: 9 sets.
   const VkDescriptorPoolSize sizes[] = {
       {VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, 16 + 32 * frames},
       {VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 4 + 8 * frames},
@@ -38,7 +38,7 @@ detail::UniqueDescriptorPool makePool(const detail::DeviceContext& device, std::
       {VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 4 * frames},
   };
   VkDescriptorPoolCreateInfo info{VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO};
-  info.maxSets = 8 + 8 * frames;
+  info.maxSets = 8 + 10 * frames;
   info.poolSizeCount = static_cast<std::uint32_t>(std::size(sizes));
   info.pPoolSizes = sizes;
   return device.createDescriptorPool(info, "descriptor pool");
@@ -60,6 +60,8 @@ Context::Impl::Impl(const CreateInfo& info, const detail::VulkanFunctions& funct
           VK_FILTER_NEAREST, VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE, "nearest sampler")),
       linearSampler_(device_.createSampler(VK_FILTER_LINEAR, VK_SAMPLER_ADDRESS_MODE_REPEAT,
                                            "linear sampler")),
+      clampedLinearSampler_(device_.createSampler(
+          VK_FILTER_LINEAR, VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE, "clamped linear sampler")),
       pool_(makePool(device_, info.maxFramesInFlight)),
       weatherSchedule_(static_cast<std::uint32_t>(shader::kWeatherMapSize), kWeatherRowsAhead) {
   if (info.passTimings) {
@@ -91,6 +93,11 @@ Context::Impl::Impl(const CreateInfo& info, const detail::VulkanFunctions& funct
                             VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT,
                             "shadow uniforms " + std::to_string(i));
     slot.shadowMap = allocateSet(Program::ShadowMap);
+    slot.terrainShadow = allocateSet(Program::TerrainShadow);
+    slot.shadowParameters =
+        detail::OwnedBuffer(device_, sizeof(ShadowMapParameters),
+                            VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT,
+                            "shadow parameters " + std::to_string(i));
   }
 }
 
@@ -246,6 +253,7 @@ void Context::Impl::dispatchShadowMap(const FrameInputs& inputs, const Settings&
   for (const detail::CascadeJob& job : plan.jobs) shadowCascadesMade_ |= 1u << job.cascade;
   shadowParameters_ =
       shadowCascades_.parameters(inputs.cameraPosition, inputs.timeSeconds, settings);
+  shadowFrame_ = inputs.frameIndex;
   report_.shadowCascadesMade = shadowCascadesMade_;
   device_.endLabel(cmd);
 }
@@ -270,9 +278,18 @@ void Context::Impl::dispatch(const FrameInputs& inputs, const Settings& settings
     report_ = FrameReport{
         {0, 0}, 0, false, temporal.insideLayer, "clear sky: nothing to march", shadowCascadesMade_};
   } else {
-    recordUniforms(cmd, slot, lastUniforms_);
+    // The terrain's shadow reaches the clouds through the shadow map's terrain channel, so only
+    // with a map made with the terrain (dispatchShadowMap() before, this frame).
+    const bool terrainShadow = inputs.terrain.heightView != VK_NULL_HANDLE &&
+                               settings.shadowCascades > 0 && images_.shadowMap &&
+                               shadowFrame_ == inputs.frameIndex;
+    const ShadowMapParameters shadow =
+        terrainShadow
+            ? shadowCascades_.parameters(inputs.cameraPosition, inputs.timeSeconds, settings)
+            : ShadowMapParameters{};
+    recordUniforms(cmd, slot, lastUniforms_, shadow);
     if (inputs.skyView != VK_NULL_HANDLE) recordSkyAmbient(cmd, inputs, slot);
-    recordTrace(cmd, inputs, settings, temporal, traceExtent, slot);
+    recordTrace(cmd, inputs, settings, temporal, traceExtent, terrainShadow, slot);
     temporal_.commit(temporal, inputs, settings, traceExtent);
     report_ = FrameReport{traceExtent,          temporal.tileSize,    temporal.useHistory,
                           temporal.insideLayer, temporal.resetReason, shadowCascadesMade_};
@@ -321,8 +338,8 @@ Outputs Context::Impl::outputs() const {
 MemoryUsage Context::Impl::memoryUsage() const {
   MemoryUsage usage = images_.memoryUsage();
   for (const Slot& slot : slots_) {
-    usage.bufferBytes +=
-        slot.uniforms.bytes() + slot.counters.bytes() + slot.shadowUniforms.bytes();
+    usage.bufferBytes += slot.uniforms.bytes() + slot.counters.bytes() +
+                         slot.shadowUniforms.bytes() + slot.shadowParameters.bytes();
   }
   return usage;
 }

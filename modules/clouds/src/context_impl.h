@@ -68,6 +68,10 @@ class Context::Impl {
   // The uniforms and per-cascade constants of the last shadow-map cascades recorded.
   const shader::CloudUniforms& lastShadowUniforms() const { return lastShadowUniforms_; }
   const std::vector<shader::ShadowMapConstants>& lastShadowJobs() const { return lastShadowJobs_; }
+  // The terrain-shadow constants of the last cascades recorded with FrameInputs::terrain.
+  const std::vector<shader::TerrainShadowConstants>& lastTerrainShadowJobs() const {
+    return lastTerrainShadowJobs_;
+  }
   std::uint64_t weatherUpdates() const { return weatherUpdates_; }
   // Test-only uniform flags (e.g. shader::kFlagHomogeneous) ORed into every frame.
   void setDebugFlags(std::uint32_t flags) { debugFlags_ = flags; }
@@ -87,6 +91,8 @@ class Context::Impl {
     VkDescriptorSet weatherResample = VK_NULL_HANDLE;
     detail::OwnedBuffer shadowUniforms;  // the CloudUniforms the shadow map is made with
     VkDescriptorSet shadowMap = VK_NULL_HANDLE;
+    VkDescriptorSet terrainShadow = VK_NULL_HANDLE;
+    detail::OwnedBuffer shadowParameters;  // the march's copy of the map's lookup parameters
   };
 
   VkDescriptorSet allocateSet(detail::Program program);
@@ -111,13 +117,18 @@ class Context::Impl {
   // record_shadow.cpp
   void recordShadowMap(VkCommandBuffer cmd, const FrameInputs& inputs, const Settings& settings,
                        const detail::ShadowPlan& plan, Slot& slot);
+  void recordTerrainShadow(VkCommandBuffer cmd, const FrameInputs& inputs, const Settings& settings,
+                           const detail::ShadowPlan& plan, Slot& slot);
+  void makeShadowMapVisible(VkCommandBuffer cmd);
 
   // record_trace.cpp
-  void recordUniforms(VkCommandBuffer cmd, Slot& slot, const shader::CloudUniforms& uniforms);
+  void recordUniforms(VkCommandBuffer cmd, Slot& slot, const shader::CloudUniforms& uniforms,
+                      const ShadowMapParameters& shadow);
   void recordSkyAmbient(VkCommandBuffer cmd, const FrameInputs& inputs, Slot& slot);
   void recordClearSky(VkCommandBuffer cmd, Slot& slot);
   void recordTrace(VkCommandBuffer cmd, const FrameInputs& inputs, const Settings& settings,
-                   const detail::TemporalFrame& temporal, VkExtent2D traceExtent, Slot& slot);
+                   const detail::TemporalFrame& temporal, VkExtent2D traceExtent,
+                   bool terrainShadow, Slot& slot);
 
   // Declaration order is destruction order reversed: everything below uses device_.
   CreateInfo info_;
@@ -125,9 +136,10 @@ class Context::Impl {
   detail::Programs programs_;
   detail::ModuleImages images_;
   detail::UniqueSampler nearestSampler_;
-  detail::UniqueSampler linearSampler_;
-  detail::UniqueDescriptorPool pool_;         // frees every descriptor set with it
-  std::unique_ptr<detail::PassTimer> timer_;  // CreateInfo::passTimings
+  detail::UniqueSampler linearSampler_;         // repeats (the sky image wraps in azimuth)
+  detail::UniqueSampler clampedLinearSampler_;  // the shadow map, the host's heightfield
+  detail::UniqueDescriptorPool pool_;           // frees every descriptor set with it
+  std::unique_ptr<detail::PassTimer> timer_;    // CreateInfo::passTimings
   std::vector<Slot> slots_;
 
   // Sets over fixed images, written once.
@@ -149,11 +161,13 @@ class Context::Impl {
   detail::TemporalState temporal_;
   detail::ShadowCascades shadowCascades_;
   ShadowMapParameters shadowParameters_{};
-  std::uint32_t shadowCascadesMade_ = 0;  // this frame's (FrameReport::shadowCascadesMade)
+  std::optional<std::uint64_t> shadowFrame_;  // the frame of the last dispatchShadowMap()
+  std::uint32_t shadowCascadesMade_ = 0;      // this frame's (FrameReport::shadowCascadesMade)
   FrameReport report_{};
   shader::CloudUniforms lastUniforms_{};
   shader::CloudUniforms lastShadowUniforms_{};
   std::vector<shader::ShadowMapConstants> lastShadowJobs_;
+  std::vector<shader::TerrainShadowConstants> lastTerrainShadowJobs_;
   std::uint32_t debugFlags_ = 0;
 };
 

@@ -15,12 +15,13 @@ enum class Pass : std::uint32_t {
   Reconstruct,
   Upsample,
   ShadowMap,
+  TerrainShadow,
   Count
 };
 
 inline constexpr std::array<const char*, static_cast<std::size_t>(Pass::Count)> kPassNames = {
-    "noise", "weather",     "sky ambient", "clear sky", "scene distance",
-    "march", "reconstruct", "upsample",    "shadow map"};
+    "noise", "weather",     "sky ambient", "clear sky",  "scene distance",
+    "march", "reconstruct", "upsample",    "shadow map", "terrain shadow"};
 
 constexpr std::uint32_t index(Pass pass) {
   return static_cast<std::uint32_t>(pass);

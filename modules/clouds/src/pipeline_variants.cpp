@@ -5,7 +5,7 @@
 
 namespace clouds::detail {
 
-SpecializationKey marchKey(const Settings& settings, bool workCounters) {
+SpecializationKey marchKey(const Settings& settings, bool workCounters, bool terrainShadow) {
   const MarchVariant v = marchVariant(settings);
   SpecializationKey key;
   key.values[shader::kSpecJitter] = v.jitter;
@@ -15,6 +15,7 @@ SpecializationKey marchKey(const Settings& settings, bool workCounters) {
   key.values[shader::kSpecLightSteps] = v.lightSteps;
   key.values[shader::kSpecCounters] = workCounters ? 1u : 0u;
   key.values[shader::kSpecEmptySpace] = v.emptySpace;
+  key.values[shader::kSpecTerrainShadow] = terrainShadow ? 1u : 0u;
   key.count = shader::kMarchSpecCount;
   return key;
 }
@@ -47,7 +48,7 @@ std::vector<std::pair<Program, SpecializationKey>> variantsFor(const Settings& s
   const std::uint32_t histories[] = {shader::kHistoryNone, shader::kHistoryInPlace,
                                      shader::kHistoryReprojected};
   std::vector<std::pair<Program, SpecializationKey>> variants;
-  variants.emplace_back(Program::March, marchKey(settings, workCounters));
+  variants.emplace_back(Program::March, marchKey(settings, workCounters, false));
   for (std::uint32_t history : histories) {
     variants.emplace_back(Program::Reconstruct, reconstructKey(history));
   }
@@ -59,9 +60,12 @@ std::vector<std::pair<Program, SpecializationKey>> variantsFor(const Settings& s
       variants.emplace_back(Program::Upsample, upsampleKey(upsampling, history, hazed));
     }
   }
-  // No shadow map, no shadow pipeline.
-  if (settings.shadowCascades > 0)
+  // No shadow map, no shadow pipelines (and no terrain shadow: it lives in the map).
+  if (settings.shadowCascades > 0) {
     variants.emplace_back(Program::ShadowMap, shadowMapKey(settings));
+    variants.emplace_back(Program::TerrainShadow, SpecializationKey{});
+    variants.emplace_back(Program::March, marchKey(settings, workCounters, true));
+  }
   return variants;
 }
 

@@ -12,7 +12,9 @@
 
 namespace clouds::detail {
 
-SpecializationKey marchKey(const Settings& settings, bool workCounters);
+// `terrainShadow`: the terrain's shadow takes the sun from the clouds (FrameInputs::terrain
+// with a shadow map).
+SpecializationKey marchKey(const Settings& settings, bool workCounters, bool terrainShadow);
 // `history`: kHistoryNone, kHistoryInPlace or kHistoryReprojected (cloud_types.h).
 SpecializationKey reconstructKey(std::uint32_t history);
 // `hazed`: the host gave an aerial perspective this frame.
@@ -22,7 +24,7 @@ SpecializationKey upsampleKey(bool temporalUpsampling, std::uint32_t outputHisto
 SpecializationKey shadowMapKey(const Settings& settings);
 
 // Every variant `settings` can select in some frame (with or without history, still or moving,
-// with or without the host's aerial perspective).
+// with or without the host's aerial perspective or terrain).
 std::vector<std::pair<Program, SpecializationKey>> variantsFor(const Settings& settings,
                                                                bool workCounters);
 

@@ -13,6 +13,7 @@
 #include "clouds_shaders/noise_shape.comp.spv.h"
 #include "clouds_shaders/reconstruct.comp.spv.h"
 #include "clouds_shaders/sky_ambient.comp.spv.h"
+#include "clouds_shaders/terrain_shadow_map.comp.spv.h"
 #include "clouds_shaders/upsample.comp.spv.h"
 #include "clouds_shaders/weather_max.comp.spv.h"
 #include "clouds_shaders/weather_procedural.comp.spv.h"
@@ -90,7 +91,9 @@ std::vector<ProgramDesc> programTable() {
         {kMarchSamplesOut, kImage},
         {kMarchWeatherMaxFine, kImage},
         {kMarchWeatherMaxCoarse, kImage},
-        {kMarchCounters, kBuffer}},
+        {kMarchCounters, kBuffer},
+        {kMarchCloudShadow, kTexture},
+        {kMarchCloudShadowParameters, kUniforms}},
        0,
        "march"},
       {Program::Reconstruct,
@@ -124,6 +127,11 @@ std::vector<ProgramDesc> programTable() {
         {kShadowMapOut, kImage}},
        sizeof(ShadowMapConstants),
        "shadow map"},
+      {Program::TerrainShadow,
+       terrain_shadow_map_comp_spv,
+       {{kTerrainShadowHeight, kTexture}, {kTerrainShadowMap, kImage}},
+       sizeof(TerrainShadowConstants),
+       "terrain shadow"},
       {Program::Composite,
        composite_comp_spv,
        {{kCompositeHostColor, kImage}, {kCompositeClouds, kImage}},
@@ -140,10 +148,12 @@ Programs::Programs(const DeviceContext& device, bool composite) {
     auto& program = programs_[index(desc.program)];
     program = std::make_unique<ComputeProgram>(device, desc.spirv, desc.bindings,
                                                desc.pushConstantBytes, desc.name);
-    // Programs without specialization constants have one variant: made now.
+    // Programs without specialization constants have one variant: made now (the shadow map's
+    // programs by prepare(), only for settings that have a shadow map).
     const bool specialised =
         desc.program == Program::March || desc.program == Program::Reconstruct ||
-        desc.program == Program::Upsample || desc.program == Program::ShadowMap;
+        desc.program == Program::Upsample || desc.program == Program::ShadowMap ||
+        desc.program == Program::TerrainShadow;
     if (!specialised) program->prepare();
   }
 }

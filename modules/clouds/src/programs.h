@@ -25,6 +25,7 @@ enum class Program : std::uint32_t {
   Upsample,         // upsample.comp: depth-aware (and temporal) upsampling to the output
   Composite,        // composite.comp: the clouds over the host's colour
   ShadowMap,        // cloud_shadow_map.comp: one cascade of the cloud shadow map
+  TerrainShadow,    // terrain_shadow_map.comp: the terrain's channel of one cascade
   Count
 };
 

@@ -1,6 +1,7 @@
 // Recording the cloud shadow map: this frame's field uniforms into the slot's shadow buffer,
-// then one dispatch per cascade due (shadow_cascades.h decides which), ending with the atlas
-// visible to the host's compute and fragment shaders.
+// then one dispatch per cascade due (shadow_cascades.h decides which), then, with the host's
+// terrain, one more per cascade for its terrain channel, ending with the atlas visible to the
+// host's compute and fragment shaders.
 #include "context_impl.h"
 #include "pipeline_variants.h"
 
@@ -67,10 +68,53 @@ void Context::Impl::recordShadowMap(VkCommandBuffer cmd, const FrameInputs& inpu
     lastShadowJobs_.push_back(constants);
     fn.vkCmdDispatch(cmd, groups, groups, 1);
   }
-  detail::barrier(device_, cmd, im.shadowMap.image(), VK_IMAGE_LAYOUT_GENERAL,
+  if (inputs.terrain.heightView != VK_NULL_HANDLE) {
+    // The terrain pass reads the clouds' channels back and writes them with its own.
+    detail::memoryBarrier(device_, cmd, kCompute, detail::kStorageWrite, kCompute,
+                          detail::kStorageRead | detail::kStorageWrite);
+    endPass(cmd, detail::Pass::ShadowMap);
+    recordTerrainShadow(cmd, inputs, settings, plan, slot);
+    return;
+  }
+  makeShadowMapVisible(cmd);
+  endPass(cmd, detail::Pass::ShadowMap);
+}
+
+// The barrier belongs to the pass that ends with it: on lavapipe a dispatch only starts the
+// work, and the barrier waits for it.
+void Context::Impl::makeShadowMapVisible(VkCommandBuffer cmd) {
+  detail::barrier(device_, cmd, images_.shadowMap.image(), VK_IMAGE_LAYOUT_GENERAL,
                   VK_IMAGE_LAYOUT_GENERAL, kCompute, detail::kStorageWrite, kHostReadStages,
                   kHostReadAccess);
-  endPass(cmd, detail::Pass::ShadowMap);
+}
+
+void Context::Impl::recordTerrainShadow(VkCommandBuffer cmd, const FrameInputs& inputs,
+                                        const Settings& settings, const detail::ShadowPlan& plan,
+                                        Slot& slot) {
+  const auto& fn = device_.fn();
+  beginPass(cmd, detail::Pass::TerrainShadow, "clouds: terrain shadow");
+  detail::SetWriter(device_, slot.terrainShadow)
+      .sampledImage(shader::kTerrainShadowHeight, inputs.terrain.heightView,
+                    clampedLinearSampler_.get(), inputs.terrain.heightLayout)
+      .storageImage(shader::kTerrainShadowMap, images_.shadowMap.view())
+      .commit();
+  const detail::ComputeProgram& program = programs_[Program::TerrainShadow];
+  fn.vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, program.find());
+  fn.vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, program.layout(), 0, 1,
+                             &slot.terrainShadow, 0, nullptr);
+  const std::uint32_t groups =
+      detail::groupsFor(settings.shadowMapResolution, shader::kWorkgroupSize2D);
+  lastTerrainShadowJobs_.clear();
+  for (const detail::CascadeJob& job : plan.jobs) {
+    const shader::TerrainShadowConstants constants =
+        detail::terrainShadowConstants(job, inputs, settings);
+    fn.vkCmdPushConstants(cmd, program.layout(), VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof(constants),
+                          &constants);
+    lastTerrainShadowJobs_.push_back(constants);
+    fn.vkCmdDispatch(cmd, groups, groups, 1);
+  }
+  makeShadowMapVisible(cmd);
+  endPass(cmd, detail::Pass::TerrainShadow);
 }
 
 }  // namespace clouds

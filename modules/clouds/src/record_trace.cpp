@@ -29,12 +29,14 @@ std::uint32_t historyVariant(bool use, bool still) {
 }  // namespace
 
 void Context::Impl::recordUniforms(VkCommandBuffer cmd, Slot& slot,
-                                   const shader::CloudUniforms& uniforms) {
+                                   const shader::CloudUniforms& uniforms,
+                                   const ShadowMapParameters& shadow) {
   // The previous frame of this slot has completed (host contract), but earlier commands in
   // this queue may still read it: order the update after them.
   detail::memoryBarrier(device_, cmd, kCompute, VK_ACCESS_2_UNIFORM_READ_BIT | kStorageRead,
                         VK_PIPELINE_STAGE_2_TRANSFER_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT);
   device_.fn().vkCmdUpdateBuffer(cmd, slot.uniforms.buffer(), 0, sizeof(uniforms), &uniforms);
+  device_.fn().vkCmdUpdateBuffer(cmd, slot.shadowParameters.buffer(), 0, sizeof(shadow), &shadow);
   detail::memoryBarrier(device_, cmd, VK_PIPELINE_STAGE_2_TRANSFER_BIT,
                         VK_ACCESS_2_TRANSFER_WRITE_BIT, kCompute,
                         VK_ACCESS_2_UNIFORM_READ_BIT | kStorageRead | kStorageWrite);
@@ -60,7 +62,7 @@ void Context::Impl::recordSkyAmbient(VkCommandBuffer cmd, const FrameInputs& inp
 
 void Context::Impl::recordTrace(VkCommandBuffer cmd, const FrameInputs& inputs,
                                 const Settings& settings, const detail::TemporalFrame& temporal,
-                                VkExtent2D traceExtent, Slot& slot) {
+                                VkExtent2D traceExtent, bool terrainShadow, Slot& slot) {
   const auto& fn = device_.fn();
   const detail::ModuleImages& im = images_;
   const bool hasDepth = inputs.depthView != VK_NULL_HANDLE;
@@ -99,6 +101,12 @@ void Context::Impl::recordTrace(VkCommandBuffer cmd, const FrameInputs& inputs,
       .storageImage(kMarchWeatherMaxFine, im.weatherMaxFine.view())
       .storageImage(kMarchWeatherMaxCoarse, im.weatherMaxCoarse.view())
       .storageBuffer(kMarchCounters, slot.counters.buffer(), slot.counters.size())
+      .sampledImage(
+          kMarchCloudShadow, terrainShadow ? im.shadowMap.view() : im.depthPlaceholder.view(),
+          clampedLinearSampler_.get(),
+          terrainShadow ? VK_IMAGE_LAYOUT_GENERAL : VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL)
+      .uniformBuffer(kMarchCloudShadowParameters, slot.shadowParameters.buffer(),
+                     sizeof(ShadowMapParameters))
       .commit();
   detail::SetWriter(device_, slot.reconstruct)
       .uniformBuffer(kBindingUniforms, uniforms, uniformBytes)
@@ -141,9 +149,10 @@ void Context::Impl::recordTrace(VkCommandBuffer cmd, const FrameInputs& inputs,
   const std::uint32_t k = temporal.tileSize;
   beginPass(cmd, detail::Pass::March, "clouds: march");
   // One invocation per tile: only the pixels marched this frame.
-  bindAndDispatch(cmd, Program::March,
-                  programs_[Program::March].find(detail::marchKey(settings, info_.workCounters)),
-                  slot.march, (traceExtent.width + k - 1) / k, (traceExtent.height + k - 1) / k);
+  bindAndDispatch(
+      cmd, Program::March,
+      programs_[Program::March].find(detail::marchKey(settings, info_.workCounters, terrainShadow)),
+      slot.march, (traceExtent.width + k - 1) / k, (traceExtent.height + k - 1) / k);
   detail::memoryBarrier(device_, cmd, kCompute, kStorageWrite, kCompute, kStorageRead);
   endPass(cmd, detail::Pass::March);
 

@@ -104,6 +104,7 @@ std::string validateSettings(const Settings& s) {
   c.range("shadowCascadeRatio", s.shadowCascadeRatio, 1.5f, 8.0f);
   c.range("shadowSteps", s.shadowSteps, 1u, 256u);
   c.range("shadowCascadesPerFrame", s.shadowCascadesPerFrame, 1u, 4u);
+  c.range("terrainShadowSteps", s.terrainShadowSteps, 1u, 1024u);
   c.require(s.jitter == Jitter::None || s.jitter == Jitter::BayerHalton ||
                 s.jitter == Jitter::BayerHaltonSubpixel,
             "Settings.jitter: unknown mode " + std::to_string(static_cast<unsigned>(s.jitter)));
@@ -132,6 +133,7 @@ Settings referenceSettings(const Settings& base) {
   s.shadowMapResolution = 512;
   s.shadowSteps = 64;
   s.shadowCascadesPerFrame = 4;
+  s.terrainShadowSteps = 256;
   return s;
 }
 
@@ -228,6 +230,8 @@ Settings settingsFor(Quality quality, const Settings& base) {
   // each texel's sun ray, and texels for Ultra.
   const std::uint32_t shadowSteps[] = {8, 12, 16, 24};
   s.shadowSteps = shadowSteps[static_cast<std::size_t>(quality)];
+  const std::uint32_t terrainShadowSteps[] = {24, 32, 48, 64};
+  s.terrainShadowSteps = terrainShadowSteps[static_cast<std::size_t>(quality)];
   s.shadowMapResolution = quality == Quality::Ultra ? 256u : 128u;
   s.shadowCascadesPerFrame = 1;
   return s;

@@ -24,7 +24,14 @@ bool shadowSettingsDiffer(const Settings& a, const Settings& b) {
   return a.shadowCascades != b.shadowCascades || a.shadowMapResolution != b.shadowMapResolution ||
          a.shadowNearSideMetres != b.shadowNearSideMetres ||
          a.shadowCascadeRatio != b.shadowCascadeRatio || a.shadowSteps != b.shadowSteps ||
+         a.terrainShadowSteps != b.terrainShadowSteps ||
          a.layerBottomMetres != b.layerBottomMetres || a.layerTopMetres != b.layerTopMetres;
+}
+
+bool sameTerrain(const FrameInputs::Terrain& a, const FrameInputs::Terrain& b) {
+  return a.heightView == b.heightView && a.originMetres == b.originMetres &&
+         a.sizeMetres == b.sizeMetres && a.minAltitudeMetres == b.minAltitudeMetres &&
+         a.maxAltitudeMetres == b.maxAltitudeMetres;
 }
 
 glm::dvec3 windDrift(const Settings& s, double seconds) {
@@ -82,7 +89,7 @@ bool ShadowCascades::stale(const Made& made, const CascadeJob& now, const FrameI
                            const Settings& s) const {
   if (!made.valid || in.reset) return true;
   if (shadowSettingsDiffer(settings_, s) || cloudsLookDifferent(settings_, s)) return true;
-  if (in.weatherView != weatherView_) return true;
+  if (in.weatherView != weatherView_ || !sameTerrain(in.terrain, terrain_)) return true;
   if (angleDegrees(made.basis.light, now.basis.light) > double(s.relightResetDegrees)) return true;
   const double age = in.timeSeconds - made.timeSeconds;
   if (age < 0.0 || age > kMaxCascadeAgeSeconds) return true;
@@ -129,6 +136,7 @@ void ShadowCascades::commit(const ShadowPlan& plan, const FrameInputs& in, const
   for (std::uint32_t c = s.shadowCascades; c < made_.size(); ++c) made_[c] = Made{};
   settings_ = s;
   weatherView_ = in.weatherView;
+  terrain_ = in.terrain;
 }
 
 ShadowMapParameters ShadowCascades::parameters(const glm::dvec3& camera, double timeSeconds,
@@ -172,6 +180,24 @@ shader::ShadowMapConstants shadowMapConstants(const CascadeJob& job, const glm::
   k.cascade = job.cascade;
   k.resolution = s.shadowMapResolution;
   k.steps = s.shadowSteps;
+  return k;
+}
+
+shader::TerrainShadowConstants terrainShadowConstants(const CascadeJob& job, const FrameInputs& in,
+                                                      const Settings& s) {
+  const FrameInputs::Terrain& terrain = in.terrain;
+  shader::TerrainShadowConstants k{};
+  k.cascade = shadowMapConstants(job, in.cameraPosition, s);
+  k.heightOriginMetres =
+      glm::vec2(terrain.originMetres - glm::dvec2(in.cameraPosition.x, in.cameraPosition.z));
+  k.heightInverseSize = glm::vec2(1.0 / terrain.sizeMetres);
+  k.minAltitudeMetres = terrain.minAltitudeMetres;
+  k.maxAltitudeMetres = terrain.maxAltitudeMetres;
+  // One texel (the rays of a texel's footprint differ by that much) and the fade below the
+  // shadow's edge: a receiver at its own ray's exit from the ground stays lit.
+  k.biasMetres = static_cast<float>(job.texelMetres) + vkfx::shader::kCloudShadowTerrainRampMetres;
+  k.steps = s.terrainShadowSteps;
+  k.cameraAltitudeMetres = static_cast<float>(in.cameraPosition.y);
   return k;
 }
 

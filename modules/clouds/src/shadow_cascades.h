@@ -11,8 +11,8 @@
 //
 // Refresh: a cascade is remade in turn (the finest every other turn, the others round-robin),
 // shadowCascadesPerFrame per frame. It is remade at once when it was never made, on a camera
-// cut, when the settings or the weather map changed, when the camera's focus left the middle
-// half of it, when the sun turned more than Settings::relightResetDegrees since, or when the
+// cut, when the settings, the weather map or the terrain changed, when the camera's focus left the
+// middle half of it, when the sun turned more than Settings::relightResetDegrees since, or when the
 // time since it was made is negative or long. Between refreshes the wind's drift of the clouds
 // since the cascade was made moves its lookup, so shadows travel with the clouds.
 #include <array>
@@ -61,6 +61,11 @@ shader::ShadowMapConstants shadowMapConstants(const CascadeJob& job,
                                               const glm::dvec3& cameraPosition,
                                               const Settings& settings);
 
+// The terrain-shadow shader's push constants for `job` (FrameInputs::terrain), camera-relative.
+shader::TerrainShadowConstants terrainShadowConstants(const CascadeJob& job,
+                                                      const FrameInputs& inputs,
+                                                      const Settings& settings);
+
 class ShadowCascades {
  public:
   ShadowPlan plan(const FrameInputs& inputs, const Settings& settings) const;
@@ -89,6 +94,7 @@ class ShadowCascades {
   std::uint64_t turn_ = 0;
   Settings settings_{};  // those the made cascades were made with
   VkImageView weatherView_ = VK_NULL_HANDLE;
+  FrameInputs::Terrain terrain_{};  // the terrain the made cascades were made with
 };
 
 }  // namespace clouds::detail

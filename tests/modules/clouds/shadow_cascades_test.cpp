@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <bit>
+#include <cstdint>
 
 #include "cloud_shadow_march.h"
 #include "shadow_cascades.h"
@@ -92,6 +93,21 @@ TEST(ShadowCascades, CutsJumpsTurnsAndNewSettingsRemakeEverything) {
     clouds::Settings denser = s;
     denser.coverage = 0.8f;
     EXPECT_EQ(frame(c, in, denser), 0xFu) << "new settings";
+  }
+  {
+    ShadowCascades c;
+    clouds::FrameInputs in = camera();
+    settled(c, in);
+    in.terrain.heightView = reinterpret_cast<VkImageView>(std::uintptr_t{0x1000});
+    in.terrain.sizeMetres = {40000.0, 40000.0};
+    in.terrain.maxAltitudeMetres = 2000.0f;
+    EXPECT_EQ(frame(c, in, s), 0xFu) << "a terrain came";
+    in.timeSeconds += 0.03;
+    EXPECT_EQ(std::popcount(frame(c, in, s)), 1) << "the same terrain";
+    in.terrain.maxAltitudeMetres = 2500.0f;
+    EXPECT_EQ(frame(c, in, s), 0xFu) << "the terrain changed";
+    in.terrain = {};
+    EXPECT_EQ(frame(c, in, s), 0xFu) << "the terrain went";
   }
   {
     ShadowCascades c;

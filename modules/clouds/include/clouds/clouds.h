@@ -105,7 +105,8 @@ struct CreateInfo {
 
 // GPU time of one of the module's passes in a frame (CreateInfo::passTimings). A frame has, in
 // recording order: "noise" (its first frame only), "weather" (frames that make or resample a
-// weather map), "shadow map" (dispatchShadowMap() with cascades due), "sky ambient" (with
+// weather map), "shadow map" (dispatchShadowMap() with cascades due), "terrain shadow" (the
+// same, with FrameInputs::terrain), "sky ambient" (with
 // FrameInputs::skyView), then either "clear sky" (nothing to march) or "scene distance",
 // "march", "reconstruct", "upsample".
 struct PassTiming {
@@ -276,6 +277,10 @@ struct Settings {
   float shadowCascadeRatio = 3.0f;           // [1.5, 8] side of a cascade over the one before
   std::uint32_t shadowSteps = 16;            // [1, 256] samples along each texel's sun ray
   std::uint32_t shadowCascadesPerFrame = 1;  // [1, 4] cascades remade per frame
+  // With FrameInputs::terrain: heightfield samples along each texel's sun ray, from where it
+  // is at the terrain's lowest altitude to where it clears the highest (at a sun 5 degrees up
+  // over 2 km of relief, 23 km of ray: 48 samples are 480 m apart).
+  std::uint32_t terrainShadowSteps = 48;  // [1, 1024]
 };
 
 // Quality presets, cheapest first; Reference is referenceSettings().
@@ -341,6 +346,25 @@ struct FrameInputs {
   };
   AerialPerspective aerialPerspective;
 
+  // Optional terrain (the host's ground as a heightfield): with it each shadow-map texel also
+  // holds where the terrain hides the sun from its ray (the "terrain shadow" pass, in
+  // dispatchShadowMap()), so clouds in a mountain's shadow lose their direct sun (dispatch())
+  // and a host can shadow its terrain on itself with the same lookup (vkfx/cloud_shadow.h).
+  // Needs the shadow map: Settings::shadowCascades > 0 and dispatchShadowMap() every frame
+  // before dispatch(). Outside the heightfield there is no terrain.
+  struct Terrain {
+    // 2D, one channel: altitude (m) above sea level, sampled with linear filtering in
+    // `heightLayout` (R16_SFLOAT always filters linearly; R32_SFLOAT where the device says).
+    VkImageView heightView = VK_NULL_HANDLE;  // none: no terrain
+    VkImageLayout heightLayout = VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL;
+    glm::dvec2 originMetres{0.0};  // world (x, z) of the image's (u, v) = (0, 0) corner
+    glm::dvec2 sizeMetres{0.0};    // world extent along x (u) and z (v), > 0
+    // The lowest and highest altitude in the image (m): bounds of the walk along each ray.
+    float minAltitudeMetres = 0.0f;
+    float maxAltitudeMetres = 0.0f;
+  };
+  Terrain terrain;
+
   // Optional painted weather map (R coverage, G type, B density; any size, sampled with
   // bilinear filtering in `weatherLayout`) replacing the procedural one.
   VkImageView weatherView = VK_NULL_HANDLE;
@@ -388,7 +412,8 @@ struct Outputs {
   // The cloud shadow map (Settings::shadowCascades > 0; else null): RGBA16F, cascades side by
   // side (shadowMapResolution x cascades wide, shadowMapResolution high), in GENERAL with the
   // writes of the last dispatchShadowMap() visible to compute- and fragment-shader reads.
-  // Texel: optical depth of its sun ray, altitude (m) of its highest and lowest cloud, 1.
+  // Texel: optical depth of its sun ray, altitude (m) of its highest and lowest cloud, and the
+  // altitude below which the terrain hides the sun (FrameInputs::terrain; without it, far below).
   OutputImage shadowMap;
   ShadowMapParameters shadowParameters;  // info.x = 0 while there is no map
 };

@@ -35,6 +35,19 @@ vec4 fetchCloudShadow(vec2 uv) {
   const int y = int(base.y);
   return mix(mix(at(x, y), at(x + 1, y), f.x), mix(at(x, y + 1), at(x + 1, y + 1), f.x), f.y);
 }
+// textureGather(map, uv, 3) on a clamped sampler.
+vec4 gatherCloudShadowTerrain(vec2 uv) {
+  const auto& map = *tShadowMap;
+  const vec2 base = floor(uv * vec2(map.width, map.height) - 0.5f);
+  const auto at = [&](int x, int y) {
+    const int cx = std::clamp(x, 0, int(map.width) - 1);
+    const int cy = std::clamp(y, 0, int(map.height) - 1);
+    return map.texels[std::size_t(cy) * map.width + std::size_t(cx)].w;
+  };
+  const int x = int(base.x);
+  const int y = int(base.y);
+  return vec4(at(x, y + 1), at(x + 1, y + 1), at(x + 1, y), at(x, y));
+}
 }  // namespace vkfx::shader
 
 namespace clouds::tools {
@@ -45,14 +58,14 @@ namespace {
 constexpr float kNearMetres = 0.5f;
 }  // namespace
 
-float ShadowMapImage::transmittance(const glm::vec3& relative) const {
+glm::vec2 ShadowMapImage::lookup(const glm::vec3& relative) const {
   tShadowMap = this;
   vkfx::shader::CloudShadowParameters p;
   static_assert(sizeof(p) == sizeof(parameters));
   std::memcpy(&p, &parameters, sizeof(p));
-  const float t = vkfx::shader::cloudShadowTransmittance(p, relative);
+  const glm::vec2 sun = vkfx::shader::cloudShadowAtPosition(p, relative);
   tShadowMap = nullptr;
-  return t;
+  return sun;
 }
 
 glm::vec3 sunDirection(const CloudView& v) {
@@ -156,6 +169,7 @@ clouds::FrameInputs CloudHarness::makeInputs(const CloudView& view, VkExtent2D e
   in.weatherView = view.weatherView;
   in.skyView = view.skyView;
   in.aerialPerspective = view.aerialPerspective;
+  in.terrain = view.terrain;
   in.frameIndex = frameIndex_;
   in.reset = cutNext_;
   return in;
@@ -200,7 +214,11 @@ std::string CloudHarness::tryRender(const CloudView& view, const clouds::Setting
   device_.immediateSubmit([&](VkCommandBuffer cmd) {
     lastInputs_ = makeInputs(view, extent, cmd);
     const std::uint32_t scope = timer_->begin(cmd, "clouds");
-    ok = context_->dispatch(lastInputs_, settings, &error);
+    // The terrain's shadow reaches the clouds through this frame's shadow map.
+    if (view.terrain.heightView != VK_NULL_HANDLE) {
+      ok = context_->dispatchShadowMap(lastInputs_, settings, &error);
+    }
+    ok = ok && context_->dispatch(lastInputs_, settings, &error);
     timer_->end(cmd, scope);
   });
   const auto scopes = timer_->resolve();

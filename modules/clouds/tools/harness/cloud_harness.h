@@ -42,6 +42,9 @@ struct CloudView {
   VkImageView skyView = VK_NULL_HANDLE;
   // Optional haze (FrameInputs::aerialPerspective), its view sampled in SHADER_READ_ONLY_OPTIMAL.
   clouds::FrameInputs::AerialPerspective aerialPerspective;
+  // Optional terrain heightfield (FrameInputs::terrain); with it render() also records the
+  // shadow map before each frame, as the terrain's shadow on the clouds needs.
+  clouds::FrameInputs::Terrain terrain;
 };
 
 glm::vec3 sunDirection(const CloudView& view);
@@ -69,15 +72,18 @@ struct CloudFrame {
 };
 
 // The cloud shadow map as read back (Outputs::shadowMap): texels (optical depth, highest and
-// lowest cloud altitude, 1), row-major, and where its cascades lay.
+// lowest cloud altitude, terrain shadow altitude), row-major, and where its cascades lay.
 struct ShadowMapImage {
   std::uint32_t width = 0;
   std::uint32_t height = 0;
   std::vector<glm::vec4> texels;
   clouds::ShadowMapParameters parameters;
   // The receivers' lookup (vkfx/cloud_shadow.h) on these texels, filtered as a linear clamped
-  // sampler filters: the clouds' transmittance towards the sun at a camera-relative position.
-  float transmittance(const glm::vec3& relative) const;
+  // sampler filters, at a camera-relative position: the clouds' transmittance towards the sun
+  // (x) and the light the terrain lets through (y).
+  glm::vec2 lookup(const glm::vec3& relative) const;
+  float transmittance(const glm::vec3& relative) const { return lookup(relative).x; }
+  float terrainLight(const glm::vec3& relative) const { return lookup(relative).y; }
 };
 
 // `settings` rendered as one self-contained frame: every pixel marched at full resolution, no

@@ -7,6 +7,7 @@
 #include "cloud_march.h"
 #include "cloud_shadow_march.h"
 #include "cloud_weather_maxima.h"
+#include "terrain_shadow_march.h"
 #include "uniforms.h"
 #include "vkfx/cloud_shadow.h"
 
@@ -49,6 +50,16 @@ vec4 fetchMaximaSource(ivec2 t) {
 vec4 fetchWeatherMaxCoarse(ivec2 t) {
   return texel(gTextures->weatherMaxCoarse,
                std::size_t(t.y) * kWeatherMaxCoarseSize + std::size_t(t.x));
+}
+// The reference marches without the host's terrain.
+float terrainSunLight(vec3, float) {
+  return 1.0f;
+}
+
+// The heightfield cpuTerrainShadowTexel() walks over (one thread).
+thread_local const clouds::tools::CpuHeightfield* tHeightfield = nullptr;
+float fetchTerrainHeight(vec2 uv) {
+  return tHeightfield->at(uv);
 }
 
 }  // namespace clouds::shader
@@ -131,6 +142,45 @@ glm::vec4 cpuShadowTexel(const CpuTextures& textures, const CloudUniforms& u,
   gTextures = nullptr;
   return vec4(std::min(column.opticalDepth, vkfx::shader::kCloudShadowMaxDepth),
               column.frontAltitude, column.backAltitude, 1.0f);
+}
+
+float CpuHeightfield::at(glm::vec2 uv) const {
+  const glm::vec2 p = uv * glm::vec2(width, height) - 0.5f;
+  const glm::vec2 base = glm::floor(p);
+  const glm::vec2 f = p - base;
+  const auto texel = [&](int x, int y) {
+    const int cx = std::clamp(x, 0, int(width) - 1);
+    const int cy = std::clamp(y, 0, int(height) - 1);
+    return metres[std::size_t(cy) * width + std::size_t(cx)];
+  };
+  const int x = int(base.x);
+  const int y = int(base.y);
+  return glm::mix(glm::mix(texel(x, y), texel(x + 1, y), f.x),
+                  glm::mix(texel(x, y + 1), texel(x + 1, y + 1), f.x), f.y);
+}
+
+float cpuTerrainShadowTexel(const CpuHeightfield& heightfield, const TerrainShadowConstants& t,
+                            glm::uvec2 texel) {
+  tHeightfield = &heightfield;
+  const float top = terrainShadowTexel(t, texel);
+  tHeightfield = nullptr;
+  return top;
+}
+
+bool cpuTerrainHidesSun(const CpuHeightfield& heightfield, glm::vec2 origin, glm::vec2 size,
+                        float cameraAltitude, const glm::vec3& relative, const glm::vec3& light,
+                        float stepMetres) {
+  float highest = -1e30f;
+  for (float h : heightfield.metres) highest = std::max(highest, h);
+  const float altitude = cameraAltitude + relative.y;
+  // Walk until the ray clears the highest terrain or leaves the heightfield.
+  for (float s = stepMetres; altitude + light.y * s <= highest; s += stepMetres) {
+    const glm::vec2 p = glm::vec2(relative.x, relative.z) + glm::vec2(light.x, light.z) * s;
+    const glm::vec2 uv = (p - origin) / size;
+    if (uv.x < 0.0f || uv.y < 0.0f || uv.x > 1.0f || uv.y > 1.0f) break;
+    if (heightfield.at(uv) > altitude + light.y * s) return true;
+  }
+  return false;
 }
 
 double cpuSunOpticalDepth(const CpuTextures& textures, const CloudUniforms& u,

@@ -49,4 +49,27 @@ double cpuSunOpticalDepth(const CpuTextures& textures,
                           const clouds::shader::CloudUniforms& uniforms, const glm::vec3& relative,
                           const glm::vec3& light, float stepMetres);
 
+// A terrain heightfield on the CPU: altitudes (m), row-major, row 0 at the image's v = 0
+// (world z = origin.y), read as a linear sampler clamped to the edge reads it.
+struct CpuHeightfield {
+  std::uint32_t width = 0;
+  std::uint32_t height = 0;
+  std::vector<float> metres;
+  float at(glm::vec2 uv) const;
+};
+
+// What terrain_shadow_map.comp should store in the alpha of `texel` of the cascade a dispatch
+// made with `constants` (Context internals: lastTerrainShadowJobs()): the shared walk on the CPU.
+float cpuTerrainShadowTexel(const CpuHeightfield& heightfield,
+                            const clouds::shader::TerrainShadowConstants& constants,
+                            glm::uvec2 texel);
+
+// The ground truth of the terrain's shadow: whether the terrain (`heightfield` placed at the
+// camera-relative corner `origin` with extent `size`, m) rises above the ray from the
+// camera-relative point `relative` towards the sun along `light`, walked in `stepMetres`
+// steps. `cameraAltitude` is the camera's altitude (m).
+bool cpuTerrainHidesSun(const CpuHeightfield& heightfield, glm::vec2 origin, glm::vec2 size,
+                        float cameraAltitude, const glm::vec3& relative, const glm::vec3& light,
+                        float stepMetres);
+
 }  // namespace clouds::tools

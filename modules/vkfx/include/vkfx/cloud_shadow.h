@@ -10,10 +10,23 @@
 // Layout: one RGBA16F 2D image holding `cascades` square cascades side by side (cascade c is
 // the texels [c N, (c + 1) N) x [0, N) for N texels per side). Texel: r the optical depth of
 // the whole sun ray through the cloud layer (dimensionless, capped at kCloudShadowMaxDepth),
-// g the altitude (m) of the ray's highest cloud, b the altitude of its lowest, a 1. A ray
-// with no cloud stores 0 and the altitudes of the layer's top and bottom (so that filtering it
-// with a cloudy neighbour fades the depth and keeps the neighbour's cloud where it is). Filter
-// it linearly, clamped.
+// g the altitude (m) of the ray's highest cloud, b the altitude of its lowest, a the terrain's
+// shadow on the ray (below). A ray with no cloud stores 0 and the altitudes of the layer's top
+// and bottom (so that filtering it with a cloudy neighbour fades the depth and keeps the
+// neighbour's cloud where it is). Filter it linearly, clamped.
+//
+// The terrain's shadow (when the map was made with the host's terrain heightfield): the sun ray
+// only climbs, so the points of a ray that the terrain hides from the sun are those below the
+// altitude where it last leaves the ground on its way to the sun. `a` stores that altitude
+// lowered by one texel's size (the rays of a texel's footprint differ by that much, and a
+// receiver on a sunlit slope lies exactly at its own ray's last exit) and by the ramp below;
+// a ray the terrain never hides stores an altitude below every receiver. Receivers at or above
+// `a` + kCloudShadowTerrainRampMetres see the sun past the terrain, those at or below `a` do
+// not. Without terrain every ray stores kCloudShadowNoTerrain. Unlike the clouds' channels this
+// one is compared before it is filtered (percentage-closer filtering over the 2 x 2 texels a
+// linear filter would blend): at a low sun neighbouring rays pass hundreds of metres apart in
+// altitude, and the edge of a shadow is where one is hidden and the next is not, which
+// blending the altitudes first would smear into a wrong altitude.
 //
 // Each cascade is an orthographic view along the sun: texel (i, j) of cascade c is the sun ray
 // through the camera-relative point (u0 + (i + 0.5) s) U + (v0 + (j + 0.5) s) V, with U, V two
@@ -32,6 +45,10 @@ VKFX_SHADER_BEGIN(vkfx::shader)
 const int kCloudShadowMaxCascades = 4;
 // Optical depth is stored up to this (exp(-64) is 1.6e-28: nothing passes).
 const float kCloudShadowMaxDepth = 64.0f;
+// The terrain's shadow fades over this many metres of altitude below its edge.
+const float kCloudShadowTerrainRampMetres = 30.0f;
+// The terrain channel of a map made without terrain: below every receiver.
+const float kCloudShadowNoTerrain = -30000.0f;
 
 // std140: 12 + 1 vec4s. Cascade c is cascade[3 c + 0..2]:
 //   [3 c + 0] xyz U (unit, world), w u0: the cascade's lower edge along U (m, camera-relative)
@@ -46,9 +63,12 @@ struct CloudShadowParameters {
 };
 VKFX_STATIC_ASSERT(sizeof(CloudShadowParameters) == 13 * 16);
 
-// Prototype: the includer implements the filtered read of the map at `uv` (whole image, [0, 1]
-// per axis): GLSL with textureLod on a linear, clamped sampler; C++ with its own bilinear.
+// Prototypes: the includer implements the filtered read of the map at `uv` (whole image, [0, 1]
+// per axis; GLSL: textureLod on a linear, clamped sampler) and the gather of the terrain
+// channel of the 2 x 2 texels that read blends, in textureGather's order (i, j + 1),
+// (i + 1, j + 1), (i + 1, j), (i, j) (GLSL: textureGather(map, uv, 3)). C++: its own.
 vec4 fetchCloudShadow(vec2 uv);
+vec4 gatherCloudShadowTerrain(vec2 uv);
 
 // Optical depth between the sun and a receiver at `altitudeMetres` from a (filtered) texel.
 VKFX_INLINE float cloudShadowOpticalDepth(vec4 texel, float altitudeMetres) {
@@ -70,14 +90,28 @@ VKFX_INLINE float cloudShadowCascadeWeight(vec2 uv, float band) {
   return clamp(min(edge.x, edge.y) / max(band, 1e-6f), 0.0f, 1.0f);
 }
 
-// Optical depth from cascade `c` at cascade coordinates `uv` for a receiver at an altitude;
-// `info` is CloudShadowParameters::info.
-VKFX_INLINE float cloudShadowCascadeDepth(vec4 info, float c, vec2 uv, float altitudeMetres) {
+// The sun light a receiver at `altitudeMetres` gets past the terrain, 0 in the terrain's shadow
+// and 1 out of it: compared with each of the 2 x 2 texels around the atlas coordinates `atlas`,
+// then blended as a linear filter would (percentage-closer filtering). `info` is
+// CloudShadowParameters::info.
+VKFX_INLINE float cloudShadowTerrainLight(vec4 info, vec2 atlas, float altitudeMetres) {
+  const vec2 size = vec2(info.x * info.y, info.y);
+  const vec2 f = fract(atlas * size - 0.5f);
+  const vec4 light = clamp(
+      (vec4(altitudeMetres) - gatherCloudShadowTerrain(atlas)) / kCloudShadowTerrainRampMetres,
+      vec4(0.0f), vec4(1.0f));
+  return mix(mix(light.w, light.z, f.x), mix(light.x, light.y, f.x), f.y);
+}
+
+// The optical depth of the clouds (x) and the terrain's light (y) from cascade `c` at cascade
+// coordinates `uv` for a receiver at an altitude; `info` is CloudShadowParameters::info.
+VKFX_INLINE vec2 cloudShadowCascadeSample(vec4 info, float c, vec2 uv, float altitudeMetres) {
   const float n = info.y;
   // Clamp half a texel inside the cascade: linear filtering must not read its neighbour.
   const vec2 inside = clamp(uv, vec2(0.5f / n), vec2(1.0f - 0.5f / n));
   const vec2 atlas = vec2((c + inside.x) / max(info.x, 1.0f), inside.y);
-  return cloudShadowOpticalDepth(fetchCloudShadow(atlas), altitudeMetres);
+  return vec2(cloudShadowOpticalDepth(fetchCloudShadow(atlas), altitudeMetres),
+              cloudShadowTerrainLight(info, atlas, altitudeMetres));
 }
 
 // Every cascade's coordinates of a camera-relative position: cascades 0 and 1 in `uv01`
@@ -96,12 +130,11 @@ VKFX_INLINE void cloudShadowCoordinatesOf(vec4 u0, vec4 v0, vec4 l0, vec4 u1, ve
   uv23 = vec4(c2.x, c2.y, c3.x, c3.y);
 }
 
-// The clouds' transmittance towards the sun for a receiver at `altitudeMetres` whose cascade
-// coordinates are `uv01`, `uv23` (cloudShadowCoordinatesOf()): from the finest cascade that
-// holds it, blended into the next near its edge, and fading to 1 (no shadow) at the edge of
-// the last one. One read, two in a blend band.
-VKFX_INLINE float cloudShadowTransmittanceAt(vec4 info, vec4 uv01, vec4 uv23,
-                                             float altitudeMetres) {
+// The sun a receiver at `altitudeMetres` gets, whose cascade coordinates are `uv01`, `uv23`
+// (cloudShadowCoordinatesOf()): x the clouds' transmittance, y the terrain's light (0 in its
+// shadow). From the finest cascade that holds the receiver, blended into the next near its
+// edge, and fading to no shadow at the edge of the last one. One read, two in a blend band.
+VKFX_INLINE vec2 cloudShadowAt(vec4 info, vec4 uv01, vec4 uv23, float altitudeMetres) {
   const float count = info.x;
   const float band = info.w;
   const vec2 c0 = vec2(uv01.x, uv01.y);
@@ -119,27 +152,29 @@ VKFX_INLINE float cloudShadowTransmittanceAt(vec4 info, vec4 uv01, vec4 uv23,
   const vec2 a = first < 0.5f ? c0 : first < 1.5f ? c1 : first < 2.5f ? c2 : c3;
   const vec2 b = first < 0.5f ? c1 : first < 1.5f ? c2 : c3;
   // Loops of 0 or 1 trips: a CPU device skips them when no lane of a group needs them, where
-  // it would run an if's body regardless. Past the last cascade the blend goes to no shadow.
-  float depthA = 0.0f;
-  float depthB = 0.0f;
+  // it would run an if's body regardless. Past the last cascade the blend goes to no shadow
+  // (no optical depth, full light).
+  vec2 sampleA = vec2(0.0f, 1.0f);
+  vec2 sampleB = vec2(0.0f, 1.0f);
   for (int i = 0; i < (weight > 0.0f ? 1 : 0); ++i) {
-    depthA = cloudShadowCascadeDepth(info, first, a, altitudeMetres);
+    sampleA = cloudShadowCascadeSample(info, first, a, altitudeMetres);
   }
   for (int i = 0; i < (weight < 1.0f && first + 1.0f < count ? 1 : 0); ++i) {
-    depthB = cloudShadowCascadeDepth(info, first + 1.0f, b, altitudeMetres);
+    sampleB = cloudShadowCascadeSample(info, first + 1.0f, b, altitudeMetres);
   }
-  return exp(-(depthA * weight + depthB * (1.0f - weight)));
+  const vec2 blended = sampleA * weight + sampleB * (1.0f - weight);
+  return vec2(exp(-blended.x), blended.y);
 }
 
-// The clouds' transmittance towards the sun at a camera-relative position (metres; y up).
-VKFX_INLINE float cloudShadowTransmittance(IN(CloudShadowParameters) p, vec3 relative) {
-  if (p.info.x < 0.5f) return 1.0f;  // no map
+// cloudShadowAt() at a camera-relative position (metres; y up).
+VKFX_INLINE vec2 cloudShadowAtPosition(IN(CloudShadowParameters) p, vec3 relative) {
+  if (p.info.x < 0.5f) return vec2(1.0f);  // no map
   vec4 uv01;
   vec4 uv23;
   cloudShadowCoordinatesOf(p.cascade[0], p.cascade[1], p.cascade[2], p.cascade[3], p.cascade[4],
                            p.cascade[5], p.cascade[6], p.cascade[7], p.cascade[8], p.cascade[9],
                            p.cascade[10], p.cascade[11], relative, uv01, uv23);
-  return cloudShadowTransmittanceAt(p.info, uv01, uv23, p.info.z + relative.y);
+  return cloudShadowAt(p.info, uv01, uv23, p.info.z + relative.y);
 }
 
 // For shaders: cloudShadowCoordinatesOf() with the fields of a parameter block in a uniform
