@@ -199,10 +199,12 @@ std::string timingList(const std::vector<std::pair<std::string, double>>& timing
 void printDescription(const ecs::App& app, const Renderer& renderer, const RunPlan& plan) {
   std::vector<std::string> modules;
   for (auto m : app.installedModules()) modules.emplace_back(m);
-  std::printf("{\"scene\": \"%s\", \"passes\": [%s], \"pipelines\": [%s], \"modules\": [%s]}\n",
-              plan.scene.name.c_str(), joined(renderer.passNames(), "\"", ", ").c_str(),
-              joined(renderer.pipelineNames(), "\"", ", ").c_str(),
-              joined(modules, "\"", ", ").c_str());
+  std::printf(
+      "{\"scene\": \"%s\", \"passes\": [%s], \"pipelines\": [%s], \"modules\": [%s], "
+      "\"shadow casters\": [%s]}\n",
+      plan.scene.name.c_str(), joined(renderer.passNames(), "\"", ", ").c_str(),
+      joined(renderer.pipelineNames(), "\"", ", ").c_str(), joined(modules, "\"", ", ").c_str(),
+      joined(renderer.shadowCasters(), "\"", ", ").c_str());
 }
 
 void logRun(ecs::World& world, const Renderer& renderer, const LoopStats& stats) {

@@ -266,6 +266,23 @@ TEST(Terrain, HeightFieldIsConservative) {
   EXPECT_EQ(field.heightAt(5000.0, 0.0), 0.0);
 }
 
+// What long shadows are cast from: the surface itself, exact on a planar ramp (linear
+// interpolation on its triangles), without the conservative field's lift.
+TEST(Terrain, SurfaceSamplesLieOnTheMesh) {
+  const engine::assets::MeshData mesh = ramp();
+  const sample::SurfaceHeights s = sample::sampleSurface(mesh, 50);
+  ASSERT_EQ(s.metres.size(), 2500u);
+  const glm::dvec2 cell = s.sizeMetres / 50.0;
+  for (std::uint32_t j = 0; j < 50; ++j) {
+    for (std::uint32_t i = 0; i < 50; ++i) {
+      const double x = s.originMetres.x + (i + 0.5) * cell.x;
+      EXPECT_NEAR(s.metres[j * 50 + i], (x + 1000.0) * 0.5, 1e-3) << i << ", " << j;
+    }
+  }
+  EXPECT_NEAR(s.minMetres, (0.5 * cell.x) * 0.5, 1e-3);
+  EXPECT_NEAR(s.maxMetres, (2000.0 - 0.5 * cell.x) * 0.5, 1e-3);
+}
+
 TEST(Terrain, ChunksPartitionEveryTriangleOnceAndCoarserLevelsHaveFewer) {
   const engine::assets::MeshData mesh = ramp();
   std::vector<std::uint32_t> indices;

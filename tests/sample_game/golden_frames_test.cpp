@@ -1,7 +1,8 @@
 // Golden frames: the sample renders small views headless from scripts (ground view of clouds
 // over mountains, terrain hiding clouds, a cloud in front of a mountain, above the layer,
-// inside a cloud, noon, sunset, cumulus overhead, towards the sun, an overcast stratus deck: the
-// review set's views among them) and each is compared with its committed golden image by the
+// inside a cloud, noon, sunset, cumulus overhead, towards the sun, an overcast stratus deck,
+// a ridge shading clouds at sunset, cloud shadows on the plains at noon: the review set's
+// views among them) and each is compared with its committed golden image by the
 // tolerance tree in golden_compare.h. Every run writes the actual images to
 // build/golden_output/ (what tools/promote_goldens.sh copies into tests/goldens/); a failing
 // view also gets <name>_actual/_expected/_diff.png in build/golden_failures/.
@@ -43,6 +44,9 @@ std::vector<GoldenRun> goldenRuns() {
       // A stratus deck (the project's overcast scene, as the review set shows it).
       {fs::path(SAMPLE_ASSET_DIR) / "scenes/overcast_stratus.json",
        tests / "scripts/golden_overcast_views.json"},
+      // Long shadows both ways: the range's on low cumulus at sunset, the clouds' on the
+      // plains at noon.
+      {tests / "scenes/ridge_sunset.json", tests / "scripts/golden_shadow_views.json"},
   };
 }
 

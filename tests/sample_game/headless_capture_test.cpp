@@ -111,7 +111,7 @@ TEST(HeadlessCapture, EachSceneGetsOnlyThePassesAndPipelinesItNeeds) {
       {scene("sky_only.json"), R"("passes": ["sky", "tonemap", "capture"])",
        R"("pipelines": ["tonemap", "sky"])", R"("modules": [])"},
       {scene("terrain_only.json"), R"("passes": ["sky", "terrain", "tonemap", "capture"])",
-       R"("pipelines": ["tonemap", "sky", "terrain"])", R"("modules": [])"},
+       R"("pipelines": ["tonemap", "sky", "terrain"])", R"("modules": [], "shadow casters": [])"},
       {scene("clouds_only.json"),
        R"("passes": ["sky", "clouds", "clouds composite", "tonemap", "capture"])",
        R"("pipelines": ["tonemap", "sky", "clouds module"])", R"("modules": ["clouds"])"},
@@ -124,12 +124,19 @@ TEST(HeadlessCapture, EachSceneGetsOnlyThePassesAndPipelinesItNeeds) {
        R"("tonemap", "capture"])",
        R"x("pipelines": ["tonemap", "terrain (cloud shadows)", "atmosphere module", )x"
        R"x("clouds module"])x",
-       R"("modules": ["atmosphere", "clouds"])"},
+       R"("modules": ["atmosphere", "clouds"], "shadow casters": ["clouds", "terrain"])"},
+      // A terrain that casts no shadows: the clouds' map alone.
+      {scene("ridge_sunset_unshadowing.json"),
+       R"("passes": ["cloud shadows", "atmosphere", "scene", "clouds", "clouds composite", )"
+       R"("tonemap", "capture"])",
+       R"x("pipelines": ["tonemap", "terrain (cloud shadows)", "atmosphere module", )x"
+       R"x("clouds module"])x",
+       R"("shadow casters": ["clouds"])"},
       // A layer that casts no shadows: no shadow pass, the plain terrain.
       {scene("unshadowed_clouds.json"),
        R"("passes": ["sky", "terrain", "clouds", "clouds composite", "tonemap", "capture"])",
        R"("pipelines": ["tonemap", "sky", "terrain", "clouds module"])",
-       R"("modules": ["clouds"])"},
+       R"("modules": ["clouds"], "shadow casters": [])"},
   };
   for (const Case& c : cases) {
     const std::string out =
@@ -165,6 +172,34 @@ TEST(HeadlessCapture, CloudsShadowTheTerrainInPatches) {
               100.0 * double(darker) / double(pixels), 100.0 * double(brighter) / double(pixels));
   EXPECT_GT(darker, pixels / 20) << "too little of the ground is shadowed";
   EXPECT_LT(darker, pixels * 3 / 4) << "the ground is shadowed everywhere";
+  EXPECT_EQ(brighter, 0u) << "a shadow only takes light away";
+}
+
+// Mountains shade the clouds: at sunset the range's long shadows take the sun from the low
+// cumulus behind it (and from the terrain in its lee); nothing gets brighter.
+TEST(HeadlessCapture, MountainsShadeTheCloudsAtSunset) {
+  const fs::path bare = freshDir("unshadowing_terrain");
+  const fs::path shading = freshDir("shading_terrain");
+  const std::string common =
+      "--headless --frames 6 --width 240 --height 135 --validation --capture ";
+  ASSERT_EQ(
+      runSample(common + bare.string() + " --scene " + scene("ridge_sunset_unshadowing.json")), 0);
+  ASSERT_EQ(runSample(common + shading.string() + " --scene " + scene("ridge_sunset.json")), 0);
+  const ImageRgba32f a = engine::assets::readImage(bare / "frame_0005.exr");
+  const ImageRgba32f b = engine::assets::readImage(shading / "frame_0005.exr");
+  ASSERT_EQ(a.pixels.size(), b.pixels.size());
+  std::size_t darker = 0;
+  std::size_t brighter = 0;
+  const std::size_t pixels = a.pixels.size() / 4;
+  for (std::size_t i = 0; i < pixels; ++i) {
+    const float la = a.pixels[4 * i] + a.pixels[4 * i + 1] + a.pixels[4 * i + 2];
+    const float lb = b.pixels[4 * i] + b.pixels[4 * i + 1] + b.pixels[4 * i + 2];
+    darker += lb < 0.8f * la ? 1u : 0u;
+    brighter += lb > 1.01f * la ? 1u : 0u;
+  }
+  std::printf("terrain shadows: %.1f%% of pixels 20%% darker, %.2f%% brighter\n",
+              100.0 * double(darker) / double(pixels), 100.0 * double(brighter) / double(pixels));
+  EXPECT_GT(darker, pixels / 100) << "the range's shadows must reach clouds and valleys";
   EXPECT_EQ(brighter, 0u) << "a shadow only takes light away";
 }
 

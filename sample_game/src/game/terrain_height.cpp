@@ -52,4 +52,51 @@ double TerrainHeightField::heightAt(double x, double z) const {
       {cellHeight(i, j), cellHeight(i + 1, j), cellHeight(i, j + 1), cellHeight(i + 1, j + 1)});
 }
 
+SurfaceHeights sampleSurface(const engine::assets::MeshData& mesh, std::uint32_t resolution) {
+  SurfaceHeights s;
+  s.resolution = resolution;
+  s.originMetres = glm::dvec2(mesh.boundsMin.x, mesh.boundsMin.z);
+  s.sizeMetres =
+      glm::max(glm::dvec2(mesh.boundsMax.x, mesh.boundsMax.z) - s.originMetres, glm::dvec2(1e-3));
+  s.metres.assign(std::size_t{resolution} * resolution, mesh.boundsMin.y);
+  const glm::dvec2 cell = s.sizeMetres / double(resolution);
+  const int last = static_cast<int>(resolution) - 1;
+  for (std::size_t t = 0; t + 2 < mesh.indices.size(); t += 3) {
+    const glm::dvec3 a(mesh.positions[mesh.indices[t]]);
+    const glm::dvec3 b(mesh.positions[mesh.indices[t + 1]]);
+    const glm::dvec3 c(mesh.positions[mesh.indices[t + 2]]);
+    // Twice the signed area in (x, z): degenerate (vertical) triangles hold no centre.
+    const double area = (b.x - a.x) * (c.z - a.z) - (c.x - a.x) * (b.z - a.z);
+    if (std::abs(area) < 1e-12) continue;
+    // The centres inside the triangle's box: index i has its centre at (i + 0.5) cells.
+    const auto first = [&](double v, double lo, double step) {
+      return std::clamp(static_cast<int>(std::ceil((v - lo) / step - 0.5)), 0, last);
+    };
+    const auto final = [&](double v, double lo, double step) {
+      return std::clamp(static_cast<int>(std::floor((v - lo) / step - 0.5)), 0, last);
+    };
+    const int i0 = first(std::min({a.x, b.x, c.x}), s.originMetres.x, cell.x);
+    const int i1 = final(std::max({a.x, b.x, c.x}), s.originMetres.x, cell.x);
+    const int j0 = first(std::min({a.z, b.z, c.z}), s.originMetres.y, cell.y);
+    const int j1 = final(std::max({a.z, b.z, c.z}), s.originMetres.y, cell.y);
+    for (int j = j0; j <= j1; ++j) {
+      for (int i = i0; i <= i1; ++i) {
+        const glm::dvec2 p = s.originMetres + (glm::dvec2(i, j) + 0.5) * cell;
+        // Barycentric weights of b and c (a gets the rest); inside with a small tolerance so
+        // centres on shared edges are not lost.
+        const double wb = ((p.x - a.x) * (c.z - a.z) - (c.x - a.x) * (p.y - a.z)) / area;
+        const double wc = ((b.x - a.x) * (p.y - a.z) - (p.x - a.x) * (b.z - a.z)) / area;
+        const double wa = 1.0 - wb - wc;
+        if (wa < -1e-9 || wb < -1e-9 || wc < -1e-9) continue;
+        s.metres[std::size_t(j) * resolution + std::size_t(i)] =
+            static_cast<float>(wa * a.y + wb * b.y + wc * c.y);
+      }
+    }
+  }
+  const auto [low, high] = std::minmax_element(s.metres.begin(), s.metres.end());
+  s.minMetres = *low;
+  s.maxMetres = *high;
+  return s;
+}
+
 }  // namespace sample

@@ -48,6 +48,13 @@ Renderer::Renderer(gfx::Device& device, render::PresentTarget& target, ecs::Worl
     terrain_ = std::make_unique<TerrainRenderer>(device, *mesh->mesh, kHdrFormat, kDepthFormat,
                                                  featureSky, cloudShadows);
     pipelines.push_back(&terrain_->pipeline());
+    // Mountains shade the clouds and themselves through the clouds' shadow map: without a map
+    // (or with a terrain that casts none) the heightfield is not even made.
+    if (cloudShadows && mesh->castsShadows) {
+      heightfield_ = std::make_unique<TerrainHeightfieldImage>(device, *mesh->mesh);
+      world.ctx().emplaceOrReplace<render::TerrainHeightfield>(heightfield_->description());
+      world_ = &world;
+    }
   }
   if (options.hud) {
     hud_ = std::make_unique<Hud>(device, target.format());
@@ -72,6 +79,8 @@ Renderer::Renderer(gfx::Device& device, render::PresentTarget& target, ecs::Worl
 
 Renderer::~Renderer() {
   finish();
+  // The heightfield goes with the renderer: nothing may read its view afterwards.
+  if (world_) world_->ctx().emplaceOrReplace<render::TerrainHeightfield>();
 }
 
 void Renderer::rebuildGraph(VkExtent2D extent) {
@@ -203,6 +212,16 @@ std::vector<std::string> Renderer::passNames() const {
     for (const char* name : graph_->executionOrder()) names.emplace_back(name);
   }
   return names;
+}
+
+std::vector<std::string> Renderer::shadowCasters() const {
+  std::vector<std::string> casters;
+  if (std::any_of(features_.begin(), features_.end(),
+                  [](const render::RenderFeature* f) { return f->castsCloudShadow(); })) {
+    casters.emplace_back("clouds");
+  }
+  if (heightfield_) casters.emplace_back("terrain");
+  return casters;
 }
 
 std::vector<std::string> Renderer::pipelineNames() const {

@@ -26,6 +26,7 @@
 #include "engine/render/tonemap_pass.h"
 #include "game/game_components.h"
 #include "render/sky_pass.h"
+#include "render/terrain_heightfield.h"
 
 namespace sample {
 
@@ -54,6 +55,9 @@ class Renderer {
 
   std::vector<std::string> passNames() const;
   std::vector<std::string> pipelineNames() const;
+  // What casts long shadows this frame: "clouds" (a feature's shadow map), "terrain" (its
+  // heightfield, handed to that map).
+  std::vector<std::string> shadowCasters() const;
   std::span<const engine::gfx::TimedScope> lastGpuTimings() const { return ring_.lastTimings(); }
   const engine::render::FrameCapture& capture() const { return capture_; }
   Hud* hud() { return hud_.get(); }
@@ -70,6 +74,10 @@ class Renderer {
   engine::render::Tonemapper tonemapper_;
   std::unique_ptr<SkyPass> sky_;  // when no feature draws the sky
   std::unique_ptr<TerrainRenderer> terrain_;
+  // The terrain's heightfield, when it casts shadows and something makes them (the clouds'
+  // shadow map): published as engine::render::TerrainHeightfield.
+  std::unique_ptr<TerrainHeightfieldImage> heightfield_;
+  engine::ecs::World* world_ = nullptr;
   std::vector<engine::render::RenderFeature*> features_;    // owned by their modules
   std::vector<engine::render::RenderFeature*> skyDrawers_;  // those of them that draw the sky
   std::unique_ptr<Hud> hud_;

@@ -54,6 +54,7 @@ TerrainDescription readTerrain(const JsonReader& r, const std::filesystem::path&
   TerrainDescription t;
   const std::string gltf = r.string("gltf");
   t.gltf = gltf == "default" ? std::filesystem::path("default") : resolveFile(r, "gltf", sceneDir);
+  t.castsShadows = r.boolean("castsShadows", true);
   r.finish();
   return t;
 }

@@ -36,6 +36,9 @@ struct SunDescription {
 struct TerrainDescription {
   // "default" (the generated terrain) or a .gltf/.glb path relative to the scene file.
   std::filesystem::path gltf;
+  // Whether mountains shade the clouds and cast long shadows on the terrain (through the
+  // clouds' shadow map, so only in a scene whose clouds cast shadows).
+  bool castsShadows = true;
 };
 
 struct CloudDescription {

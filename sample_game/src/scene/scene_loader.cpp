@@ -96,7 +96,8 @@ void populateScene(ecs::App& app, const SceneDescription& scene,
   // The terrain, for both the renderer and the ground collision.
   if (terrain) {
     world.ctx().emplaceOrReplace<TerrainHeightField>(*terrain->mesh);
-    world.ctx().emplaceOrReplace<TerrainMesh>(TerrainMesh{terrain->mesh});
+    world.ctx().emplaceOrReplace<TerrainMesh>(
+        TerrainMesh{terrain->mesh, !scene.terrain || scene.terrain->castsShadows});
     const ecs::Entity entity = world.create();
     world.emplace<TerrainInstance>(entity, TerrainInstance{terrain->path});
   }

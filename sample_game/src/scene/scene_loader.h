@@ -20,6 +20,7 @@ namespace sample {
 // The loaded terrain mesh (placed in the world), for the renderer to upload.
 struct TerrainMesh {
   std::shared_ptr<const engine::assets::MeshData> mesh;
+  bool castsShadows = true;  // TerrainDescription::castsShadows
 };
 
 struct LoadedTerrain {

@@ -60,6 +60,15 @@ clouds::FrameInputs cloudFrameInputs(engine::ecs::World& world, const HostFrame&
   if (const auto* time = world.ctx().tryGet<engine::ecs::FrameTime>()) {
     in.timeSeconds = time->elapsedSeconds;
   }
+  // The ground, when the scene's terrain casts shadows: mountains shade the clouds (and the
+  // terrain itself, through the shadow map).
+  if (const auto* ground = world.ctx().tryGet<render::TerrainHeightfield>()) {
+    in.terrain.heightView = ground->view;
+    in.terrain.originMetres = ground->originMetres;
+    in.terrain.sizeMetres = ground->sizeMetres;
+    in.terrain.minAltitudeMetres = ground->minAltitudeMetres;
+    in.terrain.maxAltitudeMetres = ground->maxAltitudeMetres;
+  }
   return in;
 }
 

@@ -2,6 +2,8 @@
 // Components every renderer of the engine understands, independent of any game: the viewpoint,
 // the sun and what the air lets through of it, the sky's light, fog. Effect adapters (the
 // clouds, the atmosphere) read and provide these; games write them.
+#include <vulkan/vulkan.h>
+
 #include <functional>
 #include <glm/glm.hpp>
 #include <glm/gtc/quaternion.hpp>
@@ -65,6 +67,19 @@ struct SkyLight {
   glm::vec3 zenith{1.5f, 2.8f, 6.5f};
   glm::vec3 horizon{5.5f, 6.2f, 7.5f};
   glm::vec3 ground{1.2f, 1.2f, 1.0f};
+};
+
+// Context singleton: the scene's ground as a heightfield on the GPU, for effects that need its
+// shape rather than its triangles (the clouds' terrain shadow). Published by whoever owns the
+// terrain, for as long as the image lives; absent when nothing should be shadowed by the
+// terrain. The image is static, in SHADER_READ_ONLY_OPTIMAL, one float channel that filters
+// linearly: altitude (m), texel (0, 0) at `originMetres`, u along +x and v along +z.
+struct TerrainHeightfield {
+  VkImageView view = VK_NULL_HANDLE;
+  glm::dvec2 originMetres{0.0};  // world (x, z) of the image's corner
+  glm::dvec2 sizeMetres{0.0};    // world extent along x and z
+  float minAltitudeMetres = 0.0f;
+  float maxAltitudeMetres = 0.0f;
 };
 
 // Context singleton: exponential distance fog towards the sky, the cheap alternative for scenes

@@ -36,7 +36,8 @@ clouds::Settings cloudSettings(engine::ecs::World& world);
 // This frame's inputs. The module remembers the previous camera itself. The sun reaching the
 // clouds is the Sun through the world's SunTransmittance at the layer's middle altitude (the
 // atmosphere's, when the scene has one: sunset clouds are lit by the sun its air reddens); their
-// ambient is the sky's radiance when the host provides it, else the SkyLight singleton.
+// ambient is the sky's radiance when the host provides it, else the SkyLight singleton; the
+// terrain is the TerrainHeightfield singleton, when the scene publishes one.
 clouds::FrameInputs cloudFrameInputs(engine::ecs::World& world, const HostFrame& host);
 
 }  // namespace clouds::ecs
