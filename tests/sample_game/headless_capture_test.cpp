@@ -153,7 +153,7 @@ TEST(HeadlessCapture, CloudsShadowTheTerrainInPatches) {
   const fs::path lit = freshDir("unshadowed");
   const fs::path shadowed = freshDir("shadowed");
   const std::string common =
-      "--headless --frames 4 --width 160 --height 90 --validation --capture ";
+      "--headless --frames 4 --fixed-dt 0.05 --width 160 --height 90 --validation --capture ";
   ASSERT_EQ(runSample(common + lit.string() + " --scene " + scene("unshadowed_range.json")), 0);
   ASSERT_EQ(runSample(common + shadowed.string() + " --scene " + scene("shadowed_range.json")), 0);
   const ImageRgba32f a = engine::assets::readImage(lit / "frame_0003.exr");
@@ -181,7 +181,7 @@ TEST(HeadlessCapture, MountainsShadeTheCloudsAtSunset) {
   const fs::path bare = freshDir("unshadowing_terrain");
   const fs::path shading = freshDir("shading_terrain");
   const std::string common =
-      "--headless --frames 6 --width 240 --height 135 --validation --capture ";
+      "--headless --frames 6 --fixed-dt 0.05 --width 240 --height 135 --validation --capture ";
   ASSERT_EQ(
       runSample(common + bare.string() + " --scene " + scene("ridge_sunset_unshadowing.json")), 0);
   ASSERT_EQ(runSample(common + shading.string() + " --scene " + scene("ridge_sunset.json")), 0);

@@ -48,21 +48,26 @@ vec4 fetchWeatherMaxCoarse(ivec2 texel) { return imageLoad(weatherMaxCoarse, tex
 layout(binding = kMarchCloudShadow) uniform sampler2D cloudShadowMap;
 vec4 fetchCloudShadow(vec2 uv) { return textureLod(cloudShadowMap, uv, 0.0f); }
 vec4 gatherCloudShadowTerrain(vec2 uv) { return textureGather(cloudShadowMap, uv, 3); }
-#include "vkfx/cloud_shadow.h"
 // Indexed like frame_uniforms.glsl's block, for the same reason.
-layout(binding = kMarchCloudShadowParameters, std140) uniform CloudShadow {
-  CloudShadowParameters cloudShadow[1];
+layout(binding = kMarchCloudShadowParameters, std140) uniform TerrainShadow {
+  MarchTerrainShadow terrainShadow[1];
 };
 
 // The share of the sun that a sample at a camera-relative (x, z) and an altitude gets past the
 // terrain: read from the shadow map's terrain channel when the host gave its terrain.
 float terrainSunLight(vec3 flatOffset, float altitude) {
   if (kTerrainShadow == 0u) return 1.0f;
-  const vec3 relative = vec3(flatOffset.x, altitude - u.cameraAltitudeMetres, flatOffset.z);
-  vec4 uv01;
-  vec4 uv23;
-  CLOUD_SHADOW_COORDINATES(cloudShadow[gl_NumWorkGroups.z - 1u], relative, uv01, uv23);
-  return cloudShadowAt(cloudShadow[gl_NumWorkGroups.z - 1u].info, uv01, uv23, altitude).y;
+  const uint slot = gl_NumWorkGroups.z - 1u;
+  float light = 1.0f;
+  // Only below the highest terrain (a loop of 0 or 1 trips: most cloud is above it).
+  for (int i = 0; i < (altitude < terrainShadow[slot].terrainTopMetres ? 1 : 0); ++i) {
+    const vec3 relative = vec3(flatOffset.x, altitude - u.cameraAltitudeMetres, flatOffset.z);
+    vec4 uv01;
+    vec4 uv23;
+    CLOUD_SHADOW_COORDINATES(terrainShadow[slot].map, relative, uv01, uv23);
+    light = cloudShadowAt(terrainShadow[slot].map.info, uv01, uv23, altitude).y;
+  }
+  return light;
 }
 
 #include "cloud_march.h"

@@ -2,7 +2,8 @@
 // Cloud shadow map (compute): one cascade of the Beer shadow map per dispatch, one invocation
 // per texel. Each texel's sun ray is marched up through the layer with the shared model
 // (cloud_shadow_march.h) and stored as the receivers read it (vkfx/cloud_shadow.h): optical
-// depth, highest and lowest cloud altitude; no terrain (terrain_shadow_map.comp writes that).
+// depth, highest and lowest cloud altitude; the terrain channel kept or emptied
+// (terrain_shadow_map.comp writes it).
 // Inputs: binding 0 CloudUniforms (this frame's field: camera-relative offsets, coverage,
 // extinction); 1 shape noise; 2 weather map; 3-4 weather maxima (empty-space skipping); push
 // constants ShadowMapConstants (the cascade's placement). Output: 5 the cascade atlas (its
@@ -22,7 +23,7 @@ layout(binding = kShadowShapeNoise, rgba8) uniform readonly image3D shapeNoise;
 layout(binding = kShadowWeatherMap, rgba8) uniform readonly image2D weatherMap;
 layout(binding = kShadowWeatherMaxFine, rgba8) uniform readonly image2D weatherMaxFine;
 layout(binding = kShadowWeatherMaxCoarse, rgba8) uniform readonly image2D weatherMaxCoarse;
-layout(binding = kShadowMapOut, rgba16f) uniform writeonly image2D shadowMap;
+layout(binding = kShadowMapOut, rgba16f) uniform image2D shadowMap;
 layout(push_constant) uniform Constants { ShadowMapConstants c; };
 
 vec4 fetchShapeNoise(ivec3 texel) { return imageLoad(shapeNoise, texel); }
@@ -41,7 +42,11 @@ void main() {
   const uvec2 texel = gl_GlobalInvocationID.xy;
   if (any(greaterThanEqual(texel, uvec2(c.resolution)))) return;
   const ShadowColumn column = marchShadowTexel(c, texel, kEmptySpace, u);
-  imageStore(shadowMap, ivec2(c.cascade * c.resolution + texel.x, texel.y),
+  const ivec2 atlas = ivec2(c.cascade * c.resolution + texel.x, texel.y);
+  // The terrain does not move: a cascade remade over the same rays keeps its terrain channel.
+  float terrain = kCloudShadowNoTerrain;
+  for (int i = 0; i < int(c.keepTerrain); ++i) terrain = imageLoad(shadowMap, atlas).a;
+  imageStore(shadowMap, atlas,
              vec4(min(column.opticalDepth, kCloudShadowMaxDepth), column.frontAltitude,
-                  column.backAltitude, kCloudShadowNoTerrain));
+                  column.backAltitude, terrain));
 }

@@ -10,6 +10,7 @@
 #ifndef CLOUDS_CLOUD_TYPES_H
 #define CLOUDS_CLOUD_TYPES_H
 
+#include "vkfx/cloud_shadow.h"
 #include "vkfx/shader_interop.h"
 
 VKFX_SHADER_BEGIN(clouds::shader)
@@ -271,9 +272,25 @@ struct ShadowMapConstants {
   uint cascade;      // which cascade of the atlas
   uint resolution;   // texels per cascade side
   uint steps;        // samples along each ray
-  uint padding0;
+  // 1: the cascade's terrain channel (alpha) is still right (same rays, same terrain): keep it.
+  // 0: write "no terrain" (terrain_shadow_map.comp follows when there is one).
+  uint keepTerrain;
   uint padding1;
   uint padding2;
+};
+
+// The march's uniform block for the terrain's shadow on the clouds (kMarchCloudShadowParameters):
+// the shadow map's lookup parameters, and the terrain's highest altitude (no sample above it can
+// be in the terrain's shadow: the march does not look).
+#ifdef __cplusplus
+using vkfx::shader::CloudShadowParameters;
+#endif
+struct MarchTerrainShadow {
+  CloudShadowParameters map;
+  float terrainTopMetres;
+  float padding0;
+  float padding1;
+  float padding2;
 };
 
 // Push constants of the terrain's shadow (terrain_shadow_march.h): the cascade, and where the
@@ -346,6 +363,7 @@ static_assert(sizeof(clouds::shader::MaximaConstants) == 16);
 static_assert(sizeof(clouds::shader::CompositeConstants) == 16);
 static_assert(sizeof(clouds::shader::ShadowMapConstants) == 80);
 static_assert(sizeof(clouds::shader::TerrainShadowConstants) == 128);
+static_assert(sizeof(clouds::shader::MarchTerrainShadow) == 14 * 16);
 #undef CLOUDS_ASSERT_OFFSET
 #endif
 

@@ -3,6 +3,8 @@
 // record_trace.cpp.
 #include "context_impl.h"
 
+#include <cstring>
+
 #include "cloud_density.h"
 #include "pipeline_variants.h"
 
@@ -95,7 +97,7 @@ Context::Impl::Impl(const CreateInfo& info, const detail::VulkanFunctions& funct
     slot.shadowMap = allocateSet(Program::ShadowMap);
     slot.terrainShadow = allocateSet(Program::TerrainShadow);
     slot.shadowParameters =
-        detail::OwnedBuffer(device_, sizeof(ShadowMapParameters),
+        detail::OwnedBuffer(device_, sizeof(shader::MarchTerrainShadow),
                             VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT,
                             "shadow parameters " + std::to_string(i));
   }
@@ -283,10 +285,13 @@ void Context::Impl::dispatch(const FrameInputs& inputs, const Settings& settings
     const bool terrainShadow = inputs.terrain.heightView != VK_NULL_HANDLE &&
                                settings.shadowCascades > 0 && images_.shadowMap &&
                                shadowFrame_ == inputs.frameIndex;
-    const ShadowMapParameters shadow =
-        terrainShadow
-            ? shadowCascades_.parameters(inputs.cameraPosition, inputs.timeSeconds, settings)
-            : ShadowMapParameters{};
+    shader::MarchTerrainShadow shadow{};
+    if (terrainShadow) {
+      const ShadowMapParameters p =
+          shadowCascades_.parameters(inputs.cameraPosition, inputs.timeSeconds, settings);
+      std::memcpy(&shadow.map, &p, sizeof(p));
+      shadow.terrainTopMetres = inputs.terrain.maxAltitudeMetres;
+    }
     recordUniforms(cmd, slot, lastUniforms_, shadow);
     if (inputs.skyView != VK_NULL_HANDLE) recordSkyAmbient(cmd, inputs, slot);
     recordTrace(cmd, inputs, settings, temporal, traceExtent, terrainShadow, slot);

@@ -92,7 +92,7 @@ class Context::Impl {
     detail::OwnedBuffer shadowUniforms;  // the CloudUniforms the shadow map is made with
     VkDescriptorSet shadowMap = VK_NULL_HANDLE;
     VkDescriptorSet terrainShadow = VK_NULL_HANDLE;
-    detail::OwnedBuffer shadowParameters;  // the march's copy of the map's lookup parameters
+    detail::OwnedBuffer shadowParameters;  // the march's MarchTerrainShadow
   };
 
   VkDescriptorSet allocateSet(detail::Program program);
@@ -123,7 +123,7 @@ class Context::Impl {
 
   // record_trace.cpp
   void recordUniforms(VkCommandBuffer cmd, Slot& slot, const shader::CloudUniforms& uniforms,
-                      const ShadowMapParameters& shadow);
+                      const shader::MarchTerrainShadow& shadow);
   void recordSkyAmbient(VkCommandBuffer cmd, const FrameInputs& inputs, Slot& slot);
   void recordClearSky(VkCommandBuffer cmd, Slot& slot);
   void recordTrace(VkCommandBuffer cmd, const FrameInputs& inputs, const Settings& settings,

@@ -1,7 +1,9 @@
 // Recording the cloud shadow map: this frame's field uniforms into the slot's shadow buffer,
 // then one dispatch per cascade due (shadow_cascades.h decides which), then, with the host's
-// terrain, one more per cascade for its terrain channel, ending with the atlas visible to the
-// host's compute and fragment shaders.
+// terrain, one more per cascade whose rays moved for its terrain channel, ending with the atlas
+// visible to the host's compute and fragment shaders.
+#include <algorithm>
+
 #include "context_impl.h"
 #include "pipeline_variants.h"
 
@@ -68,7 +70,11 @@ void Context::Impl::recordShadowMap(VkCommandBuffer cmd, const FrameInputs& inpu
     lastShadowJobs_.push_back(constants);
     fn.vkCmdDispatch(cmd, groups, groups, 1);
   }
-  if (inputs.terrain.heightView != VK_NULL_HANDLE) {
+  const bool terrainDue =
+      inputs.terrain.heightView != VK_NULL_HANDLE &&
+      std::any_of(plan.jobs.begin(), plan.jobs.end(),
+                  [](const detail::CascadeJob& job) { return !job.keepTerrain; });
+  if (terrainDue) {
     // The terrain pass reads the clouds' channels back and writes them with its own.
     detail::memoryBarrier(device_, cmd, kCompute, detail::kStorageWrite, kCompute,
                           detail::kStorageRead | detail::kStorageWrite);
@@ -106,6 +112,7 @@ void Context::Impl::recordTerrainShadow(VkCommandBuffer cmd, const FrameInputs& 
       detail::groupsFor(settings.shadowMapResolution, shader::kWorkgroupSize2D);
   lastTerrainShadowJobs_.clear();
   for (const detail::CascadeJob& job : plan.jobs) {
+    if (job.keepTerrain) continue;  // made over the same rays: still right
     const shader::TerrainShadowConstants constants =
         detail::terrainShadowConstants(job, inputs, settings);
     fn.vkCmdPushConstants(cmd, program.layout(), VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof(constants),

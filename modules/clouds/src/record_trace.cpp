@@ -30,7 +30,7 @@ std::uint32_t historyVariant(bool use, bool still) {
 
 void Context::Impl::recordUniforms(VkCommandBuffer cmd, Slot& slot,
                                    const shader::CloudUniforms& uniforms,
-                                   const ShadowMapParameters& shadow) {
+                                   const shader::MarchTerrainShadow& shadow) {
   // The previous frame of this slot has completed (host contract), but earlier commands in
   // this queue may still read it: order the update after them.
   detail::memoryBarrier(device_, cmd, kCompute, VK_ACCESS_2_UNIFORM_READ_BIT | kStorageRead,
@@ -106,7 +106,7 @@ void Context::Impl::recordTrace(VkCommandBuffer cmd, const FrameInputs& inputs,
           clampedLinearSampler_.get(),
           terrainShadow ? VK_IMAGE_LAYOUT_GENERAL : VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL)
       .uniformBuffer(kMarchCloudShadowParameters, slot.shadowParameters.buffer(),
-                     sizeof(ShadowMapParameters))
+                     sizeof(MarchTerrainShadow))
       .commit();
   detail::SetWriter(device_, slot.reconstruct)
       .uniformBuffer(kBindingUniforms, uniforms, uniformBytes)

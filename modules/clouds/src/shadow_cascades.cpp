@@ -125,15 +125,29 @@ ShadowPlan ShadowCascades::plan(const FrameInputs& in, const Settings& s) const 
     jobs.push_back(placement(c, in, s));
     chosen[c] = true;
   }
+  const bool sameTerrainAndSteps = in.terrain.heightView != VK_NULL_HANDLE &&
+                                   sameTerrain(in.terrain, terrain_) &&
+                                   s.terrainShadowSteps == settings_.terrainShadowSteps;
+  for (CascadeJob& job : jobs) {
+    const Made& t = terrainMade_[job.cascade];
+    job.keepTerrain = sameTerrainAndSteps && t.valid && t.cornerTexel == job.cornerTexel &&
+                      t.texelMetres == job.texelMetres && t.basis.light == job.basis.light &&
+                      t.basis.u == job.basis.u;
+  }
   return plan;
 }
 
 void ShadowCascades::commit(const ShadowPlan& plan, const FrameInputs& in, const Settings& s) {
+  const bool terrain = in.terrain.heightView != VK_NULL_HANDLE;
   for (const CascadeJob& job : plan.jobs) {
     made_[job.cascade] = Made{true, job.basis, job.cornerTexel, job.texelMetres, in.timeSeconds};
+    terrainMade_[job.cascade] = terrain ? made_[job.cascade] : Made{};
   }
   turn_ = plan.nextTurn;
-  for (std::uint32_t c = s.shadowCascades; c < made_.size(); ++c) made_[c] = Made{};
+  for (std::uint32_t c = s.shadowCascades; c < made_.size(); ++c) {
+    made_[c] = Made{};
+    terrainMade_[c] = Made{};
+  }
   settings_ = s;
   weatherView_ = in.weatherView;
   terrain_ = in.terrain;
@@ -180,6 +194,7 @@ shader::ShadowMapConstants shadowMapConstants(const CascadeJob& job, const glm::
   k.cascade = job.cascade;
   k.resolution = s.shadowMapResolution;
   k.steps = s.shadowSteps;
+  k.keepTerrain = job.keepTerrain ? 1u : 0u;
   return k;
 }
 

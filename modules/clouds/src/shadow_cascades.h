@@ -48,6 +48,9 @@ struct CascadeJob {
   ShadowBasis basis;
   glm::i64vec2 cornerTexel{0, 0};  // world grid index (along U, V) of the cascade's texel 0
   double texelMetres = 0.0;
+  // The cascade's terrain channel was made over these very rays and this terrain: keep it
+  // (the terrain does not move), no terrain pass for it.
+  bool keepTerrain = false;
 };
 
 // What a frame makes: the cascades that must be remade at once, then those whose turn it is.
@@ -72,7 +75,10 @@ class ShadowCascades {
   // The plan's jobs were recorded in this frame.
   void commit(const ShadowPlan& plan, const FrameInputs& inputs, const Settings& settings);
   // The map's contents are gone (its image was replaced): everything is remade next time.
-  void forget() { made_ = {}; }
+  void forget() {
+    made_ = {};
+    terrainMade_ = {};
+  }
 
   // The lookup parameters relative to the camera at `cameraPosition` at `timeSeconds`.
   ShadowMapParameters parameters(const glm::dvec3& cameraPosition, double timeSeconds,
@@ -91,6 +97,8 @@ class ShadowCascades {
              const Settings& settings) const;
 
   std::array<Made, vkfx::shader::kCloudShadowMaxCascades> made_{};
+  // Where each cascade's terrain channel was made (valid: with the current terrain).
+  std::array<Made, vkfx::shader::kCloudShadowMaxCascades> terrainMade_{};
   std::uint64_t turn_ = 0;
   Settings settings_{};  // those the made cascades were made with
   VkImageView weatherView_ = VK_NULL_HANDLE;

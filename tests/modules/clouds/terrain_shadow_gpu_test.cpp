@@ -242,6 +242,52 @@ TEST_F(TerrainShadow, NoTerrainNoTerrainPass) {
   EXPECT_TRUE(timed) << "with a terrain the pass runs (and is timed)";
 }
 
+// The terrain does not move: a cascade remade over the same rays keeps its terrain channel and
+// the terrain pass does not run; a camera that moved a cascade's rays gets them walked again.
+TEST_F(TerrainShadow, UnmovedCascadesKeepTheirTerrainChannel) {
+  clouds::tools::HarnessOptions options;
+  options.passTimings = true;
+  clouds::tools::CloudHarness h(device(), {64, 64}, options);
+  CloudView view = lowSunView(6.0);
+  const CpuHeightfield field = ridgeTowards(clouds::tools::sunDirection(view));
+  const HeightfieldImage image(field);
+  view.terrain = image.terrain(field);
+  const clouds::Settings s;
+  const auto ranTerrainPass = [&] {
+    for (const clouds::PassTiming& t : h.lastPassTimings()) {
+      if (std::string(t.name) == "terrain shadow") return true;
+    }
+    return false;
+  };
+  const ShadowMapImage first = h.renderShadowMap(view, s, 1);
+  EXPECT_TRUE(ranTerrainPass());
+  view.timeSeconds += 0.1;
+  const ShadowMapImage kept = h.renderShadowMap(view, s, 3);
+  EXPECT_FALSE(ranTerrainPass()) << "still camera: nothing to walk again";
+  ASSERT_EQ(first.texels.size(), kept.texels.size());
+  for (std::size_t i = 0; i < first.texels.size(); ++i) {
+    ASSERT_EQ(first.texels[i].w, kept.texels[i].w) << "texel " << i;
+  }
+  view.position.x += 1000.0;  // 13 finest texels: the finest cascade's rays move
+  h.renderShadowMap(view, s, 2);
+  EXPECT_TRUE(ranTerrainPass());
+  const auto& jobs = clouds::detail::ContextAccess::impl(h.context()).lastTerrainShadowJobs();
+  ASSERT_FALSE(jobs.empty());
+  const ShadowMapImage moved = h.readShadowMap();
+  for (const auto& job : jobs) {
+    for (std::uint32_t y = 5; y < s.shadowMapResolution; y += 17) {
+      for (std::uint32_t x = 7; x < s.shadowMapResolution; x += 19) {
+        const float cpu = clouds::tools::cpuTerrainShadowTexel(field, job, {x, y});
+        const float gpu = moved
+                              .texels[std::size_t{y} * moved.width +
+                                      job.cascade.cascade * s.shadowMapResolution + x]
+                              .w;
+        EXPECT_NEAR(gpu, cpu, 4.0 + 0.002 * std::abs(cpu));
+      }
+    }
+  }
+}
+
 TEST_F(TerrainShadow, BadTerrainInputsAreRefusedByName) {
   const CloudView base = lowSunView(6.0);
   const CpuHeightfield field = ridgeTowards(clouds::tools::sunDirection(base));
