@@ -5,11 +5,15 @@
 // radiance the air between the camera and there scatters towards the camera (unit sun
 // illuminance; single scattering with its phases, plus the multiple-scattering LUT) and the
 // transmittance (mean of the channels). Past the ground or the top of the atmosphere the
-// values stay as they were there.
-// Inputs: uniforms, transmittance and multiple-scattering LUTs. Output: the 3D texture
-// (RGBA16F, rgb in-scattering, a transmittance).
+// values stay as they were there. With a cloud shadow map (kFlagCloudShadow) the sun's single
+// scattering is taken where the map hides the sun (by cloud or terrain): light shafts.
+// Inputs: uniforms, transmittance and multiple-scattering LUTs, the cloud shadow map and its
+// parameters. Output: the 3D texture (RGBA16F, rgb in-scattering, a transmittance).
 #extension GL_GOOGLE_include_directive : require
 #include "atmosphere_types.h"
+// The model's single scattering asks what shadows the air (defined below).
+float cloudSunVisibility(vec3 relative);
+#define ATMOSPHERE_SUN_VISIBILITY(relative) cloudSunVisibility(relative)
 #include "atmosphere_model.h"
 
 layout(local_size_x = kWorkgroupSize2D, local_size_y = kWorkgroupSize2D) in;
@@ -17,6 +21,31 @@ layout(local_size_x = kWorkgroupSize2D, local_size_y = kWorkgroupSize2D) in;
 layout(binding = kBindingTransmittance) uniform sampler2D transmittanceLut;
 layout(binding = kBindingMultiScattering) uniform sampler2D multiScatteringLut;
 layout(binding = kBindingTarget, rgba16f) uniform writeonly image3D target;
+
+layout(binding = kBindingCloudShadow) uniform sampler2D cloudShadowMap;
+vec4 fetchCloudShadow(vec2 uv) { return textureLod(cloudShadowMap, uv, 0.0); }
+vec4 gatherCloudShadowTerrain(vec2 uv) { return textureGather(cloudShadowMap, uv, 3); }
+#include "vkfx/cloud_shadow.h"
+// Indexed like the uniforms (atmosphere_uniforms.glsl), read in place.
+layout(binding = kBindingCloudShadowParameters, std140) uniform CloudShadow {
+  CloudShadowParameters cloudShadow[1];
+};
+
+// The sun the cloud shadow map lets through to a point of the air (1 without a map): the
+// clouds' transmittance times the terrain's light.
+float cloudSunVisibility(vec3 relative) {
+  float visibility = 1.0;
+  for (int i = 0; i < ((u.flags & kFlagCloudShadow) != 0u ? 1 : 0); ++i) {
+    const uint slot = gl_NumWorkGroups.z - 1u;
+    vec4 uv01;
+    vec4 uv23;
+    CLOUD_SHADOW_COORDINATES(cloudShadow[slot], relative, uv01, uv23);
+    const vec2 sun = cloudShadowAt(cloudShadow[slot].info, uv01, uv23,
+                                   cloudShadow[slot].info.z + relative.y);
+    visibility = sun.x * sun.y;
+  }
+  return visibility;
+}
 
 vec3 sampleTransmittance(vec2 uv) { return textureLod(transmittanceLut, uv, 0.0).rgb; }
 vec3 sampleMultiScattering(vec2 uv) { return textureLod(multiScatteringLut, uv, 0.0).rgb; }

@@ -27,6 +27,13 @@
 
 #include "atmosphere_interop.h"
 
+// The share of the sun that reaches a point of the air at `relative` (metres from the camera,
+// world axes; only along aerial-perspective rays), for an includer that knows what shadows the
+// air (aerial_perspective.comp: the cloud shadow map). By default nothing does.
+#ifndef ATMOSPHERE_SUN_VISIBILITY
+#define ATMOSPHERE_SUN_VISIBILITY(relative) real(1.0)
+#endif
+
 ATMOSPHERE_MODEL_BEGIN
 
 const real kPi = 3.14159265358979;
@@ -256,7 +263,7 @@ VKFX_INLINE void scatterAlong(INOUT(Scattering) s, vec3 origin, vec3 direction, 
     const vec3 toSun = sunTransmittance(radius, muSun, a);
     vec3 source = phaseMode == kPhaseIsotropic ? m.scattering * (1.0 / (4.0 * kPi))
                                                : m.rayleigh * phaseR + m.mie * phaseM;
-    source *= toSun;
+    source *= toSun * ATMOSPHERE_SUN_VISIBILITY(direction * t);
     if (multipleScattering != 0u) {
       source += m.scattering *
                 sampleMultiScattering(multiScatteringUv(radius, muSun, a, multiScatteringSize));

@@ -25,6 +25,8 @@ const uint kBindingAerialPerspective = 4u;  // the aerial-perspective froxels, s
 const uint kBindingTarget = 5u;             // the storage image a pass writes
 const uint kBindingHostDepth = 6u;          // apply.comp: the host's depth, sampled
 const uint kBindingSkyLighting = 7u;        // environment.comp: SkyLighting, host-visible
+const uint kBindingCloudShadow = 8u;  // aerial_perspective.comp: the cloud shadow map, sampled
+const uint kBindingCloudShadowParameters = 9u;  // ... and its CloudShadowParameters
 
 // --- Specialization constants -------------------------------------------------------------------
 const uint kSpecHasDepth = 0u;   // apply.comp: 0 every pixel is sky, 1 the host's depth is bound
@@ -32,7 +34,8 @@ const uint kSpecReversedZ = 1u;  // apply.comp, sky_draw.vert: 1 the far plane i
 const uint kApplySpecCount = 2u;
 
 // --- Flags in AtmosphereUniforms.flags ----------------------------------------------------------
-const uint kFlagReversedZ = 1u;  // host depth: near = 1, far/sky = 0
+const uint kFlagReversedZ = 1u;    // host depth: near = 1, far/sky = 0
+const uint kFlagCloudShadow = 2u;  // FrameInputs::cloudShadow: the air is shadowed by it
 
 // The aerial-perspective froxels: slice s (texel centre) lies at distance
 // range * ((s + 0.5) / slices)^2 along each pixel's ray, so slices are dense near the camera;

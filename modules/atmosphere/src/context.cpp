@@ -72,6 +72,17 @@ std::string checkInputs(const FrameInputs& in, const CreateInfo& info) {
   if (!finite(e) || !nonNegative(e)) {
     return "FrameInputs.sunIlluminance: must be finite and not negative";
   }
+  if (in.cloudShadow.view != VK_NULL_HANDLE) {
+    for (const glm::vec4& v : in.cloudShadow.parameters) {
+      if (!finite(v)) return "FrameInputs.cloudShadow.parameters: must be finite";
+    }
+    const glm::vec4& shadowInfo = in.cloudShadow.parameters[12];
+    if (shadowInfo.x < 0.0f || shadowInfo.x > 4.0f ||
+        (shadowInfo.x > 0.0f && shadowInfo.y < 1.0f)) {
+      return "FrameInputs.cloudShadow.parameters: info (the last vec4) must hold 0 to 4 "
+             "cascades of at least one texel";
+    }
+  }
   return {};
 }
 

@@ -72,6 +72,10 @@ Context::Impl::Impl(const CreateInfo& info, const detail::VulkanFunctions& funct
         detail::OwnedBuffer(device_, sizeof(shader::AtmosphereUniforms),
                             VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT,
                             "uniforms " + std::to_string(i));
+    slot.cloudShadow =
+        detail::OwnedBuffer(device_, sizeof(FrameInputs::CloudShadow::parameters),
+                            VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT,
+                            "cloud shadow parameters " + std::to_string(i));
     slot.lighting = detail::OwnedBuffer(device_, sizeof(shader::SkyLighting),
                                         VK_BUFFER_USAGE_STORAGE_BUFFER_BIT,
                                         "sky lighting " + std::to_string(i), /*hostVisible=*/true);

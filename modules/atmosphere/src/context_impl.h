@@ -66,7 +66,8 @@ class Context::Impl {
   static constexpr std::size_t kPrograms = static_cast<std::size_t>(detail::Program::Count);
   struct Slot {
     detail::OwnedBuffer uniforms;
-    detail::OwnedBuffer lighting;  // host-visible SkyLighting
+    detail::OwnedBuffer cloudShadow;  // FrameInputs::cloudShadow's parameters
+    detail::OwnedBuffer lighting;     // host-visible SkyLighting
     std::optional<std::uint64_t> lightingFrame;
     std::array<VkDescriptorSet, kPrograms> sets{};
     VkDescriptorSet skyDrawSet = VK_NULL_HANDLE;  // with CreateInfo::skyPassColorFormat
@@ -84,7 +85,9 @@ class Context::Impl {
   void endPass(VkCommandBuffer cmd, detail::Program program);
   void bindAndDispatch(VkCommandBuffer cmd, detail::Program program, const Slot& slot,
                        std::uint32_t x, std::uint32_t y, std::uint32_t z = 1);
-  void writeSets(Slot& slot, VkImageView depth, VkImageLayout depthLayout, VkImageView color);
+  // `shadow`: the frame's cloud shadow (dispatch(); render() passes none and keeps it).
+  void writeSets(Slot& slot, VkImageView depth, VkImageLayout depthLayout, VkImageView color,
+                 const FrameInputs::CloudShadow* shadow = nullptr);
 
   // Declaration order is destruction order reversed: everything below uses device_.
   CreateInfo info_;

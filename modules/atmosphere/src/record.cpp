@@ -60,9 +60,11 @@ void Context::Impl::dispatch(const FrameInputs& inputs, const Parameters& parame
                         VK_PIPELINE_STAGE_2_TRANSFER_BIT | kCompute,
                         VK_ACCESS_2_TRANSFER_WRITE_BIT | detail::kStorageWrite);
   fn.vkCmdUpdateBuffer(cmd, slot.uniforms.buffer(), 0, sizeof(lastUniforms_), &lastUniforms_);
+  fn.vkCmdUpdateBuffer(cmd, slot.cloudShadow.buffer(), 0, sizeof(inputs.cloudShadow.parameters),
+                       inputs.cloudShadow.parameters);
   detail::memoryBarrier(device_, cmd, VK_PIPELINE_STAGE_2_TRANSFER_BIT,
                         VK_ACCESS_2_TRANSFER_WRITE_BIT, kReadStages, VK_ACCESS_2_UNIFORM_READ_BIT);
-  writeSets(slot, VK_NULL_HANDLE, VK_IMAGE_LAYOUT_UNDEFINED, VK_NULL_HANDLE);
+  writeSets(slot, VK_NULL_HANDLE, VK_IMAGE_LAYOUT_UNDEFINED, VK_NULL_HANDLE, &inputs.cloudShadow);
 
   // A pass over a width x height texture whose result the next passes sample.
   const auto lutPass = [&](Program program, std::uint32_t width, std::uint32_t height) {
@@ -99,7 +101,7 @@ void Context::Impl::dispatch(const FrameInputs& inputs, const Parameters& parame
 }
 
 void Context::Impl::writeSets(Slot& slot, VkImageView depth, VkImageLayout depthLayout,
-                              VkImageView color) {
+                              VkImageView color, const FrameInputs::CloudShadow* shadow) {
   using namespace shader;
   const VkSampler linear = linearSampler_.get();
   const VkImageLayout general = VK_IMAGE_LAYOUT_GENERAL;
@@ -128,15 +130,24 @@ void Context::Impl::writeSets(Slot& slot, VkImageView depth, VkImageLayout depth
       .sampledImage(kBindingTransmittance, transmittance_.view(), linear, general)
       .storageImage(kBindingTarget, multiScattering_.view())
       .commit();
-  for (Program p : {Program::SkyView, Program::AerialPerspective}) {
-    detail::SetWriter(device_, set(p))
-        .uniformBuffer(kBindingUniforms, uniforms, bytes)
-        .sampledImage(kBindingTransmittance, transmittance_.view(), linear, general)
-        .sampledImage(kBindingMultiScattering, multiScattering_.view(), linear, general)
-        .storageImage(kBindingTarget,
-                      p == Program::SkyView ? skyView_.view() : aerialPerspective_.view())
-        .commit();
-  }
+  detail::SetWriter(device_, set(Program::SkyView))
+      .uniformBuffer(kBindingUniforms, uniforms, bytes)
+      .sampledImage(kBindingTransmittance, transmittance_.view(), linear, general)
+      .sampledImage(kBindingMultiScattering, multiScattering_.view(), linear, general)
+      .storageImage(kBindingTarget, skyView_.view())
+      .commit();
+  // Without a cloud shadow map any 2D image fills its binding (the shader does not read it).
+  const bool shadowed = shadow != nullptr && shadow->view != VK_NULL_HANDLE;
+  detail::SetWriter(device_, set(Program::AerialPerspective))
+      .uniformBuffer(kBindingUniforms, uniforms, bytes)
+      .sampledImage(kBindingTransmittance, transmittance_.view(), linear, general)
+      .sampledImage(kBindingMultiScattering, multiScattering_.view(), linear, general)
+      .storageImage(kBindingTarget, aerialPerspective_.view())
+      .sampledImage(kBindingCloudShadow, shadowed ? shadow->view : depthPlaceholder_.view(), linear,
+                    shadowed ? shadow->layout : general)
+      .uniformBuffer(kBindingCloudShadowParameters, slot.cloudShadow.buffer(),
+                     sizeof(FrameInputs::CloudShadow::parameters))
+      .commit();
   if (skyDraw_) {
     detail::SetWriter(device_, slot.skyDrawSet)
         .uniformBuffer(kBindingUniforms, uniforms, bytes)

@@ -53,6 +53,7 @@ shader::AtmosphereUniforms buildUniforms(const FrameInputs& in, const Parameters
   u.skyViewSize = glm::uvec2(s.skyViewWidth, s.skyViewHeight);
   u.skyViewSamples = s.skyViewSamples;
   u.flags = reversedZ ? shader::kFlagReversedZ : 0u;
+  if (in.cloudShadow.view != VK_NULL_HANDLE) u.flags |= shader::kFlagCloudShadow;
   u.outputExtent = glm::uvec2(in.renderExtent.width, in.renderExtent.height);
   u.aerialPerspectiveSize =
       glm::uvec4(s.aerialPerspectiveWidth, s.aerialPerspectiveHeight, s.aerialPerspectiveSlices,

@@ -7,10 +7,13 @@
 
 #include <cmath>
 #include <glm/gtc/constants.hpp>
+#include <glm/gtc/packing.hpp>
+#include <span>
 
 #include "atmosphere_harness.h"
 #include "atmosphere_reference.h"
 #include "context_access.h"
+#include "engine/gfx/upload.h"
 #include "engine/render/scene_components.h"
 #include "gpu_test.h"
 
@@ -154,6 +157,103 @@ TEST_F(AtmosphereGpu, AerialPerspectiveHazesTheGroundAsTheDirectIntegralDoes) {
   EXPECT_GE(psnr, 35.0);
   std::printf("hazed ground: %.1f dB over %zu pixels\n", psnr, got.size());
   EXPECT_GT(farHaze, 2.0 * nearHaze) << "far ground is hazier than near ground";
+}
+
+// Light shafts: air the cloud shadow map puts in shadow scatters no sun (single scattering),
+// only the sky's multiple scattering; its transmittance is the air's own. A map whose left
+// half (as the camera sees it) holds opaque cloud darkens the froxels looking that way and
+// leaves the others.
+TEST_F(AtmosphereGpu, AirInTheCloudsShadowScattersLess) {
+  AtmosphereHarness harness(device(), kExtent);
+  const atmosphere::Parameters earth;
+  const atmosphere::Settings settings = atmosphere::settingsFor(atmosphere::Quality::Medium);
+  SkyView view;
+  view.position.y = 500.0;
+  view.pitchDegrees = 0.0;
+  view.sunElevationDegrees = 90.0;  // symmetric left and right of the view
+  harness.render(view, earth, settings, kExtent);
+  const FloatImage lit = harness.readAerialPerspective();
+
+  // One cascade 20 km across around the camera, seen from the zenith; its texels at u < 0.5
+  // hold opaque cloud up to 6 km, the others none.
+  constexpr std::uint32_t kTexels = 128;  // 156 m texels
+  constexpr float kSide = 20000.0f;
+  std::vector<std::uint16_t> texels;
+  for (std::uint32_t y = 0; y < kTexels; ++y) {
+    for (std::uint32_t x = 0; x < kTexels; ++x) {
+      const bool cloud = x < kTexels / 2;
+      for (float v :
+           {cloud ? 64.0f : 0.0f, cloud ? 6000.0f : 4000.0f, cloud ? 0.0f : 1500.0f, -30000.0f}) {
+        texels.push_back(glm::packHalf1x16(v));
+      }
+    }
+  }
+  engine::gfx::Image map(
+      device(), engine::gfx::ImageDesc{VK_IMAGE_TYPE_2D,
+                                       VK_FORMAT_R16G16B16A16_SFLOAT,
+                                       {kTexels, kTexels, 1},
+                                       1,
+                                       1,
+                                       VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT,
+                                       "test cloud shadow map"});
+  engine::gfx::uploadToImage(
+      device(), map, std::as_bytes(std::span(texels)),
+      engine::gfx::ImageState{VK_IMAGE_LAYOUT_GENERAL, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
+                              VK_ACCESS_2_SHADER_SAMPLED_READ_BIT});
+  // The froxel columns a quarter of the view to either side of its middle row, and the
+  // horizontal axis from the left one to the right one: the map's U, so its shadowed half
+  // (u < 0.5) lies to the left of the view.
+  const VkExtent3D e = lit.extent;
+  const std::uint32_t y = e.height / 2;
+  const std::uint32_t left = e.width / 4;
+  const std::uint32_t right = e.width - 1 - e.width / 4;
+  const auto columnDirection = [&](std::uint32_t x) {
+    const glm::mat4 inverseProjection =
+        glm::inverse(atmosphere::tools::projectionMatrix(view, kExtent));
+    const glm::mat3 viewToWorld = glm::transpose(glm::mat3(atmosphere::tools::viewMatrix(view)));
+    const glm::vec2 ndc = (glm::vec2(x, y) + 0.5f) / glm::vec2(e.width, e.height) * 2.0f - 1.0f;
+    const glm::vec4 p = inverseProjection * glm::vec4(ndc, 1.0f, 1.0f);
+    return glm::normalize(viewToWorld * (glm::vec3(p) / p.w));
+  };
+  const glm::vec3 across = columnDirection(right) - columnDirection(left);
+  const glm::vec3 u = glm::normalize(glm::vec3(across.x, 0.0f, across.z));
+  const glm::vec3 v = glm::cross(glm::vec3(0.0f, 1.0f, 0.0f), u);
+  view.cloudShadow.view = map.view();
+  view.cloudShadow.parameters[0] = glm::vec4(u, -0.5f * kSide);                // U, u0
+  view.cloudShadow.parameters[1] = glm::vec4(v, -0.5f * kSide);                // V, v0
+  view.cloudShadow.parameters[2] = glm::vec4(0.0f, 1.0f, 0.0f, 1.0f / kSide);  // L, 1/side
+  view.cloudShadow.parameters[12] =
+      glm::vec4(1.0f, float(kTexels), float(view.position.y), 0.1f);  // info
+  harness.render(view, earth, settings, kExtent);
+  const FloatImage shaded = harness.readAerialPerspective();
+
+  // Slices from 1.5 to 6 km (inside the cascade, and past the camera's first few hundred metres
+  // where both columns' rays are within a texel or two of the shadow's edge): left looks into
+  // the shadowed half, right into the lit one.
+  const double range = settings.aerialPerspectiveRangeMetres;
+  double worstTransmittance = 0.0;
+  int slices = 0;
+  for (std::uint32_t z = 1; z < e.depth; ++z) {
+    const double w = (z + 0.5) / e.depth;
+    if (range * w * w < 1500.0) continue;
+    if (range * w * w > 6000.0) break;
+    ++slices;
+    const double litLeft = luminance(glm::vec3(lit.at(left, y, z)));
+    const double shadedLeft = luminance(glm::vec3(shaded.at(left, y, z)));
+    const double litRight = luminance(glm::vec3(lit.at(right, y, z)));
+    const double shadedRight = luminance(glm::vec3(shaded.at(right, y, z)));
+    // The shadowed air keeps its multiple scattering (58% of the air's light here: measured
+    // with the whole view shadowed).
+    EXPECT_LT(shadedLeft, 0.7 * litLeft) << "slice " << z << ": the shadowed air";
+    EXPECT_GT(shadedRight, 0.95 * litRight) << "slice " << z << ": the lit air";
+    EXPECT_LE(shadedRight, litRight * (1.0 + 1e-6)) << "a shadow only takes light away";
+    for (std::uint32_t x = 0; x < e.width; ++x) {
+      worstTransmittance =
+          std::max(worstTransmittance, std::abs(double(shaded.at(x, y, z).a - lit.at(x, y, z).a)));
+    }
+  }
+  EXPECT_GE(slices, 4);
+  EXPECT_LT(worstTransmittance, 1e-6) << "a shadow changes the light, not the air";
 }
 
 TEST_F(AtmosphereGpu, EnvironmentMapAndItsMeasurementMatchTheSky) {

@@ -1,5 +1,6 @@
 #include "atmosphere_feature.h"
 
+#include <algorithm>
 #include <cstring>
 
 #include "atmosphere/ecs/atmosphere_components.h"
@@ -101,10 +102,19 @@ void AtmosphereFeature::reportError(const atmosphere::Error& error) {
   errorLogged_ = true;
 }
 
-void AtmosphereFeature::dispatch(VkCommandBuffer cmd, VkExtent2D extent, std::uint64_t frameIndex) {
+void AtmosphereFeature::dispatch(VkCommandBuffer cmd, VkExtent2D extent, std::uint64_t frameIndex,
+                                 VkImageView shadowView,
+                                 const CloudShadowParameterBlock* shadowParameters) {
+  atmosphere::FrameInputs inputs = atmosphereFrameInputs(world_, cmd, extent, frameIndex);
+  // The map's parameters are filled when its pass executes, before this one.
+  if (shadowView != VK_NULL_HANDLE && shadowParameters != nullptr) {
+    inputs.cloudShadow.view = shadowView;
+    inputs.cloudShadow.layout = VK_IMAGE_LAYOUT_GENERAL;
+    std::copy(shadowParameters->begin(), shadowParameters->end(),
+              std::begin(inputs.cloudShadow.parameters));
+  }
   atmosphere::Error error;
-  dispatched_ = context_->dispatch(atmosphereFrameInputs(world_, cmd, extent, frameIndex),
-                                   parameters_, settings_, &error);
+  dispatched_ = context_->dispatch(inputs, parameters_, settings_, &error);
   if (dispatched_) {
     world_.ctx().get<AtmosphereStatus>().lastError.clear();
   } else {
@@ -140,17 +150,23 @@ SceneTextures AtmosphereFeature::addPassesBeforeScene(FrameGraph& graph,
       import("aerial perspective", imported_.aerialPerspective, VK_IMAGE_TYPE_3D);
 
   struct DispatchData {
-    TextureHandle environment, froxels;
+    TextureHandle environment, froxels, cloudShadow;
   };
   const DispatchData& made = graph.addPass<DispatchData>(
       "atmosphere", PassType::Compute,
       [&](PassBuilder& builder, DispatchData& d) {
         d.environment = builder.write(environment, Access::StorageWrite);
         d.froxels = builder.write(froxels, Access::StorageWrite);
+        if (scene.cloudShadow.valid()) {
+          d.cloudShadow = builder.read(scene.cloudShadow, Access::SampledReadGeneral);
+        }
         builder.sideEffect();  // the sky's measurement, read back by the host
       },
-      [this, extent = scene.extent](const DispatchData&, PassContext& context) {
-        dispatch(context.cmd(), extent, context.frameIndex());
+      [this, extent = scene.extent, parameters = scene.cloudShadowParameters](
+          const DispatchData& d, PassContext& context) {
+        const VkImageView shadow =
+            d.cloudShadow.valid() ? context.view(d.cloudShadow) : VK_NULL_HANDLE;
+        dispatch(context.cmd(), extent, context.frameIndex(), shadow, parameters);
       });
 
   // The sky itself is drawn in the renderer's scene pass, after its geometry, where only the

@@ -3,7 +3,8 @@
 // the engine's device, prepares it outside the frame (and publishes what the last completed
 // frame measured), and adds two passes before the renderer's opaque scene:
 //   "atmosphere"      records Context::dispatch (LUTs, froxels, the sky map) with the inputs
-//                     built from the world at that moment;
+//                     built from the world at that moment, and the clouds' shadow map when a
+//                     feature casts one (the froxels' light shafts);
 //   "atmosphere sky"  records Context::render without depth into a new scene colour: the sky
 //                     and the sun's disc in every pixel, for the renderer to draw over.
 // The sky map and the froxels are imported into the graph and handed on (SceneTextures): the
@@ -25,6 +26,8 @@ class AtmosphereFeature final : public engine::render::RenderFeature {
 
   const char* name() const override { return "atmosphere"; }
   bool drawsSky() const override { return true; }
+  // Its aerial perspective reads the clouds' shadow map: light shafts in the haze.
+  bool receivesCloudShadow() const override { return true; }
   void drawSkyInScenePass(VkCommandBuffer cmd) override;
   bool prepare(VkExtent2D extent, std::uint64_t frameIndex) override;
   engine::render::SceneTextures addPassesBeforeScene(
@@ -36,7 +39,10 @@ class AtmosphereFeature final : public engine::render::RenderFeature {
  private:
   void publishMeasurements(std::uint64_t completedFrame);
   void publishSunTransmittance();
-  void dispatch(VkCommandBuffer cmd, VkExtent2D extent, std::uint64_t frameIndex);
+  // `shadowView` and `shadowParameters`: the frame's cloud shadow map, if any.
+  void dispatch(VkCommandBuffer cmd, VkExtent2D extent, std::uint64_t frameIndex,
+                VkImageView shadowView,
+                const engine::render::CloudShadowParameterBlock* shadowParameters);
   void reportError(const atmosphere::Error& error);
 
   engine::ecs::World& world_;

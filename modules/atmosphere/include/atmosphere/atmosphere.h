@@ -130,6 +130,18 @@ struct FrameInputs {
   glm::vec3 sunDirection{0.0f, 1.0f, 0.0f};
   glm::vec3 sunIlluminance{1.0f};  // at the top of the atmosphere, host units, >= 0
   std::uint64_t frameIndex = 0;    // increases by one a frame; picks per-frame slots
+
+  // Optional shadow of the sun in the air (light shafts): a cloud shadow map laid out and read
+  // as vkfx/cloud_shadow.h says (the clouds module's Outputs::shadowMap and shadowParameters,
+  // relative to this frame's camera). With it the aerial perspective's single scattering of
+  // the sun is taken where the map says the sun is hidden (by cloud, and by terrain when the
+  // map has it), so shadowed air scatters less; its multiple scattering is left as it is.
+  struct CloudShadow {
+    VkImageView view = VK_NULL_HANDLE;               // none: the air is lit everywhere
+    VkImageLayout layout = VK_IMAGE_LAYOUT_GENERAL;  // sampled (linear, clamped) in this layout
+    glm::vec4 parameters[13]{};  // CloudShadowParameters, field for field (std140)
+  };
+  CloudShadow cloudShadow;
 };
 
 struct OutputImage {

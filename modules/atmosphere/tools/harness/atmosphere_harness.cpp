@@ -140,6 +140,7 @@ std::string AtmosphereHarness::record(const SkyView& view, const Parameters& par
     in.sunDirection = sunDirection(view);
     in.sunIlluminance = view.sunIlluminance;
     in.frameIndex = frameIndex_;
+    in.cloudShadow = view.cloudShadow;
     const std::uint32_t scope = timer_->begin(cmd, "atmosphere");
     ok = context_->dispatch(in, parameters, settings, &error) && draw(cmd, error);
     timer_->end(cmd, scope);

@@ -29,6 +29,8 @@ struct SkyView {
   // module hazes it; without it every pixel is sky.
   bool groundDepth = false;
   glm::vec3 groundColour{0.0f};
+  // Optional shadow of the sun in the air (FrameInputs::cloudShadow).
+  FrameInputs::CloudShadow cloudShadow;
 };
 
 glm::vec3 sunDirection(const SkyView& view);
