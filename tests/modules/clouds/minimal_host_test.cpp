@@ -1,10 +1,12 @@
 // Runs the module's minimal raw-Vulkan host as a user would, with validation on, and checks
 // that its image has clouds: compared with the same scene rendered without the module, a
 // good share of the sky changed, the ground-occluded boxes did not turn into cloud, and the
-// picture is neither empty nor saturated. Then as a host that enables only what the module's
-// README requires (no extension at all), under the validation layer.
+// picture is neither empty nor saturated; and that it lights its ground through the clouds'
+// shadow map. Then as a host that enables only what the module's README requires (no
+// extension at all), under the validation layer.
 #include <gtest/gtest.h>
 
+#include <cstdio>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -51,7 +53,10 @@ std::size_t occurrences(const std::string& text, const std::string& what) {
 TEST(MinimalHost, RendersCloudsValidationClean) {
   const fs::path dir = fs::temp_directory_path() / "cloudscape_minimal_host";
   fs::create_directories(dir);
-  ASSERT_EQ(run("--width 192 --height 108 --output " + (dir / "clouds.ppm").string()), 0);
+  // Without the clouds' shadow on the scene: what the clouds themselves add.
+  ASSERT_EQ(
+      run("--width 192 --height 108 --no-cloud-shadows --output " + (dir / "clouds.ppm").string()),
+      0);
   ASSERT_EQ(run("--width 192 --height 108 --no-clouds --output " + (dir / "plain.ppm").string()),
             0);
   const auto clouds = engine::assets::readImage(dir / "clouds.ppm");
@@ -77,6 +82,39 @@ TEST(MinimalHost, RendersCloudsValidationClean) {
     const float* a = clouds.at(x, clouds.height - 2);
     const float* b = plain.at(x, clouds.height - 2);
     ASSERT_NEAR(a[0], b[0], 1.5f / 255.0f) << "cloud drawn over near ground at x " << x;
+  }
+}
+
+// The host lights its ground and boxes through the clouds' shadow map, read back and looked up
+// on the CPU from the documentation alone (examples/minimal_host/ground_shadow.h): part of the
+// ground gets darker, nothing gets brighter, and the sky is left as it was.
+TEST(MinimalHost, ShadowsItsGroundThroughTheCloudShadowMap) {
+  const fs::path dir = fs::temp_directory_path() / "cloudscape_minimal_host";
+  fs::create_directories(dir);
+  ASSERT_EQ(run("--width 192 --height 108 --output " + (dir / "shadowed.ppm").string()), 0);
+  ASSERT_EQ(run("--width 192 --height 108 --no-cloud-shadows --output " +
+                (dir / "unshadowed.ppm").string()),
+            0);
+  const auto shadowed = engine::assets::readImage(dir / "shadowed.ppm");
+  const auto unshadowed = engine::assets::readImage(dir / "unshadowed.ppm");
+  ASSERT_EQ(shadowed.pixels.size(), unshadowed.pixels.size());
+  const std::size_t pixels = std::size_t{shadowed.width} * shadowed.height;
+  std::size_t darker = 0;
+  std::size_t brighter = 0;
+  for (std::size_t i = 0; i < pixels; ++i) {
+    const float* a = &shadowed.pixels[4 * i];
+    const float* b = &unshadowed.pixels[4 * i];
+    const float la = a[0] + a[1] + a[2];
+    const float lb = b[0] + b[1] + b[2];
+    darker += la < 0.8f * lb ? 1u : 0u;
+    brighter += la > lb + 1.5f / 255.0f ? 1u : 0u;
+  }
+  std::printf("minimal host: %.1f%% of pixels 20%% darker under the clouds' shadow\n",
+              100.0 * double(darker) / double(pixels));
+  EXPECT_GT(darker, pixels / 20) << "the clouds' shadow must reach the host's ground";
+  EXPECT_EQ(brighter, 0u) << "a shadow only takes light away";
+  for (std::uint32_t x = 0; x < shadowed.width; ++x) {
+    ASSERT_EQ(shadowed.at(x, 1)[0], unshadowed.at(x, 1)[0]) << "the sky changed at x " << x;
   }
 }
 

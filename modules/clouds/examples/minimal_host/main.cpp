@@ -3,18 +3,22 @@
 //   1. creates its own instance and device (Vulkan 1.3, synchronization2),
 //   2. builds a synthetic scene on the CPU: a ground plane and three tall boxes, as a
 //      reversed-Z depth buffer and a lit HDR colour image, and uploads them,
-//   3. records clouds::Context::dispatch() and composite() into its own command buffer,
-//   4. submits, reads the colour back, tonemaps it and writes a binary PPM image.
+//   3. records clouds::Context::dispatchShadowMap(), reads the cloud shadow map back and lights
+//      its scene through it on the CPU (ground_shadow.h: from the documentation alone),
+//   4. records clouds::Context::dispatch() and composite() into its own command buffer,
+//   5. submits, reads the colour back, tonemaps it and writes a binary PPM image.
 // It enables exactly what the module's README requires (Vulkan 1.3, synchronization2,
 // shaderStorageImageExtendedFormats) and no extension.
 //
 // Usage: clouds_minimal_host [--output FILE.ppm] [--width W] [--height H] [--frames N]
-//                            [--validation] [--no-clouds] [--claim-debug-utils]
+//                            [--validation] [--no-clouds] [--no-cloud-shadows]
+//                            [--claim-debug-utils]
 //   --frames N            render N frames (the temporal reconstruction at work; default 1)
 //   --validation          (or CLOUDSCAPE_VALIDATION=1) the validation layer and a debug
 //                         messenger (VK_EXT_debug_utils, then also CreateInfo::debugUtils): any
 //                         message makes it exit 3
 //   --no-clouds           the scene alone, for comparison
+//   --no-cloud-shadows    clouds, but the scene lit as if they cast no shadow
 //   --claim-debug-utils   tell the module VK_EXT_debug_utils is enabled although it is not: a
 //                         host bug, for the test that checks the module then trips validation
 // Run it under the validation layer without enabling anything itself with
@@ -33,6 +37,7 @@
 #include <vector>
 
 #include "clouds/clouds.h"
+#include "ground_shadow.h"
 
 namespace {
 
@@ -296,9 +301,11 @@ float hitBox(const glm::vec3& o, const glm::vec3& d, const Box& b) {
 }
 
 // Casts every pixel's ray against the ground and the boxes: reversed-Z depth (0 = sky) and a
-// lit HDR colour (a sky gradient where nothing is hit).
+// lit HDR colour (a sky gradient where nothing is hit), the sun's term through the clouds'
+// shadow when there is one.
 void buildScene(const Camera& camera, VkExtent2D extent, const glm::vec3& sun,
-                std::vector<float>& depth, std::vector<std::uint16_t>& colour) {
+                const GroundShadow* shadow, std::vector<float>& depth,
+                std::vector<std::uint16_t>& colour) {
   const Box boxes[] = {{{-700, 0, -3600}, {-100, 1500, -3000}},
                        {{400, 0, -2600}, {900, 900, -2200}},
                        {{-2400, 0, -6000}, {-1200, 2600, -5200}}};
@@ -334,7 +341,8 @@ void buildScene(const Camera& camera, VkExtent2D extent, const glm::vec3& sun,
       if (t > 0.0f) {
         const float viewZ = t * glm::dot(dir, camera.forward);
         depth[i] = camera.nearPlane / viewZ;
-        radiance = albedo * (3.0f * std::max(glm::dot(normal, sun), 0.0f) + 0.6f);
+        const float sunLight = shadow != nullptr ? shadow->transmittance(dir * t) : 1.0f;
+        radiance = albedo * (3.0f * std::max(glm::dot(normal, sun), 0.0f) * sunLight + 0.6f);
       } else {
         depth[i] = 0.0f;
         radiance = glm::mix(glm::vec3(0.9f, 1.0f, 1.15f), glm::vec3(0.25f, 0.45f, 1.0f),
@@ -372,6 +380,7 @@ int main(int argc, char** argv) {
   const char* env = std::getenv("CLOUDSCAPE_VALIDATION");
   bool validation = env != nullptr && env[0] != '\0' && env[0] != '0';
   bool withClouds = true;
+  bool cloudShadows = true;
   bool claimDebugUtils = false;
   int frames = 1;
   for (int i = 1; i < argc; ++i) {
@@ -388,12 +397,14 @@ int main(int argc, char** argv) {
       validation = true;
     } else if (arg == "--no-clouds") {
       withClouds = false;
+    } else if (arg == "--no-cloud-shadows") {
+      cloudShadows = false;
     } else if (arg == "--claim-debug-utils") {
       claimDebugUtils = true;
     } else {
       std::fprintf(stderr,
                    "usage: %s [--output FILE.ppm] [--width W] [--height H] [--frames N] "
-                   "[--validation] [--no-clouds] [--claim-debug-utils]\n",
+                   "[--validation] [--no-clouds] [--no-cloud-shadows] [--claim-debug-utils]\n",
                    argv[0]);
       return 2;
     }
@@ -425,13 +436,11 @@ int main(int argc, char** argv) {
 
   Camera camera;
   const glm::vec3 sun = glm::normalize(glm::vec3(-0.4f, 0.45f, -0.8f));
-  {
-    std::vector<float> depthValues(pixels);
-    std::vector<std::uint16_t> colourValues(pixels * 4);
-    buildScene(camera, extent, sun, depthValues, colourValues);
-    std::memcpy(depthUpload.mapped, depthValues.data(), pixels * 4);
-    std::memcpy(colourUpload.mapped, colourValues.data(), pixels * 8);
-  }
+  std::vector<float> depthValues(pixels);
+  std::vector<std::uint16_t> colourValues(pixels * 4);
+  buildScene(camera, extent, sun, nullptr, depthValues, colourValues);
+  std::memcpy(depthUpload.mapped, depthValues.data(), pixels * 4);
+  std::memcpy(colourUpload.mapped, colourValues.data(), pixels * 8);
 
   // The clouds module: created from the host's handles and entry points, then prepared for
   // the settings and size it will render (pipelines and images), outside any recording.
@@ -451,6 +460,13 @@ int main(int argc, char** argv) {
   std::unique_ptr<clouds::Context> clouds = clouds::Context::create(info, &error);
   clouds::Settings settings;  // the defaults, with a little more coverage: broken cumulus
   settings.coverage = 0.62f;
+  if (!withClouds || !cloudShadows) settings.shadowCascades = 0;  // no map, no pass, no memory
+  // The shadow map read back to the CPU: shadowMapResolution x cascades wide, RGBA16F.
+  const VkExtent2D shadowExtent{settings.shadowMapResolution * settings.shadowCascades,
+                                settings.shadowMapResolution};
+  HostBuffer shadowReadback = createHostBuffer(
+      gpu, std::max<VkDeviceSize>(VkDeviceSize{shadowExtent.width} * shadowExtent.height * 8, 8),
+      VK_BUFFER_USAGE_TRANSFER_DST_BIT);
   if (!clouds || !clouds->prepare(settings, extent, &error)) {
     std::fprintf(stderr, "minimal_host: %s (%s)\n", error.message.c_str(),
                  clouds::errorCodeName(error.code));
@@ -475,10 +491,80 @@ int main(int argc, char** argv) {
   // colour is uploaded afresh, then the clouds are dispatched and composited over it.
   VkBufferImageCopy region{};
   region.imageExtent = {extent.width, extent.height, 1};
-  for (int frame = 0; frame < frames; ++frame) {
+  const auto beginRecording = [&] {
     VkCommandBufferBeginInfo begin{VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO};
     begin.flags = VK_COMMAND_BUFFER_USAGE_ONE_TIME_SUBMIT_BIT;
     vkCheck(vkBeginCommandBuffer(cmd, &begin), "vkBeginCommandBuffer");
+  };
+  const auto submitAndWait = [&] {
+    vkCheck(vkEndCommandBuffer(cmd), "vkEndCommandBuffer");
+    VkSubmitInfo submit{VK_STRUCTURE_TYPE_SUBMIT_INFO};
+    submit.commandBufferCount = 1;
+    submit.pCommandBuffers = &cmd;
+    vkCheck(vkQueueSubmit(gpu.queue, 1, &submit, fence), "vkQueueSubmit");
+    vkCheck(vkWaitForFences(gpu.device, 1, &fence, VK_TRUE, UINT64_MAX), "vkWaitForFences");
+    vkCheck(vkResetFences(gpu.device, 1, &fence), "vkResetFences");
+  };
+  const auto fail = [&](const clouds::Error& e) {
+    std::fprintf(stderr, "minimal_host: %s (%s)\n", e.message.c_str(),
+                 clouds::errorCodeName(e.code));
+    return 1;
+  };
+  for (int frame = 0; frame < frames; ++frame) {
+    clouds::FrameInputs inputs;
+    inputs.renderExtent = extent;
+    inputs.depthView = depth.view;
+    inputs.depthLayout = VK_IMAGE_LAYOUT_DEPTH_READ_ONLY_OPTIMAL;
+    inputs.view = viewMatrix(camera);
+    inputs.projection = projectionMatrix(camera, float(extent.width) / float(extent.height));
+    inputs.cameraPosition = glm::dvec3(camera.position);
+    inputs.sunDirection = sun;
+    inputs.sunIlluminance = glm::vec3(12.0f, 11.5f, 10.5f);
+    inputs.ambientTop = glm::vec3(0.45f, 0.6f, 0.95f);
+    inputs.ambientBottom = glm::vec3(0.3f, 0.32f, 0.35f);
+    inputs.timeSeconds = frame / 30.0;
+    inputs.frameIndex = static_cast<std::uint64_t>(frame);
+
+    if (settings.shadowCascades > 0) {
+      // The clouds' shadow first, read back: the host lights its scene through it (on the CPU,
+      // ground_shadow.h), then uploads that colour below. A GPU host would read the map in its
+      // own shaders instead (vkfx/cloud_shadow.h), in the same submission.
+      beginRecording();
+      inputs.commandBuffer = cmd;
+      if (!clouds->dispatchShadowMap(inputs, settings, &error)) return fail(error);
+      const VkImage map = clouds->outputs().shadowMap.image;
+      imageBarrier(cmd, map, VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_GENERAL,
+                   VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
+                   VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT, VK_PIPELINE_STAGE_2_TRANSFER_BIT,
+                   VK_ACCESS_2_TRANSFER_READ_BIT);
+      VkBufferImageCopy mapRegion{};
+      mapRegion.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
+      mapRegion.imageExtent = {shadowExtent.width, shadowExtent.height, 1};
+      vkCmdCopyImageToBuffer(cmd, map, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, shadowReadback.buffer,
+                             1, &mapRegion);
+      // Back to GENERAL, where the module keeps its outputs between frames.
+      imageBarrier(cmd, map, VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
+                   VK_IMAGE_LAYOUT_GENERAL, VK_PIPELINE_STAGE_2_TRANSFER_BIT,
+                   VK_ACCESS_2_TRANSFER_READ_BIT, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
+                   VK_ACCESS_2_SHADER_STORAGE_READ_BIT | VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT);
+      submitAndWait();
+      GroundShadow shadow;
+      shadow.width = shadowExtent.width;
+      shadow.height = shadowExtent.height;
+      shadow.parameters = clouds->outputs().shadowParameters;
+      const auto* halves = static_cast<const std::uint16_t*>(shadowReadback.mapped);
+      shadow.texels.resize(std::size_t{shadow.width} * shadow.height);
+      for (std::size_t i = 0; i < shadow.texels.size(); ++i) {
+        shadow.texels[i] = glm::vec4(
+            glm::unpackHalf1x16(halves[4 * i]), glm::unpackHalf1x16(halves[4 * i + 1]),
+            glm::unpackHalf1x16(halves[4 * i + 2]), glm::unpackHalf1x16(halves[4 * i + 3]));
+      }
+      buildScene(camera, extent, sun, &shadow, depthValues, colourValues);
+      std::memcpy(colourUpload.mapped, colourValues.data(), pixels * 8);
+    }
+
+    beginRecording();
+    inputs.commandBuffer = cmd;
     if (frame == 0) {
       region.imageSubresource = {VK_IMAGE_ASPECT_DEPTH_BIT, 0, 0, 1};
       imageBarrier(cmd, depth.image, VK_IMAGE_ASPECT_DEPTH_BIT, VK_IMAGE_LAYOUT_UNDEFINED,
@@ -504,25 +590,9 @@ int main(int argc, char** argv) {
                  VK_ACCESS_2_TRANSFER_WRITE_BIT, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
                  VK_ACCESS_2_SHADER_STORAGE_READ_BIT | VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT);
 
-    clouds::FrameInputs inputs;
-    inputs.commandBuffer = cmd;
-    inputs.renderExtent = extent;
-    inputs.depthView = depth.view;
-    inputs.depthLayout = VK_IMAGE_LAYOUT_DEPTH_READ_ONLY_OPTIMAL;
-    inputs.view = viewMatrix(camera);
-    inputs.projection = projectionMatrix(camera, float(extent.width) / float(extent.height));
-    inputs.cameraPosition = glm::dvec3(camera.position);
-    inputs.sunDirection = sun;
-    inputs.sunIlluminance = glm::vec3(12.0f, 11.5f, 10.5f);
-    inputs.ambientTop = glm::vec3(0.45f, 0.6f, 0.95f);
-    inputs.ambientBottom = glm::vec3(0.3f, 0.32f, 0.35f);
-    inputs.timeSeconds = frame / 30.0;
-    inputs.frameIndex = static_cast<std::uint64_t>(frame);
     if (withClouds && (!clouds->dispatch(inputs, settings, &error) ||
                        !clouds->composite(cmd, colour.view, extent, &error))) {
-      std::fprintf(stderr, "minimal_host: %s (%s)\n", error.message.c_str(),
-                   clouds::errorCodeName(error.code));
-      return 1;
+      return fail(error);
     }
 
     imageBarrier(cmd, colour.image, VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_GENERAL,
@@ -531,13 +601,7 @@ int main(int argc, char** argv) {
                  VK_ACCESS_2_TRANSFER_READ_BIT);
     vkCmdCopyImageToBuffer(cmd, colour.image, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, readback.buffer,
                            1, &region);
-    vkCheck(vkEndCommandBuffer(cmd), "vkEndCommandBuffer");
-    VkSubmitInfo submit{VK_STRUCTURE_TYPE_SUBMIT_INFO};
-    submit.commandBufferCount = 1;
-    submit.pCommandBuffers = &cmd;
-    vkCheck(vkQueueSubmit(gpu.queue, 1, &submit, fence), "vkQueueSubmit");
-    vkCheck(vkWaitForFences(gpu.device, 1, &fence, VK_TRUE, UINT64_MAX), "vkWaitForFences");
-    vkCheck(vkResetFences(gpu.device, 1, &fence), "vkResetFences");
+    submitAndWait();
   }
 
   const bool written =
@@ -548,7 +612,7 @@ int main(int argc, char** argv) {
   clouds.reset();
   vkDestroyFence(gpu.device, fence, nullptr);
   vkDestroyCommandPool(gpu.device, pool, nullptr);
-  for (HostBuffer* b : {&depthUpload, &colourUpload, &readback}) {
+  for (HostBuffer* b : {&depthUpload, &colourUpload, &readback, &shadowReadback}) {
     vkDestroyBuffer(gpu.device, b->buffer, nullptr);
     vkFreeMemory(gpu.device, b->memory, nullptr);
   }
