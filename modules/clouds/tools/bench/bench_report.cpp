@@ -1,5 +1,7 @@
 #include "bench_report.h"
 
+#include "bench_shadow_report.h"
+
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -122,6 +124,7 @@ void writeCsv(const std::filesystem::path& file, const BenchResults& results) {
         << passMs(m, "reconstruct") << ',' << passMs(m, "upsample") << ',' << passMs(m, "weather")
         << ',' << m.memoryMiB << '\n';
   }
+  writeShadowCsv(out, results.shadows);
   // The Reference mode itself: one frame's time, and one frame against the averaged Reference.
   for (const ReferenceMeasurement& r : results.references) {
     // No error for the fly-through's Reference (it is not compared with itself).
@@ -302,6 +305,7 @@ void writeMarkdown(const std::filesystem::path& file, const BenchResults& result
   for (const std::string& view : results.views)
     out << ' ' << format("%.0f", referenceMs(results, view)) << " |";
   out << "\n\nPSNR 200 means identical images (the clear sky has no clouds to get wrong).\n";
+  writeShadowMarkdown(out, results.shadows);
 }
 
 void writePlotData(const std::filesystem::path& file, const BenchResults& results) {
@@ -346,8 +350,10 @@ void writePlotData(const std::filesystem::path& file, const BenchResults& result
                         : "PSNR against the Reference (dB, pooled over views)"},
         {"series", series}};
   };
-  const nlohmann::json data = {
-      {"plots", {plot(false, "plot_static.png"), plot(true, "plot_fly_through.png")}}};
+  nlohmann::json plots = {plot(false, "plot_static.png"), plot(true, "plot_fly_through.png")};
+  if (!results.shadows.views.empty())
+    plots.push_back(shadowPlot(results.shadows, "plot_shadow.png"));
+  const nlohmann::json data = {{"plots", plots}};
   openOrThrow(file) << data.dump(2) << '\n';
 }
 

@@ -133,6 +133,19 @@ std::vector<std::string> implausibleMeasurements(const BenchResults& results) {
       problems.push_back("Reference on " + r.view + ": median ms = " + std::to_string(r.medianMs));
     }
   }
+  for (const ShadowMeasurement& m : results.shadows.measurements) {
+    for (const auto& [field, value] : {std::pair{"ms", m.meanMs},
+                                       {"cut ms", m.cutMs},
+                                       {"PSNR", m.psnr},
+                                       {"mean abs", m.meanAbs}}) {
+      if (!std::isfinite(value) || value < 0.0) {
+        problems.push_back("shadow map " + m.config + " on " + m.view + ": " + field + " = " +
+                           std::to_string(value));
+      }
+    }
+    if (m.cutMs <= 0.0)
+      problems.push_back("shadow map " + m.config + " on " + m.view + ": untimed");
+  }
   if (results.measurements.empty()) problems.emplace_back("no measurement");
   return problems;
 }
@@ -229,6 +242,9 @@ BenchResults runBenchmark(engine::gfx::Device& device, const RunOptions& options
       results.measurements.push_back(m);
     }
   }
+
+  // --- The cloud shadow map's knobs (its own views and error; none with --view elsewhere). ----
+  results.shadows = runShadowBenchmark(device, options.onlyViews, progress);
 
   // --- The fly-through: every frame timed, the error at regular frames. ----------------------
   const std::string flyName = "fly-through";

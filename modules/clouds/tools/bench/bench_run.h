@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "bench_setup.h"
+#include "bench_shadow.h"
 #include "engine/gfx/device.h"
 
 namespace bench {
@@ -69,6 +70,7 @@ struct BenchResults {
   std::vector<Measurement> measurements;
   std::vector<ReferenceMeasurement> references;
   std::map<std::string, std::vector<ConvergencePoint>> highConvergence;  // per static view
+  ShadowResults shadows;  // the cloud shadow map's part (bench_shadow.h)
   std::string device;
   double seconds = 0.0;  // wall time of the whole run
 

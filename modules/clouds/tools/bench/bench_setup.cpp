@@ -91,13 +91,13 @@ const std::map<std::string, double>& highKnobs() {
   return knobs;
 }
 
+}  // namespace
+
 std::string number(double value) {
   char text[32];
   std::snprintf(text, sizeof(text), "%g", value);
   return text;
 }
-
-}  // namespace
 
 std::vector<BenchConfig> benchConfigs() {
   std::vector<BenchConfig> configs;
@@ -154,13 +154,18 @@ std::vector<BenchConfig> benchConfigs() {
 }
 
 std::vector<Sweep> sweepsOf(const std::vector<BenchConfig>& configs) {
-  std::size_t high = 0;
+  return sweepsOf(configs, clouds::Quality::High, highKnobs());
+}
+
+std::vector<Sweep> sweepsOf(const std::vector<BenchConfig>& configs, clouds::Quality base,
+                            const std::map<std::string, double>& baseKnobs) {
+  std::size_t baseIndex = 0;
   for (std::size_t i = 0; i < configs.size(); ++i) {
-    if (configs[i].preset && configs[i].quality == clouds::Quality::High) high = i;
+    if (configs[i].preset && configs[i].quality == base) baseIndex = i;
   }
   std::vector<Sweep> sweeps;
-  for (const auto& [name, highValue] : highKnobs()) {
-    std::vector<std::pair<double, std::size_t>> points = {{highValue, high}};
+  for (const auto& [name, baseValue] : baseKnobs) {
+    std::vector<std::pair<double, std::size_t>> points = {{baseValue, baseIndex}};
     for (std::size_t i = 0; i < configs.size(); ++i) {
       if (configs[i].sweep == name) points.emplace_back(configs[i].knob, i);
     }

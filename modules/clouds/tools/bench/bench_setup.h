@@ -3,6 +3,7 @@
 // own cloud look), a short fly-through path, and the configurations (the quality presets and
 // one-knob sweeps around High).
 #include <cstdint>
+#include <map>
 #include <string>
 #include <vector>
 
@@ -55,5 +56,12 @@ struct Sweep {
   std::vector<std::size_t> configs;
 };
 std::vector<Sweep> sweepsOf(const std::vector<BenchConfig>& configs);
+// The same around another preset: `base` is the preset every sweep passes through, at the
+// knob values `baseKnobs` (by sweep name).
+std::vector<Sweep> sweepsOf(const std::vector<BenchConfig>& configs, clouds::Quality base,
+                            const std::map<std::string, double>& baseKnobs);
+
+// A knob's value as the tables and plots show it ("%g").
+std::string number(double value);
 
 }  // namespace bench

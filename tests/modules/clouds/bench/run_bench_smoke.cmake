@@ -10,14 +10,20 @@ execute_process(
 if(NOT result EQUAL 0)
   message(FATAL_ERROR "clouds_bench exited with ${result}")
 endif()
-foreach(output results.csv results.md plots.json plot_static.png plot_fly_through.png)
+foreach(output results.csv results.md plots.json plot_static.png plot_fly_through.png
+       plot_shadow.png)
   if(NOT EXISTS "${OUT_DIR}/${output}")
     message(FATAL_ERROR "clouds_bench wrote no ${OUT_DIR}/${output}")
   endif()
 endforeach()
-# 19 configurations on 6 static views and the fly-through, plus the header.
+# 19 configurations on 6 static views and the fly-through, plus the header; 16 shadow-map
+# configurations on its 2 views.
 file(STRINGS "${OUT_DIR}/results.csv" rows)
 list(LENGTH rows row_count)
-if(row_count LESS 134)
-  message(FATAL_ERROR "results.csv has ${row_count} lines, expected at least 134")
+if(row_count LESS 166)
+  message(FATAL_ERROR "results.csv has ${row_count} lines, expected at least 166")
+endif()
+file(READ "${OUT_DIR}/results.md" report)
+if(NOT report MATCHES "## The cloud shadow map")
+  message(FATAL_ERROR "results.md has no cloud shadow map section")
 endif()
