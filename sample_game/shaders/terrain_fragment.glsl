@@ -1,7 +1,8 @@
-// The terrain's fragment stage: the surface lit by the sun (through the clouds' shadow map and
-// the terrain's own shadow in it with TERRAIN_CLOUD_SHADOWS) and the sky, then hazed by the
-// aerial perspective its vertices read (TERRAIN_HAZED: a scene with an atmosphere) or, the
-// cheap alternative, fogged towards the gradient sky behind the fragment.
+// The terrain's fragment stage: the surface made finer than the mesh (terrain_material.h:
+// detail normals, rock and snow by slope and altitude), lit by the sun (through the clouds'
+// shadow map and the terrain's own shadow in it with TERRAIN_CLOUD_SHADOWS) and the sky, then
+// hazed by the aerial perspective its vertices read (TERRAIN_HAZED: a scene with an
+// atmosphere) or, the cheap alternative, fogged towards the gradient sky behind the fragment.
 #extension GL_GOOGLE_include_directive : require
 #include "scene_constants.h"
 
@@ -39,7 +40,12 @@ float sunVisibility() {
 }
 
 void main() {
-  const vec3 lit = terrainLit(inColor, inNormal, sunVisibility());
+  // The surface finer than the mesh: its detail (world metres), normal and materials.
+  const vec3 world = frame.cameraPosition.xyz + inRelative;
+  const vec3 detail = terrainDetail(vec2(world.x, world.z));
+  const vec3 normal = terrainDetailNormal(inNormal, detail);
+  const vec3 albedo = terrainAlbedo(inColor, normal, world.y, detail, frame.terrain);
+  const vec3 lit = terrainLit(albedo, normal, sunVisibility());
 #ifdef TERRAIN_HAZED
   outColor = vec4(lit * inHaze.a + inHaze.rgb, 1.0f);
 #else

@@ -2,6 +2,9 @@
 // terrain, teleports, the sun's daily arc, terrain chunking and frustum culling.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
 #include <glm/gtc/constants.hpp>
 
 #include "clouds/ecs/cloud_components.h"
@@ -264,6 +267,57 @@ TEST(Terrain, HeightFieldIsConservative) {
     EXPECT_LE(field.heightAt(x, 0.0), (x + 1000.0) * 0.5 + 0.5 * (200.0 + 2.0 * 31.25) + 1e-3);
   }
   EXPECT_EQ(field.heightAt(5000.0, 0.0), 0.0);
+}
+
+// The terrain's materials (terrain_material.h, as its fragment shader runs them): the mesh's
+// colour on flat low ground, rock on steep ground, snow high up unless it is steep.
+TEST(TerrainMaterial, RockOnSteepGroundSnowHighUp) {
+  using namespace engine::shaders;
+  const engine::assets::MeshData mesh = ramp();  // 0 to 1000 m: snow from 700 m
+  const TerrainMaterials m = sample::terrainMaterialsFor(mesh, std::nullopt);
+  EXPECT_NEAR(m.snow.w, 700.0f, 1e-3f);
+  const glm::vec3 grass(0.05f, 0.08f, 0.03f);
+  const glm::vec3 calm(0.0f, 0.0f, 0.5f);  // no detail gradient, mid waver
+  const auto normalAt = [](float degrees) {
+    return glm::vec3(std::sin(glm::radians(degrees)), std::cos(glm::radians(degrees)), 0.0f);
+  };
+  const auto near = [](glm::vec3 a, glm::vec3 b) { return glm::length(a - b) < 1e-3f; };
+  EXPECT_TRUE(near(terrainAlbedo(grass, normalAt(5.0f), 100.0f, calm, m), grass));
+  EXPECT_TRUE(near(terrainAlbedo(grass, normalAt(55.0f), 100.0f, calm, m), glm::vec3(m.rock)));
+  EXPECT_TRUE(near(terrainAlbedo(grass, normalAt(5.0f), 950.0f, calm, m), glm::vec3(m.snow)));
+  EXPECT_TRUE(near(terrainAlbedo(grass, normalAt(60.0f), 950.0f, calm, m), glm::vec3(m.rock)))
+      << "no snow on a cliff";
+  EXPECT_NEAR(sample::terrainMaterialsFor(mesh, 1234.0).snow.w, 1234.0f, 1e-3f);
+}
+
+// The detail normal: finer than the mesh's 150 m (points 5 m apart differ), a few degrees to a
+// few tens of degrees off the mesh's normal, and unbiased (the mesh's slope stays its slope).
+TEST(TerrainMaterial, DetailNormalsAreFinerThanTheMesh) {
+  using namespace engine::shaders;
+  const glm::vec3 up(0.0f, 1.0f, 0.0f);
+  double sumAngle = 0.0;
+  double maxAngle = 0.0;
+  double sumNeighbour = 0.0;
+  glm::dvec3 mean(0.0);
+  const int n = 2000;
+  for (int i = 0; i < n; ++i) {
+    const glm::vec2 xz(float(i) * 5.0f + 1234.5f, float(i % 37) * 13.0f - 800.0f);
+    const glm::vec3 a = terrainDetailNormal(up, terrainDetail(xz));
+    const glm::vec3 b = terrainDetailNormal(up, terrainDetail(xz + glm::vec2(5.0f, 0.0f)));
+    const double angle = glm::degrees(std::acos(std::clamp(double(a.y), -1.0, 1.0)));
+    sumAngle += angle;
+    maxAngle = std::max(maxAngle, angle);
+    sumNeighbour += glm::degrees(std::acos(std::clamp(double(glm::dot(a, b)), -1.0, 1.0)));
+    mean += glm::dvec3(a);
+  }
+  mean /= double(n);
+  std::printf("detail normals: mean %.1f deg off the mesh's, max %.1f, 5 m apart %.1f deg\n",
+              sumAngle / n, maxAngle, sumNeighbour / n);
+  EXPECT_GT(sumAngle / n, 3.0);
+  EXPECT_LT(maxAngle, 35.0);
+  EXPECT_GT(sumNeighbour / n, 1.0) << "no variation at the metre scale";
+  EXPECT_LT(std::abs(mean.x), 0.03);
+  EXPECT_LT(std::abs(mean.z), 0.03);
 }
 
 // What long shadows are cast from: the surface itself, exact on a planar ramp (linear

@@ -47,6 +47,7 @@ Renderer::Renderer(gfx::Device& device, render::PresentTarget& target, ecs::Worl
   if (const auto* mesh = world.ctx().tryGet<TerrainMesh>()) {
     terrain_ = std::make_unique<TerrainRenderer>(device, *mesh->mesh, kHdrFormat, kDepthFormat,
                                                  featureSky, cloudShadows);
+    terrainMaterials_ = terrainMaterialsFor(*mesh->mesh, mesh->snowlineMetres);
     pipelines.push_back(&terrain_->pipeline());
     // Mountains shade the clouds and themselves through the clouds' shadow map: without a map
     // (or with a terrain that casts none) the heightfield is not even made.
@@ -157,6 +158,7 @@ void Renderer::updateFrameConstants(ecs::World& world, VkExtent2D extent) {
   f.fog = glm::vec4(fog.densityPerMetre, hazeRangeMetres_, float(hazeSlices_), 0.0f);
   f.sunAboveAir = glm::vec4(sun.illuminance, 0.0f);
   f.extent = glm::uvec4(extent.width, extent.height, 0u, 0u);
+  f.terrain = terrainMaterials_;
   tonemap_.exposure = render::exposureScale(world.ctx().get<render::Exposure>().ev100);
 
   if (terrain_) terrain_->cull(f.viewProjection, camera.position);

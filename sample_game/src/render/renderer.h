@@ -74,6 +74,7 @@ class Renderer {
   engine::render::Tonemapper tonemapper_;
   std::unique_ptr<SkyPass> sky_;  // when no feature draws the sky
   std::unique_ptr<TerrainRenderer> terrain_;
+  engine::shaders::TerrainMaterials terrainMaterials_{};  // SceneFrame::terrain
   // The terrain's heightfield, when it casts shadows and something makes them (the clouds'
   // shadow map): published as engine::render::TerrainHeightfield.
   std::unique_ptr<TerrainHeightfieldImage> heightfield_;

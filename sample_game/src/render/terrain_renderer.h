@@ -5,6 +5,7 @@
 // in scenes whose clouds cast shadows) and sky, and hazed by the atmosphere's aerial
 // perspective, or by distance fog in scenes without one.
 #include <array>
+#include <optional>
 #include <vector>
 
 #include <glm/glm.hpp>
@@ -12,6 +13,7 @@
 #include "engine/assets/gltf_loader.h"
 #include "engine/gfx/pipelines.h"
 #include "engine/gfx/resources.h"
+#include "terrain_material.h"
 
 namespace sample {
 
@@ -36,6 +38,12 @@ struct TerrainChunk {
 std::vector<TerrainChunk> buildChunks(const engine::assets::MeshData& mesh,
                                       std::vector<std::uint32_t>& indices, std::uint32_t grid,
                                       const std::array<float, kTerrainLods>& lodCellMetres);
+
+// The rock and snow painted over a mesh's colours (terrain_material.h): rock from 35 degrees of
+// slope, snow from `snowlineMetres` (by default 70% of the way up from the mesh's lowest point
+// to its highest), in the default terrain's palette.
+engine::shaders::TerrainMaterials terrainMaterialsFor(const engine::assets::MeshData& mesh,
+                                                      std::optional<double> snowlineMetres);
 
 // Level of detail for a chunk at `distanceMetres` from the camera.
 std::size_t lodForDistance(float distanceMetres);

@@ -55,6 +55,7 @@ TerrainDescription readTerrain(const JsonReader& r, const std::filesystem::path&
   const std::string gltf = r.string("gltf");
   t.gltf = gltf == "default" ? std::filesystem::path("default") : resolveFile(r, "gltf", sceneDir);
   t.castsShadows = r.boolean("castsShadows", true);
+  if (r.has("snowlineMetres")) t.snowlineMetres = r.number("snowlineMetres", -1000.0, 20000.0, 0.0);
   r.finish();
   return t;
 }

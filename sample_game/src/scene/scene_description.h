@@ -39,6 +39,9 @@ struct TerrainDescription {
   // Whether mountains shade the clouds and cast long shadows on the terrain (through the
   // clouds' shadow map, so only in a scene whose clouds cast shadows).
   bool castsShadows = true;
+  // Where snow starts to lie (m above sea level); unset: 70% of the way from the mesh's lowest
+  // to its highest point.
+  std::optional<double> snowlineMetres;
 };
 
 struct CloudDescription {

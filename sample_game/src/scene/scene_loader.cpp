@@ -97,7 +97,8 @@ void populateScene(ecs::App& app, const SceneDescription& scene,
   if (terrain) {
     world.ctx().emplaceOrReplace<TerrainHeightField>(*terrain->mesh);
     world.ctx().emplaceOrReplace<TerrainMesh>(
-        TerrainMesh{terrain->mesh, !scene.terrain || scene.terrain->castsShadows});
+        TerrainMesh{terrain->mesh, !scene.terrain || scene.terrain->castsShadows,
+                    scene.terrain ? scene.terrain->snowlineMetres : std::nullopt});
     const ecs::Entity entity = world.create();
     world.emplace<TerrainInstance>(entity, TerrainInstance{terrain->path});
   }

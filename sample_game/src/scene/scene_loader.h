@@ -20,7 +20,8 @@ namespace sample {
 // The loaded terrain mesh (placed in the world), for the renderer to upload.
 struct TerrainMesh {
   std::shared_ptr<const engine::assets::MeshData> mesh;
-  bool castsShadows = true;  // TerrainDescription::castsShadows
+  bool castsShadows = true;              // TerrainDescription::castsShadows
+  std::optional<double> snowlineMetres;  // TerrainDescription::snowlineMetres
 };
 
 struct LoadedTerrain {
