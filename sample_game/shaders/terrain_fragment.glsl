@@ -25,15 +25,18 @@ vec4 gatherCloudShadowTerrain(vec2 uv) { return textureGather(cloudShadowMap, uv
 layout(binding = 3, std140) uniform CloudShadow { CloudShadowParameters cloudShadow; };
 layout(location = 4) in vec4 inShadowUv01;
 layout(location = 5) in vec4 inShadowUv23;
+layout(location = 6) in float inTerrainLight;
 #endif
 
 // The share of the sun the fragment sees: what the clouds let through, and none where the
-// terrain itself hides the sun (the map's terrain channel, from the scene's heightfield).
+// terrain itself hides the sun (the map's terrain channel, from the scene's heightfield, read
+// per vertex).
 float sunVisibility() {
 #ifdef TERRAIN_CLOUD_SHADOWS
-  const vec2 sun = cloudShadowAt(cloudShadow.info, inShadowUv01, inShadowUv23,
-                                 cloudShadow.info.z + inRelative.y);
-  return sun.x * sun.y;
+  const float clouds = cloudShadowAt(cloudShadow.info, inShadowUv01, inShadowUv23,
+                                     cloudShadow.info.z + inRelative.y, kCloudShadowClouds)
+                           .x;
+  return clouds * inTerrainLight;
 #else
   return 1.0;
 #endif

@@ -41,7 +41,7 @@ float cloudSunVisibility(vec3 relative) {
     vec4 uv23;
     CLOUD_SHADOW_COORDINATES(cloudShadow[slot], relative, uv01, uv23);
     const vec2 sun = cloudShadowAt(cloudShadow[slot].info, uv01, uv23,
-                                   cloudShadow[slot].info.z + relative.y);
+                                   cloudShadow[slot].info.z + relative.y, kCloudShadowBoth);
     visibility = sun.x * sun.y;
   }
   return visibility;

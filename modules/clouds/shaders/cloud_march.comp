@@ -65,7 +65,8 @@ float terrainSunLight(vec3 flatOffset, float altitude) {
     vec4 uv01;
     vec4 uv23;
     CLOUD_SHADOW_COORDINATES(terrainShadow[slot].map, relative, uv01, uv23);
-    light = cloudShadowAt(terrainShadow[slot].map.info, uv01, uv23, altitude).y;
+    light = cloudShadowAt(terrainShadow[slot].map.info, uv01, uv23, altitude, kCloudShadowTerrain)
+                .y;
   }
   return light;
 }

@@ -45,6 +45,11 @@ VKFX_SHADER_BEGIN(vkfx::shader)
 const int kCloudShadowMaxCascades = 4;
 // Optical depth is stored up to this (exp(-64) is 1.6e-28: nothing passes).
 const float kCloudShadowMaxDepth = 64.0f;
+// Which channels a lookup reads (cloudShadowAt's `channels`, a constant at every call so the
+// compiler drops the other read): the clouds' optical depth, the terrain's shadow, or both.
+const uint kCloudShadowClouds = 1u;
+const uint kCloudShadowTerrain = 2u;
+const uint kCloudShadowBoth = 3u;
 // The terrain's shadow fades over this many metres of altitude below its edge.
 const float kCloudShadowTerrainRampMetres = 30.0f;
 // The terrain channel of a map made without terrain: below every receiver.
@@ -104,14 +109,21 @@ VKFX_INLINE float cloudShadowTerrainLight(vec4 info, vec2 atlas, float altitudeM
 }
 
 // The optical depth of the clouds (x) and the terrain's light (y) from cascade `c` at cascade
-// coordinates `uv` for a receiver at an altitude; `info` is CloudShadowParameters::info.
-VKFX_INLINE vec2 cloudShadowCascadeSample(vec4 info, float c, vec2 uv, float altitudeMetres) {
+// coordinates `uv` for a receiver at an altitude, reading the `channels` asked for (the others
+// are 0 and 1); `info` is CloudShadowParameters::info.
+VKFX_INLINE vec2 cloudShadowCascadeSample(vec4 info, float c, vec2 uv, float altitudeMetres,
+                                          uint channels) {
   const float n = info.y;
   // Clamp half a texel inside the cascade: linear filtering must not read its neighbour.
   const vec2 inside = clamp(uv, vec2(0.5f / n), vec2(1.0f - 0.5f / n));
   const vec2 atlas = vec2((c + inside.x) / max(info.x, 1.0f), inside.y);
-  return vec2(cloudShadowOpticalDepth(fetchCloudShadow(atlas), altitudeMetres),
-              cloudShadowTerrainLight(info, atlas, altitudeMetres));
+  const float depth = (channels & kCloudShadowClouds) != 0u
+                          ? cloudShadowOpticalDepth(fetchCloudShadow(atlas), altitudeMetres)
+                          : 0.0f;
+  const float terrain = (channels & kCloudShadowTerrain) != 0u
+                            ? cloudShadowTerrainLight(info, atlas, altitudeMetres)
+                            : 1.0f;
+  return vec2(depth, terrain);
 }
 
 // Every cascade's coordinates of a camera-relative position: cascades 0 and 1 in `uv01`
@@ -132,9 +144,11 @@ VKFX_INLINE void cloudShadowCoordinatesOf(vec4 u0, vec4 v0, vec4 l0, vec4 u1, ve
 
 // The sun a receiver at `altitudeMetres` gets, whose cascade coordinates are `uv01`, `uv23`
 // (cloudShadowCoordinatesOf()): x the clouds' transmittance, y the terrain's light (0 in its
-// shadow). From the finest cascade that holds the receiver, blended into the next near its
-// edge, and fading to no shadow at the edge of the last one. One read, two in a blend band.
-VKFX_INLINE vec2 cloudShadowAt(vec4 info, vec4 uv01, vec4 uv23, float altitudeMetres) {
+// shadow), of the `channels` read (kCloudShadowClouds, ...Terrain or ...Both; the other is 1).
+// From the finest cascade that holds the receiver, blended into the next near its edge, and
+// fading to no shadow at the edge of the last one. One read, two in a blend band.
+VKFX_INLINE vec2 cloudShadowAt(vec4 info, vec4 uv01, vec4 uv23, float altitudeMetres,
+                               uint channels) {
   const float count = info.x;
   const float band = info.w;
   const vec2 c0 = vec2(uv01.x, uv01.y);
@@ -157,10 +171,10 @@ VKFX_INLINE vec2 cloudShadowAt(vec4 info, vec4 uv01, vec4 uv23, float altitudeMe
   vec2 sampleA = vec2(0.0f, 1.0f);
   vec2 sampleB = vec2(0.0f, 1.0f);
   for (int i = 0; i < (weight > 0.0f ? 1 : 0); ++i) {
-    sampleA = cloudShadowCascadeSample(info, first, a, altitudeMetres);
+    sampleA = cloudShadowCascadeSample(info, first, a, altitudeMetres, channels);
   }
   for (int i = 0; i < (weight < 1.0f && first + 1.0f < count ? 1 : 0); ++i) {
-    sampleB = cloudShadowCascadeSample(info, first + 1.0f, b, altitudeMetres);
+    sampleB = cloudShadowCascadeSample(info, first + 1.0f, b, altitudeMetres, channels);
   }
   const vec2 blended = sampleA * weight + sampleB * (1.0f - weight);
   return vec2(exp(-blended.x), blended.y);
@@ -174,7 +188,7 @@ VKFX_INLINE vec2 cloudShadowAtPosition(IN(CloudShadowParameters) p, vec3 relativ
   cloudShadowCoordinatesOf(p.cascade[0], p.cascade[1], p.cascade[2], p.cascade[3], p.cascade[4],
                            p.cascade[5], p.cascade[6], p.cascade[7], p.cascade[8], p.cascade[9],
                            p.cascade[10], p.cascade[11], relative, uv01, uv23);
-  return cloudShadowAt(p.info, uv01, uv23, p.info.z + relative.y);
+  return cloudShadowAt(p.info, uv01, uv23, p.info.z + relative.y, kCloudShadowBoth);
 }
 
 // For shaders: cloudShadowCoordinatesOf() with the fields of a parameter block in a uniform
