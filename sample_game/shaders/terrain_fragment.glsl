@@ -18,10 +18,8 @@ layout(location = 3) in vec4 inHaze;
 #endif
 
 #ifdef TERRAIN_CLOUD_SHADOWS
-layout(binding = 2) uniform sampler2D cloudShadowMap;
-vec4 fetchCloudShadow(vec2 uv) { return textureLod(cloudShadowMap, uv, 0.0); }
-vec4 gatherCloudShadowTerrain(vec2 uv) { return textureGather(cloudShadowMap, uv, 3); }
-#include "vkfx/cloud_shadow.h"
+#define CLOUD_SHADOW_MAP_BINDING 2
+#include "vkfx/cloud_shadow_sampled.glsl"
 layout(binding = 3, std140) uniform CloudShadow { CloudShadowParameters cloudShadow; };
 layout(location = 4) in vec4 inShadowUv01;
 layout(location = 5) in vec4 inShadowUv23;

@@ -29,10 +29,8 @@ layout(location = 3) out vec4 outHaze;  // rgb in-scattered (kcd/m^2), a transmi
 #endif
 
 #ifdef TERRAIN_CLOUD_SHADOWS
-layout(binding = 2) uniform sampler2D cloudShadowMap;
-vec4 fetchCloudShadow(vec2 uv) { return textureLod(cloudShadowMap, uv, 0.0); }
-vec4 gatherCloudShadowTerrain(vec2 uv) { return textureGather(cloudShadowMap, uv, 3); }
-#include "vkfx/cloud_shadow.h"
+#define CLOUD_SHADOW_MAP_BINDING 2
+#include "vkfx/cloud_shadow_sampled.glsl"
 layout(binding = 3, std140) uniform CloudShadow { CloudShadowParameters cloudShadow; };
 layout(location = 4) out vec4 outShadowUv01;  // cascades 0 and 1
 layout(location = 5) out vec4 outShadowUv23;  // cascades 2 and 3

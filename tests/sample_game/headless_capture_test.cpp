@@ -147,6 +147,30 @@ TEST(HeadlessCapture, EachSceneGetsOnlyThePassesAndPipelinesItNeeds) {
   }
 }
 
+// What a shadow did to a frame: the pixels of `shadowed` darker than `darkerBelow` times their
+// luminance in `lit`, and those brighter by over 1%, out of all (0 when the frames differ in
+// size).
+struct ShadowEffect {
+  std::size_t darker = 0;
+  std::size_t brighter = 0;
+  std::size_t pixels = 0;
+};
+
+ShadowEffect shadowEffect(const fs::path& lit, const fs::path& shadowed, float darkerBelow) {
+  const ImageRgba32f a = engine::assets::readImage(lit);
+  const ImageRgba32f b = engine::assets::readImage(shadowed);
+  ShadowEffect e;
+  if (a.pixels.size() != b.pixels.size()) return e;
+  e.pixels = a.pixels.size() / 4;
+  for (std::size_t i = 0; i < e.pixels; ++i) {
+    const float la = a.pixels[4 * i] + a.pixels[4 * i + 1] + a.pixels[4 * i + 2];
+    const float lb = b.pixels[4 * i] + b.pixels[4 * i + 1] + b.pixels[4 * i + 2];
+    e.darker += lb < darkerBelow * la ? 1u : 0u;
+    e.brighter += lb > 1.01f * la ? 1u : 0u;
+  }
+  return e;
+}
+
 // Clouds shadow the terrain: seen from above the layer, broken cumulus darkens the ground in
 // patches (the direct sun gone, the sky's light left), and nothing else changes.
 TEST(HeadlessCapture, CloudsShadowTheTerrainInPatches) {
@@ -156,23 +180,15 @@ TEST(HeadlessCapture, CloudsShadowTheTerrainInPatches) {
       "--headless --frames 4 --fixed-dt 0.05 --width 160 --height 90 --validation --capture ";
   ASSERT_EQ(runSample(common + lit.string() + " --scene " + scene("unshadowed_range.json")), 0);
   ASSERT_EQ(runSample(common + shadowed.string() + " --scene " + scene("shadowed_range.json")), 0);
-  const ImageRgba32f a = engine::assets::readImage(lit / "frame_0003.exr");
-  const ImageRgba32f b = engine::assets::readImage(shadowed / "frame_0003.exr");
-  ASSERT_EQ(a.pixels.size(), b.pixels.size());
-  std::size_t darker = 0;
-  std::size_t brighter = 0;
-  const std::size_t pixels = a.pixels.size() / 4;
-  for (std::size_t i = 0; i < pixels; ++i) {
-    const float la = a.pixels[4 * i] + a.pixels[4 * i + 1] + a.pixels[4 * i + 2];
-    const float lb = b.pixels[4 * i] + b.pixels[4 * i + 1] + b.pixels[4 * i + 2];
-    darker += lb < 0.6f * la ? 1u : 0u;
-    brighter += lb > 1.01f * la ? 1u : 0u;
-  }
+  const ShadowEffect e = shadowEffect(lit / "frame_0003.exr", shadowed / "frame_0003.exr", 0.6f);
+  ASSERT_GT(e.pixels, 0u);
+  const std::size_t darker = e.darker;
+  const std::size_t pixels = e.pixels;
   std::printf("cloud shadows: %.1f%% of pixels 40%% darker, %.2f%% brighter\n",
-              100.0 * double(darker) / double(pixels), 100.0 * double(brighter) / double(pixels));
+              100.0 * double(darker) / double(pixels), 100.0 * double(e.brighter) / double(pixels));
   EXPECT_GT(darker, pixels / 20) << "too little of the ground is shadowed";
   EXPECT_LT(darker, pixels * 3 / 4) << "the ground is shadowed everywhere";
-  EXPECT_EQ(brighter, 0u) << "a shadow only takes light away";
+  EXPECT_EQ(e.brighter, 0u) << "a shadow only takes light away";
 }
 
 // Mountains shade the clouds: at sunset the range's long shadows take the sun from the low
@@ -185,22 +201,14 @@ TEST(HeadlessCapture, MountainsShadeTheCloudsAtSunset) {
   ASSERT_EQ(
       runSample(common + bare.string() + " --scene " + scene("ridge_sunset_unshadowing.json")), 0);
   ASSERT_EQ(runSample(common + shading.string() + " --scene " + scene("ridge_sunset.json")), 0);
-  const ImageRgba32f a = engine::assets::readImage(bare / "frame_0005.exr");
-  const ImageRgba32f b = engine::assets::readImage(shading / "frame_0005.exr");
-  ASSERT_EQ(a.pixels.size(), b.pixels.size());
-  std::size_t darker = 0;
-  std::size_t brighter = 0;
-  const std::size_t pixels = a.pixels.size() / 4;
-  for (std::size_t i = 0; i < pixels; ++i) {
-    const float la = a.pixels[4 * i] + a.pixels[4 * i + 1] + a.pixels[4 * i + 2];
-    const float lb = b.pixels[4 * i] + b.pixels[4 * i + 1] + b.pixels[4 * i + 2];
-    darker += lb < 0.8f * la ? 1u : 0u;
-    brighter += lb > 1.01f * la ? 1u : 0u;
-  }
+  const ShadowEffect e = shadowEffect(bare / "frame_0005.exr", shading / "frame_0005.exr", 0.8f);
+  ASSERT_GT(e.pixels, 0u);
+  const std::size_t darker = e.darker;
+  const std::size_t pixels = e.pixels;
   std::printf("terrain shadows: %.1f%% of pixels 20%% darker, %.2f%% brighter\n",
-              100.0 * double(darker) / double(pixels), 100.0 * double(brighter) / double(pixels));
+              100.0 * double(darker) / double(pixels), 100.0 * double(e.brighter) / double(pixels));
   EXPECT_GT(darker, pixels / 100) << "the range's shadows must reach clouds and valleys";
-  EXPECT_EQ(brighter, 0u) << "a shadow only takes light away";
+  EXPECT_EQ(e.brighter, 0u) << "a shadow only takes light away";
 }
 
 TEST(HeadlessCapture, FliesOverAUserSuppliedTerrain) {

@@ -22,10 +22,8 @@ layout(binding = kBindingTransmittance) uniform sampler2D transmittanceLut;
 layout(binding = kBindingMultiScattering) uniform sampler2D multiScatteringLut;
 layout(binding = kBindingTarget, rgba16f) uniform writeonly image3D target;
 
-layout(binding = kBindingCloudShadow) uniform sampler2D cloudShadowMap;
-vec4 fetchCloudShadow(vec2 uv) { return textureLod(cloudShadowMap, uv, 0.0); }
-vec4 gatherCloudShadowTerrain(vec2 uv) { return textureGather(cloudShadowMap, uv, 3); }
-#include "vkfx/cloud_shadow.h"
+#define CLOUD_SHADOW_MAP_BINDING kBindingCloudShadow
+#include "vkfx/cloud_shadow_sampled.glsl"
 // Indexed like the uniforms (atmosphere_uniforms.glsl), read in place.
 layout(binding = kBindingCloudShadowParameters, std140) uniform CloudShadow {
   CloudShadowParameters cloudShadow[1];

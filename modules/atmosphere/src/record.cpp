@@ -60,8 +60,10 @@ void Context::Impl::dispatch(const FrameInputs& inputs, const Parameters& parame
                         VK_PIPELINE_STAGE_2_TRANSFER_BIT | kCompute,
                         VK_ACCESS_2_TRANSFER_WRITE_BIT | detail::kStorageWrite);
   fn.vkCmdUpdateBuffer(cmd, slot.uniforms.buffer(), 0, sizeof(lastUniforms_), &lastUniforms_);
-  fn.vkCmdUpdateBuffer(cmd, slot.cloudShadow.buffer(), 0, sizeof(inputs.cloudShadow.parameters),
-                       inputs.cloudShadow.parameters);
+  if (inputs.cloudShadow.view != VK_NULL_HANDLE) {  // read only with a map
+    fn.vkCmdUpdateBuffer(cmd, slot.cloudShadow.buffer(), 0, sizeof(inputs.cloudShadow.parameters),
+                         inputs.cloudShadow.parameters);
+  }
   detail::memoryBarrier(device_, cmd, VK_PIPELINE_STAGE_2_TRANSFER_BIT,
                         VK_ACCESS_2_TRANSFER_WRITE_BIT, kReadStages, VK_ACCESS_2_UNIFORM_READ_BIT);
   writeSets(slot, VK_NULL_HANDLE, VK_IMAGE_LAYOUT_UNDEFINED, VK_NULL_HANDLE, &inputs.cloudShadow);

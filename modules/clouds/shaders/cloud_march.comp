@@ -45,9 +45,8 @@ vec4 fetchCurl(ivec2 texel) { return imageLoad(curlNoise, texel); }
 vec4 fetchWeatherMaxFine(ivec2 texel) { return imageLoad(weatherMaxFine, texel); }
 vec4 fetchWeatherMaxCoarse(ivec2 texel) { return imageLoad(weatherMaxCoarse, texel); }
 
-layout(binding = kMarchCloudShadow) uniform sampler2D cloudShadowMap;
-vec4 fetchCloudShadow(vec2 uv) { return textureLod(cloudShadowMap, uv, 0.0f); }
-vec4 gatherCloudShadowTerrain(vec2 uv) { return textureGather(cloudShadowMap, uv, 3); }
+#define CLOUD_SHADOW_MAP_BINDING kMarchCloudShadow
+#include "vkfx/cloud_shadow_sampled.glsl"
 // Indexed like frame_uniforms.glsl's block, for the same reason.
 layout(binding = kMarchCloudShadowParameters, std140) uniform TerrainShadow {
   MarchTerrainShadow terrainShadow[1];

@@ -287,12 +287,11 @@ void Context::Impl::dispatch(const FrameInputs& inputs, const Settings& settings
                                shadowFrame_ == inputs.frameIndex;
     shader::MarchTerrainShadow shadow{};
     if (terrainShadow) {
-      const ShadowMapParameters p =
-          shadowCascades_.parameters(inputs.cameraPosition, inputs.timeSeconds, settings);
-      std::memcpy(&shadow.map, &p, sizeof(p));
+      // This frame's dispatchShadowMap() placed them for this frame's camera.
+      std::memcpy(&shadow.map, &shadowParameters_, sizeof(shadowParameters_));
       shadow.terrainTopMetres = inputs.terrain.maxAltitudeMetres;
     }
-    recordUniforms(cmd, slot, lastUniforms_, shadow);
+    recordUniforms(cmd, slot, lastUniforms_, terrainShadow ? &shadow : nullptr);
     if (inputs.skyView != VK_NULL_HANDLE) recordSkyAmbient(cmd, inputs, slot);
     recordTrace(cmd, inputs, settings, temporal, traceExtent, terrainShadow, slot);
     temporal_.commit(temporal, inputs, settings, traceExtent);

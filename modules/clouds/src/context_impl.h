@@ -122,8 +122,9 @@ class Context::Impl {
   void makeShadowMapVisible(VkCommandBuffer cmd);
 
   // record_trace.cpp
+  // `shadow`: the march's terrain-shadow block, when this frame's march reads it.
   void recordUniforms(VkCommandBuffer cmd, Slot& slot, const shader::CloudUniforms& uniforms,
-                      const shader::MarchTerrainShadow& shadow);
+                      const shader::MarchTerrainShadow* shadow);
   void recordSkyAmbient(VkCommandBuffer cmd, const FrameInputs& inputs, Slot& slot);
   void recordClearSky(VkCommandBuffer cmd, Slot& slot);
   void recordTrace(VkCommandBuffer cmd, const FrameInputs& inputs, const Settings& settings,

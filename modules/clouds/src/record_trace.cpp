@@ -30,13 +30,16 @@ std::uint32_t historyVariant(bool use, bool still) {
 
 void Context::Impl::recordUniforms(VkCommandBuffer cmd, Slot& slot,
                                    const shader::CloudUniforms& uniforms,
-                                   const shader::MarchTerrainShadow& shadow) {
+                                   const shader::MarchTerrainShadow* shadow) {
   // The previous frame of this slot has completed (host contract), but earlier commands in
   // this queue may still read it: order the update after them.
   detail::memoryBarrier(device_, cmd, kCompute, VK_ACCESS_2_UNIFORM_READ_BIT | kStorageRead,
                         VK_PIPELINE_STAGE_2_TRANSFER_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT);
   device_.fn().vkCmdUpdateBuffer(cmd, slot.uniforms.buffer(), 0, sizeof(uniforms), &uniforms);
-  device_.fn().vkCmdUpdateBuffer(cmd, slot.shadowParameters.buffer(), 0, sizeof(shadow), &shadow);
+  // Only the march's terrain variant reads it.
+  if (shadow != nullptr) {
+    device_.fn().vkCmdUpdateBuffer(cmd, slot.shadowParameters.buffer(), 0, sizeof(*shadow), shadow);
+  }
   detail::memoryBarrier(device_, cmd, VK_PIPELINE_STAGE_2_TRANSFER_BIT,
                         VK_ACCESS_2_TRANSFER_WRITE_BIT, kCompute,
                         VK_ACCESS_2_UNIFORM_READ_BIT | kStorageRead | kStorageWrite);

@@ -129,10 +129,10 @@ ShadowPlan ShadowCascades::plan(const FrameInputs& in, const Settings& s) const 
                                    sameTerrain(in.terrain, terrain_) &&
                                    s.terrainShadowSteps == settings_.terrainShadowSteps;
   for (CascadeJob& job : jobs) {
-    const Made& t = terrainMade_[job.cascade];
-    job.keepTerrain = sameTerrainAndSteps && t.valid && t.cornerTexel == job.cornerTexel &&
-                      t.texelMetres == job.texelMetres && t.basis.light == job.basis.light &&
-                      t.basis.u == job.basis.u;
+    const Made& t = made_[job.cascade];
+    job.keepTerrain = sameTerrainAndSteps && hasTerrain_[job.cascade] && t.valid &&
+                      t.cornerTexel == job.cornerTexel && t.texelMetres == job.texelMetres &&
+                      t.basis.light == job.basis.light && t.basis.u == job.basis.u;
   }
   return plan;
 }
@@ -141,12 +141,12 @@ void ShadowCascades::commit(const ShadowPlan& plan, const FrameInputs& in, const
   const bool terrain = in.terrain.heightView != VK_NULL_HANDLE;
   for (const CascadeJob& job : plan.jobs) {
     made_[job.cascade] = Made{true, job.basis, job.cornerTexel, job.texelMetres, in.timeSeconds};
-    terrainMade_[job.cascade] = terrain ? made_[job.cascade] : Made{};
+    hasTerrain_[job.cascade] = terrain;
   }
   turn_ = plan.nextTurn;
   for (std::uint32_t c = s.shadowCascades; c < made_.size(); ++c) {
     made_[c] = Made{};
-    terrainMade_[c] = Made{};
+    hasTerrain_[c] = false;
   }
   settings_ = s;
   weatherView_ = in.weatherView;

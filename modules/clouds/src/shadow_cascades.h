@@ -77,7 +77,7 @@ class ShadowCascades {
   // The map's contents are gone (its image was replaced): everything is remade next time.
   void forget() {
     made_ = {};
-    terrainMade_ = {};
+    hasTerrain_ = {};
   }
 
   // The lookup parameters relative to the camera at `cameraPosition` at `timeSeconds`.
@@ -97,8 +97,9 @@ class ShadowCascades {
              const Settings& settings) const;
 
   std::array<Made, vkfx::shader::kCloudShadowMaxCascades> made_{};
-  // Where each cascade's terrain channel was made (valid: with the current terrain).
-  std::array<Made, vkfx::shader::kCloudShadowMaxCascades> terrainMade_{};
+  // Whether each cascade was made with a terrain (its channel then holds that terrain's shadow
+  // over the rays in made_).
+  std::array<bool, vkfx::shader::kCloudShadowMaxCascades> hasTerrain_{};
   std::uint64_t turn_ = 0;
   Settings settings_{};  // those the made cascades were made with
   VkImageView weatherView_ = VK_NULL_HANDLE;

@@ -99,7 +99,7 @@ std::string number(double value) {
   return text;
 }
 
-std::vector<BenchConfig> benchConfigs() {
+std::vector<BenchConfig> presetConfigs() {
   std::vector<BenchConfig> configs;
   for (clouds::Quality q : {clouds::Quality::Low, clouds::Quality::Medium, clouds::Quality::High,
                             clouds::Quality::Ultra}) {
@@ -109,6 +109,11 @@ std::vector<BenchConfig> benchConfigs() {
     c.quality = q;
     configs.push_back(c);
   }
+  return configs;
+}
+
+std::vector<BenchConfig> benchConfigs() {
+  std::vector<BenchConfig> configs = presetConfigs();
   const auto sweep = [&](const char* knob, std::vector<double> values, const char* unit,
                          void (*adjust)(clouds::Settings&, double)) {
     for (double v : values) {

@@ -46,6 +46,9 @@ struct BenchConfig {
   clouds::Settings settingsFor(const clouds::Settings& look) const;
 };
 
+// The quality presets Low, Medium, High, Ultra as configurations.
+std::vector<BenchConfig> presetConfigs();
+
 // Low, Medium, High, Ultra, then the sweeps (view step, light steps, trace scale, update
 // interval, temporal reuse, empty-space skipping). The Reference mode is measured apart.
 std::vector<BenchConfig> benchConfigs();

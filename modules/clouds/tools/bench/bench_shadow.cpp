@@ -84,15 +84,7 @@ const ShadowMeasurement* ShadowResults::find(const std::string& config,
 }
 
 std::vector<BenchConfig> shadowConfigs() {
-  std::vector<BenchConfig> configs;
-  for (clouds::Quality q : {clouds::Quality::Low, clouds::Quality::Medium, clouds::Quality::High,
-                            clouds::Quality::Ultra}) {
-    BenchConfig c;
-    c.name = clouds::qualityName(q);
-    c.preset = true;
-    c.quality = q;
-    configs.push_back(c);
-  }
+  std::vector<BenchConfig> configs = presetConfigs();
   const auto sweep = [&](const char* knob, std::vector<double> values,
                          void (*adjust)(clouds::Settings&, double)) {
     for (double v : values) {

@@ -1,5 +1,7 @@
 #include "cloud_harness.h"
 
+#include "clamped_sampling.h"
+
 #include "context_access.h"
 #include "engine/assets/image_metrics.h"
 
@@ -23,30 +25,16 @@ namespace vkfx::shader {
 // The receivers' fetch, as a linear sampler clamped to the edge reads the atlas.
 vec4 fetchCloudShadow(vec2 uv) {
   const auto& map = *tShadowMap;
-  const vec2 p = uv * vec2(map.width, map.height) - 0.5f;
-  const vec2 base = floor(p);
-  const vec2 f = p - base;
-  const auto at = [&](int x, int y) {
-    const int cx = std::clamp(x, 0, int(map.width) - 1);
-    const int cy = std::clamp(y, 0, int(map.height) - 1);
-    return map.texels[std::size_t(cy) * map.width + std::size_t(cx)];
-  };
-  const int x = int(base.x);
-  const int y = int(base.y);
-  return mix(mix(at(x, y), at(x + 1, y), f.x), mix(at(x, y + 1), at(x + 1, y + 1), f.x), f.y);
+  return clouds::tools::sampleLinearClamped(map.texels, map.width, map.height, uv);
 }
 // textureGather(map, uv, 3) on a clamped sampler.
 vec4 gatherCloudShadowTerrain(vec2 uv) {
   const auto& map = *tShadowMap;
-  const vec2 base = floor(uv * vec2(map.width, map.height) - 0.5f);
+  const clouds::tools::Footprint f = clouds::tools::footprintAt(uv, map.width, map.height);
   const auto at = [&](int x, int y) {
-    const int cx = std::clamp(x, 0, int(map.width) - 1);
-    const int cy = std::clamp(y, 0, int(map.height) - 1);
-    return map.texels[std::size_t(cy) * map.width + std::size_t(cx)].w;
+    return clouds::tools::clampedTexel(map.texels, map.width, map.height, x, y).w;
   };
-  const int x = int(base.x);
-  const int y = int(base.y);
-  return vec4(at(x, y + 1), at(x + 1, y + 1), at(x + 1, y), at(x, y));
+  return vec4(at(f.x, f.y + 1), at(f.x + 1, f.y + 1), at(f.x + 1, f.y), at(f.x, f.y));
 }
 }  // namespace vkfx::shader
 

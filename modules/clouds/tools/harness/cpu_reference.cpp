@@ -4,6 +4,7 @@
 #include <cmath>
 #include <thread>
 
+#include "clamped_sampling.h"
 #include "cloud_march.h"
 #include "cloud_shadow_march.h"
 #include "cloud_weather_maxima.h"
@@ -145,18 +146,7 @@ glm::vec4 cpuShadowTexel(const CpuTextures& textures, const CloudUniforms& u,
 }
 
 float CpuHeightfield::at(glm::vec2 uv) const {
-  const glm::vec2 p = uv * glm::vec2(width, height) - 0.5f;
-  const glm::vec2 base = glm::floor(p);
-  const glm::vec2 f = p - base;
-  const auto texel = [&](int x, int y) {
-    const int cx = std::clamp(x, 0, int(width) - 1);
-    const int cy = std::clamp(y, 0, int(height) - 1);
-    return metres[std::size_t(cy) * width + std::size_t(cx)];
-  };
-  const int x = int(base.x);
-  const int y = int(base.y);
-  return glm::mix(glm::mix(texel(x, y), texel(x + 1, y), f.x),
-                  glm::mix(texel(x, y + 1), texel(x + 1, y + 1), f.x), f.y);
+  return sampleLinearClamped(metres, width, height, uv);
 }
 
 float cpuTerrainShadowTexel(const CpuHeightfield& heightfield, const TerrainShadowConstants& t,
