@@ -4,6 +4,7 @@
 
 #include "interop.h"
 #include "terrain_material.h"
+#include "terrain_sunlight_map.h"
 
 SHADER_NAMESPACE_BEGIN
 
@@ -24,8 +25,10 @@ struct SceneFrame {
   vec4 sunAboveAir;          // rgb the sun's illuminance above the air (the haze's radiance scale)
   uvec4 extent;              // xy output size (px)
   TerrainMaterials terrain;  // rock and snow over the terrain mesh's colours
+  vec4 sunlightMap;          // the terrain's sunlight map: xy the camera's place in it ([0, 1]),
+                             //   zw its reciprocal size (1/m) (terrain_sunlight_map.h)
 };
-SHADER_STATIC_ASSERT(sizeof(SceneFrame) == 64 + 14 * 16);
+SHADER_STATIC_ASSERT(sizeof(SceneFrame) == 64 + 15 * 16);
 
 // Sky radiance along a view direction: a zenith-to-horizon blend, ground below, a sun disc and
 // its glow. Shared so the terrain's fog fades to exactly the sky behind it.

@@ -1,8 +1,9 @@
 // The terrain's fragment stage: the surface made finer than the mesh (terrain_material.h:
-// detail normals, rock and snow by slope and altitude), lit by the sun (through the clouds'
-// shadow map and the terrain's own shadow in it with TERRAIN_CLOUD_SHADOWS) and the sky, then
-// hazed by the aerial perspective its vertices read (TERRAIN_HAZED: a scene with an
-// atmosphere) or, the cheap alternative, fogged towards the gradient sky behind the fragment.
+// detail normals, rock and snow by slope and altitude), lit by the sun (with
+// TERRAIN_CLOUD_SHADOWS through the clouds and past the terrain itself, as the terrain's
+// sunlight map holds it) and the sky, then hazed by the aerial perspective its vertices read
+// (TERRAIN_HAZED: a scene with an atmosphere) or, the cheap alternative, fogged towards the
+// gradient sky behind the fragment.
 #extension GL_GOOGLE_include_directive : require
 #include "scene_constants.h"
 
@@ -18,23 +19,15 @@ layout(location = 3) in vec4 inHaze;
 #endif
 
 #ifdef TERRAIN_CLOUD_SHADOWS
-#define CLOUD_SHADOW_MAP_BINDING 2
-#include "vkfx/cloud_shadow_sampled.glsl"
-layout(binding = 3, std140) uniform CloudShadow { CloudShadowParameters cloudShadow; };
-layout(location = 4) in vec4 inShadowUv01;
-layout(location = 5) in vec4 inShadowUv23;
-layout(location = 6) in float inTerrainLight;
+layout(binding = 2) uniform sampler2D sunlightMap;  // terrain_sunlight_map.h
 #endif
 
 // The share of the sun the fragment sees: what the clouds let through, and none where the
-// terrain itself hides the sun (the map's terrain channel, from the scene's heightfield, read
-// per vertex).
+// terrain itself hides the sun, both from the terrain's sunlight map (made from the clouds'
+// shadow map each frame).
 float sunVisibility() {
 #ifdef TERRAIN_CLOUD_SHADOWS
-  const float clouds = cloudShadowAt(cloudShadow.info, inShadowUv01, inShadowUv23,
-                                     cloudShadow.info.z + inRelative.y, kCloudShadowClouds)
-                           .x;
-  return clouds * inTerrainLight;
+  return textureLod(sunlightMap, terrainSunlightUv(inRelative.xz, frame.sunlightMap), 0.0f).r;
 #else
   return 1.0;
 #endif

@@ -118,19 +118,20 @@ TEST(HeadlessCapture, EachSceneGetsOnlyThePassesAndPipelinesItNeeds) {
       // An atmosphere draws the sky in the scene pass: no gradient sky pass or pipeline.
       {scene("atmosphere_only.json"), R"("passes": ["atmosphere", "scene", "tonemap", "capture"])",
        R"("pipelines": ["tonemap", "atmosphere module"])", R"("modules": ["atmosphere"])"},
-      // Clouds over terrain shadow it: their shadow map first, the terrain's shadowed variant.
+      // Clouds over terrain shadow it: their shadow map first, the terrain's sunlight read from
+      // it, the terrain's shadowed variant.
       {std::string(SAMPLE_ASSET_DIR) + "/scenes/default.json",
-       R"("passes": ["cloud shadows", "atmosphere", "scene", "clouds", "clouds composite", )"
-       R"("tonemap", "capture"])",
-       R"x("pipelines": ["tonemap", "terrain (cloud shadows)", "atmosphere module", )x"
-       R"x("clouds module"])x",
+       R"("passes": ["cloud shadows", "terrain sunlight", "atmosphere", "scene", "clouds", )"
+       R"("clouds composite", "tonemap", "capture"])",
+       R"x("pipelines": ["tonemap", "terrain (cloud shadows)", "terrain sunlight", )x"
+       R"x("atmosphere module", "clouds module"])x",
        R"("modules": ["atmosphere", "clouds"], "shadow casters": ["clouds", "terrain"])"},
-      // A terrain that casts no shadows: the clouds' map alone.
+      // A terrain that casts no shadows: the clouds' map alone (the terrain still reads it).
       {scene("ridge_sunset_unshadowing.json"),
-       R"("passes": ["cloud shadows", "atmosphere", "scene", "clouds", "clouds composite", )"
-       R"("tonemap", "capture"])",
-       R"x("pipelines": ["tonemap", "terrain (cloud shadows)", "atmosphere module", )x"
-       R"x("clouds module"])x",
+       R"("passes": ["cloud shadows", "terrain sunlight", "atmosphere", "scene", "clouds", )"
+       R"("clouds composite", "tonemap", "capture"])",
+       R"x("pipelines": ["tonemap", "terrain (cloud shadows)", "terrain sunlight", )x"
+       R"x("atmosphere module", "clouds module"])x",
        R"("shadow casters": ["clouds"])"},
       // A layer that casts no shadows: no shadow pass, the plain terrain.
       {scene("unshadowed_clouds.json"),
@@ -208,6 +209,28 @@ TEST(HeadlessCapture, MountainsShadeTheCloudsAtSunset) {
   std::printf("terrain shadows: %.1f%% of pixels 20%% darker, %.2f%% brighter\n",
               100.0 * double(darker) / double(pixels), 100.0 * double(e.brighter) / double(pixels));
   EXPECT_GT(darker, pixels / 100) << "the range's shadows must reach clouds and valleys";
+  EXPECT_EQ(e.brighter, 0u) << "a shadow only takes light away";
+}
+
+// The range shadows its own valleys at sunset: under a clear sky (the clouds' map holds only
+// the terrain's channel) and without an atmosphere (no light shafts), only the terrain's
+// lighting through its sunlight map can differ.
+TEST(HeadlessCapture, TheRangeShadowsItsOwnValleysAtSunset) {
+  const fs::path bare = freshDir("clear_unshadowing_terrain");
+  const fs::path shading = freshDir("clear_shading_terrain");
+  const std::string common =
+      "--headless --frames 3 --fixed-dt 0.05 --width 240 --height 135 --validation --capture ";
+  ASSERT_EQ(runSample(common + bare.string() + " --scene " +
+                      scene("ridge_sunset_clear_unshadowing.json")),
+            0);
+  ASSERT_EQ(runSample(common + shading.string() + " --scene " + scene("ridge_sunset_clear.json")),
+            0);
+  const ShadowEffect e = shadowEffect(bare / "frame_0002.exr", shading / "frame_0002.exr", 0.6f);
+  ASSERT_GT(e.pixels, 0u);
+  std::printf("the range's own shadows: %.1f%% of pixels 40%% darker, %.2f%% brighter\n",
+              100.0 * double(e.darker) / double(e.pixels),
+              100.0 * double(e.brighter) / double(e.pixels));
+  EXPECT_GT(e.darker, e.pixels / 20) << "the valleys in the range's lee must be shadowed";
   EXPECT_EQ(e.brighter, 0u) << "a shadow only takes light away";
 }
 

@@ -49,12 +49,18 @@ Renderer::Renderer(gfx::Device& device, render::PresentTarget& target, ecs::Worl
                                                  featureSky, cloudShadows);
     terrainMaterials_ = terrainMaterialsFor(*mesh->mesh, mesh->snowlineMetres);
     pipelines.push_back(&terrain_->pipeline());
-    // Mountains shade the clouds and themselves through the clouds' shadow map: without a map
-    // (or with a terrain that casts none) the heightfield is not even made.
-    if (cloudShadows && mesh->castsShadows) {
+    // Under shadow-casting clouds the terrain is lit through its sunlight map, made over its
+    // heightfield; mountains also shade the clouds and themselves when the heightfield goes to
+    // the clouds' shadow map (a terrain that casts shadows). Without a map, neither is made.
+    if (cloudShadows) {
       heightfield_ = std::make_unique<TerrainHeightfieldImage>(device, *mesh->mesh);
-      world.ctx().emplaceOrReplace<render::TerrainHeightfield>(heightfield_->description());
-      world_ = &world;
+      sunlight_ = std::make_unique<TerrainSunlight>(device, heightfield_->description(),
+                                                    TerrainHeightfieldImage::kResolution);
+      pipelines.push_back(&sunlight_->pipeline());
+      if (mesh->castsShadows) {
+        world.ctx().emplaceOrReplace<render::TerrainHeightfield>(heightfield_->description());
+        world_ = &world;
+      }
     }
   }
   if (options.hud) {
@@ -102,6 +108,8 @@ void Renderer::rebuildGraph(VkExtent2D extent) {
                   [](const render::RenderFeature* f) { return f->receivesCloudShadow(); });
   // What shadows the frame, then what the scene reads (the sky and its haze may read shadows).
   for (render::RenderFeature* feature : features_) scene = feature->addShadowPasses(graph, scene);
+  const render::TextureHandle sunlight =
+      sunlight_ ? sunlight_->addPass(graph, scene, &cameraPosition_) : render::TextureHandle{};
   for (render::RenderFeature* feature : features_) {
     scene = feature->addPassesBeforeScene(graph, scene);
   }
@@ -110,8 +118,8 @@ void Renderer::rebuildGraph(VkExtent2D extent) {
   hazeSlices_ = scene.aerialPerspectiveSlices;
   // The opaque scene, and a feature's sky behind it: a graphics pass whenever either exists.
   if (terrain_ || !skyDrawers_.empty()) {
-    const SceneTargets targets = addScenePass(graph, terrain_.get(), scene, skyDrawers_, kHdrFormat,
-                                              kDepthFormat, &sceneFrame_);
+    const SceneTargets targets = addScenePass(graph, terrain_.get(), scene, sunlight, skyDrawers_,
+                                              kHdrFormat, kDepthFormat, &sceneFrame_);
     scene.hdr = targets.hdr;
     scene.depth = targets.depth;
   }
@@ -159,6 +167,8 @@ void Renderer::updateFrameConstants(ecs::World& world, VkExtent2D extent) {
   f.sunAboveAir = glm::vec4(sun.illuminance, 0.0f);
   f.extent = glm::uvec4(extent.width, extent.height, 0u, 0u);
   f.terrain = terrainMaterials_;
+  cameraPosition_ = camera.position;
+  if (sunlight_) f.sunlightMap = sunlight_->placementFor(camera.position);
   tonemap_.exposure = render::exposureScale(world.ctx().get<render::Exposure>().ev100);
 
   if (terrain_) terrain_->cull(f.viewProjection, camera.position);
@@ -222,7 +232,7 @@ std::vector<std::string> Renderer::shadowCasters() const {
                   [](const render::RenderFeature* f) { return f->castsCloudShadow(); })) {
     casters.emplace_back("clouds");
   }
-  if (heightfield_) casters.emplace_back("terrain");
+  if (world_ != nullptr) casters.emplace_back("terrain");  // its heightfield went to the map
   return casters;
 }
 
@@ -230,6 +240,7 @@ std::vector<std::string> Renderer::pipelineNames() const {
   std::vector<std::string> names = {tonemapper_.pipeline().name()};
   if (sky_) names.push_back(sky_->pipeline().name());
   if (terrain_) names.push_back(terrain_->pipeline().name());
+  if (sunlight_) names.push_back(sunlight_->pipeline().name());
   if (hud_) names.push_back(hud_->pipeline().name());
   for (const render::RenderFeature* feature : features_) {
     names.push_back(std::string(feature->name()) + " module");

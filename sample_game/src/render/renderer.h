@@ -27,6 +27,7 @@
 #include "game/game_components.h"
 #include "render/sky_pass.h"
 #include "render/terrain_heightfield.h"
+#include "render/terrain_sunlight.h"
 
 namespace sample {
 
@@ -75,10 +76,13 @@ class Renderer {
   std::unique_ptr<SkyPass> sky_;  // when no feature draws the sky
   std::unique_ptr<TerrainRenderer> terrain_;
   engine::shaders::TerrainMaterials terrainMaterials_{};  // SceneFrame::terrain
-  // The terrain's heightfield, when it casts shadows and something makes them (the clouds'
-  // shadow map): published as engine::render::TerrainHeightfield.
+  // Under shadow-casting clouds, the terrain's heightfield (published as
+  // engine::render::TerrainHeightfield when the terrain casts shadows: then world_ is set) and
+  // the sunlight map made over it.
   std::unique_ptr<TerrainHeightfieldImage> heightfield_;
+  std::unique_ptr<TerrainSunlight> sunlight_;
   engine::ecs::World* world_ = nullptr;
+  glm::dvec3 cameraPosition_{0.0};  // this frame's (world, m), for the sunlight pass
   std::vector<engine::render::RenderFeature*> features_;    // owned by their modules
   std::vector<engine::render::RenderFeature*> skyDrawers_;  // those of them that draw the sky
   std::unique_ptr<Hud> hud_;

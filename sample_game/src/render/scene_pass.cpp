@@ -7,13 +7,13 @@ namespace sample {
 using namespace engine;
 
 SceneTargets addScenePass(render::FrameGraph& graph, const TerrainRenderer* terrain,
-                          const render::SceneTextures& scene,
+                          const render::SceneTextures& scene, render::TextureHandle sunlight,
                           std::span<render::RenderFeature* const> skyDrawers, VkFormat hdrFormat,
                           VkFormat depthFormat, const SceneFrameBinding* frame) {
   struct Data {
     SceneTargets targets;
     render::TextureHandle haze;
-    render::TextureHandle cloudShadow;
+    render::TextureHandle sunlight;
   };
   const bool featureSky = !skyDrawers.empty();
   const Data& data = graph.addPass<Data>(
@@ -33,7 +33,7 @@ SceneTargets addScenePass(render::FrameGraph& graph, const TerrainRenderer* terr
           d.haze = builder.read(scene.aerialPerspective, render::Access::SampledReadGeneral);
         }
         if (terrain != nullptr && terrain->shadowedByClouds()) {
-          d.cloudShadow = builder.read(scene.cloudShadow, render::Access::SampledReadGeneral);
+          d.sunlight = builder.read(sunlight, render::Access::SampledReadGeneral);
         }
         // The sky reads what the feature recorded before the scene (ordered after it; the
         // feature synchronises its own images).
@@ -41,8 +41,7 @@ SceneTargets addScenePass(render::FrameGraph& graph, const TerrainRenderer* terr
           builder.read(scene.skyRadiance, render::Access::SampledReadGeneral);
         }
       },
-      [terrain, frame, skyDrawers, shadowParameters = scene.cloudShadowParameters](
-          const Data& d, render::PassContext& context) {
+      [terrain, frame, skyDrawers](const Data& d, render::PassContext& context) {
         if (terrain != nullptr) {
           gfx::DescriptorWriter writer;
           writer.uniformBuffer(TerrainRenderer::kFrameBinding, frame->slice.buffer,
@@ -51,14 +50,9 @@ SceneTargets addScenePass(render::FrameGraph& graph, const TerrainRenderer* terr
             writer.combinedImageSampler(TerrainRenderer::kHazeBinding, context.view(d.haze),
                                         terrain->linearSampler(), VK_IMAGE_LAYOUT_GENERAL);
           }
-          if (d.cloudShadow.valid()) {
-            // The map's pass has executed: this frame's parameters are filled.
-            const gfx::ConstantRing::Slice parameters = context.constants().push(*shadowParameters);
-            writer.combinedImageSampler(TerrainRenderer::kCloudShadowBinding,
-                                        context.view(d.cloudShadow), terrain->linearSampler(),
-                                        VK_IMAGE_LAYOUT_GENERAL);
-            writer.uniformBuffer(TerrainRenderer::kCloudShadowParametersBinding, parameters.buffer,
-                                 parameters.offset, parameters.size);
+          if (d.sunlight.valid()) {
+            writer.combinedImageSampler(TerrainRenderer::kSunlightBinding, context.view(d.sunlight),
+                                        terrain->linearSampler(), VK_IMAGE_LAYOUT_GENERAL);
           }
           context.bind(terrain->pipeline(), writer);
           terrain->draw(context.cmd());

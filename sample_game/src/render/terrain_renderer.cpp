@@ -1,5 +1,7 @@
 #include "render/terrain_renderer.h"
 
+#include "render/terrain_sunlight.h"
+
 #include <algorithm>
 #include <cstring>
 #include <unordered_map>
@@ -195,9 +197,8 @@ TerrainRenderer::TerrainRenderer(gfx::Device& device, const assets::MeshData& me
                              VK_FORMAT_R16G16B16A16_SFLOAT, VK_IMAGE_VIEW_TYPE_3D});
   }
   if (cloudShadows) {
-    desc.bindings.push_back({kCloudShadowBinding, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER,
-                             VK_FORMAT_R16G16B16A16_SFLOAT, VK_IMAGE_VIEW_TYPE_2D});
-    desc.bindings.push_back({kCloudShadowParametersBinding, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER});
+    desc.bindings.push_back({kSunlightBinding, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER,
+                             TerrainSunlight::kFormat, VK_IMAGE_VIEW_TYPE_2D});
   }
   desc.colorFormats = {hdrFormat};
   desc.depthFormat = depthFormat;

@@ -56,13 +56,13 @@ bool boxInFrustum(const glm::mat4& viewProjection, const glm::vec3& boundsMin,
 class TerrainRenderer {
  public:
   // Descriptor bindings of the terrain pipeline.
-  static constexpr std::uint32_t kFrameBinding = 0;        // SceneFrame
-  static constexpr std::uint32_t kHazeBinding = 1;         // the aerial perspective (3D)
-  static constexpr std::uint32_t kCloudShadowBinding = 2;  // the clouds' shadow map
-  static constexpr std::uint32_t kCloudShadowParametersBinding = 3;
+  static constexpr std::uint32_t kFrameBinding = 0;     // SceneFrame
+  static constexpr std::uint32_t kHazeBinding = 1;      // the aerial perspective (3D)
+  static constexpr std::uint32_t kSunlightBinding = 2;  // the terrain's sunlight map
 
   // `aerialPerspective`: hazed by a feature's aerial perspective (else by the fog).
-  // `cloudShadows`: lit through the clouds' shadow map (SceneTextures::cloudShadow).
+  // `cloudShadows`: lit through the clouds and past the terrain's own shadow as the terrain's
+  // sunlight map (TerrainSunlight) holds them.
   TerrainRenderer(engine::gfx::Device& device, const engine::assets::MeshData& mesh,
                   VkFormat hdrFormat, VkFormat depthFormat, bool aerialPerspective,
                   bool cloudShadows);
@@ -70,7 +70,7 @@ class TerrainRenderer {
   const engine::gfx::Pipeline& pipeline() const { return pipeline_; }
   bool hazedByAerialPerspective() const { return aerialPerspective_; }
   bool shadowedByClouds() const { return cloudShadows_; }
-  // Linear, clamped: the aerial perspective's and the cloud shadow map's.
+  // Linear, clamped: the aerial perspective's and the sunlight map's.
   VkSampler linearSampler() const { return sampler_.vk(); }
   // Frustum culling for this frame (camera-relative view-projection and camera position).
   void cull(const glm::mat4& viewProjection, const glm::dvec3& cameraPosition);

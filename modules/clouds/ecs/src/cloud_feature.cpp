@@ -149,8 +149,11 @@ void CloudFeature::dispatchShadowMap(const HostFrame& host) {
     static_assert(sizeof(p) == sizeof(shadowParameters_));
     std::copy(std::begin(p.cascade), std::end(p.cascade), shadowParameters_.begin());
     shadowParameters_.back() = p.info;
+    const std::uint32_t every = (1u << settings_.shadowCascades) - 1u;
+    shadowRemadeWhole_ = context_->lastFrameReport().shadowCascadesMade == every;
   } else {
     shadowParameters_ = {};  // no shadow rather than a stale one
+    shadowRemadeWhole_ = true;
     reportError(error);
   }
 }
@@ -188,6 +191,7 @@ SceneTextures CloudFeature::addShadowPasses(FrameGraph& graph, const SceneTextur
   SceneTextures out = scene;
   out.cloudShadow = shadow.map;
   out.cloudShadowParameters = &shadowParameters_;
+  out.cloudShadowRemadeWhole = &shadowRemadeWhole_;
   return out;
 }
 

@@ -59,7 +59,8 @@ class CloudFeature final : public engine::render::RenderFeature {
   bool castsShadow_ = false;   // the layer's settings have a shadow map
   // This frame's shadow-map parameters, filled when "cloud shadows" executes.
   engine::render::CloudShadowParameterBlock shadowParameters_{};
-  bool dispatched_ = false;  // this frame's dispatch succeeded
+  bool shadowRemadeWhole_ = false;  // every cascade was made this frame
+  bool dispatched_ = false;         // this frame's dispatch succeeded
   bool errorLogged_ = false;
 };
 

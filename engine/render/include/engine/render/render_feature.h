@@ -71,6 +71,10 @@ struct SceneTextures {
   // nothing casts cloud shadows.
   TextureHandle cloudShadow;
   const CloudShadowParameterBlock* cloudShadowParameters = nullptr;
+  // Filled with the parameters: whether this frame's map was remade whole (no cascade carried
+  // over from the frame before: a camera cut, new settings, a sun that turned), so a receiver
+  // that keeps what it read from the map across frames must read it again.
+  const bool* cloudShadowRemadeWhole = nullptr;
   // Set by the renderer before the shadow passes: whether anything in the frame receives cloud
   // shadows (its geometry, or a feature that does). Without a receiver, no map is made.
   bool cloudShadowReceived = false;
