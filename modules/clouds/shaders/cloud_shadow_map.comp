@@ -6,8 +6,9 @@
 // (terrain_shadow_map.comp writes it).
 // Inputs: binding 0 CloudUniforms (this frame's field: camera-relative offsets, coverage,
 // extinction); 1 shape noise; 2 weather map; 3-4 weather maxima (empty-space skipping); push
-// constants ShadowMapConstants (the cascade's placement). Output: 5 the cascade atlas (its
-// square for this cascade).
+// constants ShadowMapConstants (the cascade's placement and the rows made). Output: 5 the
+// cascade atlas (its square for this cascade) or, for a cascade made over several frames, 6 the
+// spare cascade (copied into the atlas after its last rows are made).
 // References: Schneider & Vos 2017 (Nubis); Hillaire 2016 (Beer shadow maps, Frostbite).
 #extension GL_GOOGLE_include_directive : require
 
@@ -24,6 +25,7 @@ layout(binding = kShadowWeatherMap, rgba8) uniform readonly image2D weatherMap;
 layout(binding = kShadowWeatherMaxFine, rgba8) uniform readonly image2D weatherMaxFine;
 layout(binding = kShadowWeatherMaxCoarse, rgba8) uniform readonly image2D weatherMaxCoarse;
 layout(binding = kShadowMapOut, rgba16f) uniform image2D shadowMap;
+layout(binding = kShadowMapSpare, rgba16f) uniform writeonly image2D spareCascade;
 layout(push_constant) uniform Constants { ShadowMapConstants c; };
 
 vec4 fetchShapeNoise(ivec3 texel) { return imageLoad(shapeNoise, texel); }
@@ -39,14 +41,19 @@ float terrainSunLight(vec3 flatOffset, float altitude) { return 1.0f; }
 
 void main() {
   loadFrameUniforms();
-  const uvec2 texel = gl_GlobalInvocationID.xy;
-  if (any(greaterThanEqual(texel, uvec2(c.resolution)))) return;
+  const uvec2 texel = uvec2(gl_GlobalInvocationID.x, c.firstRow + gl_GlobalInvocationID.y);
+  if (texel.x >= c.resolution || gl_GlobalInvocationID.y >= c.rowCount) return;
   const ShadowColumn column = marchShadowTexel(c, texel, kEmptySpace, u);
   const ivec2 atlas = ivec2(c.cascade * c.resolution + texel.x, texel.y);
   // The terrain does not move: a cascade remade over the same rays keeps its terrain channel.
   float terrain = kCloudShadowNoTerrain;
-  for (int i = 0; i < int(c.keepTerrain); ++i) terrain = imageLoad(shadowMap, atlas).a;
-  imageStore(shadowMap, atlas,
-             vec4(min(column.opticalDepth, kCloudShadowMaxDepth), column.frontAltitude,
-                  column.backAltitude, terrain));
+  const int keep = (c.flags & kShadowTexelKeepTerrain) != 0u ? 1 : 0;
+  for (int i = 0; i < keep; ++i) terrain = imageLoad(shadowMap, atlas).a;
+  const vec4 value = vec4(min(column.opticalDepth, kCloudShadowMaxDepth), column.frontAltitude,
+                          column.backAltitude, terrain);
+  if ((c.flags & kShadowTexelToSpare) != 0u) {
+    imageStore(spareCascade, ivec2(texel), value);
+  } else {
+    imageStore(shadowMap, atlas, value);
+  }
 }

@@ -68,7 +68,8 @@ const uint kShadowShapeNoise = 1u;
 const uint kShadowWeatherMap = 2u;
 const uint kShadowWeatherMaxFine = 3u;
 const uint kShadowWeatherMaxCoarse = 4u;
-const uint kShadowMapOut = 5u;  // the cascade atlas (vkfx/cloud_shadow.h), RGBA16F
+const uint kShadowMapOut = 5u;    // the cascade atlas (vkfx/cloud_shadow.h), RGBA16F
+const uint kShadowMapSpare = 6u;  // one cascade in the making (kShadowTexelToSpare), RGBA16F
 // terrain_shadow_map.comp
 const uint kTerrainShadowHeight = 0u;  // the host's heightfield, sampled
 const uint kTerrainShadowMap = 1u;     // the cascade atlas: its terrain channel is written
@@ -272,12 +273,16 @@ struct ShadowMapConstants {
   uint cascade;      // which cascade of the atlas
   uint resolution;   // texels per cascade side
   uint steps;        // samples along each ray
-  // 1: the cascade's terrain channel (alpha) is still right (same rays, same terrain): keep it.
-  // 0: write "no terrain" (terrain_shadow_map.comp follows when there is one).
-  uint keepTerrain;
-  uint padding1;
-  uint padding2;
+  uint flags;        // kShadowTexelKeepTerrain, kShadowTexelToSpare
+  uint firstRow;     // the rows [firstRow, firstRow + rowCount) are made
+  uint rowCount;
 };
+// ShadowMapConstants::flags. Keep terrain: the cascade's terrain channel (alpha) in the atlas
+// is still right (same rays, same terrain): keep it; else write "no terrain"
+// (terrain_shadow_map.comp follows when there is one). To spare: write the texels into the
+// spare cascade image (a cascade made over several frames) instead of the atlas.
+const uint kShadowTexelKeepTerrain = 1u;
+const uint kShadowTexelToSpare = 2u;
 
 // The march's uniform block for the terrain's shadow on the clouds (kMarchCloudShadowParameters):
 // the shadow map's lookup parameters, and the terrain's highest altitude (no sample above it can

@@ -153,10 +153,12 @@ detail::ImageSizes imageSizesFor(const Settings& settings, VkExtent2D renderExte
           upsamplesTemporally(settings)};
 }
 
-// The shadow map's cascade atlas: the cascades side by side ({0, 0}: none).
-VkExtent2D shadowExtentFor(const Settings& settings) {
-  return {settings.shadowMapResolution * settings.shadowCascades,
-          settings.shadowCascades > 0 ? settings.shadowMapResolution : 0};
+// The shadow map's cascade atlas: the cascades side by side ({0, 0}: none); and the spare
+// cascade, when a cascade is made over several frames.
+detail::ShadowExtents shadowExtentFor(const Settings& settings) {
+  const std::uint32_t n = settings.shadowCascades > 0 ? settings.shadowMapResolution : 0;
+  const std::uint32_t spare = settings.shadowFramesPerCascade > 1 ? n : 0;
+  return {{settings.shadowMapResolution * settings.shadowCascades, n}, {spare, spare}};
 }
 
 }  // namespace
@@ -250,9 +252,10 @@ void Context::Impl::dispatchShadowMap(const FrameInputs& inputs, const Settings&
   device_.beginLabel(cmd, "clouds: shadow map");
   startFrame(inputs, settings, slot);
   const detail::ShadowPlan plan = shadowCascades_.plan(inputs, settings);
-  if (!plan.jobs.empty()) recordShadowMap(cmd, inputs, settings, plan, slot);
+  if (!plan.jobs.empty() || plan.slice) recordShadowMap(cmd, inputs, settings, plan, slot);
   shadowCascades_.commit(plan, inputs, settings);
   for (const detail::CascadeJob& job : plan.jobs) shadowCascadesMade_ |= 1u << job.cascade;
+  if (plan.slice && plan.slice->last) shadowCascadesMade_ |= 1u << plan.slice->job.cascade;
   shadowParameters_ =
       shadowCascades_.parameters(inputs.cameraPosition, inputs.timeSeconds, settings);
   shadowFrame_ = inputs.frameIndex;

@@ -118,7 +118,8 @@ class Context::Impl {
   void recordShadowMap(VkCommandBuffer cmd, const FrameInputs& inputs, const Settings& settings,
                        const detail::ShadowPlan& plan, Slot& slot);
   void recordTerrainShadow(VkCommandBuffer cmd, const FrameInputs& inputs, const Settings& settings,
-                           const detail::ShadowPlan& plan, Slot& slot);
+                           const std::vector<detail::CascadeJob>& jobs, Slot& slot);
+  void copySpareIntoAtlas(VkCommandBuffer cmd, std::uint32_t cascade, std::uint32_t resolution);
   void makeShadowMapVisible(VkCommandBuffer cmd);
 
   // record_trace.cpp
@@ -167,6 +168,9 @@ class Context::Impl {
   FrameReport report_{};
   shader::CloudUniforms lastUniforms_{};
   shader::CloudUniforms lastShadowUniforms_{};
+  // The field the shadow map is made with: this frame's, or for a cascade made in slices the
+  // frame's of its first slice.
+  shader::CloudUniforms sliceUniforms_{};
   std::vector<shader::ShadowMapConstants> lastShadowJobs_;
   std::vector<shader::TerrainShadowConstants> lastTerrainShadowJobs_;
   std::uint32_t debugFlags_ = 0;

@@ -20,6 +20,12 @@ constexpr VkImageUsageFlags kOutput =
     kStorage | VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT;
 constexpr VkImageUsageFlags kHistory = kStorage | VK_IMAGE_USAGE_TRANSFER_DST_BIT;
 
+// Whether `image` is exactly `extent` ({0, 0}: no image).
+bool fitsExactly(const OwnedImage& image, VkExtent2D extent) {
+  if (extent.width == 0 || extent.height == 0) return !image;
+  return image && image.extent().width == extent.width && image.extent().height == extent.height;
+}
+
 VkExtent3D extent3(VkExtent2D e) {
   return {e.width, e.height, 1};
 }
@@ -129,21 +135,23 @@ bool ModuleImages::grow(const ImageSizes& sizes, std::optional<std::uint64_t> la
   return historyLost;
 }
 
-bool ModuleImages::shadowFits(VkExtent2D extent) const {
-  if (extent.width == 0 || extent.height == 0) return !shadowMap;
-  return shadowMap && shadowMap.extent().width == extent.width &&
-         shadowMap.extent().height == extent.height;
+bool ModuleImages::shadowFits(const ShadowExtents& extents) const {
+  return fitsExactly(shadowMap, extents.atlas) && fitsExactly(shadowSpare, extents.spare);
 }
 
-bool ModuleImages::fitShadow(VkExtent2D extent, std::optional<std::uint64_t> lastUse) {
-  if (shadowFits(extent)) return false;
-  OwnedImage replacement;
-  if (extent.width > 0 && extent.height > 0) {
-    // Its layout depends on the cascades and resolution: the size is exact, not grown.
-    replacement =
-        make(VK_IMAGE_TYPE_2D, kRadianceFormat, extent3(extent), kOutput, "cloud shadow map");
-  }
-  replace(shadowMap, std::move(replacement), lastUse);
+bool ModuleImages::fitShadow(const ShadowExtents& extents, std::optional<std::uint64_t> lastUse) {
+  if (shadowFits(extents)) return false;
+  // Their layout depends on the cascades and resolution: the sizes are exact, not grown.
+  const auto remake = [&](OwnedImage& image, VkExtent2D extent, const char* name) {
+    if (fitsExactly(image, extent)) return;
+    OwnedImage replacement;
+    if (extent.width > 0 && extent.height > 0) {
+      replacement = make(VK_IMAGE_TYPE_2D, kRadianceFormat, extent3(extent), kOutput, name);
+    }
+    replace(image, std::move(replacement), lastUse);
+  };
+  remake(shadowMap, extents.atlas, "cloud shadow map");
+  remake(shadowSpare, extents.spare, "cloud shadow spare cascade");
   return true;
 }
 
@@ -173,7 +181,7 @@ MemoryUsage ModuleImages::memoryUsage() const {
   m.traceBytes =
       sceneDistance.bytes() + traceSamples.bytes() + history[0].bytes() + history[1].bytes();
   m.upsamplingBytes = outputHistory[0].bytes() + outputHistory[1].bytes();
-  m.shadowBytes = shadowMap.bytes();
+  m.shadowBytes = shadowMap.bytes() + shadowSpare.bytes();
   m.bufferBytes = depthPlaceholder.bytes() + samplesPlaceholder.bytes() + hazePlaceholder.bytes();
   for (const Retired& r : retired_) m.retiredBytes += r.image.bytes();
   return m;

@@ -20,6 +20,12 @@
 
 namespace clouds::detail {
 
+// The shadow map's images: the cascade atlas and the spare cascade ({0, 0}: none).
+struct ShadowExtents {
+  VkExtent2D atlas{0, 0};
+  VkExtent2D spare{0, 0};
+};
+
 struct ImageSizes {
   VkExtent2D output{0, 0};
   VkExtent2D trace{0, 0};
@@ -36,11 +42,11 @@ class ModuleImages {
   // images (none if no frame was). Returns true when a history image was replaced (its
   // contents are gone).
   bool grow(const ImageSizes& sizes, std::optional<std::uint64_t> lastUse);
-  // Whether the shadow map is exactly `extent` ({0, 0}: no shadow map).
-  bool shadowFits(VkExtent2D extent) const;
-  // Replaces the shadow map by one of exactly `extent` (none for {0, 0}) unless it fits.
-  // Returns true when it was replaced (its contents are gone).
-  bool fitShadow(VkExtent2D extent, std::optional<std::uint64_t> lastUse);
+  // Whether the shadow map's images are exactly `extents` ({0, 0}: none).
+  bool shadowFits(const ShadowExtents& extents) const;
+  // Replaces the shadow map's images by ones of exactly `extents` (none for {0, 0}) unless they
+  // fit. Returns true when any was replaced (the map's contents are gone).
+  bool fitShadow(const ShadowExtents& extents, std::optional<std::uint64_t> lastUse);
   // Frees retired images that no frame in flight can use any more when `frameIndex` records.
   void releaseRetired(std::uint64_t frameIndex, std::uint32_t framesInFlight);
   // Records the first layout transition of every image made since the last call.
@@ -64,7 +70,8 @@ class ModuleImages {
   OwnedImage traceSamples;                  // this frame's marched pixels (packed samples)
   std::array<OwnedImage, 2> history;        // reconstructed frames, ping-pong
   std::array<OwnedImage, 2> outputHistory;  // temporal upsampling's own samples, ping-pong
-  OwnedImage shadowMap;  // the cloud shadow map's cascade atlas (Settings::shadowCascades)
+  OwnedImage shadowMap;    // the cloud shadow map's cascade atlas (Settings::shadowCascades)
+  OwnedImage shadowSpare;  // one cascade in the making (Settings::shadowFramesPerCascade > 1)
 
  private:
   struct Retired {

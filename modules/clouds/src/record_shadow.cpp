@@ -1,7 +1,9 @@
 // Recording the cloud shadow map: this frame's field uniforms into the slot's shadow buffer,
-// then one dispatch per cascade due (shadow_cascades.h decides which), then, with the host's
-// terrain, one more per cascade whose rays moved for its terrain channel, ending with the atlas
-// visible to the host's compute and fragment shaders.
+// then one dispatch per cascade due (shadow_cascades.h decides which) or for the slice of rows
+// due of a cascade made over several frames (into the spare cascade, copied into the atlas
+// after its last), then, with the host's terrain, one more per cascade completed whose rays
+// moved for its terrain channel, ending with the atlas visible to the host's compute and
+// fragment shaders.
 #include <algorithm>
 
 #include "context_impl.h"
@@ -30,23 +32,31 @@ void Context::Impl::recordShadowMap(VkCommandBuffer cmd, const FrameInputs& inpu
   beginPass(cmd, detail::Pass::ShadowMap, "clouds: shadow map");
 
   // The field as this frame's march sees it (camera-relative offsets, coverage, extinction);
-  // the view and temporal fields are not read.
-  shader::CloudUniforms uniforms =
-      detail::buildUniforms(inputs, settings, detail::UniformContext{info_.reversedZ});
-  uniforms.flags |= debugFlags_;
+  // the view and temporal fields are not read. A slice after a cascade's first uses the
+  // first's, so that all its slices see the same clouds from the same camera.
+  if (!plan.slice || plan.slice->first) {
+    sliceUniforms_ =
+        detail::buildUniforms(inputs, settings, detail::UniformContext{info_.reversedZ});
+    sliceUniforms_.flags |= debugFlags_;
+  }
+  const shader::CloudUniforms& uniforms = sliceUniforms_;
   lastShadowUniforms_ = uniforms;
   lastShadowJobs_.clear();
   // The slot's previous frame has completed (host contract); earlier commands of this queue may
-  // still read the buffer, and the host's passes the map.
-  detail::memoryBarrier(device_, cmd, kHostReadStages | kCompute,
-                        VK_ACCESS_2_UNIFORM_READ_BIT | kHostReadAccess,
-                        VK_PIPELINE_STAGE_2_TRANSFER_BIT | kCompute,
-                        VK_ACCESS_2_TRANSFER_WRITE_BIT | detail::kStorageWrite);
+  // still read the buffer, and the host's passes the map; the slices before this one wrote the
+  // spare cascade.
+  detail::memoryBarrier(
+      device_, cmd, kHostReadStages | kCompute,
+      VK_ACCESS_2_UNIFORM_READ_BIT | kHostReadAccess | detail::kStorageWrite,
+      VK_PIPELINE_STAGE_2_TRANSFER_BIT | kCompute,
+      VK_ACCESS_2_TRANSFER_WRITE_BIT | detail::kStorageRead | detail::kStorageWrite);
   fn.vkCmdUpdateBuffer(cmd, slot.shadowUniforms.buffer(), 0, sizeof(uniforms), &uniforms);
   detail::memoryBarrier(device_, cmd, VK_PIPELINE_STAGE_2_TRANSFER_BIT,
                         VK_ACCESS_2_TRANSFER_WRITE_BIT, kCompute, VK_ACCESS_2_UNIFORM_READ_BIT);
 
   using namespace shader;
+  // Without a spare cascade (one frame per cascade) the atlas stands in for it: never written.
+  const VkImageView spare = im.shadowSpare ? im.shadowSpare.view() : im.shadowMap.view();
   detail::SetWriter(device_, slot.shadowMap)
       .uniformBuffer(kBindingUniforms, slot.shadowUniforms.buffer(), sizeof(CloudUniforms))
       .storageImage(kShadowShapeNoise, im.shapeNoise.view())
@@ -54,6 +64,7 @@ void Context::Impl::recordShadowMap(VkCommandBuffer cmd, const FrameInputs& inpu
       .storageImage(kShadowWeatherMaxFine, im.weatherMaxFine.view())
       .storageImage(kShadowWeatherMaxCoarse, im.weatherMaxCoarse.view())
       .storageImage(kShadowMapOut, im.shadowMap.view())
+      .storageImage(kShadowMapSpare, spare)
       .commit();
 
   const detail::ComputeProgram& program = programs_[Program::ShadowMap];
@@ -61,29 +72,78 @@ void Context::Impl::recordShadowMap(VkCommandBuffer cmd, const FrameInputs& inpu
                        program.find(detail::shadowMapKey(settings)));
   fn.vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, program.layout(), 0, 1,
                              &slot.shadowMap, 0, nullptr);
-  const std::uint32_t groups = detail::groupsFor(settings.shadowMapResolution, kWorkgroupSize2D);
-  for (const detail::CascadeJob& job : plan.jobs) {
-    const ShadowMapConstants constants =
-        detail::shadowMapConstants(job, inputs.cameraPosition, settings);
+  const auto dispatch = [&](const ShadowMapConstants& constants) {
     fn.vkCmdPushConstants(cmd, program.layout(), VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof(constants),
                           &constants);
     lastShadowJobs_.push_back(constants);
-    fn.vkCmdDispatch(cmd, groups, groups, 1);
+    fn.vkCmdDispatch(cmd, detail::groupsFor(constants.resolution, kWorkgroupSize2D),
+                     detail::groupsFor(constants.rowCount, kWorkgroupSize2D), 1);
+  };
+  // The cascades made into the atlas this frame, whole: their terrain channel is due unless
+  // they kept it.
+  std::vector<detail::CascadeJob> completed = plan.jobs;
+  for (const detail::CascadeJob& job : plan.jobs) {
+    dispatch(detail::shadowMapConstants(job, inputs.cameraPosition, settings));
+  }
+  if (plan.slice) {
+    const detail::CascadeSlice& slice = *plan.slice;
+    ShadowMapConstants constants =
+        detail::shadowMapConstants(slice.job, slice.cameraPosition, settings);
+    constants.flags |= kShadowTexelToSpare;
+    constants.firstRow = slice.firstRow;
+    constants.rowCount = slice.rowCount;
+    dispatch(constants);
+    if (slice.last) {
+      copySpareIntoAtlas(cmd, slice.job.cascade, settings.shadowMapResolution);
+      completed.push_back(slice.job);
+    }
   }
   const bool terrainDue =
       inputs.terrain.heightView != VK_NULL_HANDLE &&
-      std::any_of(plan.jobs.begin(), plan.jobs.end(),
+      std::any_of(completed.begin(), completed.end(),
                   [](const detail::CascadeJob& job) { return !job.keepTerrain; });
   if (terrainDue) {
     // The terrain pass reads the clouds' channels back and writes them with its own.
     detail::memoryBarrier(device_, cmd, kCompute, detail::kStorageWrite, kCompute,
                           detail::kStorageRead | detail::kStorageWrite);
     endPass(cmd, detail::Pass::ShadowMap);
-    recordTerrainShadow(cmd, inputs, settings, plan, slot);
+    recordTerrainShadow(cmd, inputs, settings, completed, slot);
     return;
   }
   makeShadowMapVisible(cmd);
   endPass(cmd, detail::Pass::ShadowMap);
+}
+
+// The cascade made in slices goes into its square of the atlas in one copy, so receivers go
+// from the old cascade to the new one between two frames. A transfer, not a dispatch: on
+// lavapipe a dispatch's invocations that return at once cost nearly as much as marching ones.
+void Context::Impl::copySpareIntoAtlas(VkCommandBuffer cmd, std::uint32_t cascade,
+                                       std::uint32_t resolution) {
+  const auto& fn = device_.fn();
+  constexpr VkPipelineStageFlags2 kTransfer = VK_PIPELINE_STAGE_2_TRANSFER_BIT;
+  const VkImage spare = images_.shadowSpare.image();
+  const VkImage atlas = images_.shadowMap.image();
+  detail::barrier(device_, cmd, spare, VK_IMAGE_LAYOUT_GENERAL,
+                  VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, kCompute, detail::kStorageWrite, kTransfer,
+                  VK_ACCESS_2_TRANSFER_READ_BIT);
+  // The atlas was last read by the host's passes and written by this pass's dispatches.
+  detail::barrier(device_, cmd, atlas, VK_IMAGE_LAYOUT_GENERAL,
+                  VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, kCompute | kHostReadStages,
+                  detail::kStorageWrite | kHostReadAccess, kTransfer,
+                  VK_ACCESS_2_TRANSFER_WRITE_BIT);
+  VkImageCopy region{};
+  region.srcSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
+  region.dstSubresource = region.srcSubresource;
+  region.dstOffset = {static_cast<std::int32_t>(cascade * resolution), 0, 0};
+  region.extent = {resolution, resolution, 1};
+  fn.vkCmdCopyImage(cmd, spare, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, atlas,
+                    VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1, &region);
+  detail::barrier(device_, cmd, spare, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
+                  VK_IMAGE_LAYOUT_GENERAL, kTransfer, VK_ACCESS_2_NONE, kCompute,
+                  detail::kStorageWrite);
+  detail::barrier(device_, cmd, atlas, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
+                  VK_IMAGE_LAYOUT_GENERAL, kTransfer, VK_ACCESS_2_TRANSFER_WRITE_BIT, kCompute,
+                  detail::kStorageRead | detail::kStorageWrite);
 }
 
 // The barrier belongs to the pass that ends with it: on lavapipe a dispatch only starts the
@@ -95,8 +155,8 @@ void Context::Impl::makeShadowMapVisible(VkCommandBuffer cmd) {
 }
 
 void Context::Impl::recordTerrainShadow(VkCommandBuffer cmd, const FrameInputs& inputs,
-                                        const Settings& settings, const detail::ShadowPlan& plan,
-                                        Slot& slot) {
+                                        const Settings& settings,
+                                        const std::vector<detail::CascadeJob>& jobs, Slot& slot) {
   const auto& fn = device_.fn();
   beginPass(cmd, detail::Pass::TerrainShadow, "clouds: terrain shadow");
   detail::SetWriter(device_, slot.terrainShadow)
@@ -111,7 +171,7 @@ void Context::Impl::recordTerrainShadow(VkCommandBuffer cmd, const FrameInputs& 
   const std::uint32_t groups =
       detail::groupsFor(settings.shadowMapResolution, shader::kWorkgroupSize2D);
   lastTerrainShadowJobs_.clear();
-  for (const detail::CascadeJob& job : plan.jobs) {
+  for (const detail::CascadeJob& job : jobs) {
     if (job.keepTerrain) continue;  // made over the same rays: still right
     const shader::TerrainShadowConstants constants =
         detail::terrainShadowConstants(job, inputs, settings);

@@ -115,26 +115,73 @@ ShadowPlan ShadowCascades::plan(const FrameInputs& in, const Settings& s) const 
       chosen[c] = true;
     }
   }
-  // Then the cascades whose turn it is, up to the per-frame budget (a frame that had to remake
-  // some at once spends its budget on those).
-  const std::uint32_t budget = std::min(s.shadowCascadesPerFrame, cascades);
-  const std::uint64_t lastTurn = turn_ + 2 * cascades;
-  for (; jobs.size() < budget && plan.nextTurn < lastTurn; ++plan.nextTurn) {
-    const std::uint32_t c = cascadeForTurn(plan.nextTurn, cascades);
-    if (chosen[c]) continue;
-    jobs.push_back(placement(c, in, s));
-    chosen[c] = true;
-  }
+  // After a remake of all of them the turns begin again (with the finest).
+  if (jobs.size() == cascades) plan.nextTurn = 0;
   const bool sameTerrainAndSteps = in.terrain.heightView != VK_NULL_HANDLE &&
                                    sameTerrain(in.terrain, terrain_) &&
                                    s.terrainShadowSteps == settings_.terrainShadowSteps;
-  for (CascadeJob& job : jobs) {
+  const auto keepTerrain = [&](const CascadeJob& job) {
     const Made& t = made_[job.cascade];
-    job.keepTerrain = sameTerrainAndSteps && hasTerrain_[job.cascade] && t.valid &&
-                      t.cornerTexel == job.cornerTexel && t.texelMetres == job.texelMetres &&
-                      t.basis.light == job.basis.light && t.basis.u == job.basis.u;
+    return sameTerrainAndSteps && hasTerrain_[job.cascade] && t.valid &&
+           t.cornerTexel == job.cornerTexel && t.texelMetres == job.texelMetres &&
+           t.basis.light == job.basis.light && t.basis.u == job.basis.u;
+  };
+  if (s.shadowFramesPerCascade > 1) {
+    // Remaking at once takes the frame (and may invalidate what the slices were made over).
+    if (!jobs.empty()) {
+      plan.abandonSlices = building_.has_value();
+    } else {
+      plan.slice = nextSlice(in, s, plan);
+      if (plan.slice->first) plan.slice->job.keepTerrain = keepTerrain(plan.slice->job);
+    }
+  } else {
+    plan.abandonSlices = building_.has_value();
+    // Then the cascades whose turn it is, up to the per-frame budget (a frame that had to
+    // remake some at once spends its budget on those).
+    const std::uint32_t budget = std::min(s.shadowCascadesPerFrame, cascades);
+    const std::uint64_t lastTurn = plan.nextTurn + 2 * cascades;
+    for (; jobs.size() < budget && plan.nextTurn < lastTurn; ++plan.nextTurn) {
+      const std::uint32_t c = cascadeForTurn(plan.nextTurn, cascades);
+      if (chosen[c]) continue;
+      jobs.push_back(placement(c, in, s));
+      chosen[c] = true;
+    }
   }
+  for (CascadeJob& job : jobs) job.keepTerrain = keepTerrain(job);
   return plan;
+}
+
+CascadeSlice ShadowCascades::nextSlice(const FrameInputs& in, const Settings& s,
+                                       ShadowPlan& plan) const {
+  const std::uint32_t n = s.shadowMapResolution;
+  const std::uint32_t rowsPerSlice = (n + s.shadowFramesPerCascade - 1) / s.shadowFramesPerCascade;
+  // Go on with the cascade in the making while it would still be made now, as it was begun.
+  if (building_) {
+    const CascadeSlice& first = building_->first;
+    const Made begun{true, first.job.basis, first.job.cornerTexel, first.job.texelMetres,
+                     building_->timeSeconds};
+    if (!stale(begun, placement(first.job.cascade, in, s), in, s) &&
+        first.rowCount == rowsPerSlice) {
+      CascadeSlice slice = first;
+      slice.first = false;
+      slice.firstRow = building_->rowsDone;
+      slice.rowCount = std::min(rowsPerSlice, n - slice.firstRow);
+      slice.last = slice.firstRow + slice.rowCount >= n;
+      return slice;
+    }
+    plan.abandonSlices = true;
+  }
+  // Begin the cascade whose turn it is.
+  const std::uint32_t cascades = std::min<std::uint32_t>(
+      s.shadowCascades, static_cast<std::uint32_t>(vkfx::shader::kCloudShadowMaxCascades));
+  CascadeSlice slice;
+  slice.job = placement(cascadeForTurn(plan.nextTurn++, cascades), in, s);
+  slice.cameraPosition = in.cameraPosition;
+  slice.firstRow = 0;
+  slice.rowCount = std::min(rowsPerSlice, n);
+  slice.first = true;
+  slice.last = slice.rowCount >= n;
+  return slice;
 }
 
 void ShadowCascades::commit(const ShadowPlan& plan, const FrameInputs& in, const Settings& s) {
@@ -142,6 +189,19 @@ void ShadowCascades::commit(const ShadowPlan& plan, const FrameInputs& in, const
   for (const CascadeJob& job : plan.jobs) {
     made_[job.cascade] = Made{true, job.basis, job.cornerTexel, job.texelMetres, in.timeSeconds};
     hasTerrain_[job.cascade] = terrain;
+  }
+  if (plan.abandonSlices) building_.reset();
+  if (plan.slice) {
+    const CascadeSlice& slice = *plan.slice;
+    if (slice.first) building_ = Building{slice, 0, in.timeSeconds};
+    building_->rowsDone = slice.firstRow + slice.rowCount;
+    if (slice.last) {
+      const CascadeJob& job = slice.job;
+      made_[job.cascade] =
+          Made{true, job.basis, job.cornerTexel, job.texelMetres, building_->timeSeconds};
+      hasTerrain_[job.cascade] = terrain;
+      building_.reset();
+    }
   }
   turn_ = plan.nextTurn;
   for (std::uint32_t c = s.shadowCascades; c < made_.size(); ++c) {
@@ -194,7 +254,9 @@ shader::ShadowMapConstants shadowMapConstants(const CascadeJob& job, const glm::
   k.cascade = job.cascade;
   k.resolution = s.shadowMapResolution;
   k.steps = s.shadowSteps;
-  k.keepTerrain = job.keepTerrain ? 1u : 0u;
+  k.flags = job.keepTerrain ? shader::kShadowTexelKeepTerrain : 0u;
+  k.firstRow = 0;
+  k.rowCount = s.shadowMapResolution;
   return k;
 }
 

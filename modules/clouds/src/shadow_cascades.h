@@ -10,7 +10,9 @@
 // texels, so every texel keeps the very same sun ray and the map does not swim.
 //
 // Refresh: a cascade is remade in turn (the finest every other turn, the others round-robin),
-// shadowCascadesPerFrame per frame. It is remade at once when it was never made, on a camera
+// shadowCascadesPerFrame per frame, or one turn over shadowFramesPerCascade frames in slices
+// of rows (CascadeSlice); after all of them were remade at once the turns begin again. A
+// cascade is remade at once when it was never made, on a camera
 // cut, when the settings, the weather map or the terrain changed, when the camera's focus left the
 // middle half of it, when the sun turned more than Settings::relightResetDegrees since, or when the
 // time since it was made is negative or long. Between refreshes the wind's drift of the clouds
@@ -18,6 +20,7 @@
 #include <array>
 #include <cstdint>
 #include <glm/glm.hpp>
+#include <optional>
 #include <vector>
 
 #include "cloud_types.h"
@@ -53,9 +56,24 @@ struct CascadeJob {
   bool keepTerrain = false;
 };
 
-// What a frame makes: the cascades that must be remade at once, then those whose turn it is.
+// A slice of the cascade in the making (Settings::shadowFramesPerCascade > 1): its rows
+// [firstRow, firstRow + rowCount), made into the spare cascade image with the field and camera
+// of the frame of its first slice, so that every slice makes what that frame would have made.
+struct CascadeSlice {
+  CascadeJob job;
+  glm::dvec3 cameraPosition{0.0};  // the first slice's camera: constants are relative to it
+  std::uint32_t firstRow = 0;
+  std::uint32_t rowCount = 0;
+  bool first = false;  // this frame's field is the one the later slices use
+  bool last = false;   // the cascade is done: copied into the atlas this frame
+};
+
+// What a frame makes: the cascades that must be remade at once (whole, into the atlas), then
+// those whose turn it is (whole, or a slice of the one in the making).
 struct ShadowPlan {
   std::vector<CascadeJob> jobs;
+  std::optional<CascadeSlice> slice;
+  bool abandonSlices = false;  // the cascade in the making is dropped (remade at once instead)
   std::uint64_t nextTurn = 0;  // the turn the next frame starts from
 };
 
@@ -78,6 +96,7 @@ class ShadowCascades {
   void forget() {
     made_ = {};
     hasTerrain_ = {};
+    building_.reset();
   }
 
   // The lookup parameters relative to the camera at `cameraPosition` at `timeSeconds`.
@@ -95,11 +114,22 @@ class ShadowCascades {
   CascadeJob placement(std::uint32_t c, const FrameInputs& inputs, const Settings& settings) const;
   bool stale(const Made& made, const CascadeJob& now, const FrameInputs& inputs,
              const Settings& settings) const;
+  // The next slice of the cascade in the making, or of a new one whose turn it is.
+  CascadeSlice nextSlice(const FrameInputs& inputs, const Settings& settings,
+                         ShadowPlan& plan) const;
+
+  // A cascade made over several frames, between its first slice and its last.
+  struct Building {
+    CascadeSlice first;  // its first slice (the job, the camera)
+    std::uint32_t rowsDone = 0;
+    double timeSeconds = 0.0;  // of the first slice: the clouds it holds
+  };
 
   std::array<Made, vkfx::shader::kCloudShadowMaxCascades> made_{};
   // Whether each cascade was made with a terrain (its channel then holds that terrain's shadow
   // over the rays in made_).
   std::array<bool, vkfx::shader::kCloudShadowMaxCascades> hasTerrain_{};
+  std::optional<Building> building_;
   std::uint64_t turn_ = 0;
   Settings settings_{};  // those the made cascades were made with
   VkImageView weatherView_ = VK_NULL_HANDLE;

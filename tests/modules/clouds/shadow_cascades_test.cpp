@@ -1,5 +1,6 @@
 // The shadow map's cascade bookkeeping without a GPU: the turn order, which events remake a
-// cascade at once, whole-texel placement, and the wind's drift in the lookup parameters.
+// cascade at once, whole-texel placement, turns spread over frames in slices of rows, and the
+// wind's drift in the lookup parameters.
 #include <gtest/gtest.h>
 
 #include <bit>
@@ -131,6 +132,133 @@ TEST(ShadowCascades, CutsJumpsTurnsAndNewSettingsRemakeEverything) {
     in.cameraPosition.x += 30.0;
     EXPECT_EQ(std::popcount(frame(c, in, s)), 1) << "a small move only takes its turn";
   }
+}
+
+// A frame's completed cascades: those made whole and the one whose last slice it made.
+std::uint32_t completedMask(const clouds::detail::ShadowPlan& plan) {
+  std::uint32_t mask = madeMask(plan);
+  if (plan.slice && plan.slice->last) mask |= 1u << plan.slice->job.cascade;
+  return mask;
+}
+
+clouds::Settings sliced(std::uint32_t framesPerCascade) {
+  clouds::Settings s;
+  s.shadowFramesPerCascade = framesPerCascade;
+  return s;
+}
+
+TEST(ShadowCascades, ATurnSpreadOverFramesMakesEveryRowOnce) {
+  for (const std::uint32_t resolution : {128u, 100u, 17u}) {
+    for (const std::uint32_t frames : {2u, 3u, 8u}) {
+      ShadowCascades cascades;
+      clouds::Settings s = sliced(frames);
+      s.shadowMapResolution = resolution;
+      clouds::FrameInputs in = camera();
+      clouds::detail::ShadowPlan plan = cascades.plan(in, s);
+      EXPECT_EQ(madeMask(plan), 0xFu) << "the first frame makes every cascade whole";
+      EXPECT_FALSE(plan.slice.has_value());
+      cascades.commit(plan, in, s);
+      // Four turns: 0, 1, 0, 2; each a run of slices covering the rows in order, then done.
+      for (const std::uint32_t cascade : {0u, 1u, 0u, 2u}) {
+        std::uint32_t row = 0;
+        std::uint32_t slices = 0;
+        bool done = false;
+        while (!done) {
+          in.timeSeconds += 1.0 / 30.0;
+          plan = cascades.plan(in, s);
+          ASSERT_TRUE(plan.jobs.empty());
+          ASSERT_TRUE(plan.slice.has_value());
+          const clouds::detail::CascadeSlice& slice = *plan.slice;
+          EXPECT_EQ(slice.job.cascade, cascade);
+          EXPECT_EQ(slice.first, row == 0);
+          EXPECT_EQ(slice.firstRow, row);
+          EXPECT_GT(slice.rowCount, 0u);
+          row += slice.rowCount;
+          done = slice.last;
+          EXPECT_EQ(completedMask(plan), done ? 1u << cascade : 0u);
+          cascades.commit(plan, in, s);
+          ++slices;
+        }
+        EXPECT_EQ(row, resolution) << resolution << " rows over " << frames << " frames";
+        EXPECT_LE(slices, frames);
+        EXPECT_GE(2 * slices, std::min(frames, resolution)) << "slices of even size";
+      }
+    }
+  }
+}
+
+// Every slice makes what the first slice's frame would have made: its placement and camera,
+// even when the camera moved since; receivers see the new cascade (its placement and time)
+// only once it is done.
+TEST(ShadowCascades, SlicesKeepTheirFirstFramesPlacementUntilDone) {
+  ShadowCascades cascades;
+  const clouds::Settings s = sliced(2);
+  clouds::FrameInputs in = camera();
+  frame(cascades, in, s);
+  // Two whole turns (0 and 1) settle the map; then move 4 texels of the finest cascade.
+  for (int i = 0; i < 4; ++i) {
+    in.timeSeconds += 1.0 / 30.0;
+    frame(cascades, in, s);
+  }
+  in.cameraPosition.x += 320.0;
+  in.timeSeconds += 1.0 / 30.0;
+  const clouds::ShadowMapParameters before =
+      cascades.parameters(in.cameraPosition, in.timeSeconds, s);
+  const clouds::detail::ShadowPlan first = cascades.plan(in, s);
+  ASSERT_TRUE(first.slice && first.slice->first && first.slice->job.cascade == 0u);
+  cascades.commit(first, in, s);
+  EXPECT_EQ(cascades.parameters(in.cameraPosition, in.timeSeconds, s).cascade[0], before.cascade[0])
+      << "half a cascade is not seen";
+
+  clouds::FrameInputs later = in;
+  later.cameraPosition.z += 200.0;
+  later.timeSeconds += 1.0 / 30.0;
+  const clouds::detail::ShadowPlan last = cascades.plan(later, s);
+  ASSERT_TRUE(last.slice && last.slice->last);
+  EXPECT_EQ(last.slice->cameraPosition, in.cameraPosition);
+  EXPECT_EQ(last.slice->job.cornerTexel, first.slice->job.cornerTexel);
+  cascades.commit(last, later, s);
+  // Now made at the first slice's placement and time: the lookup at the first slice's camera
+  // and time is the one a whole make then would give.
+  ShadowCascades whole;
+  clouds::Settings once = s;
+  once.shadowFramesPerCascade = 1;
+  once.shadowCascadesPerFrame = 4;
+  frame(whole, in, once);
+  const auto made = cascades.parameters(in.cameraPosition, in.timeSeconds, s);
+  const auto expected = whole.parameters(in.cameraPosition, in.timeSeconds, once);
+  for (int row = 0; row < 3; ++row) EXPECT_EQ(made.cascade[row], expected.cascade[row]);
+  EXPECT_NE(made.cascade[0], before.cascade[0]) << "the finest cascade moved with the camera";
+}
+
+TEST(ShadowCascades, ARemakeAtOnceAbandonsTheCascadeInTheMaking) {
+  ShadowCascades cascades;
+  clouds::Settings s = sliced(4);
+  clouds::FrameInputs in = camera();
+  frame(cascades, in, s);
+  in.timeSeconds += 1.0 / 30.0;
+  frame(cascades, in, s);  // the first slice of cascade 0
+  in.timeSeconds += 1.0 / 30.0;
+  in.reset = true;
+  const clouds::detail::ShadowPlan cut = cascades.plan(in, s);
+  EXPECT_EQ(madeMask(cut), 0xFu);
+  EXPECT_TRUE(cut.abandonSlices);
+  EXPECT_FALSE(cut.slice.has_value());
+  cascades.commit(cut, in, s);
+  in.reset = false;
+  in.timeSeconds += 1.0 / 30.0;
+  const clouds::detail::ShadowPlan next = cascades.plan(in, s);
+  ASSERT_TRUE(next.slice.has_value());
+  EXPECT_TRUE(next.slice->first) << "a new cascade is begun, not the abandoned one continued";
+  EXPECT_EQ(next.slice->firstRow, 0u);
+  cascades.commit(next, in, s);
+  // A change of the number of frames per cascade begins the turn again.
+  s.shadowFramesPerCascade = 2;
+  in.timeSeconds += 1.0 / 30.0;
+  const clouds::detail::ShadowPlan changed = cascades.plan(in, s);
+  ASSERT_TRUE(changed.slice.has_value());
+  EXPECT_TRUE(changed.slice->first);
+  EXPECT_EQ(changed.slice->rowCount, s.shadowMapResolution / 2);
 }
 
 TEST(ShadowCascades, CascadesLieOnWholeTexelsAroundTheCamera) {

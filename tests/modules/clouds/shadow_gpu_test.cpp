@@ -269,6 +269,48 @@ TEST_F(CloudShadow, CascadesAreRemadeInTurnWithoutAPop) {
   EXPECT_LT(worstMean, 0.01);
 }
 
+// A cascade made over two frames in slices of rows: while half made, the atlas still holds
+// the old cascade (no half-made pop); once done, it is the cascade one frame would have made
+// when its first slice was made, to the bit, though the camera and the clouds moved since (the
+// procedural weather map is not regenerated meanwhile: slices see it as it is).
+TEST_F(CloudShadow, ACascadeMadeInSlicesEqualsOneMadeWhole) {
+  clouds::Settings s = cumulus();
+  s.shadowFramesPerCascade = 2;
+  s.windSpeedMetresPerSecond = 30.0f;
+  s.weatherUpdateSeconds = 3600.0f;
+  CloudView view = groundView();
+  harness().cut();
+  const ShadowMapImage old = harness().renderShadowMap(view, s);
+  ASSERT_EQ(harness().context().lastFrameReport().shadowCascadesMade, 0xFu);
+  view.position.x += 400.0;  // five texels of the finest cascade
+  view.timeSeconds += 1.0;
+  const CloudView firstSlice = view;
+  const ShadowMapImage half = harness().renderShadowMap(view, s);
+  EXPECT_EQ(harness().context().lastFrameReport().shadowCascadesMade, 0u);
+  EXPECT_EQ(half.texels, old.texels) << "half a cascade is not in the atlas";
+  view.position.z += 50.0;
+  view.timeSeconds += 1.0;
+  const ShadowMapImage sliced = harness().renderShadowMap(view, s);
+  EXPECT_EQ(harness().context().lastFrameReport().shadowCascadesMade, 1u);
+
+  clouds::Settings whole = s;
+  whole.shadowFramesPerCascade = 1;
+  harness().cut();
+  const ShadowMapImage once = harness().renderShadowMap(firstSlice, whole);
+  const std::uint32_t n = s.shadowMapResolution;
+  std::size_t differing = 0;
+  std::size_t changed = 0;
+  for (std::uint32_t y = 0; y < n; ++y) {
+    for (std::uint32_t x = 0; x < n; ++x) {
+      const std::size_t i = std::size_t{y} * sliced.width + x;
+      if (sliced.texels[i] != once.texels[i]) ++differing;
+      if (sliced.texels[i] != old.texels[i]) ++changed;
+    }
+  }
+  EXPECT_EQ(differing, 0u) << "of " << n * n << " texels of the finest cascade";
+  EXPECT_GT(changed, std::size_t{n}) << "the cascade was remade where the camera went";
+}
+
 TEST_F(CloudShadow, ShadowsTravelWithTheWindBetweenRefreshes) {
   clouds::Settings s = cumulus();
   s.windSpeedMetresPerSecond = 40.0f;

@@ -144,7 +144,7 @@ struct MemoryUsage {
   std::uint64_t outputBytes = 0;      // radiance and depth at the prepared render extent
   std::uint64_t traceBytes = 0;       // scene distance, samples and two histories (trace extent)
   std::uint64_t upsamplingBytes = 0;  // two output-resolution histories (temporal upsampling)
-  std::uint64_t shadowBytes = 0;      // the cloud shadow map (Settings::shadowCascades)
+  std::uint64_t shadowBytes = 0;      // the cloud shadow map and its spare cascade
   std::uint64_t bufferBytes = 0;      // uniforms, work counters, placeholders
   std::uint64_t retiredBytes = 0;     // images a larger prepare() replaced, freed once the
                                       //   frames in flight that may use them have retired
@@ -270,13 +270,20 @@ struct Settings {
   // shadowCascadeRatio times the side of the one before, snapped to whole texels. Each texel
   // marches its sun ray through the layer with the low-frequency shape, like the light
   // samples. Cascades are remade in turn (the finest every other time); a camera cut, a jump,
-  // new settings or a turn of the sun remakes them all at once.
+  // new settings or a turn of the sun remakes them all at once. A cascade's turn may be spread
+  // over shadowFramesPerCascade frames, a slice of its rows per frame, made into a spare image
+  // and copied in whole when done (receivers never see a half-made cascade); every slice
+  // samples the clouds as they were at the first, so the result is the cascade a single frame
+  // would have made then. With more than one frame per cascade, one cascade is in the making
+  // at a time (shadowCascadesPerFrame is not used) and a frame that must remake cascades at
+  // once abandons it.
   std::uint32_t shadowCascades = 4;          // [0, 4] 0: no shadow map, no pass, no memory
   std::uint32_t shadowMapResolution = 128;   // [16, 1024] texels per cascade side
   float shadowNearSideMetres = 10000.0f;     // [500, 1e6] side of the finest cascade
   float shadowCascadeRatio = 3.0f;           // [1.5, 8] side of a cascade over the one before
   std::uint32_t shadowSteps = 16;            // [1, 256] samples along each texel's sun ray
   std::uint32_t shadowCascadesPerFrame = 1;  // [1, 4] cascades remade per frame
+  std::uint32_t shadowFramesPerCascade = 1;  // [1, 8] frames one cascade's turn is spread over
   // With FrameInputs::terrain: heightfield samples along each texel's sun ray, from where it
   // is at the terrain's lowest altitude to where it clears the highest (at a sun 5 degrees up
   // over 2 km of relief, 23 km of ray: 48 samples are 480 m apart).

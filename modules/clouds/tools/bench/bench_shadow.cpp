@@ -18,7 +18,7 @@ const std::map<std::string, double>& mediumShadowKnobs() {
   static const std::map<std::string, double> knobs = {{"shadow resolution", 128.0},
                                                       {"shadow steps", 12.0},
                                                       {"shadow cascades", 4.0},
-                                                      {"cascades per frame", 1.0}};
+                                                      {"cascades per frame", 0.25}};
   return knobs;
 }
 
@@ -104,8 +104,11 @@ std::vector<BenchConfig> shadowConfigs() {
         [](clouds::Settings& s, double n) { s.shadowSteps = std::uint32_t(n); });
   sweep("shadow cascades", {1.0, 2.0, 3.0},
         [](clouds::Settings& s, double n) { s.shadowCascades = std::uint32_t(n); });
-  sweep("cascades per frame", {2.0, 4.0},
-        [](clouds::Settings& s, double n) { s.shadowCascadesPerFrame = std::uint32_t(n); });
+  // The refresh rate in cascade turns a frame: below one, a turn spread over frames in slices.
+  sweep("cascades per frame", {0.125, 0.5, 1.0, 2.0, 4.0}, [](clouds::Settings& s, double n) {
+    s.shadowCascadesPerFrame = std::max(1u, std::uint32_t(n));
+    s.shadowFramesPerCascade = std::max(1u, std::uint32_t(std::lround(1.0 / n)));
+  });
   return configs;
 }
 
@@ -144,15 +147,22 @@ ShadowResults runShadowBenchmark(engine::gfx::Device& device,
                            0.0,
                            {}});
     }
-    // A cut, then two whole cycles of turns (the finest every other frame): the second is timed.
-    const std::uint32_t cycle = 2 * 4;
+    // A cut, then a whole cycle of turns (the finest every other turn) of each instance, timed:
+    // eight frames, or eight turns of as many frames as one takes.
+    const auto cycleFrames = [](const clouds::Settings& s) {
+      return 2 * 4 * s.shadowFramesPerCascade;
+    };
+    std::uint32_t frames = 0;
+    for (const Instance& instance : instances) {
+      frames = std::max(frames, cycleFrames(instance.settings));
+    }
     clouds::tools::CloudView pose = view.view;
-    for (std::uint32_t frame = 0; frame <= 2 * cycle; ++frame) {
+    for (std::uint32_t frame = 0; frame <= frames; ++frame) {
       for (Instance& instance : instances) {
         instance.harness->renderShadowMap(pose, instance.settings, 1);
         const double ms = shadowPassMs(*instance.harness);
         if (frame == 0) instance.cutMs = ms;
-        if (frame > cycle) instance.cycleMs.push_back(ms);
+        if (frame > 0 && frame <= cycleFrames(instance.settings)) instance.cycleMs.push_back(ms);
       }
       pose.timeSeconds += 1.0 / 30.0;
     }

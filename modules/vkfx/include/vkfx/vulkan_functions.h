@@ -52,6 +52,7 @@ namespace vkfx {
   X(vkCmdUpdateBuffer)             \
   X(vkCmdFillBuffer)               \
   X(vkCmdClearColorImage)          \
+  X(vkCmdCopyImage)                \
   X(vkMapMemory)                   \
   X(vkCreateQueryPool)             \
   X(vkDestroyQueryPool)            \
