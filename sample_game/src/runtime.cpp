@@ -4,6 +4,7 @@
 #include <chrono>
 #include <cstdio>
 #include <memory>
+#include <numeric>
 #include <span>
 #include <thread>
 
@@ -44,23 +45,35 @@ struct Presentation {
   render::SwapchainTarget* swapchain = nullptr;  // the target, when windowed
 };
 
-// What the frame loop measured: the frame rate after the warm-up, and every pass's GPU time
-// in each measured frame (timestamps of the latest completed frame), in order of first use.
+// Named GPU times, one list per name in order of first use.
+struct TimingSeries {
+  std::vector<std::pair<std::string, std::vector<double>>> milliseconds;
+
+  void add(const std::string& name, double ms) {
+    auto it = std::find_if(milliseconds.begin(), milliseconds.end(),
+                           [&](const auto& entry) { return entry.first == name; });
+    if (it == milliseconds.end()) {
+      milliseconds.push_back({name, {}});
+      it = std::prev(milliseconds.end());
+    }
+    it->second.push_back(ms);
+  }
+};
+
+// What the frame loop measured: the frame rate after the warm-up, every frame-graph pass's GPU
+// time in each measured frame (timestamps of the latest completed frame), and the clouds
+// module's own passes in the frames that ran them (some run every few frames).
 struct LoopStats {
   std::uint64_t measuredFrames = 0;
   double measuredSeconds = 0.0;
-  std::vector<std::pair<std::string, std::vector<double>>> passMilliseconds;
+  TimingSeries passes;
+  TimingSeries cloudPasses;
 
   void addPassTimes(std::span<const engine::gfx::TimedScope> scopes) {
-    for (const auto& scope : scopes) {
-      auto it = std::find_if(passMilliseconds.begin(), passMilliseconds.end(),
-                             [&](const auto& entry) { return entry.first == scope.name; });
-      if (it == passMilliseconds.end()) {
-        passMilliseconds.push_back({scope.name, {}});
-        it = std::prev(passMilliseconds.end());
-      }
-      it->second.push_back(scope.milliseconds);
-    }
+    for (const auto& scope : scopes) passes.add(scope.name, scope.milliseconds);
+  }
+  void addCloudPassTimes(std::span<const ::clouds::PassTiming> timings) {
+    for (const auto& timing : timings) cloudPasses.add(timing.name, timing.milliseconds);
   }
 };
 
@@ -172,6 +185,9 @@ LoopStats runFrames(ecs::App& app, const Renderer& renderer, platform::Window* w
     if (frame + 1 > kWarmUpFrames) {
       ++stats.measuredFrames;
       stats.addPassTimes(renderer.lastGpuTimings());
+      if (const auto* clouds = world.ctx().tryGet<clouds::ecs::CloudStatus>()) {
+        stats.addCloudPassTimes(clouds->passTimings);
+      }
     }
     if (world.ctx().get<ExitRequest>().requested) break;
   }
@@ -223,10 +239,10 @@ void logRun(ecs::World& world, const Renderer& renderer, const LoopStats& stats)
   for (const auto& scope : renderer.lastGpuTimings())
     gpu.emplace_back(scope.name, scope.milliseconds);
   log::info("GPU time of the last frame: " + timingList(gpu));
-  if (!stats.passMilliseconds.empty()) {
+  if (!stats.passes.milliseconds.empty()) {
     std::vector<std::pair<std::string, double>> medians;
     double total = 0.0;
-    for (auto [name, times] : stats.passMilliseconds) {
+    for (auto [name, times] : stats.passes.milliseconds) {
       std::nth_element(times.begin(), times.begin() + std::ptrdiff_t(times.size() / 2),
                        times.end());
       medians.emplace_back(name, times[times.size() / 2]);
@@ -250,6 +266,15 @@ void logRun(ecs::World& world, const Renderer& renderer, const LoopStats& stats)
   std::vector<std::pair<std::string, double>> passes;
   for (const auto& p : clouds->passTimings) passes.emplace_back(p.name, p.milliseconds);
   if (!passes.empty()) log::info("clouds passes, last frame: " + timingList(passes));
+  // Means, not medians: a pass that runs every few frames costs its share of every frame.
+  std::vector<std::pair<std::string, double>> means;
+  for (const auto& [name, times] : stats.cloudPasses.milliseconds) {
+    means.emplace_back(name, std::accumulate(times.begin(), times.end(), 0.0) /
+                                 double(std::max<std::uint64_t>(stats.measuredFrames, 1)));
+  }
+  if (!means.empty()) {
+    log::info("clouds passes, mean per measured frame: " + timingList(means));
+  }
   char memory[96];
   std::snprintf(memory, sizeof(memory), "clouds GPU memory: %.1f MiB",
                 double(clouds->memory.totalBytes()) / (1024.0 * 1024.0));
