@@ -72,9 +72,11 @@ void writeShadowMarkdown(std::ostream& out, const ShadowResults& shadows) {
   for (std::size_t i = 0; i < shadows.views.size(); ++i) {
     out << (i == 0 ? "" : " and ") << shadows.views[i];
   }
-  out << ". GPU time is the \"shadow map\" pass per frame, the mean over a whole cycle of "
-         "cascade turns after a cut (the finest cascade every other frame), and at the cut "
-         "itself (every cascade at once; one frame, so noisy). Every configuration has its own "
+  out << ". GPU time is the \"shadow map\" pass per frame, the mean over the frames of a "
+         "whole cycle of cascade turns after a cut (eight turns, the finest cascade every other "
+         "one; a turn takes shadowFramesPerCascade frames: \"cascades per frame\" below 1), and "
+         "at the cut itself (every cascade at once; one frame, so noisy). Every configuration "
+         "has its own "
          "module and frames are interleaved across them, so times are higher than the same "
          "pass run alone in the sample. Error is the receivers' lookup at "
       << shadows.points
