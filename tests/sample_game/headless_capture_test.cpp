@@ -4,6 +4,8 @@
 // gets, flying over a user's glTF, and clear failures for bad arguments and scenes.
 #include <gtest/gtest.h>
 
+#include <glm/glm.hpp>
+
 #include <array>
 #include <cmath>
 #include <cstdio>
@@ -114,7 +116,8 @@ TEST(HeadlessCapture, EachSceneGetsOnlyThePassesAndPipelinesItNeeds) {
        R"("pipelines": ["tonemap", "sky", "terrain"])", R"("modules": [], "shadow casters": [])"},
       {scene("clouds_only.json"),
        R"("passes": ["sky", "clouds", "clouds composite", "tonemap", "capture"])",
-       R"("pipelines": ["tonemap", "sky", "clouds module"])", R"("modules": ["clouds"])"},
+       R"x("pipelines": ["tonemap", "sky", "clouds module (shadow map)"])x",
+       R"("modules": ["clouds"])"},
       // An atmosphere draws the sky in the scene pass: no gradient sky pass or pipeline.
       {scene("atmosphere_only.json"), R"("passes": ["atmosphere", "scene", "tonemap", "capture"])",
        R"("pipelines": ["tonemap", "atmosphere module"])", R"("modules": ["atmosphere"])"},
@@ -124,14 +127,20 @@ TEST(HeadlessCapture, EachSceneGetsOnlyThePassesAndPipelinesItNeeds) {
        R"("passes": ["cloud shadows", "terrain sunlight", "atmosphere", "scene", "clouds", )"
        R"("clouds composite", "tonemap", "capture"])",
        R"x("pipelines": ["tonemap", "terrain (cloud shadows)", "terrain sunlight", )x"
-       R"x("atmosphere module", "clouds module"])x",
+       R"x("atmosphere module", "clouds module (shadow map)"])x",
        R"("modules": ["atmosphere", "clouds"], "shadow casters": ["clouds", "terrain"])"},
+      // God rays: the clouds module's mask and composite variants, no pass of their own.
+      {scene("god_rays_sunset.json"),
+       R"("passes": ["cloud shadows", "terrain sunlight", "atmosphere", "scene", "clouds", )"
+       R"("clouds composite", "tonemap", "capture"])",
+       R"x("atmosphere module", "clouds module (shadow map, god rays)"])x",
+       R"("modules": ["atmosphere", "clouds"])"},
       // A terrain that casts no shadows: the clouds' map alone (the terrain still reads it).
       {scene("ridge_sunset_unshadowing.json"),
        R"("passes": ["cloud shadows", "terrain sunlight", "atmosphere", "scene", "clouds", )"
        R"("clouds composite", "tonemap", "capture"])",
        R"x("pipelines": ["tonemap", "terrain (cloud shadows)", "terrain sunlight", )x"
-       R"x("atmosphere module", "clouds module"])x",
+       R"x("atmosphere module", "clouds module (shadow map)"])x",
        R"("shadow casters": ["clouds"])"},
       // A layer that casts no shadows: no shadow pass, the plain terrain.
       {scene("unshadowed_clouds.json"),
@@ -232,6 +241,103 @@ TEST(HeadlessCapture, TheRangeShadowsItsOwnValleysAtSunset) {
               100.0 * double(e.brighter) / double(e.pixels));
   EXPECT_GT(e.darker, e.pixels / 20) << "the valleys in the range's lee must be shadowed";
   EXPECT_EQ(e.brighter, 0u) << "a shadow only takes light away";
+}
+
+// God rays as a mask on the haze: looking towards the afternoon sun through broken cumulus in
+// hazy air, the shadows the clouds and mountains cast through the air take some of the haze's
+// in-scattering from the sky seen between them (nothing gets brighter, the terrain is left as
+// the atmosphere hazed it), and most where the sun's Mie glow is: the light taken lies nearer
+// the sun on screen than the sky's pixels do on average.
+TEST(HeadlessCapture, GodRaysTakeTheShadowedHazeAwayTowardsTheSun) {
+  const fs::path none = freshDir("no_god_rays");
+  const fs::path rays = freshDir("god_rays");
+  const std::string common =
+      "--headless --frames 4 --fixed-dt 0.05 --width 160 --height 90 --validation --capture ";
+  ASSERT_EQ(runSample(common + none.string() + " --scene " + scene("god_rays_sunset_none.json")),
+            0);
+  ASSERT_EQ(runSample(common + rays.string() + " --scene " + scene("god_rays_sunset.json")), 0);
+  const ImageRgba32f a = engine::assets::readImage(none / "frame_0003.exr");
+  const ImageRgba32f b = engine::assets::readImage(rays / "frame_0003.exr");
+  ASSERT_EQ(a.pixels.size(), b.pixels.size());
+  // The sun's place on screen, from the scene's camera and the time of day (16:30, 55 degrees
+  // at noon): straight ahead in azimuth, 4 degrees above the view's centre.
+  const glm::vec2 sun(80.0f, 45.0f - 4.0f / 70.0f * 90.0f);
+  std::size_t darker = 0;
+  std::size_t brighter = 0;
+  std::size_t belowHorizon = 0;
+  double lost = 0.0;
+  double lostDistance = 0.0;
+  double skyDistance = 0.0;
+  std::size_t sky = 0;
+  const std::size_t pixels = a.pixels.size() / 4;
+  for (std::size_t i = 0; i < pixels; ++i) {
+    const float la = a.pixels[4 * i] + a.pixels[4 * i + 1] + a.pixels[4 * i + 2];
+    const float lb = b.pixels[4 * i] + b.pixels[4 * i + 1] + b.pixels[4 * i + 2];
+    const glm::vec2 p(float(i % 160) + 0.5f, float(i / 160) + 0.5f);
+    const double distance = glm::length(p - sun);
+    if (p.y < 60.0f) {  // above the ridge line
+      skyDistance += distance;
+      ++sky;
+    }
+    darker += lb < 0.97f * la ? 1u : 0u;
+    belowHorizon += lb < 0.999f * la && p.y > 75.0f ? 1u : 0u;
+    brighter += lb > 1.001f * la ? 1u : 0u;
+    lost += double(std::max(la - lb, 0.0f));
+    lostDistance += double(std::max(la - lb, 0.0f)) * distance;
+  }
+  ASSERT_GT(lost, 0.0);
+  std::printf(
+      "god rays: %.1f%% of pixels 3%% darker, %zu brighter, %zu darker on the ground; "
+      "light taken %.0f px from the sun on average, the sky's pixels %.0f\n",
+      100.0 * double(darker) / double(pixels), brighter, belowHorizon, lostDistance / lost,
+      skyDistance / double(sky));
+  EXPECT_GT(darker, pixels / 50) << "shafts of shadow in the haze";
+  EXPECT_EQ(brighter, 0u) << "a mask only takes light away";
+  EXPECT_EQ(belowHorizon, 0u) << "near scenery is left as the atmosphere hazed it";
+  EXPECT_LT(lostDistance / lost, 0.9 * skyDistance / double(sky))
+      << "the shafts are where the sun's Mie glow is";
+}
+
+// Without an atmosphere there is no haze to mask: god rays fall back to a glow along the clear
+// paths towards the sun (vkfx/god_rays.h), which only adds light, most of it near the sun.
+TEST(HeadlessCapture, WithoutHazeGodRaysGlowAroundTheSun) {
+  const fs::path none = freshDir("no_glow");
+  const fs::path glow = freshDir("glow");
+  const std::string common =
+      "--headless --frames 4 --fixed-dt 0.05 --width 160 --height 90 --validation --capture ";
+  ASSERT_EQ(runSample(common + none.string() + " --scene " + scene("god_rays_no_haze_none.json")),
+            0);
+  ASSERT_EQ(runSample(common + glow.string() + " --scene " + scene("god_rays_no_haze.json")), 0);
+  const ImageRgba32f a = engine::assets::readImage(none / "frame_0003.exr");
+  const ImageRgba32f b = engine::assets::readImage(glow / "frame_0003.exr");
+  ASSERT_EQ(a.pixels.size(), b.pixels.size());
+  const glm::vec2 sun(80.0f, 45.0f - 4.0f / 70.0f * 90.0f);
+  std::size_t brighter = 0;
+  std::size_t darker = 0;
+  double gained = 0.0;
+  double gainedDistance = 0.0;
+  double allDistance = 0.0;
+  const std::size_t pixels = a.pixels.size() / 4;
+  for (std::size_t i = 0; i < pixels; ++i) {
+    const float la = a.pixels[4 * i] + a.pixels[4 * i + 1] + a.pixels[4 * i + 2];
+    const float lb = b.pixels[4 * i] + b.pixels[4 * i + 1] + b.pixels[4 * i + 2];
+    const double distance =
+        glm::length(glm::vec2(float(i % 160) + 0.5f, float(i / 160) + 0.5f) - sun);
+    allDistance += distance;
+    brighter += lb > 1.03f * la ? 1u : 0u;
+    darker += lb < 0.999f * la ? 1u : 0u;
+    gained += double(std::max(lb - la, 0.0f));
+    gainedDistance += double(std::max(lb - la, 0.0f)) * distance;
+  }
+  ASSERT_GT(gained, 0.0);
+  std::printf(
+      "god rays' glow: %.1f%% of pixels 3%% brighter, %zu darker; light added %.0f px "
+      "from the sun on average, all pixels %.0f\n",
+      100.0 * double(brighter) / double(pixels), darker, gainedDistance / gained,
+      allDistance / double(pixels));
+  EXPECT_GT(brighter, pixels / 50);
+  EXPECT_EQ(darker, 0u) << "the fallback only adds light";
+  EXPECT_LT(gainedDistance / gained, 0.7 * allDistance / double(pixels));
 }
 
 TEST(HeadlessCapture, FliesOverAUserSuppliedTerrain) {

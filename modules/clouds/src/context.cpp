@@ -117,6 +117,22 @@ std::string checkInputs(const FrameInputs& in, const CreateInfo& info) {
     if (!finite(haze.radianceScale) || !nonNegative(haze.radianceScale)) {
       return "FrameInputs.aerialPerspective.radianceScale: must be finite and not negative";
     }
+    const struct {
+      const char* field;
+      const glm::vec3& value;
+    } scattering[] = {
+        {"FrameInputs.aerialPerspective.rayleighScatteringPerMetre",
+         haze.rayleighScatteringPerMetre},
+        {"FrameInputs.aerialPerspective.mieScatteringPerMetre", haze.mieScatteringPerMetre}};
+    for (const auto& [field, value] : scattering) {
+      if (!finite(value) || !nonNegative(value)) {
+        return std::string(field) + ": must be finite and not negative";
+      }
+    }
+    if (!(std::abs(haze.miePhaseG) < 1.0f)) {
+      return "FrameInputs.aerialPerspective.miePhaseG = " + std::to_string(haze.miePhaseG) +
+             ": must be in (-1, 1)";
+    }
   }
   return {};
 }

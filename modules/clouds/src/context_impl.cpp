@@ -34,13 +34,13 @@ const detail::DeviceContext& checkedDevice(const detail::DeviceContext& device) 
 detail::UniqueDescriptorPool makePool(const detail::DeviceContext& device, std::uint32_t frames) {
   // Fixed sets: 3 noise generators, 2 weather generators, 3 maxima. Per slot: 9 sets.
   const VkDescriptorPoolSize sizes[] = {
-      {VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, 16 + 32 * frames},
-      {VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 4 + 8 * frames},
-      {VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 8 * frames},
+      {VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, 16 + 40 * frames},
+      {VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 4 + 14 * frames},
+      {VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 10 * frames},
       {VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 4 * frames},
   };
   VkDescriptorPoolCreateInfo info{VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO};
-  info.maxSets = 8 + 10 * frames;
+  info.maxSets = 8 + 12 * frames;
   info.poolSizeCount = static_cast<std::uint32_t>(std::size(sizes));
   info.pPoolSizes = sizes;
   return device.createDescriptorPool(info, "descriptor pool");
@@ -100,6 +100,12 @@ Context::Impl::Impl(const CreateInfo& info, const detail::VulkanFunctions& funct
         detail::OwnedBuffer(device_, sizeof(shader::MarchTerrainShadow),
                             VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT,
                             "shadow parameters " + std::to_string(i));
+    slot.godRayOcclusion = allocateSet(Program::GodRayOcclusion);
+    slot.godRays = allocateSet(Program::GodRays);
+    slot.godRayComposite =
+        detail::OwnedBuffer(device_, sizeof(shader::GodRayComposite),
+                            VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT,
+                            "god-ray composite " + std::to_string(i));
   }
 }
 
@@ -149,8 +155,13 @@ void Context::Impl::writeFixedSets() {
 namespace {
 
 detail::ImageSizes imageSizesFor(const Settings& settings, VkExtent2D renderExtent) {
+  const std::uint32_t d = shader::kGodRayDownsample;
+  const VkExtent2D godRays =
+      settings.godRaySamples > 0
+          ? VkExtent2D{(renderExtent.width + d - 1) / d, (renderExtent.height + d - 1) / d}
+          : VkExtent2D{0, 0};
   return {renderExtent, detail::traceExtentFor(renderExtent, settings.traceScale),
-          upsamplesTemporally(settings)};
+          upsamplesTemporally(settings), godRays};
 }
 
 // The shadow map's cascade atlas: the cascades side by side ({0, 0}: none); and the spare
@@ -165,7 +176,7 @@ detail::ShadowExtents shadowExtentFor(const Settings& settings) {
 
 void Context::Impl::prepare(const Settings& settings, VkExtent2D renderExtent) {
   for (const auto& [program, key] : detail::variantsFor(settings, info_.workCounters)) {
-    programs_[program].prepare(key);
+    if (programs_.has(program)) programs_[program].prepare(key);  // composite: optional
   }
   const detail::ImageSizes sizes = imageSizesFor(settings, renderExtent);
   if (!images_.fit(sizes) && images_.grow(sizes, lastFrameIndex_)) {
@@ -178,7 +189,7 @@ void Context::Impl::prepare(const Settings& settings, VkExtent2D renderExtent) {
 
 std::string Context::Impl::unprepared(const Settings& settings, VkExtent2D renderExtent) const {
   for (const auto& [program, key] : detail::variantsFor(settings, info_.workCounters)) {
-    if (programs_[program].find(key) == VK_NULL_HANDLE) {
+    if (programs_.has(program) && programs_[program].find(key) == VK_NULL_HANDLE) {
       std::string variant = programs_[program].name();
       for (std::uint32_t i = 0; i < key.count; ++i) variant += " " + std::to_string(key.values[i]);
       return "the pipeline variant \"" + variant + "\" these settings use";
@@ -301,6 +312,8 @@ void Context::Impl::dispatch(const FrameInputs& inputs, const Settings& settings
     report_ = FrameReport{traceExtent,          temporal.tileSize,    temporal.useHistory,
                           temporal.insideLayer, temporal.resetReason, shadowCascadesMade_};
   }
+  godRayFrame_ = GodRayFrame{};
+  if (settings.godRaySamples > 0) recordGodRays(cmd, inputs, settings, slot);
   device_.endLabel(cmd);
   lastSlot_ = slotIndex;
   lastExtent_ = inputs.renderExtent;
@@ -309,13 +322,17 @@ void Context::Impl::dispatch(const FrameInputs& inputs, const Settings& settings
 void Context::Impl::composite(VkCommandBuffer cmd, VkImageView color, VkExtent2D extent) {
   const auto& fn = device_.fn();
   Slot& slot = slots_[lastSlot_];
+  const std::uint32_t godRays = prepareCompositeGodRays(cmd, slot);
   detail::SetWriter(device_, slot.composite)
       .storageImage(shader::kCompositeHostColor, color)
       .storageImage(shader::kCompositeClouds, images_.radiance.view())
       .commit();
   device_.beginLabel(cmd, "clouds: composite");
   const detail::ComputeProgram& program = programs_[Program::Composite];
-  fn.vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, program.find());
+  fn.vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE,
+                       godRays == shader::kGodRaysNone
+                           ? program.find()
+                           : program.find(detail::compositeKey(godRays)));
   fn.vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, program.layout(), 0, 1,
                              &slot.composite, 0, nullptr);
   shader::CompositeConstants constants{};
@@ -339,6 +356,12 @@ Outputs Context::Impl::outputs() const {
     out.shadowMap = {shadow.image(), shadow.view(), shadow.format()};
     out.shadowParameters = shadowParameters_;
   }
+  const detail::OwnedImage& mask = images_.godRayMask;
+  if (mask) {
+    out.godRayMask = {mask.image(), mask.view(), mask.format()};
+    out.godRaySun = godRayParameters_.sun;
+    out.godRayBlur = godRayParameters_.blur;
+  }
   return out;
 }
 
@@ -346,7 +369,8 @@ MemoryUsage Context::Impl::memoryUsage() const {
   MemoryUsage usage = images_.memoryUsage();
   for (const Slot& slot : slots_) {
     usage.bufferBytes += slot.uniforms.bytes() + slot.counters.bytes() +
-                         slot.shadowUniforms.bytes() + slot.shadowParameters.bytes();
+                         slot.shadowUniforms.bytes() + slot.shadowParameters.bytes() +
+                         slot.godRayComposite.bytes();
   }
   return usage;
 }

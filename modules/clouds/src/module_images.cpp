@@ -94,7 +94,9 @@ bool ModuleImages::fit(const ImageSizes& sizes) const {
          holds(sceneDistance, sizes.trace) && holds(traceSamples, sizes.trace) &&
          holds(history[0], sizes.trace) && holds(history[1], sizes.trace) &&
          (!sizes.upsampling ||
-          (holds(outputHistory[0], sizes.output) && holds(outputHistory[1], sizes.output)));
+          (holds(outputHistory[0], sizes.output) && holds(outputHistory[1], sizes.output))) &&
+         (sizes.godRays.width == 0 ||
+          (fitsExactly(godRayOcclusion, sizes.godRays) && fitsExactly(godRayMask, sizes.godRays)));
 }
 
 bool ModuleImages::grow(const ImageSizes& sizes, std::optional<std::uint64_t> lastUse) {
@@ -131,6 +133,17 @@ bool ModuleImages::grow(const ImageSizes& sizes, std::optional<std::uint64_t> la
           lastUse);
     }
     historyLost = true;
+  }
+  // Exactly the size wanted (read with samplers, whose uv spans the whole image); small, so
+  // remade with the render extent.
+  const bool godRaysFit =
+      fitsExactly(godRayOcclusion, sizes.godRays) && fitsExactly(godRayMask, sizes.godRays);
+  if (sizes.godRays.width > 0 && !godRaysFit) {
+    const VkExtent3D e = extent3(sizes.godRays);
+    replace(godRayOcclusion,
+            make(VK_IMAGE_TYPE_2D, VK_FORMAT_R32_SFLOAT, e, kOutput, "god-ray occlusion"), lastUse);
+    replace(godRayMask, make(VK_IMAGE_TYPE_2D, VK_FORMAT_R32_SFLOAT, e, kOutput, "god-ray mask"),
+            lastUse);
   }
   return historyLost;
 }
@@ -182,6 +195,7 @@ MemoryUsage ModuleImages::memoryUsage() const {
       sceneDistance.bytes() + traceSamples.bytes() + history[0].bytes() + history[1].bytes();
   m.upsamplingBytes = outputHistory[0].bytes() + outputHistory[1].bytes();
   m.shadowBytes = shadowMap.bytes() + shadowSpare.bytes();
+  m.godRayBytes = godRayOcclusion.bytes() + godRayMask.bytes();
   m.bufferBytes = depthPlaceholder.bytes() + samplesPlaceholder.bytes() + hazePlaceholder.bytes();
   for (const Retired& r : retired_) m.retiredBytes += r.image.bytes();
   return m;

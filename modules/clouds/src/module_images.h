@@ -29,7 +29,8 @@ struct ShadowExtents {
 struct ImageSizes {
   VkExtent2D output{0, 0};
   VkExtent2D trace{0, 0};
-  bool upsampling = false;  // the output-resolution histories of temporal upsampling
+  bool upsampling = false;   // the output-resolution histories of temporal upsampling
+  VkExtent2D godRays{0, 0};  // the god-ray occlusion image and mask ({0, 0}: none)
 };
 
 class ModuleImages {
@@ -70,8 +71,10 @@ class ModuleImages {
   OwnedImage traceSamples;                  // this frame's marched pixels (packed samples)
   std::array<OwnedImage, 2> history;        // reconstructed frames, ping-pong
   std::array<OwnedImage, 2> outputHistory;  // temporal upsampling's own samples, ping-pong
-  OwnedImage shadowMap;    // the cloud shadow map's cascade atlas (Settings::shadowCascades)
-  OwnedImage shadowSpare;  // one cascade in the making (Settings::shadowFramesPerCascade > 1)
+  OwnedImage shadowMap;        // the cloud shadow map's cascade atlas (Settings::shadowCascades)
+  OwnedImage shadowSpare;      // one cascade in the making (Settings::shadowFramesPerCascade > 1)
+  OwnedImage godRayOcclusion;  // what hides the sun, a quarter of the output (vkfx/god_rays.h)
+  OwnedImage godRayMask;       // its radial blur (Outputs::godRayMask)
 
  private:
   struct Retired {

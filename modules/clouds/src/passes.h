@@ -16,12 +16,13 @@ enum class Pass : std::uint32_t {
   Upsample,
   ShadowMap,
   TerrainShadow,
+  GodRays,
   Count
 };
 
 inline constexpr std::array<const char*, static_cast<std::size_t>(Pass::Count)> kPassNames = {
-    "noise", "weather",     "sky ambient", "clear sky",  "scene distance",
-    "march", "reconstruct", "upsample",    "shadow map", "terrain shadow"};
+    "noise",       "weather",  "sky ambient", "clear sky",      "scene distance", "march",
+    "reconstruct", "upsample", "shadow map",  "terrain shadow", "god rays"};
 
 constexpr std::uint32_t index(Pass pass) {
   return static_cast<std::uint32_t>(pass);

@@ -36,6 +36,13 @@ SpecializationKey upsampleKey(bool temporalUpsampling, std::uint32_t outputHisto
   return key;
 }
 
+SpecializationKey compositeKey(std::uint32_t godRays) {
+  SpecializationKey key;
+  key.values[shader::kSpecCompositeGodRays] = godRays;
+  key.count = shader::kCompositeSpecCount;
+  return key;
+}
+
 SpecializationKey shadowMapKey(const Settings& settings) {
   SpecializationKey key;
   key.values[shader::kSpecShadowEmptySpace] = settings.emptySpaceSkipping ? 1u : 0u;
@@ -65,6 +72,15 @@ std::vector<std::pair<Program, SpecializationKey>> variantsFor(const Settings& s
     variants.emplace_back(Program::ShadowMap, shadowMapKey(settings));
     variants.emplace_back(Program::TerrainShadow, SpecializationKey{});
     variants.emplace_back(Program::March, marchKey(settings, workCounters, true));
+  }
+  // No god rays, no god-ray pipelines; the composite's god-ray variants (the host's haze
+  // masked, or the glow without one) exist only with them.
+  if (settings.godRaySamples > 0) {
+    variants.emplace_back(Program::GodRayOcclusion, SpecializationKey{});
+    variants.emplace_back(Program::GodRays, SpecializationKey{});
+    for (std::uint32_t mode : {shader::kGodRaysMaskHaze, shader::kGodRaysGlow}) {
+      variants.emplace_back(Program::Composite, compositeKey(mode));
+    }
   }
   return variants;
 }

@@ -20,6 +20,8 @@ SpecializationKey reconstructKey(std::uint32_t history);
 // `hazed`: the host gave an aerial perspective this frame.
 SpecializationKey upsampleKey(bool temporalUpsampling, std::uint32_t outputHistory, bool hazed);
 
+// The composite helper with god rays `godRays` (shader::kGodRaysNone, ...MaskHaze, ...Glow).
+SpecializationKey compositeKey(std::uint32_t godRays);
 // The shadow map's (its empty-space skipping follows Settings::emptySpaceSkipping).
 SpecializationKey shadowMapKey(const Settings& settings);
 

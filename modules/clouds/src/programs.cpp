@@ -8,6 +8,8 @@
 #include "clouds_shaders/cloud_shadow_map.comp.spv.h"
 #include "clouds_shaders/composite.comp.spv.h"
 #include "clouds_shaders/depth_downsample.comp.spv.h"
+#include "clouds_shaders/god_ray_occlusion.comp.spv.h"
+#include "clouds_shaders/god_rays.comp.spv.h"
 #include "clouds_shaders/noise_curl.comp.spv.h"
 #include "clouds_shaders/noise_detail.comp.spv.h"
 #include "clouds_shaders/noise_shape.comp.spv.h"
@@ -135,9 +137,24 @@ std::vector<ProgramDesc> programTable() {
        "terrain shadow"},
       {Program::Composite,
        composite_comp_spv,
-       {{kCompositeHostColor, kImage}, {kCompositeClouds, kImage}},
+       {{kCompositeHostColor, kImage},
+        {kCompositeClouds, kImage},
+        {kCompositeGodRayMask, kTexture},
+        {kCompositeHostDepth, kTexture},
+        {kCompositeAerialPerspective, kTexture},
+        {kCompositeGodRays, kUniforms}},
        sizeof(CompositeConstants),
        "composite"},
+      {Program::GodRayOcclusion,
+       god_ray_occlusion_comp_spv,
+       {{kGodRayRadiance, kImage}, {kGodRayHostDepth, kTexture}, {kGodRayOcclusionOut, kImage}},
+       sizeof(GodRayOcclusionConstants),
+       "god-ray occlusion"},
+      {Program::GodRays,
+       god_rays_comp_spv,
+       {{kGodRayOcclusion, kTexture}, {kGodRayMaskOut, kImage}},
+       sizeof(GodRayParameters),
+       "god rays"},
   };
 }
 
@@ -150,11 +167,12 @@ Programs::Programs(const DeviceContext& device, bool composite) {
     program = std::make_unique<ComputeProgram>(device, desc.spirv, desc.bindings,
                                                desc.pushConstantBytes, desc.name);
     // Programs without specialization constants have one variant: made now (the shadow map's
-    // programs by prepare(), only for settings that have a shadow map).
+    // and the god rays' programs by prepare(), only for settings that have them).
     const bool specialised =
         desc.program == Program::March || desc.program == Program::Reconstruct ||
         desc.program == Program::Upsample || desc.program == Program::ShadowMap ||
-        desc.program == Program::TerrainShadow;
+        desc.program == Program::TerrainShadow || desc.program == Program::GodRayOcclusion ||
+        desc.program == Program::GodRays;
     if (!specialised) program->prepare();
   }
 }

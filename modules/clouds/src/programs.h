@@ -26,6 +26,8 @@ enum class Program : std::uint32_t {
   Composite,        // composite.comp: the clouds over the host's colour
   ShadowMap,        // cloud_shadow_map.comp: one cascade of the cloud shadow map
   TerrainShadow,    // terrain_shadow_map.comp: the terrain's channel of one cascade
+  GodRayOcclusion,  // god_ray_occlusion.comp: what hides the sun, a quarter of the output
+  GodRays,          // god_rays.comp: the god-ray mask (its radial blur)
   Count
 };
 

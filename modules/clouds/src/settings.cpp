@@ -106,6 +106,10 @@ std::string validateSettings(const Settings& s) {
   c.range("shadowCascadesPerFrame", s.shadowCascadesPerFrame, 1u, 4u);
   c.range("shadowFramesPerCascade", s.shadowFramesPerCascade, 1u, 8u);
   c.range("terrainShadowSteps", s.terrainShadowSteps, 1u, 1024u);
+  c.range("godRaySamples", s.godRaySamples, 0u, 128u);
+  c.range("godRayLength", s.godRayLength, 0.05f, 1.0f);
+  c.range("godRayDecay", s.godRayDecay, 0.5f, 1.0f);
+  c.range("godRayGlowStrength", s.godRayGlowStrength, 0.0f, 10.0f);
   c.require(s.jitter == Jitter::None || s.jitter == Jitter::BayerHalton ||
                 s.jitter == Jitter::BayerHaltonSubpixel,
             "Settings.jitter: unknown mode " + std::to_string(static_cast<unsigned>(s.jitter)));
@@ -136,6 +140,7 @@ Settings referenceSettings(const Settings& base) {
   s.shadowCascadesPerFrame = 4;
   s.shadowFramesPerCascade = 1;
   s.terrainShadowSteps = 256;
+  if (base.godRaySamples > 0) s.godRaySamples = 64;
   return s;
 }
 
@@ -241,6 +246,11 @@ Settings settingsFor(Quality quality, const Settings& base) {
   // others three times less often; the wind's drift carries them in between.
   const std::uint32_t shadowFramesPerCascade[] = {8, 4, 2, 1};
   s.shadowFramesPerCascade = shadowFramesPerCascade[static_cast<std::size_t>(quality)];
+  // God rays' samples along each texel's way to the sun (whether there are any is the base's).
+  const std::uint32_t godRaySamples[] = {12, 16, 24, 32};
+  if (base.godRaySamples > 0) {
+    s.godRaySamples = godRaySamples[static_cast<std::size_t>(quality)];
+  }
   return s;
 }
 

@@ -243,7 +243,11 @@ std::vector<std::string> Renderer::pipelineNames() const {
   if (sunlight_) names.push_back(sunlight_->pipeline().name());
   if (hud_) names.push_back(hud_->pipeline().name());
   for (const render::RenderFeature* feature : features_) {
-    names.push_back(std::string(feature->name()) + " module");
+    std::string name = std::string(feature->name()) + " module";
+    const std::vector<std::string> effects = feature->effects();
+    for (std::size_t i = 0; i < effects.size(); ++i) name += (i == 0 ? " (" : ", ") + effects[i];
+    if (!effects.empty()) name += ")";
+    names.push_back(name);
   }
   return names;
 }

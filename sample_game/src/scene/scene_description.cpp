@@ -100,6 +100,9 @@ CloudDescription readClouds(const JsonReader& r, const std::filesystem::path& sc
   }
   // Whether the layer casts shadows (its shadow map): off, no shadow pass, map or pipeline.
   if (!r.boolean("shadows", true)) s.shadowCascades = 0;
+  // Whether the layer makes god rays (its mask, and the composite's shafts in the haze): off,
+  // no pass, mask or pipeline. The quality preset picks the samples.
+  if (r.boolean("godRays", false)) s.godRaySamples = 16;
   c.noiseSeed = static_cast<std::uint32_t>(r.integer("noiseSeed", 0, 0xffffffffLL, c.noiseSeed));
   if (r.has("weatherMap")) c.weatherMap = resolveFile(r, "weatherMap", sceneDir);
   r.finish();

@@ -176,6 +176,9 @@ SceneTextures AtmosphereFeature::addPassesBeforeScene(FrameGraph& graph,
   out.aerialPerspective = made.froxels;
   out.aerialPerspectiveSlices = imported_.aerialPerspective.extent.depth;
   out.aerialPerspectiveRangeMetres = imported_.aerialPerspectiveRangeMetres;
+  out.hazeRayleighPerMetre = parameters_.rayleighScatteringPerMetre;
+  out.hazeMiePerMetre = parameters_.mieScatteringPerMetre;
+  out.hazeMiePhaseG = parameters_.miePhaseG;
   return out;
 }
 

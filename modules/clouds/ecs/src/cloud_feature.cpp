@@ -140,6 +140,13 @@ void CloudFeature::dispatch(const HostFrame& host) {
   }
 }
 
+std::vector<std::string> CloudFeature::effects() const {
+  std::vector<std::string> names;
+  if (settings_.shadowCascades > 0) names.emplace_back("shadow map");
+  if (settings_.godRaySamples > 0) names.emplace_back("god rays");
+  return names;
+}
+
 void CloudFeature::dispatchShadowMap(const HostFrame& host) {
   HostFrame frame = host;
   frame.weatherView = weatherMap_ ? weatherMap_->view() : VK_NULL_HANDLE;
@@ -220,8 +227,7 @@ SceneTextures CloudFeature::addPasses(FrameGraph& graph, const SceneTextures& sc
         d.radiance = builder.write(radiance, Access::StorageWrite);
         d.depth = builder.write(depth, Access::StorageWrite);
       },
-      [this, slices = scene.aerialPerspectiveSlices, range = scene.aerialPerspectiveRangeMetres](
-          const MarchData& d, PassContext& context) {
+      [this, scene](const MarchData& d, PassContext& context) {
         const auto viewOf = [&](TextureHandle h) {
           return h.valid() ? context.view(h) : VK_NULL_HANDLE;
         };
@@ -232,8 +238,11 @@ SceneTextures CloudFeature::addPasses(FrameGraph& graph, const SceneTextures& sc
         host.depthView = viewOf(d.sceneDepth);
         host.skyRadianceView = viewOf(d.skyRadiance);
         host.aerialPerspectiveView = viewOf(d.aerialPerspective);
-        host.aerialPerspectiveSlices = slices;
-        host.aerialPerspectiveRangeMetres = range;
+        host.aerialPerspectiveSlices = scene.aerialPerspectiveSlices;
+        host.aerialPerspectiveRangeMetres = scene.aerialPerspectiveRangeMetres;
+        host.hazeRayleighPerMetre = scene.hazeRayleighPerMetre;
+        host.hazeMiePerMetre = scene.hazeMiePerMetre;
+        host.hazeMiePhaseG = scene.hazeMiePhaseG;
         host.frameIndex = context.frameIndex();
         dispatch(host);
       });
@@ -245,6 +254,13 @@ SceneTextures CloudFeature::addPasses(FrameGraph& graph, const SceneTextures& sc
       "clouds composite", PassType::Compute,
       [&](PassBuilder& builder, CompositeData& d) {
         d.radiance = builder.read(march.radiance, Access::StorageRead);
+        // God rays read the scene's depth and haze (vkfx/god_rays.h).
+        if (settings_.godRaySamples > 0) {
+          if (scene.depth.valid()) builder.read(scene.depth, Access::SampledRead);
+          if (scene.aerialPerspective.valid()) {
+            builder.read(scene.aerialPerspective, Access::SampledReadGeneral);
+          }
+        }
         d.hdr = builder.write(scene.hdr, Access::StorageWrite);
       },
       [this](const CompositeData& d, PassContext& context) {

@@ -35,6 +35,7 @@ class CloudFeature final : public engine::render::RenderFeature {
   ~CloudFeature() override;
 
   const char* name() const override { return "clouds"; }
+  std::vector<std::string> effects() const override;
   bool castsCloudShadow() const override { return castsShadow_; }
   bool prepare(VkExtent2D extent, std::uint64_t frameIndex) override;
   engine::render::SceneTextures addShadowPasses(

@@ -56,6 +56,9 @@ clouds::FrameInputs cloudFrameInputs(engine::ecs::World& world, const HostFrame&
     in.aerialPerspective.layout = VK_IMAGE_LAYOUT_GENERAL;
     in.aerialPerspective.slices = host.aerialPerspectiveSlices;
     in.aerialPerspective.rangeMetres = host.aerialPerspectiveRangeMetres;
+    in.aerialPerspective.rayleighScatteringPerMetre = host.hazeRayleighPerMetre;
+    in.aerialPerspective.mieScatteringPerMetre = host.hazeMiePerMetre;
+    in.aerialPerspective.miePhaseG = host.hazeMiePhaseG;
   }
   if (const auto* time = world.ctx().tryGet<engine::ecs::FrameTime>()) {
     in.timeSeconds = time->elapsedSeconds;

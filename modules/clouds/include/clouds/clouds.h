@@ -145,12 +145,13 @@ struct MemoryUsage {
   std::uint64_t traceBytes = 0;       // scene distance, samples and two histories (trace extent)
   std::uint64_t upsamplingBytes = 0;  // two output-resolution histories (temporal upsampling)
   std::uint64_t shadowBytes = 0;      // the cloud shadow map and its spare cascade
+  std::uint64_t godRayBytes = 0;      // the god-ray occlusion image and mask
   std::uint64_t bufferBytes = 0;      // uniforms, work counters, placeholders
   std::uint64_t retiredBytes = 0;     // images a larger prepare() replaced, freed once the
                                       //   frames in flight that may use them have retired
   std::uint64_t totalBytes() const {
     return noiseBytes + weatherBytes + outputBytes + traceBytes + upsamplingBytes + shadowBytes +
-           bufferBytes + retiredBytes;
+           godRayBytes + bufferBytes + retiredBytes;
   }
 };
 
@@ -288,6 +289,17 @@ struct Settings {
   // is at the terrain's lowest altitude to where it clears the highest (at a sun 5 degrees up
   // over 2 km of relief, 23 km of ray: 48 samples are 480 m apart).
   std::uint32_t terrainShadowSteps = 48;  // [1, 1024]
+
+  // --- God rays (Outputs::godRayMask, vkfx/god_rays.h) ---------------------------------------
+  // dispatch() makes the god-ray mask at a quarter of the render extent: the share of each
+  // pixel's way towards the sun on screen that sees it past the clouds and the host's geometry
+  // (a radial blur, Mitchell 2007); composite() then takes the hidden part of the haze's Mie
+  // in-scattering out (with FrameInputs::aerialPerspective and its scattering coefficients),
+  // or adds a glow along the clear paths (without). 0 samples: no mask, no pass, no memory.
+  std::uint32_t godRaySamples = 0;   // [0, 128] samples along each texel's way to the sun
+  float godRayLength = 0.9f;         // [0.05, 1] fraction of the way the samples cover
+  float godRayDecay = 0.97f;         // [0.5, 1] weight of each sample over the one before
+  float godRayGlowStrength = 0.05f;  // [0, 10] the fallback's glow (no haze), sr^-1 scale
 };
 
 // Quality presets, cheapest first; Reference is referenceSettings().
@@ -350,6 +362,11 @@ struct FrameInputs {
     float rangeMetres = 0.0f;       // the distance of its last slice, > 0 with a view
     glm::vec3 radianceScale{1.0f};  // multiplies its rgb (the atmosphere's: the sun's
                                     //   illuminance at the top of the atmosphere), >= 0
+    // The air's scattering at the ground (per metre) and Mie's asymmetry: god rays take the
+    // Mie share of the haze (vkfx/god_rays.h). All 0: the haze gets no god rays.
+    glm::vec3 rayleighScatteringPerMetre{0.0f};  // >= 0
+    glm::vec3 mieScatteringPerMetre{0.0f};       // >= 0
+    float miePhaseG = 0.8f;                      // (-1, 1)
   };
   AerialPerspective aerialPerspective;
 
@@ -423,6 +440,14 @@ struct Outputs {
   // altitude below which the terrain hides the sun (FrameInputs::terrain; without it, far below).
   OutputImage shadowMap;
   ShadowMapParameters shadowParameters;  // info.x = 0 while there is no map
+  // The god-ray mask (Settings::godRaySamples > 0; else null): R32F at godRayParameters'
+  // extent (a quarter of the render extent per axis, rounded up), in GENERAL with the writes of
+  // the last dispatch() visible to compute- and fragment-shader reads; meaning and use:
+  // vkfx/god_rays.h. Its parameters: sun (xy the sun's position in the mask's uv, z the fade,
+  // w the samples), blur (x length, y decay, zw the mask's extent).
+  OutputImage godRayMask;
+  glm::vec4 godRaySun{0.0f};
+  glm::vec4 godRayBlur{0.0f};
 };
 
 namespace detail {

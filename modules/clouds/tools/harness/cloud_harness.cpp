@@ -312,6 +312,34 @@ ShadowMapImage CloudHarness::readShadowMap() {
   return map;
 }
 
+float GodRayImages::occlusionAt(glm::vec2 uv) const {
+  if (width == 0 || height == 0) return 1.0f;
+  return sampleLinearClamped(occlusion, width, height, uv);
+}
+
+GodRayImages CloudHarness::readGodRays() {
+  const clouds::Outputs out = context_->outputs();
+  GodRayImages images;
+  if (out.godRayMask.image == VK_NULL_HANDLE) return images;
+  images.sun = out.godRaySun;
+  images.blur = out.godRayBlur;
+  const VkExtent3D extent = moduleImages().godRayMask.extent();
+  const gfx::ImageState general{VK_IMAGE_LAYOUT_GENERAL, VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT,
+                                VK_ACCESS_2_MEMORY_READ_BIT | VK_ACCESS_2_MEMORY_WRITE_BIT};
+  const auto read = [&](VkImage image) {
+    const std::vector<std::byte> bytes =
+        gfx::readbackImage(device_, image, VK_FORMAT_R32_SFLOAT, extent, general);
+    std::vector<float> values(std::size_t{extent.width} * extent.height);
+    std::memcpy(values.data(), bytes.data(), values.size() * sizeof(float));
+    return values;
+  };
+  images.width = extent.width;
+  images.height = extent.height;
+  images.occlusion = read(moduleImages().godRayOcclusion.image());
+  images.mask = read(out.godRayMask.image);
+  return images;
+}
+
 namespace {
 
 std::vector<std::uint8_t> readTexels(gfx::Device& device, VkImage image, VkExtent3D extent) {

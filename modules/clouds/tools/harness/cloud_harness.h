@@ -86,6 +86,19 @@ struct ShadowMapImage {
   float terrainLight(const glm::vec3& relative) const { return lookup(relative).y; }
 };
 
+// The god-ray occlusion image and mask as read back (vkfx/god_rays.h), row-major, with the
+// parameters of the frame that made them (Outputs::godRaySun, godRayBlur).
+struct GodRayImages {
+  std::uint32_t width = 0;
+  std::uint32_t height = 0;
+  std::vector<float> occlusion;
+  std::vector<float> mask;
+  glm::vec4 sun{0.0f};
+  glm::vec4 blur{0.0f};
+  // The occlusion image filtered as a linear, clamped sampler filters it, at a mask uv.
+  float occlusionAt(glm::vec2 uv) const;
+};
+
 // `settings` rendered as one self-contained frame: every pixel marched at full resolution, no
 // history. What the CPU reference computes, and what analytic tests compare against.
 clouds::Settings singleFrame(clouds::Settings settings);
@@ -120,6 +133,8 @@ class CloudHarness {
   ShadowMapImage renderShadowMap(const CloudView& view, const clouds::Settings& settings,
                                  std::uint32_t frames = 1);
   ShadowMapImage readShadowMap();
+  // The last dispatch()'s god-ray images (empty without god rays).
+  GodRayImages readGodRays();
 
   // Marks the next frame as a camera cut (FrameInputs::reset).
   void cut() { cutNext_ = true; }

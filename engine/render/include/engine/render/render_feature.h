@@ -65,6 +65,11 @@ struct SceneTextures {
   TextureHandle aerialPerspective;
   std::uint32_t aerialPerspectiveSlices = 0;
   float aerialPerspectiveRangeMetres = 0.0f;
+  // What the haze is made of: the air's scattering at the ground (per metre) and its Mie
+  // asymmetry, for effects that weigh its Mie share (god rays, vkfx/god_rays.h).
+  glm::vec3 hazeRayleighPerMetre{0.0f};
+  glm::vec3 hazeMiePerMetre{0.0f};
+  float hazeMiePhaseG = 0.8f;
   // The clouds' shadow for receivers lit by the sun (vkfx/cloud_shadow.h), kept in GENERAL,
   // and its parameters, which the pass that writes the map fills when it executes: a pass that
   // reads the map (and so runs after it) reads them at its own execution. Invalid / null when
@@ -84,6 +89,9 @@ class RenderFeature {
  public:
   virtual ~RenderFeature();
   virtual const char* name() const = 0;
+  // The optional effects the feature runs in this scene, as it names them (e.g. the clouds'
+  // "shadow map", "god rays"): what --describe lists after its pipelines. Default: none.
+  virtual std::vector<std::string> effects() const { return {}; }
   // Whether the feature casts cloud shadows (addShadowPasses() provides
   // SceneTextures::cloudShadow): receivers build their pipelines to read them.
   virtual bool castsCloudShadow() const { return false; }

@@ -26,6 +26,10 @@ struct HostFrame {
   VkImageView aerialPerspectiveView = VK_NULL_HANDLE;
   std::uint32_t aerialPerspectiveSlices = 0;
   float aerialPerspectiveRangeMetres = 0.0f;
+  // The haze's scattering at the ground and Mie asymmetry (god rays weigh its Mie share).
+  glm::vec3 hazeRayleighPerMetre{0.0f};
+  glm::vec3 hazeMiePerMetre{0.0f};
+  float hazeMiePhaseG = 0.8f;
   std::uint64_t frameIndex = 0;
 };
 
