@@ -127,7 +127,7 @@ TEST(HeadlessCapture, EachSceneGetsOnlyThePassesAndPipelinesItNeeds) {
        R"("passes": ["cloud shadows", "terrain sunlight", "atmosphere", "scene", "clouds", )"
        R"("clouds composite", "tonemap", "capture"])",
        R"x("pipelines": ["tonemap", "terrain (cloud shadows)", "terrain sunlight", )x"
-       R"x("atmosphere module", "clouds module (shadow map)"])x",
+       R"x("atmosphere module", "clouds module (shadow map, god rays)"])x",
        R"("modules": ["atmosphere", "clouds"], "shadow casters": ["clouds", "terrain"])"},
       // God rays: the clouds module's mask and composite variants, no pass of their own.
       {scene("god_rays_sunset.json"),

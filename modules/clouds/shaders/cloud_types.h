@@ -64,6 +64,7 @@ const uint kUpsampleFresh = 5u;
 const uint kUpsampleHistory = 6u;
 const uint kUpsampleHistoryOut = 7u;
 const uint kUpsampleAerialPerspective = 8u;  // the host's haze (FrameInputs::aerialPerspective)
+const uint kUpsampleGodRayLight = 9u;        // god_rays.comp's light (Settings::godRaySamples > 0)
 // cloud_shadow_map.comp (binding 0: the CloudUniforms of the frame the map is made in)
 const uint kShadowShapeNoise = 1u;
 const uint kShadowWeatherMap = 2u;
@@ -74,20 +75,19 @@ const uint kShadowMapSpare = 6u;  // one cascade in the making (kShadowTexelToSp
 // terrain_shadow_map.comp
 const uint kTerrainShadowHeight = 0u;  // the host's heightfield, sampled
 const uint kTerrainShadowMap = 1u;     // the cascade atlas: its terrain channel is written
-// composite.comp (2-5 with god rays only)
+// composite.comp
 const uint kCompositeHostColor = 0u;
 const uint kCompositeClouds = 1u;
-const uint kCompositeGodRayMask = 2u;         // the mask, sampled
-const uint kCompositeHostDepth = 3u;          // the host's depth, sampled
-const uint kCompositeAerialPerspective = 4u;  // the host's haze (FrameInputs::aerialPerspective)
-const uint kCompositeGodRays = 5u;            // GodRayComposite (uniform block)
-// god_ray_occlusion.comp
-const uint kGodRayRadiance = 0u;      // the clouds' radiance output (a: transmittance)
-const uint kGodRayHostDepth = 1u;     // the host's depth, sampled (a placeholder without one)
-const uint kGodRayOcclusionOut = 2u;  // the occlusion image, R32F
+// god_ray_occlusion.comp (binding 0: the frame's CloudUniforms)
+const uint kGodRayTraceSamples = 1u;   // the reconstructed trace image (packed)
+const uint kGodRaySceneDistance = 2u;  // the conservative scene distance (trace res)
+const uint kGodRayOcclusionOut = 3u;   // the occlusion image, R32F
 // god_rays.comp
 const uint kGodRayOcclusion = 0u;  // the occlusion image, sampled (linear, clamped)
 const uint kGodRayMaskOut = 1u;    // the mask, R32F
+const uint kGodRayHaze = 2u;       // the host's haze, sampled (a placeholder without one)
+const uint kGodRayUniforms = 3u;   // GodRayLightUniforms (uniform block)
+const uint kGodRayLightOut = 4u;   // RGBA16F: what the composite adds to a sky pixel
 // sky_ambient.comp (reads and writes the uniforms as a storage buffer)
 const uint kSkyAmbientUniforms = 0u;
 const uint kSkyAmbientSky = 1u;
@@ -119,11 +119,11 @@ const uint kReconstructSpecCount = 1u;
 const uint kSpecTemporalUpsampling = 0u;  // 0/1: accumulate the output-resolution history
 const uint kSpecOutputHistory = 1u;       // 0 none, 1 read in place (nothing moved), 2 reprojected
 const uint kSpecAerialPerspective = 2u;   // 0/1: haze the output (FrameInputs::aerialPerspective)
-const uint kUpsampleSpecCount = 3u;
-// composite.comp
-const uint kSpecCompositeGodRays = 0u;  // kGodRaysNone, kGodRaysMaskHaze or kGodRaysGlow
-const uint kCompositeSpecCount = 1u;
-const uint kGodRaysNone = 0u;      // no god rays (the unspecialised composite)
+const uint kSpecUpsampleGodRays = 3u;     // 0/1: add god_rays.comp's light to the sky's pixels
+const uint kUpsampleSpecCount = 4u;
+// god_rays.comp
+const uint kSpecGodRayLight = 0u;  // kGodRaysMaskHaze or kGodRaysGlow
+const uint kGodRaySpecCount = 1u;
 const uint kGodRaysMaskHaze = 1u;  // the haze's Mie in-scattering, masked
 const uint kGodRaysGlow = 2u;      // the fallback without a haze: a glow along the clear paths
 // cloud_shadow_map.comp
@@ -345,21 +345,18 @@ using vkfx::shader::kGodRayDownsample;
 
 // god_ray_occlusion.comp's push constants.
 struct GodRayOcclusionConstants {
-  uvec2 renderExtent;  // px
-  uvec2 maskExtent;    // texels: the render extent over kGodRayDownsample, rounded up
-  uint hasDepth;       // 0: no host depth, every pixel is sky
-  uint reversedZ;      // 1: the far plane is depth 0
-  uint padding0;
-  uint padding1;
+  uvec2 maskExtent;  // texels: the render extent over kGodRayDownsample, rounded up
+  uvec2 padding0;
 };
 
-// The composite's god rays (vkfx/god_rays.h's uses), a uniform block.
-struct GodRayComposite {
+// The god rays' light (vkfx/god_rays.h's uses: god_rays.comp makes it per mask texel, the
+// upsample adds it to the sky's pixels), a uniform block.
+struct GodRayLightUniforms {
   mat4 viewFromClip;  // the host's inverse projection: a pixel's view-space position
   vec4 sunView;       // xyz the direction towards the sun in view space, w the fade f
-  // xy a render pixel's mask uv per pixel (1 / (kGodRayDownsample x mask extent)), z the
-  // host's far-plane depth (0 or 1), w 1 with a host depth
-  vec4 maskScale;
+  // xy the mask's uv per screen uv (the mask may reach past the render extent), z the depth of
+  // the host's near plane (1 with reversed-Z, else 0), w unused
+  vec4 screenScale;
   vec4 rayleighPerMetre;  // xyz the air's Rayleigh scattering at the ground, w Mie's g
   vec4 miePerMetre;       // xyz the air's Mie scattering at the ground, w the glow's strength
   vec4 hazeScale;         // xyz the haze's radiance scale, w its range (m)
@@ -412,8 +409,8 @@ static_assert(sizeof(clouds::shader::NoiseConstants) == 16);
 static_assert(sizeof(clouds::shader::WeatherConstants) == 16);
 static_assert(sizeof(clouds::shader::MaximaConstants) == 16);
 static_assert(sizeof(clouds::shader::CompositeConstants) == 16);
-static_assert(sizeof(clouds::shader::GodRayOcclusionConstants) == 32);
-static_assert(sizeof(clouds::shader::GodRayComposite) == 64 + 6 * 16);
+static_assert(sizeof(clouds::shader::GodRayOcclusionConstants) == 16);
+static_assert(sizeof(clouds::shader::GodRayLightUniforms) == 64 + 6 * 16);
 static_assert(sizeof(clouds::shader::ShadowMapConstants) == 80);
 static_assert(sizeof(clouds::shader::TerrainShadowConstants) == 128);
 static_assert(sizeof(clouds::shader::MarchTerrainShadow) == 14 * 16);

@@ -1,34 +1,43 @@
 #version 460
 // God rays, first pass (vkfx/god_rays.h): the occlusion image at a quarter of the render
-// extent per axis. Each texel is the mean over its 4 x 4 pixels of the clouds' transmittance
-// where the host's depth is the far plane (sky), 0 on the host's geometry: what the air towards
-// each pixel shows of the sun's light, before the radial blur.
-// Inputs: 0 the clouds' radiance output (a: transmittance), 1 the host's depth (sampled; with
-// no depth every pixel is sky); push constants GodRayOcclusionConstants. Output: 2 the
+// extent per axis, made from the reconstructed trace image before the upsample. Each texel is
+// the mean, over the trace pixels its 4 x 4 output pixels fall in, of the clouds'
+// transmittance where the scene distance is infinite (sky) and 0 on the host's geometry: what
+// the air towards each pixel shows of the sun's light, before the radial blur. The scene
+// distance is conservative (a trace pixel on a horizon counts as sky), so occluders' edges
+// thin by up to a trace pixel.
+// Inputs: 0 CloudUniforms, 1 the reconstructed trace image (packed: cloud_temporal.h), 2 the
+// scene distance (R32F, trace res); push constants GodRayOcclusionConstants. Output: 3 the
 // occlusion image (R32F).
 #extension GL_GOOGLE_include_directive : require
-#include "cloud_types.h"
+#include "cloud_temporal.h"
 
 layout(local_size_x = kWorkgroupSize2D, local_size_y = kWorkgroupSize2D) in;
-
-layout(binding = kGodRayRadiance, rgba16f) uniform readonly image2D cloudRadiance;
-layout(binding = kGodRayHostDepth) uniform sampler2D hostDepth;
+#include "frame_uniforms.glsl"
+layout(binding = kGodRayTraceSamples, rgba32ui) uniform readonly uimage2D traceSamples;
+layout(binding = kGodRaySceneDistance, r32f) uniform readonly image2D sceneDistance;
 layout(binding = kGodRayOcclusionOut, r32f) uniform writeonly image2D occlusion;
 layout(push_constant) uniform Constants { GodRayOcclusionConstants c; };
 
+#include "cloud_march.h"
+
 void main() {
+  loadFrameUniforms();
   const uvec2 texel = gl_GlobalInvocationID.xy;
   if (any(greaterThanEqual(texel, c.maskExtent))) return;
-  const float farPlane = c.reversedZ != 0u ? 0.0f : 1.0f;
+  // The trace pixels whose centres fall in the texel's output pixels (at least one).
+  const vec2 tracePerOutput = vec2(u.traceExtent) / vec2(u.outputExtent);
+  const vec2 from = vec2(texel * kGodRayDownsample) * tracePerOutput;
+  const vec2 to = vec2((texel + 1u) * kGodRayDownsample) * tracePerOutput;
+  const uvec2 first = min(uvec2(ceil(from - 0.5f)), u.traceExtent - 1u);
+  const uvec2 last = max(min(uvec2(ceil(to - 0.5f)), u.traceExtent) - 1u, first);
   float clear = 0.0f;
   float pixels = 0.0f;
-  for (uint y = 0u; y < kGodRayDownsample; ++y) {
-    for (uint x = 0u; x < kGodRayDownsample; ++x) {
-      const uvec2 pixel = texel * kGodRayDownsample + uvec2(x, y);
-      if (any(greaterThanEqual(pixel, c.renderExtent))) continue;
-      const float transmittance = imageLoad(cloudRadiance, ivec2(pixel)).a;
-      const float depth = c.hasDepth != 0u ? texelFetch(hostDepth, ivec2(pixel), 0).r : farPlane;
-      clear += depth == farPlane ? transmittance : 0.0f;
+  for (uint y = first.y; y <= last.y; ++y) {
+    for (uint x = first.x; x <= last.x; ++x) {
+      const bool sky = imageLoad(sceneDistance, ivec2(x, y)).r >= kInfiniteDistance;
+      const float transmittance = unpackCloudRadiance(imageLoad(traceSamples, ivec2(x, y))).a;
+      clear += sky ? transmittance : 0.0f;
       pixels += 1.0f;
     }
   }

@@ -15,10 +15,13 @@
 // whether anything moved, are per-frame variants (kSpecOutputHistory).
 //
 // With the host's aerial perspective (kSpecAerialPerspective) the output is hazed: hazed().
+// With god rays (kSpecUpsampleGodRays), the sky's pixels then get god_rays.comp's light, as
+// much as the clouds let the sky through (vkfx/god_rays.h): the screen-space mask says nothing
+// of the air in front of the host's geometry or of opaque cloud. The histories keep neither.
 //
 // Inputs: 0 CloudUniforms; 1 reconstructed samples (trace res, packed: cloud_temporal.h);
 // 2 host depth; 5 this frame's marched samples (trace res); 6 last frame's output history;
-// 8 the host's aerial perspective (3D).
+// 8 the host's aerial perspective (3D); 9 the god rays' light (a quarter of the output res).
 // Outputs: 3 RGBA16F radiance + transmittance, 4 RG32F depths (output res); 7 this frame's
 // output history (output res, packed with the own-sample count).
 // References: Karis 2014 (temporal accumulation, neighbourhood clamp); Schneider 2015.
@@ -33,6 +36,8 @@ layout(constant_id = kSpecTemporalUpsampling) const uint kTemporalUpsampling = 0
 layout(constant_id = kSpecOutputHistory) const uint kOutputHistory = 0u;
 // 1: the host gave an aerial perspective; the output is hazed with it (kSpecAerialPerspective).
 layout(constant_id = kSpecAerialPerspective) const uint kAerialPerspective = 0u;
+// 1: god rays: the sky's pixels get their light (kSpecUpsampleGodRays).
+layout(constant_id = kSpecUpsampleGodRays) const uint kGodRays = 0u;
 #include "frame_uniforms.glsl"
 layout(binding = kUpsampleTraceSamples, rgba32ui) uniform readonly uimage2D traceSamples;
 layout(binding = kUpsampleHostDepth) uniform sampler2D hostDepth;
@@ -42,6 +47,7 @@ layout(binding = kUpsampleFresh, rgba32ui) uniform readonly uimage2D freshSample
 layout(binding = kUpsampleHistory, rgba32ui) uniform readonly uimage2D outputHistory;
 layout(binding = kUpsampleHistoryOut, rgba32ui) uniform writeonly uimage2D outputHistoryOut;
 layout(binding = kUpsampleAerialPerspective) uniform sampler3D aerialPerspective;
+layout(binding = kUpsampleGodRayLight) uniform sampler2D godRayLight;
 
 #include "vkfx/aerial_perspective.glsl"
 
@@ -103,6 +109,19 @@ vec4 hazed(uvec2 pixel, vec4 radiance, vec2 depth) {
   return vec4(radiance.rgb * air.a + inScattered, radiance.a);
 }
 
+// What the output pixel shows: the clouds, hazed, and with god rays the light the air in front
+// of the sky behind them gains or loses (`scene` m: the host's geometry, infinite for sky).
+vec4 outputRadiance(uvec2 pixel, vec4 radiance, vec2 depth, float scene) {
+  vec4 result = hazed(pixel, radiance, depth);
+  if (kGodRays != 0u && scene >= kInfiniteDistance) {
+    // The light image is a quarter of the output, rounded up: kGodRayDownsample pixels a texel.
+    const vec2 texels = vec2(textureSize(godRayLight, 0));
+    const vec2 uv = (vec2(pixel) + 0.5f) / (texels * float(kGodRayDownsample));
+    result.rgb += radiance.a * textureLod(godRayLight, uv, 0.0f).rgb;
+  }
+  return result;
+}
+
 // The depth-aware bilinear estimate from the four trace pixels around this one.
 void spatialEstimate(uvec2 pixel, float scene, vec2 scale, out vec4 radiance, out vec2 depth,
                      out vec4 lo, out vec4 hi) {
@@ -142,7 +161,7 @@ void main() {
   vec2 spatialDepth;
   spatialEstimate(pixel, scene, scale, spatial, spatialDepth, lo, hi);
   if (kTemporalUpsampling == 0u) {
-    imageStore(outRadiance, ivec2(pixel), hazed(pixel, spatial, spatialDepth));
+    imageStore(outRadiance, ivec2(pixel), outputRadiance(pixel, spatial, spatialDepth, scene));
     imageStore(outDepth, ivec2(pixel), vec4(spatialDepth, 0.0f, 0.0f));
     return;
   }
@@ -224,6 +243,6 @@ void main() {
   const vec4 radiance = mix(spatial, own, trust);
   const vec2 depth = depthBlendResult(blend);
   imageStore(outputHistoryOut, ivec2(pixel), packOutputHistory(own, ownDepth, ownSamples));
-  imageStore(outRadiance, ivec2(pixel), hazed(pixel, radiance, depth));
+  imageStore(outRadiance, ivec2(pixel), outputRadiance(pixel, radiance, depth, scene));
   imageStore(outDepth, ivec2(pixel), vec4(depth, 0.0f, 0.0f));
 }

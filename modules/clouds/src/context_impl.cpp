@@ -102,10 +102,10 @@ Context::Impl::Impl(const CreateInfo& info, const detail::VulkanFunctions& funct
                             "shadow parameters " + std::to_string(i));
     slot.godRayOcclusion = allocateSet(Program::GodRayOcclusion);
     slot.godRays = allocateSet(Program::GodRays);
-    slot.godRayComposite =
-        detail::OwnedBuffer(device_, sizeof(shader::GodRayComposite),
+    slot.godRayLight =
+        detail::OwnedBuffer(device_, sizeof(shader::GodRayLightUniforms),
                             VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT,
-                            "god-ray composite " + std::to_string(i));
+                            "god-ray light " + std::to_string(i));
   }
 }
 
@@ -290,6 +290,8 @@ void Context::Impl::dispatch(const FrameInputs& inputs, const Settings& settings
   if (skyIsClear(settings)) {
     // Nothing can be marched: the outputs are the empty sky, and the next frame starts afresh.
     recordClearSky(cmd, slot);
+    if (settings.godRaySamples > 0)
+      recordGodRays(cmd, inputs, settings, images_.history[0], false, slot);
     temporal_.forget("after a clear sky");
     report_ = FrameReport{
         {0, 0}, 0, false, temporal.insideLayer, "clear sky: nothing to march", shadowCascadesMade_};
@@ -312,8 +314,6 @@ void Context::Impl::dispatch(const FrameInputs& inputs, const Settings& settings
     report_ = FrameReport{traceExtent,          temporal.tileSize,    temporal.useHistory,
                           temporal.insideLayer, temporal.resetReason, shadowCascadesMade_};
   }
-  godRayFrame_ = GodRayFrame{};
-  if (settings.godRaySamples > 0) recordGodRays(cmd, inputs, settings, slot);
   device_.endLabel(cmd);
   lastSlot_ = slotIndex;
   lastExtent_ = inputs.renderExtent;
@@ -322,17 +322,13 @@ void Context::Impl::dispatch(const FrameInputs& inputs, const Settings& settings
 void Context::Impl::composite(VkCommandBuffer cmd, VkImageView color, VkExtent2D extent) {
   const auto& fn = device_.fn();
   Slot& slot = slots_[lastSlot_];
-  const std::uint32_t godRays = prepareCompositeGodRays(cmd, slot);
   detail::SetWriter(device_, slot.composite)
       .storageImage(shader::kCompositeHostColor, color)
       .storageImage(shader::kCompositeClouds, images_.radiance.view())
       .commit();
   device_.beginLabel(cmd, "clouds: composite");
   const detail::ComputeProgram& program = programs_[Program::Composite];
-  fn.vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE,
-                       godRays == shader::kGodRaysNone
-                           ? program.find()
-                           : program.find(detail::compositeKey(godRays)));
+  fn.vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, program.find());
   fn.vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, program.layout(), 0, 1,
                              &slot.composite, 0, nullptr);
   shader::CompositeConstants constants{};
@@ -370,7 +366,7 @@ MemoryUsage Context::Impl::memoryUsage() const {
   for (const Slot& slot : slots_) {
     usage.bufferBytes += slot.uniforms.bytes() + slot.counters.bytes() +
                          slot.shadowUniforms.bytes() + slot.shadowParameters.bytes() +
-                         slot.godRayComposite.bytes();
+                         slot.godRayLight.bytes();
   }
   return usage;
 }

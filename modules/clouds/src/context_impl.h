@@ -95,18 +95,7 @@ class Context::Impl {
     detail::OwnedBuffer shadowParameters;  // the march's MarchTerrainShadow
     VkDescriptorSet godRayOcclusion = VK_NULL_HANDLE;
     VkDescriptorSet godRays = VK_NULL_HANDLE;
-    detail::OwnedBuffer godRayComposite;  // the composite's GodRayComposite
-  };
-
-  // What composite() needs of the last dispatch() for god rays.
-  struct GodRayFrame {
-    bool made = false;   // the mask was made, with a fade above 0
-    bool hazed = false;  // with the host's haze and its scattering: mask it, else glow
-    shader::GodRayComposite uniforms{};
-    VkImageView depthView = VK_NULL_HANDLE;
-    VkImageLayout depthLayout = VK_IMAGE_LAYOUT_UNDEFINED;
-    VkImageView hazeView = VK_NULL_HANDLE;
-    VkImageLayout hazeLayout = VK_IMAGE_LAYOUT_UNDEFINED;
+    detail::OwnedBuffer godRayLight;  // god_rays.comp's GodRayLightUniforms
   };
 
   VkDescriptorSet allocateSet(detail::Program program);
@@ -136,11 +125,11 @@ class Context::Impl {
   void copySpareIntoAtlas(VkCommandBuffer cmd, std::uint32_t cascade, std::uint32_t resolution);
   void makeShadowMapVisible(VkCommandBuffer cmd);
 
-  // record_god_rays.cpp
-  void recordGodRays(VkCommandBuffer cmd, const FrameInputs& inputs, const Settings& settings,
-                     Slot& slot);
-  // The composite's descriptors and god-ray uniforms; returns its variant.
-  std::uint32_t prepareCompositeGodRays(VkCommandBuffer cmd, Slot& slot);
+  // record_god_rays.cpp: between the reconstruction and the upsample, which adds their light;
+  // with `made` false (nothing marched) only the mask's clear. Returns whether the light was
+  // made (the upsample then adds it).
+  bool recordGodRays(VkCommandBuffer cmd, const FrameInputs& inputs, const Settings& settings,
+                     const detail::OwnedImage& traceSamples, bool traced, Slot& slot);
 
   // record_trace.cpp
   // `shadow`: the march's terrain-shadow block, when this frame's march reads it.
@@ -186,7 +175,6 @@ class Context::Impl {
   std::optional<std::uint64_t> shadowFrame_;     // the frame of the last dispatchShadowMap()
   std::uint32_t shadowCascadesMade_ = 0;         // this frame's (FrameReport::shadowCascadesMade)
   shader::GodRayParameters godRayParameters_{};  // the last dispatch()'s (Outputs::godRay*)
-  GodRayFrame godRayFrame_;
   FrameReport report_{};
   shader::CloudUniforms lastUniforms_{};
   shader::CloudUniforms lastShadowUniforms_{};

@@ -96,7 +96,8 @@ bool ModuleImages::fit(const ImageSizes& sizes) const {
          (!sizes.upsampling ||
           (holds(outputHistory[0], sizes.output) && holds(outputHistory[1], sizes.output))) &&
          (sizes.godRays.width == 0 ||
-          (fitsExactly(godRayOcclusion, sizes.godRays) && fitsExactly(godRayMask, sizes.godRays)));
+          (fitsExactly(godRayOcclusion, sizes.godRays) && fitsExactly(godRayMask, sizes.godRays) &&
+           fitsExactly(godRayLight, sizes.godRays)));
 }
 
 bool ModuleImages::grow(const ImageSizes& sizes, std::optional<std::uint64_t> lastUse) {
@@ -136,13 +137,16 @@ bool ModuleImages::grow(const ImageSizes& sizes, std::optional<std::uint64_t> la
   }
   // Exactly the size wanted (read with samplers, whose uv spans the whole image); small, so
   // remade with the render extent.
-  const bool godRaysFit =
-      fitsExactly(godRayOcclusion, sizes.godRays) && fitsExactly(godRayMask, sizes.godRays);
+  const bool godRaysFit = fitsExactly(godRayOcclusion, sizes.godRays) &&
+                          fitsExactly(godRayMask, sizes.godRays) &&
+                          fitsExactly(godRayLight, sizes.godRays);
   if (sizes.godRays.width > 0 && !godRaysFit) {
     const VkExtent3D e = extent3(sizes.godRays);
     replace(godRayOcclusion,
             make(VK_IMAGE_TYPE_2D, VK_FORMAT_R32_SFLOAT, e, kOutput, "god-ray occlusion"), lastUse);
     replace(godRayMask, make(VK_IMAGE_TYPE_2D, VK_FORMAT_R32_SFLOAT, e, kOutput, "god-ray mask"),
+            lastUse);
+    replace(godRayLight, make(VK_IMAGE_TYPE_2D, kRadianceFormat, e, kOutput, "god-ray light"),
             lastUse);
   }
   return historyLost;
@@ -195,7 +199,7 @@ MemoryUsage ModuleImages::memoryUsage() const {
       sceneDistance.bytes() + traceSamples.bytes() + history[0].bytes() + history[1].bytes();
   m.upsamplingBytes = outputHistory[0].bytes() + outputHistory[1].bytes();
   m.shadowBytes = shadowMap.bytes() + shadowSpare.bytes();
-  m.godRayBytes = godRayOcclusion.bytes() + godRayMask.bytes();
+  m.godRayBytes = godRayOcclusion.bytes() + godRayMask.bytes() + godRayLight.bytes();
   m.bufferBytes = depthPlaceholder.bytes() + samplesPlaceholder.bytes() + hazePlaceholder.bytes();
   for (const Retired& r : retired_) m.retiredBytes += r.image.bytes();
   return m;

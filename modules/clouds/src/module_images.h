@@ -75,6 +75,7 @@ class ModuleImages {
   OwnedImage shadowSpare;      // one cascade in the making (Settings::shadowFramesPerCascade > 1)
   OwnedImage godRayOcclusion;  // what hides the sun, a quarter of the output (vkfx/god_rays.h)
   OwnedImage godRayMask;       // its radial blur (Outputs::godRayMask)
+  OwnedImage godRayLight;      // what the composite adds to the sky's pixels
 
  private:
   struct Retired {

@@ -27,19 +27,21 @@ SpecializationKey reconstructKey(std::uint32_t history) {
   return key;
 }
 
-SpecializationKey upsampleKey(bool temporalUpsampling, std::uint32_t outputHistory, bool hazed) {
+SpecializationKey upsampleKey(bool temporalUpsampling, std::uint32_t outputHistory, bool hazed,
+                              bool godRays) {
   SpecializationKey key;
   key.values[shader::kSpecTemporalUpsampling] = temporalUpsampling ? 1u : 0u;
   key.values[shader::kSpecOutputHistory] = outputHistory;
   key.values[shader::kSpecAerialPerspective] = hazed ? 1u : 0u;
+  key.values[shader::kSpecUpsampleGodRays] = godRays ? 1u : 0u;
   key.count = shader::kUpsampleSpecCount;
   return key;
 }
 
-SpecializationKey compositeKey(std::uint32_t godRays) {
+SpecializationKey godRaysKey(std::uint32_t light) {
   SpecializationKey key;
-  key.values[shader::kSpecCompositeGodRays] = godRays;
-  key.count = shader::kCompositeSpecCount;
+  key.values[shader::kSpecGodRayLight] = light;
+  key.count = shader::kGodRaySpecCount;
   return key;
 }
 
@@ -64,7 +66,11 @@ std::vector<std::pair<Program, SpecializationKey>> variantsFor(const Settings& s
   for (std::uint32_t history : histories) {
     if (!upsampling && history != shader::kHistoryNone) continue;
     for (bool hazed : {false, true}) {
-      variants.emplace_back(Program::Upsample, upsampleKey(upsampling, history, hazed));
+      // With god rays, frames whose sun is off screen add no light.
+      for (bool godRays : {false, true}) {
+        if (godRays && settings.godRaySamples == 0) continue;
+        variants.emplace_back(Program::Upsample, upsampleKey(upsampling, history, hazed, godRays));
+      }
     }
   }
   // No shadow map, no shadow pipelines (and no terrain shadow: it lives in the map).
@@ -73,13 +79,11 @@ std::vector<std::pair<Program, SpecializationKey>> variantsFor(const Settings& s
     variants.emplace_back(Program::TerrainShadow, SpecializationKey{});
     variants.emplace_back(Program::March, marchKey(settings, workCounters, true));
   }
-  // No god rays, no god-ray pipelines; the composite's god-ray variants (the host's haze
-  // masked, or the glow without one) exist only with them.
+  // No god rays, no god-ray pipelines (and the upsample without their light, above).
   if (settings.godRaySamples > 0) {
     variants.emplace_back(Program::GodRayOcclusion, SpecializationKey{});
-    variants.emplace_back(Program::GodRays, SpecializationKey{});
-    for (std::uint32_t mode : {shader::kGodRaysMaskHaze, shader::kGodRaysGlow}) {
-      variants.emplace_back(Program::Composite, compositeKey(mode));
+    for (std::uint32_t light : {shader::kGodRaysMaskHaze, shader::kGodRaysGlow}) {
+      variants.emplace_back(Program::GodRays, godRaysKey(light));
     }
   }
   return variants;

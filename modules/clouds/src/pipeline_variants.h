@@ -17,11 +17,12 @@ namespace clouds::detail {
 SpecializationKey marchKey(const Settings& settings, bool workCounters, bool terrainShadow);
 // `history`: kHistoryNone, kHistoryInPlace or kHistoryReprojected (cloud_types.h).
 SpecializationKey reconstructKey(std::uint32_t history);
-// `hazed`: the host gave an aerial perspective this frame.
-SpecializationKey upsampleKey(bool temporalUpsampling, std::uint32_t outputHistory, bool hazed);
+// `hazed`: the host gave an aerial perspective this frame; `godRays`: add the god rays' light.
+SpecializationKey upsampleKey(bool temporalUpsampling, std::uint32_t outputHistory, bool hazed,
+                              bool godRays);
 
-// The composite helper with god rays `godRays` (shader::kGodRaysNone, ...MaskHaze, ...Glow).
-SpecializationKey compositeKey(std::uint32_t godRays);
+// The god-ray mask and light, `light` shader::kGodRaysMaskHaze or kGodRaysGlow.
+SpecializationKey godRaysKey(std::uint32_t light);
 // The shadow map's (its empty-space skipping follows Settings::emptySpaceSkipping).
 SpecializationKey shadowMapKey(const Settings& settings);
 

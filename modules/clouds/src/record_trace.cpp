@@ -129,6 +129,10 @@ void Context::Impl::recordTrace(VkCommandBuffer cmd, const FrameInputs& inputs,
       .sampledImage(kUpsampleAerialPerspective, hazed ? haze.view : im.hazePlaceholder.view(),
                     linearSampler_.get(),
                     hazed ? haze.layout : VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL)
+      .sampledImage(
+          kUpsampleGodRayLight, im.godRayLight ? im.godRayLight.view() : im.depthPlaceholder.view(),
+          clampedLinearSampler_.get(),
+          im.godRayLight ? VK_IMAGE_LAYOUT_GENERAL : VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL)
       .commit();
 
   // Everything these passes write may still be read by earlier commands (last frame's
@@ -171,12 +175,15 @@ void Context::Impl::recordTrace(VkCommandBuffer cmd, const FrameInputs& inputs,
   detail::memoryBarrier(device_, cmd, kCompute, kStorageWrite, kCompute, kStorageRead);
   endPass(cmd, detail::Pass::Reconstruct);
 
+  const bool godRays = settings.godRaySamples > 0 &&
+                       recordGodRays(cmd, inputs, settings, historyOut, /*traced=*/true, slot);
+
   beginPass(cmd, detail::Pass::Upsample, "clouds: upsample");
   const std::uint32_t outputHistory = historyVariant(temporal.useOutputHistory, temporal.still);
-  bindAndDispatch(
-      cmd, Program::Upsample,
-      programs_[Program::Upsample].find(detail::upsampleKey(upsampling, outputHistory, hazed)),
-      slot.upsample, inputs.renderExtent.width, inputs.renderExtent.height);
+  bindAndDispatch(cmd, Program::Upsample,
+                  programs_[Program::Upsample].find(
+                      detail::upsampleKey(upsampling, outputHistory, hazed, godRays)),
+                  slot.upsample, inputs.renderExtent.width, inputs.renderExtent.height);
   for (const detail::OwnedImage* image : {&im.radiance, &im.depth}) {
     detail::barrier(device_, cmd, image->image(), VK_IMAGE_LAYOUT_GENERAL, VK_IMAGE_LAYOUT_GENERAL,
                     kCompute, kStorageWrite, kHostReadStages, kHostReadAccess);

@@ -293,9 +293,10 @@ struct Settings {
   // --- God rays (Outputs::godRayMask, vkfx/god_rays.h) ---------------------------------------
   // dispatch() makes the god-ray mask at a quarter of the render extent: the share of each
   // pixel's way towards the sun on screen that sees it past the clouds and the host's geometry
-  // (a radial blur, Mitchell 2007); composite() then takes the hidden part of the haze's Mie
-  // in-scattering out (with FrameInputs::aerialPerspective and its scattering coefficients),
-  // or adds a glow along the clear paths (without). 0 samples: no mask, no pass, no memory.
+  // (a radial blur, Mitchell 2007). The radiance output then takes the hidden part of the
+  // haze's Mie in-scattering from the sky's pixels (with FrameInputs::aerialPerspective and
+  // its scattering coefficients), or adds a glow along the clear paths (without). A sky that
+  // cannot hold cloud is not marched and gets none. 0 samples: no mask, no pass, no memory.
   std::uint32_t godRaySamples = 0;   // [0, 128] samples along each texel's way to the sun
   float godRayLength = 0.9f;         // [0.05, 1] fraction of the way the samples cover
   float godRayDecay = 0.97f;         // [0.5, 1] weight of each sample over the one before
@@ -427,7 +428,8 @@ struct ShadowMapParameters {
 // prepare() that grows them returns new images: read outputs() again after it.
 struct Outputs {
   // RGBA16F: rgb in-scattered radiance towards the camera (premultiplied), a transmittance.
-  // Composite: colour = scene * a + rgb.
+  // Composite: colour = max(scene * a + rgb, 0). With god rays rgb also holds their light for
+  // the sky's pixels (vkfx/god_rays.h), negative where the haze in the clouds' shadow loses it.
   OutputImage radiance;
   // RG32F: r distance (m) to the first cloud along the pixel's ray, g transmittance-weighted
   // mean distance (m) of the cloud (for haze blending and reprojection); 0 where no cloud.

@@ -1,6 +1,6 @@
 // God rays, the contract between the module that makes their mask (the clouds) and the passes
-// that apply it (the clouds' composite helper, or a host's own post process): one definition
-// of the mask's meaning and of how it is made and used, compiled as GLSL and as C++.
+// that apply it (the clouds' own upsample, into its radiance output, or a host's post process):
+// one definition of the mask's meaning and of how it is made and used, as GLSL and as C++.
 //
 // After Mitchell (GPU Gems 3, ch. 13, "Volumetric Light Scattering as a Post-Process"): a radial
 // blur, towards the sun's position on screen, of an occlusion image of what hides the sun (the
@@ -10,7 +10,8 @@
 //
 // The occlusion image: at a quarter of the render extent per axis, each texel the mean over its
 // 4 x 4 pixels of the clouds' transmittance where the host's depth is the far plane (sky) and 0
-// on the host's geometry. The mask, at the same extent (GodRayParameters::extent): texel value M
+// on the host's geometry (the clouds module makes it from its trace resolution, before its
+// upsample). The mask, at the same extent (GodRayParameters::extent): texel value M
 // in [0, 1], the weighted mean of the occlusion image at `samples` points on the way from the
 // texel towards the sun (a fraction `length` of the way, weights falling by `decay` per point):
 // 1 where the air along the pixel's ray sees the sun past everything on screen, lower in the
@@ -22,8 +23,10 @@
 // what hides the sun. Every use below is nothing at f = 0 (and the producer may then skip the
 // blur and clear the mask to 1).
 //
-// Use, with a haze (an aerial perspective giving the in-scattered radiance L_haze at the pixel):
-//   colour -= f (1 - M) godRayMieShare(...) L_haze
+// Use, on pixels that show the sky (weighted by the clouds' transmittance T: the screen-space
+// mask says nothing of the air in front of geometry or of opaque cloud), with a haze (an aerial
+// perspective giving the in-scattered radiance L_haze towards the sky):
+//   colour -= T f (1 - M) godRayMieShare(...) L_haze
 // The Mie share of the single scattering towards the camera (godRayMieShare) is where the shafts
 // show: towards the sun, where the forward Mie lobe outshines the Rayleigh scattering. It treats
 // all of L_haze as single scattering and takes the coefficients' ratio at the ground: an
@@ -31,7 +34,9 @@
 // altitude than Rayleigh), bounded because the correction never exceeds the Mie share of the
 // haze the pixel has.
 // Without a haze, a glow along the clear paths, the classic post process (documented fallback):
-//   colour += f M godRayGlow(cosTheta) sunIlluminance
+//   colour += T f M godRayGlow(cosTheta) sunIlluminance
+// The clouds module adds either to its radiance output's rgb for the sky's pixels (so rgb may
+// be negative there; its composite clamps at 0); a host that composites itself gets them too.
 #ifndef VKFX_GOD_RAYS_H
 #define VKFX_GOD_RAYS_H
 
