@@ -223,6 +223,26 @@ void printDescription(const ecs::App& app, const Renderer& renderer, const RunPl
       joined(renderer.shadowCasters(), "\"", ", ").c_str());
 }
 
+// "GPU memory: renderer 12.0 MiB, clouds 15.1 MiB (total 27.1 MiB)".
+void logMemory(const Renderer& renderer) {
+  std::vector<std::pair<std::string, double>> parts;
+  double total = 0.0;
+  for (const auto& [name, bytes] : renderer.gpuMemory()) {
+    parts.emplace_back(name, double(bytes) / (1024.0 * 1024.0));
+    total += parts.back().second;
+  }
+  std::string line = "GPU memory:";
+  for (std::size_t i = 0; i < parts.size(); ++i) {
+    char entry[96];
+    std::snprintf(entry, sizeof(entry), "%s %s %.2f MiB", i == 0 ? "" : ",", parts[i].first.c_str(),
+                  parts[i].second);
+    line += entry;
+  }
+  char sum[48];
+  std::snprintf(sum, sizeof(sum), " (total %.2f MiB)", total);
+  log::info(line + sum);
+}
+
 void logRun(ecs::World& world, const Renderer& renderer, const LoopStats& stats) {
   if (stats.measuredFrames > 0) {
     char line[160];
@@ -235,6 +255,7 @@ void logRun(ecs::World& world, const Renderer& renderer, const LoopStats& stats)
     log::info(line);
   }
   log::info("frame graph passes: " + joined(renderer.passNames(), "", ", "));
+  logMemory(renderer);
   std::vector<std::pair<std::string, double>> gpu;
   for (const auto& scope : renderer.lastGpuTimings())
     gpu.emplace_back(scope.name, scope.milliseconds);

@@ -127,13 +127,13 @@ TEST(HeadlessCapture, EachSceneGetsOnlyThePassesAndPipelinesItNeeds) {
        R"("passes": ["cloud shadows", "terrain sunlight", "atmosphere", "scene", "clouds", )"
        R"("clouds composite", "tonemap", "capture"])",
        R"x("pipelines": ["tonemap", "terrain (cloud shadows)", "terrain sunlight", )x"
-       R"x("atmosphere module", "clouds module (shadow map, god rays)"])x",
+       R"x("atmosphere module", "clouds module (shadow map, terrain shadow, god rays)"])x",
        R"("modules": ["atmosphere", "clouds"], "shadow casters": ["clouds", "terrain"])"},
       // God rays: the clouds module's mask and composite variants, no pass of their own.
       {scene("god_rays_sunset.json"),
        R"("passes": ["cloud shadows", "terrain sunlight", "atmosphere", "scene", "clouds", )"
        R"("clouds composite", "tonemap", "capture"])",
-       R"x("atmosphere module", "clouds module (shadow map, god rays)"])x",
+       R"x("atmosphere module", "clouds module (shadow map, terrain shadow, god rays)"])x",
        R"("modules": ["atmosphere", "clouds"])"},
       // A terrain that casts no shadows: the clouds' map alone (the terrain still reads it).
       {scene("ridge_sunset_unshadowing.json"),

@@ -236,6 +236,15 @@ std::vector<std::string> Renderer::shadowCasters() const {
   return casters;
 }
 
+std::vector<std::pair<std::string, std::uint64_t>> Renderer::gpuMemory() const {
+  std::vector<std::pair<std::string, std::uint64_t>> memory = {
+      {"renderer", device_.memory().stats().usedBytes}};
+  for (const render::RenderFeature* feature : features_) {
+    memory.emplace_back(feature->name(), feature->gpuMemoryBytes());
+  }
+  return memory;
+}
+
 std::vector<std::string> Renderer::pipelineNames() const {
   std::vector<std::string> names = {tonemapper_.pipeline().name()};
   if (sky_) names.push_back(sky_->pipeline().name());

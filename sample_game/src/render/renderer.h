@@ -56,6 +56,9 @@ class Renderer {
 
   std::vector<std::string> passNames() const;
   std::vector<std::string> pipelineNames() const;
+  // GPU memory in use (bytes): the renderer's own resources (the engine's allocator), then
+  // each feature's module by name.
+  std::vector<std::pair<std::string, std::uint64_t>> gpuMemory() const;
   // What casts long shadows this frame: "clouds" (a feature's shadow map), "terrain" (its
   // heightfield, handed to that map).
   std::vector<std::string> shadowCasters() const;

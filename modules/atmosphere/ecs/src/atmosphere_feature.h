@@ -25,6 +25,7 @@ class AtmosphereFeature final : public engine::render::RenderFeature {
   ~AtmosphereFeature() override;
 
   const char* name() const override { return "atmosphere"; }
+  std::uint64_t gpuMemoryBytes() const override { return context_->memoryUsage().totalBytes(); }
   bool drawsSky() const override { return true; }
   // Its aerial perspective reads the clouds' shadow map: light shafts in the haze.
   bool receivesCloudShadow() const override { return true; }

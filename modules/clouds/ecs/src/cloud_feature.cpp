@@ -9,6 +9,7 @@
 #include "engine/core/log.h"
 #include "engine/ecs/module.h"
 #include "engine/gfx/upload.h"
+#include "engine/render/scene_components.h"
 
 namespace clouds::ecs {
 
@@ -142,7 +143,12 @@ void CloudFeature::dispatch(const HostFrame& host) {
 
 std::vector<std::string> CloudFeature::effects() const {
   std::vector<std::string> names;
-  if (settings_.shadowCascades > 0) names.emplace_back("shadow map");
+  if (settings_.shadowCascades > 0) {
+    names.emplace_back("shadow map");
+    // The terrain's shadow in the map, with a heightfield the scene publishes.
+    const auto* ground = world_.ctx().tryGet<engine::render::TerrainHeightfield>();
+    if (ground != nullptr && ground->view != VK_NULL_HANDLE) names.emplace_back("terrain shadow");
+  }
   if (settings_.godRaySamples > 0) names.emplace_back("god rays");
   return names;
 }

@@ -36,6 +36,7 @@ class CloudFeature final : public engine::render::RenderFeature {
 
   const char* name() const override { return "clouds"; }
   std::vector<std::string> effects() const override;
+  std::uint64_t gpuMemoryBytes() const override { return context_->memoryUsage().totalBytes(); }
   bool castsCloudShadow() const override { return castsShadow_; }
   bool prepare(VkExtent2D extent, std::uint64_t frameIndex) override;
   engine::render::SceneTextures addShadowPasses(

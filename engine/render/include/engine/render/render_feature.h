@@ -92,6 +92,8 @@ class RenderFeature {
   // The optional effects the feature runs in this scene, as it names them (e.g. the clouds'
   // "shadow map", "god rays"): what --describe lists after its pipelines. Default: none.
   virtual std::vector<std::string> effects() const { return {}; }
+  // The GPU memory the feature's module holds now (bytes), for the run's report.
+  virtual std::uint64_t gpuMemoryBytes() const { return 0; }
   // Whether the feature casts cloud shadows (addShadowPasses() provides
   // SceneTextures::cloudShadow): receivers build their pipelines to read them.
   virtual bool castsCloudShadow() const { return false; }

@@ -1,0 +1,26 @@
+# Smoke test of the effects benchmark (tools/effects_bench.py): a tiny run must finish and
+# write a table with a row per effect, each saying what the scene without it lacks; the god
+# rays' row names their pipelines and memory, and the terrain shadows' adds no memory.
+# Inputs: PYTHON, SCRIPT, SAMPLE (the executable), OUT_DIR.
+file(REMOVE_RECURSE "${OUT_DIR}")
+execute_process(
+  COMMAND "${PYTHON}" "${SCRIPT}" "${OUT_DIR}" --sample "${SAMPLE}" --rounds 1 --frames 5
+          --width 96 --height 54
+  RESULT_VARIABLE result)
+if(NOT result EQUAL 0)
+  message(FATAL_ERROR "effects_bench.py exited with ${result}")
+endif()
+file(READ "${OUT_DIR}/results.md" report)
+foreach(row "| terrain |" "| clouds |" "| atmosphere |" "| cloud shadows |"
+            "| terrain shadows |" "| god rays |" "| god rays, sun in view |" "| lightning |")
+  string(FIND "${report}" "${row}" at)
+  if(at EQUAL -1)
+    message(FATAL_ERROR "results.md has no row ${row}")
+  endif()
+endforeach()
+if(NOT report MATCHES "\\| god rays \\|[^\n]*\\| clouds module: god rays \\| 0\\.[0-9]+ \\|")
+  message(FATAL_ERROR "the god rays' row does not name their pipelines and memory:\n${report}")
+endif()
+if(NOT report MATCHES "\\| terrain shadows \\|[^\n]*\\| 0\\.00 \\|")
+  message(FATAL_ERROR "the terrain shadows' row adds memory:\n${report}")
+endif()
