@@ -170,6 +170,24 @@ TEST_F(GodRays, TheMaskIsClearWhenTheSunIsOffScreenOrBehind) {
   }
 }
 
+// The sun crossing the screen's edge, a quarter of a degree at a time (the horizontal half
+// field of view at 160 x 96 is 49.4 degrees): the mask and its fade stay finite and in range.
+TEST_F(GodRays, TheSunAtTheScreensEdgeStaysFinite) {
+  for (double off = 48.0; off <= 51.0; off += 0.25) {
+    CloudView view = towardsTheSun();
+    view.yawDegrees = 200.0 + off;
+    harness().cut();
+    harness().render(view, withGodRays(), kExtent);
+    const GodRayImages images = harness().readGodRays();
+    ASSERT_TRUE(std::isfinite(images.sun.x) && std::isfinite(images.sun.y)) << off;
+    EXPECT_GE(images.sun.z, 0.0f);
+    EXPECT_LE(images.sun.z, 1.0f);
+    for (float m : images.mask) {
+      ASSERT_TRUE(std::isfinite(m) && m >= 0.0f && m <= 1.0f) << "yaw +" << off << ": " << m;
+    }
+  }
+}
+
 // Turning the camera by a twentieth of a degree (a twentieth of a pixel at 160 wide) moves
 // the mask with it, without flicker: the frame-to-frame change is small everywhere.
 TEST_F(GodRays, TheMaskDoesNotFlickerAsTheCameraTurns) {
