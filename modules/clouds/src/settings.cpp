@@ -4,8 +4,11 @@
 #include <cmath>
 #include <sstream>
 #include <string>
+#include <type_traits>
+#include <utility>
 
 #include "clouds/clouds.h"
+#include "setting_ranges.h"
 
 namespace clouds {
 namespace {
@@ -28,88 +31,112 @@ struct Checker {
   }
 };
 
+// A field's range entry: its bounds as the field's own type holds them (0.01 as a float is a
+// little under 0.01: a float set to the documented bound must pass).
+#define CLOUDS_FIELD_TYPE(field) std::remove_cvref_t<decltype(std::declval<Settings&>().field)>
+#define CLOUDS_RANGE(field, lo, hi)                                                        \
+  detail::SettingRange {                                                                   \
+#field, static_cast<double>(static_cast<CLOUDS_FIELD_TYPE(field)>(lo)),                  \
+        static_cast<double>(static_cast<CLOUDS_FIELD_TYPE(field)>(hi)),                      \
+        [](const Settings& s) { return static_cast<double>(s.field); },                      \
+        [](Settings& s, double v) { s.field = static_cast<CLOUDS_FIELD_TYPE(field)>(v); },   \
+        std::is_integral_v<CLOUDS_FIELD_TYPE(field)> \
+  }
+
 }  // namespace
+
+namespace detail {
+
+std::span<const SettingRange> settingRanges() {
+  static const SettingRange ranges[] = {
+      CLOUDS_RANGE(layerBottomMetres, 0.0, 20000.0),
+      CLOUDS_RANGE(layerTopMetres, 0.0, 30000.0),
+      CLOUDS_RANGE(planetRadiusMetres, 1e5, 1e8),
+      CLOUDS_RANGE(coverage, 0.0, 1.0),
+      CLOUDS_RANGE(cloudType, 0.0, 1.0),
+      CLOUDS_RANGE(typeVariation, 0.0, 2.0),
+      CLOUDS_RANGE(densityVariation, 0.0, 1.0),
+      CLOUDS_RANGE(weatherTileMetres, 1000.0, 1e7),
+      CLOUDS_RANGE(weatherEvolutionPerSecond, 0.0, 1.0),
+      CLOUDS_RANGE(weatherUpdateSeconds, 0.0, 3600.0),
+      CLOUDS_RANGE(densityMultiplier, 0.0, 1e6),
+      CLOUDS_RANGE(extinctionPerMetre, 0.0, 100.0),
+      CLOUDS_RANGE(anvilBias, 0.0, 1.0),
+      CLOUDS_RANGE(shapeTileMetres, 100.0, 1e7),
+      CLOUDS_RANGE(detailTileMetres, 10.0, 1e6),
+      CLOUDS_RANGE(detailErosion, 0.0, 1.0),
+      CLOUDS_RANGE(detailDistanceMetres, 0.0, 1e7),
+      CLOUDS_RANGE(curlTileMetres, 100.0, 1e7),
+      CLOUDS_RANGE(curlStrengthMetres, 0.0, 10000.0),
+      CLOUDS_RANGE(windDirection.x, -1e6, 1e6),
+      CLOUDS_RANGE(windDirection.y, -1e6, 1e6),
+      CLOUDS_RANGE(windSpeedMetresPerSecond, 0.0, 500.0),
+      CLOUDS_RANGE(skewMetres, 0.0, 20000.0),
+      CLOUDS_RANGE(albedo, 0.0, 1.0),
+      CLOUDS_RANGE(phaseForwardG, -1.0, 1.0),
+      CLOUDS_RANGE(phaseBackwardG, -1.0, 1.0),
+      CLOUDS_RANGE(phaseBackwardWeight, 0.0, 1.0),
+      CLOUDS_RANGE(multipleScatteringOctaves, 1, 8),
+      CLOUDS_RANGE(msExtinctionScale, 0.0, 1.0),
+      CLOUDS_RANGE(msContribution, 0.0, 1.0),
+      CLOUDS_RANGE(msEccentricityScale, 0.0, 1.0),
+      CLOUDS_RANGE(inScatterStrength, 0.0, 1.0),
+      CLOUDS_RANGE(inScatterDepthMetres, 0.0, 10000.0),
+      CLOUDS_RANGE(ambientOcclusionStrength, 0.0, 1.0),
+      CLOUDS_RANGE(ambientStrength, 0.0, 100.0),
+      CLOUDS_RANGE(sunStrength, 0.0, 100.0),
+      CLOUDS_RANGE(maxViewSteps, 1, 16384),
+      CLOUDS_RANGE(viewStepMetres, 0.5, 10000.0),
+      CLOUDS_RANGE(viewStepGrowth, 0.0, 1.0),
+      CLOUDS_RANGE(lightSteps, 0, 64),
+      CLOUDS_RANGE(lightConeMetres, 1.0, 100000.0),
+      CLOUDS_RANGE(lightConeSpread, 0.0, 2.0),
+      CLOUDS_RANGE(maxDistanceMetres, 100.0, 1e7),
+      CLOUDS_RANGE(transmittanceCutoff, 0.0, 0.5),
+      CLOUDS_RANGE(coarseStepFactor, 1.0, 16.0),
+      CLOUDS_RANGE(emptySamplesToCoarse, 1, 1000),
+      CLOUDS_RANGE(upsamplingMaxSamples, 1, 15),
+      CLOUDS_RANGE(temporalFreshWeight, 0.05, 1.0),
+      CLOUDS_RANGE(historyClampMargin, 0.0, 1.0),
+      CLOUDS_RANGE(historyClampSpreadPixels, 0.01, 100.0),
+      CLOUDS_RANGE(insideLayerMarginMetres, 0.0, 5000.0),
+      CLOUDS_RANGE(historyResetDistanceMetres, 1.0, 1e6),
+      CLOUDS_RANGE(historyResetAngleDegrees, 0.1, 180.0),
+      CLOUDS_RANGE(relightResetDegrees, 0.01, 180.0),
+      CLOUDS_RANGE(relightResetRatio, 0.001, 10.0),
+      CLOUDS_RANGE(shadowCascades, 0, 4),
+      CLOUDS_RANGE(shadowMapResolution, 16, 1024),
+      CLOUDS_RANGE(shadowNearSideMetres, 500.0, 1e6),
+      CLOUDS_RANGE(shadowCascadeRatio, 1.5, 8.0),
+      CLOUDS_RANGE(shadowSteps, 1, 256),
+      CLOUDS_RANGE(shadowCascadesPerFrame, 1, 4),
+      CLOUDS_RANGE(shadowFramesPerCascade, 1, 8),
+      CLOUDS_RANGE(terrainShadowSteps, 1, 1024),
+      CLOUDS_RANGE(godRaySamples, 0, 128),
+      CLOUDS_RANGE(godRayLength, 0.05, 1.0),
+      CLOUDS_RANGE(godRayDecay, 0.5, 1.0),
+      CLOUDS_RANGE(godRayGlowStrength, 0.0, 10.0),
+  };
+  return ranges;
+}
+
+}  // namespace detail
 
 std::string validateSettings(const Settings& s) {
   Checker c;
-  c.range("layerBottomMetres", s.layerBottomMetres, 0.0f, 20000.0f);
-  c.range("layerTopMetres", s.layerTopMetres, 0.0f, 30000.0f);
-  c.require(s.layerTopMetres > s.layerBottomMetres + 1.0f,
+  for (const detail::SettingRange& r : detail::settingRanges())
+    c.range(r.field, r.get(s), r.lo, r.hi);
+  c.require(s.layerTopMetres >= s.layerBottomMetres + 1.0f,
             "Settings.layerTopMetres = " + std::to_string(s.layerTopMetres) +
                 ": must be above layerBottomMetres (" + std::to_string(s.layerBottomMetres) +
                 ") by at least 1 m");
-  c.range("planetRadiusMetres", s.planetRadiusMetres, 1e5f, 1e8f);
-  c.range("coverage", s.coverage, 0.0f, 1.0f);
-  c.range("cloudType", s.cloudType, 0.0f, 1.0f);
-  c.range("typeVariation", s.typeVariation, 0.0f, 2.0f);
-  c.range("densityVariation", s.densityVariation, 0.0f, 1.0f);
-  c.range("weatherTileMetres", s.weatherTileMetres, 1000.0f, 1e7f);
-  c.range("weatherEvolutionPerSecond", s.weatherEvolutionPerSecond, 0.0f, 1.0f);
-  c.range("weatherUpdateSeconds", s.weatherUpdateSeconds, 0.0f, 3600.0f);
-  c.range("densityMultiplier", s.densityMultiplier, 0.0f, 1e6f);
-  c.range("extinctionPerMetre", s.extinctionPerMetre, 0.0f, 100.0f);
-  c.range("anvilBias", s.anvilBias, 0.0f, 1.0f);
-  c.range("shapeTileMetres", s.shapeTileMetres, 100.0f, 1e7f);
-  c.range("detailTileMetres", s.detailTileMetres, 10.0f, 1e6f);
-  c.range("detailErosion", s.detailErosion, 0.0f, 1.0f);
-  c.range("detailDistanceMetres", s.detailDistanceMetres, 0.0f, 1e7f);
-  c.range("curlTileMetres", s.curlTileMetres, 100.0f, 1e7f);
-  c.range("curlStrengthMetres", s.curlStrengthMetres, 0.0f, 10000.0f);
-  c.range("windDirection.x", s.windDirection.x, -1e6f, 1e6f);
-  c.range("windDirection.y", s.windDirection.y, -1e6f, 1e6f);
   c.require(glm::length(s.windDirection) > 1e-6f, "Settings.windDirection: must not be zero");
-  c.range("windSpeedMetresPerSecond", s.windSpeedMetresPerSecond, 0.0f, 500.0f);
-  c.range("skewMetres", s.skewMetres, 0.0f, 20000.0f);
-  c.range("albedo", s.albedo, 0.0f, 1.0f);
-  c.range("phaseForwardG", s.phaseForwardG, -1.0f, 1.0f);
-  c.range("phaseBackwardG", s.phaseBackwardG, -1.0f, 1.0f);
-  c.range("phaseBackwardWeight", s.phaseBackwardWeight, 0.0f, 1.0f);
-  c.range("multipleScatteringOctaves", s.multipleScatteringOctaves, 1u, 8u);
-  c.range("msExtinctionScale", s.msExtinctionScale, 0.0f, 1.0f);
-  c.range("msContribution", s.msContribution, 0.0f, 1.0f);
-  c.range("msEccentricityScale", s.msEccentricityScale, 0.0f, 1.0f);
-  c.range("inScatterStrength", s.inScatterStrength, 0.0f, 1.0f);
-  c.range("inScatterDepthMetres", s.inScatterDepthMetres, 0.0f, 10000.0f);
-  c.range("ambientOcclusionStrength", s.ambientOcclusionStrength, 0.0f, 1.0f);
-  c.range("ambientStrength", s.ambientStrength, 0.0f, 100.0f);
-  c.range("sunStrength", s.sunStrength, 0.0f, 100.0f);
-  c.range("maxViewSteps", s.maxViewSteps, 1u, 16384u);
-  c.range("viewStepMetres", s.viewStepMetres, 0.5f, 10000.0f);
-  c.range("viewStepGrowth", s.viewStepGrowth, 0.0f, 1.0f);
-  c.range("lightSteps", s.lightSteps, 0u, 64u);
-  c.range("lightConeMetres", s.lightConeMetres, 1.0f, 100000.0f);
-  c.range("lightConeSpread", s.lightConeSpread, 0.0f, 2.0f);
-  c.range("maxDistanceMetres", s.maxDistanceMetres, 100.0f, 1e7f);
-  c.range("transmittanceCutoff", s.transmittanceCutoff, 0.0f, 0.5f);
-  c.range("coarseStepFactor", s.coarseStepFactor, 1.0f, 16.0f);
-  c.range("emptySamplesToCoarse", s.emptySamplesToCoarse, 1u, 1000u);
   c.require(s.traceScale == 1.0f || s.traceScale == 0.5f || s.traceScale == 0.25f,
             "Settings.traceScale = " + std::to_string(s.traceScale) + ": must be 1, 0.5 or 0.25");
   c.require(
       s.updateInterval == 1 || s.updateInterval == 4 || s.updateInterval == 16 ||
           s.updateInterval == 64,
       "Settings.updateInterval = " + std::to_string(s.updateInterval) + ": must be 1, 4, 16 or 64");
-  c.range("upsamplingMaxSamples", s.upsamplingMaxSamples, 1u, 15u);
-  c.range("temporalFreshWeight", s.temporalFreshWeight, 0.05f, 1.0f);
-  c.range("historyClampMargin", s.historyClampMargin, 0.0f, 1.0f);
-  c.range("historyClampSpreadPixels", s.historyClampSpreadPixels, 0.01f, 100.0f);
-  c.range("insideLayerMarginMetres", s.insideLayerMarginMetres, 0.0f, 5000.0f);
-  c.range("historyResetDistanceMetres", s.historyResetDistanceMetres, 1.0f, 1e6f);
-  c.range("historyResetAngleDegrees", s.historyResetAngleDegrees, 0.1f, 180.0f);
-  c.range("relightResetDegrees", s.relightResetDegrees, 0.01f, 180.0f);
-  c.range("relightResetRatio", s.relightResetRatio, 0.001f, 10.0f);
-  c.range("shadowCascades", s.shadowCascades, 0u, 4u);
-  c.range("shadowMapResolution", s.shadowMapResolution, 16u, 1024u);
-  c.range("shadowNearSideMetres", s.shadowNearSideMetres, 500.0f, 1e6f);
-  c.range("shadowCascadeRatio", s.shadowCascadeRatio, 1.5f, 8.0f);
-  c.range("shadowSteps", s.shadowSteps, 1u, 256u);
-  c.range("shadowCascadesPerFrame", s.shadowCascadesPerFrame, 1u, 4u);
-  c.range("shadowFramesPerCascade", s.shadowFramesPerCascade, 1u, 8u);
-  c.range("terrainShadowSteps", s.terrainShadowSteps, 1u, 1024u);
-  c.range("godRaySamples", s.godRaySamples, 0u, 128u);
-  c.range("godRayLength", s.godRayLength, 0.05f, 1.0f);
-  c.range("godRayDecay", s.godRayDecay, 0.5f, 1.0f);
-  c.range("godRayGlowStrength", s.godRayGlowStrength, 0.0f, 10.0f);
   c.require(s.jitter == Jitter::None || s.jitter == Jitter::BayerHalton ||
                 s.jitter == Jitter::BayerHaltonSubpixel,
             "Settings.jitter: unknown mode " + std::to_string(static_cast<unsigned>(s.jitter)));
