@@ -64,6 +64,7 @@ const uint kUpsampleFresh = 5u;
 const uint kUpsampleHistory = 6u;
 const uint kUpsampleHistoryOut = 7u;
 const uint kUpsampleAerialPerspective = 8u;  // the host's haze (FrameInputs::aerialPerspective)
+const uint kUpsampleLightning = 10u;         // LightningUniforms (Settings::lightningFlashes > 0)
 const uint kUpsampleGodRayLight = 9u;        // god_rays.comp's light (Settings::godRaySamples > 0)
 // cloud_shadow_map.comp (binding 0: the CloudUniforms of the frame the map is made in)
 const uint kShadowShapeNoise = 1u;
@@ -120,7 +121,8 @@ const uint kSpecTemporalUpsampling = 0u;  // 0/1: accumulate the output-resoluti
 const uint kSpecOutputHistory = 1u;       // 0 none, 1 read in place (nothing moved), 2 reprojected
 const uint kSpecAerialPerspective = 2u;   // 0/1: haze the output (FrameInputs::aerialPerspective)
 const uint kSpecUpsampleGodRays = 3u;     // 0/1: add god_rays.comp's light to the sky's pixels
-const uint kUpsampleSpecCount = 4u;
+const uint kSpecUpsampleLightning = 4u;   // 0/1: the clouds glow with LightningUniforms' flashes
+const uint kUpsampleSpecCount = 5u;
 // god_rays.comp
 const uint kSpecGodRayLight = 0u;  // kGodRaysMaskHaze or kGodRaysGlow
 const uint kGodRaySpecCount = 1u;
@@ -343,6 +345,15 @@ using vkfx::shader::GodRayParameters;  // god_rays.comp's push constants
 using vkfx::shader::kGodRayDownsample;
 #endif
 
+// The flashes the clouds glow with this frame (upsample.comp, kUpsampleLightning), a uniform
+// block: flash i is flash[2 i] (xyz camera-relative position (m), w radius (m)) and
+// flash[2 i + 1] (rgb radiance, w unused).
+const uint kMaxLightningFlashes = 16u;
+struct LightningUniforms {
+  uvec4 count;  // x the flashes this frame
+  vec4 flash[2 * kMaxLightningFlashes];
+};
+
 // god_ray_occlusion.comp's push constants.
 struct GodRayOcclusionConstants {
   uvec2 maskExtent;  // texels: the render extent over kGodRayDownsample, rounded up
@@ -410,6 +421,9 @@ static_assert(sizeof(clouds::shader::WeatherConstants) == 16);
 static_assert(sizeof(clouds::shader::MaximaConstants) == 16);
 static_assert(sizeof(clouds::shader::CompositeConstants) == 16);
 static_assert(sizeof(clouds::shader::GodRayOcclusionConstants) == 16);
+static_assert(sizeof(clouds::shader::LightningUniforms) == 16 + 32 * 16);
+static_assert(sizeof(clouds::shader::LightningUniforms) <= sizeof(clouds::shader::CloudUniforms),
+              "without lightning the frame's uniforms stand in for its block");
 static_assert(sizeof(clouds::shader::GodRayLightUniforms) == 64 + 6 * 16);
 static_assert(sizeof(clouds::shader::ShadowMapConstants) == 80);
 static_assert(sizeof(clouds::shader::TerrainShadowConstants) == 128);

@@ -85,6 +85,30 @@ std::string checkSharedInputs(const FrameInputs& in) {
   return {};
 }
 
+// This frame's lightning: no more flashes than the settings make room for, each finite.
+std::string checkFlashes(std::span<const LightningFlash> flashes, const Settings& settings) {
+  if (flashes.size() > settings.lightningFlashes) {
+    return "FrameInputs.lightningFlashes: " + std::to_string(flashes.size()) +
+           " flashes, more than Settings.lightningFlashes = " +
+           std::to_string(settings.lightningFlashes);
+  }
+  for (std::size_t i = 0; i < flashes.size(); ++i) {
+    const LightningFlash& f = flashes[i];
+    const std::string field = "FrameInputs.lightningFlashes[" + std::to_string(i) + "]";
+    if (!std::isfinite(f.positionMetres.x) || !std::isfinite(f.positionMetres.y) ||
+        !std::isfinite(f.positionMetres.z)) {
+      return field + ".positionMetres: must be finite";
+    }
+    if (!std::isfinite(f.radiusMetres) || f.radiusMetres <= 0.0f) {
+      return field + ".radiusMetres = " + std::to_string(f.radiusMetres) + ": must be > 0";
+    }
+    if (!finite(f.radiance) || !nonNegative(f.radiance)) {
+      return field + ".radiance: must be finite and not negative";
+    }
+  }
+  return {};
+}
+
 std::string checkInputs(const FrameInputs& in, const CreateInfo& info) {
   if (std::string problem = checkSharedInputs(in); !problem.empty()) return problem;
   if (std::string problem = checkExtent("FrameInputs.renderExtent", in.renderExtent, info);
@@ -186,6 +210,9 @@ bool Context::dispatch(const FrameInputs& inputs, const Settings& settings, Erro
   }
   if (std::string problem = validateSettings(settings); !problem.empty()) {
     return fail(error, ErrorCode::InvalidSettings, problem);
+  }
+  if (std::string problem = checkFlashes(inputs.lightningFlashes, settings); !problem.empty()) {
+    return fail(error, ErrorCode::InvalidInputs, problem);
   }
   if (std::string missing = impl_->unprepared(settings, inputs.renderExtent); !missing.empty()) {
     return fail(error, ErrorCode::NotPrepared,

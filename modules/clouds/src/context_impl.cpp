@@ -36,7 +36,7 @@ detail::UniqueDescriptorPool makePool(const detail::DeviceContext& device, std::
   const VkDescriptorPoolSize sizes[] = {
       {VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, 16 + 40 * frames},
       {VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 4 + 14 * frames},
-      {VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 10 * frames},
+      {VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 12 * frames},
       {VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 4 * frames},
   };
   VkDescriptorPoolCreateInfo info{VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO};
@@ -183,6 +183,16 @@ void Context::Impl::prepare(const Settings& settings, VkExtent2D renderExtent) {
     temporal_.forget("images resized");
   }
   if (images_.fitShadow(shadowExtentFor(settings), lastFrameIndex_)) shadowCascades_.forget();
+  // The flashes' block, only for settings that can have flashes.
+  if (settings.lightningFlashes > 0) {
+    for (std::size_t i = 0; i < slots_.size(); ++i) {
+      if (slots_[i].lightning.buffer() != VK_NULL_HANDLE) continue;
+      slots_[i].lightning =
+          detail::OwnedBuffer(device_, sizeof(shader::LightningUniforms),
+                              VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT,
+                              "lightning " + std::to_string(i));
+    }
+  }
   // Images retired before any frame used them can go now.
   images_.releaseRetired(lastFrameIndex_.value_or(0), info_.maxFramesInFlight);
 }
@@ -366,7 +376,7 @@ MemoryUsage Context::Impl::memoryUsage() const {
   for (const Slot& slot : slots_) {
     usage.bufferBytes += slot.uniforms.bytes() + slot.counters.bytes() +
                          slot.shadowUniforms.bytes() + slot.shadowParameters.bytes() +
-                         slot.godRayLight.bytes();
+                         slot.godRayLight.bytes() + slot.lightning.bytes();
   }
   return usage;
 }

@@ -96,6 +96,7 @@ class Context::Impl {
     VkDescriptorSet godRayOcclusion = VK_NULL_HANDLE;
     VkDescriptorSet godRays = VK_NULL_HANDLE;
     detail::OwnedBuffer godRayLight;  // god_rays.comp's GodRayLightUniforms
+    detail::OwnedBuffer lightning;    // this frame's LightningUniforms (lightningFlashes > 0)
   };
 
   VkDescriptorSet allocateSet(detail::Program program);
@@ -137,6 +138,7 @@ class Context::Impl {
                       const shader::MarchTerrainShadow* shadow);
   void recordSkyAmbient(VkCommandBuffer cmd, const FrameInputs& inputs, Slot& slot);
   void recordClearSky(VkCommandBuffer cmd, Slot& slot);
+  bool recordLightning(VkCommandBuffer cmd, const FrameInputs& inputs, Slot& slot);
   void recordTrace(VkCommandBuffer cmd, const FrameInputs& inputs, const Settings& settings,
                    const detail::TemporalFrame& temporal, VkExtent2D traceExtent,
                    bool terrainShadow, Slot& slot);

@@ -17,9 +17,10 @@ namespace clouds::detail {
 SpecializationKey marchKey(const Settings& settings, bool workCounters, bool terrainShadow);
 // `history`: kHistoryNone, kHistoryInPlace or kHistoryReprojected (cloud_types.h).
 SpecializationKey reconstructKey(std::uint32_t history);
-// `hazed`: the host gave an aerial perspective this frame; `godRays`: add the god rays' light.
+// `hazed`: the host gave an aerial perspective this frame; `godRays`: add the god rays' light;
+// `lightning`: the clouds glow with this frame's flashes.
 SpecializationKey upsampleKey(bool temporalUpsampling, std::uint32_t outputHistory, bool hazed,
-                              bool godRays);
+                              bool godRays, bool lightning);
 
 // The god-ray mask and light, `light` shader::kGodRaysMaskHaze or kGodRaysGlow.
 SpecializationKey godRaysKey(std::uint32_t light);

@@ -129,6 +129,11 @@ void Context::Impl::recordTrace(VkCommandBuffer cmd, const FrameInputs& inputs,
       .sampledImage(kUpsampleAerialPerspective, hazed ? haze.view : im.hazePlaceholder.view(),
                     linearSampler_.get(),
                     hazed ? haze.layout : VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL)
+      // Without a flashes' block the frame's uniforms stand in: the variant never reads it.
+      .uniformBuffer(kUpsampleLightning,
+                     slot.lightning.buffer() != VK_NULL_HANDLE ? slot.lightning.buffer()
+                                                               : slot.uniforms.buffer(),
+                     sizeof(LightningUniforms))
       .sampledImage(
           kUpsampleGodRayLight, im.godRayLight ? im.godRayLight.view() : im.depthPlaceholder.view(),
           clampedLinearSampler_.get(),
@@ -177,12 +182,13 @@ void Context::Impl::recordTrace(VkCommandBuffer cmd, const FrameInputs& inputs,
 
   const bool godRays = settings.godRaySamples > 0 &&
                        recordGodRays(cmd, inputs, settings, historyOut, /*traced=*/true, slot);
+  const bool lightning = recordLightning(cmd, inputs, slot);
 
   beginPass(cmd, detail::Pass::Upsample, "clouds: upsample");
   const std::uint32_t outputHistory = historyVariant(temporal.useOutputHistory, temporal.still);
   bindAndDispatch(cmd, Program::Upsample,
                   programs_[Program::Upsample].find(
-                      detail::upsampleKey(upsampling, outputHistory, hazed, godRays)),
+                      detail::upsampleKey(upsampling, outputHistory, hazed, godRays, lightning)),
                   slot.upsample, inputs.renderExtent.width, inputs.renderExtent.height);
   for (const detail::OwnedImage* image : {&im.radiance, &im.depth}) {
     detail::barrier(device_, cmd, image->image(), VK_IMAGE_LAYOUT_GENERAL, VK_IMAGE_LAYOUT_GENERAL,
@@ -215,6 +221,26 @@ void Context::Impl::recordClearSky(VkCommandBuffer cmd, Slot& slot) {
                           VK_PIPELINE_STAGE_2_HOST_BIT, VK_ACCESS_2_HOST_READ_BIT);
   }
   endPass(cmd, detail::Pass::ClearSky);
+}
+
+// This frame's flashes into the slot's block, camera-relative; whether there are any.
+bool Context::Impl::recordLightning(VkCommandBuffer cmd, const FrameInputs& inputs, Slot& slot) {
+  if (inputs.lightningFlashes.empty() || slot.lightning.buffer() == VK_NULL_HANDLE) return false;
+  shader::LightningUniforms block{};
+  block.count.x = static_cast<std::uint32_t>(inputs.lightningFlashes.size());
+  for (std::size_t i = 0; i < inputs.lightningFlashes.size(); ++i) {
+    const LightningFlash& flash = inputs.lightningFlashes[i];
+    const glm::vec3 relative(flash.positionMetres - inputs.cameraPosition);
+    block.flash[2 * i] = glm::vec4(relative, flash.radiusMetres);
+    block.flash[2 * i + 1] = glm::vec4(flash.radiance, 0.0f);
+  }
+  // The slot's previous frame has completed (host contract); earlier commands may still read it.
+  detail::memoryBarrier(device_, cmd, kCompute, VK_ACCESS_2_UNIFORM_READ_BIT,
+                        VK_PIPELINE_STAGE_2_TRANSFER_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT);
+  device_.fn().vkCmdUpdateBuffer(cmd, slot.lightning.buffer(), 0, sizeof(block), &block);
+  detail::memoryBarrier(device_, cmd, VK_PIPELINE_STAGE_2_TRANSFER_BIT,
+                        VK_ACCESS_2_TRANSFER_WRITE_BIT, kCompute, VK_ACCESS_2_UNIFORM_READ_BIT);
+  return true;
 }
 
 }  // namespace clouds

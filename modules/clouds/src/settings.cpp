@@ -116,6 +116,7 @@ std::span<const SettingRange> settingRanges() {
       CLOUDS_RANGE(godRayLength, 0.05, 1.0),
       CLOUDS_RANGE(godRayDecay, 0.5, 1.0),
       CLOUDS_RANGE(godRayGlowStrength, 0.0, 10.0),
+      CLOUDS_RANGE(lightningFlashes, 0, 16),
   };
   return ranges;
 }

@@ -41,6 +41,7 @@
 #include <cstdint>
 #include <glm/glm.hpp>
 #include <memory>
+#include <span>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -301,6 +302,11 @@ struct Settings {
   float godRayLength = 0.9f;         // [0.05, 1] fraction of the way the samples cover
   float godRayDecay = 0.97f;         // [0.5, 1] weight of each sample over the one before
   float godRayGlowStrength = 0.05f;  // [0, 10] the fallback's glow (no haze), sr^-1 scale
+
+  // --- Lightning (FrameInputs::lightningFlashes) ---------------------------------------------
+  // How many flashes the clouds can glow with at once. 0: no glow code in any pipeline, no
+  // buffer; a frame's flashes must then be none.
+  std::uint32_t lightningFlashes = 0;  // [0, 16]
 };
 
 // Quality presets, cheapest first; Reference is referenceSettings().
@@ -323,6 +329,16 @@ std::string validateSettings(const Settings& settings);
 // steps, many light samples, no coarse sampling or empty-space skipping, and no early exit
 // worth mentioning. Ground truth for accuracy-versus-cost.
 Settings referenceSettings(const Settings& base);
+
+// A lightning flash the clouds glow with this frame (Nubis Evolved's glow term): the cloud
+// within `radiusMetres` of it glows with `radiance` times pow(1 - d / radius, 12) at distance
+// d, less where the cloud is dense (the light cannot get out). The host animates `radiance`
+// over a flash's return strokes; the module keeps nothing of it from frame to frame.
+struct LightningFlash {
+  glm::dvec3 positionMetres{0.0};  // world, where the charge glows (inside the cloud)
+  float radiusMetres = 3000.0f;    // > 0, finite
+  glm::vec3 radiance{0.0f};        // >= 0, finite: in the host's radiometric units
+};
 
 struct FrameInputs {
   VkCommandBuffer commandBuffer = VK_NULL_HANDLE;
@@ -394,6 +410,10 @@ struct FrameInputs {
   // bilinear filtering in `weatherLayout`) replacing the procedural one.
   VkImageView weatherView = VK_NULL_HANDLE;
   VkImageLayout weatherLayout = VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL;
+
+  // This frame's lightning flashes, at most Settings::lightningFlashes (the span's memory need
+  // only last through the call that takes these inputs).
+  std::span<const LightningFlash> lightningFlashes;
 
   double timeSeconds = 0.0;  // >= 0; drives wind and weather evolution
   // The host's frame number, increasing by one per frame: picks the per-frame slot

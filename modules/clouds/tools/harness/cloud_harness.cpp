@@ -158,6 +158,7 @@ clouds::FrameInputs CloudHarness::makeInputs(const CloudView& view, VkExtent2D e
   in.skyView = view.skyView;
   in.aerialPerspective = view.aerialPerspective;
   in.terrain = view.terrain;
+  in.lightningFlashes = view.lightningFlashes;
   in.frameIndex = frameIndex_;
   in.reset = cutNext_;
   return in;

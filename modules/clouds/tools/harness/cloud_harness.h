@@ -45,6 +45,8 @@ struct CloudView {
   // Optional terrain heightfield (FrameInputs::terrain); with it render() also records the
   // shadow map before each frame, as the terrain's shadow on the clouds needs.
   clouds::FrameInputs::Terrain terrain;
+  // This frame's lightning flashes (FrameInputs::lightningFlashes).
+  std::vector<clouds::LightningFlash> lightningFlashes;
 };
 
 glm::vec3 sunDirection(const CloudView& view);
