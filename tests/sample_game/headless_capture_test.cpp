@@ -142,6 +142,12 @@ TEST(HeadlessCapture, EachSceneGetsOnlyThePassesAndPipelinesItNeeds) {
        R"x("pipelines": ["tonemap", "terrain (cloud shadows)", "terrain sunlight", )x"
        R"x("atmosphere module", "clouds module (shadow map)"])x",
        R"("shadow casters": ["clouds"])"},
+      // A storm: the clouds module with its lightning (the glow is its upsample's variant).
+      {SAMPLE_ASSET_DIR + std::string("/scenes/thunderstorm.json"),
+       R"("passes": ["cloud shadows", "terrain sunlight", "atmosphere", "scene", "clouds", )"
+       R"("clouds composite", "tonemap", "capture"])",
+       R"x("clouds module (shadow map, terrain shadow, god rays, lightning)"])x",
+       R"("modules": ["atmosphere", "clouds"])"},
       // A layer that casts no shadows: no shadow pass, the plain terrain.
       {scene("unshadowed_clouds.json"),
        R"("passes": ["sky", "terrain", "clouds", "clouds composite", "tonemap", "capture"])",
@@ -338,6 +344,35 @@ TEST(HeadlessCapture, WithoutHazeGodRaysGlowAroundTheSun) {
   EXPECT_GT(brighter, pixels / 50);
   EXPECT_EQ(darker, 0u) << "the fallback only adds light";
   EXPECT_LT(gainedDistance / gained, 0.7 * allDistance / double(pixels));
+}
+
+// A scripted strike in a storm: while it lasts the clouds around its cell glow (light only
+// added), and half a second after it the frame is, to the bit, the frame of the same run
+// without it: the flash left nothing in the clouds' histories.
+TEST(HeadlessCapture, AScriptedStrikeGlowsAndLeavesNoGhost) {
+  const fs::path calm = freshDir("no_strike");
+  const fs::path struck = freshDir("strike");
+  const std::string common =
+      "--headless --fixed-dt 0.0333 --width 160 --height 90 --validation "
+      "--scene " +
+      scene("storm_calm.json") + " --capture ";
+  ASSERT_EQ(runSample(common + calm.string() + " --script " + std::string(SAMPLE_TEST_DIR) +
+                      "/scripts/no_strike.json"),
+            0);
+  ASSERT_EQ(runSample(common + struck.string() + " --script " + std::string(SAMPLE_TEST_DIR) +
+                      "/scripts/scripted_strike.json"),
+            0);
+  const ShadowEffect during = shadowEffect(struck / "during.exr", calm / "during.exr", 1.0f / 1.1f);
+  ASSERT_GT(during.pixels, 0u);
+  // shadowEffect counts pixels of the second image darker than the first: here the calm run's
+  // darker than the struck one's, i.e. the strike's 10% brighter, and the struck ones darker.
+  std::printf("scripted strike: %.1f%% of pixels 10%% brighter, %zu darker\n",
+              100.0 * double(during.darker) / double(during.pixels), during.brighter);
+  EXPECT_GT(during.darker, during.pixels / 50) << "the clouds glow around the strike";
+  EXPECT_EQ(during.brighter, 0u) << "a flash only adds light";
+  EXPECT_EQ(engine::assets::readImage(struck / "after.exr").pixels,
+            engine::assets::readImage(calm / "after.exr").pixels)
+      << "no glow left behind";
 }
 
 TEST(HeadlessCapture, FliesOverAUserSuppliedTerrain) {

@@ -64,7 +64,7 @@ const uint kUpsampleFresh = 5u;
 const uint kUpsampleHistory = 6u;
 const uint kUpsampleHistoryOut = 7u;
 const uint kUpsampleAerialPerspective = 8u;  // the host's haze (FrameInputs::aerialPerspective)
-const uint kUpsampleLightning = 10u;         // LightningUniforms (Settings::lightningFlashes > 0)
+const uint kUpsampleLightningGlow = 10u;     // lightning_glow.comp's glow (lightningFlashes > 0)
 const uint kUpsampleGodRayLight = 9u;        // god_rays.comp's light (Settings::godRaySamples > 0)
 // cloud_shadow_map.comp (binding 0: the CloudUniforms of the frame the map is made in)
 const uint kShadowShapeNoise = 1u;
@@ -79,6 +79,10 @@ const uint kTerrainShadowMap = 1u;     // the cascade atlas: its terrain channel
 // composite.comp
 const uint kCompositeHostColor = 0u;
 const uint kCompositeClouds = 1u;
+// lightning_glow.comp (binding 0: the frame's CloudUniforms)
+const uint kGlowTraceSamples = 1u;  // the reconstructed trace image (packed)
+const uint kGlowFlashes = 2u;       // LightningUniforms
+const uint kGlowOut = 3u;           // RGBA16F at the trace resolution
 // god_ray_occlusion.comp (binding 0: the frame's CloudUniforms)
 const uint kGodRayTraceSamples = 1u;   // the reconstructed trace image (packed)
 const uint kGodRaySceneDistance = 2u;  // the conservative scene distance (trace res)
@@ -345,7 +349,7 @@ using vkfx::shader::GodRayParameters;  // god_rays.comp's push constants
 using vkfx::shader::kGodRayDownsample;
 #endif
 
-// The flashes the clouds glow with this frame (upsample.comp, kUpsampleLightning), a uniform
+// The flashes the clouds glow with this frame (lightning_glow.comp, kGlowFlashes), a uniform
 // block: flash i is flash[2 i] (xyz camera-relative position (m), w radius (m)) and
 // flash[2 i + 1] (rgb radiance, w unused).
 const uint kMaxLightningFlashes = 16u;

@@ -22,7 +22,7 @@
 // Inputs: 0 CloudUniforms; 1 reconstructed samples (trace res, packed: cloud_temporal.h);
 // 2 host depth; 5 this frame's marched samples (trace res); 6 last frame's output history;
 // 8 the host's aerial perspective (3D); 9 the god rays' light (a quarter of the output res);
-// 10 this frame's lightning flashes.
+// 10 the clouds' lightning glow (trace res).
 // Outputs: 3 RGBA16F radiance + transmittance, 4 RG32F depths (output res); 7 this frame's
 // output history (output res, packed with the own-sample count).
 // References: Karis 2014 (temporal accumulation, neighbourhood clamp); Schneider 2015.
@@ -51,8 +51,7 @@ layout(binding = kUpsampleHistory, rgba32ui) uniform readonly uimage2D outputHis
 layout(binding = kUpsampleHistoryOut, rgba32ui) uniform writeonly uimage2D outputHistoryOut;
 layout(binding = kUpsampleAerialPerspective) uniform sampler3D aerialPerspective;
 layout(binding = kUpsampleGodRayLight) uniform sampler2D godRayLight;
-// Indexed like frame_uniforms.glsl's block, for the same reason (the flash loop's bound).
-layout(binding = kUpsampleLightning, std140) uniform Lightning { LightningUniforms lightning[1]; };
+layout(binding = kUpsampleLightningGlow) uniform sampler2D lightningGlow;
 
 #include "vkfx/aerial_perspective.glsl"
 
@@ -114,37 +113,16 @@ vec4 hazed(uvec2 pixel, vec4 radiance, vec2 depth) {
   return vec4(radiance.rgb * air.a + inScattered, radiance.a);
 }
 
-// Nubis Evolved's lightning glow (Schneider 2022: potential pow(1 - d / r, 12), less where the
-// cloud is dense), once per pixel where it shows cloud: at the clouds' transmittance-weighted
-// depth along its ray, for as much cloud as the pixel shows (1 - transmittance). The local
-// density of the seeds' pseudo-attenuation is that of the cloud the pixel sees into: its
-// optical depth (at most 1: an opaque cloud shows its outer skin) over its depth span (twice
-// the weighted depth past the front), exact for a thin uniform cloud. Made after the temporal
-// reconstruction, a flash never enters a history: the frame after it ends is as if it never
-// was.
-vec3 lightningGlow(uvec2 pixel, vec4 radiance, vec2 depth) {
-  if (depth.y <= 0.0f || radiance.a >= 1.0f) return vec3(0.0f);
-  const uint slot = gl_NumWorkGroups.z - 1u;
-  const vec3 ray = pixelRayDirection(vec2(pixel) + 0.5f, vec2(u.outputExtent), u);
-  const vec3 cloud = ray * depth.y;  // camera-relative (m)
-  const float span = max(2.0f * (depth.y - depth.x), 1.0f);
-  const float opticalDepth = min(-log(max(radiance.a, 1e-6f)), 1.0f);
-  const float density = opticalDepth / span / max(u.extinctionPerMetre, 1e-12f);
-  const float attenuation = 1.0f - saturate(density * 5.0f);
-  vec3 glow = vec3(0.0f);
-  for (uint i = 0u; i < lightning[slot].count.x; ++i) {
-    const vec4 flash = lightning[slot].flash[2u * i];
-    const float reach = saturate(1.0f - length(cloud - flash.xyz) / flash.w);
-    glow += lightning[slot].flash[2u * i + 1u].rgb * pow(reach, 12.0f);
-  }
-  return glow * ((1.0f - radiance.a) * attenuation);
-}
-
 // What the output pixel shows: the clouds (glowing with lightning), hazed, and with god rays
 // the light the air in front of the sky behind them gains or loses (`scene` m: the host's
 // geometry, infinite for sky).
 vec4 outputRadiance(uvec2 pixel, vec4 radiance, vec2 depth, float scene) {
-  if (kLightning != 0u) radiance.rgb += lightningGlow(pixel, radiance, depth);
+  if (kLightning != 0u) {
+    // The glow per unit of cloud, at the trace resolution (smooth), times this pixel's cloud.
+    const vec2 trace = (vec2(pixel) + 0.5f) * vec2(u.traceExtent) / vec2(u.outputExtent);
+    const vec2 uv = trace / vec2(textureSize(lightningGlow, 0));
+    radiance.rgb += (1.0f - radiance.a) * textureLod(lightningGlow, uv, 0.0f).rgb;
+  }
   vec4 result = hazed(pixel, radiance, depth);
   if (kGodRays != 0u && scene >= kInfiniteDistance) {
     // The light image is a quarter of the output, rounded up: kGodRayDownsample pixels a texel.

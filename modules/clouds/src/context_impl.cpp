@@ -40,7 +40,7 @@ detail::UniqueDescriptorPool makePool(const detail::DeviceContext& device, std::
       {VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 4 * frames},
   };
   VkDescriptorPoolCreateInfo info{VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO};
-  info.maxSets = 8 + 12 * frames;
+  info.maxSets = 8 + 13 * frames;
   info.poolSizeCount = static_cast<std::uint32_t>(std::size(sizes));
   info.pPoolSizes = sizes;
   return device.createDescriptorPool(info, "descriptor pool");
@@ -102,6 +102,7 @@ Context::Impl::Impl(const CreateInfo& info, const detail::VulkanFunctions& funct
                             "shadow parameters " + std::to_string(i));
     slot.godRayOcclusion = allocateSet(Program::GodRayOcclusion);
     slot.godRays = allocateSet(Program::GodRays);
+    slot.lightningGlow = allocateSet(Program::LightningGlow);
     slot.godRayLight =
         detail::OwnedBuffer(device_, sizeof(shader::GodRayLightUniforms),
                             VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT,
@@ -160,8 +161,9 @@ detail::ImageSizes imageSizesFor(const Settings& settings, VkExtent2D renderExte
       settings.godRaySamples > 0
           ? VkExtent2D{(renderExtent.width + d - 1) / d, (renderExtent.height + d - 1) / d}
           : VkExtent2D{0, 0};
-  return {renderExtent, detail::traceExtentFor(renderExtent, settings.traceScale),
-          upsamplesTemporally(settings), godRays};
+  const VkExtent2D trace = detail::traceExtentFor(renderExtent, settings.traceScale);
+  return {renderExtent, trace, upsamplesTemporally(settings), godRays,
+          settings.lightningFlashes > 0 ? trace : VkExtent2D{0, 0}};
 }
 
 // The shadow map's cascade atlas: the cascades side by side ({0, 0}: none); and the spare

@@ -97,6 +97,7 @@ class Context::Impl {
     VkDescriptorSet godRays = VK_NULL_HANDLE;
     detail::OwnedBuffer godRayLight;  // god_rays.comp's GodRayLightUniforms
     detail::OwnedBuffer lightning;    // this frame's LightningUniforms (lightningFlashes > 0)
+    VkDescriptorSet lightningGlow = VK_NULL_HANDLE;
   };
 
   VkDescriptorSet allocateSet(detail::Program program);
@@ -138,7 +139,10 @@ class Context::Impl {
                       const shader::MarchTerrainShadow* shadow);
   void recordSkyAmbient(VkCommandBuffer cmd, const FrameInputs& inputs, Slot& slot);
   void recordClearSky(VkCommandBuffer cmd, Slot& slot);
-  bool recordLightning(VkCommandBuffer cmd, const FrameInputs& inputs, Slot& slot);
+  // The clouds' glow with this frame's flashes, from the reconstructed trace `traceSamples`;
+  // whether there was any (the upsample then adds it).
+  bool recordLightning(VkCommandBuffer cmd, const FrameInputs& inputs,
+                       const detail::OwnedImage& traceSamples, VkExtent2D traceExtent, Slot& slot);
   void recordTrace(VkCommandBuffer cmd, const FrameInputs& inputs, const Settings& settings,
                    const detail::TemporalFrame& temporal, VkExtent2D traceExtent,
                    bool terrainShadow, Slot& slot);

@@ -95,6 +95,7 @@ bool ModuleImages::fit(const ImageSizes& sizes) const {
          holds(history[0], sizes.trace) && holds(history[1], sizes.trace) &&
          (!sizes.upsampling ||
           (holds(outputHistory[0], sizes.output) && holds(outputHistory[1], sizes.output))) &&
+         (sizes.lightning.width == 0 || holds(lightningGlow, sizes.lightning)) &&
          (sizes.godRays.width == 0 ||
           (fitsExactly(godRayOcclusion, sizes.godRays) && fitsExactly(godRayMask, sizes.godRays) &&
            fitsExactly(godRayLight, sizes.godRays)));
@@ -134,6 +135,11 @@ bool ModuleImages::grow(const ImageSizes& sizes, std::optional<std::uint64_t> la
           lastUse);
     }
     historyLost = true;
+  }
+  if (sizes.lightning.width > 0 && !holds(lightningGlow, sizes.lightning)) {
+    const VkExtent3D e = extent3(grown(lightningGlow, sizes.lightning));
+    replace(lightningGlow, make(VK_IMAGE_TYPE_2D, kRadianceFormat, e, kOutput, "lightning glow"),
+            lastUse);
   }
   // Exactly the size wanted (read with samplers, whose uv spans the whole image); small, so
   // remade with the render extent.
@@ -200,6 +206,7 @@ MemoryUsage ModuleImages::memoryUsage() const {
   m.upsamplingBytes = outputHistory[0].bytes() + outputHistory[1].bytes();
   m.shadowBytes = shadowMap.bytes() + shadowSpare.bytes();
   m.godRayBytes = godRayOcclusion.bytes() + godRayMask.bytes() + godRayLight.bytes();
+  m.lightningBytes = lightningGlow.bytes();
   m.bufferBytes = depthPlaceholder.bytes() + samplesPlaceholder.bytes() + hazePlaceholder.bytes();
   for (const Retired& r : retired_) m.retiredBytes += r.image.bytes();
   return m;

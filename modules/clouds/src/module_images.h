@@ -29,8 +29,9 @@ struct ShadowExtents {
 struct ImageSizes {
   VkExtent2D output{0, 0};
   VkExtent2D trace{0, 0};
-  bool upsampling = false;   // the output-resolution histories of temporal upsampling
-  VkExtent2D godRays{0, 0};  // the god-ray occlusion image and mask ({0, 0}: none)
+  bool upsampling = false;     // the output-resolution histories of temporal upsampling
+  VkExtent2D godRays{0, 0};    // the god-ray occlusion image and mask ({0, 0}: none)
+  VkExtent2D lightning{0, 0};  // the clouds' lightning glow, the trace's ({0, 0}: none)
 };
 
 class ModuleImages {
@@ -75,7 +76,8 @@ class ModuleImages {
   OwnedImage shadowSpare;      // one cascade in the making (Settings::shadowFramesPerCascade > 1)
   OwnedImage godRayOcclusion;  // what hides the sun, a quarter of the output (vkfx/god_rays.h)
   OwnedImage godRayMask;       // its radial blur (Outputs::godRayMask)
-  OwnedImage godRayLight;      // what the composite adds to the sky's pixels
+  OwnedImage godRayLight;      // what the upsample adds to the sky's pixels
+  OwnedImage lightningGlow;    // the clouds' glow per unit of cloud, trace res
 
  private:
   struct Retired {

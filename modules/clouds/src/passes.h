@@ -17,12 +17,13 @@ enum class Pass : std::uint32_t {
   ShadowMap,
   TerrainShadow,
   GodRays,
+  Lightning,
   Count
 };
 
 inline constexpr std::array<const char*, static_cast<std::size_t>(Pass::Count)> kPassNames = {
     "noise",       "weather",  "sky ambient", "clear sky",      "scene distance", "march",
-    "reconstruct", "upsample", "shadow map",  "terrain shadow", "god rays"};
+    "reconstruct", "upsample", "shadow map",  "terrain shadow", "god rays",       "lightning"};
 
 constexpr std::uint32_t index(Pass pass) {
   return static_cast<std::uint32_t>(pass);

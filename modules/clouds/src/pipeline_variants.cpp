@@ -85,6 +85,10 @@ std::vector<std::pair<Program, SpecializationKey>> variantsFor(const Settings& s
     variants.emplace_back(Program::TerrainShadow, SpecializationKey{});
     variants.emplace_back(Program::March, marchKey(settings, workCounters, true));
   }
+  // No room for flashes, no glow pipeline (and the upsample without the glow, above).
+  if (settings.lightningFlashes > 0) {
+    variants.emplace_back(Program::LightningGlow, SpecializationKey{});
+  }
   // No god rays, no god-ray pipelines (and the upsample without their light, above).
   if (settings.godRaySamples > 0) {
     variants.emplace_back(Program::GodRayOcclusion, SpecializationKey{});

@@ -10,6 +10,7 @@
 #include "clouds_shaders/depth_downsample.comp.spv.h"
 #include "clouds_shaders/god_ray_occlusion.comp.spv.h"
 #include "clouds_shaders/god_rays.comp.spv.h"
+#include "clouds_shaders/lightning_glow.comp.spv.h"
 #include "clouds_shaders/noise_curl.comp.spv.h"
 #include "clouds_shaders/noise_detail.comp.spv.h"
 #include "clouds_shaders/noise_shape.comp.spv.h"
@@ -118,7 +119,7 @@ std::vector<ProgramDesc> programTable() {
         {kUpsampleHistoryOut, kImage},
         {kUpsampleAerialPerspective, kTexture},
         {kUpsampleGodRayLight, kTexture},
-        {kUpsampleLightning, kUniforms}},
+        {kUpsampleLightningGlow, kTexture}},
        0,
        "upsample"},
       {Program::ShadowMap,
@@ -159,6 +160,14 @@ std::vector<ProgramDesc> programTable() {
         {kGodRayLightOut, kImage}},
        sizeof(GodRayParameters),
        "god rays"},
+      {Program::LightningGlow,
+       lightning_glow_comp_spv,
+       {{kBindingUniforms, kUniforms},
+        {kGlowTraceSamples, kImage},
+        {kGlowFlashes, kUniforms},
+        {kGlowOut, kImage}},
+       0,
+       "lightning glow"},
   };
 }
 
@@ -176,7 +185,7 @@ Programs::Programs(const DeviceContext& device, bool composite) {
         desc.program == Program::March || desc.program == Program::Reconstruct ||
         desc.program == Program::Upsample || desc.program == Program::ShadowMap ||
         desc.program == Program::TerrainShadow || desc.program == Program::GodRayOcclusion ||
-        desc.program == Program::GodRays;
+        desc.program == Program::GodRays || desc.program == Program::LightningGlow;
     if (!specialised) program->prepare();
   }
 }

@@ -62,6 +62,17 @@ InputScript InputScript::load(const std::filesystem::path& file) {
       event.mouse = glm::dvec2(m.x, m.y);
       ++actions;
     }
+    if (e.has("lightning")) {
+      const JsonReader l = e.object("lightning");
+      clouds::ecs::TriggerLightning strike;
+      strike.energy = float(l.number("energy", 0.0, 1e3, 1.0));
+      strike.kind = l.choice("kind", {"intraCloud", "ground"}, "intraCloud") == "ground"
+                        ? clouds::ecs::StrikeKind::Ground
+                        : clouds::ecs::StrikeKind::IntraCloud;
+      l.finish();
+      event.lightning = strike;
+      ++actions;
+    }
     if (e.has("capture")) {
       event.capture = e.string("capture");
       const std::string& name = *event.capture;
@@ -100,6 +111,7 @@ void InputScript::apply(std::uint64_t frame, engine::platform::InputState& input
     if (e.camera) world.events<SetCameraPose>().send(*e.camera);
     if (e.timeOfDayHours) world.events<SetTimeOfDay>().send(SetTimeOfDay{*e.timeOfDayHours});
     if (e.capture) world.events<CaptureFrame>().send(CaptureFrame{*e.capture});
+    if (e.lightning) world.events<clouds::ecs::TriggerLightning>().send(*e.lightning);
     if (e.exit) world.ctx().get<ExitRequest>().requested = true;
   }
 }

@@ -9,6 +9,7 @@
 //     {"frame": 1, "press": ["W", "Up"]},  {"frame": 9, "release": ["Up"]},
 //     {"frame": 4, "mouse": [12, -3]},
 //     {"frame": 12, "capture": "ground_view"},
+//     {"frame": 10, "lightning": {"energy": 1.0, "kind": "ground"}},  (a storm's scene only)
 //     {"frame": 13, "exit": true}]}
 // Every event has "frame" and exactly one action.
 #include <filesystem>
@@ -16,6 +17,7 @@
 #include <string>
 #include <vector>
 
+#include "clouds/ecs/lightning.h"
 #include "engine/ecs/world.h"
 #include "engine/platform/input.h"
 #include "game/game_components.h"
@@ -30,6 +32,7 @@ struct ScriptEvent {
   std::vector<engine::platform::Key> release;
   std::optional<glm::dvec2> mouse;
   std::optional<std::string> capture;
+  std::optional<clouds::ecs::TriggerLightning> lightning;
   bool exit = false;
 };
 

@@ -162,6 +162,25 @@ ExposureDescription readExposure(const JsonReader& r) {
   return e;
 }
 
+LightningDescription readLightning(const JsonReader& r) {
+  LightningDescription l;
+  clouds::ecs::LightningStorm& s = l.storm;
+  for (const JsonReader& cell : r.objects("cells")) {
+    clouds::ecs::LightningCell c;
+    c.positionMetres = cell.vec3("position", -1e7, 1e7);
+    c.radiusMetres = float(cell.number("radiusMetres", 10.0, 1e5, c.radiusMetres));
+    cell.finish();
+    s.cells.push_back(c);
+  }
+  if (s.cells.empty()) r.fail("cells", "a storm needs at least one cell");
+  s.strikesPerMinute = r.number("strikesPerMinute", 0.0, 600.0, s.strikesPerMinute);
+  s.seed = static_cast<std::uint32_t>(r.integer("seed", 0, 0xffffffffLL, s.seed));
+  s.groundFraction = r.number("groundFraction", 0.0, 1.0, s.groundFraction);
+  s.radiance = float(r.number("radiance", 0.0, 1e6, s.radiance));
+  r.finish();
+  return l;
+}
+
 }  // namespace
 
 SceneDescription loadSceneDescription(const std::filesystem::path& file) {
@@ -175,6 +194,10 @@ SceneDescription loadSceneDescription(const std::filesystem::path& file) {
   if (root.has("sun")) scene.sun = readSun(root.object("sun"));
   if (root.has("terrain")) scene.terrain = readTerrain(root.object("terrain"), dir);
   if (root.has("clouds")) scene.clouds = readClouds(root.object("clouds"), dir);
+  if (root.has("lightning")) {
+    scene.lightning = readLightning(root.object("lightning"));
+    if (!scene.clouds) root.fail("lightning", "lightning glows in clouds: the scene has none");
+  }
   if (root.has("atmosphere")) scene.atmosphere = readAtmosphere(root.object("atmosphere"));
   if (root.has("fog")) scene.fog = readFog(root.object("fog"));
   if (scene.atmosphere && scene.fog) {

@@ -9,6 +9,7 @@
 
 #include "atmosphere/atmosphere.h"
 #include "clouds/clouds.h"
+#include "clouds/ecs/lightning.h"
 
 namespace sample {
 
@@ -68,6 +69,11 @@ struct ExposureDescription {
   double adaptationSeconds = 0.5;
 };
 
+// A storm: the cells where lightning glows in the clouds, its rate, seed and kind of strikes.
+struct LightningDescription {
+  clouds::ecs::LightningStorm storm;
+};
+
 struct SceneDescription {
   std::filesystem::path file;
   std::string name;
@@ -75,6 +81,7 @@ struct SceneDescription {
   SunDescription sun;
   std::optional<TerrainDescription> terrain;
   std::optional<CloudDescription> clouds;
+  std::optional<LightningDescription> lightning;    // with clouds only
   std::optional<AtmosphereDescription> atmosphere;  // exclusive with fog
   std::optional<FogDescription> fog;
   ExposureDescription exposure;

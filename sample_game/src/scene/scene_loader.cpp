@@ -4,6 +4,7 @@
 #include "atmosphere/ecs/atmosphere_module.h"
 #include "clouds/ecs/cloud_components.h"
 #include "clouds/ecs/clouds_module.h"
+#include "clouds/ecs/lightning.h"
 #include "engine/core/log.h"
 #include "engine/ecs/frame_time.h"
 #include "engine/platform/input.h"
@@ -115,8 +116,20 @@ void populateScene(ecs::App& app, const SceneDescription& scene,
     world.emplace<clouds::ecs::CloudLayer>(
         layer, clouds::ecs::CloudLayer{scene.clouds->settings, scene.clouds->noiseSeed,
                                        scene.clouds->weatherMap});
+    // A storm, as data: the clouds module adds its lightning system only when this exists.
+    if (scene.lightning) {
+      world.emplace<clouds::ecs::LightningStorm>(world.create(), scene.lightning->storm);
+    }
   }
 
+  // A storm's strike on demand: B.
+  if (scene.lightning) {
+    app.scheduler().add(ecs::Phase::Input, "lightning controls", [](ecs::World& w) {
+      if (w.ctx().get<engine::platform::InputState>().wasPressed(engine::platform::Key::B)) {
+        w.events<clouds::ecs::TriggerLightning>().send(clouds::ecs::TriggerLightning{});
+      }
+    });
+  }
   installTimeOfDay(app.scheduler());
   installFlight(app.scheduler());
   installCloudQualityControls(app.scheduler());

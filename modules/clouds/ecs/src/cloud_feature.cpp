@@ -133,7 +133,10 @@ void CloudFeature::dispatch(const HostFrame& host) {
   HostFrame frame = host;
   frame.weatherView = weatherMap_ ? weatherMap_->view() : VK_NULL_HANDLE;
   clouds::Error error;
-  dispatched_ = context_->dispatch(cloudFrameInputs(world_, frame), settings_, &error);
+  clouds::FrameInputs inputs = cloudFrameInputs(world_, frame);
+  flashes_ = lightningFlashes(world_, settings_.lightningFlashes);
+  inputs.lightningFlashes = flashes_;
+  dispatched_ = context_->dispatch(inputs, settings_, &error);
   if (dispatched_) {
     world_.ctx().get<CloudStatus>().lastError.clear();
   } else {
@@ -150,6 +153,7 @@ std::vector<std::string> CloudFeature::effects() const {
     if (ground != nullptr && ground->view != VK_NULL_HANDLE) names.emplace_back("terrain shadow");
   }
   if (settings_.godRaySamples > 0) names.emplace_back("god rays");
+  if (settings_.lightningFlashes > 0) names.emplace_back("lightning");
   return names;
 }
 

@@ -1,6 +1,9 @@
 #include "clouds/ecs/cloud_frame.h"
 
+#include <algorithm>
+
 #include "clouds/ecs/cloud_components.h"
+#include "clouds/ecs/lightning.h"
 #include "engine/ecs/frame_time.h"
 #include "engine/render/scene_components.h"
 
@@ -12,6 +15,9 @@ clouds::Settings cloudSettings(engine::ecs::World& world) {
   clouds::Settings layerSettings;
   world.view<const CloudLayer>().each(
       [&](const CloudLayer& layer) { layerSettings = layer.settings; });
+  // A scene with a storm makes room for its flashes (and so for the glow's code).
+  world.view<const LightningStorm>().each(
+      [&](const LightningStorm&) { layerSettings.lightningFlashes = kLightningFlashes; });
   clouds::Settings settings = layerSettings;
   world.view<const render::Camera>().each([&](engine::ecs::Entity entity, const render::Camera&) {
     if (const auto* quality = world.tryGet<const CloudQuality>(entity)) {
@@ -19,6 +25,31 @@ clouds::Settings cloudSettings(engine::ecs::World& world) {
     }
   });
   return settings;
+}
+
+std::vector<clouds::LightningFlash> lightningFlashes(engine::ecs::World& world,
+                                                     std::uint32_t capacity) {
+  std::vector<clouds::LightningFlash> flashes;
+  const auto* active = world.ctx().tryGet<ActiveLightning>();
+  if (active == nullptr || capacity == 0) return flashes;
+  const double now = world.ctx().get<engine::ecs::FrameTime>().elapsedSeconds;
+  for (const LightningStrike& strike : active->strikes) {
+    const float brightness = strikeEnvelope(strike, now) * strike.energy;
+    if (!(brightness > 0.0f)) continue;
+    clouds::LightningFlash flash;
+    flash.positionMetres = strike.positionMetres;
+    flash.radiusMetres = strike.radiusMetres;
+    // A bluish white, as lightning's glow in cloud is.
+    flash.radiance = glm::vec3(0.85f, 0.9f, 1.0f) * (strike.radiance * brightness);
+    flashes.push_back(flash);
+  }
+  // The brightest, as many as there is room for.
+  std::sort(flashes.begin(), flashes.end(),
+            [](const clouds::LightningFlash& a, const clouds::LightningFlash& b) {
+              return a.radiance.b > b.radiance.b;
+            });
+  if (flashes.size() > capacity) flashes.resize(capacity);
+  return flashes;
 }
 
 clouds::FrameInputs cloudFrameInputs(engine::ecs::World& world, const HostFrame& host) {

@@ -2,6 +2,7 @@
 
 #include "cloud_feature.h"
 #include "clouds/ecs/cloud_components.h"
+#include "clouds/ecs/lightning.h"
 #include "engine/ecs/world.h"
 #include "engine/render/render_feature.h"
 
@@ -20,7 +21,7 @@ bool CloudsModule::supported(const engine::ecs::World& world, std::string& reaso
                                             reason);
 }
 
-void CloudsModule::install(engine::ecs::World& world, engine::ecs::Scheduler& /*scheduler*/) {
+void CloudsModule::install(engine::ecs::World& world, engine::ecs::Scheduler& scheduler) {
   const CloudLayer* layer = nullptr;
   world.view<const CloudLayer>().each([&](const CloudLayer& l) { layer = &l; });
   // Creating the feature may throw ModuleUnsupported: then nothing is registered.
@@ -31,6 +32,8 @@ void CloudsModule::install(engine::ecs::World& world, engine::ecs::Scheduler& /*
     world.ctx().emplace<engine::render::RenderFeatures>();
   }
   world.ctx().get<engine::render::RenderFeatures>().features.push_back(feature_.get());
+  // Only a scene with a storm gets the lightning system.
+  installLightning(world, scheduler);
 }
 
 }  // namespace clouds::ecs

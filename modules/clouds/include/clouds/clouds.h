@@ -146,13 +146,14 @@ struct MemoryUsage {
   std::uint64_t traceBytes = 0;       // scene distance, samples and two histories (trace extent)
   std::uint64_t upsamplingBytes = 0;  // two output-resolution histories (temporal upsampling)
   std::uint64_t shadowBytes = 0;      // the cloud shadow map and its spare cascade
-  std::uint64_t godRayBytes = 0;      // the god-ray occlusion image and mask
+  std::uint64_t godRayBytes = 0;      // the god-ray occlusion image, mask and light
+  std::uint64_t lightningBytes = 0;   // the clouds' lightning glow (its flashes: bufferBytes)
   std::uint64_t bufferBytes = 0;      // uniforms, work counters, placeholders
   std::uint64_t retiredBytes = 0;     // images a larger prepare() replaced, freed once the
                                       //   frames in flight that may use them have retired
   std::uint64_t totalBytes() const {
     return noiseBytes + weatherBytes + outputBytes + traceBytes + upsamplingBytes + shadowBytes +
-           godRayBytes + bufferBytes + retiredBytes;
+           godRayBytes + lightningBytes + bufferBytes + retiredBytes;
   }
 };
 

@@ -7,6 +7,7 @@
 #include <vulkan/vulkan.h>
 
 #include <cstdint>
+#include <vector>
 
 #include "clouds/clouds.h"
 #include "engine/ecs/world.h"
@@ -36,6 +37,14 @@ struct HostFrame {
 // The settings the camera renders the layer with: the layer's look under the camera's
 // CloudQuality preset, or the layer's settings as they are without one.
 clouds::Settings cloudSettings(engine::ecs::World& world);
+
+// Flashes that may glow at once in a scene with a storm (Settings::lightningFlashes).
+inline constexpr std::uint32_t kLightningFlashes = 8;
+
+// The flashes of the strikes in progress (ActiveLightning) at this frame's time, at their
+// return strokes' brightness, the brightest `capacity` of them.
+std::vector<clouds::LightningFlash> lightningFlashes(engine::ecs::World& world,
+                                                     std::uint32_t capacity);
 
 // This frame's inputs. The module remembers the previous camera itself. The sun reaching the
 // clouds is the Sun through the world's SunTransmittance at the layer's middle altitude (the

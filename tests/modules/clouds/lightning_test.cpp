@@ -1,0 +1,162 @@
+// Lightning as ECS data, without a GPU: strikes are a pure function of the storm's seed and the
+// clock (the same at any frame rate, different for another seed, at the storm's rate), a
+// strike's return strokes light it and then it is dark, the "lightning" system sends an event
+// per strike and keeps the ones in progress, a trigger strikes at once, the clouds' inputs get
+// the brightest flashes there is room for, and a scene without a storm has no system.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "clouds/ecs/cloud_components.h"
+#include "clouds/ecs/cloud_frame.h"
+#include "clouds/ecs/lightning.h"
+#include "engine/ecs/events.h"
+#include "engine/ecs/frame_time.h"
+#include "engine/ecs/scheduler.h"
+#include "engine/ecs/world.h"
+
+namespace {
+
+using clouds::ecs::LightningStorm;
+using clouds::ecs::LightningStrike;
+
+LightningStorm storm(std::uint32_t seed = 7) {
+  LightningStorm s;
+  s.cells = {{{0.0, 3000.0, 0.0}, 5000.0f}, {{8000.0, 3000.0, 0.0}, 5000.0f}};
+  s.strikesPerMinute = 6.0;
+  s.seed = seed;
+  return s;
+}
+
+TEST(Lightning, StrikesAreTheSameAtAnyFrameRate) {
+  const LightningStorm s = storm();
+  const std::vector<LightningStrike> once = clouds::ecs::strikesBetween(s, 0.0, 600.0);
+  for (const double dt : {1.0 / 30.0, 1.0 / 144.0, 0.25}) {
+    std::vector<LightningStrike> framed;
+    for (double t = 0.0; t < 600.0; t += dt) {
+      const auto part = clouds::ecs::strikesBetween(s, t, std::min(t + dt, 600.0));
+      framed.insert(framed.end(), part.begin(), part.end());
+    }
+    ASSERT_EQ(framed.size(), once.size()) << "dt " << dt;
+    for (std::size_t i = 0; i < once.size(); ++i) {
+      EXPECT_EQ(framed[i].startSeconds, once[i].startSeconds);
+      EXPECT_EQ(framed[i].positionMetres, once[i].positionMetres);
+      EXPECT_EQ(framed[i].energy, once[i].energy);
+    }
+  }
+}
+
+TEST(Lightning, StrikesFollowTheRateAndTheSeed) {
+  const auto hour = clouds::ecs::strikesBetween(storm(), 0.0, 3600.0);
+  // Two cells at 6 a minute for an hour: 720 expected (a Poisson count, sd 27).
+  EXPECT_NEAR(double(hour.size()), 720.0, 100.0);
+  std::size_t ground = 0;
+  for (const LightningStrike& s : hour) {
+    if (s.kind == clouds::ecs::StrikeKind::Ground) ++ground;
+    EXPECT_TRUE(s.strokes == 3 || s.strokes == 4);
+    EXPECT_GE(s.durationSeconds, 0.2);
+    EXPECT_LE(s.durationSeconds, 0.5);
+  }
+  EXPECT_NEAR(double(ground) / double(hour.size()), 0.3, 0.08);
+  const auto other = clouds::ecs::strikesBetween(storm(8), 0.0, 3600.0);
+  ASSERT_FALSE(other.empty());
+  EXPECT_NE(other.front().startSeconds, hour.front().startSeconds) << "another seed";
+  LightningStorm calm = storm();
+  calm.strikesPerMinute = 0.0;
+  EXPECT_TRUE(clouds::ecs::strikesBetween(calm, 0.0, 3600.0).empty());
+  EXPECT_TRUE(clouds::ecs::strikesBetween(storm(), 5.0, 5.0).empty());
+  EXPECT_TRUE(clouds::ecs::strikesBetween(storm(), std::nan(""), 5.0).empty());
+}
+
+TEST(Lightning, ReturnStrokesLightAStrikeThenItIsDark) {
+  LightningStrike s;
+  s.startSeconds = 10.0;
+  s.durationSeconds = 0.3;
+  s.strokes = 3;
+  EXPECT_EQ(clouds::ecs::strikeEnvelope(s, 9.99), 0.0f);
+  EXPECT_FLOAT_EQ(clouds::ecs::strikeEnvelope(s, 10.0), 1.0f);
+  // Each stroke brightens the fading flash again, 50 ms apart.
+  EXPECT_GT(clouds::ecs::strikeEnvelope(s, 10.0501), clouds::ecs::strikeEnvelope(s, 10.049));
+  EXPECT_GT(clouds::ecs::strikeEnvelope(s, 10.1001), clouds::ecs::strikeEnvelope(s, 10.099));
+  EXPECT_LT(clouds::ecs::strikeEnvelope(s, 10.25), 0.05f);
+  EXPECT_EQ(clouds::ecs::strikeEnvelope(s, 10.31), 0.0f);
+  for (double t = 9.9; t < 10.4; t += 0.001) {
+    const float e = clouds::ecs::strikeEnvelope(s, t);
+    ASSERT_TRUE(e >= 0.0f && e <= 1.0f) << t;
+  }
+}
+
+struct StormWorld {
+  engine::ecs::World world;
+  engine::ecs::Scheduler scheduler;
+  engine::ecs::Entity stormEntity;
+  StormWorld() {
+    world.ctx().emplace<engine::ecs::FrameTime>();
+    world.emplace<clouds::ecs::CloudLayer>(world.create(), clouds::ecs::CloudLayer{});
+    LightningStorm s = storm();
+    s.strikesPerMinute = 60.0;
+    stormEntity = world.create();
+    world.emplace<LightningStorm>(stormEntity, s);
+  }
+  void frame(double dt) {
+    auto& time = world.ctx().get<engine::ecs::FrameTime>();
+    time = time.next(dt);
+    scheduler.runFrame(world);
+  }
+};
+
+TEST(Lightning, TheSystemSendsAnEventPerStrikeAndKeepsThoseInProgress) {
+  StormWorld w;
+  ASSERT_TRUE(clouds::ecs::installLightning(w.world, w.scheduler));
+  engine::ecs::EventReader<LightningStrike> reader;
+  std::size_t events = 0;
+  std::size_t framesWithActive = 0;
+  for (int i = 0; i < 30 * 60; ++i) {  // a minute at 30 fps
+    w.frame(1.0 / 30.0);
+    for (const LightningStrike& s : reader.read(w.world.events<LightningStrike>())) {
+      (void)s;
+      ++events;
+    }
+    const auto& active = w.world.ctx().get<clouds::ecs::ActiveLightning>().strikes;
+    if (!active.empty()) ++framesWithActive;
+    const double now = w.world.ctx().get<engine::ecs::FrameTime>().elapsedSeconds;
+    for (const LightningStrike& s : active) {
+      ASSERT_LE(s.startSeconds, now + 1e-9);
+      ASSERT_GE(s.startSeconds + s.durationSeconds, now);
+    }
+  }
+  // Two cells at 60 a minute: about 120 strikes, each an event.
+  EXPECT_NEAR(double(events), 120.0, 40.0);
+  EXPECT_GT(framesWithActive, 100u);
+}
+
+TEST(Lightning, ATriggerStrikesAtOnceAndTheCloudsGetItsFlash) {
+  StormWorld w;
+  w.world.get<LightningStorm>(w.stormEntity).strikesPerMinute = 0.0;
+  ASSERT_TRUE(clouds::ecs::installLightning(w.world, w.scheduler));
+  w.frame(1.0 / 30.0);
+  EXPECT_TRUE(clouds::ecs::lightningFlashes(w.world, 8).empty()) << "a calm storm";
+  w.world.events<clouds::ecs::TriggerLightning>().send(clouds::ecs::TriggerLightning{});
+  w.frame(1.0 / 30.0);
+  const auto flashes = clouds::ecs::lightningFlashes(w.world, 8);
+  ASSERT_EQ(flashes.size(), 1u);
+  EXPECT_EQ(flashes[0].positionMetres, storm().cells[0].positionMetres);
+  EXPECT_GT(flashes[0].radiance.b, 0.0f);
+  EXPECT_TRUE(clouds::ecs::lightningFlashes(w.world, 0).empty()) << "no room, no flash";
+  for (int i = 0; i < 20; ++i) w.frame(1.0 / 30.0);
+  EXPECT_TRUE(clouds::ecs::lightningFlashes(w.world, 8).empty()) << "over after 0.5 s";
+  EXPECT_EQ(clouds::ecs::cloudSettings(w.world).lightningFlashes, clouds::ecs::kLightningFlashes);
+}
+
+TEST(Lightning, NoStormNoSystemNoRoom) {
+  engine::ecs::World world;
+  engine::ecs::Scheduler scheduler;
+  world.ctx().emplace<engine::ecs::FrameTime>();
+  world.emplace<clouds::ecs::CloudLayer>(world.create(), clouds::ecs::CloudLayer{});
+  EXPECT_FALSE(clouds::ecs::installLightning(world, scheduler));
+  EXPECT_FALSE(world.ctx().has<clouds::ecs::ActiveLightning>());
+  EXPECT_EQ(clouds::ecs::cloudSettings(world).lightningFlashes, 0u);
+  EXPECT_TRUE(clouds::ecs::lightningFlashes(world, 8).empty());
+}
+
+}  // namespace
