@@ -148,6 +148,29 @@ TEST(Lightning, ATriggerStrikesAtOnceAndTheCloudsGetItsFlash) {
   EXPECT_EQ(clouds::ecs::cloudSettings(w.world).lightningFlashes, clouds::ecs::kLightningFlashes);
 }
 
+// A hundred strikes at once: the clouds get the brightest there is room for, all finite.
+TEST(Lightning, AHundredStrikesAtOnceGiveTheBrightestFlashes) {
+  StormWorld w;
+  w.world.get<LightningStorm>(w.stormEntity).strikesPerMinute = 0.0;
+  ASSERT_TRUE(clouds::ecs::installLightning(w.world, w.scheduler));
+  for (int i = 0; i < 100; ++i) {
+    w.world.events<clouds::ecs::TriggerLightning>().send(
+        clouds::ecs::TriggerLightning{float(i) * 0.01f, clouds::ecs::StrikeKind::Ground});
+  }
+  w.frame(1.0 / 30.0);
+  EXPECT_EQ(w.world.ctx().get<clouds::ecs::ActiveLightning>().strikes.size(), 100u);
+  const auto flashes = clouds::ecs::lightningFlashes(w.world, clouds::ecs::kLightningFlashes);
+  ASSERT_EQ(flashes.size(), clouds::ecs::kLightningFlashes);
+  for (std::size_t i = 0; i < flashes.size(); ++i) {
+    EXPECT_TRUE(std::isfinite(flashes[i].radiance.b));
+    if (i > 0) {
+      EXPECT_LE(flashes[i].radiance.b, flashes[i - 1].radiance.b);
+    }
+  }
+  // The brightest: the last of the hundred (energy 0.99).
+  EXPECT_NEAR(flashes[0].radiance.b, 0.99f * storm().radiance, 1e-3f * storm().radiance);
+}
+
 TEST(Lightning, NoStormNoSystemNoRoom) {
   engine::ecs::World world;
   engine::ecs::Scheduler scheduler;
