@@ -47,6 +47,8 @@ std::vector<GoldenRun> goldenRuns() {
       // Long shadows both ways: the range's on low cumulus at sunset, the clouds' on the
       // plains at noon.
       {tests / "scenes/ridge_sunset.json", tests / "scripts/golden_shadow_views.json"},
+      // A scripted lightning strike glowing in a storm's clouds.
+      {tests / "scenes/storm_calm.json", tests / "scripts/golden_strike_views.json"},
   };
 }
 
