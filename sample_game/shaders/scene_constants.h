@@ -27,8 +27,12 @@ struct SceneFrame {
   TerrainMaterials terrain;  // rock and snow over the terrain mesh's colours
   vec4 sunlightMap;          // the terrain's sunlight map: xy the camera's place in it ([0, 1]),
                              //   zw its reciprocal size (1/m) (terrain_sunlight_map.h)
+  // The brightest lightning flash in progress: xyz its place (camera-relative, m), w the
+  // radius (m) of the glowing cloud around it; and that cloud's radiance (rgb; 0: no flash).
+  vec4 flash;
+  vec4 flashRadiance;
 };
-SHADER_STATIC_ASSERT(sizeof(SceneFrame) == 64 + 15 * 16);
+SHADER_STATIC_ASSERT(sizeof(SceneFrame) == 64 + 17 * 16);
 
 // Sky radiance along a view direction: a zenith-to-horizon blend, ground below, a sun disc and
 // its glow. Shared so the terrain's fog fades to exactly the sky behind it.

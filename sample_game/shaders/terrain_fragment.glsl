@@ -13,6 +13,8 @@ layout(location = 0) in vec3 inRelative;
 layout(location = 1) in vec3 inNormal;
 layout(location = 2) in vec3 inColor;
 layout(location = 0) out vec4 outColor;
+// A storm's scene: the brightest flash in progress lights the ground (none: no such code).
+layout(constant_id = 0) const bool kLightning = false;
 
 #ifdef TERRAIN_HAZED
 layout(location = 3) in vec4 inHaze;
@@ -39,7 +41,17 @@ void main() {
   const vec3 detail = terrainDetail(vec2(world.x, world.z));
   const vec3 normal = terrainDetailNormal(inNormal, detail);
   const vec3 albedo = terrainAlbedo(inColor, normal, world.y, detail, frame.terrain);
-  const vec3 lit = terrainLit(albedo, normal, sunVisibility());
+  vec3 lit = terrainLit(albedo, normal, sunVisibility());
+  if (kLightning) {
+    // A lightning flash lights the ground: the glowing core of the cloud around it (a sixth of
+    // the glow's reach, where pow(1 - d / r, 12) is still a tenth) as a sphere of its radiance,
+    // whose irradiance at distance d is pi L (core / d)^2 (Lambert: albedo / pi of it).
+    const float core = frame.flash.w / 6.0f;
+    const vec3 toFlash = frame.flash.xyz - inRelative;
+    const float d2 = max(dot(toFlash, toFlash), core * core);
+    const float facing = max(dot(normalize(normal), toFlash * inversesqrt(d2)), 0.0f);
+    lit += albedo * frame.flashRadiance.rgb * (core * core / d2 * facing);
+  }
 #ifdef TERRAIN_HAZED
   outColor = vec4(lit * inHaze.a + inHaze.rgb, 1.0f);
 #else

@@ -346,9 +346,9 @@ TEST(HeadlessCapture, WithoutHazeGodRaysGlowAroundTheSun) {
   EXPECT_LT(gainedDistance / gained, 0.7 * allDistance / double(pixels));
 }
 
-// A scripted strike in a storm: while it lasts the clouds around its cell glow (light only
-// added), and half a second after it the frame is, to the bit, the frame of the same run
-// without it: the flash left nothing in the clouds' histories.
+// A scripted strike in a storm: while it lasts the clouds around its cell glow and the ground
+// below is lit (light only added), and half a second after it the frame is, to the bit, the
+// frame of the same run without it: the flash left nothing in the clouds' histories.
 TEST(HeadlessCapture, AScriptedStrikeGlowsAndLeavesNoGhost) {
   const fs::path calm = freshDir("no_strike");
   const fs::path struck = freshDir("strike");
@@ -370,6 +370,17 @@ TEST(HeadlessCapture, AScriptedStrikeGlowsAndLeavesNoGhost) {
               100.0 * double(during.darker) / double(during.pixels), during.brighter);
   EXPECT_GT(during.darker, during.pixels / 50) << "the clouds glow around the strike";
   EXPECT_EQ(during.brighter, 0u) << "a flash only adds light";
+  // The flash lights the ground too: the terrain in the lower third gains light.
+  const ImageRgba32f a = engine::assets::readImage(calm / "during.exr");
+  const ImageRgba32f b = engine::assets::readImage(struck / "during.exr");
+  std::size_t litGround = 0;
+  for (std::size_t i = (a.pixels.size() / 4) * 2 / 3; i < a.pixels.size() / 4; ++i) {
+    const float la = a.pixels[4 * i] + a.pixels[4 * i + 1] + a.pixels[4 * i + 2];
+    const float lb = b.pixels[4 * i] + b.pixels[4 * i + 1] + b.pixels[4 * i + 2];
+    if (lb > 1.02f * la) ++litGround;
+  }
+  std::printf("scripted strike: %zu ground pixels 2%% brighter\n", litGround);
+  EXPECT_GT(litGround, a.pixels.size() / 4 / 20) << "the flash lights the ground";
   EXPECT_EQ(engine::assets::readImage(struck / "after.exr").pixels,
             engine::assets::readImage(calm / "after.exr").pixels)
       << "no glow left behind";

@@ -1,5 +1,8 @@
 #include "render/renderer.h"
 
+#include "clouds/ecs/cloud_frame.h"
+#include "clouds/ecs/lightning.h"
+
 #include "render/scene_pass.h"
 
 #include <algorithm>
@@ -45,8 +48,12 @@ Renderer::Renderer(gfx::Device& device, render::PresentTarget& target, ecs::Worl
       std::any_of(features_.begin(), features_.end(),
                   [](const render::RenderFeature* f) { return f->castsCloudShadow(); });
   if (const auto* mesh = world.ctx().tryGet<TerrainMesh>()) {
+    // A storm's flashes light the ground: the terrain's variant with that code (none without).
+    bool storm = false;
+    world.view<const clouds::ecs::LightningStorm>().each(
+        [&](const clouds::ecs::LightningStorm&) { storm = true; });
     terrain_ = std::make_unique<TerrainRenderer>(device, *mesh->mesh, kHdrFormat, kDepthFormat,
-                                                 featureSky, cloudShadows);
+                                                 featureSky, cloudShadows, storm);
     terrainMaterials_ = terrainMaterialsFor(*mesh->mesh, mesh->snowlineMetres);
     pipelines.push_back(&terrain_->pipeline());
     // Under shadow-casting clouds the terrain is lit through its sunlight map, made over its
@@ -169,6 +176,15 @@ void Renderer::updateFrameConstants(ecs::World& world, VkExtent2D extent) {
   f.terrain = terrainMaterials_;
   cameraPosition_ = camera.position;
   if (sunlight_) f.sunlightMap = sunlight_->placementFor(camera.position);
+  // The brightest flash in progress lights the ground (none without a storm).
+  f.flash = glm::vec4(0.0f, 0.0f, 0.0f, 1.0f);
+  f.flashRadiance = glm::vec4(0.0f);
+  const std::vector<clouds::LightningFlash> flashes = clouds::ecs::lightningFlashes(world, 1);
+  if (!flashes.empty()) {
+    f.flash =
+        glm::vec4(glm::vec3(flashes[0].positionMetres - camera.position), flashes[0].radiusMetres);
+    f.flashRadiance = glm::vec4(flashes[0].radiance, 0.0f);
+  }
   tonemap_.exposure = render::exposureScale(world.ctx().get<render::Exposure>().ev100);
 
   if (terrain_) terrain_->cull(f.viewProjection, camera.position);

@@ -144,7 +144,7 @@ engine::shaders::TerrainMaterials terrainMaterialsFor(const assets::MeshData& me
 
 TerrainRenderer::TerrainRenderer(gfx::Device& device, const assets::MeshData& mesh,
                                  VkFormat hdrFormat, VkFormat depthFormat, bool aerialPerspective,
-                                 bool cloudShadows)
+                                 bool cloudShadows, bool lightning)
     : aerialPerspective_(aerialPerspective), cloudShadows_(cloudShadows) {
   std::vector<TerrainVertex> vertices(mesh.positions.size());
   for (std::size_t i = 0; i < vertices.size(); ++i) {
@@ -209,7 +209,9 @@ TerrainRenderer::TerrainRenderer(gfx::Device& device, const assets::MeshData& me
   desc.vertexAttributes = {{0, 0, VK_FORMAT_R32G32B32_SFLOAT, offsetof(TerrainVertex, position)},
                            {1, 0, VK_FORMAT_R32G32B32_SFLOAT, offsetof(TerrainVertex, normal)},
                            {2, 0, VK_FORMAT_R32G32B32_SFLOAT, offsetof(TerrainVertex, color)}};
+  desc.specialization = {{kLightningConstant, lightning ? 1u : 0u}};
   desc.debugName = cloudShadows ? "terrain (cloud shadows)" : "terrain";
+  if (lightning) desc.debugName += " (lightning)";
   pipeline_ = gfx::Pipeline(device, desc);
 }
 

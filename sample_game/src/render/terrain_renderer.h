@@ -59,13 +59,16 @@ class TerrainRenderer {
   static constexpr std::uint32_t kFrameBinding = 0;     // SceneFrame
   static constexpr std::uint32_t kHazeBinding = 1;      // the aerial perspective (3D)
   static constexpr std::uint32_t kSunlightBinding = 2;  // the terrain's sunlight map
+  // Specialization constant: 1 lights the terrain with the brightest flash in progress.
+  static constexpr std::uint32_t kLightningConstant = 0;
 
   // `aerialPerspective`: hazed by a feature's aerial perspective (else by the fog).
   // `cloudShadows`: lit through the clouds and past the terrain's own shadow as the terrain's
   // sunlight map (TerrainSunlight) holds them.
+  // `lightning`: a storm's flashes light it (SceneFrame::flash; the variant with that code).
   TerrainRenderer(engine::gfx::Device& device, const engine::assets::MeshData& mesh,
                   VkFormat hdrFormat, VkFormat depthFormat, bool aerialPerspective,
-                  bool cloudShadows);
+                  bool cloudShadows, bool lightning);
 
   const engine::gfx::Pipeline& pipeline() const { return pipeline_; }
   bool hazedByAerialPerspective() const { return aerialPerspective_; }
