@@ -13,6 +13,8 @@
 #include <filesystem>
 #include <memory>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include "engine/assets/image_io.h"
 
@@ -172,19 +174,38 @@ struct ShadowEffect {
   std::size_t pixels = 0;
 };
 
+// Each pixel's luminance (r + g + b) in two captures of one size, row by row: (first, second).
+// Empty when their sizes differ.
+std::vector<std::pair<float, float>> luminances(const fs::path& first, const fs::path& second) {
+  const ImageRgba32f a = engine::assets::readImage(first);
+  const ImageRgba32f b = engine::assets::readImage(second);
+  std::vector<std::pair<float, float>> pairs;
+  if (a.pixels.size() != b.pixels.size()) return pairs;
+  pairs.reserve(a.pixels.size() / 4);
+  for (std::size_t i = 0; i < a.pixels.size() / 4; ++i) {
+    pairs.emplace_back(a.pixels[4 * i] + a.pixels[4 * i + 1] + a.pixels[4 * i + 2],
+                       b.pixels[4 * i] + b.pixels[4 * i + 1] + b.pixels[4 * i + 2]);
+  }
+  return pairs;
+}
+
 ShadowEffect shadowEffect(const fs::path& lit, const fs::path& shadowed, float darkerBelow) {
-  const ImageRgba32f a = engine::assets::readImage(lit);
-  const ImageRgba32f b = engine::assets::readImage(shadowed);
   ShadowEffect e;
-  if (a.pixels.size() != b.pixels.size()) return e;
-  e.pixels = a.pixels.size() / 4;
-  for (std::size_t i = 0; i < e.pixels; ++i) {
-    const float la = a.pixels[4 * i] + a.pixels[4 * i + 1] + a.pixels[4 * i + 2];
-    const float lb = b.pixels[4 * i] + b.pixels[4 * i + 1] + b.pixels[4 * i + 2];
+  for (const auto& [la, lb] : luminances(lit, shadowed)) {
     e.darker += lb < darkerBelow * la ? 1u : 0u;
     e.brighter += lb > 1.01f * la ? 1u : 0u;
+    ++e.pixels;
   }
   return e;
+}
+
+// Where the sun is in the god-ray test scenes' 160 x 90 frames (16:30, 55 degrees at noon, the
+// camera facing it): straight ahead in azimuth, 4 degrees above the view's 70-degree centre.
+const glm::vec2 kSunOnScreen(80.0f, 45.0f - 4.0f / 70.0f * 90.0f);
+
+// A pixel's centre in a 160-pixel-wide frame, from its index.
+glm::vec2 pixelCentre(std::size_t i) {
+  return {float(i % 160) + 0.5f, float(i / 160) + 0.5f};
 }
 
 // Clouds shadow the terrain: seen from above the layer, broken cumulus darkens the ground in
@@ -262,12 +283,8 @@ TEST(HeadlessCapture, GodRaysTakeTheShadowedHazeAwayTowardsTheSun) {
   ASSERT_EQ(runSample(common + none.string() + " --scene " + scene("god_rays_sunset_none.json")),
             0);
   ASSERT_EQ(runSample(common + rays.string() + " --scene " + scene("god_rays_sunset.json")), 0);
-  const ImageRgba32f a = engine::assets::readImage(none / "frame_0003.exr");
-  const ImageRgba32f b = engine::assets::readImage(rays / "frame_0003.exr");
-  ASSERT_EQ(a.pixels.size(), b.pixels.size());
-  // The sun's place on screen, from the scene's camera and the time of day (16:30, 55 degrees
-  // at noon): straight ahead in azimuth, 4 degrees above the view's centre.
-  const glm::vec2 sun(80.0f, 45.0f - 4.0f / 70.0f * 90.0f);
+  const auto pairs = luminances(none / "frame_0003.exr", rays / "frame_0003.exr");
+  ASSERT_FALSE(pairs.empty());
   std::size_t darker = 0;
   std::size_t brighter = 0;
   std::size_t belowHorizon = 0;
@@ -275,12 +292,11 @@ TEST(HeadlessCapture, GodRaysTakeTheShadowedHazeAwayTowardsTheSun) {
   double lostDistance = 0.0;
   double skyDistance = 0.0;
   std::size_t sky = 0;
-  const std::size_t pixels = a.pixels.size() / 4;
+  const std::size_t pixels = pairs.size();
   for (std::size_t i = 0; i < pixels; ++i) {
-    const float la = a.pixels[4 * i] + a.pixels[4 * i + 1] + a.pixels[4 * i + 2];
-    const float lb = b.pixels[4 * i] + b.pixels[4 * i + 1] + b.pixels[4 * i + 2];
-    const glm::vec2 p(float(i % 160) + 0.5f, float(i / 160) + 0.5f);
-    const double distance = glm::length(p - sun);
+    const auto [la, lb] = pairs[i];
+    const glm::vec2 p = pixelCentre(i);
+    const double distance = glm::length(p - kSunOnScreen);
     if (p.y < 60.0f) {  // above the ridge line
       skyDistance += distance;
       ++sky;
@@ -314,21 +330,17 @@ TEST(HeadlessCapture, WithoutHazeGodRaysGlowAroundTheSun) {
   ASSERT_EQ(runSample(common + none.string() + " --scene " + scene("god_rays_no_haze_none.json")),
             0);
   ASSERT_EQ(runSample(common + glow.string() + " --scene " + scene("god_rays_no_haze.json")), 0);
-  const ImageRgba32f a = engine::assets::readImage(none / "frame_0003.exr");
-  const ImageRgba32f b = engine::assets::readImage(glow / "frame_0003.exr");
-  ASSERT_EQ(a.pixels.size(), b.pixels.size());
-  const glm::vec2 sun(80.0f, 45.0f - 4.0f / 70.0f * 90.0f);
+  const auto pairs = luminances(none / "frame_0003.exr", glow / "frame_0003.exr");
+  ASSERT_FALSE(pairs.empty());
   std::size_t brighter = 0;
   std::size_t darker = 0;
   double gained = 0.0;
   double gainedDistance = 0.0;
   double allDistance = 0.0;
-  const std::size_t pixels = a.pixels.size() / 4;
+  const std::size_t pixels = pairs.size();
   for (std::size_t i = 0; i < pixels; ++i) {
-    const float la = a.pixels[4 * i] + a.pixels[4 * i + 1] + a.pixels[4 * i + 2];
-    const float lb = b.pixels[4 * i] + b.pixels[4 * i + 1] + b.pixels[4 * i + 2];
-    const double distance =
-        glm::length(glm::vec2(float(i % 160) + 0.5f, float(i / 160) + 0.5f) - sun);
+    const auto [la, lb] = pairs[i];
+    const double distance = glm::length(pixelCentre(i) - kSunOnScreen);
     allDistance += distance;
     brighter += lb > 1.03f * la ? 1u : 0u;
     darker += lb < 0.999f * la ? 1u : 0u;
@@ -371,16 +383,13 @@ TEST(HeadlessCapture, AScriptedStrikeGlowsAndLeavesNoGhost) {
   EXPECT_GT(during.darker, during.pixels / 50) << "the clouds glow around the strike";
   EXPECT_EQ(during.brighter, 0u) << "a flash only adds light";
   // The flash lights the ground too: the terrain in the lower third gains light.
-  const ImageRgba32f a = engine::assets::readImage(calm / "during.exr");
-  const ImageRgba32f b = engine::assets::readImage(struck / "during.exr");
+  const auto pairs = luminances(calm / "during.exr", struck / "during.exr");
   std::size_t litGround = 0;
-  for (std::size_t i = (a.pixels.size() / 4) * 2 / 3; i < a.pixels.size() / 4; ++i) {
-    const float la = a.pixels[4 * i] + a.pixels[4 * i + 1] + a.pixels[4 * i + 2];
-    const float lb = b.pixels[4 * i] + b.pixels[4 * i + 1] + b.pixels[4 * i + 2];
-    if (lb > 1.02f * la) ++litGround;
+  for (std::size_t i = pairs.size() * 2 / 3; i < pairs.size(); ++i) {
+    if (pairs[i].second > 1.02f * pairs[i].first) ++litGround;
   }
   std::printf("scripted strike: %zu ground pixels 2%% brighter\n", litGround);
-  EXPECT_GT(litGround, a.pixels.size() / 4 / 20) << "the flash lights the ground";
+  EXPECT_GT(litGround, pairs.size() / 20) << "the flash lights the ground";
   EXPECT_EQ(engine::assets::readImage(struck / "after.exr").pixels,
             engine::assets::readImage(calm / "after.exr").pixels)
       << "no glow left behind";

@@ -31,6 +31,13 @@ const detail::DeviceContext& checkedDevice(const detail::DeviceContext& device) 
   return device;
 }
 
+// A slot's uniform block, written by vkCmdUpdateBuffer in the frames that use it.
+detail::OwnedBuffer uniformBlock(const detail::DeviceContext& device, VkDeviceSize bytes,
+                                 const std::string& name) {
+  return detail::OwnedBuffer(
+      device, bytes, VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT, name);
+}
+
 detail::UniqueDescriptorPool makePool(const detail::DeviceContext& device, std::uint32_t frames) {
   // Fixed sets: 3 noise generators, 2 weather generators, 3 maxima. Per slot: 9 sets.
   const VkDescriptorPoolSize sizes[] = {
@@ -90,23 +97,17 @@ Context::Impl::Impl(const CreateInfo& info, const detail::VulkanFunctions& funct
     if (programs_.has(Program::Composite)) slot.composite = allocateSet(Program::Composite);
     slot.skyAmbient = allocateSet(Program::SkyAmbient);
     slot.weatherResample = allocateSet(Program::WeatherResample);
-    slot.shadowUniforms =
-        detail::OwnedBuffer(device_, sizeof(shader::CloudUniforms),
-                            VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT,
-                            "shadow uniforms " + std::to_string(i));
+    slot.shadowUniforms = uniformBlock(device_, sizeof(shader::CloudUniforms),
+                                       "shadow uniforms " + std::to_string(i));
     slot.shadowMap = allocateSet(Program::ShadowMap);
     slot.terrainShadow = allocateSet(Program::TerrainShadow);
-    slot.shadowParameters =
-        detail::OwnedBuffer(device_, sizeof(shader::MarchTerrainShadow),
-                            VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT,
-                            "shadow parameters " + std::to_string(i));
+    slot.shadowParameters = uniformBlock(device_, sizeof(shader::MarchTerrainShadow),
+                                         "shadow parameters " + std::to_string(i));
     slot.godRayOcclusion = allocateSet(Program::GodRayOcclusion);
     slot.godRays = allocateSet(Program::GodRays);
     slot.lightningGlow = allocateSet(Program::LightningGlow);
-    slot.godRayLight =
-        detail::OwnedBuffer(device_, sizeof(shader::GodRayLightUniforms),
-                            VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT,
-                            "god-ray light " + std::to_string(i));
+    slot.godRayLight = uniformBlock(device_, sizeof(shader::GodRayLightUniforms),
+                                    "god-ray light " + std::to_string(i));
   }
 }
 
@@ -189,10 +190,8 @@ void Context::Impl::prepare(const Settings& settings, VkExtent2D renderExtent) {
   if (settings.lightningFlashes > 0) {
     for (std::size_t i = 0; i < slots_.size(); ++i) {
       if (slots_[i].lightning.buffer() != VK_NULL_HANDLE) continue;
-      slots_[i].lightning =
-          detail::OwnedBuffer(device_, sizeof(shader::LightningUniforms),
-                              VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT,
-                              "lightning " + std::to_string(i));
+      slots_[i].lightning = uniformBlock(device_, sizeof(shader::LightningUniforms),
+                                         "lightning " + std::to_string(i));
     }
   }
   // Images retired before any frame used them can go now.

@@ -31,4 +31,11 @@ using vkfx::UniqueDescriptorPool;
 using vkfx::UniqueSampler;
 using vkfx::VulkanFunctions;
 
+// Where and how host passes may read the module's outputs (compute and fragment shaders, as
+// storage images or sampled): the stages and accesses the output barriers make them visible to.
+inline constexpr VkPipelineStageFlags2 kHostReadStages =
+    VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT | VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT;
+inline constexpr VkAccessFlags2 kHostReadAccess =
+    VK_ACCESS_2_SHADER_STORAGE_READ_BIT | VK_ACCESS_2_SHADER_SAMPLED_READ_BIT;
+
 }  // namespace clouds::detail

@@ -15,10 +15,8 @@ using detail::kStorageRead;
 using detail::kStorageWrite;
 using detail::Program;
 constexpr VkPipelineStageFlags2 kCompute = detail::kComputeStage;
-constexpr VkPipelineStageFlags2 kHostReadStages =
-    VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT | VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT;
-constexpr VkAccessFlags2 kHostReadAccess =
-    VK_ACCESS_2_SHADER_STORAGE_READ_BIT | VK_ACCESS_2_SHADER_SAMPLED_READ_BIT;
+using detail::kHostReadAccess;
+using detail::kHostReadStages;
 constexpr VkAccessFlags2 kSampledRead = VK_ACCESS_2_SHADER_SAMPLED_READ_BIT;
 constexpr VkPipelineStageFlags2 kTransfer = VK_PIPELINE_STAGE_2_TRANSFER_BIT;
 

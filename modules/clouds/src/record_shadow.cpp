@@ -16,11 +16,8 @@ using detail::Program;
 namespace {
 
 constexpr VkPipelineStageFlags2 kCompute = detail::kComputeStage;
-// Where host passes read the shadow map (sampled, in GENERAL).
-constexpr VkPipelineStageFlags2 kHostReadStages =
-    VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT | VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT;
-constexpr VkAccessFlags2 kHostReadAccess =
-    VK_ACCESS_2_SHADER_STORAGE_READ_BIT | VK_ACCESS_2_SHADER_SAMPLED_READ_BIT;
+using detail::kHostReadAccess;
+using detail::kHostReadStages;
 
 }  // namespace
 

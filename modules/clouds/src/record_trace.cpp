@@ -14,11 +14,8 @@ namespace {
 using detail::kStorageRead;
 using detail::kStorageWrite;
 constexpr VkPipelineStageFlags2 kCompute = detail::kComputeStage;
-// Where host passes may read the outputs.
-constexpr VkPipelineStageFlags2 kHostReadStages =
-    VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT | VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT;
-constexpr VkAccessFlags2 kHostReadAccess =
-    VK_ACCESS_2_SHADER_STORAGE_READ_BIT | VK_ACCESS_2_SHADER_SAMPLED_READ_BIT;
+using detail::kHostReadAccess;
+using detail::kHostReadStages;
 
 // The history variant of a frame: none, read in place (nothing moved) or reprojected.
 std::uint32_t historyVariant(bool use, bool still) {

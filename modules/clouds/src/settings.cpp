@@ -16,10 +16,9 @@ namespace {
 struct Checker {
   std::string error;
 
-  template <typename T>
-  void range(const char* field, T value, T lo, T hi) {
+  void range(const char* field, double value, double lo, double hi) {
     if (!error.empty()) return;
-    const bool finite = std::isfinite(static_cast<double>(value));
+    const bool finite = std::isfinite(value);
     if (!finite || value < lo || value > hi) {
       std::ostringstream out;
       out << "Settings." << field << " = " << value << ": must be in [" << lo << ", " << hi << "]";
@@ -120,6 +119,9 @@ std::span<const SettingRange> settingRanges() {
   };
   return ranges;
 }
+
+#undef CLOUDS_RANGE
+#undef CLOUDS_FIELD_TYPE
 
 }  // namespace detail
 
