@@ -6,6 +6,7 @@
 // gradient sky behind the fragment.
 #extension GL_GOOGLE_include_directive : require
 #include "scene_constants.h"
+#include "vkfx/lightning_light.h"
 
 layout(binding = 0, std140) uniform Frame { SceneFrame frame; };
 #include "terrain_lighting.glsl"
@@ -43,23 +44,26 @@ void main() {
   const vec3 albedo = terrainAlbedo(inColor, normal, world.y, detail, frame.terrain);
   vec3 lit = terrainLit(albedo, normal, sunVisibility());
   if (kLightning) {
-    // A lightning flash lights the ground: the glowing core of the cloud around it (a sixth of
-    // the glow's reach, where pow(1 - d / r, 12) is still a tenth) as a sphere of its radiance,
-    // whose irradiance at distance d is pi L (core / d)^2 (Lambert: albedo / pi of it).
-    const float core = frame.flash.w / 6.0f;
+    // A lightning flash lights the ground (vkfx/lightning_light.h): directly, the glowing core
+    // of the cloud around it as a sphere of its radiance, whose irradiance at distance d is
+    // pi L (core / d)^2 (Lambert: albedo / pi of it); and from the whole sky, the cloud the core
+    // lights, whichever way the ground faces the flash (the sky above: (1 + n.y) / 2 of it).
+    const float core = flashCoreMetres(frame.flash.w);
     const vec3 toFlash = frame.flash.xyz - inRelative;
     const float d2 = max(dot(toFlash, toFlash), core * core);
     const float facing = max(dot(normalize(normal), toFlash * inversesqrt(d2)), 0.0f);
-    lit += albedo * frame.flashRadiance.rgb * (core * core / d2 * facing);
+    const float skyView = 0.5f + 0.5f * normalize(normal).y;
+    const float sky = flashSkyLight(length(toFlash), frame.flash.w) * skyView;
+    lit += albedo * frame.flashRadiance.rgb * (core * core / d2 * facing + sky);
   }
 #ifdef TERRAIN_HAZED
   outColor = vec4(lit * inHaze.a + inHaze.rgb, 1.0f);
 #else
   const float distance = length(inRelative);
   const vec3 view = inRelative / max(distance, 1e-3f);
-  const vec3 sky = skyRadiance(view, frame.sunDirection.xyz, frame.skyZenith.rgb,
-                               frame.skyHorizon.rgb, frame.skyGround.rgb,
-                               frame.sunIlluminance.rgb, 0.0f);
+  const vec3 sky =
+      skyRadiance(view, frame.sunDirection.xyz, frame.skyZenith.rgb, frame.skyHorizon.rgb,
+                  frame.skyGround.rgb, frame.sunIlluminance.rgb, 0.0f);
   const float transmittance = exp(-frame.fog.x * distance);
   outColor = vec4(mix(sky, lit, transmittance), 1.0f);
 #endif

@@ -66,6 +66,7 @@ const uint kUpsampleHistoryOut = 7u;
 const uint kUpsampleAerialPerspective = 8u;  // the host's haze (FrameInputs::aerialPerspective)
 const uint kUpsampleLightningGlow = 10u;     // lightning_glow.comp's glow (lightningFlashes > 0)
 const uint kUpsampleGodRayLight = 9u;        // god_rays.comp's light (Settings::godRaySamples > 0)
+const uint kUpsampleLightningBolts = 11u;    // the bolts' pieces on screen (LightningBolts)
 // cloud_shadow_map.comp (binding 0: the CloudUniforms of the frame the map is made in)
 const uint kShadowShapeNoise = 1u;
 const uint kShadowWeatherMap = 2u;
@@ -125,7 +126,7 @@ const uint kSpecTemporalUpsampling = 0u;  // 0/1: accumulate the output-resoluti
 const uint kSpecOutputHistory = 1u;       // 0 none, 1 read in place (nothing moved), 2 reprojected
 const uint kSpecAerialPerspective = 2u;   // 0/1: haze the output (FrameInputs::aerialPerspective)
 const uint kSpecUpsampleGodRays = 3u;     // 0/1: add god_rays.comp's light to the sky's pixels
-const uint kSpecUpsampleLightning = 4u;   // 0/1: the clouds glow with LightningUniforms' flashes
+const uint kSpecUpsampleLightning = 4u;   // kLightningNone, kLightningGlow or kLightningBolts
 const uint kUpsampleSpecCount = 5u;
 // god_rays.comp
 const uint kSpecGodRayLight = 0u;  // kGodRaysMaskHaze or kGodRaysGlow
@@ -358,6 +359,27 @@ struct LightningUniforms {
   vec4 flash[2 * kMaxLightningFlashes];
 };
 
+// The lightning variants of kSpecUpsampleLightning: none, the clouds glow with this frame's
+// flashes, or they glow and the output also draws this frame's bolts.
+const uint kLightningNone = 0u;
+const uint kLightningGlow = 1u;
+const uint kLightningBolts = 2u;
+
+// The bolts' pieces on screen (upsample.comp, kUpsampleLightningBolts), a storage buffer the
+// module projects FrameInputs::lightningBolts into each frame: this header, then
+// kBoltVec4sPerSegment vec4s per piece, in output pixels (y down, as the shaders' pixels):
+//   [0] xy one end, zw the other;
+//   [1] x, y 1 / the ends' clip w (linear on screen, so interpolated exactly along the
+//       piece), z the glowing channel's width (m), w unused;
+//   [2] rgb the channel's radiance, w unused.
+struct LightningBoltsHeader {
+  uvec4 count;    // x the pieces on screen this frame
+  vec4 bounds;    // xy the lowest, zw the highest output pixel any piece covers
+  vec4 clipWRow;  // xyz the projection's w row (a view-space ray's clip w per metre along
+                  //   it), w the focal length (px): a width at clip w is width focal / w px
+};
+const uint kBoltVec4sPerSegment = 3u;
+
 // god_ray_occlusion.comp's push constants.
 struct GodRayOcclusionConstants {
   uvec2 maskExtent;  // texels: the render extent over kGodRayDownsample, rounded up
@@ -426,6 +448,7 @@ static_assert(sizeof(clouds::shader::MaximaConstants) == 16);
 static_assert(sizeof(clouds::shader::CompositeConstants) == 16);
 static_assert(sizeof(clouds::shader::GodRayOcclusionConstants) == 16);
 static_assert(sizeof(clouds::shader::LightningUniforms) == 16 + 32 * 16);
+static_assert(sizeof(clouds::shader::LightningBoltsHeader) == 3 * 16);
 static_assert(sizeof(clouds::shader::LightningUniforms) <= sizeof(clouds::shader::CloudUniforms),
               "without lightning the frame's uniforms stand in for its block");
 static_assert(sizeof(clouds::shader::GodRayLightUniforms) == 64 + 6 * 16);

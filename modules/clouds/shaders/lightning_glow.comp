@@ -3,7 +3,9 @@
 // flash never enters a history: the frame after it ends is as if it never was); the upsample
 // adds it, filtered, times each output pixel's cloud (1 - transmittance).
 // Nubis Evolved's glow term (Schneider 2022: potential pow(1 - d / r, 12), less where the cloud
-// is dense), per trace pixel at the clouds' transmittance-weighted depth along its ray. The
+// is dense) and the flash's sky light (vkfx/lightning_light.h: the core's inverse square, the
+// light that makes the whole deck flicker), per trace pixel at the clouds' transmittance-
+// weighted depth along its ray. The
 // local density of the seeds' pseudo-attenuation is that of the cloud the pixel sees into: its
 // optical depth (at most 1: an opaque cloud shows its outer skin) over its depth span (twice
 // the weighted depth past the front), exact for a thin uniform cloud.
@@ -11,6 +13,7 @@
 // LightningUniforms. Output: 3 the glow per unit of cloud (RGBA16F, trace res).
 #extension GL_GOOGLE_include_directive : require
 #include "cloud_temporal.h"
+#include "vkfx/lightning_light.h"
 
 layout(local_size_x = kWorkgroupSize2D, local_size_y = kWorkgroupSize2D) in;
 #include "frame_uniforms.glsl"
@@ -39,11 +42,10 @@ void main() {
     const float attenuation = 1.0f - saturate(density * 5.0f);
     for (uint i = 0u; i < lightning[slot].count.x; ++i) {
       const vec4 flash = lightning[slot].flash[2u * i];
-      const float reach = saturate(1.0f - length(cloud - flash.xyz) / flash.w);
-      const float reach4 = (reach * reach) * (reach * reach);
-      glow += lightning[slot].flash[2u * i + 1u].rgb * (reach4 * reach4 * reach4);
+      const float distance = length(cloud - flash.xyz);
+      const float core = flashGlow(distance, flash.w) * attenuation;
+      glow += lightning[slot].flash[2u * i + 1u].rgb * (core + flashSkyLight(distance, flash.w));
     }
-    glow *= attenuation;
   }
   imageStore(glowOut, ivec2(pixel), vec4(glow, 0.0f));
 }

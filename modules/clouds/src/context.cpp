@@ -38,6 +38,7 @@ using vkfx::checkExtent;
 using vkfx::extentText;
 using vkfx::fail;
 using vkfx::finite;
+using vkfx::finitePosition;
 using vkfx::nonNegative;
 using vkfx::succeed;
 
@@ -95,14 +96,36 @@ std::string checkFlashes(std::span<const LightningFlash> flashes, const Settings
   for (std::size_t i = 0; i < flashes.size(); ++i) {
     const LightningFlash& f = flashes[i];
     const std::string field = "FrameInputs.lightningFlashes[" + std::to_string(i) + "]";
-    if (!std::isfinite(f.positionMetres.x) || !std::isfinite(f.positionMetres.y) ||
-        !std::isfinite(f.positionMetres.z)) {
+    if (!finitePosition(f.positionMetres)) {
       return field + ".positionMetres: must be finite";
     }
     if (!std::isfinite(f.radiusMetres) || f.radiusMetres <= 0.0f) {
       return field + ".radiusMetres = " + std::to_string(f.radiusMetres) + ": must be > 0";
     }
     if (!finite(f.radiance) || !nonNegative(f.radiance)) {
+      return field + ".radiance: must be finite and not negative";
+    }
+  }
+  return {};
+}
+
+// This frame's bolts: no more pieces than the settings make room for, each finite.
+std::string checkBolts(std::span<const LightningBoltSegment> bolts, const Settings& settings) {
+  if (bolts.size() > settings.lightningBoltSegments) {
+    return "FrameInputs.lightningBolts: " + std::to_string(bolts.size()) +
+           " segments, more than Settings.lightningBoltSegments = " +
+           std::to_string(settings.lightningBoltSegments);
+  }
+  for (std::size_t i = 0; i < bolts.size(); ++i) {
+    const LightningBoltSegment& b = bolts[i];
+    const std::string field = "FrameInputs.lightningBolts[" + std::to_string(i) + "]";
+    if (!finitePosition(b.fromMetres) || !finitePosition(b.toMetres)) {
+      return field + ": fromMetres and toMetres must be finite";
+    }
+    if (!std::isfinite(b.widthMetres) || b.widthMetres <= 0.0f) {
+      return field + ".widthMetres = " + std::to_string(b.widthMetres) + ": must be > 0";
+    }
+    if (!finite(b.radiance) || !nonNegative(b.radiance)) {
       return field + ".radiance: must be finite and not negative";
     }
   }
@@ -212,6 +235,9 @@ bool Context::dispatch(const FrameInputs& inputs, const Settings& settings, Erro
     return fail(error, ErrorCode::InvalidSettings, problem);
   }
   if (std::string problem = checkFlashes(inputs.lightningFlashes, settings); !problem.empty()) {
+    return fail(error, ErrorCode::InvalidInputs, problem);
+  }
+  if (std::string problem = checkBolts(inputs.lightningBolts, settings); !problem.empty()) {
     return fail(error, ErrorCode::InvalidInputs, problem);
   }
   if (std::string missing = impl_->unprepared(settings, inputs.renderExtent); !missing.empty()) {

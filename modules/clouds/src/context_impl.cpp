@@ -38,13 +38,20 @@ detail::OwnedBuffer uniformBlock(const detail::DeviceContext& device, VkDeviceSi
       device, bytes, VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT, name);
 }
 
+// The bolts' buffer for `segments` pieces (none: 0).
+VkDeviceSize boltBytes(std::uint32_t segments) {
+  if (segments == 0) return 0;
+  return sizeof(shader::LightningBoltsHeader) +
+         VkDeviceSize{shader::kBoltVec4sPerSegment} * sizeof(glm::vec4) * segments;
+}
+
 detail::UniqueDescriptorPool makePool(const detail::DeviceContext& device, std::uint32_t frames) {
   // Fixed sets: 3 noise generators, 2 weather generators, 3 maxima. Per slot: 9 sets.
   const VkDescriptorPoolSize sizes[] = {
       {VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, 16 + 40 * frames},
       {VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 4 + 14 * frames},
       {VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 12 * frames},
-      {VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 4 * frames},
+      {VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 5 * frames},
   };
   VkDescriptorPoolCreateInfo info{VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO};
   info.maxSets = 8 + 13 * frames;
@@ -194,6 +201,16 @@ void Context::Impl::prepare(const Settings& settings, VkExtent2D renderExtent) {
                                          "lightning " + std::to_string(i));
     }
   }
+  // The bolts' buffer, only for settings that can have bolts.
+  if (settings.lightningBoltSegments > 0) {
+    const VkDeviceSize bytes = boltBytes(settings.lightningBoltSegments);
+    for (std::size_t i = 0; i < slots_.size(); ++i) {
+      if (slots_[i].bolts.size() >= bytes) continue;
+      slots_[i].bolts = detail::OwnedBuffer(
+          device_, bytes, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT,
+          "lightning bolts " + std::to_string(i));
+    }
+  }
   // Images retired before any frame used them can go now.
   images_.releaseRetired(lastFrameIndex_.value_or(0), info_.maxFramesInFlight);
 }
@@ -212,6 +229,12 @@ std::string Context::Impl::unprepared(const Settings& settings, VkExtent2D rende
   }
   if (!images_.shadowFits(shadowExtentFor(settings))) {
     return "the shadow map for these shadow settings";
+  }
+  for (const Slot& slot : slots_) {
+    if ((settings.lightningFlashes > 0 && slot.lightning.buffer() == VK_NULL_HANDLE) ||
+        slot.bolts.size() < boltBytes(settings.lightningBoltSegments)) {
+      return "the lightning buffers for these settings";
+    }
   }
   return {};
 }
@@ -377,7 +400,7 @@ MemoryUsage Context::Impl::memoryUsage() const {
   for (const Slot& slot : slots_) {
     usage.bufferBytes += slot.uniforms.bytes() + slot.counters.bytes() +
                          slot.shadowUniforms.bytes() + slot.shadowParameters.bytes() +
-                         slot.godRayLight.bytes() + slot.lightning.bytes();
+                         slot.godRayLight.bytes() + slot.lightning.bytes() + slot.bolts.bytes();
   }
   return usage;
 }

@@ -98,6 +98,7 @@ class Context::Impl {
     detail::OwnedBuffer godRayLight;  // god_rays.comp's GodRayLightUniforms
     detail::OwnedBuffer lightning;    // this frame's LightningUniforms (lightningFlashes > 0)
     VkDescriptorSet lightningGlow = VK_NULL_HANDLE;
+    detail::OwnedBuffer bolts;  // this frame's bolts on screen (lightningBoltSegments > 0)
   };
 
   VkDescriptorSet allocateSet(detail::Program program);
@@ -139,10 +140,12 @@ class Context::Impl {
                       const shader::MarchTerrainShadow* shadow);
   void recordSkyAmbient(VkCommandBuffer cmd, const FrameInputs& inputs, Slot& slot);
   void recordClearSky(VkCommandBuffer cmd, Slot& slot);
-  // The clouds' glow with this frame's flashes, from the reconstructed trace `traceSamples`;
-  // whether there was any (the upsample then adds it).
-  bool recordLightning(VkCommandBuffer cmd, const FrameInputs& inputs,
-                       const detail::OwnedImage& traceSamples, VkExtent2D traceExtent, Slot& slot);
+  // record_lightning.cpp: the clouds' glow with this frame's flashes, from the reconstructed
+  // trace `traceSamples`, and this frame's bolts on screen; the upsample's lightning variant
+  // (shader::kLightningNone, kLightningGlow or kLightningBolts).
+  std::uint32_t recordLightning(VkCommandBuffer cmd, const FrameInputs& inputs,
+                                const detail::OwnedImage& traceSamples, VkExtent2D traceExtent,
+                                Slot& slot);
   void recordTrace(VkCommandBuffer cmd, const FrameInputs& inputs, const Settings& settings,
                    const detail::TemporalFrame& temporal, VkExtent2D traceExtent,
                    bool terrainShadow, Slot& slot);

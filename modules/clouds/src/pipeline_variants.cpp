@@ -28,13 +28,13 @@ SpecializationKey reconstructKey(std::uint32_t history) {
 }
 
 SpecializationKey upsampleKey(bool temporalUpsampling, std::uint32_t outputHistory, bool hazed,
-                              bool godRays, bool lightning) {
+                              bool godRays, std::uint32_t lightning) {
   SpecializationKey key;
   key.values[shader::kSpecTemporalUpsampling] = temporalUpsampling ? 1u : 0u;
   key.values[shader::kSpecOutputHistory] = outputHistory;
   key.values[shader::kSpecAerialPerspective] = hazed ? 1u : 0u;
   key.values[shader::kSpecUpsampleGodRays] = godRays ? 1u : 0u;
-  key.values[shader::kSpecUpsampleLightning] = lightning ? 1u : 0u;
+  key.values[shader::kSpecUpsampleLightning] = lightning;
   key.count = shader::kUpsampleSpecCount;
   return key;
 }
@@ -68,11 +68,13 @@ std::vector<std::pair<Program, SpecializationKey>> variantsFor(const Settings& s
     if (!upsampling && history != shader::kHistoryNone) continue;
     for (bool hazed : {false, true}) {
       // With god rays, frames whose sun is off screen add no light; with lightning, frames
-      // without a flash glow with none.
+      // without a flash glow with none, and frames without a bolt draw none.
       for (bool godRays : {false, true}) {
         if (godRays && settings.godRaySamples == 0) continue;
-        for (bool lightning : {false, true}) {
-          if (lightning && settings.lightningFlashes == 0) continue;
+        for (std::uint32_t lightning :
+             {shader::kLightningNone, shader::kLightningGlow, shader::kLightningBolts}) {
+          if (lightning == shader::kLightningGlow && settings.lightningFlashes == 0) continue;
+          if (lightning == shader::kLightningBolts && settings.lightningBoltSegments == 0) continue;
           variants.emplace_back(Program::Upsample,
                                 upsampleKey(upsampling, history, hazed, godRays, lightning));
         }

@@ -18,9 +18,10 @@ SpecializationKey marchKey(const Settings& settings, bool workCounters, bool ter
 // `history`: kHistoryNone, kHistoryInPlace or kHistoryReprojected (cloud_types.h).
 SpecializationKey reconstructKey(std::uint32_t history);
 // `hazed`: the host gave an aerial perspective this frame; `godRays`: add the god rays' light;
-// `lightning`: the clouds glow with this frame's flashes.
+// `lightning`: kLightningNone, kLightningGlow (the clouds glow with this frame's flashes) or
+// kLightningBolts (and the output draws this frame's bolts).
 SpecializationKey upsampleKey(bool temporalUpsampling, std::uint32_t outputHistory, bool hazed,
-                              bool godRays, bool lightning);
+                              bool godRays, std::uint32_t lightning);
 
 // The god-ray mask and light, `light` shader::kGodRaysMaskHaze or kGodRaysGlow.
 SpecializationKey godRaysKey(std::uint32_t light);

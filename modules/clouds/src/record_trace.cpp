@@ -114,6 +114,8 @@ void Context::Impl::recordTrace(VkCommandBuffer cmd, const FrameInputs& inputs,
       .storageImage(kReconstructHistory, historyIn.view())
       .storageImage(kReconstructOut, historyOut.view())
       .commit();
+  const detail::OwnedBuffer& boltBuffer =
+      slot.bolts.buffer() != VK_NULL_HANDLE ? slot.bolts : slot.counters;
   detail::SetWriter(device_, slot.upsample)
       .uniformBuffer(kBindingUniforms, uniforms, uniformBytes)
       .storageImage(kUpsampleTraceSamples, historyOut.view())
@@ -126,12 +128,13 @@ void Context::Impl::recordTrace(VkCommandBuffer cmd, const FrameInputs& inputs,
       .sampledImage(kUpsampleAerialPerspective, hazed ? haze.view : im.hazePlaceholder.view(),
                     linearSampler_.get(),
                     hazed ? haze.layout : VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL)
-      // Without a flashes' block the frame's uniforms stand in: the variant never reads it.
+      // Without a glow or bolts, stand-ins: the variants without lightning never read them.
       .sampledImage(
           kUpsampleLightningGlow,
           im.lightningGlow ? im.lightningGlow.view() : im.depthPlaceholder.view(),
           linearSampler_.get(),
           im.lightningGlow ? VK_IMAGE_LAYOUT_GENERAL : VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL)
+      .storageBuffer(kUpsampleLightningBolts, boltBuffer.buffer(), boltBuffer.size())
       .sampledImage(
           kUpsampleGodRayLight, im.godRayLight ? im.godRayLight.view() : im.depthPlaceholder.view(),
           clampedLinearSampler_.get(),
@@ -180,7 +183,7 @@ void Context::Impl::recordTrace(VkCommandBuffer cmd, const FrameInputs& inputs,
 
   const bool godRays = settings.godRaySamples > 0 &&
                        recordGodRays(cmd, inputs, settings, historyOut, /*traced=*/true, slot);
-  const bool lightning = recordLightning(cmd, inputs, historyOut, traceExtent, slot);
+  const std::uint32_t lightning = recordLightning(cmd, inputs, historyOut, traceExtent, slot);
 
   beginPass(cmd, detail::Pass::Upsample, "clouds: upsample");
   const std::uint32_t outputHistory = historyVariant(temporal.useOutputHistory, temporal.still);
@@ -219,46 +222,6 @@ void Context::Impl::recordClearSky(VkCommandBuffer cmd, Slot& slot) {
                           VK_PIPELINE_STAGE_2_HOST_BIT, VK_ACCESS_2_HOST_READ_BIT);
   }
   endPass(cmd, detail::Pass::ClearSky);
-}
-
-// This frame's flashes into the slot's block (camera-relative), then the glow they give the
-// reconstructed clouds; whether there are any flashes.
-bool Context::Impl::recordLightning(VkCommandBuffer cmd, const FrameInputs& inputs,
-                                    const detail::OwnedImage& traceSamples, VkExtent2D traceExtent,
-                                    Slot& slot) {
-  if (inputs.lightningFlashes.empty() || slot.lightning.buffer() == VK_NULL_HANDLE) return false;
-  shader::LightningUniforms block{};
-  block.count.x = static_cast<std::uint32_t>(inputs.lightningFlashes.size());
-  for (std::size_t i = 0; i < inputs.lightningFlashes.size(); ++i) {
-    const LightningFlash& flash = inputs.lightningFlashes[i];
-    const glm::vec3 relative(flash.positionMetres - inputs.cameraPosition);
-    block.flash[2 * i] = glm::vec4(relative, flash.radiusMetres);
-    block.flash[2 * i + 1] = glm::vec4(flash.radiance, 0.0f);
-  }
-  beginPass(cmd, detail::Pass::Lightning, "clouds: lightning");
-  // The slot's previous frame has completed (host contract); earlier commands may still read
-  // the block and the glow.
-  detail::memoryBarrier(
-      device_, cmd, kHostReadStages | kCompute, VK_ACCESS_2_UNIFORM_READ_BIT | kHostReadAccess,
-      VK_PIPELINE_STAGE_2_TRANSFER_BIT | kCompute, VK_ACCESS_2_TRANSFER_WRITE_BIT | kStorageWrite);
-  device_.fn().vkCmdUpdateBuffer(cmd, slot.lightning.buffer(), 0, sizeof(block), &block);
-  detail::memoryBarrier(device_, cmd, VK_PIPELINE_STAGE_2_TRANSFER_BIT,
-                        VK_ACCESS_2_TRANSFER_WRITE_BIT, kCompute, VK_ACCESS_2_UNIFORM_READ_BIT);
-  detail::SetWriter(device_, slot.lightningGlow)
-      .uniformBuffer(shader::kBindingUniforms, slot.uniforms.buffer(),
-                     sizeof(shader::CloudUniforms))
-      .storageImage(shader::kGlowTraceSamples, traceSamples.view())
-      .uniformBuffer(shader::kGlowFlashes, slot.lightning.buffer(),
-                     sizeof(shader::LightningUniforms))
-      .storageImage(shader::kGlowOut, images_.lightningGlow.view())
-      .commit();
-  bindAndDispatch(cmd, Program::LightningGlow, programs_[Program::LightningGlow].find(),
-                  slot.lightningGlow, traceExtent.width, traceExtent.height);
-  detail::barrier(device_, cmd, images_.lightningGlow.image(), VK_IMAGE_LAYOUT_GENERAL,
-                  VK_IMAGE_LAYOUT_GENERAL, kCompute, kStorageWrite, kCompute,
-                  VK_ACCESS_2_SHADER_SAMPLED_READ_BIT);
-  endPass(cmd, detail::Pass::Lightning);
-  return true;
 }
 
 }  // namespace clouds

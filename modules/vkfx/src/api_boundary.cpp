@@ -17,6 +17,10 @@ bool finite(const glm::vec3& v) {
   return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
 }
 
+bool finitePosition(const glm::dvec3& v) {
+  return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
+}
+
 bool nonNegative(const glm::vec3& v) {
   return v.x >= 0.0f && v.y >= 0.0f && v.z >= 0.0f;
 }

@@ -177,6 +177,8 @@ LightningDescription readLightning(const JsonReader& r) {
   s.seed = static_cast<std::uint32_t>(r.integer("seed", 0, 0xffffffffLL, s.seed));
   s.groundFraction = r.number("groundFraction", 0.0, 1.0, s.groundFraction);
   s.radiance = float(r.number("radiance", 0.0, 1e6, s.radiance));
+  s.groundAltitudeMetres =
+      r.number("groundAltitudeMetres", -1000.0, 10000.0, s.groundAltitudeMetres);
   r.finish();
   return l;
 }

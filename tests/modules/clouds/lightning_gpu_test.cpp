@@ -1,8 +1,9 @@
-// The clouds' lightning glow on lavapipe (FrameInputs::lightningFlashes): a flash inside an
-// overcast makes the cloud near it glow and leaves the cloud beyond its reach exactly as it
-// was; the frame after a flash equals, to the bit, the frame of a renderer that never saw it
-// (the glow never enters the temporal history); hard cases stay finite; without room for
-// flashes in the settings a flash is refused by name. Validation-clean.
+// The clouds' lightning on lavapipe (FrameInputs::lightningFlashes, lightningBolts): a flash
+// inside an overcast makes the cloud near it glow and lights the cloud beyond its reach with
+// its sky light alone; a bolt is a line of its energy, hidden by nearer geometry and dimmed
+// behind cloud; the frame after a flash equals, to the bit, the frame of a renderer that never
+// saw it (neither glow nor bolt enters the temporal history); hard cases stay finite; without room
+// for flashes or bolts in the settings they are refused by name. Validation-clean.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -11,6 +12,7 @@
 #include "cloud_gpu_fixture.h"
 #include "cloud_harness.h"
 #include "gpu_test.h"
+#include "vkfx/lightning_light.h"
 
 namespace {
 
@@ -68,7 +70,8 @@ TEST_F(Lightning, AFlashMakesTheCloudNearItGlow) {
   const glm::dvec3 flash = flashAhead().positionMetres - dark.position;
   std::size_t brighter = 0;
   std::size_t beyond = 0;
-  std::size_t beyondChanged = 0;
+  std::size_t beyondLit = 0;
+  double worstSkyLightError = 0.0;
   std::size_t darker = 0;
   double gain = 0.0;
   for (std::uint32_t y = 0; y < kExtent.height; ++y) {
@@ -84,20 +87,29 @@ TEST_F(Lightning, AFlashMakesTheCloudNearItGlow) {
       const double depth = before.depth[i].y;
       const glm::dvec3 cloud = glm::dvec3(rays.direction(x, y)) * depth;
       if (depth > 0.0 && glm::length(cloud - flash) > 4000.0 * 1.05) {
+        // Beyond the glow's reach the cloud has the flash's sky light alone, as much of it as
+        // there is cloud.
         ++beyond;
-        beyondChanged += b != a ? 1 : 0;
+        beyondLit += b > a ? 1 : 0;
+        const double sky = vkfx::shader::flashSkyLight(float(glm::length(cloud - flash)), 4000.0f);
+        const double expected = (1.0 - double(before.radiance[i].a)) * sky * 1300.0 / 3.0;
+        // The output is half floats: each of a and b is off by up to 2^-11 of itself.
+        const double rounding = std::ldexp(std::max(a, b), -11) * 2.0;
+        worstSkyLightError =
+            std::max(worstSkyLightError, (std::abs(b - a - expected) - rounding) / expected);
       }
     }
   }
   const std::size_t pixels = std::size_t{kExtent.width} * kExtent.height;
   std::printf(
       "flash: %zu of %zu pixels 20%% brighter, mean gain %.3f; %zu beyond its reach, "
-      "%zu of them changed\n",
-      brighter, pixels, gain / double(pixels), beyond, beyondChanged);
+      "%zu of them lit, worst error of their sky light %.4f\n",
+      brighter, pixels, gain / double(pixels), beyond, beyondLit, worstSkyLightError);
   EXPECT_GT(brighter, pixels / 10);
   EXPECT_EQ(darker, 0u);
   EXPECT_GT(beyond, 0u);
-  EXPECT_EQ(beyondChanged, 0u) << "no glow beyond the flash's reach";
+  EXPECT_EQ(beyondLit, beyond) << "the flash's sky light reaches the whole deck";
+  EXPECT_LT(worstSkyLightError, 0.01) << "beyond its reach, the sky light alone";
 }
 
 // With temporal reuse (1 pixel in 16 marched a frame), a flash on one frame must leave nothing
@@ -176,6 +188,172 @@ TEST_F(Lightning, NoLightningNoBuffer) {
   s.lightningFlashes = 4;
   none.render(underTheOvercast(), s, kExtent);
   EXPECT_GT(none.memoryUsage().bufferBytes, without) << "the flashes' blocks";
+}
+
+// Looking level from 300 m up, a bolt straight ahead: from inside the cloud (base 1.5 km) down
+// through the screen's centre column, `distance` metres ahead, `yEnd` its lower end.
+CloudView lookingAtTheBolt() {
+  CloudView view = underTheOvercast();
+  view.pitchDegrees = 0.0;
+  return view;
+}
+
+clouds::LightningBoltSegment boltAhead(double distance, double yStart, double yEnd) {
+  clouds::LightningBoltSegment piece;
+  piece.fromMetres = {0.0, yStart, -distance};
+  piece.toMetres = {0.0, yEnd, -distance};
+  piece.radiance = glm::vec3(1e4f);
+  piece.widthMetres = 3.0f;
+  return piece;
+}
+
+clouds::Settings withBolts(clouds::Settings s) {
+  s.lightningBoltSegments = 8;
+  return s;
+}
+
+// The light a bolt adds to each output row (summed across the row), and the pixels it
+// changes outside the centre columns.
+struct BoltRows {
+  std::vector<double> light;
+  std::size_t outside = 0;
+};
+
+BoltRows boltRows(const CloudFrame& with, const CloudFrame& without) {
+  BoltRows rows;
+  rows.light.assign(kExtent.height, 0.0);
+  for (std::uint32_t y = 0; y < kExtent.height; ++y) {
+    for (std::uint32_t x = 0; x < kExtent.width; ++x) {
+      const std::size_t i = std::size_t{y} * kExtent.width + x;
+      const double added = luminance(with.radiance[i]) - luminance(without.radiance[i]);
+      rows.light[y] += added;
+      if (added != 0.0 && (x < kExtent.width / 2 - 2 || x > kExtent.width / 2 + 1)) ++rows.outside;
+    }
+  }
+  return rows;
+}
+
+// Below the cloud, a bolt thinner than a pixel is a line of its energy: each row gains its
+// radiance times its width over the pixel's footprint, in the centre columns only; inside the
+// cloud, less (seen through it).
+TEST_F(Lightning, ABoltIsALineOfItsEnergy) {
+  const clouds::Settings s = withBolts(clouds::tools::singleFrame(overcast()));
+  CloudView view = lookingAtTheBolt();
+  harness().cut();
+  const CloudFrame without = harness().render(view, s, kExtent);
+  view.lightningBolts = {boltAhead(3000.0, 2500.0, 0.0)};
+  harness().cut();
+  const CloudFrame with = harness().render(view, s, kExtent);
+  ASSERT_TRUE(test::allValid(with));
+  const BoltRows rows = boltRows(with, without);
+  EXPECT_EQ(rows.outside, 0u) << "the bolt is a line down the centre";
+  // The centre row looks at the bolt 3 km ahead, square on: a pixel there is 3 km times the
+  // angle it spans.
+  const double pixelMetres = 3000.0 * 2.0 * std::tan(glm::radians(35.0)) / kExtent.height;
+  const double expected = 1e4 * 3.0 / pixelMetres;
+  const std::uint32_t centre = kExtent.height / 2;
+  std::printf("bolt: centre row gains %.2f (expected %.2f)\n", rows.light[centre], expected);
+  EXPECT_NEAR(rows.light[centre], expected, 0.02 * expected) << "its energy, not more or less";
+  // The row that sees the bolt at 1.9 km, 400 m inside the cloud's base (1.5 km): there it is
+  // seen through the cloud.
+  const double up = (1900.0 - view.position.y) / 3000.0;  // tangent of the angle above level
+  const auto inCloud =
+      centre - std::uint32_t(0.5 * kExtent.height * up / std::tan(glm::radians(35.0)));
+  std::printf("bolt: row %u (in the cloud) gains %.2f\n", inCloud, rows.light[inCloud]);
+  EXPECT_LT(rows.light[inCloud], 0.5 * expected) << "the cloud in front dims it";
+}
+
+// Geometry nearer than a bolt hides it: below a flat ground, a bolt shows without the ground
+// in the depth buffer and not at all with it.
+TEST_F(Lightning, GeometryNearerThanABoltHidesIt) {
+  const clouds::Settings s = withBolts(clouds::tools::singleFrame(overcast()));
+  for (bool ground : {false, true}) {
+    CloudView view = lookingAtTheBolt();
+    view.groundDepth = ground;
+    harness().cut();
+    const CloudFrame without = harness().render(view, s, kExtent);
+    view.lightningBolts = {boltAhead(3000.0, -100.0, -1500.0)};
+    harness().cut();
+    const CloudFrame with = harness().render(view, s, kExtent);
+    double light = 0.0;
+    for (double row : boltRows(with, without).light) light += row;
+    if (ground) {
+      EXPECT_EQ(light, 0.0) << "the ground in front hides it";
+    } else {
+      EXPECT_GT(light, 100.0) << "without the ground it shows";
+    }
+  }
+}
+
+// A bolt on three frames leaves nothing in the temporal history.
+TEST_F(Lightning, TheFrameAfterABoltIsAsIfItNeverWas) {
+  clouds::Settings s = withBolts(clouds::settingsFor(clouds::Quality::Medium, overcast()));
+  clouds::tools::CloudHarness bolted(device(), kExtent);
+  clouds::tools::CloudHarness never(device(), kExtent);
+  CloudView view = lookingAtTheBolt();
+  for (int frame = 0; frame < 12; ++frame) {
+    CloudView withBolt = view;
+    if (frame >= 6 && frame < 9) {
+      withBolt.lightningFlashes = {flashAhead()};
+      withBolt.lightningBolts = {boltAhead(3000.0, 2500.0, 0.0)};
+    }
+    const CloudFrame a = bolted.render(withBolt, s, kExtent);
+    const CloudFrame b = never.render(view, s, kExtent);
+    if (frame == 7) {
+      EXPECT_NE(a.radiance, b.radiance) << "the bolt shows while it lasts";
+    }
+    if (frame == 9) {
+      EXPECT_EQ(a.radiance, b.radiance) << "nothing of it left in the history";
+      EXPECT_EQ(a.depth, b.depth);
+    }
+    view.timeSeconds += 1.0 / 30.0;
+  }
+}
+
+TEST_F(Lightning, BoltHardCasesStayFinite) {
+  const clouds::Settings s = withBolts(clouds::tools::singleFrame(overcast()));
+  const CloudView base = lookingAtTheBolt();
+  const glm::dvec3 eye = base.position;
+  struct Case {
+    const char* name;
+    glm::dvec3 from;
+    glm::dvec3 to;
+  };
+  const Case cases[] = {
+      {"through the camera", eye + glm::dvec3(0.0, 500.0, 0.0), eye - glm::dvec3(0.0, 500.0, 0.0)},
+      {"from behind to ahead", eye + glm::dvec3(0.0, 0.0, 500.0),
+       eye - glm::dvec3(0.0, 0.0, 500.0)},
+      {"behind the camera", eye + glm::dvec3(0.0, 0.0, 500.0), eye + glm::dvec3(10.0, 0.0, 900.0)},
+      {"a point", {0.0, 300.0, -1000.0}, {0.0, 300.0, -1000.0}},
+      {"1000 km long", {-1e6, 300.0, -1000.0}, {1e6, 300.0, -1000.0}},
+      {"1000 km away", {0.0, 3000.0, -1e6}, {0.0, 0.0, -1e6}},
+      {"at the near plane", eye + glm::dvec3(-1.0, 0.0, -0.01), eye + glm::dvec3(1.0, 0.0, -0.01)}};
+  for (const Case& c : cases) {
+    CloudView view = base;
+    clouds::LightningBoltSegment piece = boltAhead(0.0, 0.0, 0.0);
+    piece.fromMetres = c.from;
+    piece.toMetres = c.to;
+    piece.radiance = glm::vec3(1e9f);
+    view.lightningBolts = {piece, piece};
+    harness().cut();
+    const CloudFrame frame = harness().render(view, s, kExtent);
+    EXPECT_TRUE(test::allValid(frame)) << c.name;
+  }
+}
+
+TEST_F(Lightning, BoltsNeedRoomInTheSettings) {
+  clouds::Settings s = withBolts(clouds::tools::singleFrame(overcast()));
+  CloudView view = lookingAtTheBolt();
+  view.lightningBolts.assign(9, boltAhead(3000.0, 2500.0, 0.0));
+  const std::string many = harness().tryRender(view, s, kExtent);
+  EXPECT_NE(many.find("FrameInputs.lightningBolts: 9 segments"), std::string::npos) << many;
+  view.lightningBolts.resize(2);
+  view.lightningBolts[1].widthMetres = 0.0f;
+  const std::string thin = harness().tryRender(view, s, kExtent);
+  EXPECT_NE(thin.find("FrameInputs.lightningBolts[1].widthMetres"), std::string::npos) << thin;
+  s.lightningFlashes = 0;
+  EXPECT_NE(clouds::validateSettings(s).find("Settings.lightningBoltSegments = 8"),
+            std::string::npos);
 }
 
 }  // namespace

@@ -2,7 +2,8 @@
 // clock (the same at any frame rate, different for another seed, at the storm's rate), a
 // strike's return strokes light it and then it is dark, the "lightning" system sends an event
 // per strike and keeps the ones in progress, a trigger strikes at once, the clouds' inputs get
-// the brightest flashes there is room for, and a scene without a storm has no system.
+// the brightest flashes and the whole bolts there is room for, a ground strike's bolt is a
+// branching channel to the ground, and a scene without a storm has no system.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -179,7 +180,86 @@ TEST(Lightning, NoStormNoSystemNoRoom) {
   EXPECT_FALSE(clouds::ecs::installLightning(world, scheduler));
   EXPECT_FALSE(world.ctx().has<clouds::ecs::ActiveLightning>());
   EXPECT_EQ(clouds::ecs::cloudSettings(world).lightningFlashes, 0u);
+  EXPECT_EQ(clouds::ecs::cloudSettings(world).lightningBoltSegments, 0u);
   EXPECT_TRUE(clouds::ecs::lightningFlashes(world, 8).empty());
+  EXPECT_TRUE(clouds::ecs::lightningBolts(world, 128).empty());
+}
+
+// A ground discharge's bolt: a pure function of the strike, a connected channel from its
+// charge to the ground with dimmer branches off it; nothing for an intra-cloud strike.
+TEST(Lightning, AGroundStrikeDrawsABranchingBoltToTheGround) {
+  LightningStrike strike;
+  strike.kind = clouds::ecs::StrikeKind::Ground;
+  strike.positionMetres = {1000.0, 2500.0, -3000.0};
+  strike.groundAltitudeMetres = 150.0;
+  strike.seed = 42;
+  const auto bolt = clouds::ecs::boltSegments(strike, 1.0f);
+  ASSERT_FALSE(bolt.empty());
+  ASSERT_LE(bolt.size(), std::size_t{clouds::ecs::kBoltSegments});
+  EXPECT_EQ(bolt.front().fromMetres, strike.positionMetres) << "from the charge";
+  // The channel: pieces end to end down to the ground, the brightest.
+  std::size_t channel = 1;
+  while (channel < bolt.size() && bolt[channel].fromMetres == bolt[channel - 1].toMetres) {
+    ++channel;
+  }
+  EXPECT_GE(channel, 16u);
+  EXPECT_EQ(bolt[channel - 1].toMetres.y, 150.0) << "to the ground";
+  const glm::dvec3 offset = bolt[channel - 1].toMetres - strike.positionMetres;
+  EXPECT_LE(std::hypot(offset.x, offset.z), 0.25 * 2350.0 * std::sqrt(2.0));
+  EXPECT_GT(bolt.size(), channel) << "branches";
+  for (std::size_t i = channel; i < bolt.size(); ++i) {
+    EXPECT_LT(bolt[i].radiance.b, bolt[0].radiance.b) << "branches are dimmer";
+    EXPECT_GT(bolt[i].widthMetres, 0.0f);
+  }
+  // Jagged, not straight: some piece leans away from the vertical.
+  double lean = 0.0;
+  for (std::size_t i = 0; i < channel; ++i) {
+    const glm::dvec3 d = bolt[i].toMetres - bolt[i].fromMetres;
+    lean = std::max(lean, std::hypot(d.x, d.z) / std::max(std::abs(d.y), 1e-9));
+  }
+  EXPECT_GT(lean, 0.3);
+  // The same strike, the same bolt; another seed, another.
+  const auto again = clouds::ecs::boltSegments(strike, 1.0f);
+  ASSERT_EQ(again.size(), bolt.size());
+  for (std::size_t i = 0; i < bolt.size(); ++i) EXPECT_EQ(again[i].toMetres, bolt[i].toMetres);
+  LightningStrike other = strike;
+  other.seed = 43;
+  EXPECT_NE(clouds::ecs::boltSegments(other, 1.0f)[1].fromMetres, bolt[1].fromMetres);
+  // Twice the brightness, twice the radiance.
+  EXPECT_FLOAT_EQ(clouds::ecs::boltSegments(strike, 2.0f)[0].radiance.b, 2.0f * bolt[0].radiance.b);
+  // None within the cloud only, none when dark, none from below the ground.
+  LightningStrike inCloud = strike;
+  inCloud.kind = clouds::ecs::StrikeKind::IntraCloud;
+  EXPECT_TRUE(clouds::ecs::boltSegments(inCloud, 1.0f).empty());
+  EXPECT_TRUE(clouds::ecs::boltSegments(strike, 0.0f).empty());
+  LightningStrike underground = strike;
+  underground.groundAltitudeMetres = 3000.0;
+  EXPECT_TRUE(clouds::ecs::boltSegments(underground, 1.0f).empty());
+}
+
+// The clouds' inputs get the bolts of the ground strikes in progress, whole, as many as fit.
+TEST(Lightning, TheCloudsGetWholeBoltsThatFit) {
+  StormWorld w;
+  w.world.get<LightningStorm>(w.stormEntity).strikesPerMinute = 0.0;
+  ASSERT_TRUE(clouds::ecs::installLightning(w.world, w.scheduler));
+  EXPECT_EQ(clouds::ecs::cloudSettings(w.world).lightningBoltSegments,
+            clouds::ecs::kLightningBoltSegments);
+  w.world.events<clouds::ecs::TriggerLightning>().send(
+      clouds::ecs::TriggerLightning{1.0f, clouds::ecs::StrikeKind::IntraCloud});
+  w.frame(1.0 / 30.0);
+  EXPECT_TRUE(clouds::ecs::lightningBolts(w.world, 128).empty()) << "no bolt inside the cloud";
+  for (int i = 0; i < 3; ++i) {
+    w.world.events<clouds::ecs::TriggerLightning>().send(
+        clouds::ecs::TriggerLightning{1.0f, clouds::ecs::StrikeKind::Ground});
+  }
+  w.frame(1.0 / 30.0);
+  const std::size_t one = clouds::ecs::lightningBolts(w.world, clouds::ecs::kBoltSegments).size();
+  EXPECT_GT(one, 0u);
+  EXPECT_LE(one, std::size_t{clouds::ecs::kBoltSegments});
+  const std::size_t all = clouds::ecs::lightningBolts(w.world, 100000).size();
+  EXPECT_GT(all, one) << "three bolts";
+  EXPECT_LE(clouds::ecs::lightningBolts(w.world, 128).size(), 128u);
+  EXPECT_TRUE(clouds::ecs::lightningBolts(w.world, 0).empty()) << "no room, no bolt";
 }
 
 }  // namespace

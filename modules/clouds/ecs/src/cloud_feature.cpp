@@ -136,6 +136,8 @@ void CloudFeature::dispatch(const HostFrame& host) {
   clouds::FrameInputs inputs = cloudFrameInputs(world_, frame);
   flashes_ = lightningFlashes(world_, settings_.lightningFlashes);
   inputs.lightningFlashes = flashes_;
+  bolts_ = lightningBolts(world_, settings_.lightningBoltSegments);
+  inputs.lightningBolts = bolts_;
   dispatched_ = context_->dispatch(inputs, settings_, &error);
   if (dispatched_) {
     world_.ctx().get<CloudStatus>().lastError.clear();

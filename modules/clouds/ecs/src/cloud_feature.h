@@ -56,10 +56,11 @@ class CloudFeature final : public engine::render::RenderFeature {
   std::uint32_t framesInFlight_;
   std::unique_ptr<engine::gfx::Image> weatherMap_;  // the layer's painted map, if any
   std::unique_ptr<clouds::Context> context_;
-  clouds::Settings settings_;                    // this frame's, decided in prepare()
-  std::vector<clouds::LightningFlash> flashes_;  // this frame's (FrameInputs points at them)
-  clouds::Outputs imported_;                     // the outputs the graph imported
-  bool castsShadow_ = false;                     // the layer's settings have a shadow map
+  clouds::Settings settings_;                        // this frame's, decided in prepare()
+  std::vector<clouds::LightningFlash> flashes_;      // this frame's (FrameInputs points at them)
+  std::vector<clouds::LightningBoltSegment> bolts_;  // likewise
+  clouds::Outputs imported_;                         // the outputs the graph imported
+  bool castsShadow_ = false;                         // the layer's settings have a shadow map
   // This frame's shadow-map parameters, filled when "cloud shadows" executes.
   engine::render::CloudShadowParameterBlock shadowParameters_{};
   bool shadowRemadeWhole_ = false;  // every cascade was made this frame

@@ -16,8 +16,10 @@ clouds::Settings cloudSettings(engine::ecs::World& world) {
   world.view<const CloudLayer>().each(
       [&](const CloudLayer& layer) { layerSettings = layer.settings; });
   // A scene with a storm makes room for its flashes (and so for the glow's code).
-  world.view<const LightningStorm>().each(
-      [&](const LightningStorm&) { layerSettings.lightningFlashes = kLightningFlashes; });
+  world.view<const LightningStorm>().each([&](const LightningStorm&) {
+    layerSettings.lightningFlashes = kLightningFlashes;
+    layerSettings.lightningBoltSegments = kLightningBoltSegments;
+  });
   clouds::Settings settings = layerSettings;
   world.view<const render::Camera>().each([&](engine::ecs::Entity entity, const render::Camera&) {
     if (const auto* quality = world.tryGet<const CloudQuality>(entity)) {
@@ -50,6 +52,22 @@ std::vector<clouds::LightningFlash> lightningFlashes(engine::ecs::World& world,
             });
   if (flashes.size() > capacity) flashes.resize(capacity);
   return flashes;
+}
+
+std::vector<clouds::LightningBoltSegment> lightningBolts(engine::ecs::World& world,
+                                                         std::uint32_t capacity) {
+  std::vector<clouds::LightningBoltSegment> pieces;
+  const auto* active = world.ctx().tryGet<ActiveLightning>();
+  if (active == nullptr) return pieces;
+  const double now = world.ctx().get<engine::ecs::FrameTime>().elapsedSeconds;
+  for (const LightningStrike& strike : active->strikes) {
+    const std::vector<clouds::LightningBoltSegment> bolt =
+        boltSegments(strike, strikeEnvelope(strike, now) * strike.energy);
+    // Whole bolts only, while there is room.
+    if (pieces.size() + bolt.size() > capacity) break;
+    pieces.insert(pieces.end(), bolt.begin(), bolt.end());
+  }
+  return pieces;
 }
 
 clouds::FrameInputs cloudFrameInputs(engine::ecs::World& world, const HostFrame& host) {

@@ -53,6 +53,8 @@ std::vector<LightningStrike> strikesBetween(const LightningStorm& storm, double 
       s.strokes = 3u + (uniform(key, 4) < 0.5 ? 1u : 0u);
       s.durationSeconds = 0.2 + 0.3 * uniform(key, 5);
       s.radiance = storm.radiance;
+      s.seed = static_cast<std::uint32_t>(mix(key ^ 6u));
+      s.groundAltitudeMetres = storm.groundAltitudeMetres;
       strikes.push_back(s);
     }
   }
@@ -73,6 +75,89 @@ float strikeEnvelope(const LightningStrike& strike, double seconds) {
     brightness += std::exp(-since / kStrokeDecaySeconds) / double(k + 1);
   }
   return float(std::clamp(brightness, 0.0, 1.0));
+}
+
+namespace {
+
+// A bolt's channel: radiance over the flash's glow (a channel outshines the cloud it lights by
+// orders of magnitude; this keeps it white at any exposure the glow reads at), its width (m),
+// and a branch's share of both.
+constexpr float kChannelRadiance = 100.0f;
+constexpr float kChannelWidthMetres = 3.0f;
+constexpr float kBranchShare = 0.35f;
+constexpr std::uint32_t kMainPieces = 32;   // a power of two (midpoint displacement)
+constexpr std::uint32_t kBranchPieces = 8;  // likewise
+constexpr std::uint32_t kBranches = (kBoltSegments - kMainPieces) / kBranchPieces;
+
+// A point in [-1, 1]^3 from a key and a stream.
+glm::dvec3 jitter(std::uint64_t key, std::uint64_t stream) {
+  return glm::dvec3(uniform(key, 3 * stream), uniform(key, 3 * stream + 1),
+                    uniform(key, 3 * stream + 2)) *
+             2.0 -
+         1.0;
+}
+
+// `pieces` + 1 points from `from` to `to`, each midpoint moved sideways by up to `roughness` of
+// its span (less vertically): a jagged channel.
+std::vector<glm::dvec3> jaggedPath(glm::dvec3 from, glm::dvec3 to, std::uint32_t pieces,
+                                   double roughness, std::uint64_t key) {
+  std::vector<glm::dvec3> points(pieces + 1);
+  points.front() = from;
+  points.back() = to;
+  for (std::uint32_t step = pieces / 2; step >= 1; step /= 2) {
+    for (std::uint32_t i = step; i < pieces; i += 2 * step) {
+      const glm::dvec3 a = points[i - step];
+      const glm::dvec3 b = points[i + step];
+      const glm::dvec3 offset = jitter(key, i) * glm::dvec3(1.0, 0.3, 1.0);
+      points[i] = 0.5 * (a + b) + offset * (roughness * glm::length(b - a));
+    }
+  }
+  return points;
+}
+
+void appendPath(const std::vector<glm::dvec3>& points, glm::vec3 radiance, float widthMetres,
+                std::vector<clouds::LightningBoltSegment>& out) {
+  for (std::size_t i = 0; i + 1 < points.size(); ++i) {
+    out.push_back({points[i], points[i + 1], radiance, widthMetres});
+  }
+}
+
+}  // namespace
+
+std::vector<clouds::LightningBoltSegment> boltSegments(const LightningStrike& strike,
+                                                       float brightness) {
+  std::vector<clouds::LightningBoltSegment> segments;
+  if (strike.kind != StrikeKind::Ground || !(brightness > 0.0f) ||
+      !(strike.positionMetres.y > strike.groundAltitudeMetres)) {
+    return segments;
+  }
+  const std::uint64_t key = mix(strike.seed);
+  const double height = strike.positionMetres.y - strike.groundAltitudeMetres;
+  // Where it meets the ground: within a quarter of its height around the charge.
+  const glm::dvec3 drift = jitter(key, 1000) * (0.25 * height);
+  const glm::dvec3 ground(strike.positionMetres.x + drift.x, strike.groundAltitudeMetres,
+                          strike.positionMetres.z + drift.z);
+  const std::vector<glm::dvec3> channel =
+      jaggedPath(strike.positionMetres, ground, kMainPieces, 0.2, key);
+  const glm::vec3 radiance =
+      glm::vec3(0.9f, 0.92f, 1.0f) * (strike.radiance * kChannelRadiance * brightness);
+  appendPath(channel, radiance, kChannelWidthMetres, segments);
+  // Branches off the channel's upper two thirds, down and outwards, a fifth to a third of its
+  // height long.
+  for (std::uint32_t b = 0; b < kBranches; ++b) {
+    const std::uint64_t branchKey = mix(key ^ (b + 1));
+    const auto start = static_cast<std::size_t>(2.0 + uniform(branchKey, 0) * (kMainPieces * 0.6));
+    const glm::dvec3 along = glm::normalize(channel[start + 1] - channel[start]);
+    glm::dvec3 sideways = jitter(branchKey, 1);
+    sideways.y = 0.0;
+    const glm::dvec3 direction =
+        glm::normalize(along + 1.2 * sideways / std::max(glm::length(sideways), 1e-6));
+    const double length = height * (0.2 + 0.13 * uniform(branchKey, 2));
+    const std::vector<glm::dvec3> branch = jaggedPath(
+        channel[start], channel[start] + direction * length, kBranchPieces, 0.25, branchKey);
+    appendPath(branch, radiance * kBranchShare, kChannelWidthMetres * kBranchShare, segments);
+  }
+  return segments;
 }
 
 bool installLightning(engine::ecs::World& world, engine::ecs::Scheduler& scheduler) {
@@ -103,6 +188,9 @@ bool installLightning(engine::ecs::World& world, engine::ecs::Scheduler& schedul
             strike.kind = t.kind;
             strike.startSeconds = now;
             strike.radiance = s.radiance;
+            strike.seed = static_cast<std::uint32_t>(mix(mix(s.seed) ^ started.size()) ^
+                                                     std::uint64_t(now * 1000.0));
+            strike.groundAltitudeMetres = s.groundAltitudeMetres;
             started.push_back(strike);
           }
         });

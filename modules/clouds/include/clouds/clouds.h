@@ -308,6 +308,10 @@ struct Settings {
   // How many flashes the clouds can glow with at once. 0: no glow code in any pipeline, no
   // buffer; a frame's flashes must then be none.
   std::uint32_t lightningFlashes = 0;  // [0, 16]
+  // How many straight segments of lightning bolts (FrameInputs::lightningBolts) the output can
+  // draw at once (with lightningFlashes > 0). 0: no bolt code in any pipeline, no buffer; a
+  // frame's bolts must then be none.
+  std::uint32_t lightningBoltSegments = 0;  // [0, 256]
 };
 
 // Quality presets, cheapest first; Reference is referenceSettings().
@@ -339,6 +343,20 @@ struct LightningFlash {
   glm::dvec3 positionMetres{0.0};  // world, where the charge glows (inside the cloud)
   float radiusMetres = 3000.0f;    // > 0, finite
   glm::vec3 radiance{0.0f};        // >= 0, finite: in the host's radiometric units
+};
+
+// A straight piece of a lightning bolt (a ground discharge's channel and its branches, as many
+// pieces as the host cuts it into). The radiance output shows it as a line `widthMetres` wide,
+// drawn at full resolution over everything it is in front of: hidden by the host's geometry
+// nearer than it, behind the clouds as much as they let through when they are nearer, and
+// hazed like the clouds (FrameInputs::aerialPerspective). A line thinner than a pixel keeps its
+// energy: its radiance times the share of the pixel it covers. Like the flashes, nothing of a
+// bolt is kept from frame to frame.
+struct LightningBoltSegment {
+  glm::dvec3 fromMetres{0.0};  // world, finite
+  glm::dvec3 toMetres{0.0};    // world, finite
+  glm::vec3 radiance{0.0f};    // >= 0, finite: the channel's, in the host's radiometric units
+  float widthMetres = 2.0f;    // > 0, finite: the glowing channel's width
 };
 
 struct FrameInputs {
@@ -415,6 +433,8 @@ struct FrameInputs {
   // This frame's lightning flashes, at most Settings::lightningFlashes (the span's memory need
   // only last through the call that takes these inputs).
   std::span<const LightningFlash> lightningFlashes;
+  // This frame's lightning bolts, at most Settings::lightningBoltSegments pieces (likewise).
+  std::span<const LightningBoltSegment> lightningBolts;
 
   double timeSeconds = 0.0;  // >= 0; drives wind and weather evolution
   // The host's frame number, increasing by one per frame: picks the per-frame slot

@@ -159,6 +159,7 @@ clouds::FrameInputs CloudHarness::makeInputs(const CloudView& view, VkExtent2D e
   in.aerialPerspective = view.aerialPerspective;
   in.terrain = view.terrain;
   in.lightningFlashes = view.lightningFlashes;
+  in.lightningBolts = view.lightningBolts;
   in.frameIndex = frameIndex_;
   in.reset = cutNext_;
   return in;

@@ -47,6 +47,8 @@ struct CloudView {
   clouds::FrameInputs::Terrain terrain;
   // This frame's lightning flashes (FrameInputs::lightningFlashes).
   std::vector<clouds::LightningFlash> lightningFlashes;
+  // This frame's lightning bolts (FrameInputs::lightningBolts).
+  std::vector<clouds::LightningBoltSegment> lightningBolts;
 };
 
 glm::vec3 sunDirection(const CloudView& view);

@@ -56,6 +56,7 @@ bool guarded(ModuleError* error, const char* module, Work&& work) {
 
 bool finite(const glm::mat4& m);
 bool finite(const glm::vec3& v);
+bool finitePosition(const glm::dvec3& v);
 bool nonNegative(const glm::vec3& v);
 std::string extentText(VkExtent2D extent);  // "WxH"
 

@@ -46,6 +46,16 @@ inline constexpr std::uint32_t kLightningFlashes = 8;
 std::vector<clouds::LightningFlash> lightningFlashes(engine::ecs::World& world,
                                                      std::uint32_t capacity);
 
+// Bolt pieces that may be drawn at once in a scene with a storm (Settings::
+// lightningBoltSegments): two bolts.
+inline constexpr std::uint32_t kLightningBoltSegments = 128;
+
+// The bolts of the ground discharges in progress (ActiveLightning) at this frame's time, at
+// their return strokes' brightness: whole bolts, oldest first, as many as `capacity` pieces
+// hold.
+std::vector<clouds::LightningBoltSegment> lightningBolts(engine::ecs::World& world,
+                                                         std::uint32_t capacity);
+
 // This frame's inputs. The module remembers the previous camera itself. The sun reaching the
 // clouds is the Sun through the world's SunTransmittance at the layer's middle altitude (the
 // atmosphere's, when the scene has one: sunset clouds are lit by the sun its air reddens); their

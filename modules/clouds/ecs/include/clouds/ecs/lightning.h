@@ -9,6 +9,7 @@
 #include <glm/glm.hpp>
 #include <vector>
 
+#include "clouds/clouds.h"
 #include "engine/ecs/scheduler.h"
 #include "engine/ecs/world.h"
 
@@ -24,8 +25,9 @@ struct LightningStorm {
   std::vector<LightningCell> cells;
   double strikesPerMinute = 6.0;  // each cell's mean rate (a Poisson process)
   std::uint32_t seed = 1;
-  double groundFraction = 0.3;  // the share of strikes that discharge to the ground
-  float radiance = 400.0f;      // the glow's radiance at a strike's peak (the host's units)
+  double groundFraction = 0.3;        // the share of strikes that discharge to the ground
+  float radiance = 400.0f;            // the glow's radiance at a strike's peak (the host's units)
+  double groundAltitudeMetres = 0.0;  // where ground discharges' bolts end (terrain hides the rest)
 };
 
 enum class StrikeKind : std::uint32_t { IntraCloud, Ground };
@@ -40,7 +42,9 @@ struct LightningStrike {
   double startSeconds = 0.0;
   double durationSeconds = 0.3;
   std::uint32_t strokes = 3;
-  float radiance = 400.0f;  // the storm's, at the peak of a stroke
+  float radiance = 400.0f;            // the storm's, at the peak of a stroke
+  std::uint32_t seed = 0;             // the shape of a ground discharge's bolt
+  double groundAltitudeMetres = 0.0;  // the storm's: where the bolt ends
 };
 
 // A strike asked for now (a script's event, a key): at the storm's first cell.
@@ -65,6 +69,15 @@ std::vector<LightningStrike> strikesBetween(const LightningStorm& storm, double 
 // A strike's brightness at `seconds` in [0, 1]: its return strokes, each a sharp rise and a
 // 25 ms decay, 50 ms apart, the later ones weaker; 0 before it starts and after it ends.
 float strikeEnvelope(const LightningStrike& strike, double seconds);
+
+// A ground discharge's bolt, as straight pieces at `brightness` (its envelope times its
+// energy): the channel from the strike's charge down to the storm's ground altitude, jagged
+// by midpoint displacement, and a few dimmer branches off its upper part; a pure function of
+// the strike (its seed). Nothing for an intra-cloud strike or no brightness.
+// kBoltSegments pieces at most.
+inline constexpr std::uint32_t kBoltSegments = 64;
+std::vector<clouds::LightningBoltSegment> boltSegments(const LightningStrike& strike,
+                                                       float brightness);
 
 // Adds the "lightning" system (Simulate) when the world has a LightningStorm: it reads the
 // frame clock and TriggerLightning events, sends a LightningStrike event for each strike that
