@@ -57,8 +57,13 @@ STRIKES_SCRIPT = os.path.join(ROOT, "tests", "sample_game", "scripts",
                               "strikes_every_8_frames.json")
 STORM_EFFECT = "lightning"
 FLASH_EFFECT = "lightning, a flash always active"
+# The same with ground discharges: each flash with its bolt.
+GROUND_STRIKES_SCRIPT = os.path.join(ROOT, "tests", "sample_game", "scripts",
+                                     "ground_strikes_every_8_frames.json")
+BOLT_EFFECT = "lightning, a ground strike and its bolt always active"
 # Extra comparisons: (effect, the scene with it, its script, the scene without it).
-EXTRA = [(SUN_EFFECT, "sun in view"), (STORM_EFFECT, "storm"), (FLASH_EFFECT, "flashing")]
+EXTRA = [(SUN_EFFECT, "sun in view"), (STORM_EFFECT, "storm"), (FLASH_EFFECT, "flashing"),
+         (BOLT_EFFECT, "bolting")]
 
 
 def pipeline_items(pipelines):
@@ -138,7 +143,9 @@ def main():
                      ("storm", storm, lambda s: None),
                      (STORM_EFFECT, storm, without("lightning")),
                      ("flashing", calm, lambda s: None),
-                     (FLASH_EFFECT, calm, without("lightning"))]
+                     (FLASH_EFFECT, calm, without("lightning")),
+                     ("bolting", calm, lambda s: None),
+                     (BOLT_EFFECT, calm, without("lightning"))]
         for name, source, edit in variants:
             scene = copy.deepcopy(source)
             edit(scene)
@@ -146,6 +153,7 @@ def main():
             with open(paths[name], "w") as f:
                 json.dump(scene, f)
         SCRIPTS[paths["flashing"]] = STRIKES_SCRIPT
+        SCRIPTS[paths["bolting"]] = GROUND_STRIKES_SCRIPT
         described = {name: describe(path) for name, path in paths.items()}
         times = {name: [] for name in paths}
         memory = {}
@@ -201,7 +209,8 @@ def main():
         "God rays and lightning are also measured where they work: looking into the sun (the "
         "god-ray test scene), and in the thunderstorm scene (`assets_src/scenes/thunderstorm.json`)"
         " at its own strike rate and in a storm with a flash always in progress (strikes a script "
-        "asks for every 8 frames), each against the same scene without the effect.",
+        "asks for every 8 frames; then ground strikes, each drawing its bolt), each against the "
+        "same scene without the effect.",
         "",
         "An effect a scene leaves out costs it nothing it can be charged with: the passes and "
         "pipelines above are absent from the scene without it (an effect inside a module, such "

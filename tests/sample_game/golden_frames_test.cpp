@@ -49,6 +49,10 @@ std::vector<GoldenRun> goldenRuns() {
       {tests / "scenes/ridge_sunset.json", tests / "scripts/golden_shadow_views.json"},
       // A scripted lightning strike glowing in a storm's clouds.
       {tests / "scenes/storm_calm.json", tests / "scripts/golden_strike_views.json"},
+      // The thunderstorm scene (cells from the weather, dense cumulonimbus at dusk) with a
+      // scripted ground strike: its bolt, its glow and the ground it lights.
+      {fs::path(SAMPLE_ASSET_DIR) / "scenes/thunderstorm.json",
+       tests / "scripts/golden_thunderstorm_views.json"},
   };
 }
 

@@ -92,6 +92,28 @@ TEST(Scenes, AtmosphereFogAndExposureArriveInTheDescription) {
   EXPECT_FALSE(fogged.atmosphere.has_value());
 }
 
+// A storm whose cells the weather places: found where it holds cumulonimbus, the ones given
+// otherwise.
+TEST(Scenes, AStormsCellsComeFromTheWeatherOrTheScene) {
+  const sample::SceneDescription found = loadSceneDescription(writeScene("storm.json", R"({
+    "name": "s", "camera": {"position": [5000, 1100, -10000]},
+    "clouds": {"coverage": 0.55, "cloudType": 1.0, "noiseSeed": 12},
+    "lightning": {"cellsFromWeather": {"count": 2, "withinMetres": 14000, "radiusMetres": 3000},
+                  "groundAltitudeMetres": 150}})"));
+  ASSERT_TRUE(found.lightning.has_value());
+  ASSERT_EQ(found.lightning->storm.cells.size(), 2u);
+  EXPECT_EQ(found.lightning->storm.cells[0].radiusMetres, 3000.0f);
+  EXPECT_EQ(found.lightning->storm.groundAltitudeMetres, 150.0);
+  const glm::dvec3 cell = found.lightning->storm.cells[0].positionMetres;
+  EXPECT_GE(clouds::proceduralWeatherAt(found.clouds->settings, 12, {cell.x, cell.z}, 0.0).type,
+            0.75f);
+  const sample::SceneDescription given = loadSceneDescription(writeScene("storm_given.json", R"({
+    "name": "s", "camera": {"position": [0, 1, 0]}, "clouds": {},
+    "lightning": {"cells": [{"position": [1, 2000, 3], "radiusMetres": 700}]}})"));
+  ASSERT_EQ(given.lightning->storm.cells.size(), 1u);
+  EXPECT_EQ(given.lightning->storm.cells[0].positionMetres, glm::dvec3(1, 2000, 3));
+}
+
 TEST(Scenes, MalformedScenesNameFilePathAndReason) {
   struct Case {
     const char* file;
@@ -150,6 +172,29 @@ TEST(Scenes, MalformedScenesNameFilePathAndReason) {
       {"fogrange.json",
        R"({"name": "x", "camera": {"position": [0, 1, 0]}, "fog": {"densityPerMetre": -1}})",
        "fog.densityPerMetre: must be in [0, 0.01], got -1"},
+      {"lightning_no_clouds.json",
+       R"({"name": "x", "camera": {"position": [0, 1, 0]},
+           "lightning": {"cells": [{"position": [0, 2000, 0]}]}})",
+       "lightning: lightning glows in clouds: the scene has none"},
+      {"lightning_no_cells.json",
+       R"({"name": "x", "camera": {"position": [0, 1, 0]}, "clouds": {}, "lightning": {}})",
+       "lightning.cells: a storm needs either cells or cellsFromWeather"},
+      {"lightning_both.json",
+       R"({"name": "x", "camera": {"position": [0, 1, 0]}, "clouds": {},
+           "lightning": {"cells": [{"position": [0, 2000, 0]}], "cellsFromWeather": {}}})",
+       "lightning.cells: a storm needs either cells or cellsFromWeather"},
+      {"lightning_count.json",
+       R"({"name": "x", "camera": {"position": [0, 1, 0]}, "clouds": {},
+           "lightning": {"cellsFromWeather": {"count": 99}}})",
+       "lightning.cellsFromWeather.count: must be in [1, 16], got 99"},
+      {"lightning_no_cumulonimbus.json",
+       R"({"name": "x", "camera": {"position": [0, 1, 0]}, "clouds": {"cloudType": 0.3},
+           "lightning": {"cellsFromWeather": {}}})",
+       "lightning.cellsFromWeather: no cumulonimbus within"},
+      {"lightning_ground.json",
+       R"({"name": "x", "camera": {"position": [0, 1, 0]}, "clouds": {},
+           "lightning": {"cells": [{"position": [0, 2000, 0]}], "groundAltitudeMetres": 1e6}})",
+       "lightning.groundAltitudeMetres: must be in [-1000, 10000], got 1e+06"},
       {"atmospherequality.json",
        R"({"name": "x", "camera": {"position": [0, 1, 0], "atmosphereQuality": "ultra"}})",
        "camera.atmosphereQuality: must be one of low, medium, high, reference"},

@@ -55,6 +55,8 @@ const uint kMarchCloudShadowParameters = 11u;  // its CloudShadowParameters (uni
 const uint kReconstructFresh = 1u;
 const uint kReconstructHistory = 2u;
 const uint kReconstructOut = 3u;
+const uint kReconstructFlashes = 4u;  // LightningUniforms (a stand-in without lightning)
+const uint kReconstructGlow = 5u;     // RGBA16F glow per unit of cloud (lightningFlashes > 0)
 // upsample.comp
 const uint kUpsampleTraceSamples = 1u;
 const uint kUpsampleHostDepth = 2u;
@@ -64,9 +66,8 @@ const uint kUpsampleFresh = 5u;
 const uint kUpsampleHistory = 6u;
 const uint kUpsampleHistoryOut = 7u;
 const uint kUpsampleAerialPerspective = 8u;  // the host's haze (FrameInputs::aerialPerspective)
-const uint kUpsampleLightningGlow = 10u;     // lightning_glow.comp's glow (lightningFlashes > 0)
+const uint kUpsampleLightningGlow = 10u;     // reconstruct.comp's glow (lightningFlashes > 0)
 const uint kUpsampleGodRayLight = 9u;        // god_rays.comp's light (Settings::godRaySamples > 0)
-const uint kUpsampleLightningBolts = 11u;    // the bolts' pieces on screen (LightningBolts)
 // cloud_shadow_map.comp (binding 0: the CloudUniforms of the frame the map is made in)
 const uint kShadowShapeNoise = 1u;
 const uint kShadowWeatherMap = 2u;
@@ -80,10 +81,12 @@ const uint kTerrainShadowMap = 1u;     // the cascade atlas: its terrain channel
 // composite.comp
 const uint kCompositeHostColor = 0u;
 const uint kCompositeClouds = 1u;
-// lightning_glow.comp (binding 0: the frame's CloudUniforms)
-const uint kGlowTraceSamples = 1u;  // the reconstructed trace image (packed)
-const uint kGlowFlashes = 2u;       // LightningUniforms
-const uint kGlowOut = 3u;           // RGBA16F at the trace resolution
+// lightning_bolts.comp (binding 0: the frame's CloudUniforms)
+const uint kBoltsHostDepth = 1u;
+const uint kBoltsRadiance = 2u;           // the clouds' radiance output, read and written
+const uint kBoltsDepth = 3u;              // the clouds' depths output
+const uint kBoltsAerialPerspective = 4u;  // the host's haze (a placeholder without one)
+const uint kBoltsPieces = 5u;             // LightningBoltsHeader and its words
 // god_ray_occlusion.comp (binding 0: the frame's CloudUniforms)
 const uint kGodRayTraceSamples = 1u;   // the reconstructed trace image (packed)
 const uint kGodRaySceneDistance = 2u;  // the conservative scene distance (trace res)
@@ -120,14 +123,18 @@ const uint kSpecTerrainShadow = 7u;       // 0/1: the terrain's shadow takes the
 const uint kMarchSpecCount = 8u;
 // reconstruct.comp
 const uint kSpecHistory = 0u;  // 0 none, 1 read in place (nothing moved), 2 reprojected
-const uint kReconstructSpecCount = 1u;
+const uint kSpecReconstructLightning = 1u;  // 0/1: write the glow with this frame's flashes
+const uint kReconstructSpecCount = 2u;
 // upsample.comp
 const uint kSpecTemporalUpsampling = 0u;  // 0/1: accumulate the output-resolution history
 const uint kSpecOutputHistory = 1u;       // 0 none, 1 read in place (nothing moved), 2 reprojected
 const uint kSpecAerialPerspective = 2u;   // 0/1: haze the output (FrameInputs::aerialPerspective)
 const uint kSpecUpsampleGodRays = 3u;     // 0/1: add god_rays.comp's light to the sky's pixels
-const uint kSpecUpsampleLightning = 4u;   // kLightningNone, kLightningGlow or kLightningBolts
+const uint kSpecUpsampleLightning = 4u;   // 0/1: the clouds glow with LightningUniforms' flashes
 const uint kUpsampleSpecCount = 5u;
+// lightning_bolts.comp
+const uint kSpecBoltsAerialPerspective = 0u;  // 0/1: haze them (FrameInputs::aerialPerspective)
+const uint kBoltsSpecCount = 1u;
 // god_rays.comp
 const uint kSpecGodRayLight = 0u;  // kGodRaysMaskHaze or kGodRaysGlow
 const uint kGodRaySpecCount = 1u;
@@ -350,7 +357,7 @@ using vkfx::shader::GodRayParameters;  // god_rays.comp's push constants
 using vkfx::shader::kGodRayDownsample;
 #endif
 
-// The flashes the clouds glow with this frame (lightning_glow.comp, kGlowFlashes), a uniform
+// The flashes the clouds glow with this frame (reconstruct.comp, kReconstructFlashes), a uniform
 // block: flash i is flash[2 i] (xyz camera-relative position (m), w radius (m)) and
 // flash[2 i + 1] (rgb radiance, w unused).
 const uint kMaxLightningFlashes = 16u;
@@ -359,26 +366,43 @@ struct LightningUniforms {
   vec4 flash[2 * kMaxLightningFlashes];
 };
 
-// The lightning variants of kSpecUpsampleLightning: none, the clouds glow with this frame's
-// flashes, or they glow and the output also draws this frame's bolts.
-const uint kLightningNone = 0u;
-const uint kLightningGlow = 1u;
-const uint kLightningBolts = 2u;
+// lightning_bolts.comp's push constants: whether its workgroups are the 8 x 8 pixel blocks
+// listed in the buffer (the blocks of the tiles that hold pieces), or, when those are too many
+// to list, a grid over the bolts' bounds from `origin` (output pixels).
+struct LightningBoltsConstants {
+  uvec2 origin;
+  uint listedBlocks;  // 0/1
+  uint padding0;
+};
 
-// The bolts' pieces on screen (upsample.comp, kUpsampleLightningBolts), a storage buffer the
-// module projects FrameInputs::lightningBolts into each frame: this header, then
-// kBoltVec4sPerSegment vec4s per piece, in output pixels (y down, as the shaders' pixels):
+// The bolts' pieces on screen (lightning_bolts.comp, kBoltsPieces), a storage buffer the
+// module projects FrameInputs::lightningBolts into each frame: this header, then 32-bit words.
+// Piece i is the kBoltWordsPerSegment words from kBoltWordsPerSegment i, three vec4s in output
+// pixels (y down, as the shaders' pixels):
 //   [0] xy one end, zw the other;
 //   [1] x, y 1 / the ends' clip w (linear on screen, so interpolated exactly along the
 //       piece), z the glowing channel's width (m), w unused;
 //   [2] rgb the channel's radiance, w unused.
+// The pieces are binned into square tiles from `bounds.xy` (so a pixel tests only the pieces
+// near it): tile (x, y), t = y columns + x, has the pieces whose indices are words
+// [tiles.y + first, tiles.y + first + n), first and n the words tiles.x + 2 t and + 1. The
+// tiles that hold pieces are listed as 8 x 8 pixel blocks, x | y << 16 in blocks, from word
+// tiles.z, tiles.w of them (none when more than kBoltMaxBlocks).
 struct LightningBoltsHeader {
-  uvec4 count;    // x the pieces on screen this frame
-  vec4 bounds;    // xy the lowest, zw the highest output pixel any piece covers
+  uvec4 count;    // x the pieces on screen this frame; y, z the tiles' columns and rows; w a
+                  //   tile's side (px, a multiple of 8)
+  uvec4 tiles;    // x the first word of the tiles' ranges, y that of the pieces' indices, z
+                  //   that of the blocks, w how many blocks
+  vec4 bounds;    // xy the tiles' origin (a multiple of 8 px) at or below the lowest output
+                  //   pixel any piece covers, zw the highest
   vec4 clipWRow;  // xyz the projection's w row (a view-space ray's clip w per metre along
                   //   it), w the focal length (px): a width at clip w is width focal / w px
 };
-const uint kBoltVec4sPerSegment = 3u;
+const uint kBoltWordsPerSegment = 12u;
+// At most this many tiles and pieces' indices in them (coarser tiles when more would be needed).
+const uint kBoltMaxTiles = 1024u;
+const uint kBoltMaxTileIndices = 4096u;
+const uint kBoltMaxBlocks = 4096u;
 
 // god_ray_occlusion.comp's push constants.
 struct GodRayOcclusionConstants {
@@ -448,7 +472,7 @@ static_assert(sizeof(clouds::shader::MaximaConstants) == 16);
 static_assert(sizeof(clouds::shader::CompositeConstants) == 16);
 static_assert(sizeof(clouds::shader::GodRayOcclusionConstants) == 16);
 static_assert(sizeof(clouds::shader::LightningUniforms) == 16 + 32 * 16);
-static_assert(sizeof(clouds::shader::LightningBoltsHeader) == 3 * 16);
+static_assert(sizeof(clouds::shader::LightningBoltsHeader) == 4 * 16);
 static_assert(sizeof(clouds::shader::LightningUniforms) <= sizeof(clouds::shader::CloudUniforms),
               "without lightning the frame's uniforms stand in for its block");
 static_assert(sizeof(clouds::shader::GodRayLightUniforms) == 64 + 6 * 16);

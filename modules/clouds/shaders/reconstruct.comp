@@ -6,9 +6,14 @@
 //    far as the reprojection is uncertain;
 //  - no usable history (reset, cut, resize, jump, relight, inside the layer, off-screen,
 //    not finite): bilinear from this frame's fresh samples (never black, never a smear).
-// Inputs: 0 CloudUniforms; 1 this frame's marched samples; 2 last frame's result.
-// Output: 3 this frame's result (read by upsample.comp and next frame). All trace-resolution
-// packed samples (cloud_temporal.h).
+// With lightning (kSpecReconstructLightning) it also writes the clouds' glow with this frame's
+// flashes per unit of cloud (cloud_lightning.glsl), which the upsample adds: made from the
+// result but kept out of it, so no flash enters a history.
+// Inputs: 0 CloudUniforms; 1 this frame's marched samples; 2 last frame's result; 4 this
+// frame's flashes (LightningUniforms). Outputs: 3 this frame's result (read by upsample.comp and
+// next frame), all trace-resolution packed samples (cloud_temporal.h); 5 the glow (RGBA16F).
+// (Computing the glow here rather than in a pass of its own saves that pass's invocations,
+// which cost on lavapipe whatever they do: 0.2 ms at 640x360, Medium.)
 // Reference: Schneider 2015 (1-in-16 reprojection); Karis 2014 (neighbourhood clamp).
 #extension GL_GOOGLE_include_directive : require
 #include "cloud_temporal.h"
@@ -18,12 +23,18 @@ layout(local_size_x = kWorkgroupSize2D, local_size_y = kWorkgroupSize2D) in;
 // (read in place, unclamped: exact), 2 reprojected. Every path of a shader costs on lavapipe,
 // which runs both sides of a branch, so what a frame does not need is compiled out.
 layout(constant_id = kSpecHistory) const uint kHistory = 2u;
+// 1: lightning: the glow with this frame's flashes is written too.
+layout(constant_id = kSpecReconstructLightning) const uint kLightning = 0u;
 #include "frame_uniforms.glsl"
 layout(binding = kReconstructFresh, rgba32ui) uniform readonly uimage2D freshSamples;
 layout(binding = kReconstructHistory, rgba32ui) uniform readonly uimage2D history;
 layout(binding = kReconstructOut, rgba32ui) uniform writeonly uimage2D outSamples;
+// Indexed like frame_uniforms.glsl's block, for the same reason (the flash loop's bound).
+layout(binding = kReconstructFlashes, std140) uniform Lightning { LightningUniforms lightning[1]; };
+layout(binding = kReconstructGlow, rgba16f) uniform writeonly image2D glowOut;
 
 #include "cloud_march.h"
+#include "cloud_lightning.glsl"
 
 ivec2 clampPixel(ivec2 p) { return clamp(p, ivec2(0), ivec2(u.traceExtent) - 1); }
 
@@ -110,4 +121,8 @@ void main() {
     resultDepth = fresh ? currentDepth : historyDepth;
   }
   imageStore(outSamples, ivec2(pixel), packCloudSample(result, resultDepth));
+  if (kLightning != 0u) {
+    const vec3 ray = pixelRayDirection(vec2(pixel) + 0.5f, vec2(u.traceExtent), u);
+    imageStore(glowOut, ivec2(pixel), vec4(flashLightPerCloud(ray, result.a, resultDepth), 0.0f));
+  }
 }

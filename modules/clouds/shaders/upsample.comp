@@ -22,7 +22,7 @@
 // Inputs: 0 CloudUniforms; 1 reconstructed samples (trace res, packed: cloud_temporal.h);
 // 2 host depth; 5 this frame's marched samples (trace res); 6 last frame's output history;
 // 8 the host's aerial perspective (3D); 9 the god rays' light (a quarter of the output res);
-// 10 the clouds' lightning glow (trace res); 11 the lightning bolts' pieces on screen.
+// 10 the clouds' lightning glow (trace res).
 // Outputs: 3 RGBA16F radiance + transmittance, 4 RG32F depths (output res); 7 this frame's
 // output history (output res, packed with the own-sample count).
 // References: Karis 2014 (temporal accumulation, neighbourhood clamp); Schneider 2015.
@@ -39,9 +39,8 @@ layout(constant_id = kSpecOutputHistory) const uint kOutputHistory = 0u;
 layout(constant_id = kSpecAerialPerspective) const uint kAerialPerspective = 0u;
 // 1: god rays: the sky's pixels get their light (kSpecUpsampleGodRays).
 layout(constant_id = kSpecUpsampleGodRays) const uint kGodRays = 0u;
-// Lightning (kSpecUpsampleLightning): kLightningGlow, the clouds glow with this frame's
-// flashes; kLightningBolts, and this frame's bolts are drawn.
-layout(constant_id = kSpecUpsampleLightning) const uint kLightning = kLightningNone;
+// 1: lightning: the clouds glow with this frame's flashes (kSpecUpsampleLightning).
+layout(constant_id = kSpecUpsampleLightning) const uint kLightning = 0u;
 #include "frame_uniforms.glsl"
 layout(binding = kUpsampleTraceSamples, rgba32ui) uniform readonly uimage2D traceSamples;
 layout(binding = kUpsampleHostDepth) uniform sampler2D hostDepth;
@@ -53,11 +52,6 @@ layout(binding = kUpsampleHistoryOut, rgba32ui) uniform writeonly uimage2D outpu
 layout(binding = kUpsampleAerialPerspective) uniform sampler3D aerialPerspective;
 layout(binding = kUpsampleGodRayLight) uniform sampler2D godRayLight;
 layout(binding = kUpsampleLightningGlow) uniform sampler2D lightningGlow;
-// The bolts' pieces on screen (cloud_types.h's LightningBoltsHeader layout).
-layout(binding = kUpsampleLightningBolts, std430) readonly buffer LightningBolts {
-  LightningBoltsHeader bolts;
-  vec4 boltSegments[];
-};
 
 #include "vkfx/aerial_perspective.glsl"
 
@@ -119,51 +113,11 @@ vec4 hazed(uvec2 pixel, vec4 radiance, vec2 depth) {
   return vec4(radiance.rgb * air.a + inScattered, radiance.a);
 }
 
-// The light of this frame's bolts at the output pixel (the brightest piece over it): each
-// piece a line of its channel's width, keeping its energy when thinner than a pixel (a one-
-// pixel tent filter across it), hidden by geometry nearer than it, seen through the clouds
-// (`radiance`, `depth`) as far as it lies behind their front, and hazed like them.
-vec3 boltLight(uvec2 pixel, vec4 radiance, vec2 depth, float scene) {
-  const vec2 p = vec2(pixel) + 0.5f;
-  vec3 light = vec3(0.0f);
-  if (any(lessThan(p, bolts.bounds.xy)) || any(greaterThan(p, bolts.bounds.zw))) return light;
-  for (uint i = 0u; i < bolts.count.x; ++i) {
-    const vec4 ends = boltSegments[kBoltVec4sPerSegment * i];
-    const vec4 along = boltSegments[kBoltVec4sPerSegment * i + 1u];
-    const vec2 ab = ends.zw - ends.xy;
-    const float t = saturate(dot(p - ends.xy, ab) / max(dot(ab, ab), 1e-12f));
-    const float inverseW = mix(along.x, along.y, t);
-    const float width = along.z * bolts.clipWRow.w * inverseW;  // px
-    const float across = length(p - (ends.xy + t * ab));
-    const float coverage = min(width, 1.0f) * saturate(0.5f * max(width, 1.0f) + 0.5f - across);
-    if (coverage <= 0.0f) continue;
-    // Along this pixel's ray (a unit view-space ray has clip w dot(clipWRow.xyz, ray) a metre).
-    const vec3 ray = viewRayDirection(p, vec2(u.outputExtent), u);
-    const float distance = 1.0f / (inverseW * max(dot(bolts.clipWRow.xyz, ray), 1e-6f));
-    if (distance > scene) continue;
-    // Behind the clouds' front by their depth span (as lightning_glow.comp takes it), it is
-    // seen through all of them.
-    const float span = max(2.0f * (depth.y - depth.x), 1.0f);
-    const float behind = depth.x > 0.0f ? saturate((distance - depth.x) / span) : 0.0f;
-    float air = 1.0f;
-    if (kAerialPerspective != 0u) {
-      const vec2 uv = p / vec2(u.outputExtent);
-      const vec4 haze = aerialPerspectiveAt(aerialPerspective, uv, distance,
-                                            u.aerialPerspectiveRange, u.aerialPerspectiveSlices);
-      air = haze.a;
-    }
-    const vec3 piece = boltSegments[kBoltVec4sPerSegment * i + 2u].rgb;
-    light = max(light, piece * (coverage * mix(1.0f, radiance.a, behind) * air));
-  }
-  return light;
-}
-
 // What the output pixel shows: the clouds (glowing with lightning), hazed, and with god rays
 // the light the air in front of the sky behind them gains or loses (`scene` m: the host's
-// geometry, infinite for sky); then the bolts in front of it all.
+// geometry, infinite for sky).
 vec4 outputRadiance(uvec2 pixel, vec4 radiance, vec2 depth, float scene) {
-  const vec4 clouds = radiance;
-  if (kLightning != kLightningNone) {
+  if (kLightning != 0u) {
     // The glow per unit of cloud, at the trace resolution (smooth), times this pixel's cloud.
     const vec2 trace = (vec2(pixel) + 0.5f) * vec2(u.traceExtent) / vec2(u.outputExtent);
     const vec2 uv = trace / vec2(textureSize(lightningGlow, 0));
@@ -176,7 +130,6 @@ vec4 outputRadiance(uvec2 pixel, vec4 radiance, vec2 depth, float scene) {
     const vec2 uv = (vec2(pixel) + 0.5f) / (texels * float(kGodRayDownsample));
     result.rgb += radiance.a * textureLod(godRayLight, uv, 0.0f).rgb;
   }
-  if (kLightning == kLightningBolts) result.rgb += boltLight(pixel, clouds, depth, scene);
   return result;
 }
 

@@ -1,11 +1,12 @@
 // clouds::Context::Impl: creation, prepare() and the flow of a frame (order in
-// context_impl.h). The passes themselves are recorded in record_weather.cpp and
-// record_trace.cpp.
+// context_impl.h). The passes themselves are recorded in record_weather.cpp,
+// record_trace.cpp, record_shadow.cpp, record_god_rays.cpp and record_lightning.cpp.
 #include "context_impl.h"
 
 #include <cstring>
 
 #include "cloud_density.h"
+#include "lightning_bolts.h"
 #include "pipeline_variants.h"
 
 namespace clouds {
@@ -38,23 +39,16 @@ detail::OwnedBuffer uniformBlock(const detail::DeviceContext& device, VkDeviceSi
       device, bytes, VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT, name);
 }
 
-// The bolts' buffer for `segments` pieces (none: 0).
-VkDeviceSize boltBytes(std::uint32_t segments) {
-  if (segments == 0) return 0;
-  return sizeof(shader::LightningBoltsHeader) +
-         VkDeviceSize{shader::kBoltVec4sPerSegment} * sizeof(glm::vec4) * segments;
-}
-
 detail::UniqueDescriptorPool makePool(const detail::DeviceContext& device, std::uint32_t frames) {
   // Fixed sets: 3 noise generators, 2 weather generators, 3 maxima. Per slot: 9 sets.
   const VkDescriptorPoolSize sizes[] = {
-      {VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, 16 + 40 * frames},
-      {VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 4 + 14 * frames},
-      {VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 12 * frames},
+      {VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, 16 + 42 * frames},
+      {VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 4 + 16 * frames},
+      {VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 13 * frames},
       {VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 5 * frames},
   };
   VkDescriptorPoolCreateInfo info{VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO};
-  info.maxSets = 8 + 13 * frames;
+  info.maxSets = 8 + 14 * frames;
   info.poolSizeCount = static_cast<std::uint32_t>(std::size(sizes));
   info.pPoolSizes = sizes;
   return device.createDescriptorPool(info, "descriptor pool");
@@ -112,7 +106,7 @@ Context::Impl::Impl(const CreateInfo& info, const detail::VulkanFunctions& funct
                                          "shadow parameters " + std::to_string(i));
     slot.godRayOcclusion = allocateSet(Program::GodRayOcclusion);
     slot.godRays = allocateSet(Program::GodRays);
-    slot.lightningGlow = allocateSet(Program::LightningGlow);
+    slot.lightningBolts = allocateSet(Program::LightningBolts);
     slot.godRayLight = uniformBlock(device_, sizeof(shader::GodRayLightUniforms),
                                     "god-ray light " + std::to_string(i));
   }
@@ -203,7 +197,7 @@ void Context::Impl::prepare(const Settings& settings, VkExtent2D renderExtent) {
   }
   // The bolts' buffer, only for settings that can have bolts.
   if (settings.lightningBoltSegments > 0) {
-    const VkDeviceSize bytes = boltBytes(settings.lightningBoltSegments);
+    const VkDeviceSize bytes = detail::boltBufferBytes(settings.lightningBoltSegments);
     for (std::size_t i = 0; i < slots_.size(); ++i) {
       if (slots_[i].bolts.size() >= bytes) continue;
       slots_[i].bolts = detail::OwnedBuffer(
@@ -232,7 +226,7 @@ std::string Context::Impl::unprepared(const Settings& settings, VkExtent2D rende
   }
   for (const Slot& slot : slots_) {
     if ((settings.lightningFlashes > 0 && slot.lightning.buffer() == VK_NULL_HANDLE) ||
-        slot.bolts.size() < boltBytes(settings.lightningBoltSegments)) {
+        slot.bolts.size() < detail::boltBufferBytes(settings.lightningBoltSegments)) {
       return "the lightning buffers for these settings";
     }
   }
@@ -400,7 +394,8 @@ MemoryUsage Context::Impl::memoryUsage() const {
   for (const Slot& slot : slots_) {
     usage.bufferBytes += slot.uniforms.bytes() + slot.counters.bytes() +
                          slot.shadowUniforms.bytes() + slot.shadowParameters.bytes() +
-                         slot.godRayLight.bytes() + slot.lightning.bytes() + slot.bolts.bytes();
+                         slot.godRayLight.bytes();
+    usage.lightningBytes += slot.lightning.bytes() + slot.bolts.bytes();
   }
   return usage;
 }

@@ -97,8 +97,8 @@ class Context::Impl {
     VkDescriptorSet godRays = VK_NULL_HANDLE;
     detail::OwnedBuffer godRayLight;  // god_rays.comp's GodRayLightUniforms
     detail::OwnedBuffer lightning;    // this frame's LightningUniforms (lightningFlashes > 0)
-    VkDescriptorSet lightningGlow = VK_NULL_HANDLE;
-    detail::OwnedBuffer bolts;  // this frame's bolts on screen (lightningBoltSegments > 0)
+    detail::OwnedBuffer bolts;        // this frame's bolts on screen (lightningBoltSegments > 0)
+    VkDescriptorSet lightningBolts = VK_NULL_HANDLE;
   };
 
   VkDescriptorSet allocateSet(detail::Program program);
@@ -140,12 +140,12 @@ class Context::Impl {
                       const shader::MarchTerrainShadow* shadow);
   void recordSkyAmbient(VkCommandBuffer cmd, const FrameInputs& inputs, Slot& slot);
   void recordClearSky(VkCommandBuffer cmd, Slot& slot);
-  // record_lightning.cpp: the clouds' glow with this frame's flashes, from the reconstructed
-  // trace `traceSamples`, and this frame's bolts on screen; the upsample's lightning variant
-  // (shader::kLightningNone, kLightningGlow or kLightningBolts).
-  std::uint32_t recordLightning(VkCommandBuffer cmd, const FrameInputs& inputs,
-                                const detail::OwnedImage& traceSamples, VkExtent2D traceExtent,
-                                Slot& slot);
+  // record_lightning.cpp: this frame's flashes into the slot's block; whether there are any
+  // (the reconstruction then makes their glow and the upsample adds it).
+  bool recordLightning(VkCommandBuffer cmd, const FrameInputs& inputs, Slot& slot);
+  // This frame's bolts drawn into the radiance output (its set written), which the upsample
+  // left ready for compute reads and writes; then the outputs made visible to the host.
+  void recordBolts(VkCommandBuffer cmd, const FrameInputs& inputs, bool hazed, Slot& slot);
   void recordTrace(VkCommandBuffer cmd, const FrameInputs& inputs, const Settings& settings,
                    const detail::TemporalFrame& temporal, VkExtent2D traceExtent,
                    bool terrainShadow, Slot& slot);

@@ -20,22 +20,30 @@ SpecializationKey marchKey(const Settings& settings, bool workCounters, bool ter
   return key;
 }
 
-SpecializationKey reconstructKey(std::uint32_t history) {
+SpecializationKey reconstructKey(std::uint32_t history, bool lightning) {
   SpecializationKey key;
   key.values[shader::kSpecHistory] = history;
+  key.values[shader::kSpecReconstructLightning] = lightning ? 1u : 0u;
   key.count = shader::kReconstructSpecCount;
   return key;
 }
 
 SpecializationKey upsampleKey(bool temporalUpsampling, std::uint32_t outputHistory, bool hazed,
-                              bool godRays, std::uint32_t lightning) {
+                              bool godRays, bool lightning) {
   SpecializationKey key;
   key.values[shader::kSpecTemporalUpsampling] = temporalUpsampling ? 1u : 0u;
   key.values[shader::kSpecOutputHistory] = outputHistory;
   key.values[shader::kSpecAerialPerspective] = hazed ? 1u : 0u;
   key.values[shader::kSpecUpsampleGodRays] = godRays ? 1u : 0u;
-  key.values[shader::kSpecUpsampleLightning] = lightning;
+  key.values[shader::kSpecUpsampleLightning] = lightning ? 1u : 0u;
   key.count = shader::kUpsampleSpecCount;
+  return key;
+}
+
+SpecializationKey boltsKey(bool hazed) {
+  SpecializationKey key;
+  key.values[shader::kSpecBoltsAerialPerspective] = hazed ? 1u : 0u;
+  key.count = shader::kBoltsSpecCount;
   return key;
 }
 
@@ -59,8 +67,12 @@ std::vector<std::pair<Program, SpecializationKey>> variantsFor(const Settings& s
                                      shader::kHistoryReprojected};
   std::vector<std::pair<Program, SpecializationKey>> variants;
   variants.emplace_back(Program::March, marchKey(settings, workCounters, false));
+  // With lightning, frames without a flash write no glow.
   for (std::uint32_t history : histories) {
-    variants.emplace_back(Program::Reconstruct, reconstructKey(history));
+    for (bool lightning : {false, true}) {
+      if (lightning && settings.lightningFlashes == 0) continue;
+      variants.emplace_back(Program::Reconstruct, reconstructKey(history, lightning));
+    }
   }
   // Without temporal upsampling there is never an output history to read.
   const bool upsampling = upsamplesTemporally(settings);
@@ -68,13 +80,11 @@ std::vector<std::pair<Program, SpecializationKey>> variantsFor(const Settings& s
     if (!upsampling && history != shader::kHistoryNone) continue;
     for (bool hazed : {false, true}) {
       // With god rays, frames whose sun is off screen add no light; with lightning, frames
-      // without a flash glow with none, and frames without a bolt draw none.
+      // without a flash glow with none.
       for (bool godRays : {false, true}) {
         if (godRays && settings.godRaySamples == 0) continue;
-        for (std::uint32_t lightning :
-             {shader::kLightningNone, shader::kLightningGlow, shader::kLightningBolts}) {
-          if (lightning == shader::kLightningGlow && settings.lightningFlashes == 0) continue;
-          if (lightning == shader::kLightningBolts && settings.lightningBoltSegments == 0) continue;
+        for (bool lightning : {false, true}) {
+          if (lightning && settings.lightningFlashes == 0) continue;
           variants.emplace_back(Program::Upsample,
                                 upsampleKey(upsampling, history, hazed, godRays, lightning));
         }
@@ -87,9 +97,10 @@ std::vector<std::pair<Program, SpecializationKey>> variantsFor(const Settings& s
     variants.emplace_back(Program::TerrainShadow, SpecializationKey{});
     variants.emplace_back(Program::March, marchKey(settings, workCounters, true));
   }
-  // No room for flashes, no glow pipeline (and the upsample without the glow, above).
-  if (settings.lightningFlashes > 0) {
-    variants.emplace_back(Program::LightningGlow, SpecializationKey{});
+  // No room for bolts, no bolt pipelines.
+  if (settings.lightningBoltSegments > 0) {
+    for (bool hazed : {false, true})
+      variants.emplace_back(Program::LightningBolts, boltsKey(hazed));
   }
   // No god rays, no god-ray pipelines (and the upsample without their light, above).
   if (settings.godRaySamples > 0) {

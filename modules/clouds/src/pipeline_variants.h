@@ -16,12 +16,14 @@ namespace clouds::detail {
 // with a shadow map).
 SpecializationKey marchKey(const Settings& settings, bool workCounters, bool terrainShadow);
 // `history`: kHistoryNone, kHistoryInPlace or kHistoryReprojected (cloud_types.h).
-SpecializationKey reconstructKey(std::uint32_t history);
+// `lightning`: write the glow with this frame's flashes too.
+SpecializationKey reconstructKey(std::uint32_t history, bool lightning);
 // `hazed`: the host gave an aerial perspective this frame; `godRays`: add the god rays' light;
-// `lightning`: kLightningNone, kLightningGlow (the clouds glow with this frame's flashes) or
-// kLightningBolts (and the output draws this frame's bolts).
+// `lightning`: the clouds glow with this frame's flashes.
 SpecializationKey upsampleKey(bool temporalUpsampling, std::uint32_t outputHistory, bool hazed,
-                              bool godRays, std::uint32_t lightning);
+                              bool godRays, bool lightning);
+// The bolts' pass; `hazed`: the host gave an aerial perspective this frame.
+SpecializationKey boltsKey(bool hazed);
 
 // The god-ray mask and light, `light` shader::kGodRaysMaskHaze or kGodRaysGlow.
 SpecializationKey godRaysKey(std::uint32_t light);

@@ -10,7 +10,7 @@
 #include "clouds_shaders/depth_downsample.comp.spv.h"
 #include "clouds_shaders/god_ray_occlusion.comp.spv.h"
 #include "clouds_shaders/god_rays.comp.spv.h"
-#include "clouds_shaders/lightning_glow.comp.spv.h"
+#include "clouds_shaders/lightning_bolts.comp.spv.h"
 #include "clouds_shaders/noise_curl.comp.spv.h"
 #include "clouds_shaders/noise_detail.comp.spv.h"
 #include "clouds_shaders/noise_shape.comp.spv.h"
@@ -104,7 +104,9 @@ std::vector<ProgramDesc> programTable() {
        {{kBindingUniforms, kUniforms},
         {kReconstructFresh, kImage},
         {kReconstructHistory, kImage},
-        {kReconstructOut, kImage}},
+        {kReconstructOut, kImage},
+        {kReconstructFlashes, kUniforms},
+        {kReconstructGlow, kImage}},
        0,
        "reconstruct"},
       {Program::Upsample,
@@ -119,8 +121,7 @@ std::vector<ProgramDesc> programTable() {
         {kUpsampleHistoryOut, kImage},
         {kUpsampleAerialPerspective, kTexture},
         {kUpsampleGodRayLight, kTexture},
-        {kUpsampleLightningGlow, kTexture},
-        {kUpsampleLightningBolts, kBuffer}},
+        {kUpsampleLightningGlow, kTexture}},
        0,
        "upsample"},
       {Program::ShadowMap,
@@ -161,14 +162,16 @@ std::vector<ProgramDesc> programTable() {
         {kGodRayLightOut, kImage}},
        sizeof(GodRayParameters),
        "god rays"},
-      {Program::LightningGlow,
-       lightning_glow_comp_spv,
+      {Program::LightningBolts,
+       lightning_bolts_comp_spv,
        {{kBindingUniforms, kUniforms},
-        {kGlowTraceSamples, kImage},
-        {kGlowFlashes, kUniforms},
-        {kGlowOut, kImage}},
-       0,
-       "lightning glow"},
+        {kBoltsHostDepth, kTexture},
+        {kBoltsRadiance, kImage},
+        {kBoltsDepth, kImage},
+        {kBoltsAerialPerspective, kTexture},
+        {kBoltsPieces, kBuffer}},
+       sizeof(LightningBoltsConstants),
+       "lightning bolts"},
   };
 }
 
@@ -186,7 +189,7 @@ Programs::Programs(const DeviceContext& device, bool composite) {
         desc.program == Program::March || desc.program == Program::Reconstruct ||
         desc.program == Program::Upsample || desc.program == Program::ShadowMap ||
         desc.program == Program::TerrainShadow || desc.program == Program::GodRayOcclusion ||
-        desc.program == Program::GodRays || desc.program == Program::LightningGlow;
+        desc.program == Program::GodRays || desc.program == Program::LightningBolts;
     if (!specialised) program->prepare();
   }
 }

@@ -28,7 +28,7 @@ enum class Program : std::uint32_t {
   TerrainShadow,    // terrain_shadow_map.comp: the terrain's channel of one cascade
   GodRayOcclusion,  // god_ray_occlusion.comp: what hides the sun, a quarter of the output
   GodRays,          // god_rays.comp: the god-ray mask (its radial blur)
-  LightningGlow,    // lightning_glow.comp: the clouds' glow with this frame's flashes
+  LightningBolts,   // lightning_bolts.comp: this frame's bolts into the radiance output
   Count
 };
 

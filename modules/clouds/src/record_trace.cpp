@@ -108,14 +108,18 @@ void Context::Impl::recordTrace(VkCommandBuffer cmd, const FrameInputs& inputs,
       .uniformBuffer(kMarchCloudShadowParameters, slot.shadowParameters.buffer(),
                      sizeof(MarchTerrainShadow))
       .commit();
+  // Without room for flashes, stand-ins: the frame's uniforms for their block and the
+  // radiance output (of the glow's format) for the glow; the variant never touches them.
+  const bool glowRoom = slot.lightning.buffer() != VK_NULL_HANDLE;
   detail::SetWriter(device_, slot.reconstruct)
       .uniformBuffer(kBindingUniforms, uniforms, uniformBytes)
       .storageImage(kReconstructFresh, im.traceSamples.view())
       .storageImage(kReconstructHistory, historyIn.view())
       .storageImage(kReconstructOut, historyOut.view())
+      .uniformBuffer(kReconstructFlashes, glowRoom ? slot.lightning.buffer() : uniforms,
+                     sizeof(LightningUniforms))
+      .storageImage(kReconstructGlow, glowRoom ? im.lightningGlow.view() : im.radiance.view())
       .commit();
-  const detail::OwnedBuffer& boltBuffer =
-      slot.bolts.buffer() != VK_NULL_HANDLE ? slot.bolts : slot.counters;
   detail::SetWriter(device_, slot.upsample)
       .uniformBuffer(kBindingUniforms, uniforms, uniformBytes)
       .storageImage(kUpsampleTraceSamples, historyOut.view())
@@ -128,13 +132,12 @@ void Context::Impl::recordTrace(VkCommandBuffer cmd, const FrameInputs& inputs,
       .sampledImage(kUpsampleAerialPerspective, hazed ? haze.view : im.hazePlaceholder.view(),
                     linearSampler_.get(),
                     hazed ? haze.layout : VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL)
-      // Without a glow or bolts, stand-ins: the variants without lightning never read them.
+      // Without a glow, a stand-in: the variants without lightning never read it.
       .sampledImage(
           kUpsampleLightningGlow,
           im.lightningGlow ? im.lightningGlow.view() : im.depthPlaceholder.view(),
           linearSampler_.get(),
           im.lightningGlow ? VK_IMAGE_LAYOUT_GENERAL : VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL)
-      .storageBuffer(kUpsampleLightningBolts, boltBuffer.buffer(), boltBuffer.size())
       .sampledImage(
           kUpsampleGodRayLight, im.godRayLight ? im.godRayLight.view() : im.depthPlaceholder.view(),
           clampedLinearSampler_.get(),
@@ -173,17 +176,19 @@ void Context::Impl::recordTrace(VkCommandBuffer cmd, const FrameInputs& inputs,
     detail::memoryBarrier(device_, cmd, kCompute, kStorageWrite, VK_PIPELINE_STAGE_2_HOST_BIT,
                           VK_ACCESS_2_HOST_READ_BIT);
   }
+  const bool lightning = recordLightning(cmd, inputs, slot);
   beginPass(cmd, detail::Pass::Reconstruct, "clouds: reconstruct");
   const std::uint32_t history = historyVariant(temporal.useHistory, temporal.still);
   bindAndDispatch(cmd, Program::Reconstruct,
-                  programs_[Program::Reconstruct].find(detail::reconstructKey(history)),
+                  programs_[Program::Reconstruct].find(detail::reconstructKey(history, lightning)),
                   slot.reconstruct, traceExtent.width, traceExtent.height);
-  detail::memoryBarrier(device_, cmd, kCompute, kStorageWrite, kCompute, kStorageRead);
+  // The upsample samples the glow.
+  detail::memoryBarrier(device_, cmd, kCompute, kStorageWrite, kCompute,
+                        kStorageRead | VK_ACCESS_2_SHADER_SAMPLED_READ_BIT);
   endPass(cmd, detail::Pass::Reconstruct);
 
   const bool godRays = settings.godRaySamples > 0 &&
                        recordGodRays(cmd, inputs, settings, historyOut, /*traced=*/true, slot);
-  const std::uint32_t lightning = recordLightning(cmd, inputs, historyOut, traceExtent, slot);
 
   beginPass(cmd, detail::Pass::Upsample, "clouds: upsample");
   const std::uint32_t outputHistory = historyVariant(temporal.useOutputHistory, temporal.still);
@@ -191,11 +196,26 @@ void Context::Impl::recordTrace(VkCommandBuffer cmd, const FrameInputs& inputs,
                   programs_[Program::Upsample].find(
                       detail::upsampleKey(upsampling, outputHistory, hazed, godRays, lightning)),
                   slot.upsample, inputs.renderExtent.width, inputs.renderExtent.height);
+  // The bolts' pass reads and writes the outputs next; else the host reads them.
+  const bool bolts = !inputs.lightningBolts.empty() && slot.bolts.buffer() != VK_NULL_HANDLE;
   for (const detail::OwnedImage* image : {&im.radiance, &im.depth}) {
     detail::barrier(device_, cmd, image->image(), VK_IMAGE_LAYOUT_GENERAL, VK_IMAGE_LAYOUT_GENERAL,
-                    kCompute, kStorageWrite, kHostReadStages, kHostReadAccess);
+                    kCompute, kStorageWrite, bolts ? kCompute : kHostReadStages,
+                    bolts ? kStorageRead | kStorageWrite : kHostReadAccess);
   }
   endPass(cmd, detail::Pass::Upsample);
+  if (!bolts) return;
+  detail::SetWriter(device_, slot.lightningBolts)
+      .uniformBuffer(kBindingUniforms, uniforms, uniformBytes)
+      .sampledImage(kBoltsHostDepth, depthView, nearest, depthLayout)
+      .storageImage(kBoltsRadiance, im.radiance.view())
+      .storageImage(kBoltsDepth, im.depth.view())
+      .sampledImage(kBoltsAerialPerspective, hazed ? haze.view : im.hazePlaceholder.view(),
+                    linearSampler_.get(),
+                    hazed ? haze.layout : VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL)
+      .storageBuffer(kBoltsPieces, slot.bolts.buffer(), slot.bolts.size())
+      .commit();
+  recordBolts(cmd, inputs, hazed, slot);
 }
 
 void Context::Impl::recordClearSky(VkCommandBuffer cmd, Slot& slot) {

@@ -135,9 +135,6 @@ std::string validateSettings(const Settings& s) {
                 ": must be above layerBottomMetres (" + std::to_string(s.layerBottomMetres) +
                 ") by at least 1 m");
   c.require(glm::length(s.windDirection) > 1e-6f, "Settings.windDirection: must not be zero");
-  c.require(s.lightningBoltSegments == 0 || s.lightningFlashes > 0,
-            "Settings.lightningBoltSegments = " + std::to_string(s.lightningBoltSegments) +
-                ": bolts need lightningFlashes > 0 (a bolt's flash glows in the cloud)");
   c.require(s.traceScale == 1.0f || s.traceScale == 0.5f || s.traceScale == 0.25f,
             "Settings.traceScale = " + std::to_string(s.traceScale) + ": must be 1, 0.5 or 0.25");
   c.require(

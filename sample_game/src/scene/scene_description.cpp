@@ -162,17 +162,42 @@ ExposureDescription readExposure(const JsonReader& r) {
   return e;
 }
 
-LightningDescription readLightning(const JsonReader& r) {
+// A storm in `clouds`: its cells given, or found where the clouds' weather holds the most
+// cumulonimbus around the camera.
+LightningDescription readLightning(const JsonReader& r, const CloudDescription& clouds,
+                                   const CameraDescription& camera) {
   LightningDescription l;
   clouds::ecs::LightningStorm& s = l.storm;
-  for (const JsonReader& cell : r.objects("cells")) {
-    clouds::ecs::LightningCell c;
-    c.positionMetres = cell.vec3("position", -1e7, 1e7);
-    c.radiusMetres = float(cell.number("radiusMetres", 10.0, 1e5, c.radiusMetres));
-    cell.finish();
-    s.cells.push_back(c);
+  if (r.has("cells") == r.has("cellsFromWeather")) {
+    r.fail("cells", "a storm needs either cells or cellsFromWeather");
   }
-  if (s.cells.empty()) r.fail("cells", "a storm needs at least one cell");
+  if (r.has("cells")) {
+    for (const JsonReader& cell : r.objects("cells")) {
+      clouds::ecs::LightningCell c;
+      c.positionMetres = cell.vec3("position", -1e7, 1e7);
+      c.radiusMetres = float(cell.number("radiusMetres", 10.0, 1e5, c.radiusMetres));
+      cell.finish();
+      s.cells.push_back(c);
+    }
+    if (s.cells.empty()) r.fail("cells", "a storm needs at least one cell");
+  } else {
+    const JsonReader found = r.object("cellsFromWeather");
+    const auto count = static_cast<std::uint32_t>(found.integer("count", 1, 16, 3));
+    const double within = found.number("withinMetres", 1000.0, 1e6, 20000.0);
+    const auto radius = float(found.number("radiusMetres", 10.0, 1e5, 4000.0));
+    found.finish();
+    if (clouds.weatherMap) {
+      r.fail("cellsFromWeather", "found in the procedural weather only, not a painted map");
+    }
+    const glm::dvec2 centre(camera.position.x, camera.position.z);
+    s.cells = clouds::ecs::stormCellsFromWeather(clouds.settings, clouds.noiseSeed, centre, within,
+                                                 count, radius);
+    if (s.cells.empty()) {
+      r.fail("cellsFromWeather",
+             "no cumulonimbus within " + std::to_string(within) +
+                 " m of the camera (type >= 0.75, coverage >= 0.5): raise cloudType or coverage");
+    }
+  }
   s.strikesPerMinute = r.number("strikesPerMinute", 0.0, 600.0, s.strikesPerMinute);
   s.seed = static_cast<std::uint32_t>(r.integer("seed", 0, 0xffffffffLL, s.seed));
   s.groundFraction = r.number("groundFraction", 0.0, 1.0, s.groundFraction);
@@ -197,8 +222,8 @@ SceneDescription loadSceneDescription(const std::filesystem::path& file) {
   if (root.has("terrain")) scene.terrain = readTerrain(root.object("terrain"), dir);
   if (root.has("clouds")) scene.clouds = readClouds(root.object("clouds"), dir);
   if (root.has("lightning")) {
-    scene.lightning = readLightning(root.object("lightning"));
     if (!scene.clouds) root.fail("lightning", "lightning glows in clouds: the scene has none");
+    scene.lightning = readLightning(root.object("lightning"), *scene.clouds, scene.camera);
   }
   if (root.has("atmosphere")) scene.atmosphere = readAtmosphere(root.object("atmosphere"));
   if (root.has("fog")) scene.fog = readFog(root.object("fog"));

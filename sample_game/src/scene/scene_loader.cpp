@@ -1,5 +1,7 @@
 #include "scene/scene_loader.h"
 
+#include <cmath>
+
 #include "atmosphere/ecs/atmosphere_components.h"
 #include "atmosphere/ecs/atmosphere_module.h"
 #include "clouds/ecs/cloud_components.h"
@@ -119,6 +121,13 @@ void populateScene(ecs::App& app, const SceneDescription& scene,
     // A storm, as data: the clouds module adds its lightning system only when this exists.
     if (scene.lightning) {
       world.emplace<clouds::ecs::LightningStorm>(world.create(), scene.lightning->storm);
+      for (const clouds::ecs::LightningCell& cell : scene.lightning->storm.cells) {
+        const glm::dvec3& p = cell.positionMetres;
+        engine::log::info("lightning: a storm cell at (" + std::to_string(std::lround(p.x)) + ", " +
+                          std::to_string(std::lround(p.y)) + ", " +
+                          std::to_string(std::lround(p.z)) + ") m, reaching " +
+                          std::to_string(std::lround(cell.radiusMetres)) + " m");
+      }
     }
   }
 

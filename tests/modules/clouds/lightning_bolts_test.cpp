@@ -5,6 +5,7 @@
 // every piece with its width.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <glm/gtc/matrix_transform.hpp>
 
@@ -112,6 +113,46 @@ TEST(LightningBolts, NoBoltsNoPieces) {
   const auto none = project(looking(), {});
   EXPECT_EQ(none.header.count.x, 0u);
   EXPECT_TRUE(none.segments.empty());
+}
+
+// The pieces are binned: every pixel along a piece lies in a tile that lists it, and in a
+// listed 8 x 8 block; the tiles start at a multiple of 8 px.
+TEST(LightningBolts, EveryPieceIsInTheTilesAndBlocksItCrosses) {
+  const clouds::FrameInputs in = looking();
+  const glm::dvec3 eye = in.cameraPosition;
+  const auto out =
+      project(in, {piece(eye + glm::dvec3(-300, 200, -1000), eye + glm::dvec3(250, -150, -1000)),
+                   piece(eye + glm::dvec3(100, 100, -800), eye + glm::dvec3(120, -300, -800))});
+  ASSERT_EQ(out.header.count.x, 2u);
+  const glm::vec2 origin(out.header.bounds);
+  EXPECT_EQ(std::fmod(origin.x, 8.0f), 0.0f);
+  EXPECT_EQ(std::fmod(origin.y, 8.0f), 0.0f);
+  const float side = float(out.header.count.w);
+  ASSERT_GE(side, 8.0f);
+  ASSERT_FALSE(out.blocks.empty());
+  for (std::uint32_t i = 0; i < 2; ++i) {
+    const glm::vec4 ends = out.segments[3 * i];
+    for (float t = 0.0f; t <= 1.0f; t += 0.01f) {
+      const glm::vec2 p = glm::mix(glm::vec2(ends.x, ends.y), glm::vec2(ends.z, ends.w), t);
+      if (p.x < 0.0f || p.y < 0.0f || p.x >= 200.0f || p.y >= 100.0f) continue;
+      const glm::uvec2 tile((p - origin) / side);
+      const glm::uvec2 range = out.tiles[tile.y * out.header.count.y + tile.x];
+      bool listed = false;
+      for (std::uint32_t k = 0; k < range.y; ++k) listed |= out.pieces[range.x + k] == i;
+      EXPECT_TRUE(listed) << "piece " << i << " at t " << t;
+      const glm::uvec2 block(p / 8.0f);
+      EXPECT_NE(std::find(out.blocks.begin(), out.blocks.end(), block.x | block.y << 16),
+                out.blocks.end())
+          << "piece " << i << " at t " << t;
+    }
+  }
+  // The words hold it all, in whole quads, where the header says.
+  const std::vector<std::uint32_t> words = out.words();
+  EXPECT_EQ(words.size() % 4, 0u);
+  EXPECT_EQ(words[out.header.tiles.x], out.tiles[0].x);
+  EXPECT_EQ(words[out.header.tiles.z], out.blocks[0]);
+  EXPECT_EQ(out.header.tiles.w, out.blocks.size());
+  EXPECT_LE(sizeof(out.header) + words.size() * 4, clouds::detail::boltBufferBytes(2));
 }
 
 }  // namespace

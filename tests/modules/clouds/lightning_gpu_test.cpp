@@ -9,9 +9,11 @@
 #include <cmath>
 #include <cstdio>
 
+#include <glm/gtc/matrix_transform.hpp>
 #include "cloud_gpu_fixture.h"
 #include "cloud_harness.h"
 #include "gpu_test.h"
+#include "lightning_bolts.h"
 #include "vkfx/lightning_light.h"
 
 namespace {
@@ -72,6 +74,11 @@ TEST_F(Lightning, AFlashMakesTheCloudNearItGlow) {
   std::size_t beyond = 0;
   std::size_t beyondLit = 0;
   double worstSkyLightError = 0.0;
+  // Near the flash (within a quarter of its reach), the light gained against the sky light's
+  // share of it: the rest is the glow.
+  std::size_t near = 0;
+  double nearGain = 0.0;
+  double nearSkyLight = 0.0;
   std::size_t darker = 0;
   double gain = 0.0;
   for (std::uint32_t y = 0; y < kExtent.height; ++y) {
@@ -86,13 +93,19 @@ TEST_F(Lightning, AFlashMakesTheCloudNearItGlow) {
       // Where the pixel's cloud (at its weighted depth) lies beyond the flash's reach.
       const double depth = before.depth[i].y;
       const glm::dvec3 cloud = glm::dvec3(rays.direction(x, y)) * depth;
+      const double sky = vkfx::shader::flashSkyLight(float(glm::length(cloud - flash)), 4000.0f);
+      const double skyLight = (1.0 - double(before.radiance[i].a)) * sky * 1300.0 / 3.0;
+      if (depth > 0.0 && glm::length(cloud - flash) < 1000.0) {
+        ++near;
+        nearGain += b - a;
+        nearSkyLight += skyLight;
+      }
       if (depth > 0.0 && glm::length(cloud - flash) > 4000.0 * 1.05) {
         // Beyond the glow's reach the cloud has the flash's sky light alone, as much of it as
         // there is cloud.
         ++beyond;
         beyondLit += b > a ? 1 : 0;
-        const double sky = vkfx::shader::flashSkyLight(float(glm::length(cloud - flash)), 4000.0f);
-        const double expected = (1.0 - double(before.radiance[i].a)) * sky * 1300.0 / 3.0;
+        const double expected = skyLight;
         // The output is half floats: each of a and b is off by up to 2^-11 of itself.
         const double rounding = std::ldexp(std::max(a, b), -11) * 2.0;
         worstSkyLightError =
@@ -109,7 +122,52 @@ TEST_F(Lightning, AFlashMakesTheCloudNearItGlow) {
   EXPECT_EQ(darker, 0u);
   EXPECT_GT(beyond, 0u);
   EXPECT_EQ(beyondLit, beyond) << "the flash's sky light reaches the whole deck";
+  std::printf("flash: %zu pixels' clouds within 1 km of it gain %.2f times its sky light\n", near,
+              nearGain / nearSkyLight);
+  EXPECT_GT(near, 20u);
+  EXPECT_GT(nearGain, 2.0 * nearSkyLight) << "the glow: near the flash, much more than sky light";
   EXPECT_LT(worstSkyLightError, 0.01) << "beyond its reach, the sky light alone";
+}
+
+// The glow is less where the cloud is dense (the seeds' pseudo-attenuation): near the flash,
+// the glow per unit of cloud (what it adds over its sky light, over the cloud's opacity) of an
+// overcast ten times as dense is clearly less (0.71 of it; 1.01 without the attenuation).
+double nearGlowPerCloud(clouds::tools::CloudHarness& h, float densityMultiplier) {
+  clouds::Settings s = clouds::tools::singleFrame(overcast());
+  s.densityMultiplier = densityMultiplier;
+  CloudView view = underTheOvercast();
+  h.cut();
+  const CloudFrame before = h.render(view, s, kExtent);
+  view.lightningFlashes = {flashAhead()};
+  h.cut();
+  const CloudFrame after = h.render(view, s, kExtent);
+  const clouds::tools::PixelRays rays(view, kExtent);
+  const glm::dvec3 flash = flashAhead().positionMetres - view.position;
+  double glow = 0.0;
+  std::size_t near = 0;
+  for (std::uint32_t y = 0; y < kExtent.height; ++y) {
+    for (std::uint32_t x = 0; x < kExtent.width; ++x) {
+      const std::size_t i = std::size_t{y} * kExtent.width + x;
+      const double depth = before.depth[i].y;
+      const double d = glm::length(glm::dvec3(rays.direction(x, y)) * depth - flash);
+      const double cloud = 1.0 - double(before.radiance[i].a);
+      if (depth <= 0.0 || d > 1000.0 || cloud < 0.5) continue;
+      const double sky = vkfx::shader::flashSkyLight(float(d), 4000.0f) * 1300.0 / 3.0;
+      glow += (luminance(after.radiance[i]) - luminance(before.radiance[i])) / cloud - sky;
+      ++near;
+    }
+  }
+  return near > 20 ? glow / double(near) : -1.0;
+}
+
+TEST_F(Lightning, DenseCloudGlowsLess) {
+  const double thin = nearGlowPerCloud(harness(), 1.0f);
+  const double dense = nearGlowPerCloud(harness(), 10.0f);
+  std::printf("glow per unit of cloud near the flash: %.2f, ten times as dense %.2f\n", thin,
+              dense);
+  ASSERT_GT(thin, 0.0) << "cloud near the flash";
+  ASSERT_GT(dense, 0.0) << "cloud near the flash";
+  EXPECT_LT(dense, 0.85 * thin);
 }
 
 // With temporal reuse (1 pixel in 16 marched a frame), a flash on one frame must leave nothing
@@ -178,16 +236,21 @@ TEST_F(Lightning, FlashesNeedRoomInTheSettings) {
   EXPECT_NE(bad.find("FrameInputs.lightningFlashes[1].radiusMetres"), std::string::npos) << bad;
 }
 
-// A layer without room for flashes has no flashes' buffer; with room, one per frame in flight.
+// A layer without room for flashes or bolts has no lightning memory at all; room for flashes
+// adds the glow image and the flashes' blocks, room for bolts their buffers.
 TEST_F(Lightning, NoLightningNoBuffer) {
   clouds::tools::CloudHarness none(device(), kExtent);
   clouds::Settings s = clouds::tools::singleFrame(overcast());
   s.lightningFlashes = 0;
   none.render(underTheOvercast(), s, kExtent);
-  const std::uint64_t without = none.memoryUsage().bufferBytes;
+  EXPECT_EQ(none.memoryUsage().lightningBytes, 0u);
   s.lightningFlashes = 4;
   none.render(underTheOvercast(), s, kExtent);
-  EXPECT_GT(none.memoryUsage().bufferBytes, without) << "the flashes' blocks";
+  const std::uint64_t flashes = none.memoryUsage().lightningBytes;
+  EXPECT_GT(flashes, 0u) << "the glow and the flashes' blocks";
+  s.lightningBoltSegments = 8;
+  none.render(underTheOvercast(), s, kExtent);
+  EXPECT_GT(none.memoryUsage().lightningBytes, flashes) << "the bolts' buffers";
 }
 
 // Looking level from 300 m up, a bolt straight ahead: from inside the cloud (base 1.5 km) down
@@ -351,9 +414,45 @@ TEST_F(Lightning, BoltsNeedRoomInTheSettings) {
   view.lightningBolts[1].widthMetres = 0.0f;
   const std::string thin = harness().tryRender(view, s, kExtent);
   EXPECT_NE(thin.find("FrameInputs.lightningBolts[1].widthMetres"), std::string::npos) << thin;
-  s.lightningFlashes = 0;
-  EXPECT_NE(clouds::validateSettings(s).find("Settings.lightningBoltSegments = 8"),
-            std::string::npos);
+}
+
+// A bolt too big to list its blocks (wide and near, across a 640x480 frame) is drawn over its
+// bounds instead, whole: light along all of its line, in every quarter of the frame.
+TEST_F(Lightning, AScreenWideBoltIsDrawnWhole) {
+  constexpr VkExtent2D kLarge{640, 480};
+  clouds::tools::CloudHarness large(device(), kLarge);
+  const clouds::Settings s = withBolts(clouds::tools::singleFrame(overcast()));
+  CloudView view = lookingAtTheBolt();
+  const CloudFrame without = large.render(view, s, kLarge);
+  clouds::LightningBoltSegment piece = boltAhead(0.0, 0.0, 0.0);
+  piece.fromMetres = view.position + glm::dvec3(-40.0, 25.0, -30.0);
+  piece.toMetres = view.position + glm::dvec3(40.0, -25.0, -30.0);
+  piece.widthMetres = 8.0f;
+  view.lightningBolts = {piece};
+  // The projection lists no blocks for it: more than kBoltMaxBlocks.
+  clouds::FrameInputs inputs;
+  inputs.renderExtent = kLarge;
+  inputs.cameraPosition = view.position;
+  inputs.view = glm::mat4(1.0f);
+  inputs.projection = glm::perspective(glm::radians(view.verticalFovDegrees),
+                                       float(kLarge.width) / float(kLarge.height), 1.0f, 1e5f);
+  inputs.lightningBolts = view.lightningBolts;
+  ASSERT_TRUE(clouds::detail::projectBolts(inputs).blocks.empty());
+  const CloudFrame with = large.render(view, s, kLarge);
+  ASSERT_TRUE(test::allValid(with));
+  std::size_t quarters[4] = {0, 0, 0, 0};
+  for (std::uint32_t y = 0; y < kLarge.height; ++y) {
+    for (std::uint32_t x = 0; x < kLarge.width; ++x) {
+      const std::size_t i = std::size_t{y} * kLarge.width + x;
+      if (luminance(with.radiance[i]) > luminance(without.radiance[i]) + 1.0) {
+        ++quarters[(x < kLarge.width / 2 ? 0 : 1) + (y < kLarge.height / 2 ? 0 : 2)];
+      }
+    }
+  }
+  std::printf("screen-wide bolt: lit pixels by quarter %zu %zu %zu %zu\n", quarters[0], quarters[1],
+              quarters[2], quarters[3]);
+  EXPECT_GT(quarters[0], 1000u) << "upper left: from there";
+  EXPECT_GT(quarters[3], 1000u) << "lower right: to there";
 }
 
 }  // namespace

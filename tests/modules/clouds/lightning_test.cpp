@@ -262,4 +262,45 @@ TEST(Lightning, TheCloudsGetWholeBoltsThatFit) {
   EXPECT_TRUE(clouds::ecs::lightningBolts(w.world, 0).empty()) << "no room, no bolt";
 }
 
+// Cells from the weather: where the procedural weather holds cumulonimbus, apart, strongest
+// first, a third of the way up the layer; none where the weather has none.
+TEST(Lightning, StormCellsSitWhereTheWeatherHoldsCumulonimbus) {
+  clouds::Settings s;
+  s.coverage = 0.55f;
+  s.cloudType = 1.0f;
+  s.layerBottomMetres = 1800.0f;
+  s.layerTopMetres = 11000.0f;
+  const glm::dvec2 centre(5000.0, -10000.0);
+  const auto cells = clouds::ecs::stormCellsFromWeather(s, 12, centre, 14000.0, 3, 5000.0f);
+  ASSERT_EQ(cells.size(), 3u);
+  double lastStrength = 1e9;
+  for (std::size_t i = 0; i < cells.size(); ++i) {
+    const glm::dvec3 p = cells[i].positionMetres;
+    EXPECT_NEAR(p.y, 1800.0 + 9200.0 / 3.0, 1e-6);
+    EXPECT_EQ(cells[i].radiusMetres, 5000.0f);
+    EXPECT_LE(std::abs(p.x - centre.x), 14000.0 + 1e-6);
+    EXPECT_LE(std::abs(p.z - centre.y), 14000.0 + 1e-6);
+    const clouds::WeatherColumn w = clouds::proceduralWeatherAt(s, 12, {p.x, p.z}, 0.0);
+    EXPECT_GE(w.type, 0.75f);
+    EXPECT_GE(w.coverage, 0.5f);
+    const double strength = double(w.coverage) * w.density * (w.type - 0.5);
+    EXPECT_LE(strength, lastStrength) << "strongest first";
+    lastStrength = strength;
+    for (std::size_t j = 0; j < i; ++j) {
+      const glm::dvec3 q = cells[j].positionMetres;
+      EXPECT_GE(std::hypot(p.x - q.x, p.z - q.z), 5000.0) << "cells apart";
+    }
+  }
+  // The same weather, the same cells; another seed, others.
+  EXPECT_EQ(
+      clouds::ecs::stormCellsFromWeather(s, 12, centre, 14000.0, 3, 5000.0f)[0].positionMetres,
+      cells[0].positionMetres);
+  EXPECT_NE(
+      clouds::ecs::stormCellsFromWeather(s, 13, centre, 14000.0, 3, 5000.0f)[0].positionMetres,
+      cells[0].positionMetres);
+  // Stratocumulus weather holds no cumulonimbus.
+  s.cloudType = 0.4f;
+  EXPECT_TRUE(clouds::ecs::stormCellsFromWeather(s, 12, centre, 14000.0, 3, 5000.0f).empty());
+}
+
 }  // namespace

@@ -65,20 +65,12 @@ TEST(SettingRanges, TheCheckedRangesAreTheDocumentedOnes) {
   EXPECT_EQ(matched, documented.size()) << "a documented range is not checked";
 }
 
-// Default settings with room for lightning flashes: the one rule across fields that a field
-// in its range can break (bolts need flashes) holds for any of them.
-clouds::Settings base() {
-  clouds::Settings s;
-  s.lightningFlashes = 1;
-  return s;
-}
-
 TEST(SettingRanges, BothBoundsPassAndJustOutsideNamesTheField) {
   for (const SettingRange& r : clouds::detail::settingRanges()) {
     const std::string field = r.field;
     if (field == "layerTopMetres" || field == "layerBottomMetres") continue;  // below
     for (const double bound : {r.lo, r.hi}) {
-      clouds::Settings s = base();
+      clouds::Settings s;
       r.set(s, bound);
       const std::string error = clouds::validateSettings(s);
       EXPECT_EQ(error.find("Settings." + field + " ="), std::string::npos)
@@ -87,14 +79,14 @@ TEST(SettingRanges, BothBoundsPassAndJustOutsideNamesTheField) {
     const double step = r.integer ? 1.0 : std::max(std::abs(r.hi - r.lo) * 1e-3, 1e-6);
     for (const double outside : {r.lo - step, r.hi + step}) {
       if (r.integer && outside < 0.0) continue;  // an unsigned field cannot hold it
-      clouds::Settings s = base();
+      clouds::Settings s;
       r.set(s, outside);
       const std::string error = clouds::validateSettings(s);
       EXPECT_EQ(error.rfind("Settings." + field + " = ", 0), 0u)
           << field << " = " << outside << ": got '" << error << "'";
       EXPECT_NE(error.find("must be in ["), std::string::npos) << error;
     }
-    clouds::Settings s = base();
+    clouds::Settings s;
     r.set(s, std::numeric_limits<double>::quiet_NaN());
     if (!r.integer) {
       EXPECT_EQ(clouds::validateSettings(s).rfind("Settings." + field + " = ", 0), 0u)
@@ -118,17 +110,6 @@ TEST(SettingRanges, TheLayerMayBeExactlyOneMetreThick) {
     s.layerTopMetres = bottom + 1.0f;
     EXPECT_EQ(clouds::validateSettings(s), "") << "bottom " << bottom;
   }
-}
-
-TEST(SettingRanges, BoltsNeedRoomForFlashes) {
-  clouds::Settings s;
-  s.lightningBoltSegments = 1;
-  EXPECT_NE(clouds::validateSettings(s).find("Settings.lightningBoltSegments = 1: bolts need "
-                                             "lightningFlashes > 0"),
-            std::string::npos)
-      << clouds::validateSettings(s);
-  s.lightningFlashes = 1;
-  EXPECT_EQ(clouds::validateSettings(s), "");
 }
 
 }  // namespace

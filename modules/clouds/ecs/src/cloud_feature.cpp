@@ -156,6 +156,7 @@ std::vector<std::string> CloudFeature::effects() const {
   }
   if (settings_.godRaySamples > 0) names.emplace_back("god rays");
   if (settings_.lightningFlashes > 0) names.emplace_back("lightning");
+  if (settings_.lightningBoltSegments > 0) names.emplace_back("lightning bolts");
   return names;
 }
 

@@ -160,6 +160,42 @@ std::vector<clouds::LightningBoltSegment> boltSegments(const LightningStrike& st
   return segments;
 }
 
+std::vector<LightningCell> stormCellsFromWeather(const clouds::Settings& settings,
+                                                 std::uint32_t noiseSeed, glm::dvec2 centreMetres,
+                                                 double withinMetres, std::uint32_t count,
+                                                 float radiusMetres) {
+  struct Column {
+    glm::dvec2 xz;
+    double strength;
+  };
+  // A grid fine enough for the weather's features (a 512^2 map over its tile: ~60 m a texel at
+  // the default 32 km tile; cumulonimbus columns are kilometres across).
+  constexpr int kSteps = 96;
+  std::vector<Column> columns;
+  for (int j = 0; j <= kSteps; ++j) {
+    for (int i = 0; i <= kSteps; ++i) {
+      const glm::dvec2 xz = centreMetres + withinMetres * (glm::dvec2(i, j) * (2.0 / kSteps) - 1.0);
+      const clouds::WeatherColumn w = clouds::proceduralWeatherAt(settings, noiseSeed, xz, 0.0);
+      if (w.type < 0.75f || w.coverage < 0.5f) continue;
+      columns.push_back({xz, double(w.coverage) * w.density * (w.type - 0.5)});
+    }
+  }
+  std::sort(columns.begin(), columns.end(),
+            [](const Column& a, const Column& b) { return a.strength > b.strength; });
+  const double altitude = settings.layerBottomMetres +
+                          (double(settings.layerTopMetres) - settings.layerBottomMetres) / 3.0;
+  std::vector<LightningCell> cells;
+  for (const Column& c : columns) {
+    if (cells.size() >= count) break;
+    const bool apart = std::all_of(cells.begin(), cells.end(), [&](const LightningCell& cell) {
+      return glm::length(glm::dvec2(cell.positionMetres.x, cell.positionMetres.z) - c.xz) >=
+             radiusMetres;
+    });
+    if (apart) cells.push_back({glm::dvec3(c.xz.x, altitude, c.xz.y), radiusMetres});
+  }
+  return cells;
+}
+
 bool installLightning(engine::ecs::World& world, engine::ecs::Scheduler& scheduler) {
   bool storm = false;
   world.view<const LightningStorm>().each([&](const LightningStorm&) { storm = true; });

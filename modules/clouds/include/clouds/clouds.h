@@ -147,7 +147,7 @@ struct MemoryUsage {
   std::uint64_t upsamplingBytes = 0;  // two output-resolution histories (temporal upsampling)
   std::uint64_t shadowBytes = 0;      // the cloud shadow map and its spare cascade
   std::uint64_t godRayBytes = 0;      // the god-ray occlusion image, mask and light
-  std::uint64_t lightningBytes = 0;   // the clouds' lightning glow (its flashes: bufferBytes)
+  std::uint64_t lightningBytes = 0;   // the glow image, the flashes' blocks, the bolts' buffers
   std::uint64_t bufferBytes = 0;      // uniforms, work counters, placeholders
   std::uint64_t retiredBytes = 0;     // images a larger prepare() replaced, freed once the
                                       //   frames in flight that may use them have retired
@@ -309,8 +309,7 @@ struct Settings {
   // buffer; a frame's flashes must then be none.
   std::uint32_t lightningFlashes = 0;  // [0, 16]
   // How many straight segments of lightning bolts (FrameInputs::lightningBolts) the output can
-  // draw at once (with lightningFlashes > 0). 0: no bolt code in any pipeline, no buffer; a
-  // frame's bolts must then be none.
+  // draw at once. 0: no bolt pipeline, pass or buffer; a frame's bolts must then be none.
   std::uint32_t lightningBoltSegments = 0;  // [0, 256]
 };
 
@@ -334,6 +333,18 @@ std::string validateSettings(const Settings& settings);
 // steps, many light samples, no coarse sampling or empty-space skipping, and no early exit
 // worth mentioning. Ground truth for accuracy-versus-cost.
 Settings referenceSettings(const Settings& base);
+
+// The weather over a world column as the march reads it from the procedural weather map (not
+// from a painted one), under `settings`: for hosts that place things by the weather (storm
+// cells where cumulonimbus is dense, ...). A pure function of its arguments; it evaluates the
+// map's function where the march filters its 512^2 texels, so it is as exact as a texel.
+struct WeatherColumn {
+  float coverage = 0.0f;  // [0, 1] the sky this column can fill (global coverage applied)
+  float type = 0.0f;      // [0, 1] 0 stratus, 0.5 stratocumulus, 1 cumulus and cumulonimbus
+  float density = 0.0f;   // [0, 1] density scale
+};
+WeatherColumn proceduralWeatherAt(const Settings& settings, std::uint32_t noiseSeed,
+                                  glm::dvec2 xzMetres, double timeSeconds);
 
 // A lightning flash the clouds glow with this frame (Nubis Evolved's glow term): the cloud
 // within `radiusMetres` of it glows with `radiance` times pow(1 - d / radius, 12) at distance

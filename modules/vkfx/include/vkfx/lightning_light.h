@@ -40,7 +40,7 @@ VKFX_INLINE float flashGlow(float distance, float reachMetres) {
 }
 
 // The share of the core's light the cloud around it sends on as sky light.
-const float kFlashSkyShare = 0.15f;
+const float kFlashSkyShare = 0.05f;
 
 // The flash's light in the sky at `distance` (m) from the charge, per unit of its radiance.
 VKFX_INLINE float flashSkyLight(float distance, float reachMetres) {

@@ -30,6 +30,17 @@ struct LightningStorm {
   double groundAltitudeMetres = 0.0;  // where ground discharges' bolts end (terrain hides the rest)
 };
 
+// Where a storm's cells are when the weather says: the `count` columns around `centreMetres`
+// (x, z; within `withinMetres` along each axis) where the procedural weather holds the most
+// cumulonimbus (coverage times density times how far the type is towards 1, among columns of
+// type 0.75 or more and coverage 0.5 or more), each at least `radiusMetres` from the others,
+// strongest first; each cell a third of the way up the layer, reaching `radiusMetres`. Fewer
+// (or none) where the weather has fewer. A pure function (clouds::proceduralWeatherAt at time 0).
+std::vector<LightningCell> stormCellsFromWeather(const clouds::Settings& settings,
+                                                 std::uint32_t noiseSeed, glm::dvec2 centreMetres,
+                                                 double withinMetres, std::uint32_t count,
+                                                 float radiusMetres);
+
 enum class StrikeKind : std::uint32_t { IntraCloud, Ground };
 
 // A strike: where and when it glows, how brightly, and its return strokes (real strokes come

@@ -1,0 +1,36 @@
+// The clouds' lightning glow per unit of cloud (GLSL only), for a pass that declares this
+// frame's flashes as `lightning[]` (LightningUniforms, indexed by gl_NumWorkGroups.z - 1 like
+// frame_uniforms.glsl's block) and has loaded `u`.
+//
+// Nubis Evolved's glow term (Schneider 2022: potential pow(1 - d / r, 12), less where the cloud
+// is dense) and the flash's sky light (vkfx/lightning_light.h: the core's inverse square, the
+// light that makes the whole deck flicker), at the clouds' transmittance-weighted depth along
+// the pixel's ray. The local density of the seeds' pseudo-attenuation is that of the cloud the
+// pixel sees into: its optical depth (at most 1: an opaque cloud shows its outer skin) over its
+// depth span (twice the weighted depth past the front), exact for a thin uniform cloud.
+#ifndef CLOUDS_CLOUD_LIGHTNING_GLSL
+#define CLOUDS_CLOUD_LIGHTNING_GLSL
+
+#include "vkfx/lightning_light.h"
+
+// `ray`: the pixel's world-space unit ray; `transmittance` and `depth` (front, weighted; m):
+// the clouds it sees.
+vec3 flashLightPerCloud(vec3 ray, float transmittance, vec2 depth) {
+  vec3 glow = vec3(0.0f);
+  if (depth.y <= 0.0f || transmittance >= 1.0f) return glow;
+  const uint slot = gl_NumWorkGroups.z - 1u;
+  const vec3 cloud = ray * depth.y;  // camera-relative (m)
+  const float span = max(2.0f * (depth.y - depth.x), 1.0f);
+  const float opticalDepth = min(-log(max(transmittance, 1e-6f)), 1.0f);
+  const float density = opticalDepth / span / max(u.extinctionPerMetre, 1e-12f);
+  const float attenuation = 1.0f - saturate(density * 5.0f);
+  for (uint i = 0u; i < lightning[slot].count.x; ++i) {
+    const vec4 flash = lightning[slot].flash[2u * i];
+    const float distance = length(cloud - flash.xyz);
+    const float core = flashGlow(distance, flash.w) * attenuation;
+    glow += lightning[slot].flash[2u * i + 1u].rgb * (core + flashSkyLight(distance, flash.w));
+  }
+  return glow;
+}
+
+#endif
