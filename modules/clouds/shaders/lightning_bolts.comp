@@ -5,8 +5,8 @@
 // piece is a line of its channel's width, keeping its energy when thinner than a pixel (a one-
 // pixel tent filter across it), hidden by the host's geometry nearer than it, seen through the
 // clouds as far as it lies behind their front, and hazed like them at its own distance. A pixel
-// tests only the pieces binned into its tile and takes the brightest. Nothing of it enters a
-// history: the histories were written by the upsample before.
+// tests only the pieces binned into its tile and shows the one that covers it most. Nothing of
+// it enters a history: the histories were written by the upsample before.
 // Inputs: 0 CloudUniforms; 1 the host's depth; 3 the clouds' depths (output res); 4 the host's
 // aerial perspective (3D, kSpecAerialPerspective); 5 the bolts' pieces (LightningBoltsHeader).
 // In and out: 2 the clouds' radiance + transmittance (output res). Push constants:
@@ -53,40 +53,49 @@ void main() {
   const uint pieces = boltWord(range + 1u);
   if (pieces == 0u) return;
   const uint first = bolts.tiles.y + boltWord(range);
-  const vec2 extent = vec2(u.outputExtent);
-  const float scene =
-      sceneDistanceFromDepth(texelFetch(hostDepth, ivec2(pixel), 0).r, p, extent, u);
-  const vec4 clouds = imageLoad(radianceImage, ivec2(pixel));
-  const vec2 depth = imageLoad(depthImage, ivec2(pixel)).xy;
-  // The ray's clip w per metre (a unit view-space ray has clip w dot(clipWRow.xyz, ray)).
-  const float wPerMetre = max(dot(bolts.clipWRow.xyz, viewRayDirection(p, extent, u)), 1e-6f);
-  vec3 light = vec3(0.0f);
+  // The piece that covers the pixel most (its coverage times its radiance), found with no more
+  // than the pieces themselves; most pixels of a tile are on none.
+  float brightest = 0.0f;
+  vec3 channel = vec3(0.0f);
+  float inverseW = 0.0f;
   for (uint k = 0u; k < pieces; ++k) {
     const uint piece = kBoltWordsPerSegment * boltWord(first + k);
     const vec4 ends = boltVec4(piece);
     const vec4 along = boltVec4(piece + 4u);
     const vec2 ab = ends.zw - ends.xy;
     const float t = saturate(dot(p - ends.xy, ab) / max(dot(ab, ab), 1e-12f));
-    const float inverseW = mix(along.x, along.y, t);
-    const float width = along.z * bolts.clipWRow.w * inverseW;  // px
+    const float w = mix(along.x, along.y, t);
+    const float width = along.z * bolts.clipWRow.w * w;  // px
     const float across = length(p - (ends.xy + t * ab));
     const float coverage = min(width, 1.0f) * saturate(0.5f * max(width, 1.0f) + 0.5f - across);
-    const float distance = 1.0f / (inverseW * wPerMetre);  // along the ray (m)
-    if (coverage <= 0.0f || distance > scene) continue;
-    // Behind the clouds' front by their depth span (as the glow takes it), it is
-    // seen through all of them.
-    const float span = max(2.0f * (depth.y - depth.x), 1.0f);
-    const float behind = depth.x > 0.0f ? saturate((distance - depth.x) / span) : 0.0f;
-    float air = 1.0f;
-    if (kAerialPerspective != 0u) {
-      const vec4 haze = aerialPerspectiveAt(aerialPerspective, p / extent, distance,
-                                            u.aerialPerspectiveRange, u.aerialPerspectiveSlices);
-      air = haze.a;
+    const vec3 light = boltVec4(piece + 8u).rgb * coverage;
+    const float brightness = light.r + light.g + light.b;
+    if (brightness > brightest) {
+      brightest = brightness;
+      channel = light;
+      inverseW = w;
     }
-    const vec3 channel = boltVec4(piece + 8u).rgb;
-    light = max(light, channel * (coverage * mix(1.0f, clouds.a, behind) * air));
   }
-  if (any(greaterThan(light, vec3(0.0f)))) {
-    imageStore(radianceImage, ivec2(pixel), vec4(clouds.rgb + light, clouds.a));
+  if (brightest <= 0.0f) return;
+  // Then whether it is seen: not behind the host's geometry, through the clouds as far as it
+  // lies behind their front (by their depth span, as the glow takes it), and through the haze.
+  const vec2 extent = vec2(u.outputExtent);
+  const float scene =
+      sceneDistanceFromDepth(texelFetch(hostDepth, ivec2(pixel), 0).r, p, extent, u);
+  // Along the ray (m): a unit view-space ray has clip w dot(clipWRow.xyz, ray) a metre.
+  const float wPerMetre = max(dot(bolts.clipWRow.xyz, viewRayDirection(p, extent, u)), 1e-6f);
+  const float distance = 1.0f / (inverseW * wPerMetre);
+  if (distance > scene) return;
+  const vec4 clouds = imageLoad(radianceImage, ivec2(pixel));
+  const vec2 depth = imageLoad(depthImage, ivec2(pixel)).xy;
+  const float span = max(2.0f * (depth.y - depth.x), 1.0f);
+  const float behind = depth.x > 0.0f ? saturate((distance - depth.x) / span) : 0.0f;
+  float air = 1.0f;
+  if (kAerialPerspective != 0u) {
+    const vec4 haze = aerialPerspectiveAt(aerialPerspective, p / extent, distance,
+                                          u.aerialPerspectiveRange, u.aerialPerspectiveSlices);
+    air = haze.a;
   }
+  imageStore(radianceImage, ivec2(pixel),
+             vec4(clouds.rgb + channel * (mix(1.0f, clouds.a, behind) * air), clouds.a));
 }

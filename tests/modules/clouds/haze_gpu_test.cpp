@@ -4,6 +4,8 @@
 // with the layout of vkfx/aerial_perspective.glsl; their transmittance is their own.
 #include <gtest/gtest.h>
 
+#include <cmath>
+#include <cstdio>
 #include <glm/gtc/packing.hpp>
 
 #include "cloud_gpu_fixture.h"
@@ -126,6 +128,40 @@ TEST_F(CloudHaze, BadHazeInputsAreRejected) {
   view.aerialPerspective.slices = 0;
   EXPECT_NE(r->tryRender(view, clouds::Settings{}, kExtent).find("aerialPerspective.slices"),
             std::string::npos);
+}
+
+// A lightning bolt is hazed like the clouds, at its own distance: a bolt thinner than a pixel,
+// 3 km ahead below the cloud, adds its energy times the air's transmittance there to the row
+// that looks at it square on.
+TEST_F(CloudHaze, BoltsAreHazedAtTheirDistance) {
+  const engine::gfx::Image volume = makeAir(device());
+  clouds::Settings settings = clouds::tools::singleFrame(clouds::Settings{});
+  settings.lightningBoltSegments = 1;
+  CloudView view;
+  view.pitchDegrees = 0.0;
+  view.aerialPerspective = {volume.view(), VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL, kSlices,
+                            kRangeMetres, glm::vec3(1.0f)};
+  auto r = renderer();
+  const CloudFrame without = r->render(view, settings, kExtent);
+  clouds::LightningBoltSegment bolt;
+  bolt.fromMetres = view.position + glm::dvec3(0.0, 200.0, -3000.0);
+  bolt.toMetres = view.position + glm::dvec3(0.0, -200.0, -3000.0);
+  bolt.radiance = glm::vec3(1e4f);
+  bolt.widthMetres = 3.0f;
+  view.lightningBolts = {bolt};
+  const CloudFrame with = r->render(view, settings, kExtent);
+  const std::uint32_t row = kExtent.height / 2;
+  double gained = 0.0;
+  for (std::uint32_t x = 0; x < kExtent.width; ++x) {
+    const std::size_t i = std::size_t{row} * kExtent.width + x;
+    gained += (double(with.radiance[i].r) - double(without.radiance[i].r));
+  }
+  const double pixelMetres =
+      3000.0 * 2.0 * std::tan(glm::radians(double(view.verticalFovDegrees) / 2.0)) / kExtent.height;
+  const double expected = 1e4 * 3.0 / pixelMetres * double(airAt(3000.0f).a);
+  std::printf("hazed bolt: the row gains %.2f (expected %.2f, air transmittance %.3f)\n", gained,
+              expected, double(airAt(3000.0f).a));
+  EXPECT_NEAR(gained, expected, 0.02 * expected);
 }
 
 }  // namespace
