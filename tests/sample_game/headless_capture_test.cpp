@@ -190,12 +190,14 @@ TEST(HeadlessCapture, EachSceneGetsOnlyThePassesAndPipelinesItNeeds) {
        R"x("pipelines": ["tonemap", "terrain (cloud shadows)", "terrain sunlight", )x"
        R"x("atmosphere module", "clouds module (shadow map)"])x",
        R"("shadow casters": ["clouds"])"},
-      // A storm: the clouds module with its lightning (the glow and the bolts are its upsample's
-      // variants).
+      // A storm: the clouds module with its lightning (the glow and the bolts' pass), and the
+      // terrain's lightning variant beside its plain one (drawn only while a flash lasts).
       {SAMPLE_ASSET_DIR + std::string("/scenes/thunderstorm.json"),
        R"("passes": ["cloud shadows", "terrain sunlight", "atmosphere", "scene", "clouds", )"
        R"("clouds composite", "tonemap", "capture"])",
-       R"x("clouds module (shadow map, terrain shadow, god rays, lightning, lightning bolts)"])x",
+       R"x("terrain (cloud shadows)", "terrain (cloud shadows) (lightning)", "terrain sunlight", )x"
+       R"x("atmosphere module", "clouds module (shadow map, terrain shadow, god rays, lightning, )x"
+       R"x(lightning bolts)"])x",
        R"("modules": ["atmosphere", "clouds"])"},
       // A layer that casts no shadows: no shadow pass, the plain terrain.
       {scene("unshadowed_clouds.json"),

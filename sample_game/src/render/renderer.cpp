@@ -55,7 +55,7 @@ Renderer::Renderer(gfx::Device& device, render::PresentTarget& target, ecs::Worl
     terrain_ = std::make_unique<TerrainRenderer>(device, *mesh->mesh, kHdrFormat, kDepthFormat,
                                                  featureSky, cloudShadows, storm);
     terrainMaterials_ = terrainMaterialsFor(*mesh->mesh, mesh->snowlineMetres);
-    pipelines.push_back(&terrain_->pipeline());
+    for (const gfx::Pipeline* pipeline : terrain_->pipelines()) pipelines.push_back(pipeline);
     // Under shadow-casting clouds the terrain is lit through its sunlight map, made over its
     // heightfield; mountains also shade the clouds and themselves when the heightfield goes to
     // the clouds' shadow map (a terrain that casts shadows). Without a map, neither is made.
@@ -185,6 +185,7 @@ void Renderer::updateFrameConstants(ecs::World& world, VkExtent2D extent) {
         glm::vec4(glm::vec3(flashes[0].positionMetres - camera.position), flashes[0].radiusMetres);
     f.flashRadiance = glm::vec4(flashes[0].radiance, 0.0f);
   }
+  if (terrain_) terrain_->setFlashing(!flashes.empty());
   tonemap_.exposure = render::exposureScale(world.ctx().get<render::Exposure>().ev100);
 
   if (terrain_) terrain_->cull(f.viewProjection, camera.position);
@@ -264,7 +265,9 @@ std::vector<std::pair<std::string, std::uint64_t>> Renderer::gpuMemory() const {
 std::vector<std::string> Renderer::pipelineNames() const {
   std::vector<std::string> names = {tonemapper_.pipeline().name()};
   if (sky_) names.push_back(sky_->pipeline().name());
-  if (terrain_) names.push_back(terrain_->pipeline().name());
+  if (terrain_) {
+    for (const gfx::Pipeline* pipeline : terrain_->pipelines()) names.push_back(pipeline->name());
+  }
   if (sunlight_) names.push_back(sunlight_->pipeline().name());
   if (hud_) names.push_back(hud_->pipeline().name());
   for (const render::RenderFeature* feature : features_) {

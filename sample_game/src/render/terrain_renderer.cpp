@@ -209,10 +209,20 @@ TerrainRenderer::TerrainRenderer(gfx::Device& device, const assets::MeshData& me
   desc.vertexAttributes = {{0, 0, VK_FORMAT_R32G32B32_SFLOAT, offsetof(TerrainVertex, position)},
                            {1, 0, VK_FORMAT_R32G32B32_SFLOAT, offsetof(TerrainVertex, normal)},
                            {2, 0, VK_FORMAT_R32G32B32_SFLOAT, offsetof(TerrainVertex, color)}};
-  desc.specialization = {{kLightningConstant, lightning ? 1u : 0u}};
+  desc.specialization = {{kLightningConstant, 0u}};
   desc.debugName = cloudShadows ? "terrain (cloud shadows)" : "terrain";
-  if (lightning) desc.debugName += " (lightning)";
   pipeline_ = gfx::Pipeline(device, desc);
+  if (lightning) {
+    desc.specialization = {{kLightningConstant, 1u}};
+    desc.debugName += " (lightning)";
+    lightningPipeline_.emplace(device, desc);
+  }
+}
+
+std::vector<const gfx::Pipeline*> TerrainRenderer::pipelines() const {
+  std::vector<const gfx::Pipeline*> all = {&pipeline_};
+  if (lightningPipeline_) all.push_back(&*lightningPipeline_);
+  return all;
 }
 
 void TerrainRenderer::cull(const glm::mat4& viewProjection, const glm::dvec3& cameraPosition) {

@@ -65,12 +65,21 @@ class TerrainRenderer {
   // `aerialPerspective`: hazed by a feature's aerial perspective (else by the fog).
   // `cloudShadows`: lit through the clouds and past the terrain's own shadow as the terrain's
   // sunlight map (TerrainSunlight) holds them.
-  // `lightning`: a storm's flashes light it (SceneFrame::flash; the variant with that code).
+  // `lightning`: a storm's flashes light it (SceneFrame::flash): a second pipeline, the variant
+  // with that code, drawn with in the frames with a flash in progress (setFlashing()).
   TerrainRenderer(engine::gfx::Device& device, const engine::assets::MeshData& mesh,
                   VkFormat hdrFormat, VkFormat depthFormat, bool aerialPerspective,
                   bool cloudShadows, bool lightning);
 
-  const engine::gfx::Pipeline& pipeline() const { return pipeline_; }
+  // This frame's pipeline: the lightning variant only while a flash is in progress, so that a
+  // storm costs the terrain nothing between its flashes.
+  const engine::gfx::Pipeline& pipeline() const {
+    return flashing_ && lightningPipeline_ ? *lightningPipeline_ : pipeline_;
+  }
+  // Every pipeline it may draw with (to warm up and to describe).
+  std::vector<const engine::gfx::Pipeline*> pipelines() const;
+  // Whether this frame has a flash in progress (SceneFrame::flashRadiance is not 0).
+  void setFlashing(bool flashing) { flashing_ = flashing; }
   bool hazedByAerialPerspective() const { return aerialPerspective_; }
   bool shadowedByClouds() const { return cloudShadows_; }
   // Linear, clamped: the aerial perspective's and the sunlight map's.
@@ -96,6 +105,8 @@ class TerrainRenderer {
   bool cloudShadows_ = false;
   engine::gfx::Sampler sampler_;
   engine::gfx::Pipeline pipeline_;
+  std::optional<engine::gfx::Pipeline> lightningPipeline_;  // a storm's scene only
+  bool flashing_ = false;
 };
 
 }  // namespace sample
