@@ -48,12 +48,14 @@ void main() {
     // of the cloud around it as a sphere of its radiance, whose irradiance at distance d is
     // pi L (core / d)^2 (Lambert: albedo / pi of it); and from the whole sky, the cloud the core
     // lights, whichever way the ground faces the flash (the sky above: (1 + n.y) / 2 of it).
+    // (`normal` is unit: terrainDetailNormal. No square root but the one inversesqrt.)
     const float core = flashCoreMetres(frame.flash.w);
     const vec3 toFlash = frame.flash.xyz - inRelative;
-    const float d2 = max(dot(toFlash, toFlash), core * core);
-    const float facing = max(dot(normalize(normal), toFlash * inversesqrt(d2)), 0.0f);
-    const float skyView = 0.5f + 0.5f * normalize(normal).y;
-    const float sky = flashSkyLight(length(toFlash), frame.flash.w) * skyView;
+    const float distanceSquared = dot(toFlash, toFlash);
+    const float d2 = max(distanceSquared, core * core);
+    const float facing = max(dot(normal, toFlash), 0.0f) * inversesqrt(d2);
+    const float skyView = 0.5f + 0.5f * normal.y;
+    const float sky = flashSkyLightSquared(distanceSquared, frame.flash.w) * skyView;
     lit += albedo * frame.flashRadiance.rgb * (core * core / d2 * facing + sky);
   }
 #ifdef TERRAIN_HAZED

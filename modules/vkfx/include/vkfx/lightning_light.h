@@ -42,10 +42,16 @@ VKFX_INLINE float flashGlow(float distance, float reachMetres) {
 // The share of the core's light the cloud around it sends on as sky light.
 const float kFlashSkyShare = 0.05f;
 
-// The flash's light in the sky at `distance` (m) from the charge, per unit of its radiance.
-VKFX_INLINE float flashSkyLight(float distance, float reachMetres) {
+// The flash's light in the sky at a squared distance `distanceSquared` (m^2) from the charge,
+// per unit of its radiance (no square root: a host's per-fragment use).
+VKFX_INLINE float flashSkyLightSquared(float distanceSquared, float reachMetres) {
   const float core = flashCoreMetres(reachMetres);
-  return kFlashSkyShare * core * core / (core * core + distance * distance);
+  return kFlashSkyShare * core * core / (core * core + distanceSquared);
+}
+
+// The same at `distance` (m).
+VKFX_INLINE float flashSkyLight(float distance, float reachMetres) {
+  return flashSkyLightSquared(distance * distance, reachMetres);
 }
 
 VKFX_SHADER_END
