@@ -1,8 +1,6 @@
 // Recording a frame's lightning: its flashes, which the reconstruction makes the clouds' glow
 // with (kept out of the history, so no flash enters one), and its bolts, projected onto the
 // screen and drawn into the radiance output after the upsample (after the histories too).
-#include <algorithm>
-
 #include "context_impl.h"
 #include "lightning_bolts.h"
 #include "pipeline_variants.h"
@@ -13,7 +11,6 @@ using detail::Program;
 
 namespace {
 
-using detail::kStorageRead;
 using detail::kStorageWrite;
 constexpr VkPipelineStageFlags2 kCompute = detail::kComputeStage;
 using detail::kHostReadAccess;

@@ -8,6 +8,7 @@
 
 #include <cmath>
 #include <cstdio>
+#include <functional>
 
 #include <glm/gtc/matrix_transform.hpp>
 #include "cloud_gpu_fixture.h"
@@ -170,29 +171,33 @@ TEST_F(Lightning, DenseCloudGlowsLess) {
   EXPECT_LT(dense, 0.85 * thin);
 }
 
-// With temporal reuse (1 pixel in 16 marched a frame), a flash on one frame must leave nothing
-// behind: the next frame equals that of a renderer that never saw the flash.
-TEST_F(Lightning, TheFrameAfterAFlashIsAsIfItNeverWas) {
-  clouds::Settings s = clouds::settingsFor(clouds::Quality::Medium, overcast());
-  clouds::tools::CloudHarness flashed(device(), kExtent);
-  clouds::tools::CloudHarness never(device(), kExtent);
-  CloudView view = underTheOvercast();
-  CloudFrame a;
-  CloudFrame b;
+// With temporal reuse (1 pixel in 16 marched a frame), two renderers over 12 frames, `light`
+// adding lightning to frames 6 to 8 of one: it shows while it lasts, and frame 9 equals the
+// unlit renderer's to the bit (nothing of it entered a history).
+void expectNothingLeftBehind(engine::gfx::Device& device, const clouds::Settings& s, CloudView view,
+                             const std::function<void(CloudView&)>& light, const char* what) {
+  clouds::tools::CloudHarness lit(device, kExtent);
+  clouds::tools::CloudHarness never(device, kExtent);
   for (int frame = 0; frame < 12; ++frame) {
-    CloudView withFlash = view;
-    if (frame >= 6 && frame < 9) withFlash.lightningFlashes = {flashAhead()};
-    a = flashed.render(withFlash, s, kExtent);
-    b = never.render(view, s, kExtent);
+    CloudView withLight = view;
+    if (frame >= 6 && frame < 9) light(withLight);
+    const CloudFrame a = lit.render(withLight, s, kExtent);
+    const CloudFrame b = never.render(view, s, kExtent);
     if (frame == 7) {
-      EXPECT_NE(a.radiance, b.radiance) << "the flash shows while it lasts";
+      EXPECT_NE(a.radiance, b.radiance) << what << " shows while it lasts";
     }
     if (frame == 9) {
-      EXPECT_EQ(a.radiance, b.radiance) << "no glow left in the history";
+      EXPECT_EQ(a.radiance, b.radiance) << "nothing of " << what << " left in the history";
       EXPECT_EQ(a.depth, b.depth);
     }
     view.timeSeconds += 1.0 / 30.0;
   }
+}
+
+TEST_F(Lightning, TheFrameAfterAFlashIsAsIfItNeverWas) {
+  expectNothingLeftBehind(
+      device(), clouds::settingsFor(clouds::Quality::Medium, overcast()), underTheOvercast(),
+      [](CloudView& v) { v.lightningFlashes = {flashAhead()}; }, "the flash");
 }
 
 TEST_F(Lightning, HardCasesStayFinite) {
@@ -348,29 +353,16 @@ TEST_F(Lightning, GeometryNearerThanABoltHidesIt) {
   }
 }
 
-// A bolt on three frames leaves nothing in the temporal history.
+// A bolt (with its flash) on three frames leaves nothing in the temporal history.
 TEST_F(Lightning, TheFrameAfterABoltIsAsIfItNeverWas) {
-  clouds::Settings s = withBolts(clouds::settingsFor(clouds::Quality::Medium, overcast()));
-  clouds::tools::CloudHarness bolted(device(), kExtent);
-  clouds::tools::CloudHarness never(device(), kExtent);
-  CloudView view = lookingAtTheBolt();
-  for (int frame = 0; frame < 12; ++frame) {
-    CloudView withBolt = view;
-    if (frame >= 6 && frame < 9) {
-      withBolt.lightningFlashes = {flashAhead()};
-      withBolt.lightningBolts = {boltAhead(3000.0, 2500.0, 0.0)};
-    }
-    const CloudFrame a = bolted.render(withBolt, s, kExtent);
-    const CloudFrame b = never.render(view, s, kExtent);
-    if (frame == 7) {
-      EXPECT_NE(a.radiance, b.radiance) << "the bolt shows while it lasts";
-    }
-    if (frame == 9) {
-      EXPECT_EQ(a.radiance, b.radiance) << "nothing of it left in the history";
-      EXPECT_EQ(a.depth, b.depth);
-    }
-    view.timeSeconds += 1.0 / 30.0;
-  }
+  expectNothingLeftBehind(
+      device(), withBolts(clouds::settingsFor(clouds::Quality::Medium, overcast())),
+      lookingAtTheBolt(),
+      [](CloudView& v) {
+        v.lightningFlashes = {flashAhead()};
+        v.lightningBolts = {boltAhead(3000.0, 2500.0, 0.0)};
+      },
+      "the bolt");
 }
 
 TEST_F(Lightning, BoltHardCasesStayFinite) {
