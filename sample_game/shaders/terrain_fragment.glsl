@@ -6,13 +6,13 @@
 // gradient sky behind the fragment.
 #extension GL_GOOGLE_include_directive : require
 #include "scene_constants.h"
-#include "vkfx/lightning_light.h"
 
 layout(binding = 0, std140) uniform Frame { SceneFrame frame; };
 #include "terrain_lighting.glsl"
 layout(location = 0) in vec3 inRelative;
 layout(location = 1) in vec3 inNormal;
 layout(location = 2) in vec3 inColor;
+layout(location = 4) in vec4 inFlashLight;  // terrain_vertex.glsl
 layout(location = 0) out vec4 outColor;
 // A storm's scene: the brightest flash in progress lights the ground (none: no such code).
 layout(constant_id = 0) const bool kLightning = false;
@@ -44,19 +44,12 @@ void main() {
   const vec3 albedo = terrainAlbedo(inColor, normal, world.y, detail, frame.terrain);
   vec3 lit = terrainLit(albedo, normal, sunVisibility());
   if (kLightning) {
-    // A lightning flash lights the ground (vkfx/lightning_light.h): directly, the glowing core
-    // of the cloud around it as a sphere of its radiance, whose irradiance at distance d is
-    // pi L (core / d)^2 (Lambert: albedo / pi of it); and from the whole sky, the cloud the core
-    // lights, whichever way the ground faces the flash (the sky above: (1 + n.y) / 2 of it).
-    // (`normal` is unit: terrainDetailNormal. No square root but the one inversesqrt.)
-    const float core = flashCoreMetres(frame.flash.w);
-    const vec3 toFlash = frame.flash.xyz - inRelative;
-    const float distanceSquared = dot(toFlash, toFlash);
-    const float d2 = max(distanceSquared, core * core);
-    const float facing = max(dot(normal, toFlash), 0.0f) * inversesqrt(d2);
-    const float skyView = 0.5f + 0.5f * normal.y;
-    const float sky = flashSkyLightSquared(distanceSquared, frame.flash.w) * skyView;
-    lit += albedo * frame.flashRadiance.rgb * (core * core / d2 * facing + sky);
+    // The brightest lightning flash in progress (its falloff per vertex: terrain_vertex.glsl):
+    // its direct light as the surface faces it, and its sky light from the sky above, whichever
+    // way the surface faces the flash ((1 + n.y) / 2 of the sky).
+    const float direct = max(dot(normal, inFlashLight.xyz), 0.0f);
+    const float sky = inFlashLight.w * (0.5f + 0.5f * normal.y);
+    lit += albedo * frame.flashRadiance.rgb * (direct + sky);
   }
 #ifdef TERRAIN_HAZED
   outColor = vec4(lit * inHaze.a + inHaze.rgb, 1.0f);
