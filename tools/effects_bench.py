@@ -10,7 +10,7 @@ differences, and what the scene without it lacks exactly: frame-graph passes, pi
 --describe lists them) and GPU memory (as the sample reports it at exit).
 
 Usage: tools/effects_bench.py [--rounds N] [--frames N] OUT_DIR   (writes OUT_DIR/results.md;
-       the project's: tools/effects_bench.py docs/effects, about seven minutes)
+       the project's: tools/effects_bench.py docs/effects, about nine minutes)
 """
 import argparse
 import copy
@@ -148,7 +148,7 @@ def describe(scene_path):
 def main():
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("out_dir")
-    parser.add_argument("--rounds", type=int, default=5)
+    parser.add_argument("--rounds", type=int, default=7)
     parser.add_argument("--frames", type=int, default=120)
     parser.add_argument("--sample", default=SAMPLE, help="the sample_game executable")
     parser.add_argument("--width", type=int, default=640)

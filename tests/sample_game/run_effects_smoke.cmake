@@ -1,6 +1,7 @@
 # Smoke test of the effects benchmark (tools/effects_bench.py): a tiny run must finish and
 # write a table with a row per effect, each saying what the scene without it lacks; the god
-# rays' row names their pipelines and memory, and the terrain shadows' adds no memory.
+# rays' row names their pipelines and memory, and the terrain shadows' adds no memory; and
+# lightning's cost is summed over the passes it changes.
 # Inputs: PYTHON, SCRIPT, SAMPLE (the executable), OUT_DIR.
 file(REMOVE_RECURSE "${OUT_DIR}")
 execute_process(
@@ -27,4 +28,11 @@ if(NOT report MATCHES "\\| lightning, a flash always active \\|[^\n]*clouds modu
 endif()
 if(NOT report MATCHES "\\| terrain shadows \\|[^\n]*\\| 0\\.00 \\|")
   message(FATAL_ERROR "the terrain shadows' row adds memory:\n${report}")
+endif()
+# Lightning's cost in the passes it changes: a row per lightning comparison, with the bolts' pass.
+if(NOT report MATCHES "\\| effect \\| frame: scene \\|[^\n]*clouds: lightning bolts \\| all of them \\|")
+  message(FATAL_ERROR "no table of lightning's cost in the passes it changes:\n${report}")
+endif()
+if(NOT report MATCHES "\\| lightning, a ground strike and its bolt always active \\| [+-][0-9.]+ \\(")
+  message(FATAL_ERROR "the passes table has no row for the bolt:\n${report}")
 endif()
