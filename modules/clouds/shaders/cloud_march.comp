@@ -90,7 +90,8 @@ void main() {
   options.multipleScattering = kMultipleScattering;
   options.lightSteps = kLightSteps;
   options.emptySpace = kEmptySpace;
-  const float jitter = rayJitter(pixel, u.temporalIndex, kJitterMode);
+  const float jitter = rayJitter(pixel, u.temporalIndex, u.tileSize,
+                                 (u.flags & kFlagRebuiltInsideLayer) != 0u, kJitterMode);
   const MarchResult result = marchClouds(direction, distance, jitter, u, options);
 
   imageStore(outSamples, ivec2(pixel),

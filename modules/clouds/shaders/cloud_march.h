@@ -257,11 +257,24 @@ VKFX_INLINE float sceneDistanceFromDepth(float depth, vec2 pixelCentre, vec2 ext
   return length(vec3(view) / view.w);
 }
 
-// Ray-start jitter in [0, 1): a 4x4 Bayer pattern per pixel, moved by a Halton sequence over
-// the temporal index (frames since the history was reset) so accumulation sees new offsets.
-VKFX_INLINE float rayJitter(uvec2 pixel, uint temporalIndex, uint mode) {
+// Ray-start jitter in [0, 1) for a pixel marched 1 in tileSize^2 frames (temporalIndex: frames
+// since the history was reset): a 4x4 Bayer pattern over the pixels (the pixels of a tile,
+// marched in turn, start apart; the rays of one frame, at the same place in each tile, start
+// together: a frame without history interpolates them without a pattern), moved along a Halton
+// sequence over the pixel's own refreshes (temporalIndex / tileSize^2). (Over the frame index, a
+// pixel refreshed every 16th frame saw Halton points 16 apart, whose lowest four bits are the
+// same: offsets within 1/16 of each other, a fixed pattern of dots no accumulation removes.)
+// `spreadOverTiles` (a frame without history inside the layer, where thin cloud all around
+// makes a ray's result depend much on where it starts, so that rays starting together bias the
+// whole frame) also spreads a frame's rays over a 2x2 Bayer pattern of the tiles, which
+// reconstruct.comp's tent averages exactly (it weighs even and odd tiles alike).
+VKFX_INLINE float rayJitter(uvec2 pixel, uint temporalIndex, uint tileSize, bool spreadOverTiles,
+                            uint mode) {
   if (mode == 0u) return 0.5f;
-  return fract(bayer4x4(pixel) + halton(temporalIndex % 64u + 1u, 2u));
+  const uint k = max(tileSize, 1u);
+  const float refresh = halton((temporalIndex / (k * k)) % 64u + 1u, 2u);
+  const float tiles = spreadOverTiles ? bayer2x2(pixel / k) : 0.0f;
+  return fract(bayer4x4(pixel) + refresh + tiles);
 }
 
 // Marches one view ray. `rayDirection` is a unit world-space vector (y up), `sceneDistance`

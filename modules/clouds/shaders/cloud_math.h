@@ -93,6 +93,13 @@ VKFX_INLINE float halton(uint index, uint base) {
   return result;
 }
 
+// 2x2 Bayer threshold in [0, 1) for a pixel: (0, 0) 1/8, (1, 1) 3/8, (1, 0) 5/8, (0, 1) 7/8.
+VKFX_INLINE float bayer2x2(uvec2 pixel) {
+  const uint v = (pixel.x ^ pixel.y) & 1u;
+  const uint index = (v << 1u) | (pixel.y & 1u);
+  return (float(index) + 0.5f) / 4.0f;
+}
+
 // 4x4 Bayer threshold in [0, 1) for a pixel.
 VKFX_INLINE float bayer4x4(uvec2 pixel) {
   const uint x = pixel.x & 3u;

@@ -55,8 +55,9 @@ const uint kMarchCloudShadowParameters = 11u;  // its CloudShadowParameters (uni
 const uint kReconstructFresh = 1u;
 const uint kReconstructHistory = 2u;
 const uint kReconstructOut = 3u;
-const uint kReconstructFlashes = 4u;  // LightningUniforms (a stand-in without lightning)
-const uint kReconstructGlow = 5u;     // RGBA16F glow per unit of cloud (lightningFlashes > 0)
+const uint kReconstructFlashes = 4u;        // LightningUniforms (a stand-in without lightning)
+const uint kReconstructGlow = 5u;           // RGBA16F glow per unit of cloud (lightningFlashes > 0)
+const uint kReconstructSceneDistance = 6u;  // the scene distance image (R32F, trace res)
 // upsample.comp
 const uint kUpsampleTraceSamples = 1u;
 const uint kUpsampleHostDepth = 2u;
@@ -152,6 +153,9 @@ const uint kHistoryReprojected = 2u;
 const uint kFlagReversedZ = 1u;    // host depth: near = 1, far/sky = 0
 const uint kFlagHasDepth = 2u;     // a depth buffer is bound (else: nothing occludes)
 const uint kFlagHomogeneous = 4u;  // tests: density 1 everywhere inside the layer
+// A frame without history, the camera moving in or near the layer: its rays spread their start
+// offsets over the tiles (rayJitter), and it is rebuilt from them by a tent (reconstruct.comp).
+const uint kFlagRebuiltInsideLayer = 8u;
 
 // --- Work counters (a storage buffer of uints, reset every frame) ----------------------------
 const uint kCounterViewSamples = 0u;   // density samples along view rays

@@ -119,6 +119,7 @@ void Context::Impl::recordTrace(VkCommandBuffer cmd, const FrameInputs& inputs,
       .uniformBuffer(kReconstructFlashes, glowRoom ? slot.lightning.buffer() : uniforms,
                      sizeof(LightningUniforms))
       .storageImage(kReconstructGlow, glowRoom ? im.lightningGlow.view() : im.radiance.view())
+      .storageImage(kReconstructSceneDistance, im.sceneDistance.view())
       .commit();
   detail::SetWriter(device_, slot.upsample)
       .uniformBuffer(kBindingUniforms, uniforms, uniformBytes)

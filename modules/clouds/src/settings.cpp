@@ -96,6 +96,7 @@ std::span<const SettingRange> settingRanges() {
       CLOUDS_RANGE(emptySamplesToCoarse, 1, 1000),
       CLOUDS_RANGE(upsamplingMaxSamples, 1, 15),
       CLOUDS_RANGE(temporalFreshWeight, 0.05, 1.0),
+      CLOUDS_RANGE(temporalStillFreshWeight, 0.05, 1.0),
       CLOUDS_RANGE(historyClampMargin, 0.0, 1.0),
       CLOUDS_RANGE(historyClampSpreadPixels, 0.01, 100.0),
       CLOUDS_RANGE(insideLayerMarginMetres, 0.0, 5000.0),

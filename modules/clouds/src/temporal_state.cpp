@@ -166,9 +166,11 @@ TemporalFrame TemporalState::plan(const FrameInputs& in, const Settings& s,
     frame.resetReason = "weather map changed";
   } else if (!s.temporalReuse) {
     frame.resetReason = kReuseOff;
-  } else if (frame.insideLayer) {
-    // A single cloud depth per pixel cannot describe the cloud around the camera: flying
-    // through it would smear, so production engines turn reprojection off here.
+  } else if (frame.insideLayer && in.cameraPosition != cameraPosition_) {
+    // A single cloud depth per pixel cannot describe the cloud around a camera moving through
+    // it: reprojecting would smear, so production engines turn reprojection off here. A camera
+    // held in place keeps its history: a turn reprojects without depths, and the clouds' drift
+    // with the wind is slow.
     frame.resetReason = kInsideLayer;
   } else {
     frame.useHistory = true;

@@ -96,7 +96,10 @@ shader::CloudUniforms buildUniforms(const FrameInputs& in, const Settings& s,
   u.temporalIndex = context.temporal.temporalIndex;
   u.maxViewSteps = s.maxViewSteps;
   u.flags = (context.reversedZ ? shader::kFlagReversedZ : 0u) |
-            (context.hasDepth ? shader::kFlagHasDepth : 0u);
+            (context.hasDepth ? shader::kFlagHasDepth : 0u) |
+            (context.temporal.insideLayer && !context.temporal.useHistory
+                 ? shader::kFlagRebuiltInsideLayer
+                 : 0u);
 
   u.traceExtent = glm::uvec2(context.traceExtent.width, context.traceExtent.height);
   u.outputExtent = glm::uvec2(context.fullExtent.width, context.fullExtent.height);
@@ -112,7 +115,14 @@ shader::CloudUniforms buildUniforms(const FrameInputs& in, const Settings& s,
       wind * (static_cast<double>(s.windSpeedMetresPerSecond) * context.temporal.deltaSeconds);
   const glm::dvec3 moved = context.temporal.cameraDelta - glm::dvec3(drift.x, 0.0, drift.y);
   u.previousClipOrigin = previousViewProjection * glm::vec4(glm::vec3(moved), 1.0f);
-  u.temporalFreshWeight = s.temporalFreshWeight;
+  // While nothing moves, the history is exact: the first refresh of each pixel since the history
+  // started replaces what the frame without history interpolated, the next ones average with
+  // it (the mean of the pixel's rays), down to temporalStillFreshWeight.
+  const std::uint32_t rounds = context.temporal.temporalIndex /
+                               std::max(context.temporal.tileSize * context.temporal.tileSize, 1u);
+  u.temporalFreshWeight = context.temporal.still ? std::max(1.0f / static_cast<float>(rounds + 1),
+                                                            s.temporalStillFreshWeight)
+                                                 : s.temporalFreshWeight;
   u.historyClampMargin = s.historyClampMargin;
   u.traceScale = s.traceScale;
   u.historyClampSpreadPixels = s.historyClampSpreadPixels;

@@ -2,8 +2,10 @@
 // finiteness, planet-scale ray/shell intersection against double precision, jitter patterns.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <set>
+#include <vector>
 
 #include "cloud_march.h"
 #include "cloud_math.h"
@@ -129,6 +131,56 @@ TEST(CloudMath, BayerIsAPermutationAndHaltonIsInRange) {
   }
   EXPECT_FLOAT_EQ(halton(1, 2u), 0.5f);
   EXPECT_FLOAT_EQ(halton(3, 2u), 0.75f);
+}
+
+// The widest gap between sorted values in [0, 1), the wrap-around included.
+float widestGap(std::vector<float> values) {
+  std::sort(values.begin(), values.end());
+  float gap = values.front() + 1.0f - values.back();
+  for (std::size_t i = 1; i < values.size(); ++i) gap = std::max(gap, values[i] - values[i - 1]);
+  return gap;
+}
+
+// The rays' start offsets average out wherever a reconstruction looks: over a pixel's own
+// refreshes, over the pixels of a tile, and inside the layer over the samples of one frame.
+TEST(CloudMath, RayJitterIsStratifiedOverRefreshesTilesAndFrames) {
+  const uint mode = 1u;  // Bayer + Halton
+  for (const uint k : {1u, 2u, 4u}) {
+    for (const bool spread : {false, true}) {
+      // A pixel refreshed every k * k frames: 16 refreshes spread over [0, 1).
+      std::vector<float> refreshes;
+      for (uint round = 0; round < 16; ++round) {
+        refreshes.push_back(rayJitter(uvec2(5u, 2u), round * k * k + 3u, k, spread, mode));
+      }
+      EXPECT_LE(widestGap(refreshes), 1.5f / 16.0f) << "tile " << k;
+    }
+  }
+  // The 16 pixels of a 4 x 4 tile, marched in turn over one round of 16 frames (and, at the
+  // Reference's tile of 1, the pixels of a frame).
+  for (const uint k : {1u, 4u}) {
+    std::vector<float> tile;
+    for (uint i = 0; i < 16; ++i)
+      tile.push_back(rayJitter(uvec2(8u + i % 4u, 4u + i / 4u), i * k * k / 16u, k, false, mode));
+    EXPECT_LE(widestGap(tile), 1.5f / 16.0f) << "tile " << k;
+  }
+  // Inside the layer a frame without history marches one pixel in 2 x 2: its rays spread over
+  // [0, 1) (no gap over 3/8 among 2 x 2 tiles; 3/4 without the spread), repeating every second
+  // tile along each axis (what reconstruct.comp's tent averages exactly). Elsewhere they start
+  // together.
+  std::vector<float> inside;
+  std::vector<float> outside;
+  for (uint y = 0; y < 2; ++y) {
+    for (uint x = 0; x < 2; ++x) {
+      inside.push_back(rayJitter(uvec2(x, y) * 2u + 1u, 7u, 2u, true, mode));
+      outside.push_back(rayJitter(uvec2(x, y) * 4u + 1u, 7u, 4u, false, mode));
+    }
+  }
+  EXPECT_LE(widestGap(inside), 0.375f);
+  EXPECT_EQ(rayJitter(uvec2(5u, 3u) * 2u, 7u, 2u, true, mode),
+            rayJitter(uvec2(7u, 1u) * 2u, 7u, 2u, true, mode));
+  EXPECT_EQ(*std::min_element(outside.begin(), outside.end()),
+            *std::max_element(outside.begin(), outside.end()));
+  EXPECT_EQ(rayJitter(uvec2(3u, 1u), 9u, 4u, false, 0u), 0.5f) << "no jitter: the step's middle";
 }
 
 }  // namespace

@@ -135,6 +135,50 @@ TEST(TemporalState, UpsamplingRaysVisitEveryOutputPixelOfTheirTracePixelFirst) {
             glm::vec2(0.0f));
 }
 
+TEST(TemporalState, ACameraHeldInsideTheLayerKeepsItsHistory) {
+  const clouds::Settings s;
+  TemporalState state;
+  clouds::FrameInputs inside = groundCamera();
+  inside.cameraPosition.y = 2500.0;
+  EXPECT_EQ(std::string(run(state, inside, s).resetReason), "first frame");
+  const TemporalFrame held = run(state, inside, s);
+  EXPECT_TRUE(held.useHistory) << held.resetReason;
+  EXPECT_EQ(held.tileSize, 4u) << "1 in 16 again";
+  clouds::FrameInputs turned = inside;  // a turn reprojects without depths
+  turned.view = glm::rotate(inside.view, 0.05f, glm::vec3(0.0f, 1.0f, 0.0f));
+  EXPECT_TRUE(run(state, turned, s).useHistory);
+  clouds::FrameInputs moved = turned;
+  moved.cameraPosition.z -= 20.0;
+  const TemporalFrame flying = run(state, moved, s);
+  EXPECT_FALSE(flying.useHistory);
+  EXPECT_EQ(std::string(flying.resetReason), "inside the layer");
+  EXPECT_EQ(flying.tileSize, 2u);
+}
+
+TEST(TemporalState, AStillFrameWeighsItsFreshSamplesLess) {
+  // Nothing moved: the history is exact, and averages the rays' noise over more refreshes.
+  clouds::Settings s;
+  s.temporalFreshWeight = 0.6f;
+  s.temporalStillFreshWeight = 0.2f;
+  clouds::detail::UniformContext context;
+  context.traceExtent = {80, 45};
+  context.fullExtent = {160, 90};
+  context.temporal.tileSize = 4;
+  context.temporal.useHistory = true;
+  context.temporal.still = false;
+  EXPECT_FLOAT_EQ(clouds::detail::buildUniforms(groundCamera(), s, context).temporalFreshWeight,
+                  0.6f);
+  context.temporal.still = true;
+  // The mean of each pixel's refreshes (one every 16 frames), down to the still weight.
+  const float weights[] = {1.0f, 0.5f, 1.0f / 3.0f, 0.25f, 0.2f, 0.2f};
+  for (std::uint32_t round = 0; round < 6; ++round) {
+    context.temporal.temporalIndex = round * 16 + 7;
+    EXPECT_FLOAT_EQ(clouds::detail::buildUniforms(groundCamera(), s, context).temporalFreshWeight,
+                    weights[round])
+        << "round " << round;
+  }
+}
+
 TEST(TemporalState, AFrameIsStillOnlyWhenNothingMoved) {
   // Still: the passes read each pixel's history in place instead of reprojecting it.
   const clouds::Settings s;  // wind 10 m/s

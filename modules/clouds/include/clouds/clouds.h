@@ -234,12 +234,16 @@ struct Settings {
   // The march runs at traceScale x the output resolution (per axis); each frame it refreshes
   // one pixel in every k x k tile (k * k = updateInterval) and reprojects last frame's result
   // for the rest; a depth-aware upsample produces the output. Where reprojection cannot work
-  // (camera cut, resize, big jumps or relighting, the camera in or near the layer) the frame
-  // falls back to a denser tile of at most 2 x 2, rebuilt from this frame's samples alone.
+  // (camera cut, resize, big jumps or relighting, the camera moving in or near the layer) the
+  // frame falls back to a denser tile of at most 2 x 2, rebuilt from this frame's samples alone.
   float traceScale = 0.5f;            // {1, 0.5, 0.25} trace resolution / output resolution
   std::uint32_t updateInterval = 16;  // {1, 4, 16, 64} frames between refreshes of a pixel
   bool temporalReuse = true;          // reproject history (off: every frame stands alone)
   float temporalFreshWeight = 0.6f;   // [0.05, 1] weight of a fresh sample over its history
+  // The same while nothing moves (camera, projection and clouds as last frame: the history is
+  // exact, so it can average the rays' noise over more refreshes without lag or smear): the
+  // mean of a pixel's rays since the history started (1 / refreshes), down to this.
+  float temporalStillFreshWeight = 0.2f;  // [0.05, 1]
   // Temporal upsampling (traceScale < 1 only): the march's rays also move inside their trace
   // pixel from one refresh to the next, and an output-resolution history keeps each output
   // pixel's own samples (up to upsamplingMaxSamples, then a running mean), so a static or

@@ -123,7 +123,8 @@ CloudFrame renderCpuReference(const CpuTextures& textures, const CloudUniforms& 
       const vec3 direction = pixelRayDirection(centre, extent, u);
       const float sceneDistance =
           sceneDistanceFromDepth(depth.empty() ? 0.0f : depth[i], centre, extent, u);
-      const float jitter = rayJitter(pixel, u.temporalIndex, variant.jitter);
+      const float jitter = rayJitter(pixel, u.temporalIndex, u.tileSize,
+                                     (u.flags & kFlagRebuiltInsideLayer) != 0u, variant.jitter);
       const MarchResult r = marchClouds(direction, sceneDistance, jitter, u, options);
       frame.radiance[i] = vec4(r.radiance, r.transmittance);
       frame.depth[i] = vec2(r.frontDepth, r.weightedDepth);
