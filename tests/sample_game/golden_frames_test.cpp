@@ -1,11 +1,11 @@
 // Golden frames: the sample renders small views headless from scripts (ground view of clouds
 // over mountains, terrain hiding clouds, a cloud in front of a mountain, above the layer,
 // inside a cloud, noon, sunset, cumulus overhead, towards the sun, an overcast stratus deck,
-// a ridge shading clouds at sunset, cloud shadows on the plains at noon: the review set's
-// views among them) and each is compared with its committed golden image by the
-// tolerance tree in golden_compare.h. Every run writes the actual images to
-// build/golden_output/ (what tools/promote_goldens.sh copies into tests/goldens/); a failing
-// view also gets <name>_actual/_expected/_diff.png in build/golden_failures/.
+// a ridge shading clouds at sunset, cloud shadows on the plains at noon, flying inside the
+// layer at High and Medium: the review set's views among them) and each is compared with its
+// committed golden image by the tolerance tree in golden_compare.h. Every run writes the actual
+// images to build/golden_output/ (what tools/promote_goldens.sh copies into tests/goldens/); a
+// failing view also gets <name>_actual/_expected/_diff.png in build/golden_failures/.
 #include <gtest/gtest.h>
 
 #include <cstdlib>
@@ -29,10 +29,11 @@ std::vector<std::string> captureNames(const fs::path& script) {
   return names;
 }
 
-// A scene and the script that takes the sample through its golden views.
+// A scene, the script that takes the sample through its golden views, and the clouds' preset.
 struct GoldenRun {
   fs::path scene;
   fs::path script;
+  const char* quality = "high";
 };
 
 std::vector<GoldenRun> goldenRuns() {
@@ -53,6 +54,12 @@ std::vector<GoldenRun> goldenRuns() {
       // scripted ground strike: its bolt, its glow and the ground it lights.
       {fs::path(SAMPLE_ASSET_DIR) / "scenes/thunderstorm.json",
        tests / "scripts/golden_thunderstorm_views.json"},
+      // Flying inside a tall layer over the ground, at High and Medium: frames rebuilt from
+      // their own rays, without a pattern of them.
+      {tests / "scenes/inside_layer_over_terrain.json",
+       tests / "scripts/golden_inside_layer_high.json", "high"},
+      {tests / "scenes/inside_layer_over_terrain.json",
+       tests / "scripts/golden_inside_layer_medium.json", "medium"},
   };
 }
 
@@ -65,9 +72,9 @@ TEST(GoldenFrames, ScriptedViewsMatchTheirGoldens) {
   for (const GoldenRun& run : goldenRuns()) {
     const std::string command = std::string(SAMPLE_GAME_EXE) +
                                 " --headless --validation --width 256 --height 144 --fixed-dt 0.05"
-                                " --quality high --scene " +
-                                run.scene.string() + " --script " + run.script.string() +
-                                " --capture " + output.string();
+                                " --quality " +
+                                run.quality + " --scene " + run.scene.string() + " --script " +
+                                run.script.string() + " --capture " + output.string();
     ASSERT_EQ(std::system(command.c_str()), 0) << command;
     for (std::string& name : captureNames(run.script)) names.push_back(std::move(name));
   }
