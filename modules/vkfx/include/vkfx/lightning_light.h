@@ -43,7 +43,7 @@ VKFX_INLINE float flashGlow(float distance, float reachMetres) {
 const float kFlashSkyShare = 0.05f;
 
 // The flash's light in the sky at a squared distance `distanceSquared` (m^2) from the charge,
-// per unit of its radiance (no square root: a host's per-fragment use).
+// per unit of its radiance (no square root: for a host's per-vertex or per-fragment use).
 VKFX_INLINE float flashSkyLightSquared(float distanceSquared, float reachMetres) {
   const float core = flashCoreMetres(reachMetres);
   return kFlashSkyShare * core * core / (core * core + distanceSquared);
