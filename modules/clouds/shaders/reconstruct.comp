@@ -105,10 +105,13 @@ void insideLayerEstimate(uvec2 pixel, out vec4 radiance, out vec2 depth) {
   // The tent at the samples -1, 0, 1 and 2 spacings from p00.
   const vec4 wx = vec4(1.0f - f.x, 2.0f - f.x, 1.0f + f.x, f.x) * 0.25f;
   const vec4 wy = vec4(1.0f - f.y, 2.0f - f.y, 1.0f + f.y, f.y) * 0.25f;
+  // The weights are normalised before the depth blend, which ignores tiny opacity sums.
+  uvec4 samples[16];
   float weights[16];
   float weightSum = 0.0f;
   for (int t = 0; t < 16; ++t) {
     const ivec2 q = freshAt(p00 + ivec2((t & 3) - 1, (t >> 2) - 1) * k);
+    samples[t] = imageLoad(freshSamples, q);
     // A floor keeps a pixel unlike all of its samples (a thin spire) from having none.
     weights[t] = wx[t & 3] * wy[t >> 2] *
                  (sceneSimilarity(here, imageLoad(sceneDistance, q).r) + 1e-4f);
@@ -117,11 +120,10 @@ void insideLayerEstimate(uvec2 pixel, out vec4 radiance, out vec2 depth) {
   radiance = vec4(0.0f);
   DepthBlend blend = depthBlendStart();
   for (int t = 0; t < 16; ++t) {
-    const uvec4 s = imageLoad(freshSamples, freshAt(p00 + ivec2((t & 3) - 1, (t >> 2) - 1) * k));
     const float w = weights[t] / weightSum;
-    const vec4 r = unpackCloudRadiance(s);
+    const vec4 r = unpackCloudRadiance(samples[t]);
     radiance += w * r;
-    depthBlendAdd(blend, w, r.a, unpackCloudDepth(s));
+    depthBlendAdd(blend, w, r.a, unpackCloudDepth(samples[t]));
   }
   depth = depthBlendResult(blend);
 }
