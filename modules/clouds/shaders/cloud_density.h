@@ -51,10 +51,19 @@ VKFX_INLINE WeatherSample decodeWeather(vec4 texel, IN(CloudUniforms) u) {
   return w;
 }
 
-// Density from the low-frequency shape noise alone (the "cheap" sample), in [0, 1].
-VKFX_INLINE float baseDensity(vec4 shapeNoise, float heightFraction, IN(WeatherSample) w,
-                              float anvilBias) {
-  if (heightFraction < 0.0f || heightFraction > 1.0f) return 0.0f;
+// The low-frequency shape of the clouds (the "cheap" sample).
+struct CoarseShape {
+  float profile;  // [0, 1]: 0 at a cloud's edge, 1 in its core (the role of Nubis 2022's
+                  //   dimensional profile; the in-scatter probability reads it)
+  float density;  // [0, 1]: the profile scaled by the coverage
+};
+
+VKFX_INLINE CoarseShape coarseShape(vec4 shapeNoise, float heightFraction, IN(WeatherSample) w,
+                                    float anvilBias) {
+  CoarseShape shape;
+  shape.profile = 0.0f;
+  shape.density = 0.0f;
+  if (heightFraction < 0.0f || heightFraction > 1.0f) return shape;
   const float lowFrequencyFbm =
       dot(vec3(shapeNoise.y, shapeNoise.z, shapeNoise.w), vec3(0.625f, 0.25f, 0.125f));
   float base = remap(shapeNoise.x, lowFrequencyFbm - 1.0f, 1.0f, 0.0f, 1.0f);
@@ -64,8 +73,9 @@ VKFX_INLINE float baseDensity(vec4 shapeNoise, float heightFraction, IN(WeatherS
       remapClamped(heightFraction, 0.7f, 0.8f, 1.0f, mix(1.0f, 0.5f, saturate(anvilBias)));
   const float coverage = pow(saturate(w.coverage), anvilExponent);
   // Coverage as erosion: only noise above (1 - coverage) survives, rescaled.
-  base = remap(base, 1.0f - coverage, 1.0f, 0.0f, 1.0f) * coverage;
-  return saturate(base);
+  shape.profile = saturate(remap(base, 1.0f - coverage, 1.0f, 0.0f, 1.0f));
+  shape.density = shape.profile * coverage;
+  return shape;
 }
 
 // Erodes a base density by the high-frequency detail noise (wispy low, billowy high).

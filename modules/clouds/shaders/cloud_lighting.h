@@ -17,16 +17,18 @@ VKFX_SHADER_BEGIN(clouds::shader)
 // The phase of each multiple-scattering octave (1/sr): octave n scatters with the lobes'
 // eccentricities scaled by c^n. The angle to the sun is the same all along a ray, so a march
 // computes these once per ray, and a sample pays one exponential per octave, not two phase
-// functions. Octaves 0-3 in `low`, 4-7 in `high`.
+// functions. Octaves 0-3 in `low`, 4-7 in `high`; `cosToSun` is the cosine they were made for.
 struct OctavePhases {
   vec4 low;
   vec4 high;
+  float cosToSun;
 };
 
 VKFX_INLINE OctavePhases octavePhases(float cosTheta, IN(CloudUniforms) u) {
   OctavePhases phases;
   phases.low = vec4(0.0f);
   phases.high = vec4(0.0f);
+  phases.cosToSun = cosTheta;
   const int octaves = int(clamp(u.msOctaves, 1.0f, 8.0f));
   float eccentricity = 1.0f;
   for (int n = 0; n < octaves; ++n) {
@@ -62,31 +64,38 @@ VKFX_INLINE float directScattering(float lightOpticalDepth, IN(OctavePhases) pha
   return sum;
 }
 
-// Nubis 2017 in-scatter probability: few scattering contributors at cloud edges (thin coarse
-// cloud around the sample) and at cloud bases. `localOpticalDepth` is the coarse extinction
-// times a short distance (CloudUniforms.inScatterDepthMetres): ~0 at edges, >= 1 inside. In [0, 1].
-VKFX_INLINE float inScatterProbability(float localOpticalDepth, float heightFraction) {
-  const float depthProbability = 0.05f + pow(saturate(localOpticalDepth),
-                                             remapClamped(heightFraction, 0.3f, 0.85f, 0.5f, 2.0f));
+// Nubis 2017 in-scatter probability, in [0, 1]: a sample sees few scattering contributors
+// where the cloud around it is thin (its edges) and near the base (nothing bright below).
+//  - `core` is the coarse shape relative to a cloud's core, in [0, 1] (0 at the edge): the role
+//    of Nubis 2017's low-LOD density and 2022's dimensional profile (coarseShape()).
+//  - Directional refinement (2017 talk): the dark edges belong to faces seen with the sun behind
+//    or beside the viewer (the "powdered sugar" look); looking towards the sun, light scattered
+//    forward through thin edges makes them bright (the silver lining). So the edge term fades as
+//    the view ray turns towards the sun (`cosToSun`, the cosine between them): fully there at
+//    90 degrees and beyond, gone looking into the sun. The dark base stays in every direction.
+VKFX_INLINE float inScatterProbability(float core, float heightFraction, float cosToSun) {
+  const float edgeProbability =
+      0.05f + pow(saturate(core), remapClamped(heightFraction, 0.3f, 0.85f, 0.5f, 2.0f));
+  const float depthProbability = mix(saturate(edgeProbability), 1.0f, saturate(cosToSun));
   const float verticalProbability =
       pow(remapClamped(heightFraction, 0.07f, 0.14f, 0.1f, 1.0f), 0.8f);
   return saturate(depthProbability * verticalProbability);
 }
 
 // Radiance scattered towards the viewer at a sample, per unit scattering coefficient (before
-// the albedo). `coarseDensity` is the low-frequency density in [0, 1], `coarseExtinction` its
-// extinction (1/m); `sunLight` in [0, 1] the share of the sun not hidden by the terrain.
+// the albedo). `profile` is the coarse shape in [0, 1] (coarseShape()); `sunLight` in [0, 1]
+// the share of the sun not hidden by the terrain.
 VKFX_INLINE vec3 sampleRadiance(float lightOpticalDepth, float sunLight, IN(OctavePhases) phases,
-                                float coarseDensity, float coarseExtinction, float heightFraction,
-                                IN(CloudUniforms) u, uint multipleScattering) {
-  const float direct = directScattering(lightOpticalDepth, phases, u, multipleScattering);
-  const float localOpticalDepth = coarseExtinction * u.inScatterDepthMetres;
-  const float inScatter = mix(1.0f, inScatterProbability(localOpticalDepth, heightFraction),
+                                float profile, float heightFraction, IN(CloudUniforms) u,
+                                uint multipleScattering) {
+  const float core = profile / max(u.inScatterCoreProfile, 1e-3f);
+  const float inScatter = mix(1.0f, inScatterProbability(core, heightFraction, phases.cosToSun),
                               saturate(u.inScatterStrength));
+  const float direct = directScattering(lightOpticalDepth, phases, u, multipleScattering);
   const vec3 sun = u.sunIlluminance * (direct * inScatter * sunLight * u.sunStrength);
   const vec3 sky = mix(u.ambientBottom, u.ambientTop, saturate(heightFraction));
   // Nubis 2022 ambient scattering: pow(1 - profile, 0.5) darkens the inside of dense cloud.
-  const float occlusion = sqrt(saturate(1.0f - coarseDensity));
+  const float occlusion = sqrt(saturate(1.0f - profile));
   const vec3 ambient =
       sky * (u.ambientStrength * mix(1.0f, occlusion, saturate(u.ambientOcclusionStrength)));
   return sun + ambient;

@@ -100,10 +100,10 @@ VKFX_INLINE float viewStepLength(float t, IN(CloudUniforms) u) {
 // One cloud-field evaluation at a point given camera-relative (flat) offset and altitude.
 struct FieldSample {
   float heightFraction;
-  float base;        // low-frequency density in [0, 1]
-  float density;     // final density in [0, 1] (base, eroded by detail when enabled)
-  float sigmaT;      // extinction (1/m)
-  float baseSigmaT;  // extinction of the low-frequency density alone (1/m)
+  float base;     // low-frequency density in [0, 1]
+  float profile;  // low-frequency profile in [0, 1]: 0 at a cloud's edge, 1 in its core
+  float density;  // final density in [0, 1] (base, eroded by detail when enabled)
+  float sigmaT;   // extinction (1/m)
 };
 
 VKFX_INLINE vec3 noisePosition(vec3 flatOffset, float altitude, float heightFraction,
@@ -120,16 +120,16 @@ VKFX_INLINE FieldSample sampleField(vec3 flatOffset, float altitude, float dista
   const float top = u.layerTopMetres;
   s.heightFraction = (altitude - bottom) / max(top - bottom, 1.0f);
   s.base = 0.0f;
+  s.profile = 0.0f;
   s.density = 0.0f;
   s.sigmaT = 0.0f;
-  s.baseSigmaT = 0.0f;
   if (s.heightFraction < 0.0f || s.heightFraction > 1.0f) return s;
   if ((u.flags & kFlagHomogeneous) != 0u) {
     // Test mode: a homogeneous slab with extinction u.extinctionPerMetre, for analytic comparisons.
     s.base = 1.0f;
+    s.profile = 1.0f;
     s.density = 1.0f;
     s.sigmaT = u.extinctionPerMetre;
-    s.baseSigmaT = u.extinctionPerMetre;
     return s;
   }
   // Coverage is held still (the weather map is not scrolled); the noise moves with the wind.
@@ -138,7 +138,10 @@ VKFX_INLINE FieldSample sampleField(vec3 flatOffset, float altitude, float dista
   const WeatherSample w = decodeWeather(sampleWeather(weatherUv), u);
   const vec3 p = noisePosition(flatOffset, altitude, s.heightFraction, u);
   const vec3 shapeUvw = (u.shapeOffsetMetres + p) / u.shapeTileMetres;
-  s.base = baseDensity(sampleShapeNoise(shapeUvw), s.heightFraction, w, u.anvilBias);
+  const CoarseShape shape =
+      coarseShape(sampleShapeNoise(shapeUvw), s.heightFraction, w, u.anvilBias);
+  s.base = shape.density;
+  s.profile = shape.profile;
   s.density = s.base;
   // Detail only where there is a base shape and the sample is near enough to show it.
   CLOUDS_WHEN(wantDetail != 0u && s.base > 0.0f && distance < u.detailDistanceMetres) {
@@ -150,7 +153,6 @@ VKFX_INLINE FieldSample sampleField(vec3 flatOffset, float altitude, float dista
         erodeDensity(s.base, sampleDetailNoise(detailUvw), s.heightFraction, u.detailErosion);
   }
   s.sigmaT = s.density * w.density * u.extinctionPerMetre;
-  s.baseSigmaT = s.base * w.density * u.extinctionPerMetre;
   return s;
 }
 
@@ -341,8 +343,8 @@ VKFX_INLINE MarchResult marchClouds(vec3 rayDirection, float sceneDistance, floa
       const float tau = lightOpticalDepth(flatOffset, sampleAltitude, sampleDistance, o.lightSteps,
                                           u, r.lightSamples);
       const float sunLight = terrainSunLight(flatOffset, sampleAltitude);
-      const vec3 light = sampleRadiance(tau, sunLight, phases, field.base, field.baseSigmaT,
-                                        field.heightFraction, u, o.multipleScattering);
+      const vec3 light = sampleRadiance(tau, sunLight, phases, field.profile, field.heightFraction,
+                                        u, o.multipleScattering);
       const float stepTransmittance = beerLambert(field.sigmaT * stepLength);
       // Energy-conserving step (Hillaire 2016): the scattered light of a homogeneous step is
       // S (1 - exp(-sigma d)) / sigma with S = albedo sigma L, weighted by the transmittance.

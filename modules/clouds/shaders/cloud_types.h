@@ -233,8 +233,7 @@ struct CloudUniforms {
   float msContribution;
   float msEccentricityScale;
   float inScatterStrength;
-  float inScatterDepthMetres;  // the coarse extinction over this distance is the in-scatter
-                               //   probability's "density"
+  float inScatterCoreProfile;  // the coarse profile that counts as a cloud's core
   float padding5;
   float padding6;
 

@@ -80,7 +80,7 @@ std::span<const SettingRange> settingRanges() {
       CLOUDS_RANGE(msContribution, 0.0, 1.0),
       CLOUDS_RANGE(msEccentricityScale, 0.0, 1.0),
       CLOUDS_RANGE(inScatterStrength, 0.0, 1.0),
-      CLOUDS_RANGE(inScatterDepthMetres, 0.0, 10000.0),
+      CLOUDS_RANGE(inScatterCoreProfile, 0.01, 1.0),
       CLOUDS_RANGE(ambientOcclusionStrength, 0.0, 1.0),
       CLOUDS_RANGE(ambientStrength, 0.0, 100.0),
       CLOUDS_RANGE(sunStrength, 0.0, 100.0),

@@ -83,7 +83,7 @@ shader::CloudUniforms buildUniforms(const FrameInputs& in, const Settings& s,
   u.msContribution = s.msContribution;
   u.msEccentricityScale = s.msEccentricityScale;
   u.inScatterStrength = s.inScatterStrength;
-  u.inScatterDepthMetres = s.inScatterDepthMetres;
+  u.inScatterCoreProfile = s.inScatterCoreProfile;
 
   u.viewStepMetres = s.viewStepMetres;
   u.viewStepGrowth = s.viewStepGrowth;

@@ -94,6 +94,10 @@ CloudDescription readClouds(const JsonReader& r, const std::filesystem::path& sc
     s.phaseBackwardG = float(l.number("phaseBackwardG", -1.0, 1.0, s.phaseBackwardG));
     s.phaseBackwardWeight = float(l.number("phaseBackwardWeight", 0.0, 1.0, s.phaseBackwardWeight));
     s.inScatterStrength = float(l.number("inScatterStrength", 0.0, 1.0, s.inScatterStrength));
+    s.inScatterCoreProfile =
+        float(l.number("inScatterCoreProfile", 0.01, 1.0, s.inScatterCoreProfile));
+    s.ambientOcclusionStrength =
+        float(l.number("ambientOcclusionStrength", 0.0, 1.0, s.ambientOcclusionStrength));
     s.ambientStrength = float(l.number("ambientStrength", 0.0, 100.0, s.ambientStrength));
     s.sunStrength = float(l.number("sunStrength", 0.0, 100.0, s.sunStrength));
     l.finish();

@@ -22,6 +22,13 @@ TEST_F(CloudCost, EmptySpaceSkippingChangesTheCostNotThePicture) {
     on.jitter = clouds::Jitter::None;
     on.maxViewSteps = 4096;    // every ray reaches its end either way: the same clouds in reach
     on.cheapSampling = false;  // coarse steps would miss different small clouds either way
+    // Half the default steps: after a jump the samples restart at the cell's boundary, a shift
+    // whose effect on the picture is the march's discretisation error, which the dark edges'
+    // sharp falloff (in-scatter probability) made larger (39.6 dB at coverage 0.4 with the
+    // default steps, 42.6 before that term read the coarse profile; 51.1 and 56.8 dB at the two
+    // coverages with these).
+    on.viewStepMetres = 30.0f;
+    on.viewStepGrowth = 0.002f;
     clouds::Settings off = on;
     off.emptySpaceSkipping = false;
     CloudView view = cumulusView();

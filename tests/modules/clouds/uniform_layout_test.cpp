@@ -70,7 +70,7 @@ const std::map<std::string, std::size_t> kCppOffsets = {FIELD(inverseProjection)
                                                         FIELD(msContribution),
                                                         FIELD(msEccentricityScale),
                                                         FIELD(inScatterStrength),
-                                                        FIELD(inScatterDepthMetres),
+                                                        FIELD(inScatterCoreProfile),
                                                         FIELD(padding5),
                                                         FIELD(padding6),
                                                         FIELD(viewStepMetres),

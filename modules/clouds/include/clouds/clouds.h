@@ -208,8 +208,9 @@ struct Settings {
   float msContribution = 0.85f;                 // [0, 1] b: energy factor per octave
   float msEccentricityScale = 0.5f;             // [0, 1] c: phase g factor per octave
   float inScatterStrength = 1.0f;               // [0, 1] Nubis dark edges and bases (0: off)
-  float inScatterDepthMetres = 60.0f;           // [0, 10000] the coarse cloud over this distance
-                                                //   counts as "dense" for the dark-edge term
+  float inScatterCoreProfile = 0.4f;            // [0.01, 1] the coarse profile (0 at a cloud's
+                                                //   edge, 1 inside) from which cloud is lit as
+                                                //   core: below it, edges darken
   float ambientOcclusionStrength = 1.0f;        // [0, 1] darkening of ambient inside dense cloud
   float ambientStrength = 1.0f;                 // [0, 100] scales the ambient sky term
   float sunStrength = 1.0f;                     // [0, 100] scales the direct sun term

@@ -132,17 +132,18 @@ double cloudLuminanceNearTheSun(const CloudFrame& frame, const CloudView& view, 
   return count > 0 ? sum / double(count) : 0.0;
 }
 
-ForwardLobeEffect measureForwardLobe(CloudHarness& harness, VkExtent2D extent) {
+NearTheSunEffect measureNearTheSun(CloudHarness& harness, VkExtent2D extent,
+                                   const std::function<void(clouds::Settings&)>& change) {
   const LookScene scene = cumulusTowardsTheSun();
   const clouds::Settings look = lookSettings(scene);
-  clouds::Settings isotropic = look;
-  isotropic.phaseForwardG = 0.0f;
-  ForwardLobeEffect effect;
-  effect.withLobe = harness.renderAveraged(scene.view, look, extent, kLookFrames);
-  effect.withLobeLuminance =
-      cloudLuminanceNearTheSun(effect.withLobe, scene.view, kNearTheSunDegrees, &effect.pixels);
-  effect.isotropicLuminance =
-      cloudLuminanceNearTheSun(harness.renderAveraged(scene.view, isotropic, extent, kLookFrames),
+  clouds::Settings changed = look;
+  change(changed);
+  NearTheSunEffect effect;
+  effect.frame = harness.renderAveraged(scene.view, look, extent, kLookFrames);
+  effect.luminance =
+      cloudLuminanceNearTheSun(effect.frame, scene.view, kNearTheSunDegrees, &effect.pixels);
+  effect.changedLuminance =
+      cloudLuminanceNearTheSun(harness.renderAveraged(scene.view, changed, extent, kLookFrames),
                                scene.view, kNearTheSunDegrees);
   return effect;
 }

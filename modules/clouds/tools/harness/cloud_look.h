@@ -3,7 +3,9 @@
 // to a visible effect and for the review set's reported figures. The classic photographic
 // description of a fair-weather cumulus at noon is "bright sunlit flanks over a flat grey
 // base": flankToBase puts a number on it.
+#include <cmath>
 #include <cstddef>
+#include <functional>
 
 #include "cloud_harness.h"
 
@@ -59,16 +61,19 @@ LookScene cumulusTowardsTheSun();
 double cloudLuminanceNearTheSun(const CloudFrame& frame, const CloudView& view, double degrees,
                                 std::size_t* pixels = nullptr);
 
-// The forward lobe's silver lining: cumulusTowardsTheSun() rendered with lookSettings() and
-// again with the forward lobe isotropic (phaseForwardG 0), the cloud within kNearTheSunDegrees
-// of the sun measured in both.
+// What a change of the settings does to the cloud around the sun: cumulusTowardsTheSun()
+// rendered with lookSettings() and again with `change` applied, the cloud within
+// kNearTheSunDegrees of the sun measured in both (e.g. the forward lobe's silver lining: the
+// lobe made isotropic).
 inline constexpr double kNearTheSunDegrees = 15.0;
-struct ForwardLobeEffect {
-  CloudFrame withLobe;        // the frame with the lobe (for a preview)
-  double withLobeLuminance;   // cloudLuminanceNearTheSun() of it
-  double isotropicLuminance;  // the same with the forward lobe isotropic
-  std::size_t pixels;         // cloud pixels near the sun (with the lobe)
+struct NearTheSunEffect {
+  CloudFrame frame;         // the frame with lookSettings() (for a preview)
+  double luminance;         // cloudLuminanceNearTheSun() of it
+  double changedLuminance;  // the same with the change
+  std::size_t pixels;       // cloud pixels near the sun (in `frame`)
+  double relativeChange() const { return std::abs(changedLuminance - luminance) / luminance; }
 };
-ForwardLobeEffect measureForwardLobe(CloudHarness& harness, VkExtent2D extent);
+NearTheSunEffect measureNearTheSun(CloudHarness& harness, VkExtent2D extent,
+                                   const std::function<void(clouds::Settings&)>& change);
 
 }  // namespace clouds::tools

@@ -1,7 +1,8 @@
 // clouds_look: the look of the clouds in figures. Renders the canonical noon cumulus view
 // (cloud_look.h: physical noon light, seen from the ground) converged at full resolution, and
 // prints the HDR luminance ratio of sunlit flank to base, then what switching each lighting
-// term off does to it and to the clouds' luminance. Optionally writes the previews as PNG.
+// term off does to it, to the clouds' luminance and to the cloud around the sun in the view
+// towards it. Optionally writes the previews as PNG.
 // Usage: clouds_look [OUT_DIR] [--width W --height H]
 #include <cstdio>
 #include <cstring>
@@ -80,26 +81,27 @@ int main(int argc, char** argv) {
       term.apply(s);
       const CloudFrame off = render(s);
       const CloudLook l = clouds::tools::measureLook(off, scene.view, s);
+      const double towardsTheSun =
+          clouds::tools::measureNearTheSun(harness, extent, term.apply).relativeChange();
       std::printf(
           "  %-24s off: flank %.2f, base %.2f: flank/base %.2f; clouds' luminance changed "
-          "%.1f%%\n",
+          "%.1f%%, towards the sun %.1f%%\n",
           term.name, l.flankLuminance, l.baseLuminance, l.flankToBase,
-          100.0 * clouds::tools::meanRelativeChangeOverClouds(off, full));
+          100.0 * clouds::tools::meanRelativeChangeOverClouds(off, full), 100.0 * towardsTheSun);
     }
     // The forward lobe towards the sun.
-    const clouds::tools::ForwardLobeEffect lobe =
-        clouds::tools::measureForwardLobe(harness, extent);
+    const clouds::tools::NearTheSunEffect lobe = clouds::tools::measureNearTheSun(
+        harness, extent, [](clouds::Settings& s) { s.phaseForwardG = 0.0f; });
     if (!outDir.empty()) {
       engine::assets::writePng(
           outDir / "cumulus_towards_the_sun.png",
-          clouds::tools::previewImage(lobe.withLobe, clouds::tools::cumulusTowardsTheSun().view,
+          clouds::tools::previewImage(lobe.frame, clouds::tools::cumulusTowardsTheSun().view,
                                       kPreviewExposure));
     }
     std::printf(
         "towards the sun: cloud within %.0f degrees of it (%zu pixels) %.2f kcd/m^2, %.2f with "
         "the forward lobe off (g = 0)\n",
-        clouds::tools::kNearTheSunDegrees, lobe.pixels, lobe.withLobeLuminance,
-        lobe.isotropicLuminance);
+        clouds::tools::kNearTheSunDegrees, lobe.pixels, lobe.luminance, lobe.changedLuminance);
   } catch (const std::exception& e) {
     std::fprintf(stderr, "clouds_look: %s\n", e.what());
     return 1;
