@@ -10,12 +10,13 @@
 #   above_the_layer          default.json, 6.5 km up looking down on the layer
 #   inside_a_cloud           default.json, inside a cumulus at 2.6 km
 # into OUT_DIR (default docs/review) as PNG (tonemapped) and EXR (linear HDR, kcd/m^2), and
-# the PNGs side by side into OUT_DIR/contact_sheet.png.
+# the PNGs side by side into OUT_DIR/contact_sheet.png; and the look in figures (clouds_look:
+# the noon cumulus' flank-to-base ratio and what each lighting term does) into OUT_DIR/look.txt.
 # Usage: tools/review_set.sh [OUT_DIR]
 set -euo pipefail
 cd "$(dirname "$0")/.."
 out="${1:-docs/review}"
-tools/build.sh --target sample_game >/dev/null
+tools/build.sh --target sample_game clouds_look >/dev/null
 mkdir -p "$out"
 scratch="$(mktemp -d)"
 trap 'rm -rf "$scratch"' EXIT
@@ -37,4 +38,5 @@ sheet_args=()
 for view in "${views[@]}"; do sheet_args+=("${view//_/ }=$out/$view.png"); done
 python="$(sed -n 's/^CLOUDSCAPE_PLOT_PYTHON:[A-Z]*=//p' build/CMakeCache.txt)"
 "${python:-python3}" tools/review/contact_sheet.py "$out/contact_sheet.png" "${sheet_args[@]}"
-echo "review_set: wrote ${#views[@]} views and contact_sheet.png into $out"
+build/bin/clouds_look 2>/dev/null >"$out/look.txt"
+echo "review_set: wrote ${#views[@]} views, contact_sheet.png and look.txt into $out"
