@@ -132,20 +132,16 @@ double cloudLuminanceNearTheSun(const CloudFrame& frame, const CloudView& view, 
   return count > 0 ? sum / double(count) : 0.0;
 }
 
-NearTheSunEffect measureNearTheSun(CloudHarness& harness, VkExtent2D extent,
-                                   const std::function<void(clouds::Settings&)>& change) {
+NearTheSun renderNearTheSun(CloudHarness& harness, VkExtent2D extent,
+                            const std::function<void(clouds::Settings&)>& change) {
   const LookScene scene = cumulusTowardsTheSun();
-  const clouds::Settings look = lookSettings(scene);
-  clouds::Settings changed = look;
-  change(changed);
-  NearTheSunEffect effect;
-  effect.frame = harness.renderAveraged(scene.view, look, extent, kLookFrames);
-  effect.luminance =
-      cloudLuminanceNearTheSun(effect.frame, scene.view, kNearTheSunDegrees, &effect.pixels);
-  effect.changedLuminance =
-      cloudLuminanceNearTheSun(harness.renderAveraged(scene.view, changed, extent, kLookFrames),
-                               scene.view, kNearTheSunDegrees);
-  return effect;
+  clouds::Settings settings = lookSettings(scene);
+  if (change) change(settings);
+  NearTheSun near;
+  near.frame = harness.renderAveraged(scene.view, settings, extent, kLookFrames);
+  near.luminance =
+      cloudLuminanceNearTheSun(near.frame, scene.view, kNearTheSunDegrees, &near.pixels);
+  return near;
 }
 
 }  // namespace clouds::tools

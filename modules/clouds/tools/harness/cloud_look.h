@@ -61,19 +61,22 @@ LookScene cumulusTowardsTheSun();
 double cloudLuminanceNearTheSun(const CloudFrame& frame, const CloudView& view, double degrees,
                                 std::size_t* pixels = nullptr);
 
-// What a change of the settings does to the cloud around the sun: cumulusTowardsTheSun()
-// rendered with lookSettings() and again with `change` applied, the cloud within
-// kNearTheSunDegrees of the sun measured in both (e.g. the forward lobe's silver lining: the
-// lobe made isotropic).
+// The cloud around the sun: cumulusTowardsTheSun() rendered with lookSettings(), changed by
+// `change` when one is given, and the cloud within kNearTheSunDegrees of the sun measured. Two
+// of them, with and without a change, say what the change does there (e.g. the forward lobe's
+// silver lining: the lobe made isotropic).
 inline constexpr double kNearTheSunDegrees = 15.0;
-struct NearTheSunEffect {
-  CloudFrame frame;         // the frame with lookSettings() (for a preview)
-  double luminance;         // cloudLuminanceNearTheSun() of it
-  double changedLuminance;  // the same with the change
-  std::size_t pixels;       // cloud pixels near the sun (in `frame`)
-  double relativeChange() const { return std::abs(changedLuminance - luminance) / luminance; }
+struct NearTheSun {
+  CloudFrame frame;    // (for a preview)
+  double luminance;    // cloudLuminanceNearTheSun() of it
+  std::size_t pixels;  // cloud pixels near the sun
 };
-NearTheSunEffect measureNearTheSun(CloudHarness& harness, VkExtent2D extent,
-                                   const std::function<void(clouds::Settings&)>& change);
+NearTheSun renderNearTheSun(CloudHarness& harness, VkExtent2D extent,
+                            const std::function<void(clouds::Settings&)>& change = {});
+
+// |L_changed - L_base| / L_base of the two frames' luminance near the sun.
+inline double relativeChange(const NearTheSun& changed, const NearTheSun& base) {
+  return std::abs(changed.luminance - base.luminance) / base.luminance;
+}
 
 }  // namespace clouds::tools

@@ -65,6 +65,7 @@ int main(int argc, char** argv) {
     const clouds::Settings look = clouds::tools::lookSettings(scene);
     const CloudFrame full = render(look);
     const CloudLook base = clouds::tools::measureLook(full, scene.view, look);
+    const clouds::tools::NearTheSun nearTheSun = clouds::tools::renderNearTheSun(harness, extent);
     std::printf("noon cumulus, %ux%u, High lighting at full resolution (%u frames averaged)\n",
                 extent.width, extent.height, clouds::tools::kLookFrames);
     std::printf("  cloud pixels %zu (flank %zu, base %zu)\n", base.cloudPixels, base.flankPixels,
@@ -81,8 +82,8 @@ int main(int argc, char** argv) {
       term.apply(s);
       const CloudFrame off = render(s);
       const CloudLook l = clouds::tools::measureLook(off, scene.view, s);
-      const double towardsTheSun =
-          clouds::tools::measureNearTheSun(harness, extent, term.apply).relativeChange();
+      const double towardsTheSun = clouds::tools::relativeChange(
+          clouds::tools::renderNearTheSun(harness, extent, term.apply), nearTheSun);
       std::printf(
           "  %-24s off: flank %.2f, base %.2f: flank/base %.2f; clouds' luminance changed "
           "%.1f%%, towards the sun %.1f%%\n",
@@ -90,18 +91,19 @@ int main(int argc, char** argv) {
           100.0 * clouds::tools::meanRelativeChangeOverClouds(off, full), 100.0 * towardsTheSun);
     }
     // The forward lobe towards the sun.
-    const clouds::tools::NearTheSunEffect lobe = clouds::tools::measureNearTheSun(
+    const clouds::tools::NearTheSun isotropic = clouds::tools::renderNearTheSun(
         harness, extent, [](clouds::Settings& s) { s.phaseForwardG = 0.0f; });
     if (!outDir.empty()) {
       engine::assets::writePng(
           outDir / "cumulus_towards_the_sun.png",
-          clouds::tools::previewImage(lobe.frame, clouds::tools::cumulusTowardsTheSun().view,
+          clouds::tools::previewImage(nearTheSun.frame, clouds::tools::cumulusTowardsTheSun().view,
                                       kPreviewExposure));
     }
     std::printf(
         "towards the sun: cloud within %.0f degrees of it (%zu pixels) %.2f kcd/m^2, %.2f with "
         "the forward lobe off (g = 0)\n",
-        clouds::tools::kNearTheSunDegrees, lobe.pixels, lobe.luminance, lobe.changedLuminance);
+        clouds::tools::kNearTheSunDegrees, nearTheSun.pixels, nearTheSun.luminance,
+        isotropic.luminance);
   } catch (const std::exception& e) {
     std::fprintf(stderr, "clouds_look: %s\n", e.what());
     return 1;
