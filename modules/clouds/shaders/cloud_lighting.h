@@ -32,8 +32,11 @@ VKFX_INLINE OctavePhases octavePhases(float cosTheta, IN(CloudUniforms) u) {
   const int octaves = int(clamp(u.msOctaves, 1.0f, 8.0f));
   float eccentricity = 1.0f;
   for (int n = 0; n < octaves; ++n) {
-    const float phase = dualLobePhase(cosTheta, u.phaseForwardG * eccentricity,
-                                      u.phaseBackwardG * eccentricity, u.phaseBackwardWeight);
+    const float normaliserInverse =
+        n < 4 ? u.phaseNormaliserInverseLow[n] : u.phaseNormaliserInverseHigh[n - 4];
+    const float phase = silverLiningPhase(
+        cosTheta, u.phaseForwardG * eccentricity, u.phaseBackwardG * eccentricity,
+        u.phaseBackwardWeight, u.silverG * eccentricity, u.silverIntensity, normaliserInverse);
     if (n < 4) {
       phases.low[n] = phase;
     } else {

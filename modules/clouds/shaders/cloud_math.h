@@ -47,6 +47,19 @@ VKFX_INLINE float dualLobePhase(float cosTheta, float forwardG, float backwardG,
   return mix(henyeyGreenstein(cosTheta, forwardG), henyeyGreenstein(cosTheta, backwardG), w);
 }
 
+// The seeds' silver lining (Schneider 2017): where a sharp forward lobe, silverIntensity x
+// HG(silverG), is brighter than the two lobes' mix, it replaces it (max()), which lights thin
+// cloud around the sun without darkening cloud 90 degrees away as a stronger forward g would.
+// The max gains energy; `normaliserInverse` (1 / its integral over the sphere, computed on the
+// CPU: phase_normaliser.cpp) gives it back, so the phase integrates to 1 and the white furnace
+// holds. silverIntensity 0 (normaliserInverse 1) is the mix alone.
+VKFX_INLINE float silverLiningPhase(float cosTheta, float forwardG, float backwardG, float blend,
+                                    float silverG, float silverIntensity, float normaliserInverse) {
+  const float lobes = dualLobePhase(cosTheta, forwardG, backwardG, blend);
+  const float silver = max(silverIntensity, 0.0f) * henyeyGreenstein(cosTheta, silverG);
+  return max(lobes, silver) * normaliserInverse;
+}
+
 // Beer-Lambert transmittance for an optical depth (>= 0). exp(-x) of a huge x is 0, never NaN.
 VKFX_INLINE float beerLambert(float opticalDepth) {
   return exp(-max(opticalDepth, 0.0f));

@@ -234,8 +234,8 @@ struct CloudUniforms {
   float msEccentricityScale;
   float inScatterStrength;
   float inScatterCoreProfile;  // the coarse profile that counts as a cloud's core
-  float padding5;
-  float padding6;
+  float silverIntensity;       // the silver-lining lobe's scale (0: the lobes' mix alone)
+  float silverG;               // its HG g (0.99 - Settings::silverSpread)
 
   // Ray-march.
   float viewStepMetres;
@@ -273,6 +273,11 @@ struct CloudUniforms {
   float padding9;
   float padding10;
   float padding11;
+
+  // 1 / the integral over the sphere of each multiple-scattering octave's phase (octaves 0-3,
+  // 4-7): the silver lining's max() gains energy that these give back (silverLiningPhase()).
+  vec4 phaseNormaliserInverseLow;
+  vec4 phaseNormaliserInverseHigh;
 };
 
 // Push constants of the noise generators.
@@ -468,7 +473,9 @@ CLOUDS_ASSERT_OFFSET(CloudUniforms, upsamplingMaxSamples, 568);
 CLOUDS_ASSERT_OFFSET(CloudUniforms, aerialPerspectiveScale, 576);
 CLOUDS_ASSERT_OFFSET(CloudUniforms, aerialPerspectiveRange, 588);
 CLOUDS_ASSERT_OFFSET(CloudUniforms, aerialPerspectiveSlices, 592);
-static_assert(sizeof(clouds::shader::CloudUniforms) == 608);
+CLOUDS_ASSERT_OFFSET(CloudUniforms, phaseNormaliserInverseLow, 608);
+CLOUDS_ASSERT_OFFSET(CloudUniforms, phaseNormaliserInverseHigh, 624);
+static_assert(sizeof(clouds::shader::CloudUniforms) == 640);
 static_assert(sizeof(clouds::shader::NoiseConstants) == 16);
 static_assert(sizeof(clouds::shader::WeatherConstants) == 16);
 static_assert(sizeof(clouds::shader::MaximaConstants) == 16);

@@ -75,6 +75,8 @@ std::span<const SettingRange> settingRanges() {
       CLOUDS_RANGE(phaseForwardG, -1.0, 1.0),
       CLOUDS_RANGE(phaseBackwardG, -1.0, 1.0),
       CLOUDS_RANGE(phaseBackwardWeight, 0.0, 1.0),
+      CLOUDS_RANGE(silverIntensity, 0.0, 10.0),
+      CLOUDS_RANGE(silverSpread, 0.0, 0.99),
       CLOUDS_RANGE(multipleScatteringOctaves, 1, 8),
       CLOUDS_RANGE(msExtinctionScale, 0.0, 1.0),
       CLOUDS_RANGE(msContribution, 0.0, 1.0),

@@ -6,6 +6,7 @@
 #include <cmath>
 
 #include "cloud_math.h"
+#include "phase_normaliser.h"
 
 namespace clouds::detail {
 
@@ -84,6 +85,21 @@ shader::CloudUniforms buildUniforms(const FrameInputs& in, const Settings& s,
   u.msEccentricityScale = s.msEccentricityScale;
   u.inScatterStrength = s.inScatterStrength;
   u.inScatterCoreProfile = s.inScatterCoreProfile;
+  u.silverIntensity = s.silverIntensity;
+  u.silverG = shader::kMaxPhaseG - s.silverSpread;
+  // Each octave's phase integral, for its eccentricity (octavePhases()).
+  float eccentricity = 1.0f;
+  for (int n = 0; n < 8; ++n) {
+    PhaseLobes lobes;
+    lobes.forwardG = s.phaseForwardG * eccentricity;
+    lobes.backwardG = s.phaseBackwardG * eccentricity;
+    lobes.backwardWeight = s.phaseBackwardWeight;
+    lobes.silverG = u.silverG * eccentricity;
+    lobes.silverIntensity = s.silverIntensity;
+    const auto inverse = static_cast<float>(1.0 / silverLiningPhaseIntegral(lobes));
+    (n < 4 ? u.phaseNormaliserInverseLow[n] : u.phaseNormaliserInverseHigh[n - 4]) = inverse;
+    eccentricity *= s.msEccentricityScale;
+  }
 
   u.viewStepMetres = s.viewStepMetres;
   u.viewStepGrowth = s.viewStepGrowth;

@@ -93,6 +93,8 @@ CloudDescription readClouds(const JsonReader& r, const std::filesystem::path& sc
     s.phaseForwardG = float(l.number("phaseForwardG", -1.0, 1.0, s.phaseForwardG));
     s.phaseBackwardG = float(l.number("phaseBackwardG", -1.0, 1.0, s.phaseBackwardG));
     s.phaseBackwardWeight = float(l.number("phaseBackwardWeight", 0.0, 1.0, s.phaseBackwardWeight));
+    s.silverIntensity = float(l.number("silverIntensity", 0.0, 10.0, s.silverIntensity));
+    s.silverSpread = float(l.number("silverSpread", 0.0, 0.99, s.silverSpread));
     s.inScatterStrength = float(l.number("inScatterStrength", 0.0, 1.0, s.inScatterStrength));
     s.inScatterCoreProfile =
         float(l.number("inScatterCoreProfile", 0.01, 1.0, s.inScatterCoreProfile));

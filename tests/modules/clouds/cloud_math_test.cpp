@@ -9,6 +9,7 @@
 
 #include "cloud_march.h"
 #include "cloud_math.h"
+#include "phase_normaliser.h"
 
 namespace {
 
@@ -42,6 +43,36 @@ TEST(CloudMath, DualLobeIntegratesToOne) {
     const double total = integrateOverSphere(
         [w](double mu) { return dualLobePhase(static_cast<float>(mu), 0.85f, -0.4f, w); });
     EXPECT_NEAR(total, 1.0, 2e-3) << "blend = " << w;
+  }
+}
+
+// The silver lining's max() of two phase functions, divided by the integral the CPU computes
+// for the uniforms, integrates to 1 (the white furnace's condition) for every octave's
+// eccentricity, for sharp and wide silver lobes, weak and strong.
+TEST(CloudMath, SilverLiningPhaseIntegratesToOne) {
+  for (float intensity : {0.0f, 0.3f, 1.0f, 4.0f}) {
+    for (float silverG : {0.99f, 0.89f, 0.5f}) {
+      for (float eccentricity : {1.0f, 0.5f, 0.125f}) {
+        clouds::detail::PhaseLobes lobes;
+        lobes.forwardG = 0.8f * eccentricity;
+        lobes.backwardG = -0.3f * eccentricity;
+        lobes.backwardWeight = 0.3f;
+        lobes.silverG = silverG * eccentricity;
+        lobes.silverIntensity = intensity;
+        const double normaliser = clouds::detail::silverLiningPhaseIntegral(lobes);
+        const double total = integrateOverSphere([&](double mu) {
+          return silverLiningPhase(static_cast<float>(mu), lobes.forwardG, lobes.backwardG,
+                                   lobes.backwardWeight, lobes.silverG, intensity,
+                                   static_cast<float>(1.0 / normaliser));
+        });
+        EXPECT_NEAR(total, 1.0, 2e-3)
+            << "intensity " << intensity << " g " << silverG << " eccentricity " << eccentricity;
+        // The max gains energy wherever a sharp silver lobe stands above the mix.
+        if (intensity >= 1.0f && eccentricity == 1.0f) {
+          EXPECT_GT(normaliser, 1.01);
+        }
+      }
+    }
   }
 }
 

@@ -104,4 +104,23 @@ TEST_F(CloudLookTest, TheForwardLobeBrightensCloudAroundTheSun) {
   EXPECT_GT(nearTheSun().luminance, 1.12 * isotropic.luminance);
 }
 
+TEST_F(CloudLookTest, TheSilverLiningBrightensCloudAroundTheSun) {
+  // The seeds' silver lining (off by default, README): the lobes' mix max()ed with a sharp
+  // forward lobe, renormalised. Cloud near the sun brightens while cloud 90 degrees from it
+  // keeps most of its light. Measured at intensity 2, spread 0.05: near the sun 12.52 kcd/m^2
+  // against 10.69 without (+17%); the noon view's flanks 15.66 against 16.12 (-2.9%).
+  const auto silver = [](clouds::Settings& s) {
+    s.silverIntensity = 2.0f;
+    s.silverSpread = 0.05f;
+  };
+  const clouds::tools::NearTheSun with =
+      clouds::tools::renderNearTheSun(harness(), kExtent, silver);
+  ASSERT_GT(nearTheSun().pixels, 500u) << "the view must hold cloud near the sun";
+  EXPECT_GT(with.luminance, 1.1 * nearTheSun().luminance);
+  clouds::Settings s = lookSettings();
+  silver(s);
+  EXPECT_GT(measure(render(s), s).flankLuminance,
+            0.95 * measure(full(), lookSettings()).flankLuminance);
+}
+
 }  // namespace

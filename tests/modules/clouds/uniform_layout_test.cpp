@@ -71,8 +71,8 @@ const std::map<std::string, std::size_t> kCppOffsets = {FIELD(inverseProjection)
                                                         FIELD(msEccentricityScale),
                                                         FIELD(inScatterStrength),
                                                         FIELD(inScatterCoreProfile),
-                                                        FIELD(padding5),
-                                                        FIELD(padding6),
+                                                        FIELD(silverIntensity),
+                                                        FIELD(silverG),
                                                         FIELD(viewStepMetres),
                                                         FIELD(viewStepGrowth),
                                                         FIELD(maxDistanceMetres),
@@ -102,14 +102,16 @@ const std::map<std::string, std::size_t> kCppOffsets = {FIELD(inverseProjection)
                                                         FIELD(aerialPerspectiveSlices),
                                                         FIELD(padding9),
                                                         FIELD(padding10),
-                                                        FIELD(padding11)};
+                                                        FIELD(padding11),
+                                                        FIELD(phaseNormaliserInverseLow),
+                                                        FIELD(phaseNormaliserInverseHigh)};
 #undef FIELD
 
 std::string reflect() {
-  const std::string command = std::string(GLSLANG_VALIDATOR) +
-                              " --target-env vulkan1.2 -q --reflect-all-block-variables -I" +
-                              CLOUDS_SHADER_DIR + " -I" + VKFX_INCLUDE_DIR + " " + PROBE_SHADER +
-                              " 2>&1";
+  const std::string command =
+      std::string(GLSLANG_VALIDATOR) +
+      " --target-env vulkan1.2 -q --reflect-all-block-variables -o /dev/null -I" +
+      CLOUDS_SHADER_DIR + " -I" + VKFX_INCLUDE_DIR + " " + PROBE_SHADER + " 2>&1";
   std::unique_ptr<FILE, int (*)(FILE*)> pipe(popen(command.c_str(), "r"), pclose);
   std::string out;
   std::array<char, 4096> buffer{};

@@ -202,6 +202,10 @@ struct Settings {
   float phaseForwardG = 0.8f;        // [-1, 1] forward HG lobe (silver lining); clamped 0.99
   float phaseBackwardG = -0.3f;      // [-1, 1] backward HG lobe
   float phaseBackwardWeight = 0.3f;  // [0, 1] blend towards the backward lobe
+  float silverIntensity = 0.0f;      // [0, 10] the seeds' silver lining: a sharp forward lobe
+                                     //   max()ed with the two, renormalised (0: off; see the
+                                     //   README for what it costs the reflected light)
+  float silverSpread = 0.05f;        // [0, 0.99] its width: its HG g is 0.99 - spread
   bool multipleScattering = true;    // octave approximation of multiple scattering
   std::uint32_t multipleScatteringOctaves = 6;  // [1, 8]
   float msExtinctionScale = 0.3f;               // [0, 1] a: extinction factor per octave

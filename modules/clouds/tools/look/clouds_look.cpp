@@ -20,6 +20,8 @@ namespace {
 
 // The previews' exposure: noon cloud of ~10 kcd/m^2 to a light grey.
 constexpr float kPreviewExposure = 0.08f;
+// Cloud around the sun is brighter: exposed lower so its gradations stay below white.
+constexpr float kNearTheSunExposure = 0.03f;
 
 using clouds::tools::CloudFrame;
 using clouds::tools::CloudLook;
@@ -37,6 +39,49 @@ const std::vector<TermOff>& termsOff() {
       {"ambient", [](clouds::Settings& s) { s.ambientStrength = 0.0f; }},
   };
   return terms;
+}
+
+// The phase functions held against each other: the seeds' max() of two lobes (Schneider 2017)
+// and the mix with a silver lobe max()ed in, against the mix alone. Each is normalised.
+struct PhaseVariant {
+  const char* name;
+  std::function<void(clouds::Settings&)> apply;
+};
+
+const std::vector<PhaseVariant>& phaseVariants() {
+  static const std::vector<PhaseVariant> variants = {
+      {"mix (0.8, -0.3, 0.3): default", [](clouds::Settings&) {}},
+      {"seeds: max(HG 0.6, HG 0.89)",
+       [](clouds::Settings& s) {
+         s.phaseForwardG = 0.6f;
+         s.phaseBackwardWeight = 0.0f;
+         s.silverIntensity = 1.0f;
+         s.silverSpread = 0.1f;
+       }},
+      {"seeds: max(HG 0.6, .5 HG 0.94)",
+       [](clouds::Settings& s) {
+         s.phaseForwardG = 0.6f;
+         s.phaseBackwardWeight = 0.0f;
+         s.silverIntensity = 0.5f;
+         s.silverSpread = 0.05f;
+       }},
+      {"max(mix, HG 0.89)",
+       [](clouds::Settings& s) {
+         s.silverIntensity = 1.0f;
+         s.silverSpread = 0.1f;
+       }},
+      {"max(mix, .5 HG 0.94)",
+       [](clouds::Settings& s) {
+         s.silverIntensity = 0.5f;
+         s.silverSpread = 0.05f;
+       }},
+      {"max(mix, 2 HG 0.94)",
+       [](clouds::Settings& s) {
+         s.silverIntensity = 2.0f;
+         s.silverSpread = 0.05f;
+       }},
+  };
+  return variants;
 }
 
 }  // namespace
@@ -90,7 +135,7 @@ int main(int argc, char** argv) {
           term.name, l.flankLuminance, l.baseLuminance, l.flankToBase,
           100.0 * clouds::tools::meanRelativeChangeOverClouds(off, full), 100.0 * towardsTheSun);
     }
-    // The forward lobe towards the sun.
+    // Forward scattering towards the sun: the mix's forward lobe and the silver lining.
     const clouds::tools::NearTheSun isotropic = clouds::tools::renderNearTheSun(
         harness, extent, [](clouds::Settings& s) { s.phaseForwardG = 0.0f; });
     if (!outDir.empty()) {
@@ -104,6 +149,29 @@ int main(int argc, char** argv) {
         "the forward lobe off (g = 0)\n",
         clouds::tools::kNearTheSunDegrees, nearTheSun.pixels, nearTheSun.luminance,
         isotropic.luminance);
+    std::printf(
+        "phase functions (each normalised): the noon view's flank and base (kcd/m^2); the "
+        "cloud near the sun\n");
+    for (const PhaseVariant& variant : phaseVariants()) {
+      clouds::Settings s = look;
+      variant.apply(s);
+      const CloudFrame frame = render(s);
+      const CloudLook l = clouds::tools::measureLook(frame, scene.view, s);
+      const clouds::tools::NearTheSun sun =
+          clouds::tools::renderNearTheSun(harness, extent, variant.apply);
+      std::printf("  %-32s flank %.2f, base %.2f: flank/base %.2f; near the sun %.2f kcd/m^2\n",
+                  variant.name, l.flankLuminance, l.baseLuminance, l.flankToBase, sun.luminance);
+      if (!outDir.empty()) {
+        std::string file = std::string("phase_") + variant.name;
+        for (char& c : file) {
+          if (std::strchr(" (),:.", c) != nullptr) c = '_';
+        }
+        engine::assets::writePng(
+            outDir / (file + ".png"),
+            clouds::tools::previewImage(sun.frame, clouds::tools::cumulusTowardsTheSun().view,
+                                        kNearTheSunExposure));
+      }
+    }
   } catch (const std::exception& e) {
     std::fprintf(stderr, "clouds_look: %s\n", e.what());
     return 1;
