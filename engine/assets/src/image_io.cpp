@@ -58,9 +58,16 @@ ImageRgba32f readImage(const std::filesystem::path& path) {
   if (!in) throw Error(name + ": cannot decode image: " + OIIO::geterror());
   const OIIO::ImageSpec& spec = in->spec();
   const int channels = spec.nchannels;
-  if (spec.width <= 0 || spec.height <= 0 || channels <= 0 || spec.width > 65536 ||
-      spec.height > 65536) {
+  if (spec.width <= 0 || spec.height <= 0 || channels <= 0 || channels > 64) {
     throw Error(name + ": unsupported image size or channel count");
+  }
+  // The header alone decides what is allocated: a 100-byte file may claim 65536 x 65536 pixels
+  // (a 64 GiB read buffer). The project's largest image is a few megapixels.
+  const auto pixels = std::uint64_t(spec.width) * std::uint64_t(spec.height);
+  if (pixels > kMaxImagePixels) {
+    throw Error(name + ": " + std::to_string(spec.width) + " x " + std::to_string(spec.height) +
+                " pixels is more than the " + std::to_string(kMaxImagePixels) +
+                " an image may have");
   }
   std::vector<float> raw(static_cast<std::size_t>(spec.width) *
                          static_cast<std::size_t>(spec.height) *

@@ -7,7 +7,7 @@
 //     {"frame": 0, "camera": {"position": [0, 800, 0], "yawDegrees": 0, "pitchDegrees": 5}},
 //     {"frame": 0, "timeOfDayHours": 15.5},
 //     {"frame": 1, "press": ["W", "Up"]},  {"frame": 9, "release": ["Up"]},
-//     {"frame": 4, "mouse": [12, -3]},
+//     {"frame": 4, "mouse": [12, -3, 0]},  ([dx, dy, scroll] in pixels; scroll is not used yet)
 //     {"frame": 12, "capture": "ground_view"},
 //     {"frame": 10, "lightning": {"energy": 1.0, "kind": "ground"}},  (a storm's scene only)
 //     {"frame": 13, "exit": true}]}

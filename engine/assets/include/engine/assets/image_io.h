@@ -28,9 +28,13 @@ struct ImageRgba32f {
 void writePng(const std::filesystem::path& path, const ImageRgba8& image);
 void writeExr(const std::filesystem::path& path, const ImageRgba32f& image);
 
+// The most pixels readImage() accepts (8192 x 8192): its float read buffer is then at most 1 GiB
+// for four channels.
+inline constexpr std::uint64_t kMaxImagePixels = 8192ull * 8192ull;
+
 // Reads PNG, EXR or any format OpenImageIO knows into float RGBA (8-bit values map to [0, 1]
 // without sRGB decoding; missing channels: grey to RGB, alpha 1). Throws engine::Error naming
-// the file when it is missing or cannot be decoded.
+// the file when it is missing, cannot be decoded or is larger than kMaxImagePixels.
 ImageRgba32f readImage(const std::filesystem::path& path);
 
 }  // namespace engine::assets
