@@ -1,6 +1,8 @@
 #include "options.h"
 
 #include <CLI/CLI.hpp>
+#include <cmath>
+#include <cstdlib>
 
 namespace sample {
 
@@ -20,7 +22,13 @@ ParseResult parseOptions(int argc, char** argv) {
       ->check(CLI::Range(16u, 4320u));
   cli.add_option("--fixed-dt", options.fixedDtSeconds,
                  "Fixed simulation step in seconds (deterministic runs)")
-      ->check(CLI::Range(0.0, 10.0));
+      ->check(CLI::Range(0.0, 10.0))
+      // CLI::Range lets NaN through (every comparison with it is false).
+      ->check([](const std::string& value) {
+        return std::isfinite(std::strtod(value.c_str(), nullptr))
+                   ? std::string()
+                   : "must be a finite number of seconds, got " + value;
+      });
   cli.add_flag("--validation", options.validation, "Enable Vulkan validation layers");
   cli.add_option("--device", options.device, "Vulkan device: cpu, gpu or a name substring");
   std::string scene;

@@ -40,6 +40,17 @@ std::string runSampleOutput(const std::string& arguments) {
   return out;
 }
 
+// What the sample writes to stderr (its stdout discarded).
+std::string runSampleErrors(const std::string& arguments) {
+  const std::string command = std::string(SAMPLE_GAME_EXE) + " " + arguments + " 2>&1 >/dev/null";
+  std::unique_ptr<FILE, int (*)(FILE*)> pipe(popen(command.c_str(), "r"), pclose);
+  std::string out;
+  std::array<char, 512> buffer{};
+  while (pipe && std::fgets(buffer.data(), buffer.size(), pipe.get()) != nullptr)
+    out += buffer.data();
+  return out;
+}
+
 fs::path freshDir(const char* name) {
   const fs::path dir = fs::temp_directory_path() / "cloudscape_sample_tests" / name;
   fs::remove_all(dir);
@@ -511,6 +522,21 @@ TEST(HeadlessCapture, BadArgumentsAndScenesFailWithAMessage) {
   EXPECT_EQ(runSample("--headless --scene /no/such/scene.json 2>/dev/null"), 1);
   EXPECT_EQ(runSample("--headless --terrain /no/such/terrain.glb 2>/dev/null"), 1);
   EXPECT_EQ(runSample("--headless --script /no/such/script.json 2>/dev/null"), 1);
+}
+
+// Each numeric option just outside its documented range (options.cpp, the README's table of
+// validated input), and NaN, is refused before anything runs, by a message naming the option.
+TEST(HeadlessCapture, EveryOptionOutsideItsRangeIsRefusedNamingIt) {
+  const std::vector<std::pair<std::string, std::string>> cases = {
+      {"--width", "15"},       {"--width", "7681"},    {"--height", "15"},
+      {"--height", "4321"},    {"--frames", "-1"},     {"--frames", "1000001"},
+      {"--fixed-dt", "-0.01"}, {"--fixed-dt", "10.5"}, {"--fixed-dt", "nan"},
+      {"--fixed-dt", "inf"},   {"--quality", "best"}};
+  for (const auto& [option, value] : cases) {
+    const std::string arguments = "--headless " + option + " " + value;
+    EXPECT_NE(runSample(arguments + " >/dev/null 2>&1"), 0) << arguments;
+    EXPECT_NE(runSampleErrors(arguments).find(option + ":"), std::string::npos) << arguments;
+  }
 }
 
 }  // namespace
