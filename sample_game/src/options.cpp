@@ -22,7 +22,7 @@ ParseResult parseOptions(int argc, char** argv) {
       ->check(CLI::Range(16u, 4320u));
   cli.add_option("--fixed-dt", options.fixedDtSeconds,
                  "Fixed simulation step in seconds (deterministic runs)")
-      ->check(CLI::Range(0.0, 10.0))
+      ->check(CLI::Range(0.0, 3600.0))
       // CLI::Range lets NaN through (every comparison with it is false).
       ->check([](const std::string& value) {
         return std::isfinite(std::strtod(value.c_str(), nullptr))
