@@ -49,6 +49,9 @@ ParseResult parseOptions(int argc, char** argv) {
                    ? std::string()
                    : "unknown quality '" + name + "' (low, medium, high, ultra, reference)";
       });
+  std::string soakReport;
+  cli.add_option("--soak-report", soakReport,
+                 "Write host and GPU memory, pipelines and frame time every 250 frames (CSV)");
   bool noHud = false;
   cli.add_flag("--no-hud", noHud, "Hide the on-screen help and frame rate");
   bool noVsync = false;
@@ -62,6 +65,7 @@ ParseResult parseOptions(int argc, char** argv) {
   if (!scene.empty()) options.scene = scene;
   if (!terrain.empty()) options.terrain = terrain;
   if (!script.empty()) options.script = script;
+  if (!soakReport.empty()) options.soakReport = soakReport;
   if (!quality.empty()) {
     clouds::Quality parsed{};
     clouds::parseQuality(quality, &parsed);

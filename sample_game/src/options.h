@@ -25,7 +25,8 @@ struct Options {
   std::optional<std::filesystem::path> script;   // frame-indexed input and events (headless)
   bool describe = false;  // print the frame graph's passes and pipelines, exit
   bool hud = true;        // on-screen help and fps in windowed runs
-  std::optional<clouds::Quality> cloudQuality;  // overrides the scene camera's preset
+  std::optional<clouds::Quality> cloudQuality;      // overrides the scene camera's preset
+  std::optional<std::filesystem::path> soakReport;  // resource series of a long run (CSV)
 };
 
 // Parses argv. Returns the options, or an exit code when parsing ended the run (--help, or an

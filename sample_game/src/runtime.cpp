@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <memory>
 #include <numeric>
+#include <optional>
 #include <span>
 #include <thread>
 
@@ -24,6 +25,7 @@
 #include "render/renderer.h"
 #include "scene/scene_description.h"
 #include "scene/scene_loader.h"
+#include "soak_report.h"
 
 namespace sample {
 namespace {
@@ -168,6 +170,8 @@ LoopStats runFrames(ecs::App& app, const Renderer& renderer, platform::Window* w
   auto last = std::chrono::steady_clock::now();
   auto measureStart = last;
   LoopStats stats;
+  std::optional<SoakReport> soak;
+  if (options.soakReport) soak.emplace(*options.soakReport);
   for (std::uint64_t frame = 0; options.frames == 0 || frame < options.frames; ++frame) {
     if (!gatherInput(world, window, swapchain, plan, frame, scriptInput, screenshots)) break;
     const auto now = std::chrono::steady_clock::now();
@@ -181,6 +185,7 @@ LoopStats runFrames(ecs::App& app, const Renderer& renderer, platform::Window* w
       world.ctx().get<CaptureRequest>().stem = frameStem(*options.captureDir, "frame", frame);
     }
     app.runFrame();
+    if (soak) soak->afterFrame(frame, renderer);
     if (frame + 1 == kWarmUpFrames) measureStart = std::chrono::steady_clock::now();
     if (frame + 1 > kWarmUpFrames) {
       ++stats.measuredFrames;
