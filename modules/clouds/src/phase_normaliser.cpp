@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
+#include <utility>
 #include <vector>
 
 #include "cloud_math.h"
@@ -78,6 +80,29 @@ double silverLiningPhaseIntegral(const PhaseLobes& lobes) {
                                         : mixedIntegral(a, b);
   }
   return total;
+}
+
+std::array<float, 8> octavePhaseNormaliserInverses(const OctavePhaseSettings& settings) {
+  const auto same = [](const OctavePhaseSettings& a, const OctavePhaseSettings& b) {
+    return a.lobes.forwardG == b.lobes.forwardG && a.lobes.backwardG == b.lobes.backwardG &&
+           a.lobes.backwardWeight == b.lobes.backwardWeight && a.lobes.silverG == b.lobes.silverG &&
+           a.lobes.silverIntensity == b.lobes.silverIntensity &&
+           a.eccentricityScale == b.eccentricityScale;
+  };
+  thread_local std::optional<std::pair<OctavePhaseSettings, std::array<float, 8>>> last;
+  if (last && same(last->first, settings)) return last->second;
+  std::array<float, 8> inverses{};
+  float eccentricity = 1.0f;
+  for (float& inverse : inverses) {
+    PhaseLobes lobes = settings.lobes;
+    lobes.forwardG *= eccentricity;
+    lobes.backwardG *= eccentricity;
+    lobes.silverG *= eccentricity;
+    inverse = static_cast<float>(1.0 / silverLiningPhaseIntegral(lobes));
+    eccentricity *= settings.eccentricityScale;
+  }
+  last.emplace(settings, inverses);
+  return inverses;
 }
 
 }  // namespace clouds::detail

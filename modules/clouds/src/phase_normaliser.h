@@ -2,6 +2,8 @@
 // The integral over the sphere of the silver-lining phase (shaders/cloud_math.h,
 // silverLiningPhase() before its normalisation), so the uniforms can carry its inverse.
 
+#include <array>
+
 namespace clouds::detail {
 
 // The lobes of one phase function: HG g values as the shader sees them (they are clamped there
@@ -18,5 +20,16 @@ struct PhaseLobes {
 // HG(silverG)), exact to about 1e-6: the HG lobes integrate in closed form between the points
 // where the max changes sides, which are found by bisection.
 double silverLiningPhaseIntegral(const PhaseLobes& lobes);
+
+// 1 / silverLiningPhaseIntegral() for each of the 8 multiple-scattering octaves, octave n with
+// every g scaled by eccentricityScale^n (octavePhases() in cloud_lighting.h). With the silver
+// lining on this takes about 1.7 ms of CPU, and the uniforms are built every frame (twice with
+// a shadow map) from settings that rarely change: the last answer is kept, per thread, and
+// computed again only for other settings.
+struct OctavePhaseSettings {
+  PhaseLobes lobes;  // octave 0's
+  float eccentricityScale = 1.0f;
+};
+std::array<float, 8> octavePhaseNormaliserInverses(const OctavePhaseSettings& settings);
 
 }  // namespace clouds::detail

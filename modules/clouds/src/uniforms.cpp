@@ -87,19 +87,13 @@ shader::CloudUniforms buildUniforms(const FrameInputs& in, const Settings& s,
   u.inScatterCoreProfile = s.inScatterCoreProfile;
   u.silverIntensity = s.silverIntensity;
   u.silverG = shader::kMaxPhaseG - s.silverSpread;
-  // Each octave's phase integral, for its eccentricity (octavePhases()).
-  float eccentricity = 1.0f;
-  for (int n = 0; n < 8; ++n) {
-    PhaseLobes lobes;
-    lobes.forwardG = s.phaseForwardG * eccentricity;
-    lobes.backwardG = s.phaseBackwardG * eccentricity;
-    lobes.backwardWeight = s.phaseBackwardWeight;
-    lobes.silverG = u.silverG * eccentricity;
-    lobes.silverIntensity = s.silverIntensity;
-    const auto inverse = static_cast<float>(1.0 / silverLiningPhaseIntegral(lobes));
-    (n < 4 ? u.phaseNormaliserInverseLow[n] : u.phaseNormaliserInverseHigh[n - 4]) = inverse;
-    eccentricity *= s.msEccentricityScale;
-  }
+  OctavePhaseSettings phaseSettings;
+  phaseSettings.lobes = PhaseLobes{s.phaseForwardG, s.phaseBackwardG, s.phaseBackwardWeight,
+                                   u.silverG, s.silverIntensity};
+  phaseSettings.eccentricityScale = s.msEccentricityScale;
+  const std::array<float, 8> inverses = octavePhaseNormaliserInverses(phaseSettings);
+  u.phaseNormaliserInverseLow = glm::vec4(inverses[0], inverses[1], inverses[2], inverses[3]);
+  u.phaseNormaliserInverseHigh = glm::vec4(inverses[4], inverses[5], inverses[6], inverses[7]);
 
   u.viewStepMetres = s.viewStepMetres;
   u.viewStepGrowth = s.viewStepGrowth;

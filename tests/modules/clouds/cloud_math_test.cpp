@@ -76,6 +76,30 @@ TEST(CloudMath, SilverLiningPhaseIntegratesToOne) {
   }
 }
 
+// The octaves' normalisers are kept between calls: changing any phase setting must give that
+// setting's normalisers, and going back the first ones again.
+TEST(CloudMath, OctaveNormalisersFollowTheSettings) {
+  const auto direct = [](const clouds::detail::OctavePhaseSettings& p, int octave) {
+    clouds::detail::PhaseLobes lobes = p.lobes;
+    const float e = std::pow(p.eccentricityScale, float(octave));
+    lobes.forwardG *= e;
+    lobes.backwardG *= e;
+    lobes.silverG *= e;
+    return static_cast<float>(1.0 / clouds::detail::silverLiningPhaseIntegral(lobes));
+  };
+  clouds::detail::OctavePhaseSettings a;
+  a.lobes = {0.8f, -0.3f, 0.3f, 0.94f, 2.0f};
+  a.eccentricityScale = 0.5f;
+  clouds::detail::OctavePhaseSettings b = a;
+  b.lobes.silverIntensity = 1.0f;
+  clouds::detail::OctavePhaseSettings c = a;
+  c.eccentricityScale = 0.7f;
+  for (const auto* p : {&a, &b, &a, &c, &a}) {
+    const auto inverses = clouds::detail::octavePhaseNormaliserInverses(*p);
+    for (int n = 0; n < 8; ++n) EXPECT_FLOAT_EQ(inverses[std::size_t(n)], direct(*p, n)) << n;
+  }
+}
+
 TEST(CloudMath, PhaseStaysFiniteAtTheExtremes) {
   for (float g : {-1.0f, -0.99999f, 0.99999f, 1.0f, 2.0f, -2.0f}) {
     for (float c : {-1.0f, -0.5f, 0.0f, 0.999f, 1.0f, 1.5f}) {
