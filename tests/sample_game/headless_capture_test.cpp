@@ -30,8 +30,10 @@ int runSample(const std::string& arguments) {
   return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
 }
 
-std::string runSampleOutput(const std::string& arguments) {
-  const std::string command = std::string(SAMPLE_GAME_EXE) + " " + arguments + " 2>/dev/null";
+// What the sample prints where `redirection` sends it to the pipe (e.g. "2>/dev/null": its
+// stdout; "2>&1 >/dev/null": its stderr).
+std::string runSampleCapturing(const std::string& arguments, const char* redirection) {
+  const std::string command = std::string(SAMPLE_GAME_EXE) + " " + arguments + " " + redirection;
   std::unique_ptr<FILE, int (*)(FILE*)> pipe(popen(command.c_str(), "r"), pclose);
   std::string out;
   std::array<char, 512> buffer{};
@@ -40,15 +42,13 @@ std::string runSampleOutput(const std::string& arguments) {
   return out;
 }
 
+std::string runSampleOutput(const std::string& arguments) {
+  return runSampleCapturing(arguments, "2>/dev/null");
+}
+
 // What the sample writes to stderr (its stdout discarded).
 std::string runSampleErrors(const std::string& arguments) {
-  const std::string command = std::string(SAMPLE_GAME_EXE) + " " + arguments + " 2>&1 >/dev/null";
-  std::unique_ptr<FILE, int (*)(FILE*)> pipe(popen(command.c_str(), "r"), pclose);
-  std::string out;
-  std::array<char, 512> buffer{};
-  while (pipe && std::fgets(buffer.data(), buffer.size(), pipe.get()) != nullptr)
-    out += buffer.data();
-  return out;
+  return runSampleCapturing(arguments, "2>&1 >/dev/null");
 }
 
 fs::path freshDir(const char* name) {

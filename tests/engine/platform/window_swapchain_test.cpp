@@ -6,6 +6,7 @@
 
 #include <chrono>
 #include <cstdio>
+#include <functional>
 #include <string>
 #include <thread>
 #include <vector>
@@ -56,9 +57,20 @@ bool renderClearFrame(gfx::FrameRing& ring, render::SwapchainTarget& target) {
   return true;
 }
 
-TEST(WindowSwapchain, ResizeAndMinimizeAreHandled) {
-  if (!platform::Window::displayAvailable()) GTEST_SKIP() << "no display (run under xvfb-run)";
-  platform::Window window(platform::WindowDesc{"window test", 320, 180});
+// What a test gets inside a real window: a validated device, a frame ring and a swapchain
+// target sized to the window, and the validation messages so far.
+struct Windowed {
+  platform::Window& window;
+  gfx::FrameRing& ring;
+  render::SwapchainTarget& target;
+  const std::vector<std::string>& messages;
+};
+
+// Runs `body` with a `width` x `height` window, then drains the ring, destroys everything and
+// expects no validation message (destroying the device with an object alive would be one).
+void withWindow(const char* title, std::uint32_t width, std::uint32_t height,
+                const std::function<void(Windowed&)>& body) {
+  platform::Window window(platform::WindowDesc{title, width, height});
   gfx::InstanceDesc desc;
   desc.validation = true;
   desc.extensions = window.requiredInstanceExtensions();
@@ -71,40 +83,54 @@ TEST(WindowSwapchain, ResizeAndMinimizeAreHandled) {
     gfx::Device device(instance, gfx::DeviceDesc{surface, ""});
     gfx::FrameRing ring(device);
     render::SwapchainTarget target(device, surface, /*vsync=*/false);
-
     target.resize(window.framebufferExtent());
-    for (int i = 0; i < 3; ++i) EXPECT_TRUE(renderClearFrame(ring, target));
-    EXPECT_EQ(target.extent().width, 320u);
-    EXPECT_EQ(target.extent().height, 180u);
-    const auto rebuildsBefore = target.swapchain().rebuildCount();
-
-    window.setSize(200, 100);
-    VkExtent2D extent{};
-    for (int i = 0; i < 100 && (extent.width != 200 || extent.height != 100); ++i) {
-      window.pollEvents();
-      extent = window.framebufferExtent();
-      std::this_thread::sleep_for(std::chrono::milliseconds(10));
-    }
-    ASSERT_EQ(extent.width, 200u) << "the window system did not resize the window";
-    target.resize(extent);
-    EXPECT_TRUE(renderClearFrame(ring, target));
-    EXPECT_EQ(target.extent().width, 200u);
-    EXPECT_EQ(target.extent().height, 100u);
-    EXPECT_GT(target.swapchain().rebuildCount(), rebuildsBefore);
-
-    // Minimized: a 0x0 framebuffer. No swapchain, nothing acquired, frames are skipped.
-    target.resize({0, 0});
-    EXPECT_FALSE(renderClearFrame(ring, target));
-    EXPECT_FALSE(target.swapchain().hasImages());
-    EXPECT_FALSE(renderClearFrame(ring, target));
-
-    target.resize(window.framebufferExtent());
-    EXPECT_TRUE(renderClearFrame(ring, target));
-    EXPECT_TRUE(target.swapchain().hasImages());
+    Windowed windowed{window, ring, target, messages};
+    body(windowed);
     ring.drain();
   }
   window.destroySurface();
   EXPECT_TRUE(messages.empty()) << messages.front();
+}
+
+// Asks the window system for a size and polls (up to a second) until the framebuffer has it;
+// returns the framebuffer's extent then.
+VkExtent2D resizeAndWait(platform::Window& window, std::uint32_t width, std::uint32_t height) {
+  window.setSize(width, height);
+  VkExtent2D extent{};
+  for (int i = 0; i < 100 && (extent.width != width || extent.height != height); ++i) {
+    window.pollEvents();
+    extent = window.framebufferExtent();
+    std::this_thread::sleep_for(std::chrono::milliseconds(10));
+  }
+  return extent;
+}
+
+TEST(WindowSwapchain, ResizeAndMinimizeAreHandled) {
+  if (!platform::Window::displayAvailable()) GTEST_SKIP() << "no display (run under xvfb-run)";
+  withWindow("window test", 320, 180, [](Windowed& w) {
+    for (int i = 0; i < 3; ++i) EXPECT_TRUE(renderClearFrame(w.ring, w.target));
+    EXPECT_EQ(w.target.extent().width, 320u);
+    EXPECT_EQ(w.target.extent().height, 180u);
+    const auto rebuildsBefore = w.target.swapchain().rebuildCount();
+
+    const VkExtent2D extent = resizeAndWait(w.window, 200, 100);
+    ASSERT_EQ(extent.width, 200u) << "the window system did not resize the window";
+    w.target.resize(extent);
+    EXPECT_TRUE(renderClearFrame(w.ring, w.target));
+    EXPECT_EQ(w.target.extent().width, 200u);
+    EXPECT_EQ(w.target.extent().height, 100u);
+    EXPECT_GT(w.target.swapchain().rebuildCount(), rebuildsBefore);
+
+    // Minimized: a 0x0 framebuffer. No swapchain, nothing acquired, frames are skipped.
+    w.target.resize({0, 0});
+    EXPECT_FALSE(renderClearFrame(w.ring, w.target));
+    EXPECT_FALSE(w.target.swapchain().hasImages());
+    EXPECT_FALSE(renderClearFrame(w.ring, w.target));
+
+    w.target.resize(w.window.framebufferExtent());
+    EXPECT_TRUE(renderClearFrame(w.ring, w.target));
+    EXPECT_TRUE(w.target.swapchain().hasImages());
+  });
 }
 
 // A resize storm: 300 sizes in a row (a user dragging a window's corner, then a minimize every
@@ -113,60 +139,35 @@ TEST(WindowSwapchain, ResizeAndMinimizeAreHandled) {
 // the extent it was last given, and after the storm it settles at the window's final size.
 TEST(WindowSwapchain, AResizeStormStaysValidAndSettles) {
   if (!platform::Window::displayAvailable()) GTEST_SKIP() << "no display (run under xvfb-run)";
-  platform::Window window(platform::WindowDesc{"resize storm", 320, 180});
-  gfx::InstanceDesc desc;
-  desc.validation = true;
-  desc.extensions = window.requiredInstanceExtensions();
-  gfx::Instance instance(desc);
-  std::vector<std::string> messages;
-  instance.setValidationHandler(
-      [&](const gfx::ValidationMessage& m) { messages.push_back(m.text); });
-  VkSurfaceKHR surface = window.createSurface(instance.vk());
-  {
-    gfx::Device device(instance, gfx::DeviceDesc{surface, ""});
-    gfx::FrameRing ring(device);
-    render::SwapchainTarget target(device, surface, /*vsync=*/false);
-    target.resize(window.framebufferExtent());
-    const auto rebuildsBefore = target.swapchain().rebuildCount();
+  withWindow("resize storm", 320, 180, [](Windowed& w) {
+    const auto rebuildsBefore = w.target.swapchain().rebuildCount();
     int presented = 0;
     for (std::uint32_t step = 0; step < 300; ++step) {
       // Sizes wander over 64..575 x 48..431 (a fixed sequence, so a failure reproduces).
-      const std::uint32_t width = 64 + (step * 97) % 512;
-      const std::uint32_t height = 48 + (step * 61) % 384;
-      window.setSize(width, height);
-      window.pollEvents();
-      const VkExtent2D extent = step % 10 == 9 ? VkExtent2D{0, 0} : window.framebufferExtent();
-      target.resize(extent);
-      if (renderClearFrame(ring, target)) ++presented;
+      w.window.setSize(64 + (step * 97) % 512, 48 + (step * 61) % 384);
+      w.window.pollEvents();
+      const VkExtent2D extent = step % 10 == 9 ? VkExtent2D{0, 0} : w.window.framebufferExtent();
+      w.target.resize(extent);
+      if (renderClearFrame(w.ring, w.target)) ++presented;
       if (extent.width > 0 && extent.height > 0) {
-        ASSERT_EQ(target.extent().width, extent.width) << "step " << step;
-        ASSERT_EQ(target.extent().height, extent.height) << "step " << step;
+        ASSERT_EQ(w.target.extent().width, extent.width) << "step " << step;
+        ASSERT_EQ(w.target.extent().height, extent.height) << "step " << step;
       }
-      ASSERT_TRUE(messages.empty()) << "step " << step << ": " << messages.front();
+      ASSERT_TRUE(w.messages.empty()) << "step " << step << ": " << w.messages.front();
     }
     EXPECT_GT(presented, 200) << "most frames of the storm must present";
-    const auto rebuilds = target.swapchain().rebuildCount() - rebuildsBefore;
+    const auto rebuilds = w.target.swapchain().rebuildCount() - rebuildsBefore;
     std::printf("resize storm: %d frames presented, %llu swapchain rebuilds\n", presented,
                 static_cast<unsigned long long>(rebuilds));
     EXPECT_GT(rebuilds, 100u) << "the storm must reach the swapchain";
     // Settled: the last size requested reaches the framebuffer, and a frame presents at it.
-    window.setSize(300, 200);
-    VkExtent2D extent{};
-    for (int i = 0; i < 100 && (extent.width != 300 || extent.height != 200); ++i) {
-      window.pollEvents();
-      extent = window.framebufferExtent();
-      std::this_thread::sleep_for(std::chrono::milliseconds(10));
-    }
+    const VkExtent2D extent = resizeAndWait(w.window, 300, 200);
     ASSERT_EQ(extent.width, 300u) << "the window system did not settle at the last size";
-    target.resize(extent);
-    EXPECT_TRUE(renderClearFrame(ring, target));
-    EXPECT_EQ(target.extent().width, 300u);
-    EXPECT_EQ(target.extent().height, 200u);
-    ring.drain();
-  }
-  window.destroySurface();
-  // Destroying the device with an object still alive would be a message here too.
-  EXPECT_TRUE(messages.empty()) << messages.front();
+    w.target.resize(extent);
+    EXPECT_TRUE(renderClearFrame(w.ring, w.target));
+    EXPECT_EQ(w.target.extent().width, 300u);
+    EXPECT_EQ(w.target.extent().height, 200u);
+  });
 }
 
 }  // namespace

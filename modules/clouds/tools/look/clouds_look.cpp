@@ -48,38 +48,27 @@ struct PhaseVariant {
   std::function<void(clouds::Settings&)> apply;
 };
 
+// A silver lobe of `intensity` x HG(0.99 - spread) max()ed into the mix, or (`seeds`) into the
+// seeds' single HG(0.6) lobe.
+std::function<void(clouds::Settings&)> silver(float intensity, float spread, bool seeds) {
+  return [=](clouds::Settings& s) {
+    if (seeds) {
+      s.phaseForwardG = 0.6f;
+      s.phaseBackwardWeight = 0.0f;
+    }
+    s.silverIntensity = intensity;
+    s.silverSpread = spread;
+  };
+}
+
 const std::vector<PhaseVariant>& phaseVariants() {
   static const std::vector<PhaseVariant> variants = {
       {"mix (0.8, -0.3, 0.3): default", [](clouds::Settings&) {}},
-      {"seeds: max(HG 0.6, HG 0.89)",
-       [](clouds::Settings& s) {
-         s.phaseForwardG = 0.6f;
-         s.phaseBackwardWeight = 0.0f;
-         s.silverIntensity = 1.0f;
-         s.silverSpread = 0.1f;
-       }},
-      {"seeds: max(HG 0.6, .5 HG 0.94)",
-       [](clouds::Settings& s) {
-         s.phaseForwardG = 0.6f;
-         s.phaseBackwardWeight = 0.0f;
-         s.silverIntensity = 0.5f;
-         s.silverSpread = 0.05f;
-       }},
-      {"max(mix, HG 0.89)",
-       [](clouds::Settings& s) {
-         s.silverIntensity = 1.0f;
-         s.silverSpread = 0.1f;
-       }},
-      {"max(mix, .5 HG 0.94)",
-       [](clouds::Settings& s) {
-         s.silverIntensity = 0.5f;
-         s.silverSpread = 0.05f;
-       }},
-      {"max(mix, 2 HG 0.94)",
-       [](clouds::Settings& s) {
-         s.silverIntensity = 2.0f;
-         s.silverSpread = 0.05f;
-       }},
+      {"seeds: max(HG 0.6, HG 0.89)", silver(1.0f, 0.1f, true)},
+      {"seeds: max(HG 0.6, .5 HG 0.94)", silver(0.5f, 0.05f, true)},
+      {"max(mix, HG 0.89)", silver(1.0f, 0.1f, false)},
+      {"max(mix, .5 HG 0.94)", silver(0.5f, 0.05f, false)},
+      {"max(mix, 2 HG 0.94)", silver(2.0f, 0.05f, false)},
   };
   return variants;
 }
