@@ -40,6 +40,10 @@ nlohmann::json JsonReader::parseFile(const std::filesystem::path& path) {
     return nlohmann::json::parse(text);
   } catch (const nlohmann::json::parse_error& e) {
     throw Error(path.string() + ": not valid JSON (at byte " + std::to_string(e.byte) + ")");
+  } catch (const nlohmann::json::out_of_range&) {
+    // nlohmann throws this, not a parse_error, for a number no double holds (1e444). Found by
+    // fuzz_scene and fuzz_input_script.
+    throw Error(path.string() + ": not valid JSON: a number is too large for a double");
   }
 }
 
