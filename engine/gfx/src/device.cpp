@@ -69,8 +69,13 @@ std::optional<std::uint32_t> findQueueFamily(VkPhysicalDevice physical, VkSurfac
 
 Device::Device(Instance& instance, const DeviceDesc& desc) : instance_(instance) {
   pickPhysicalDevice(desc);
-  createLogicalDevice();
-  memory_ = std::make_unique<MemoryAllocator>(physical_, device_);
+  try {
+    createLogicalDevice();
+    memory_ = std::make_unique<MemoryAllocator>(physical_, device_);
+  } catch (...) {
+    destroy();  // the destructor does not run for a constructor that throws
+    throw;
+  }
   log::info(std::string("Vulkan device: ") + properties_.deviceName +
             (instance_.validationEnabled() ? " (validation on)" : ""));
 }
@@ -175,65 +180,98 @@ void Device::createLogicalDevice() {
 }
 
 Device::~Device() {
+  destroy();
+}
+
+void Device::destroy() noexcept {
   if (device_ == VK_NULL_HANDLE) return;
-  vkDeviceWaitIdle(device_);
-  deferred_.collect(UINT64_MAX, device_, *memory_);
+  vkDeviceWaitIdle(device_);  // returns (lost or not): nothing can run after it
+  if (memory_) deferred_.collect(UINT64_MAX, device_, *memory_);
   memory_.reset();
   vkDestroyCommandPool(device_, immediatePool_, nullptr);
   vkDestroySemaphore(device_, timeline_, nullptr);
   vkDestroyDevice(device_, nullptr);
+  device_ = VK_NULL_HANDLE;
 }
 
+void Device::check(VkResult result, const char* call, int line) const {
+  if (result == VK_SUCCESS) return;
+  if (result == VK_ERROR_DEVICE_LOST) lost_ = true;
+  throwVulkanError(result, call, __FILE__, line);
+}
+
+// Submits with vkQueueSubmit and a VkTimelineSemaphoreSubmitInfo, not vkQueueSubmit2: with
+// GPU-assisted validation, Debian's validation layer (1.3.239) loses track of the timeline
+// signals of vkQueueSubmit2, and every later wait on them stalls for its 10 s timeout. For what
+// the engine submits (whole command buffers, semaphores signalled at the end) the two are
+// equivalent; waits keep their stage masks, which must be ones the original stage flags have.
 std::uint64_t Device::submit(std::span<const VkCommandBuffer> commandBuffers,
                              std::span<const VkSemaphoreSubmitInfo> waits,
                              std::span<const VkSemaphoreSubmitInfo> extraSignals) {
   // Fixed-size arrays: submission happens every frame and must not allocate.
-  constexpr std::size_t kMaxCommandBuffers = 8;
+  constexpr std::size_t kMaxWaits = 4;
   constexpr std::size_t kMaxSignals = 4;
-  require(commandBuffers.size() <= kMaxCommandBuffers && extraSignals.size() < kMaxSignals,
-          "Device::submit", "too many command buffers or semaphores");
-  VkCommandBufferSubmitInfo cmdInfos[kMaxCommandBuffers];
-  for (std::size_t i = 0; i < commandBuffers.size(); ++i) {
-    cmdInfos[i] = VkCommandBufferSubmitInfo{VK_STRUCTURE_TYPE_COMMAND_BUFFER_SUBMIT_INFO};
-    cmdInfos[i].commandBuffer = commandBuffers[i];
+  require(waits.size() <= kMaxWaits && extraSignals.size() < kMaxSignals, "Device::submit",
+          "too many semaphores");
+  VkSemaphore waitSemaphores[kMaxWaits];
+  std::uint64_t waitValues[kMaxWaits];
+  VkPipelineStageFlags waitStages[kMaxWaits];
+  for (std::size_t i = 0; i < waits.size(); ++i) {
+    require((waits[i].stageMask >> 32) == 0, "Device::submit",
+            "a wait stage that only synchronization2 has");
+    waitSemaphores[i] = waits[i].semaphore;
+    waitValues[i] = waits[i].value;  // ignored for binary semaphores
+    waitStages[i] = static_cast<VkPipelineStageFlags>(waits[i].stageMask);
   }
   const std::uint64_t value = lastSubmitted_ + 1;
-  VkSemaphoreSubmitInfo signals[kMaxSignals];
-  signals[0] = VkSemaphoreSubmitInfo{VK_STRUCTURE_TYPE_SEMAPHORE_SUBMIT_INFO};
-  signals[0].semaphore = timeline_;
-  signals[0].value = value;
-  signals[0].stageMask = VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT;
-  for (std::size_t i = 0; i < extraSignals.size(); ++i) signals[i + 1] = extraSignals[i];
+  VkSemaphore signalSemaphores[kMaxSignals] = {timeline_};
+  std::uint64_t signalValues[kMaxSignals] = {value};
+  for (std::size_t i = 0; i < extraSignals.size(); ++i) {
+    signalSemaphores[i + 1] = extraSignals[i].semaphore;
+    signalValues[i + 1] = extraSignals[i].value;
+  }
+  const auto waitCount = static_cast<std::uint32_t>(waits.size());
+  const auto signalCount = static_cast<std::uint32_t>(extraSignals.size() + 1);
 
-  VkSubmitInfo2 submitInfo{VK_STRUCTURE_TYPE_SUBMIT_INFO_2};
-  submitInfo.waitSemaphoreInfoCount = static_cast<std::uint32_t>(waits.size());
-  submitInfo.pWaitSemaphoreInfos = waits.data();
-  submitInfo.commandBufferInfoCount = static_cast<std::uint32_t>(commandBuffers.size());
-  submitInfo.pCommandBufferInfos = cmdInfos;
-  submitInfo.signalSemaphoreInfoCount = static_cast<std::uint32_t>(extraSignals.size() + 1);
-  submitInfo.pSignalSemaphoreInfos = signals;
-  GFX_CHECK(vkQueueSubmit2(queue_, 1, &submitInfo, VK_NULL_HANDLE));
+  VkTimelineSemaphoreSubmitInfo values{VK_STRUCTURE_TYPE_TIMELINE_SEMAPHORE_SUBMIT_INFO};
+  values.waitSemaphoreValueCount = waitCount;
+  values.pWaitSemaphoreValues = waitValues;
+  values.signalSemaphoreValueCount = signalCount;
+  values.pSignalSemaphoreValues = signalValues;
+  VkSubmitInfo submitInfo{VK_STRUCTURE_TYPE_SUBMIT_INFO};
+  submitInfo.pNext = &values;
+  submitInfo.waitSemaphoreCount = waitCount;
+  submitInfo.pWaitSemaphores = waitSemaphores;
+  submitInfo.pWaitDstStageMask = waitStages;
+  submitInfo.commandBufferCount = static_cast<std::uint32_t>(commandBuffers.size());
+  submitInfo.pCommandBuffers = commandBuffers.data();
+  submitInfo.signalSemaphoreCount = signalCount;
+  submitInfo.pSignalSemaphores = signalSemaphores;
+  require(!lost_, "Device::submit", "the device was lost");
+  check(vkQueueSubmit(queue_, 1, &submitInfo, VK_NULL_HANDLE), "vkQueueSubmit", __LINE__);
   lastSubmitted_ = value;
   return value;
 }
 
 std::uint64_t Device::completedValue() const {
+  if (lost_) return lastSubmitted_;
   std::uint64_t value = 0;
-  GFX_CHECK(vkGetSemaphoreCounterValue(device_, timeline_, &value));
+  check(vkGetSemaphoreCounterValue(device_, timeline_, &value), "vkGetSemaphoreCounterValue",
+        __LINE__);
   return value;
 }
 
 void Device::waitFor(std::uint64_t timelineValue) const {
-  if (timelineValue == 0) return;
+  if (timelineValue == 0 || lost_) return;
   VkSemaphoreWaitInfo info{VK_STRUCTURE_TYPE_SEMAPHORE_WAIT_INFO};
   info.semaphoreCount = 1;
   info.pSemaphores = &timeline_;
   info.pValues = &timelineValue;
-  GFX_CHECK(vkWaitSemaphores(device_, &info, UINT64_MAX));
+  check(vkWaitSemaphores(device_, &info, UINT64_MAX), "vkWaitSemaphores", __LINE__);
 }
 
 void Device::waitIdle() {
-  GFX_CHECK(vkDeviceWaitIdle(device_));
+  if (!lost_) check(vkDeviceWaitIdle(device_), "vkDeviceWaitIdle", __LINE__);
   // Idle: nothing submitted can still use a released object, and by contract nothing is being
   // recorded, so everything queued (including for the next submission) can go now.
   deferred_.collect(UINT64_MAX, device_, *memory_);

@@ -6,6 +6,7 @@
 #include <string>
 
 #include "engine/core/error.h"
+#include "engine/core/log.h"
 #include "engine/gfx/vk_check.h"
 
 namespace engine::gfx {
@@ -30,6 +31,18 @@ ConstantRing::Slice ConstantRing::allocate(VkDeviceSize bytes) {
 }
 
 FrameRing::FrameRing(Device& device) : device_(device) {
+  try {
+    createSlots();
+  } catch (...) {
+    // The destructor does not run for a constructor that throws; the slots' other members go
+    // with the slots, the pools (and their command buffers) here.
+    for (Slot& slot : slots_) vkDestroyCommandPool(device.vk(), slot.pool, nullptr);
+    throw;
+  }
+}
+
+void FrameRing::createSlots() {
+  Device& device = device_;
   for (std::uint32_t i = 0; i < kFramesInFlight; ++i) {
     Slot& slot = slots_[i];
     const std::string suffix = " (frame slot " + std::to_string(i) + ")";
@@ -53,14 +66,20 @@ FrameRing::FrameRing(Device& device) : device_(device) {
 }
 
 FrameRing::~FrameRing() {
-  drain();
+  // A destructor must not throw: a device lost only now is reported and teardown goes on
+  // (the device then counts every frame as finished).
+  try {
+    drain();
+  } catch (const Error& error) {
+    log::error(std::string("frame ring teardown: ") + error.what());
+  }
   for (Slot& slot : slots_) vkDestroyCommandPool(device_.vk(), slot.pool, nullptr);
 }
 
 void FrameRing::retire(Slot& slot) {
   if (!slot.pending) return;
   device_.waitFor(slot.retireValue);
-  lastTimings_ = slot.timer->resolve();
+  if (!device_.lost()) lastTimings_ = slot.timer->resolve();  // a lost device wrote none
   lastRetiredFrame_ = slot.frameIndex;
   slot.pending = false;
 }

@@ -9,16 +9,26 @@
 namespace engine::gfx {
 namespace {
 
-VkShaderModule createModule(Device& device, std::span<const std::uint32_t> spirv,
-                            const std::string& name) {
-  require(!spirv.empty(), "Pipeline '" + name + "'", "empty SPIR-V");
-  VkShaderModuleCreateInfo info{VK_STRUCTURE_TYPE_SHADER_MODULE_CREATE_INFO};
-  info.codeSize = spirv.size_bytes();
-  info.pCode = spirv.data();
-  VkShaderModule module = VK_NULL_HANDLE;
-  GFX_CHECK(vkCreateShaderModule(device.vk(), &info, nullptr, &module));
-  return module;
-}
+// A shader module for the length of a pipeline's creation, destroyed however that ends.
+class ScopedModule {
+ public:
+  ScopedModule(Device& device, std::span<const std::uint32_t> spirv, const std::string& name)
+      : device_(device.vk()) {
+    require(!spirv.empty(), "Pipeline '" + name + "'", "empty SPIR-V");
+    VkShaderModuleCreateInfo info{VK_STRUCTURE_TYPE_SHADER_MODULE_CREATE_INFO};
+    info.codeSize = spirv.size_bytes();
+    info.pCode = spirv.data();
+    GFX_CHECK(vkCreateShaderModule(device_, &info, nullptr, &module_));
+  }
+  ~ScopedModule() { vkDestroyShaderModule(device_, module_, nullptr); }
+  ScopedModule(const ScopedModule&) = delete;
+  ScopedModule& operator=(const ScopedModule&) = delete;
+  VkShaderModule get() const { return module_; }
+
+ private:
+  VkDevice device_;
+  VkShaderModule module_ = VK_NULL_HANDLE;
+};
 
 // Owns the map entries and data VkSpecializationInfo points into.
 struct Specialization {
@@ -72,39 +82,57 @@ void Pipeline::createLayout(Device& device, const std::vector<DescriptorBinding>
   bindings_ = bindings;
 }
 
+// The destructor does not run for a constructor that throws, so each constructor gives back
+// what it made so far itself.
 Pipeline::Pipeline(Device& device, const ComputePipelineDesc& desc)
     : device_(&device), bindPoint_(VK_PIPELINE_BIND_POINT_COMPUTE), name_(desc.debugName) {
+  try {
+    create(device, desc);
+  } catch (...) {
+    reset();
+    throw;
+  }
+}
+
+Pipeline::Pipeline(Device& device, const GraphicsPipelineDesc& desc)
+    : device_(&device), bindPoint_(VK_PIPELINE_BIND_POINT_GRAPHICS), name_(desc.debugName) {
+  try {
+    create(device, desc);
+  } catch (...) {
+    reset();
+    throw;
+  }
+}
+
+void Pipeline::create(Device& device, const ComputePipelineDesc& desc) {
   createLayout(device, desc.bindings, desc.pushConstantBytes, VK_SHADER_STAGE_COMPUTE_BIT);
-  VkShaderModule module = createModule(device, desc.spirv, name_);
+  const ScopedModule module(device, desc.spirv, name_);
   const Specialization specialization(desc.specialization);
   VkComputePipelineCreateInfo info{VK_STRUCTURE_TYPE_COMPUTE_PIPELINE_CREATE_INFO};
   info.stage = VkPipelineShaderStageCreateInfo{VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO};
   info.stage.stage = VK_SHADER_STAGE_COMPUTE_BIT;
-  info.stage.module = module;
+  info.stage.module = module.get();
   info.stage.pName = "main";
   info.stage.pSpecializationInfo = specialization.get();
   info.layout = layout_;
   const VkResult result =
       vkCreateComputePipelines(device.vk(), VK_NULL_HANDLE, 1, &info, nullptr, &pipeline_);
-  vkDestroyShaderModule(device.vk(), module, nullptr);
   if (result != VK_SUCCESS) {
-    reset();
     throwVulkanError(result, ("vkCreateComputePipelines for '" + desc.debugName + "'").c_str(),
                      __FILE__, __LINE__);
   }
   setName(device, pipeline_, name_.c_str());
 }
 
-Pipeline::Pipeline(Device& device, const GraphicsPipelineDesc& desc)
-    : device_(&device), bindPoint_(VK_PIPELINE_BIND_POINT_GRAPHICS), name_(desc.debugName) {
+void Pipeline::create(Device& device, const GraphicsPipelineDesc& desc) {
   createLayout(device, desc.bindings, desc.pushConstantBytes,
                VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT);
   colorFormats_ = desc.colorFormats;
   depthFormat_ = desc.depthFormat;
   vertexBindings_ = desc.vertexBindings;
 
-  VkShaderModule vertex = createModule(device, desc.vertexSpirv, name_);
-  VkShaderModule fragment = createModule(device, desc.fragmentSpirv, name_);
+  const ScopedModule vertex(device, desc.vertexSpirv, name_);
+  const ScopedModule fragment(device, desc.fragmentSpirv, name_);
   const Specialization specialization(desc.specialization);
   std::array<VkPipelineShaderStageCreateInfo, 2> stages{};
   for (auto& s : stages) {
@@ -113,9 +141,9 @@ Pipeline::Pipeline(Device& device, const GraphicsPipelineDesc& desc)
     s.pSpecializationInfo = specialization.get();
   }
   stages[0].stage = VK_SHADER_STAGE_VERTEX_BIT;
-  stages[0].module = vertex;
+  stages[0].module = vertex.get();
   stages[1].stage = VK_SHADER_STAGE_FRAGMENT_BIT;
-  stages[1].module = fragment;
+  stages[1].module = fragment.get();
 
   VkPipelineVertexInputStateCreateInfo vertexInput{
       VK_STRUCTURE_TYPE_PIPELINE_VERTEX_INPUT_STATE_CREATE_INFO};
@@ -200,10 +228,7 @@ Pipeline::Pipeline(Device& device, const GraphicsPipelineDesc& desc)
   info.layout = layout_;
   const VkResult result =
       vkCreateGraphicsPipelines(device.vk(), VK_NULL_HANDLE, 1, &info, nullptr, &pipeline_);
-  vkDestroyShaderModule(device.vk(), vertex, nullptr);
-  vkDestroyShaderModule(device.vk(), fragment, nullptr);
   if (result != VK_SUCCESS) {
-    reset();
     throwVulkanError(result, ("vkCreateGraphicsPipelines for '" + desc.debugName + "'").c_str(),
                      __FILE__, __LINE__);
   }

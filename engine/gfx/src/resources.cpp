@@ -81,15 +81,22 @@ Image::Image(Device& device, const ImageDesc& desc) : device_(&device), desc_(de
   info.sharingMode = VK_SHARING_MODE_EXCLUSIVE;
   info.initialLayout = VK_IMAGE_LAYOUT_UNDEFINED;
   GFX_CHECK(vkCreateImage(device.vk(), &info, nullptr, &image_));
-  VkMemoryRequirements requirements{};
-  vkGetImageMemoryRequirements(device.vk(), image_, &requirements);
+  // The destructor does not run for a constructor that throws: what exists goes back here.
   try {
-    allocation_ = device.memory().allocate(requirements, MemoryUsage::GpuOnly,
-                                           ResourceTiling::Optimal, desc.debugName.c_str());
+    createMemoryAndView();
   } catch (...) {
-    vkDestroyImage(device.vk(), image_, nullptr);
+    reset();
     throw;
   }
+}
+
+void Image::createMemoryAndView() {
+  Device& device = *device_;
+  const ImageDesc& desc = desc_;
+  VkMemoryRequirements requirements{};
+  vkGetImageMemoryRequirements(device.vk(), image_, &requirements);
+  allocation_ = device.memory().allocate(requirements, MemoryUsage::GpuOnly,
+                                         ResourceTiling::Optimal, desc.debugName.c_str());
   GFX_CHECK(vkBindImageMemory(device.vk(), image_, allocation_.memory, allocation_.offset));
   setName(device, image_, desc.debugName.c_str());
 

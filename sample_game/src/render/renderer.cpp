@@ -92,7 +92,13 @@ Renderer::Renderer(gfx::Device& device, render::PresentTarget& target, ecs::Worl
 }
 
 Renderer::~Renderer() {
-  finish();
+  // Also runs while an error unwinds the frame loop, so it must not throw (e.g. a device lost
+  // only now): reported, and teardown goes on.
+  try {
+    finish();
+  } catch (const engine::Error& error) {
+    log::error(std::string("renderer teardown: ") + error.what());
+  }
   // The heightfield goes with the renderer: nothing may read its view afterwards.
   if (world_) world_->ctx().emplaceOrReplace<render::TerrainHeightfield>();
 }

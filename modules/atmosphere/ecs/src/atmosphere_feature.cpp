@@ -53,8 +53,13 @@ AtmosphereFeature::AtmosphereFeature(engine::ecs::World& world, const RenderDevi
 }
 
 AtmosphereFeature::~AtmosphereFeature() {
-  // The module's objects may still be used by frames in flight.
-  device_.waitIdle();
+  // The module's objects may still be used by frames in flight. A destructor must not throw:
+  // a device lost only now is reported and teardown goes on.
+  try {
+    device_.waitIdle();
+  } catch (const engine::Error& error) {
+    engine::log::error(std::string("AtmosphereFeature teardown: ") + error.what());
+  }
 }
 
 void AtmosphereFeature::publishSunTransmittance() {
@@ -94,10 +99,10 @@ void AtmosphereFeature::finish(std::uint64_t lastFrameIndex) {
 
 void AtmosphereFeature::reportError(const atmosphere::Error& error) {
   world_.ctx().get<AtmosphereStatus>().lastError = error.message;
-  // Parameters are validated when a scene loads; reaching this is a bug worth seeing once.
+  // Parameters are validated when a scene loads, so this is a bug or the device out of memory:
+  // worth seeing once. The frame goes on without the atmosphere's passes; tried again next frame.
   if (!errorLogged_) {
-    engine::log::error(std::string("atmosphere: ") + error.message + " (" +
-                       errorCodeName(error.code) + ")");
+    engine::log::error(error.message + " (" + errorCodeName(error.code) + ")");
   }
   errorLogged_ = true;
 }

@@ -93,8 +93,13 @@ CloudFeature::CloudFeature(engine::ecs::World& world, const RenderDevice& device
 }
 
 CloudFeature::~CloudFeature() {
-  // The module's objects may still be used by frames in flight.
-  device_.waitIdle();
+  // The module's objects may still be used by frames in flight. A destructor must not throw:
+  // a device lost only now is reported and teardown goes on.
+  try {
+    device_.waitIdle();
+  } catch (const engine::Error& error) {
+    engine::log::error(std::string("CloudFeature teardown: ") + error.what());
+  }
 }
 
 bool CloudFeature::prepare(VkExtent2D extent, std::uint64_t frameIndex) {
@@ -121,10 +126,10 @@ void CloudFeature::finish(std::uint64_t lastFrameIndex) {
 
 void CloudFeature::reportError(const clouds::Error& error) {
   world_.ctx().get<CloudStatus>().lastError = error.message;
-  // Settings are validated when a scene loads; reaching this is a bug worth seeing once.
+  // Settings are validated when a scene loads, so this is a bug or the device out of memory:
+  // worth seeing once. The frame goes on without clouds; prepare() is tried again next frame.
   if (!errorLogged_) {
-    engine::log::error(std::string("clouds: ") + error.message + " (" + errorCodeName(error.code) +
-                       ")");
+    engine::log::error(error.message + " (" + errorCodeName(error.code) + ")");
   }
   errorLogged_ = true;
 }

@@ -57,6 +57,12 @@ class Device {
   // Waits for the GPU to finish everything and destroys every released object. Only call it
   // when no command buffer is being recorded (load time, resize, shutdown).
   void waitIdle();
+
+  // --- Device loss ---------------------------------------------------------------------
+  // The first call that reports VK_ERROR_DEVICE_LOST throws, as any failed call does. From
+  // then on the device runs nothing, so everything submitted counts as finished: waits return
+  // at once and released objects are destroyed, which lets teardown finish; submit() throws.
+  bool lost() const { return lost_; }
   // Records `record` into a one-time command buffer, submits it and waits. Load time only.
   void immediateSubmit(const std::function<void(VkCommandBuffer)>& record);
 
@@ -75,6 +81,10 @@ class Device {
  private:
   void pickPhysicalDevice(const DeviceDesc& desc);
   void createLogicalDevice();
+  // Destroys what exists of the device (also after a constructor failed half way).
+  void destroy() noexcept;
+  // Throws for a failed call; a lost device is remembered (see lost()).
+  void check(VkResult result, const char* call, int line) const;
 
   Instance& instance_;
   VkPhysicalDevice physical_ = VK_NULL_HANDLE;
@@ -85,6 +95,7 @@ class Device {
   bool presentEnabled_ = false;
   VkSemaphore timeline_ = VK_NULL_HANDLE;
   std::uint64_t lastSubmitted_ = 0;
+  mutable bool lost_ = false;
   VkCommandPool immediatePool_ = VK_NULL_HANDLE;
   std::unique_ptr<MemoryAllocator> memory_;
   DeferredReleaseQueue deferred_;

@@ -80,6 +80,7 @@ class FrameRing {
   Device& device() { return device_; }
 
  private:
+  void createSlots();
   struct Slot {
     VkCommandPool pool = VK_NULL_HANDLE;
     VkCommandBuffer cmd = VK_NULL_HANDLE;

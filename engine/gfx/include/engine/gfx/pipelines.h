@@ -90,6 +90,8 @@ class Pipeline {
   }
 
  private:
+  void create(Device& device, const ComputePipelineDesc& desc);
+  void create(Device& device, const GraphicsPipelineDesc& desc);
   void createLayout(Device& device, const std::vector<DescriptorBinding>& bindings,
                     std::uint32_t pushConstantBytes, VkShaderStageFlags stages);
 

@@ -80,6 +80,8 @@ class Image {
   VkImageSubresourceRange fullRange() const;
 
  private:
+  void createMemoryAndView();
+
   Device* device_ = nullptr;
   VkImage image_ = VK_NULL_HANDLE;
   VkImageView view_ = VK_NULL_HANDLE;
