@@ -208,6 +208,7 @@ void Device::check(VkResult result, const char* call, int line) const {
 std::uint64_t Device::submit(std::span<const VkCommandBuffer> commandBuffers,
                              std::span<const VkSemaphoreSubmitInfo> waits,
                              std::span<const VkSemaphoreSubmitInfo> extraSignals) {
+  require(!lost_, "Device::submit", "the device was lost");
   // Fixed-size arrays: submission happens every frame and must not allocate.
   constexpr std::size_t kMaxWaits = 4;
   constexpr std::size_t kMaxSignals = 4;
@@ -247,7 +248,6 @@ std::uint64_t Device::submit(std::span<const VkCommandBuffer> commandBuffers,
   submitInfo.pCommandBuffers = commandBuffers.data();
   submitInfo.signalSemaphoreCount = signalCount;
   submitInfo.pSignalSemaphores = signalSemaphores;
-  require(!lost_, "Device::submit", "the device was lost");
   check(vkQueueSubmit(queue_, 1, &submitInfo, VK_NULL_HANDLE), "vkQueueSubmit", __LINE__);
   lastSubmitted_ = value;
   return value;

@@ -57,14 +57,14 @@ class Device {
   // Waits for the GPU to finish everything and destroys every released object. Only call it
   // when no command buffer is being recorded (load time, resize, shutdown).
   void waitIdle();
+  // Records `record` into a one-time command buffer, submits it and waits. Load time only.
+  void immediateSubmit(const std::function<void(VkCommandBuffer)>& record);
 
   // --- Device loss ---------------------------------------------------------------------
   // The first call that reports VK_ERROR_DEVICE_LOST throws, as any failed call does. From
   // then on the device runs nothing, so everything submitted counts as finished: waits return
   // at once and released objects are destroyed, which lets teardown finish; submit() throws.
   bool lost() const { return lost_; }
-  // Records `record` into a one-time command buffer, submits it and waits. Load time only.
-  void immediateSubmit(const std::function<void(VkCommandBuffer)>& record);
 
   // --- Deferred destruction ------------------------------------------------------------
   // Destroys the object (and frees its memory) once every submission made so far, and the
