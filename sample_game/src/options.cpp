@@ -20,15 +20,22 @@ ParseResult parseOptions(int argc, char** argv) {
   cli.add_option("--width", options.width, "Render width in pixels")->check(CLI::Range(16u, 7680u));
   cli.add_option("--height", options.height, "Render height in pixels")
       ->check(CLI::Range(16u, 4320u));
-  cli.add_option("--fixed-dt", options.fixedDtSeconds,
-                 "Fixed simulation step in seconds (deterministic runs)")
-      ->check(CLI::Range(0.0, 3600.0))
-      // CLI::Range lets NaN through (every comparison with it is false).
-      ->check([](const std::string& value) {
-        return std::isfinite(std::strtod(value.c_str(), nullptr))
-                   ? std::string()
-                   : "must be a finite number of seconds, got " + value;
-      });
+  // CLI::Range lets NaN through (every comparison with it is false).
+  const auto finiteSeconds = [](const std::string& value) {
+    return std::isfinite(std::strtod(value.c_str(), nullptr))
+               ? std::string()
+               : "must be a finite number of seconds, got " + value;
+  };
+  double fixedDt = 0.0;
+  CLI::Option* fixedDtOption =
+      cli.add_option("--fixed-dt", fixedDt,
+                     "Fixed simulation step in seconds (deterministic runs; 0 pauses the clock)")
+          ->check(CLI::Range(0.0, 3600.0))
+          ->check(finiteSeconds);
+  cli.add_option("--start-time", options.startSeconds,
+                 "Simulation clock at the first frame in seconds (1e6: as after 11.6 days)")
+      ->check(CLI::Range(0.0, 1e9))
+      ->check(finiteSeconds);
   cli.add_flag("--validation", options.validation, "Enable Vulkan validation layers");
   cli.add_option("--device", options.device, "Vulkan device: cpu, gpu or a name substring");
   std::string scene;
@@ -61,6 +68,7 @@ ParseResult parseOptions(int argc, char** argv) {
   } catch (const CLI::ParseError& e) {
     return ParseResult{std::nullopt, cli.exit(e)};
   }
+  if (fixedDtOption->count() > 0) options.fixedDtSeconds = fixedDt;
   if (!captureDir.empty()) options.captureDir = captureDir;
   if (!scene.empty()) options.scene = scene;
   if (!terrain.empty()) options.terrain = terrain;

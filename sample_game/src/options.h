@@ -16,9 +16,12 @@ struct Options {
   bool captureEveryFrame = false;                   // every frame instead of only the last
   std::uint32_t width = 640;
   std::uint32_t height = 360;
-  double fixedDtSeconds = 0.0;  // > 0: simulation steps by this much per frame
-  bool validation = false;      // Vulkan validation layers (also CLOUDSCAPE_VALIDATION=1)
-  std::string device;           // "cpu", "gpu" or a device-name substring
+  // Seconds the simulation steps each frame; 0 holds the clock still (wind, weather, lightning,
+  // time of day and flight all pause while frames keep rendering); none: the measured frame time.
+  std::optional<double> fixedDtSeconds;
+  double startSeconds = 0.0;  // the simulation clock at the first frame (uptime), seconds
+  bool validation = false;    // Vulkan validation layers (also CLOUDSCAPE_VALIDATION=1)
+  std::string device;         // "cpu", "gpu" or a device-name substring
   bool vsync = true;
   std::filesystem::path scene;                   // scene JSON; empty: the default scene
   std::optional<std::filesystem::path> terrain;  // fly over this glTF instead of the scene's

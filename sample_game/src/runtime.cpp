@@ -177,9 +177,9 @@ LoopStats runFrames(ecs::App& app, const Renderer& renderer, platform::Window* w
     const auto now = std::chrono::steady_clock::now();
     const double measured = std::chrono::duration<double>(now - last).count();
     last = now;
-    const double dt = options.fixedDtSeconds > 0.0 ? options.fixedDtSeconds
-                                                   : (frame == 0 ? 0.0 : std::min(measured, 0.25));
-    time = frame == 0 ? ecs::FrameTime{dt, 0.0, 0} : time.next(dt);
+    const double dt = options.fixedDtSeconds ? *options.fixedDtSeconds
+                                             : (frame == 0 ? 0.0 : std::min(measured, 0.25));
+    time = frame == 0 ? ecs::FrameTime{dt, options.startSeconds, 0} : time.next(dt);
     const bool lastFrame = options.frames != 0 && frame + 1 == options.frames;
     if (options.captureDir && (options.captureEveryFrame || (lastFrame && !plan.script))) {
       world.ctx().get<CaptureRequest>().stem = frameStem(*options.captureDir, "frame", frame);

@@ -1,7 +1,8 @@
 // Lightning as ECS data, without a GPU: strikes are a pure function of the storm's seed and the
 // clock (the same at any frame rate, different for another seed, at the storm's rate), a
 // strike's return strokes light it and then it is dark, the "lightning" system sends an event
-// per strike and keeps the ones in progress, a trigger strikes at once, the clouds' inputs get
+// per strike (each once, at any step and uptime; none while the clock is paused, which holds
+// the flashes) and keeps the ones in progress, a trigger strikes at once, the clouds' inputs get
 // the brightest flashes and the whole bolts there is room for, a ground strike's bolt is a
 // branching channel to the ground, and a scene without a storm has no system.
 #include <gtest/gtest.h>
@@ -104,7 +105,97 @@ struct StormWorld {
     time = time.next(dt);
     scheduler.runFrame(world);
   }
+  // The first frame, its clock at `seconds` (the uptime).
+  void firstFrame(double seconds) {
+    world.ctx().get<engine::ecs::FrameTime>() = engine::ecs::FrameTime{0.0, seconds, 0};
+    scheduler.runFrame(world);
+  }
+  // The strikes sent since the last call.
+  std::vector<LightningStrike> sent() {
+    const auto unread = reader.read(world.events<LightningStrike>());
+    return {unread.begin(), unread.end()};
+  }
+  engine::ecs::EventReader<LightningStrike> reader;
 };
+
+// The strikes a run of frames sends are exactly the storm's strikes over the time it covered:
+// none lost or sent twice at a frame boundary, whatever the steps (here 0, 1/144 s, 1/30 s and
+// 10 s, and a frame ending at a strike's start), after an uptime of 0 or 1e6 s.
+TEST(Lightning, TheSystemSendsEachStrikeOnceAtAnyStepAndUptime) {
+  for (const double uptime : {0.0, 1e6}) {
+    StormWorld w;
+    ASSERT_TRUE(clouds::ecs::installLightning(w.world, w.scheduler));
+    const LightningStorm s = w.world.get<LightningStorm>(w.stormEntity);
+    const double firstStrike =
+        clouds::ecs::strikesBetween(s, uptime, uptime + 60.0).at(0).startSeconds;
+    std::vector<LightningStrike> sent;
+    auto collect = [&] {
+      for (const LightningStrike& strike : w.sent()) sent.push_back(strike);
+    };
+    w.firstFrame(uptime);
+    collect();
+    w.frame(firstStrike - uptime);  // ends at the first strike's start
+    collect();
+    const double steps[] = {0.0, 1.0 / 144.0, 1.0 / 30.0, 0.0, 10.0, 1.0 / 30.0};
+    for (int i = 0; i < 600; ++i) {
+      w.frame(steps[i % 6]);
+      collect();
+    }
+    const double end = w.world.ctx().get<engine::ecs::FrameTime>().elapsedSeconds;
+    const std::vector<LightningStrike> expected = clouds::ecs::strikesBetween(s, uptime, end);
+    ASSERT_GT(expected.size(), 400u) << "two cells at 60 a minute for 17 minutes";
+    ASSERT_EQ(sent.size(), expected.size()) << "uptime " << uptime;
+    for (std::size_t i = 0; i < sent.size(); ++i) {
+      ASSERT_EQ(sent[i].startSeconds, expected[i].startSeconds) << "uptime " << uptime;
+    }
+  }
+}
+
+// A paused clock (steps of 0) sends no strike, not even one starting at that very moment (once
+// it runs again, that one is sent once), and holds the strikes in progress and their flashes.
+TEST(Lightning, APausedClockHoldsTheStrikesAndTheirFlashes) {
+  StormWorld w;
+  ASSERT_TRUE(clouds::ecs::installLightning(w.world, w.scheduler));
+  const LightningStorm s = w.world.get<LightningStorm>(w.stormEntity);
+  const double strikeStart = clouds::ecs::strikesBetween(s, 0.0, 60.0).at(0).startSeconds;
+  w.firstFrame(strikeStart);
+  std::size_t sent = w.sent().size();
+  for (int i = 0; i < 50; ++i) {
+    w.frame(0.0);
+    sent += w.sent().size();
+  }
+  w.frame(0.02);
+  sent += w.sent().size();
+  EXPECT_EQ(sent, 1u) << "the strike starting when the clock stopped";
+  const auto flashes = clouds::ecs::lightningFlashes(w.world, 8);
+  ASSERT_FALSE(flashes.empty());
+  for (int i = 0; i < 100; ++i) {
+    w.frame(0.0);
+    ASSERT_TRUE(w.sent().empty()) << "paused frame " << i;
+    const auto held = clouds::ecs::lightningFlashes(w.world, 8);
+    ASSERT_EQ(held.size(), flashes.size());
+    for (std::size_t f = 0; f < held.size(); ++f) ASSERT_EQ(held[f].radiance, flashes[f].radiance);
+  }
+}
+
+// A host that sets its clock back (a new session at 0 after 10 minutes) gets strikes again from
+// its first step, not after the old clock's time has passed once more.
+TEST(Lightning, AClockSetBackStrikesFromItsNextStep) {
+  StormWorld w;
+  ASSERT_TRUE(clouds::ecs::installLightning(w.world, w.scheduler));
+  w.firstFrame(600.0);
+  w.frame(1.0);
+  w.sent();
+  w.firstFrame(0.0);
+  std::size_t sent = 0;
+  for (int i = 0; i < 60; ++i) {
+    w.frame(1.0);
+    sent += w.sent().size();
+  }
+  const LightningStorm s = w.world.get<LightningStorm>(w.stormEntity);
+  EXPECT_EQ(sent, clouds::ecs::strikesBetween(s, 0.0, 60.0).size());
+  EXPECT_GT(sent, 0u);
+}
 
 TEST(Lightning, TheSystemSendsAnEventPerStrikeAndKeepsThoseInProgress) {
   StormWorld w;

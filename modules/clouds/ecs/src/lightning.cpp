@@ -206,14 +206,18 @@ bool installLightning(engine::ecs::World& world, engine::ecs::Scheduler& schedul
       [reader = engine::ecs::EventReader<TriggerLightning>{}](engine::ecs::World& w) mutable {
         const auto& time = w.ctx().get<engine::ecs::FrameTime>();
         const double now = time.elapsedSeconds;
-        const double before = now - time.deltaSeconds;
-        auto& active = w.ctx().get<ActiveLightning>().strikes;
+        auto& lightning = w.ctx().get<ActiveLightning>();
+        // This frame's strikes start in [the last frame's clock, now): a paused clock (a step
+        // of 0) takes none, and a strike at a frame's end is the next frame's, once. A clock the
+        // host set back starts over from its step.
+        double from = lightning.simulatedUntilSeconds.value_or(now - time.deltaSeconds);
+        if (from > now) from = now - time.deltaSeconds;
+        lightning.simulatedUntilSeconds = now;
+        auto& active = lightning.strikes;
         auto& sent = w.events<LightningStrike>();
         std::vector<LightningStrike> started;
         w.view<const LightningStorm>().each([&](const LightningStorm& s) {
-          // The first frame (no time passed yet) also takes strikes at time 0.
-          const std::vector<LightningStrike> due =
-              strikesBetween(s, time.deltaSeconds > 0.0 ? before : now, now + 1e-9);
+          const std::vector<LightningStrike> due = strikesBetween(s, from, now);
           started.insert(started.end(), due.begin(), due.end());
           for (const TriggerLightning& t : reader.read(w.events<TriggerLightning>())) {
             if (s.cells.empty()) continue;

@@ -7,6 +7,7 @@
 // and so no glow code in their pipelines.
 #include <cstdint>
 #include <glm/glm.hpp>
+#include <optional>
 #include <vector>
 
 #include "clouds/clouds.h"
@@ -67,6 +68,10 @@ struct TriggerLightning {
 // Context singleton: the strikes in progress this frame.
 struct ActiveLightning {
   std::vector<LightningStrike> strikes;
+  // The clock at the end of the last frame simulated: the next frame takes the strikes from
+  // here on, so consecutive frames cover time without a gap or an overlap (now - dt need not
+  // round back to it).
+  std::optional<double> simulatedUntilSeconds;
 };
 
 // The strikes of `storm` that start in [fromSeconds, toSeconds), in order of start: a pure
