@@ -323,10 +323,11 @@ int run(Options commandLine) {
     instanceDesc.extensions = window->requiredInstanceExtensions();
   }
   gfx::Instance instance(instanceDesc);
-  VkSurfaceKHR surface = window ? window->createSurface(instance.vk()) : VK_NULL_HANDLE;
+  const platform::Surface surface =
+      window ? window->createSurface(instance.vk()) : platform::Surface{};
   {
-    gfx::Device device(instance, gfx::DeviceDesc{surface, options.device});
-    Presentation presentation = createPresentation(device, surface, plan);
+    gfx::Device device(instance, gfx::DeviceDesc{surface.vk(), options.device});
+    Presentation presentation = createPresentation(device, surface.vk(), plan);
 
     RendererOptions rendererOptions;
     rendererOptions.maxExtent = {std::max(options.width, 3840u), std::max(options.height, 2160u)};
@@ -354,7 +355,6 @@ int run(Options commandLine) {
                   std::filesystem::absolute(*options.captureDir).string().c_str());
     }
   }
-  if (window) window->destroySurface();
   if (instance.validationEnabled() && instance.validationMessageCount() > 0) {
     log::error(std::to_string(instance.validationMessageCount()) +
                " Vulkan validation message(s): failing the run");

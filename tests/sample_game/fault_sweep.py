@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
-"""Fault injection over the sample: runs it headless under validation with one Vulkan call
-failing (the fault layer, tests/support/fault_layer), once per fault, and checks that every run
-ends cleanly:
+"""Fault injection over the sample: runs it under validation with one Vulkan call failing (the
+fault layer, tests/support/fault_layer), once per fault, and checks that every run ends
+cleanly:
 
   - it exits with 1 and an "error:" line naming the failed call and its VkResult, or it goes
     on and exits with 0 after a line naming the call: a module that cannot create its objects
@@ -16,7 +16,13 @@ Faults: object creations spread over all the run makes (each kind's first and la
 one of the first few), vkAllocateMemory's, every submission failing, and the device lost at
 every submission. A first run without a fault counts the calls.
 
-usage: fault_sweep.py SAMPLE LAYER_DATA_HOME OUT_DIR
+With --windowed the sample opens a window (run it under Xvfb) and the faults are the window's:
+the swapchain's creations, and the first and last-but-one acquire and present reporting each of
+out-of-date and suboptimal (the run must rebuild the swapchain and go on: a second
+"swapchain:" line, exit 0), surface-lost and out-of-memory (a clear error), besides the spread
+of creations and the submission faults.
+
+usage: fault_sweep.py [--windowed] SAMPLE LAYER_DATA_HOME OUT_DIR
 (CLOUDSCAPE_FAULT_SWEEP_ALL=1 fails every creation in turn instead, for a longer search.)
 """
 import os
@@ -34,10 +40,19 @@ CREATION_KINDS = ["vkAllocateMemory", "vkCreateImage", "vkCreateBuffer", "vkCrea
                   "vkAllocateDescriptorSets", "vkCreateDescriptorPool", "vkCreateQueryPool",
                   "vkCreateShaderModule", "vkCreateSampler", "vkAllocateCommandBuffers",
                   "vkCreateCommandPool", "vkCreateSemaphore"]
+# The window's own: the swapchain, its image views and semaphores.
+WINDOW_CREATION_KINDS = ["vkCreateSwapchainKHR", "vkCreateImageView", "vkCreateSemaphore"]
+PRESENTATION_CALLS = ["vkAcquireNextImageKHR", "vkQueuePresentKHR"]
+# What a presentation fault reports, and whether the run must go on (rebuilding its swapchain).
+PRESENTATION_RESULTS = {"out-of-date": True, "suboptimal": True, "surface-lost": False,
+                        "out-of-memory": False}
+RESULT_NAMES = {"out-of-date": "VK_ERROR_OUT_OF_DATE_KHR", "suboptimal": "VK_SUBOPTIMAL_KHR",
+                "surface-lost": "VK_ERROR_SURFACE_LOST_KHR",
+                "out-of-memory": "VK_ERROR_OUT_OF_DEVICE_MEMORY"}
 SPREAD_POINTS = 16
 
 
-def run_sample(sample, data_home, out_dir, fault, name):
+def run_sample(sample, data_home, out_dir, fault, name, windowed):
     report = out_dir / f"{name}.report"
     report.unlink(missing_ok=True)
     env = dict(os.environ, XDG_DATA_HOME=str(data_home), CLOUDSCAPE_FAULT_LAYER="1",
@@ -45,8 +60,9 @@ def run_sample(sample, data_home, out_dir, fault, name):
     env.pop("CLOUDSCAPE_FAULT", None)
     if fault:
         env["CLOUDSCAPE_FAULT"] = fault
-    command = [sample, "--headless", "--validation", "--frames", str(FRAMES), "--width", "160",
-               "--height", "90", "--capture", str(out_dir / "capture")]
+    command = [sample, "--validation", "--frames", str(FRAMES), "--width", "160", "--height", "90"]
+    if not windowed:
+        command += ["--headless", "--capture", str(out_dir / "capture")]
     try:
         done = subprocess.run(command, env=env, capture_output=True, text=True,
                               timeout=RUN_TIMEOUT_S)
@@ -64,16 +80,26 @@ def run_sample(sample, data_home, out_dir, fault, name):
     return done.returncode, done.stdout + done.stderr, calls
 
 
-def faults_to_try(calls):
+def first_and_last(calls, kind):
+    count = calls.get(kind, 0)
+    return [n for n in sorted({1, count}) if n >= 1]
+
+
+def faults_to_try(calls, windowed):
     creations = calls["create"]
     if os.environ.get("CLOUDSCAPE_FAULT_SWEEP_ALL"):  # every creation (about 8 minutes)
         return [f"create:{n}" for n in range(1, creations + 1)]
     spread = sorted({1, 2, 3, 4, 5, creations} |
                     {1 + (creations - 1) * i // (SPREAD_POINTS - 1) for i in range(SPREAD_POINTS)})
     faults = [f"create:{n}" for n in spread]
-    for kind in CREATION_KINDS:
-        count = calls.get(kind, 0)
-        faults += [f"{kind}:{n}" for n in sorted({1, count}) if n >= 1]
+    for kind in WINDOW_CREATION_KINDS if windowed else CREATION_KINDS:
+        faults += [f"{kind}:{n}" for n in first_and_last(calls, kind)]
+    if windowed:
+        # The first call and the last but one: after the last there is no frame to rebuild in.
+        for kind in PRESENTATION_CALLS:
+            count = calls.get(kind, 0)
+            faults += [f"{kind}:{n}:{result}" for n in sorted({1, max(count - 1, 1)})
+                       for result in PRESENTATION_RESULTS]
     faults += [f"vkQueueSubmit:{n}" for n in range(1, calls["submit"] + 1)]
     faults += [f"device-lost:{n}" for n in range(1, calls["submit"] + 1)]
     return faults
@@ -93,10 +119,19 @@ def verdict(fault, code, output, calls):
     if validation:
         return f"exit {code}", "validation message: " + validation[0][:300]
     failed_call = injected.split(" ")[0]
+    result = fault.split(":")[2] if fault.count(":") == 2 else None
+    if result and PRESENTATION_RESULTS[result]:
+        # Out of date or suboptimal: what a resized window reports. The swapchain is rebuilt.
+        rebuilds = [line for line in lines if "swapchain: " in line]
+        if code != 0:
+            return f"exit {code}", f"{RESULT_NAMES[result]} ended the run"
+        if len(rebuilds) < 2:
+            return "exit 0", "the swapchain was not rebuilt"
+        return f"went on: rebuilt, {rebuilds[-1].strip()[:100]}", None
     if fault.startswith("device-lost"):
         wanted = ["VK_ERROR_DEVICE_LOST"]
     else:
-        wanted = [failed_call, "VK_ERROR_OUT_OF_DEVICE_MEMORY"]
+        wanted = [failed_call, RESULT_NAMES[result or "out-of-memory"]]
     if code == 1:
         errors = [line for line in lines if line.startswith("error:")]
         if not errors:
@@ -116,20 +151,26 @@ def verdict(fault, code, output, calls):
 
 
 def main():
-    if len(sys.argv) != 4:
+    arguments = sys.argv[1:]
+    windowed = arguments[:1] == ["--windowed"]
+    if windowed:
+        arguments = arguments[1:]
+    if len(arguments) != 3:
         sys.exit(__doc__)
-    sample, data_home, out_dir = sys.argv[1], Path(sys.argv[2]), Path(sys.argv[3])
+    sample, data_home, out_dir = arguments[0], Path(arguments[1]), Path(arguments[2])
     out_dir.mkdir(parents=True, exist_ok=True)
 
-    code, output, calls = run_sample(sample, data_home, out_dir, None, "baseline")
+    code, output, calls = run_sample(sample, data_home, out_dir, None, "baseline", windowed)
     if code != 0 or calls.get("injected") != "nothing":
         sys.exit(f"the run without a fault failed (exit {code}):\n{output}")
-    print(f"without a fault: {calls['create']} creations, {calls['submit']} submissions "
-          f"in {FRAMES} frames")
+    print(f"without a fault: {calls['create']} creations, {calls['submit']} submissions, "
+          f"{calls.get('vkQueuePresentKHR', 0)} presents in {FRAMES} frames"
+          + (" in a window" if windowed else " headless"))
 
     rows, problems = [], []
-    for index, fault in enumerate(faults_to_try(calls)):
-        code, output, fault_calls = run_sample(sample, data_home, out_dir, fault, f"run{index}")
+    for index, fault in enumerate(faults_to_try(calls, windowed)):
+        code, output, fault_calls = run_sample(sample, data_home, out_dir, fault, f"run{index}",
+                                               windowed)
         outcome, problem = verdict(fault, code, output, fault_calls)
         injected = fault_calls.get("injected") or "-"
         rows.append(f"| {fault} | {injected} | {outcome} | {problem or 'clean'} |")

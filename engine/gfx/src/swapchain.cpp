@@ -36,8 +36,14 @@ VkSurfaceFormatKHR chooseFormat(VkPhysicalDevice physical, VkSurfaceKHR surface)
 
 Swapchain::Swapchain(Device& device, VkSurfaceKHR surface, bool vsync)
     : device_(device), surface_(surface), vsync_(vsync) {
-  for (std::uint32_t i = 0; i < kMaxFramesInFlight; ++i) {
-    acquired_[i] = createBinarySemaphore(device, "swapchain acquire " + std::to_string(i));
+  try {
+    for (std::uint32_t i = 0; i < kMaxFramesInFlight; ++i) {
+      acquired_[i] = createBinarySemaphore(device, "swapchain acquire " + std::to_string(i));
+    }
+  } catch (...) {
+    // The destructor does not run for a constructor that throws: the semaphores made go here.
+    for (VkSemaphore made : acquired_) vkDestroySemaphore(device.vk(), made, nullptr);
+    throw;
   }
   format_ = chooseFormat(device.physical(), surface).format;
 }

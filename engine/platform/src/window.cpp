@@ -5,6 +5,7 @@
 
 #include <cstdlib>
 #include <optional>
+#include <utility>
 
 #include "engine/core/error.h"
 
@@ -130,8 +131,24 @@ Window::Window(const WindowDesc& desc) {
   glfwSetScrollCallback(window_, &Window::onScroll);
 }
 
+Surface::~Surface() {
+  if (surface_ != VK_NULL_HANDLE) vkDestroySurfaceKHR(instance_, surface_, nullptr);
+}
+
+Surface::Surface(Surface&& other) noexcept
+    : instance_(std::exchange(other.instance_, VK_NULL_HANDLE)),
+      surface_(std::exchange(other.surface_, VK_NULL_HANDLE)) {}
+
+Surface& Surface::operator=(Surface&& other) noexcept {
+  if (this != &other) {
+    if (surface_ != VK_NULL_HANDLE) vkDestroySurfaceKHR(instance_, surface_, nullptr);
+    instance_ = std::exchange(other.instance_, VK_NULL_HANDLE);
+    surface_ = std::exchange(other.surface_, VK_NULL_HANDLE);
+  }
+  return *this;
+}
+
 Window::~Window() {
-  destroySurface();
   if (window_ != nullptr) glfwDestroyWindow(window_);
   glfwTerminate();
 }
@@ -144,20 +161,14 @@ std::vector<std::string> Window::requiredInstanceExtensions() const {
   return extensions;
 }
 
-VkSurfaceKHR Window::createSurface(VkInstance instance) {
-  require(surface_ == VK_NULL_HANDLE, "window", "surface already created");
-  const VkResult result = glfwCreateWindowSurface(instance, window_, nullptr, &surface_);
+Surface Window::createSurface(VkInstance instance) {
+  VkSurfaceKHR surface = VK_NULL_HANDLE;
+  const VkResult result = glfwCreateWindowSurface(instance, window_, nullptr, &surface);
   if (result != VK_SUCCESS) {
     throw Error("window: glfwCreateWindowSurface failed (VkResult " +
                 std::to_string(static_cast<int>(result)) + ")");
   }
-  surfaceInstance_ = instance;
-  return surface_;
-}
-
-void Window::destroySurface() {
-  if (surface_ != VK_NULL_HANDLE) vkDestroySurfaceKHR(surfaceInstance_, surface_, nullptr);
-  surface_ = VK_NULL_HANDLE;
+  return Surface(instance, surface);
 }
 
 void Window::pollEvents() {

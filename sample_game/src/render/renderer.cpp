@@ -13,6 +13,7 @@
 #include "engine/core/error.h"
 #include "engine/core/log.h"
 #include "engine/ecs/frame_time.h"
+#include "engine/gfx/upload.h"
 #include "engine/render/camera_math.h"
 #include "engine/render/exposure.h"
 #include "engine/render/scene_components.h"
@@ -103,6 +104,32 @@ Renderer::~Renderer() {
   if (world_) world_->ctx().emplaceOrReplace<render::TerrainHeightfield>();
 }
 
+render::TextureHandle Renderer::importNoHaze(render::FrameGraph& graph) {
+  const gfx::ImageState general{VK_IMAGE_LAYOUT_GENERAL, VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT,
+                                VK_ACCESS_2_SHADER_SAMPLED_READ_BIT};
+  if (!noHaze_) {
+    noHaze_ = std::make_unique<gfx::Image>(
+        device_, gfx::ImageDesc{VK_IMAGE_TYPE_3D,
+                                VK_FORMAT_R16G16B16A16_SFLOAT,
+                                {1, 1, 1},
+                                1,
+                                1,
+                                VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT,
+                                "no haze"});
+    const std::uint16_t texel[4] = {0, 0, 0, 0x3C00};  // half floats: no light, transmittance 1
+    gfx::uploadToImage(device_, *noHaze_, std::as_bytes(std::span(texel)), general);
+  }
+  render::ImportedTexture texture;
+  texture.image = noHaze_->vk();
+  texture.view = noHaze_->view();
+  texture.desc.extent = {1, 1, 1};
+  texture.desc.format = VK_FORMAT_R16G16B16A16_SFLOAT;
+  texture.desc.type = VK_IMAGE_TYPE_3D;
+  texture.initial = {general.layout, general.stages, general.access};
+  texture.final = texture.initial;
+  return graph.importTexture("no haze", texture);
+}
+
 void Renderer::rebuildGraph(VkExtent2D extent) {
   graph_ = std::make_unique<render::FrameGraph>(&device_);
   render::FrameGraph& graph = *graph_;
@@ -127,6 +154,11 @@ void Renderer::rebuildGraph(VkExtent2D extent) {
     scene = feature->addPassesBeforeScene(graph, scene);
   }
   if (sky_) scene.hdr = addSkyPass(graph, *sky_, hdrDesc, &sceneFrame_);
+  if (terrain_ && terrain_->hazedByAerialPerspective() && !scene.aerialPerspective.valid()) {
+    scene.aerialPerspective = importNoHaze(graph);
+    scene.aerialPerspectiveSlices = 1;
+    scene.aerialPerspectiveRangeMetres = 1.0f;
+  }
   hazeRangeMetres_ = scene.aerialPerspectiveRangeMetres;
   hazeSlices_ = scene.aerialPerspectiveSlices;
   // The opaque scene, and a feature's sky behind it: a graphics pass whenever either exists.

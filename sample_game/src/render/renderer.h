@@ -96,6 +96,10 @@ class Renderer {
   SceneFrameBinding sceneFrame_{};
   float hazeRangeMetres_ = 0.0f;  // the aerial perspective the terrain reads (graph build)
   std::uint32_t hazeSlices_ = 0;
+  // A hazed terrain's aerial perspective while the feature that makes it has none (its
+  // prepare() failed): one texel, no in-scatter and full transmittance. Made when first needed.
+  std::unique_ptr<engine::gfx::Image> noHaze_;
+  engine::render::TextureHandle importNoHaze(engine::render::FrameGraph& graph);
   engine::render::TonemapSettings tonemap_{};
   engine::ecs::EventReader<CaptureFrame> captureReader_;
 };

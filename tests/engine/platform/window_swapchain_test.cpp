@@ -74,21 +74,20 @@ void withWindow(const char* title, std::uint32_t width, std::uint32_t height,
   gfx::InstanceDesc desc;
   desc.validation = true;
   desc.extensions = window.requiredInstanceExtensions();
+  std::vector<std::string> messages;  // before the instance: its teardown may still report
   gfx::Instance instance(desc);
-  std::vector<std::string> messages;
   instance.setValidationHandler(
       [&](const gfx::ValidationMessage& m) { messages.push_back(m.text); });
-  VkSurfaceKHR surface = window.createSurface(instance.vk());
   {
-    gfx::Device device(instance, gfx::DeviceDesc{surface, ""});
+    const platform::Surface surface = window.createSurface(instance.vk());
+    gfx::Device device(instance, gfx::DeviceDesc{surface.vk(), ""});
     gfx::FrameRing ring(device);
-    render::SwapchainTarget target(device, surface, /*vsync=*/false);
+    render::SwapchainTarget target(device, surface.vk(), /*vsync=*/false);
     target.resize(window.framebufferExtent());
     Windowed windowed{window, ring, target, messages};
     body(windowed);
     ring.drain();
   }
-  window.destroySurface();
   EXPECT_TRUE(messages.empty()) << messages.front();
 }
 

@@ -15,6 +15,12 @@
 //   device-lost:n     the n-th submission is not carried out and returns VK_ERROR_DEVICE_LOST;
 //                     from then on every submit, wait, query read, acquire and present does too
 //                     (creations still succeed, as the specification allows)
+//   vkAcquireNextImageKHR:n:<result>, vkQueuePresentKHR:n:<result>
+//                     the n-th acquire or present returns <result>: out-of-date, suboptimal,
+//                     surface-lost or out-of-memory. As a driver would: an acquire that fails
+//                     acquires nothing, a suboptimal one does acquire; a present reporting
+//                     out-of-date, suboptimal or surface-lost has still been queued (its
+//                     semaphore waits happen), one out of memory has not
 // CLOUDSCAPE_FAULT_REPORT=<file>: when the device is destroyed, the layer writes there how many
 // calls of each hooked kind it saw and which one it failed, for the test to sweep n over.
 //
@@ -34,15 +40,40 @@ namespace {
 struct Fault {
   std::string kind;  // "create", a function name, "device-lost" or empty (none)
   long at = 0;
+  VkResult result = VK_ERROR_OUT_OF_DEVICE_MEMORY;  // what an acquire or present returns
 };
 
+VkResult parseResult(const std::string& name) {
+  if (name == "out-of-date") return VK_ERROR_OUT_OF_DATE_KHR;
+  if (name == "suboptimal") return VK_SUBOPTIMAL_KHR;
+  if (name == "surface-lost") return VK_ERROR_SURFACE_LOST_KHR;
+  return VK_ERROR_OUT_OF_DEVICE_MEMORY;
+}
+
+// "<kind>:<n>" or "<kind>:<n>:<result>".
 Fault parseFault() {
   const char* text = std::getenv("CLOUDSCAPE_FAULT");
   if (text == nullptr) return {};
   const std::string value = text;
-  const std::size_t colon = value.rfind(':');
+  const std::size_t colon = value.find(':');
   if (colon == std::string::npos) return {};
-  return Fault{value.substr(0, colon), std::strtol(value.c_str() + colon + 1, nullptr, 10)};
+  const std::size_t second = value.find(':', colon + 1);
+  Fault fault{value.substr(0, colon), std::strtol(value.c_str() + colon + 1, nullptr, 10)};
+  if (second != std::string::npos) fault.result = parseResult(value.substr(second + 1));
+  return fault;
+}
+
+const char* resultName(VkResult result) {
+  switch (result) {
+    case VK_ERROR_OUT_OF_DATE_KHR:
+      return "VK_ERROR_OUT_OF_DATE_KHR";
+    case VK_SUBOPTIMAL_KHR:
+      return "VK_SUBOPTIMAL_KHR";
+    case VK_ERROR_SURFACE_LOST_KHR:
+      return "VK_ERROR_SURFACE_LOST_KHR";
+    default:
+      return "VK_ERROR_OUT_OF_DEVICE_MEMORY";
+  }
 }
 
 struct State {
@@ -92,6 +123,18 @@ SubmitFate submitFate(const char* name) {
     return SubmitFate::OutOfMemory;
   }
   return SubmitFate::Run;
+}
+
+// Counts an acquire or present and returns the result it must report instead of its own, or
+// VK_SUCCESS to leave it be.
+VkResult presentationFault(const char* name) {
+  State& s = state();
+  std::lock_guard lock(s.mutex);
+  const long call = ++s.calls[name];
+  if (s.fault.kind != name || call != s.fault.at) return VK_SUCCESS;
+  s.injected =
+      std::string(name) + " (call " + std::to_string(call) + ") " + resultName(s.fault.result);
+  return s.fault.result;
 }
 
 bool deviceLost() {
@@ -149,6 +192,34 @@ struct LostAware<VkResult(VKAPI_PTR*)(Args...)> {
   static VKAPI_ATTR VkResult VKAPI_CALL call(Args... args) {
     if (deviceLost()) return VK_ERROR_DEVICE_LOST;
     return next(args...);
+  }
+};
+
+// vkAcquireNextImageKHR: a failure acquires nothing; suboptimal acquires the image.
+struct Acquire {
+  static inline PFN_vkAcquireNextImageKHR next = nullptr;
+  static VKAPI_ATTR VkResult VKAPI_CALL call(VkDevice device, VkSwapchainKHR swapchain,
+                                             std::uint64_t timeout, VkSemaphore semaphore,
+                                             VkFence fence, std::uint32_t* index) {
+    if (deviceLost()) return VK_ERROR_DEVICE_LOST;
+    const VkResult fault = presentationFault("vkAcquireNextImageKHR");
+    if (fault != VK_SUCCESS && fault != VK_SUBOPTIMAL_KHR) return fault;
+    const VkResult result = next(device, swapchain, timeout, semaphore, fence, index);
+    return result == VK_SUCCESS ? fault : result;
+  }
+};
+
+// vkQueuePresentKHR: out-of-date, suboptimal and surface-lost are reported after the present
+// was queued (the specification has its semaphore waits happen all the same); out of memory
+// before, leaving everything as it was.
+struct Present {
+  static inline PFN_vkQueuePresentKHR next = nullptr;
+  static VKAPI_ATTR VkResult VKAPI_CALL call(VkQueue queue, const VkPresentInfoKHR* info) {
+    if (deviceLost()) return VK_ERROR_DEVICE_LOST;
+    const VkResult fault = presentationFault("vkQueuePresentKHR");
+    if (fault == VK_ERROR_OUT_OF_DEVICE_MEMORY) return fault;
+    const VkResult result = next(queue, info);
+    return result == VK_SUCCESS ? fault : result;
   }
 };
 
@@ -244,8 +315,8 @@ const Hook kHooks[] = {
     FAULT_LOST_AWARE(vkWaitForFences),
     FAULT_LOST_AWARE(vkGetFenceStatus),
     FAULT_LOST_AWARE(vkGetQueryPoolResults),
-    FAULT_LOST_AWARE(vkAcquireNextImageKHR),
-    FAULT_LOST_AWARE(vkQueuePresentKHR),
+    hook<Acquire>("vkAcquireNextImageKHR"),
+    hook<Present>("vkQueuePresentKHR"),
 };
 #undef FAULT_CREATION
 #undef FAULT_LOST_AWARE

@@ -89,8 +89,18 @@ bool AtmosphereFeature::prepare(VkExtent2D extent, std::uint64_t frameIndex) {
   settings_ = atmosphereSettings(world_);
   publishSunTransmittance();
   atmosphere::Error error;
-  if (!context_->prepare(parameters_, settings_, extent, &error)) reportError(error);
-  return !sameImages(context_->outputs(), imported_);
+  prepared_ = context_->prepare(parameters_, settings_, extent, &error);
+  if (!prepared_) {
+    reportError(error);
+    dispatched_ = false;  // no sky from an earlier frame's dispatch
+  }
+  // A change rebuilds the graph: with the atmosphere's passes, or without them until prepare()
+  // succeeds again.
+  return !sameImages(usableOutputs(), imported_);
+}
+
+atmosphere::Outputs AtmosphereFeature::usableOutputs() const {
+  return prepared_ ? context_->outputs() : atmosphere::Outputs{};
 }
 
 void AtmosphereFeature::finish(std::uint64_t lastFrameIndex) {
@@ -135,7 +145,8 @@ void AtmosphereFeature::drawSkyInScenePass(VkCommandBuffer cmd) {
 
 SceneTextures AtmosphereFeature::addPassesBeforeScene(FrameGraph& graph,
                                                       const SceneTextures& scene) {
-  imported_ = context_->outputs();
+  imported_ = usableOutputs();
+  if (imported_.environment.image == VK_NULL_HANDLE) return scene;  // prepare() failed
   // The module keeps its outputs in GENERAL between frames and synchronises its own writes.
   const ResourceState general{VK_IMAGE_LAYOUT_GENERAL, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
                               VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT};

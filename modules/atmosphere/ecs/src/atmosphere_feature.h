@@ -54,7 +54,11 @@ class AtmosphereFeature final : public engine::render::RenderFeature {
   atmosphere::Settings settings_;
   std::optional<atmosphere::Parameters> published_;  // what SunTransmittance integrates
   atmosphere::Outputs imported_;                     // the outputs the graph imported
-  bool dispatched_ = false;                          // this frame's dispatch succeeded
+  // The outputs the graph may import: none after a failed prepare(), whose outputs may be
+  // missing or not yet in their layout.
+  atmosphere::Outputs usableOutputs() const;
+  bool prepared_ = false;    // this frame's prepare() succeeded
+  bool dispatched_ = false;  // this frame's dispatch succeeded
   bool errorLogged_ = false;
 };
 

@@ -112,9 +112,15 @@ bool CloudFeature::prepare(VkExtent2D extent, std::uint64_t frameIndex) {
   }
   settings_ = cloudSettings(world_);
   clouds::Error error;
-  if (!context_->prepare(settings_, extent, &error)) reportError(error);
-  const bool outputsChanged = !sameImages(context_->outputs(), imported_);
-  return outputsChanged;
+  prepared_ = context_->prepare(settings_, extent, &error);
+  if (!prepared_) reportError(error);
+  // A change rebuilds the graph: with the clouds' passes, or without them until prepare()
+  // succeeds again.
+  return !sameImages(usableOutputs(), imported_);
+}
+
+clouds::Outputs CloudFeature::usableOutputs() const {
+  return prepared_ ? context_->outputs() : clouds::Outputs{};
 }
 
 void CloudFeature::finish(std::uint64_t lastFrameIndex) {
@@ -190,7 +196,7 @@ void CloudFeature::composite(VkCommandBuffer cmd, VkImageView color, VkExtent2D 
 }
 
 SceneTextures CloudFeature::addShadowPasses(FrameGraph& graph, const SceneTextures& scene) {
-  imported_ = context_->outputs();
+  imported_ = usableOutputs();
   // No receiver in this frame, no map.
   if (!castsShadow_ || !scene.cloudShadowReceived || imported_.shadowMap.image == VK_NULL_HANDLE) {
     return scene;
@@ -221,7 +227,8 @@ SceneTextures CloudFeature::addShadowPasses(FrameGraph& graph, const SceneTextur
 }
 
 SceneTextures CloudFeature::addPasses(FrameGraph& graph, const SceneTextures& scene) {
-  imported_ = context_->outputs();
+  imported_ = usableOutputs();
+  if (imported_.radiance.image == VK_NULL_HANDLE) return scene;  // prepare() failed
   const VkExtent3D sceneExtent = graph.textureDesc(scene.hdr).extent;
   const TextureHandle radiance =
       importOutput(graph, "cloud radiance", imported_.radiance, sceneExtent);

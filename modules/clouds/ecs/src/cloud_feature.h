@@ -60,7 +60,11 @@ class CloudFeature final : public engine::render::RenderFeature {
   std::vector<clouds::LightningFlash> flashes_;      // this frame's (FrameInputs points at them)
   std::vector<clouds::LightningBoltSegment> bolts_;  // likewise
   clouds::Outputs imported_;                         // the outputs the graph imported
-  bool castsShadow_ = false;                         // the layer's settings have a shadow map
+  // The outputs the graph may import: none after a failed prepare(), whose outputs may be
+  // missing or not yet in their layout.
+  clouds::Outputs usableOutputs() const;
+  bool prepared_ = false;     // this frame's prepare() succeeded
+  bool castsShadow_ = false;  // the layer's settings have a shadow map
   // This frame's shadow-map parameters, filled when "cloud shadows" executes.
   engine::render::CloudShadowParameterBlock shadowParameters_{};
   bool shadowRemadeWhole_ = false;  // every cascade was made this frame

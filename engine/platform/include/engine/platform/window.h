@@ -18,6 +18,25 @@ struct WindowDesc {
   std::uint32_t height = 720;
 };
 
+// A window's Vulkan surface, destroyed with this object. Declare it after the instance it was
+// made from (and after the window): it then goes first, also when an exception unwinds.
+class Surface {
+ public:
+  Surface() = default;
+  Surface(VkInstance instance, VkSurfaceKHR surface) : instance_(instance), surface_(surface) {}
+  ~Surface();
+  Surface(Surface&& other) noexcept;
+  Surface& operator=(Surface&& other) noexcept;
+  Surface(const Surface&) = delete;
+  Surface& operator=(const Surface&) = delete;
+
+  VkSurfaceKHR vk() const { return surface_; }
+
+ private:
+  VkInstance instance_ = VK_NULL_HANDLE;
+  VkSurfaceKHR surface_ = VK_NULL_HANDLE;
+};
+
 class Window {
  public:
   // True when a display server is reachable (DISPLAY or WAYLAND_DISPLAY set).
@@ -31,10 +50,8 @@ class Window {
 
   // Instance extensions the surface needs (call after constructing a window).
   std::vector<std::string> requiredInstanceExtensions() const;
-  // Creates the surface once; the window destroys it (call destroySurface before the instance
-  // goes away).
-  VkSurfaceKHR createSurface(VkInstance instance);
-  void destroySurface();
+  // A surface for this window; throws engine::Error naming the VkResult when it cannot.
+  Surface createSurface(VkInstance instance);
 
   // Processes window events and updates input(). Call once per frame.
   void pollEvents();
@@ -56,8 +73,6 @@ class Window {
   static void onScroll(GLFWwindow* window, double dx, double dy);
 
   GLFWwindow* window_ = nullptr;
-  VkInstance surfaceInstance_ = VK_NULL_HANDLE;
-  VkSurfaceKHR surface_ = VK_NULL_HANDLE;
   InputState input_;
   double lastMouseX_ = 0.0;
   double lastMouseY_ = 0.0;
