@@ -105,12 +105,13 @@ Renderer::~Renderer() {
 }
 
 render::TextureHandle Renderer::importNoHaze(render::FrameGraph& graph) {
+  constexpr VkFormat kFormat = VK_FORMAT_R16G16B16A16_SFLOAT;
   const gfx::ImageState general{VK_IMAGE_LAYOUT_GENERAL, VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT,
                                 VK_ACCESS_2_SHADER_SAMPLED_READ_BIT};
   if (!noHaze_) {
     noHaze_ = std::make_unique<gfx::Image>(
         device_, gfx::ImageDesc{VK_IMAGE_TYPE_3D,
-                                VK_FORMAT_R16G16B16A16_SFLOAT,
+                                kFormat,
                                 {1, 1, 1},
                                 1,
                                 1,
@@ -123,7 +124,7 @@ render::TextureHandle Renderer::importNoHaze(render::FrameGraph& graph) {
   texture.image = noHaze_->vk();
   texture.view = noHaze_->view();
   texture.desc.extent = {1, 1, 1};
-  texture.desc.format = VK_FORMAT_R16G16B16A16_SFLOAT;
+  texture.desc.format = kFormat;
   texture.desc.type = VK_IMAGE_TYPE_3D;
   texture.initial = {general.layout, general.stages, general.access};
   texture.final = texture.initial;

@@ -37,18 +37,31 @@
 
 namespace {
 
+// The results an acquire or present can be made to return: the name CLOUDSCAPE_FAULT gives, the
+// result, and its name in the report. The first, out of memory, is the default.
+struct PresentationResult {
+  const char* option;
+  VkResult result;
+  const char* name;
+};
+constexpr PresentationResult kPresentationResults[] = {
+    {"out-of-memory", VK_ERROR_OUT_OF_DEVICE_MEMORY, "VK_ERROR_OUT_OF_DEVICE_MEMORY"},
+    {"out-of-date", VK_ERROR_OUT_OF_DATE_KHR, "VK_ERROR_OUT_OF_DATE_KHR"},
+    {"suboptimal", VK_SUBOPTIMAL_KHR, "VK_SUBOPTIMAL_KHR"},
+    {"surface-lost", VK_ERROR_SURFACE_LOST_KHR, "VK_ERROR_SURFACE_LOST_KHR"}};
+
+const PresentationResult& presentationResult(const std::string& option) {
+  for (const PresentationResult& r : kPresentationResults) {
+    if (option == r.option) return r;
+  }
+  return kPresentationResults[0];
+}
+
 struct Fault {
   std::string kind;  // "create", a function name, "device-lost" or empty (none)
   long at = 0;
-  VkResult result = VK_ERROR_OUT_OF_DEVICE_MEMORY;  // what an acquire or present returns
+  PresentationResult result = kPresentationResults[0];  // what an acquire or present returns
 };
-
-VkResult parseResult(const std::string& name) {
-  if (name == "out-of-date") return VK_ERROR_OUT_OF_DATE_KHR;
-  if (name == "suboptimal") return VK_SUBOPTIMAL_KHR;
-  if (name == "surface-lost") return VK_ERROR_SURFACE_LOST_KHR;
-  return VK_ERROR_OUT_OF_DEVICE_MEMORY;
-}
 
 // "<kind>:<n>" or "<kind>:<n>:<result>".
 Fault parseFault() {
@@ -59,21 +72,8 @@ Fault parseFault() {
   if (colon == std::string::npos) return {};
   const std::size_t second = value.find(':', colon + 1);
   Fault fault{value.substr(0, colon), std::strtol(value.c_str() + colon + 1, nullptr, 10)};
-  if (second != std::string::npos) fault.result = parseResult(value.substr(second + 1));
+  if (second != std::string::npos) fault.result = presentationResult(value.substr(second + 1));
   return fault;
-}
-
-const char* resultName(VkResult result) {
-  switch (result) {
-    case VK_ERROR_OUT_OF_DATE_KHR:
-      return "VK_ERROR_OUT_OF_DATE_KHR";
-    case VK_SUBOPTIMAL_KHR:
-      return "VK_SUBOPTIMAL_KHR";
-    case VK_ERROR_SURFACE_LOST_KHR:
-      return "VK_ERROR_SURFACE_LOST_KHR";
-    default:
-      return "VK_ERROR_OUT_OF_DEVICE_MEMORY";
-  }
 }
 
 struct State {
@@ -132,9 +132,8 @@ VkResult presentationFault(const char* name) {
   std::lock_guard lock(s.mutex);
   const long call = ++s.calls[name];
   if (s.fault.kind != name || call != s.fault.at) return VK_SUCCESS;
-  s.injected =
-      std::string(name) + " (call " + std::to_string(call) + ") " + resultName(s.fault.result);
-  return s.fault.result;
+  s.injected = std::string(name) + " (call " + std::to_string(call) + ") " + s.fault.result.name;
+  return s.fault.result.result;
 }
 
 bool deviceLost() {

@@ -210,8 +210,8 @@ bool installLightning(engine::ecs::World& world, engine::ecs::Scheduler& schedul
         // This frame's strikes start in [the last frame's clock, now): a paused clock (a step
         // of 0) takes none, and a strike at a frame's end is the next frame's, once. A clock the
         // host set back starts over from its step.
-        double from = lightning.simulatedUntilSeconds.value_or(now - time.deltaSeconds);
-        if (from > now) from = now - time.deltaSeconds;
+        const std::optional<double> until = lightning.simulatedUntilSeconds;
+        const double from = until && *until <= now ? *until : now - time.deltaSeconds;
         lightning.simulatedUntilSeconds = now;
         auto& active = lightning.strikes;
         auto& sent = w.events<LightningStrike>();
