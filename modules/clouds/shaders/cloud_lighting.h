@@ -85,6 +85,25 @@ VKFX_INLINE float inScatterProbability(float core, float heightFraction, float c
   return saturate(depthProbability * verticalProbability);
 }
 
+// The share of the lower hemisphere (by solid angle) more than 10 degrees below the horizon:
+// there a cloud base sees the ground; nearer the horizon it looks through so much air that it
+// sees the horizon's haze instead. 1 - sin(10 degrees).
+const float kGroundShareOfLowerHemisphere = 0.82635182f;
+
+// The radiance that lights cloud bases from below (ambientBottom) when the ground is known: the
+// ground's, a Lambertian surface of `groundAlbedo` lit by the sun (illuminance `sunIlluminance`
+// at `sunUp`, the sine of its elevation, a share `groundSunlit` of the ground out of the
+// clouds' shadow) and the sky (irradiance pi `skyTop`, `skyTop` the cosine-weighted mean
+// radiance of the upper hemisphere), seen over most of the lower hemisphere, and the horizon's
+// radiance over the rest.
+VKFX_INLINE vec3 groundLitBaseRadiance(vec3 horizon, vec3 skyTop, vec3 groundAlbedo,
+                                       vec3 sunIlluminance, float sunUp, float groundSunlit) {
+  const vec3 groundIrradiance =
+      sunIlluminance * (max(sunUp, 0.0f) * saturate(groundSunlit)) + kPi * skyTop;
+  const vec3 ground = groundAlbedo * groundIrradiance / kPi;
+  return mix(horizon, ground, kGroundShareOfLowerHemisphere);
+}
+
 // Radiance scattered towards the viewer at a sample, per unit scattering coefficient (before
 // the albedo). `profile` is the coarse shape in [0, 1] (coarseShape()); `sunLight` in [0, 1]
 // the share of the sun not hidden by the terrain.

@@ -100,7 +100,8 @@ const uint kGodRayUniforms = 3u;   // GodRayLightUniforms (uniform block)
 const uint kGodRayLightOut = 4u;   // RGBA16F: what the composite adds to a sky pixel
 // sky_ambient.comp (reads and writes the uniforms as a storage buffer)
 const uint kSkyAmbientUniforms = 0u;
-const uint kSkyAmbientSky = 1u;
+const uint kSkyAmbientSky = 1u;        // the host's sky image (a placeholder without one)
+const uint kSkyAmbientShadowMap = 2u;  // the cloud shadow map (a placeholder without one)
 // noise_*.comp and weather_procedural.comp: the texture they generate
 const uint kGeneratorTarget = 0u;
 // weather_resample.comp: the module's weather map from the host's painted one
@@ -278,6 +279,19 @@ struct CloudUniforms {
   // 4-7): the silver lining's max() gains energy that these give back (silverLiningPhase()).
   vec4 phaseNormaliserInverseLow;
   vec4 phaseNormaliserInverseHigh;
+};
+
+// Push constants of sky_ambient.comp: which sources the frame has, and the ground's albedo.
+const uint kAmbientFromSkyImage = 1u;  // the sky image replaces ambientTop and ambientBottom
+const uint kAmbientGroundLight = 2u;   // bases see the ground (groundAlbedo)
+const uint kAmbientGroundShadow = 4u;  // ... in the clouds' shadow (the shadow map's mean)
+struct AmbientConstants {
+  vec3 groundAlbedo;    // Lambertian, [0, 1] per channel
+  uint flags;           // kAmbient* bits
+  uint shadowCascades;  // cascades side by side in the shadow map (cascade 0 is read)
+  uint shadowTexels;    // texels per cascade side
+  uint padding1;
+  uint padding2;
 };
 
 // Push constants of the noise generators.

@@ -1,48 +1,84 @@
 #version 460
-// Derives the ambient colours from a host sky-radiance image (equirectangular: u = azimuth,
-// v = 0 at the zenith): ambientTop = cosine-weighted mean of the upper hemisphere (what lights
-// cloud tops), ambientBottom = mean over the band up to 10 degrees above the horizon (what
-// reaches cloud bases sideways). One workgroup; results are written into the uniform buffer.
+// The ambient colours of the frame, written into the uniform buffer. One workgroup.
+//  - From a host sky-radiance image (equirectangular: u = azimuth, v = 0 at the zenith), when
+//    there is one: ambientTop = cosine-weighted mean of the upper hemisphere (what lights cloud
+//    tops), ambientBottom = mean over the band up to 10 degrees above the horizon (the horizon's
+//    radiance). Without one, the host's ambientTop and ambientBottom stand.
+//  - With the ground's albedo, cloud bases see the ground below them (groundLitBaseRadiance()):
+//    lit by the sun where the clouds do not shade it, a share read as the mean sun
+//    transmittance of the shadow map's finest cascade (the ground around the camera), and by
+//    the sky.
 #extension GL_GOOGLE_include_directive : require
+#include "cloud_lighting.h"
 #include "cloud_math.h"
 #include "cloud_types.h"
 
 layout(local_size_x = kSkyAmbientLanes) in;
 layout(binding = kSkyAmbientUniforms, std430) buffer Uniforms { CloudUniforms u; };
 layout(binding = kSkyAmbientSky) uniform sampler2D sky;
+layout(binding = kSkyAmbientShadowMap) uniform sampler2D shadowMap;
+layout(push_constant) uniform Constants { AmbientConstants constants; };
 
+// Reduced over the lanes: the sky's upper hemisphere (rgb, weight), its horizon band (rgb,
+// count) and the ground's sunlit share (sum in x, count in y).
 shared vec4 topSum[kSkyAmbientLanes];
 shared vec4 bottomSum[kSkyAmbientLanes];
+shared vec2 sunlitSum[kSkyAmbientLanes];
+
+// The sun transmittance to the ground (below every cloud) at `uv` in the finest cascade,
+// clamped half a texel inside it so that the filter does not read the next cascade.
+float groundSunlit(vec2 uv) {
+  const float texels = float(max(constants.shadowTexels, 1u));
+  const vec2 inside = clamp(uv, vec2(0.5f / texels), vec2(1.0f - 0.5f / texels));
+  const float cascades = float(max(constants.shadowCascades, 1u));
+  return exp(-textureLod(shadowMap, vec2(inside.x / cascades, inside.y), 0.0f).r);
+}
 
 void main() {
   const uint lane = gl_LocalInvocationID.x;
+  const bool fromSky = (constants.flags & kAmbientFromSkyImage) != 0u;
+  const bool fromShadow = (constants.flags & kAmbientGroundShadow) != 0u;
   vec4 top = vec4(0.0f);
   vec4 bottom = vec4(0.0f);
+  vec2 sunlit = vec2(0.0f);
   // kSkyAmbientLanes x kSkyAmbientSamples (64 x 16): a stratified 32 x 32 grid over azimuth
-  // and elevation.
+  // and elevation, and over the shadow map's finest cascade.
   for (uint k = 0u; k < kSkyAmbientSamples; ++k) {
     const uint index = lane * kSkyAmbientSamples + k;
-    const float azimuth = (float(index % 32u) + 0.5f) / 32.0f;
-    const float e = (float(index / 32u) + 0.5f) / 32.0f;   // [0, 1) over the hemisphere
-    const float elevation = e * 0.5f * kPi;                 // radians above the horizon
-    const float weight = sin(elevation) * cos(elevation);    // cos(zenith) dOmega
-    const vec3 radiance = textureLod(sky, vec2(azimuth, 0.5f - elevation / kPi), 0.0f).rgb;
-    top += vec4(radiance * weight, weight);
-    const vec2 band = vec2(azimuth, 0.5f - (e * 10.0f / 180.0f));
-    bottom += vec4(textureLod(sky, band, 0.0f).rgb, 1.0f);
+    const vec2 cell = (vec2(float(index % 32u), float(index / 32u)) + 0.5f) / 32.0f;
+    if (fromSky) {
+      const float elevation = cell.y * 0.5f * kPi;           // radians above the horizon
+      const float weight = sin(elevation) * cos(elevation);  // cos(zenith) dOmega
+      const vec3 radiance = textureLod(sky, vec2(cell.x, 0.5f - elevation / kPi), 0.0f).rgb;
+      top += vec4(radiance * weight, weight);
+      const vec2 band = vec2(cell.x, 0.5f - (cell.y * 10.0f / 180.0f));
+      bottom += vec4(textureLod(sky, band, 0.0f).rgb, 1.0f);
+    }
+    if (fromShadow) {
+      sunlit += vec2(groundSunlit(cell), 1.0f);
+    }
   }
   topSum[lane] = top;
   bottomSum[lane] = bottom;
+  sunlitSum[lane] = sunlit;
   barrier();
   for (uint stride = kSkyAmbientLanes / 2u; stride > 0u; stride >>= 1u) {
     if (lane < stride) {
       topSum[lane] += topSum[lane + stride];
       bottomSum[lane] += bottomSum[lane + stride];
+      sunlitSum[lane] += sunlitSum[lane + stride];
     }
     barrier();
   }
-  if (lane == 0u) {
+  if (lane != 0u) return;
+  if (fromSky) {
     u.ambientTop = topSum[0].rgb / max(topSum[0].w, 1e-6f);
     u.ambientBottom = bottomSum[0].rgb / max(bottomSum[0].w, 1e-6f);
+  }
+  if ((constants.flags & kAmbientGroundLight) != 0u) {
+    // Without the shadow map the ground is taken as all sunlit.
+    const float sunlitShare = fromShadow ? sunlitSum[0].x / max(sunlitSum[0].y, 1.0f) : 1.0f;
+    u.ambientBottom = groundLitBaseRadiance(u.ambientBottom, u.ambientTop, constants.groundAlbedo,
+                                            u.sunIlluminance, u.sunDirection.y, sunlitShare);
   }
 }

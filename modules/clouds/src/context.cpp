@@ -154,6 +154,10 @@ std::string checkInputs(const FrameInputs& in, const CreateInfo& info) {
       return std::string(field) + ": must be finite and not negative";
     }
   }
+  if (in.groundAlbedo && (!finite(*in.groundAlbedo) || !nonNegative(*in.groundAlbedo) ||
+                          glm::any(glm::greaterThan(*in.groundAlbedo, glm::vec3(1.0f))))) {
+    return "FrameInputs.groundAlbedo: must be in [0, 1] per channel";
+  }
   const FrameInputs::AerialPerspective& haze = in.aerialPerspective;
   if (haze.view != VK_NULL_HANDLE) {
     if (haze.slices == 0) return "FrameInputs.aerialPerspective.slices: must be >= 1";

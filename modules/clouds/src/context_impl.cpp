@@ -324,11 +324,12 @@ void Context::Impl::dispatch(const FrameInputs& inputs, const Settings& settings
     report_ = FrameReport{
         {0, 0}, 0, false, temporal.insideLayer, "clear sky: nothing to march", shadowCascadesMade_};
   } else {
+    // dispatchShadowMap() made (or kept) the shadow map before, this frame.
+    const bool shadowMapMade =
+        settings.shadowCascades > 0 && images_.shadowMap && shadowFrame_ == inputs.frameIndex;
     // The terrain's shadow reaches the clouds through the shadow map's terrain channel, so only
-    // with a map made with the terrain (dispatchShadowMap() before, this frame).
-    const bool terrainShadow = inputs.terrain.heightView != VK_NULL_HANDLE &&
-                               settings.shadowCascades > 0 && images_.shadowMap &&
-                               shadowFrame_ == inputs.frameIndex;
+    // with a map made with the terrain.
+    const bool terrainShadow = inputs.terrain.heightView != VK_NULL_HANDLE && shadowMapMade;
     shader::MarchTerrainShadow shadow{};
     if (terrainShadow) {
       // This frame's dispatchShadowMap() placed them for this frame's camera.
@@ -336,7 +337,9 @@ void Context::Impl::dispatch(const FrameInputs& inputs, const Settings& settings
       shadow.terrainTopMetres = inputs.terrain.maxAltitudeMetres;
     }
     recordUniforms(cmd, slot, lastUniforms_, terrainShadow ? &shadow : nullptr);
-    if (inputs.skyView != VK_NULL_HANDLE) recordSkyAmbient(cmd, inputs, slot);
+    if (inputs.skyView != VK_NULL_HANDLE || inputs.groundAlbedo) {
+      recordSkyAmbient(cmd, inputs, settings, shadowMapMade, slot);
+    }
     recordTrace(cmd, inputs, settings, temporal, traceExtent, terrainShadow, slot);
     temporal_.commit(temporal, inputs, settings, traceExtent);
     report_ = FrameReport{traceExtent,          temporal.tileSize,    temporal.useHistory,

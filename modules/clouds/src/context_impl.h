@@ -138,7 +138,8 @@ class Context::Impl {
   // `shadow`: the march's terrain-shadow block, when this frame's march reads it.
   void recordUniforms(VkCommandBuffer cmd, Slot& slot, const shader::CloudUniforms& uniforms,
                       const shader::MarchTerrainShadow* shadow);
-  void recordSkyAmbient(VkCommandBuffer cmd, const FrameInputs& inputs, Slot& slot);
+  void recordSkyAmbient(VkCommandBuffer cmd, const FrameInputs& inputs, const Settings& settings,
+                        bool shadowMapMade, Slot& slot);
   void recordClearSky(VkCommandBuffer cmd, Slot& slot);
   // record_lightning.cpp: this frame's flashes into the slot's block; whether there are any
   // (the reconstruction then makes their glow and the upsample adds it).

@@ -42,18 +42,37 @@ void Context::Impl::recordUniforms(VkCommandBuffer cmd, Slot& slot,
                         VK_ACCESS_2_UNIFORM_READ_BIT | kStorageRead | kStorageWrite);
 }
 
-void Context::Impl::recordSkyAmbient(VkCommandBuffer cmd, const FrameInputs& inputs, Slot& slot) {
+void Context::Impl::recordSkyAmbient(VkCommandBuffer cmd, const FrameInputs& inputs,
+                                     const Settings& settings, bool shadowMapMade, Slot& slot) {
   const auto& fn = device_.fn();
+  const bool hasSky = inputs.skyView != VK_NULL_HANDLE;
+  const bool groundShadow = inputs.groundAlbedo && shadowMapMade;
+  shader::AmbientConstants constants{};
+  constants.groundAlbedo = inputs.groundAlbedo.value_or(glm::vec3(0.0f));
+  constants.flags = (hasSky ? shader::kAmbientFromSkyImage : 0u) |
+                    (inputs.groundAlbedo ? shader::kAmbientGroundLight : 0u) |
+                    (groundShadow ? shader::kAmbientGroundShadow : 0u);
+  constants.shadowCascades = settings.shadowCascades;
+  constants.shadowTexels = settings.shadowMapResolution;
+  // Without a sky image or a shadow map, a placeholder fills the binding the shader skips.
+  const VkImageView placeholder = images_.depthPlaceholder.view();
+  constexpr VkImageLayout kPlaceholderLayout = VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL;
   beginPass(cmd, detail::Pass::SkyAmbient, "clouds: sky ambient");
   detail::SetWriter(device_, slot.skyAmbient)
       .storageBuffer(shader::kSkyAmbientUniforms, slot.uniforms.buffer(),
                      sizeof(shader::CloudUniforms))
-      .sampledImage(shader::kSkyAmbientSky, inputs.skyView, linearSampler_.get(), inputs.skyLayout)
+      .sampledImage(shader::kSkyAmbientSky, hasSky ? inputs.skyView : placeholder,
+                    linearSampler_.get(), hasSky ? inputs.skyLayout : kPlaceholderLayout)
+      .sampledImage(
+          shader::kSkyAmbientShadowMap, groundShadow ? images_.shadowMap.view() : placeholder,
+          clampedLinearSampler_.get(), groundShadow ? VK_IMAGE_LAYOUT_GENERAL : kPlaceholderLayout)
       .commit();
   const detail::ComputeProgram& program = programs_[Program::SkyAmbient];
   fn.vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, program.find());
   fn.vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, program.layout(), 0, 1,
                              &slot.skyAmbient, 0, nullptr);
+  fn.vkCmdPushConstants(cmd, program.layout(), VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof(constants),
+                        &constants);
   fn.vkCmdDispatch(cmd, 1, 1, 1);
   detail::memoryBarrier(device_, cmd, kCompute, kStorageWrite, kCompute,
                         VK_ACCESS_2_UNIFORM_READ_BIT);

@@ -45,6 +45,10 @@ TEST_F(AtmosphereModuleOnDevice, InstallsDrawsTheSkyAndPublishesTheSunThroughIts
   for (int c = 0; c < 3; ++c) EXPECT_NEAR(published[c], expected[c], 1e-6f);
   EXPECT_GT(published.r, published.b) << "a low sun is reddened";
   EXPECT_EQ(transmittance->at(0.0, {0.0, -0.5, 0.0}), glm::vec3(0.0f)) << "set: no sun";
+  // And the ground its sky is made with, for light bounced off it.
+  const auto* ground = world.ctx().tryGet<engine::render::GroundAlbedo>();
+  ASSERT_NE(ground, nullptr);
+  EXPECT_EQ(ground->rgb, atmosphere::Parameters{}.groundAlbedo);
 }
 
 TEST_F(AtmosphereModuleOnDevice, ADeviceItCannotUseMakesItSkipItselfWithAWarning) {

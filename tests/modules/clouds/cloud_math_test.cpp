@@ -238,4 +238,29 @@ TEST(CloudMath, RayJitterIsStratifiedOverRefreshesTilesAndFrames) {
   EXPECT_EQ(rayJitter(uvec2(3u, 1u), 9u, 4u, false, 0u), 0.5f) << "no jitter: the step's middle";
 }
 
+// The light cloud bases get from below (groundLitBaseRadiance()): the ground's radiance over
+// the lower hemisphere's steeper 1 - sin(10 deg) (by solid angle), the horizon's beside it.
+TEST(CloudMath, BasesSeeTheGroundLitBySunAndSkyAndTheHorizonBeside) {
+  const vec3 horizon(9.0f);
+  const vec3 black(0.0f);
+  EXPECT_NEAR(kGroundShareOfLowerHemisphere, 1.0 - std::sin(10.0 * M_PI / 180.0), 1e-6);
+  // A white ground under a uniform sky of radiance L (irradiance pi L) and no sun sends back L.
+  const vec3 underSky = groundLitBaseRadiance(horizon, vec3(2.0f), vec3(1.0f), black, 1.0f, 1.0f);
+  EXPECT_NEAR(underSky.x, 9.0 + (2.0 - 9.0) * kGroundShareOfLowerHemisphere, 1e-5);
+  // The sun overhead on a ground of albedo a: a E / pi, dimmed by the share in the clouds' shade.
+  const vec3 sunlit = groundLitBaseRadiance(black, black, vec3(0.25f), vec3(100.0f), 1.0f, 1.0f);
+  EXPECT_NEAR(sunlit.y, 0.25 * 100.0 / M_PI * kGroundShareOfLowerHemisphere, 1e-4);
+  const vec3 shaded = groundLitBaseRadiance(black, black, vec3(0.25f), vec3(100.0f), 1.0f, 0.4f);
+  EXPECT_NEAR(shaded.y, 0.4 * sunlit.y, 1e-4);
+  // The sun on the ground goes as the sine of its elevation, and none from below the horizon.
+  const vec3 low = groundLitBaseRadiance(black, black, vec3(0.25f), vec3(100.0f), 0.5f, 1.0f);
+  EXPECT_NEAR(low.z, 0.5 * sunlit.z, 1e-4);
+  const vec3 night = groundLitBaseRadiance(horizon, black, vec3(0.25f), vec3(100.0f), -0.3f, 1.0f);
+  EXPECT_NEAR(night.x, 9.0 * (1.0 - kGroundShareOfLowerHemisphere), 1e-5);
+  // A black ground leaves the horizon's share only.
+  const vec3 blackGround =
+      groundLitBaseRadiance(horizon, vec3(2.0f), black, vec3(100.0f), 1.0f, 1.0f);
+  EXPECT_NEAR(blackGround.x, 9.0 * (1.0 - kGroundShareOfLowerHemisphere), 1e-5);
+}
+
 }  // namespace

@@ -9,6 +9,8 @@
 //  - every error has a code.
 #include <gtest/gtest.h>
 
+#include <limits>
+
 #include <glm/gtc/matrix_transform.hpp>
 
 #include "clouds/clouds.h"
@@ -272,6 +274,14 @@ TEST_F(Contract, EveryErrorHasACode) {
     EXPECT_FALSE(context->dispatch(in, {}, &error));
     EXPECT_EQ(error.code, clouds::ErrorCode::InvalidInputs);
     EXPECT_NE(error.message.find("FrameInputs.sunIlluminance"), std::string::npos);
+    for (const glm::vec3 albedo : {glm::vec3(1.5f, 0.2f, 0.2f), glm::vec3(-0.1f),
+                                   glm::vec3(std::numeric_limits<float>::quiet_NaN())}) {
+      in = frame(cmd, kExtent, 0);
+      in.groundAlbedo = albedo;
+      EXPECT_FALSE(context->dispatch(in, {}, &error));
+      EXPECT_EQ(error.code, clouds::ErrorCode::InvalidInputs);
+      EXPECT_NE(error.message.find("FrameInputs.groundAlbedo"), std::string::npos);
+    }
     EXPECT_FALSE(context->dispatch(frame(cmd, kExtent, 0), bad, &error));
     EXPECT_EQ(error.code, clouds::ErrorCode::InvalidSettings);
     ASSERT_TRUE(context->dispatch(frame(cmd, kExtent, 0), {}, &error));

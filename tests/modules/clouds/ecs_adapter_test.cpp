@@ -121,6 +121,17 @@ TEST(CloudsEcsAdapter, TheSunReachesTheLayerThroughTheAirAndTheHostsHazeIsPassed
       << "no haze without the host's";
 }
 
+TEST(CloudsEcsAdapter, TheScenesGroundAlbedoLightsTheBasesFromBelow) {
+  AdapterWorld w;
+  EXPECT_FALSE(clouds::ecs::cloudFrameInputs(w.world, hostFrame()).groundAlbedo)
+      << "no ground known, no ground light";
+  w.world.ctx().emplace<engine::render::GroundAlbedo>(
+      engine::render::GroundAlbedo{glm::vec3(0.1f, 0.2f, 0.3f)});
+  const clouds::FrameInputs in = clouds::ecs::cloudFrameInputs(w.world, hostFrame());
+  ASSERT_TRUE(in.groundAlbedo);
+  EXPECT_EQ(*in.groundAlbedo, glm::vec3(0.1f, 0.2f, 0.3f));
+}
+
 TEST(CloudsEcsAdapter, TheModuleNeedsACloudLayerAndARenderer) {
   clouds::ecs::CloudsModule module;
   engine::ecs::World world;

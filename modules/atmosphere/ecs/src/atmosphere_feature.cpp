@@ -49,7 +49,7 @@ AtmosphereFeature::AtmosphereFeature(engine::ecs::World& world, const RenderDevi
                                          error.message + " (" + errorCodeName(error.code) + ")");
   }
   parameters_ = atmosphereParameters(world_);
-  publishSunTransmittance();
+  publishParameters();
 }
 
 AtmosphereFeature::~AtmosphereFeature() {
@@ -62,8 +62,9 @@ AtmosphereFeature::~AtmosphereFeature() {
   }
 }
 
-void AtmosphereFeature::publishSunTransmittance() {
+void AtmosphereFeature::publishParameters() {
   if (published_ && sameParameters(*published_, parameters_)) return;
+  world_.ctx().emplaceOrReplace<GroundAlbedo>(GroundAlbedo{parameters_.groundAlbedo});
   world_.ctx().emplaceOrReplace<SunTransmittance>(
       SunTransmittance{[parameters = parameters_](double altitude, const glm::dvec3& sun) {
         return atmosphere::sunTransmittance(parameters, altitude, sun);
@@ -87,7 +88,7 @@ bool AtmosphereFeature::prepare(VkExtent2D extent, std::uint64_t frameIndex) {
   if (frameIndex >= framesInFlight_) publishMeasurements(frameIndex - framesInFlight_);
   parameters_ = atmosphereParameters(world_);
   settings_ = atmosphereSettings(world_);
-  publishSunTransmittance();
+  publishParameters();
   atmosphere::Error error;
   prepared_ = context_->prepare(parameters_, settings_, extent, &error);
   if (!prepared_) {

@@ -39,7 +39,9 @@ class AtmosphereFeature final : public engine::render::RenderFeature {
 
  private:
   void publishMeasurements(std::uint64_t completedFrame);
-  void publishSunTransmittance();
+  // What the world reads of the air's parameters: the SunTransmittance they integrate and the
+  // ground's albedo (engine/render/scene_components.h), when they change.
+  void publishParameters();
   // `shadowView` and `shadowParameters`: the frame's cloud shadow map, if any.
   void dispatch(VkCommandBuffer cmd, VkExtent2D extent, std::uint64_t frameIndex,
                 VkImageView shadowView,
@@ -52,7 +54,7 @@ class AtmosphereFeature final : public engine::render::RenderFeature {
   std::unique_ptr<atmosphere::Context> context_;
   atmosphere::Parameters parameters_;  // this frame's, decided in prepare()
   atmosphere::Settings settings_;
-  std::optional<atmosphere::Parameters> published_;  // what SunTransmittance integrates
+  std::optional<atmosphere::Parameters> published_;  // what publishParameters() gave
   atmosphere::Outputs imported_;                     // the outputs the graph imported
   // The outputs the graph may import: none after a failed prepare(), whose outputs may be
   // missing or not yet in their layout.

@@ -98,6 +98,9 @@ clouds::FrameInputs cloudFrameInputs(engine::ecs::World& world, const HostFrame&
     in.ambientTop = sky->zenith;
     in.ambientBottom = glm::mix(sky->horizon, sky->ground, 0.5f);
   }
+  if (const auto* ground = world.ctx().tryGet<render::GroundAlbedo>()) {
+    in.groundAlbedo = ground->rgb;
+  }
   in.skyView = host.skyRadianceView;
   in.skyLayout = VK_IMAGE_LAYOUT_GENERAL;
   if (host.aerialPerspectiveView != VK_NULL_HANDLE) {

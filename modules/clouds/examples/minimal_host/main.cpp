@@ -283,6 +283,9 @@ glm::mat4 projectionMatrix(const Camera& c, float aspect) {
   return p;
 }
 
+// The ground plane's colour, and the albedo the clouds are told lights their bases from below.
+constexpr glm::vec3 kGrassAlbedo(0.12f, 0.16f, 0.08f);
+
 struct Box {
   glm::vec3 min;
   glm::vec3 max;
@@ -320,7 +323,7 @@ void buildScene(const Camera& camera, VkExtent2D extent, const glm::vec3& sun,
       const glm::vec3 dir = glm::normalize(viewToWorld * (glm::vec3(v) / v.w));
       float t = dir.y < 0.0f ? -camera.position.y / dir.y : -1.0f;
       glm::vec3 normal(0, 1, 0);
-      glm::vec3 albedo(0.12f, 0.16f, 0.08f);
+      glm::vec3 albedo = kGrassAlbedo;
       for (const Box& box : boxes) {
         const float tb = hitBox(camera.position, dir, box);
         if (tb > 0.0f && (t < 0.0f || tb < t)) {
@@ -522,6 +525,7 @@ int main(int argc, char** argv) {
     inputs.sunIlluminance = glm::vec3(12.0f, 11.5f, 10.5f);
     inputs.ambientTop = glm::vec3(0.45f, 0.6f, 0.95f);
     inputs.ambientBottom = glm::vec3(0.3f, 0.32f, 0.35f);
+    inputs.groundAlbedo = kGrassAlbedo;  // cloud bases are lit from below by the grass
     inputs.timeSeconds = frame / 30.0;
     inputs.frameIndex = static_cast<std::uint64_t>(frame);
 
@@ -542,11 +546,13 @@ int main(int argc, char** argv) {
       mapRegion.imageExtent = {shadowExtent.width, shadowExtent.height, 1};
       vkCmdCopyImageToBuffer(cmd, map, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, shadowReadback.buffer,
                              1, &mapRegion);
-      // Back to GENERAL, where the module keeps its outputs between frames.
+      // Back to GENERAL, where the module keeps its outputs between frames, visible to how it
+      // reads them (as storage and sampled images) and writes them.
       imageBarrier(cmd, map, VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
                    VK_IMAGE_LAYOUT_GENERAL, VK_PIPELINE_STAGE_2_TRANSFER_BIT,
                    VK_ACCESS_2_TRANSFER_READ_BIT, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
-                   VK_ACCESS_2_SHADER_STORAGE_READ_BIT | VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT);
+                   VK_ACCESS_2_SHADER_STORAGE_READ_BIT | VK_ACCESS_2_SHADER_SAMPLED_READ_BIT |
+                       VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT);
       submitAndWait();
       GroundShadow shadow;
       shadow.width = shadowExtent.width;

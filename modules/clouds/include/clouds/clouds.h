@@ -41,6 +41,7 @@
 #include <cstdint>
 #include <glm/glm.hpp>
 #include <memory>
+#include <optional>
 #include <span>
 #include <string>
 #include <string_view>
@@ -108,8 +109,8 @@ struct CreateInfo {
 // recording order: "noise" (its first frame only), "weather" (frames that make or resample a
 // weather map), "shadow map" (dispatchShadowMap() with cascades due), "terrain shadow" (the
 // same, with FrameInputs::terrain), "sky ambient" (with
-// FrameInputs::skyView), then either "clear sky" (nothing to march) or "scene distance",
-// "march", "reconstruct", "upsample".
+// FrameInputs::skyView or groundAlbedo), then either "clear sky" (nothing to march) or "scene
+// distance", "march", "reconstruct", "upsample".
 struct PassTiming {
   const char* name = "";  // static storage: valid for the life of the program
   double milliseconds = 0.0;
@@ -401,10 +402,20 @@ struct FrameInputs {
   glm::vec3 sunIlluminance{10.0f};           // illuminance of the sun at the clouds, RGB
   glm::vec3 ambientTop{1.0f};                // sky radiance lighting cloud tops, RGB per steradian
   glm::vec3 ambientBottom{0.5f};             // radiance lighting cloud bases, RGB per steradian
+                                             //   (with groundAlbedo: the horizon's radiance)
   // Optional sky radiance as an equirectangular image (u = azimuth, v = 0 at the zenith),
-  // sampled in `skyLayout`; when set it replaces ambientTop/ambientBottom.
+  // sampled in `skyLayout`; when set it replaces ambientTop/ambientBottom (ambientBottom by
+  // the mean of the band up to 10 degrees above the horizon).
   VkImageView skyView = VK_NULL_HANDLE;
   VkImageLayout skyLayout = VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL;
+  // Optional: the ground's Lambertian albedo, [0, 1] per channel. With it cloud bases are lit
+  // from below by the ground, as they are outdoors: the ground's radiance, albedo / pi x (the
+  // sun's illuminance x the sine of its elevation x the share of the ground out of the clouds'
+  // shadow + pi x ambientTop), over the lower hemisphere bar its 10 degrees nearest the
+  // horizon, which keep the horizon's radiance (ambientBottom). The shadowed share is the mean
+  // sun transmittance of the shadow map's finest cascade when dispatchShadowMap() ran this
+  // frame, else none (the ground all sunlit). Without it ambientBottom alone lights the bases.
+  std::optional<glm::vec3> groundAlbedo;
 
   // Optional aerial perspective: the haze between the camera and every distance, as a 3D
   // volume laid out as vkfx/aerial_perspective.glsl says (the atmosphere module's

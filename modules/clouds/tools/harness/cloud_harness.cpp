@@ -153,6 +153,7 @@ clouds::FrameInputs CloudHarness::makeInputs(const CloudView& view, VkExtent2D e
   in.sunIlluminance = view.sunIlluminance;
   in.ambientTop = view.ambientTop;
   in.ambientBottom = view.ambientBottom;
+  in.groundAlbedo = view.groundAlbedo;
   in.timeSeconds = view.timeSeconds;
   in.weatherView = view.weatherView;
   in.skyView = view.skyView;
@@ -204,8 +205,9 @@ std::string CloudHarness::tryRender(const CloudView& view, const clouds::Setting
   device_.immediateSubmit([&](VkCommandBuffer cmd) {
     lastInputs_ = makeInputs(view, extent, cmd);
     const std::uint32_t scope = timer_->begin(cmd, "clouds");
-    // The terrain's shadow reaches the clouds through this frame's shadow map.
-    if (view.terrain.heightView != VK_NULL_HANDLE) {
+    // The terrain's shadow reaches the clouds through this frame's shadow map, and so does the
+    // clouds' shade on the ground that lights their bases.
+    if (view.terrain.heightView != VK_NULL_HANDLE || view.groundAlbedo) {
       ok = context_->dispatchShadowMap(lastInputs_, settings, &error);
     }
     ok = ok && context_->dispatch(lastInputs_, settings, &error);

@@ -35,6 +35,9 @@ struct CloudView {
   glm::vec3 sunIlluminance{10.0f, 9.6f, 9.0f};
   glm::vec3 ambientTop{0.35f, 0.5f, 0.85f};
   glm::vec3 ambientBottom{0.25f, 0.27f, 0.3f};
+  // Optional ground albedo (FrameInputs::groundAlbedo); with it render() also records the shadow
+  // map before each frame, whose shade on the ground dims the light cloud bases get from it.
+  std::optional<glm::vec3> groundAlbedo;
   bool groundDepth = false;  // a flat ground at y = 0 in the host depth buffer
   double timeSeconds = 0.0;
   // Optional host images (sampled, SHADER_READ_ONLY_OPTIMAL): painted weather, sky radiance.

@@ -73,6 +73,24 @@ const std::vector<PhaseVariant>& phaseVariants() {
   return variants;
 }
 
+// The light that reaches cloud bases from the ground (FrameInputs::groundAlbedo), varied.
+struct GroundVariant {
+  const char* name;
+  std::function<void(clouds::tools::CloudView&, clouds::Settings&)> apply;
+};
+
+const std::vector<GroundVariant>& groundVariants() {
+  static const std::vector<GroundVariant> variants = {
+      {"no ground: the horizon lights bases",
+       [](clouds::tools::CloudView& v, clouds::Settings&) { v.groundAlbedo.reset(); }},
+      {"ground out of the clouds' shadow",
+       [](clouds::tools::CloudView&, clouds::Settings& s) { s.shadowCascades = 0; }},
+      {"ground albedo 0.1 (grass, rock)",
+       [](clouds::tools::CloudView& v, clouds::Settings&) { v.groundAlbedo = glm::vec3(0.1f); }},
+  };
+  return variants;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -123,6 +141,16 @@ int main(int argc, char** argv) {
           "%.1f%%, towards the sun %.1f%%\n",
           term.name, l.flankLuminance, l.baseLuminance, l.flankToBase,
           100.0 * clouds::tools::meanRelativeChangeOverClouds(off, full), 100.0 * towardsTheSun);
+    }
+    std::printf("the ground beneath (albedo 0.3, in the clouds' shadow, by default):\n");
+    for (const GroundVariant& variant : groundVariants()) {
+      clouds::tools::CloudView view = scene.view;
+      clouds::Settings s = look;
+      variant.apply(view, s);
+      const CloudFrame frame = harness.renderAveraged(view, s, extent, clouds::tools::kLookFrames);
+      const CloudLook l = clouds::tools::measureLook(frame, view, s);
+      std::printf("  %-36s flank %.2f, base %.2f: flank/base %.2f\n", variant.name,
+                  l.flankLuminance, l.baseLuminance, l.flankToBase);
     }
     // Forward scattering towards the sun: the mix's forward lobe and the silver lining.
     const clouds::tools::NearTheSun isotropic = clouds::tools::renderNearTheSun(

@@ -69,6 +69,13 @@ struct SkyLight {
   glm::vec3 ground{1.2f, 1.2f, 1.0f};
 };
 
+// Context singleton: the Lambertian albedo of the scene's ground at large (RGB, [0, 1]), for
+// light bounced off it (cloud bases lit from below). The atmosphere module publishes the one
+// its sky is made with; absent, effects do without the ground's light.
+struct GroundAlbedo {
+  glm::vec3 rgb{0.3f};
+};
+
 // Context singleton: the scene's ground as a heightfield on the GPU, for effects that need its
 // shape rather than its triangles (the clouds' terrain shadow). Published by whoever owns the
 // terrain, for as long as the image lives; absent when nothing should be shadowed by the
