@@ -21,6 +21,7 @@
 #include "game/terrain_height.h"
 #include "game/terrain_placement.h"
 #include "game/time_of_day.h"
+#include "render/terrain_albedo.h"
 #include "render/terrain_renderer.h"
 
 namespace {
@@ -288,6 +289,33 @@ TEST(TerrainMaterial, RockOnSteepGroundSnowHighUp) {
   EXPECT_TRUE(near(terrainAlbedo(grass, normalAt(60.0f), 950.0f, calm, m), glm::vec3(m.rock)))
       << "no snow on a cliff";
   EXPECT_NEAR(sample::terrainMaterialsFor(mesh, 1234.0).snow.w, 1234.0f, 1e-3f);
+}
+
+// The ground's albedo at large (meanTerrainAlbedo()): what the materials paint, by area.
+TEST(TerrainMaterial, TheGroundsMeanAlbedoIsWhatItsMaterialsPaintByArea) {
+  const glm::vec3 grass(0.05f, 0.08f, 0.03f);
+  engine::assets::MeshData mesh = ramp();  // flat normals, 0 to 1000 m along x
+  for (glm::vec4& colour : mesh.colors) colour = glm::vec4(grass, 1.0f);
+  const auto near = [](glm::vec3 a, glm::vec3 b) { return glm::length(a - b) < 1e-5f; };
+  EXPECT_TRUE(
+      near(sample::meanTerrainAlbedo(mesh, sample::terrainMaterialsFor(mesh, 5000.0)), grass))
+      << "all grass below a snowline above it";
+  // Snow from 700 m (half at 700, whole from 760): 30% of the ramp's area by its triangles.
+  const engine::shaders::TerrainMaterials m = sample::terrainMaterialsFor(mesh, 700.0);
+  EXPECT_TRUE(near(sample::meanTerrainAlbedo(mesh, m), glm::mix(grass, glm::vec3(m.snow), 0.3f)));
+  // Steep everywhere: rock.
+  for (glm::vec3& normal : mesh.normals) normal = glm::normalize(glm::vec3(1.0f, 0.5f, 0.0f));
+  EXPECT_TRUE(near(sample::meanTerrainAlbedo(mesh, sample::terrainMaterialsFor(mesh, 5000.0)),
+                   glm::vec3(m.rock)));
+  // Two triangles of areas 1 and 3: weighted by area, not counted.
+  engine::assets::MeshData two;
+  two.positions = {{0, 0, 0}, {1, 0, 0}, {0, 0, 2}, {10, 0, 0}, {13, 0, 0}, {10, 0, 2}};
+  two.normals.assign(6, glm::vec3(0, 1, 0));
+  two.colors = {glm::vec4(1, 0, 0, 1), glm::vec4(1, 0, 0, 1), glm::vec4(1, 0, 0, 1),
+                glm::vec4(0, 0, 1, 1), glm::vec4(0, 0, 1, 1), glm::vec4(0, 0, 1, 1)};
+  two.indices = {0, 2, 1, 3, 5, 4};
+  EXPECT_TRUE(near(sample::meanTerrainAlbedo(two, sample::terrainMaterialsFor(two, 5000.0)),
+                   glm::vec3(0.25f, 0.0f, 0.75f)));
 }
 
 // The detail normal: finer than the mesh's 150 m (points 5 m apart differ), a few degrees to a

@@ -5,8 +5,11 @@
 #include <filesystem>
 #include <fstream>
 
+#include "atmosphere/ecs/atmosphere_components.h"
 #include "engine/core/error.h"
+#include "engine/ecs/app.h"
 #include "scene/scene_description.h"
+#include "scene/scene_loader.h"
 
 namespace {
 
@@ -67,6 +70,35 @@ TEST(Scenes, ValuesArriveInTheDescription) {
   EXPECT_FALSE(s.fog.has_value());
 }
 
+// A scene that does not give its ground's albedo takes its terrain's (meanTerrainAlbedo()),
+// for the sky and the clouds' bases alike; one that gives it keeps it.
+TEST(Scenes, TheAirSeesTheTerrainsGroundUnlessTheSceneGivesOne) {
+  auto mesh = std::make_shared<engine::assets::MeshData>();
+  mesh->positions = {{0, 0, 0}, {100, 0, 0}, {0, 0, 100}};
+  mesh->normals.assign(3, glm::vec3(0, 1, 0));
+  mesh->colors.assign(3, glm::vec4(0.05f, 0.08f, 0.03f, 1.0f));
+  mesh->uvs.assign(3, glm::vec2(0.0f));
+  mesh->indices = {0, 2, 1};
+  mesh->boundsMin = {0, 0, 0};
+  mesh->boundsMax = {100, 0, 100};
+  const sample::LoadedTerrain terrain{"flat.gltf", mesh};
+  const auto groundOf = [&](const char* atmosphere) {
+    // The snowline above the flat ground: the mesh's own default would lie on it.
+    const std::string json = R"({"name": "g", "camera": {"position": [0, 10, 0]},
+        "terrain": {"gltf": "default", "snowlineMetres": 3000}, "atmosphere": )";
+    const sample::SceneDescription scene =
+        loadSceneDescription(writeScene("ground.json", json + atmosphere + "}"));
+    engine::ecs::App app;
+    sample::populateScene(app, scene, terrain);
+    glm::vec3 ground(-1.0f);
+    app.world().view<const atmosphere::ecs::Atmosphere>().each(
+        [&](const atmosphere::ecs::Atmosphere& a) { ground = a.parameters.groundAlbedo; });
+    return ground;
+  };
+  EXPECT_EQ(groundOf("{}"), glm::vec3(0.05f, 0.08f, 0.03f)) << "the terrain's grass";
+  EXPECT_EQ(groundOf(R"({"groundAlbedo": [0.2, 0.2, 0.2]})"), glm::vec3(0.2f));
+}
+
 TEST(Scenes, AtmosphereFogAndExposureArriveInTheDescription) {
   const sample::SceneDescription s = loadSceneDescription(writeScene("air.json", R"({
     "name": "a", "camera": {"position": [0, 10, 0], "atmosphereQuality": "high"},
@@ -80,6 +112,7 @@ TEST(Scenes, AtmosphereFogAndExposureArriveInTheDescription) {
       << "the hazy preset";
   EXPECT_FLOAT_EQ(s.atmosphere->parameters.miePhaseG, 0.7f) << "an override over the preset";
   EXPECT_EQ(s.atmosphere->parameters.groundAlbedo, glm::vec3(0.1f, 0.2f, 0.3f));
+  EXPECT_TRUE(s.atmosphere->groundAlbedoGiven);
   EXPECT_EQ(s.camera.atmosphereQuality, atmosphere::Quality::High);
   EXPECT_FALSE(s.exposure.automatic);
   EXPECT_DOUBLE_EQ(s.exposure.ev100, 12.5);

@@ -142,6 +142,7 @@ AtmosphereDescription readAtmosphere(const JsonReader& r) {
       float(r.number("mieScaleHeightMetres", 10.0, 1e6, p.mieScaleHeightMetres));
   p.miePhaseG = float(r.number("miePhaseG", -0.99, 0.99, p.miePhaseG));
   p.ozoneAbsorptionPerMetre = coefficients(r, "ozoneAbsorptionPerMetre", p.ozoneAbsorptionPerMetre);
+  a.groundAlbedoGiven = r.has("groundAlbedo");
   p.groundAlbedo = glm::vec3(r.vec3("groundAlbedo", 0.0, 1.0, glm::dvec3(p.groundAlbedo)));
   r.finish();
   // Cross-field rules (extinction at least scattering) are the module's; report them here too.

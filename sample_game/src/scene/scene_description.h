@@ -55,6 +55,9 @@ struct CloudDescription {
 // any of its parameters overridden.
 struct AtmosphereDescription {
   atmosphere::Parameters parameters;
+  // Whether the scene gives the ground's albedo; if not, a scene with terrain takes the
+  // terrain's mean (meanTerrainAlbedo()), so the sky and the clouds see the ground it shows.
+  bool groundAlbedoGiven = false;
 };
 
 // The cheap alternative to an atmosphere: the renderer's gradient sky and exponential fog.

@@ -1,6 +1,7 @@
 #include "scene/scene_loader.h"
 
 #include <cmath>
+#include <cstdio>
 
 #include "atmosphere/ecs/atmosphere_components.h"
 #include "atmosphere/ecs/atmosphere_module.h"
@@ -19,6 +20,8 @@
 #include "game/terrain_height.h"
 #include "game/terrain_placement.h"
 #include "game/time_of_day.h"
+#include "render/terrain_albedo.h"
+#include "render/terrain_renderer.h"
 
 namespace sample {
 
@@ -108,8 +111,21 @@ void populateScene(ecs::App& app, const SceneDescription& scene,
 
   // The air, as data; the atmosphere module installs only when this exists.
   if (scene.atmosphere) {
-    world.emplace<atmosphere::ecs::Atmosphere>(
-        world.create(), atmosphere::ecs::Atmosphere{scene.atmosphere->parameters});
+    atmosphere::Parameters air = scene.atmosphere->parameters;
+    // The ground under the air (its light bounced into the sky and onto cloud bases) is the
+    // terrain the scene shows, unless the scene says otherwise.
+    if (terrain && !scene.atmosphere->groundAlbedoGiven) {
+      air.groundAlbedo = meanTerrainAlbedo(
+          *terrain->mesh,
+          terrainMaterialsFor(*terrain->mesh,
+                              scene.terrain ? scene.terrain->snowlineMetres : std::nullopt));
+      char albedo[64];
+      std::snprintf(albedo, sizeof(albedo), "%.3f %.3f %.3f", double(air.groundAlbedo.r),
+                    double(air.groundAlbedo.g), double(air.groundAlbedo.b));
+      engine::log::info(std::string("atmosphere: the ground's albedo, from the terrain: ") +
+                        albedo);
+    }
+    world.emplace<atmosphere::ecs::Atmosphere>(world.create(), atmosphere::ecs::Atmosphere{air});
   }
 
   // The clouds, as data; the module below installs only when this exists.

@@ -85,12 +85,13 @@ LookScene noonCumulus() {
   view.sunAzimuthDegrees = 180.0;
   // Light in physical units (kilolux, kcd/m^2) as the sample's Earth atmosphere gives it for
   // that sun: the sun's illuminance at the middle of the layer, the zenith sky's radiance
-  // above, the horizon's beside, and below the ground of the atmosphere's albedo (0.3), lit by
-  // the sun where the clouds' shadow map says and by the sky (FrameInputs::groundAlbedo).
+  // above, the horizon's beside, and below the ground (FrameInputs::groundAlbedo) of the
+  // sample terrain's mean albedo (the sample logs it), lit by the sun where the clouds' shadow
+  // map says and by the sky.
   view.sunIlluminance = {121.3f, 113.5f, 103.7f};
   view.ambientTop = {0.86f, 1.83f, 4.30f};
   view.ambientBottom = {7.76f, 9.23f, 11.27f};
-  view.groundAlbedo = glm::vec3(0.3f);
+  view.groundAlbedo = glm::vec3(0.095f, 0.115f, 0.076f);
   view.timeSeconds = 5.0;
   clouds::Settings& s = scene.settings;  // cumulus_noon.json's layer
   s.layerBottomMetres = 1600.0f;

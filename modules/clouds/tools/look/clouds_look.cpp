@@ -85,8 +85,8 @@ const std::vector<GroundVariant>& groundVariants() {
        [](clouds::tools::CloudView& v, clouds::Settings&) { v.groundAlbedo.reset(); }},
       {"ground out of the clouds' shadow",
        [](clouds::tools::CloudView&, clouds::Settings& s) { s.shadowCascades = 0; }},
-      {"ground albedo 0.1 (grass, rock)",
-       [](clouds::tools::CloudView& v, clouds::Settings&) { v.groundAlbedo = glm::vec3(0.1f); }},
+      {"ground albedo 0.3 (Earth's mean)",
+       [](clouds::tools::CloudView& v, clouds::Settings&) { v.groundAlbedo = glm::vec3(0.3f); }},
   };
   return variants;
 }
@@ -142,7 +142,7 @@ int main(int argc, char** argv) {
           term.name, l.flankLuminance, l.baseLuminance, l.flankToBase,
           100.0 * clouds::tools::meanRelativeChangeOverClouds(off, full), 100.0 * towardsTheSun);
     }
-    std::printf("the ground beneath (albedo 0.3, in the clouds' shadow, by default):\n");
+    std::printf("the ground beneath (the sample terrain's albedo, in the clouds' shadow):\n");
     for (const GroundVariant& variant : groundVariants()) {
       clouds::tools::CloudView view = scene.view;
       clouds::Settings s = look;
