@@ -491,6 +491,7 @@ CLOUDS_ASSERT_OFFSET(CloudUniforms, phaseNormaliserInverseLow, 608);
 CLOUDS_ASSERT_OFFSET(CloudUniforms, phaseNormaliserInverseHigh, 624);
 static_assert(sizeof(clouds::shader::CloudUniforms) == 640);
 static_assert(sizeof(clouds::shader::NoiseConstants) == 16);
+static_assert(sizeof(clouds::shader::AmbientConstants) == 32);
 static_assert(sizeof(clouds::shader::WeatherConstants) == 16);
 static_assert(sizeof(clouds::shader::MaximaConstants) == 16);
 static_assert(sizeof(clouds::shader::CompositeConstants) == 16);

@@ -123,13 +123,19 @@ TEST(CloudsEcsAdapter, TheSunReachesTheLayerThroughTheAirAndTheHostsHazeIsPassed
 
 TEST(CloudsEcsAdapter, TheScenesGroundAlbedoLightsTheBasesFromBelow) {
   AdapterWorld w;
-  EXPECT_FALSE(clouds::ecs::cloudFrameInputs(w.world, hostFrame()).groundAlbedo)
-      << "no ground known, no ground light";
+  engine::render::SkyLight sky;
+  sky.horizon = glm::vec3(8.0f);
+  sky.ground = glm::vec3(2.0f);
+  w.world.ctx().emplaceOrReplace<engine::render::SkyLight>(sky);
+  const clouds::FrameInputs without = clouds::ecs::cloudFrameInputs(w.world, hostFrame());
+  EXPECT_FALSE(without.groundAlbedo) << "no ground known, no ground light";
+  EXPECT_EQ(without.ambientBottom, glm::vec3(5.0f)) << "the horizon's and the ground's radiance";
   w.world.ctx().emplace<engine::render::GroundAlbedo>(
       engine::render::GroundAlbedo{glm::vec3(0.1f, 0.2f, 0.3f)});
   const clouds::FrameInputs in = clouds::ecs::cloudFrameInputs(w.world, hostFrame());
   ASSERT_TRUE(in.groundAlbedo);
   EXPECT_EQ(*in.groundAlbedo, glm::vec3(0.1f, 0.2f, 0.3f));
+  EXPECT_EQ(in.ambientBottom, glm::vec3(8.0f)) << "the horizon's: the module adds the ground";
 }
 
 TEST(CloudsEcsAdapter, TheModuleNeedsACloudLayerAndARenderer) {

@@ -142,7 +142,7 @@ TEST_F(CloudMarch, AThickSunlitSlabReflectsMostOfTheSun) {
   EXPECT_LT(sum / geometries, 1.0);
 }
 
-TEST_F(CloudMarch, SkyTextureAmbientKeepsTheFurnaceWhite) {
+TEST_F(CloudMarch, SkyTextureAmbientAndAWhiteGroundKeepTheFurnaceWhite) {
   // A uniform sky radiance of 1 replaces the ambient colours (set to 0 here): the furnace still
   // composites to 1, so the sky pass averaged the texture correctly.
   engine::gfx::Image sky(
@@ -170,6 +170,31 @@ TEST_F(CloudMarch, SkyTextureAmbientKeepsTheFurnaceWhite) {
     ASSERT_NEAR(p.r + p.a, 1.0f, 2e-3f);
   }
   EXPECT_GT(opacity, 0.5f) << "the view must contain cloud for the check to mean anything";
+
+  // A white ground under that sky, with no sun, sends back the sky's radiance: bases lit by it
+  // (FrameInputs::groundAlbedo) keep the furnace white, from the sky image's horizon band and
+  // hemisphere as from the same light given as inputs. A grey ground darkens it.
+  view.sunIlluminance = glm::vec3(0.0f);
+  CloudView given = view;
+  given.skyView = VK_NULL_HANDLE;
+  given.ambientTop = glm::vec3(1.0f);
+  given.ambientBottom = glm::vec3(1.0f);
+  // Each frame whole, so that none reads the history of another's light.
+  const clouds::Settings whole = clouds::tools::singleFrame(furnaceSettings(1.0f, 128));
+  for (const CloudView& lit : {view, given}) {
+    CloudView whiteGround = lit;
+    whiteGround.groundAlbedo = glm::vec3(1.0f);
+    for (const glm::vec4& p : harness().render(whiteGround, whole, {48, 27}).radiance) {
+      ASSERT_NEAR(p.r + p.a, 1.0f, 2e-3f) << (lit.skyView ? "sky image" : "inputs");
+    }
+    CloudView greyGround = lit;
+    greyGround.groundAlbedo = glm::vec3(0.5f);
+    float darkest = 1.0f;
+    for (const glm::vec4& p : harness().render(greyGround, whole, {48, 27}).radiance) {
+      darkest = std::min(darkest, p.r + p.a);
+    }
+    EXPECT_LT(darkest, 0.97f) << (lit.skyView ? "sky image" : "inputs");
+  }
 }
 
 struct CanonicalView {

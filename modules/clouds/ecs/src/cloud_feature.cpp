@@ -247,7 +247,8 @@ SceneTextures CloudFeature::addPasses(FrameGraph& graph, const SceneTextures& sc
         if (scene.aerialPerspective.valid()) {
           d.aerialPerspective = builder.read(scene.aerialPerspective, Access::SampledReadGeneral);
         }
-        // The march reads the map's terrain channel (mountains shade the clouds).
+        // The march reads the map's terrain channel (mountains shade the clouds), the ambient
+        // pass its mean (the clouds' shade on the ground that lights their bases).
         if (scene.cloudShadow.valid()) builder.read(scene.cloudShadow, Access::SampledReadGeneral);
         d.radiance = builder.write(radiance, Access::StorageWrite);
         d.depth = builder.write(depth, Access::StorageWrite);

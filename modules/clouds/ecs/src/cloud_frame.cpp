@@ -94,12 +94,13 @@ clouds::FrameInputs cloudFrameInputs(engine::ecs::World& world, const HostFrame&
     in.sunIlluminance = render::sunIlluminanceAt(sun, transmittance, layerMiddle);
     in.aerialPerspective.radianceScale = sun.illuminance;
   });
-  if (const auto* sky = world.ctx().tryGet<render::SkyLight>()) {
-    in.ambientTop = sky->zenith;
-    in.ambientBottom = glm::mix(sky->horizon, sky->ground, 0.5f);
-  }
   if (const auto* ground = world.ctx().tryGet<render::GroundAlbedo>()) {
     in.groundAlbedo = ground->rgb;
+  }
+  if (const auto* sky = world.ctx().tryGet<render::SkyLight>()) {
+    in.ambientTop = sky->zenith;
+    // With the ground's albedo the module adds the ground's light itself: the horizon alone.
+    in.ambientBottom = in.groundAlbedo ? sky->horizon : glm::mix(sky->horizon, sky->ground, 0.5f);
   }
   in.skyView = host.skyRadianceView;
   in.skyLayout = VK_IMAGE_LAYOUT_GENERAL;

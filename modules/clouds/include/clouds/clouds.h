@@ -291,6 +291,7 @@ struct Settings {
   // at a time (shadowCascadesPerFrame is not used) and a frame that must remake cascades at
   // once abandons it.
   std::uint32_t shadowCascades = 4;          // [0, 4] 0: no shadow map, no pass, no memory
+                                             //   (and bases see an unshaded ground)
   std::uint32_t shadowMapResolution = 128;   // [16, 1024] texels per cascade side
   float shadowNearSideMetres = 10000.0f;     // [500, 1e6] side of the finest cascade
   float shadowCascadeRatio = 3.0f;           // [1.5, 8] side of a cascade over the one before
@@ -412,9 +413,11 @@ struct FrameInputs {
   // from below by the ground, as they are outdoors: the ground's radiance, albedo / pi x (the
   // sun's illuminance x the sine of its elevation x the share of the ground out of the clouds'
   // shadow + pi x ambientTop), over the lower hemisphere bar its 10 degrees nearest the
-  // horizon, which keep the horizon's radiance (ambientBottom). The shadowed share is the mean
-  // sun transmittance of the shadow map's finest cascade when dispatchShadowMap() ran this
-  // frame, else none (the ground all sunlit). Without it ambientBottom alone lights the bases.
+  // horizon, which keep the horizon's radiance (ambientBottom). The ground's sunlit share is
+  // the mean sun transmittance of the shadow map's finest cascade when dispatchShadowMap() ran
+  // this frame, else 1. Approximations: the sun on the ground is sunIlluminance (the sun at the
+  // clouds), the sky's irradiance pi x ambientTop; ambientStrength scales the result with the
+  // rest of the ambient. Without groundAlbedo ambientBottom alone lights the bases.
   std::optional<glm::vec3> groundAlbedo;
 
   // Optional aerial perspective: the haze between the camera and every distance, as a 3D
@@ -557,7 +560,10 @@ class Context {
 
   // Records this frame's work (its first frame also records the noise generation). Creates
   // and allocates nothing. Returns false and fills `error` (InvalidInputs, InvalidSettings,
-  // NotPrepared), naming the field; nothing is recorded then.
+  // NotPrepared), naming the field; nothing is recorded then. After this frame's
+  // dispatchShadowMap() it samples Outputs::shadowMap too (the terrain's shadow, the ground's
+  // shade): a host that takes the map out of GENERAL in between returns it there with its
+  // transition visible to compute-shader sampled reads.
   bool dispatch(const FrameInputs& inputs, const Settings& settings, Error* error);
 
   // Records this frame's cloud shadow map (Settings::shadowCascades > 0; with 0 it records

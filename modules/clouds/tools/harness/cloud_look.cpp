@@ -83,14 +83,15 @@ LookScene noonCumulus() {
   // The sun of cumulus_noon.json at 12:00: 70 degrees up, behind the camera.
   view.sunElevationDegrees = 70.0;
   view.sunAzimuthDegrees = 180.0;
-  // Light in physical units (kilolux, kcd/m^2) as the sample's Earth atmosphere gives it for
-  // that sun: the sun's illuminance at the middle of the layer, the zenith sky's radiance
-  // above, the horizon's beside, and below the ground (FrameInputs::groundAlbedo) of the
+  // Light in physical units (kilolux, kcd/m^2) as the sample's Earth atmosphere over its
+  // terrain gives it for that sun (engine::render::SkyLight, measured 2026-11-25): the sun's
+  // illuminance at the middle of the layer, the zenith sky's radiance above, the band up to 10
+  // degrees above the horizon beside, and below the ground (FrameInputs::groundAlbedo) of the
   // sample terrain's mean albedo (the sample logs it), lit by the sun where the clouds' shadow
   // map says and by the sky.
   view.sunIlluminance = {121.3f, 113.5f, 103.7f};
-  view.ambientTop = {0.86f, 1.83f, 4.30f};
-  view.ambientBottom = {7.76f, 9.23f, 11.27f};
+  view.ambientTop = {0.71f, 1.56f, 3.66f};
+  view.ambientBottom = {3.53f, 6.58f, 10.24f};
   view.groundAlbedo = glm::vec3(0.095f, 0.115f, 0.076f);
   view.timeSeconds = 5.0;
   clouds::Settings& s = scene.settings;  // cumulus_noon.json's layer
