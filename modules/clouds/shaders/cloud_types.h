@@ -290,8 +290,8 @@ struct AmbientConstants {
   uint flags;           // kAmbient* bits
   uint shadowCascades;  // cascades side by side in the shadow map (cascade 0 is read)
   uint shadowTexels;    // texels per cascade side
+  uint padding0;
   uint padding1;
-  uint padding2;
 };
 
 // Push constants of the noise generators.

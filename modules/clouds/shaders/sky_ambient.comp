@@ -16,7 +16,8 @@
 layout(local_size_x = kSkyAmbientLanes) in;
 layout(binding = kSkyAmbientUniforms, std430) buffer Uniforms { CloudUniforms u; };
 layout(binding = kSkyAmbientSky) uniform sampler2D sky;
-layout(binding = kSkyAmbientShadowMap) uniform sampler2D shadowMap;
+#define CLOUD_SHADOW_MAP_BINDING kSkyAmbientShadowMap
+#include "vkfx/cloud_shadow_sampled.glsl"
 layout(push_constant) uniform Constants { AmbientConstants constants; };
 
 // Reduced over the lanes: the sky's upper hemisphere (rgb, weight), its horizon band (rgb,
@@ -25,13 +26,14 @@ shared vec4 topSum[kSkyAmbientLanes];
 shared vec4 bottomSum[kSkyAmbientLanes];
 shared vec2 sunlitSum[kSkyAmbientLanes];
 
-// The sun transmittance to the ground (below every cloud) at `uv` in the finest cascade,
-// clamped half a texel inside it so that the filter does not read the next cascade.
+// An altitude below every cloud (m): the ground receives the whole ray's optical depth.
+const float kBelowEveryCloudMetres = -1.0e6f;
+
+// The sun transmittance to the ground at `uv` in the shadow map's finest cascade.
 float groundSunlit(vec2 uv) {
-  const float texels = float(max(constants.shadowTexels, 1u));
-  const vec2 inside = clamp(uv, vec2(0.5f / texels), vec2(1.0f - 0.5f / texels));
-  const float cascades = float(max(constants.shadowCascades, 1u));
-  return exp(-textureLod(shadowMap, vec2(inside.x / cascades, inside.y), 0.0f).r);
+  const vec4 info = vec4(float(constants.shadowCascades), float(constants.shadowTexels), 0, 0);
+  return exp(
+      -cloudShadowCascadeSample(info, 0.0f, uv, kBelowEveryCloudMetres, kCloudShadowClouds).x);
 }
 
 void main() {

@@ -132,16 +132,6 @@ bool boxInFrustum(const glm::mat4& m, const glm::vec3& lo, const glm::vec3& hi) 
   return true;
 }
 
-engine::shaders::TerrainMaterials terrainMaterialsFor(const assets::MeshData& mesh,
-                                                      std::optional<double> snowlineMetres) {
-  engine::shaders::TerrainMaterials m;
-  m.rock = glm::vec4(0.12f, 0.105f, 0.09f, 1.0f - std::cos(glm::radians(35.0f)));
-  const double snowline =
-      snowlineMetres.value_or(mesh.boundsMin.y + 0.7 * (mesh.boundsMax.y - mesh.boundsMin.y));
-  m.snow = glm::vec4(0.85f, 0.87f, 0.9f, static_cast<float>(snowline));
-  return m;
-}
-
 TerrainRenderer::TerrainRenderer(gfx::Device& device, const assets::MeshData& mesh,
                                  VkFormat hdrFormat, VkFormat depthFormat, bool aerialPerspective,
                                  bool cloudShadows, bool lightning)

@@ -13,6 +13,7 @@
 #include "engine/assets/gltf_loader.h"
 #include "engine/gfx/pipelines.h"
 #include "engine/gfx/resources.h"
+#include "render/terrain_materials.h"
 #include "terrain_material.h"
 
 namespace sample {
@@ -38,12 +39,6 @@ struct TerrainChunk {
 std::vector<TerrainChunk> buildChunks(const engine::assets::MeshData& mesh,
                                       std::vector<std::uint32_t>& indices, std::uint32_t grid,
                                       const std::array<float, kTerrainLods>& lodCellMetres);
-
-// The rock and snow painted over a mesh's colours (terrain_material.h): rock from 35 degrees of
-// slope, snow from `snowlineMetres` (by default 70% of the way up from the mesh's lowest point
-// to its highest), in the default terrain's palette.
-engine::shaders::TerrainMaterials terrainMaterialsFor(const engine::assets::MeshData& mesh,
-                                                      std::optional<double> snowlineMetres);
 
 // Level of detail for a chunk at `distanceMetres` from the camera.
 std::size_t lodForDistance(float distanceMetres);

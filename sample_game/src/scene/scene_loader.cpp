@@ -20,8 +20,7 @@
 #include "game/terrain_height.h"
 #include "game/terrain_placement.h"
 #include "game/time_of_day.h"
-#include "render/terrain_albedo.h"
-#include "render/terrain_renderer.h"
+#include "render/terrain_materials.h"
 
 namespace sample {
 

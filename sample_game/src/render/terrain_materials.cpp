@@ -1,6 +1,18 @@
-#include "render/terrain_albedo.h"
+#include "render/terrain_materials.h"
+
+#include <cmath>
 
 namespace sample {
+
+engine::shaders::TerrainMaterials terrainMaterialsFor(const engine::assets::MeshData& mesh,
+                                                      std::optional<double> snowlineMetres) {
+  engine::shaders::TerrainMaterials m;
+  m.rock = glm::vec4(0.12f, 0.105f, 0.09f, 1.0f - std::cos(glm::radians(35.0f)));
+  const double snowline =
+      snowlineMetres.value_or(mesh.boundsMin.y + 0.7 * (mesh.boundsMax.y - mesh.boundsMin.y));
+  m.snow = glm::vec4(0.85f, 0.87f, 0.9f, static_cast<float>(snowline));
+  return m;
+}
 
 glm::vec3 meanTerrainAlbedo(const engine::assets::MeshData& mesh,
                             const engine::shaders::TerrainMaterials& materials) {
