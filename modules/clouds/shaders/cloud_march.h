@@ -113,8 +113,10 @@ VKFX_INLINE vec3 noisePosition(vec3 flatOffset, float altitude, float heightFrac
   return vec3(flatOffset.x + skew.x, altitude, flatOffset.z + skew.y);
 }
 
+// `distance` (m) from the camera sets the noise's level of detail (noiseLevel(): the pixel's
+// footprint there, u.noiseFootprintPerMetre x distance), `lodDither` in [0, 1) rounds it.
 VKFX_INLINE FieldSample sampleField(vec3 flatOffset, float altitude, float distance,
-                                    uint wantDetail, IN(CloudUniforms) u) {
+                                    float lodDither, uint wantDetail, IN(CloudUniforms) u) {
   FieldSample s;
   const float bottom = u.layerBottomMetres;
   const float top = u.layerTopMetres;
@@ -138,8 +140,11 @@ VKFX_INLINE FieldSample sampleField(vec3 flatOffset, float altitude, float dista
   const WeatherSample w = decodeWeather(sampleWeather(weatherUv), u);
   const vec3 p = noisePosition(flatOffset, altitude, s.heightFraction, u);
   const vec3 shapeUvw = (u.shapeOffsetMetres + p) / u.shapeTileMetres;
+  const float footprint = distance * u.noiseFootprintPerMetre;
+  const int shapeLevel = noiseLevel(footprint, u.shapeTileMetres / float(kShapeNoiseSize),
+                                    lodDither, kShapeNoiseLevels);
   const CoarseShape shape =
-      coarseShape(sampleShapeNoise(shapeUvw), s.heightFraction, w, u.anvilBias);
+      coarseShape(sampleShapeNoise(shapeUvw, shapeLevel), s.heightFraction, w, u.anvilBias);
   s.base = shape.density;
   s.profile = shape.profile;
   s.density = s.base;
@@ -149,8 +154,10 @@ VKFX_INLINE FieldSample sampleField(vec3 flatOffset, float altitude, float dista
     const vec2 curl = sampleCurl(curlUv) * (u.curlStrengthMetres * (1.0f - s.heightFraction));
     const vec3 detailUvw =
         (u.detailOffsetMetres + p + vec3(curl.x, 0.0f, curl.y)) / u.detailTileMetres;
-    s.density =
-        erodeDensity(s.base, sampleDetailNoise(detailUvw), s.heightFraction, u.detailErosion);
+    const int detailLevel = noiseLevel(footprint, u.detailTileMetres / float(kDetailNoiseSize),
+                                       lodDither, kDetailNoiseLevels);
+    s.density = erodeDensity(s.base, sampleDetailNoise(detailUvw, detailLevel), s.heightFraction,
+                             u.detailErosion);
   }
   s.sigmaT = s.density * w.density * u.extinctionPerMetre;
   return s;
@@ -209,8 +216,9 @@ VKFX_INLINE vec3 coneKernel(uint index) {
 
 // Optical depth towards the sun from a cloudy sample; `steps` samples at distances growing
 // quadratically over the cone length, each spread sideways by the cone kernel.
-VKFX_INLINE float lightOpticalDepth(vec3 flatOffset, float altitude, float distance, uint steps,
-                                    IN(CloudUniforms) u, INOUT(float) samples) {
+VKFX_INLINE float lightOpticalDepth(vec3 flatOffset, float altitude, float distance,
+                                    float lodDither, uint steps, IN(CloudUniforms) u,
+                                    INOUT(float) samples) {
   const vec3 sun = u.sunDirection;
   const float coneLength = u.lightConeMetres;
   const float spread = u.lightConeSpread;
@@ -224,7 +232,7 @@ VKFX_INLINE float lightOpticalDepth(vec3 flatOffset, float altitude, float dista
     const vec3 offset = sun * d + coneKernel(j) * (d * spread);
     // Over a few kilometres the curvature drop (d^2 / 2R, ~0.2 m) is negligible.
     const FieldSample s = sampleField(flatOffset + vec3(offset.x, 0.0f, offset.z),
-                                      altitude + offset.y, distance + d, 0u, u);
+                                      altitude + offset.y, distance + d, lodDither, 0u, u);
     tau += s.sigmaT * (d1 - d0);
     samples += 1.0f;
   }
@@ -280,7 +288,8 @@ VKFX_INLINE float rayJitter(uvec2 pixel, uint temporalIndex, uint tileSize, bool
 }
 
 // Marches one view ray. `rayDirection` is a unit world-space vector (y up), `sceneDistance`
-// the distance to the host's geometry along it (kInfiniteDistance for sky), `jitter` in [0, 1).
+// the distance to the host's geometry along it (kInfiniteDistance for sky), `jitter` in [0, 1)
+// places each step's sample in its step and rounds the noise's level of detail.
 VKFX_INLINE MarchResult marchClouds(vec3 rayDirection, float sceneDistance, float jitter,
                                     IN(CloudUniforms) u, IN(MarchOptions) o) {
   MarchResult r;
@@ -330,7 +339,7 @@ VKFX_INLINE MarchResult marchClouds(vec3 rayDirection, float sceneDistance, floa
     const float sampleAltitude =
         altitudeAlongRay(sampleDistance, cosZenith, altitude, u.planetRadiusMetres);
     const FieldSample field =
-        sampleField(flatOffset, sampleAltitude, sampleDistance, fine ? o.detail : 0u, u);
+        sampleField(flatOffset, sampleAltitude, sampleDistance, jitter, fine ? o.detail : 0u, u);
     r.viewSamples += 1.0f;
     ++samples;
     if (!fine && field.base > 0.0f) {
@@ -340,8 +349,8 @@ VKFX_INLINE MarchResult marchClouds(vec3 rayDirection, float sceneDistance, floa
       continue;
     }
     CLOUDS_WHEN(field.sigmaT > 0.0f) {
-      const float tau = lightOpticalDepth(flatOffset, sampleAltitude, sampleDistance, o.lightSteps,
-                                          u, r.lightSamples);
+      const float tau = lightOpticalDepth(flatOffset, sampleAltitude, sampleDistance, jitter,
+                                          o.lightSteps, u, r.lightSamples);
       const float sunLight = terrainSunLight(flatOffset, sampleAltitude);
       const vec3 light = sampleRadiance(tau, sunLight, phases, field.profile, field.heightFraction,
                                         u, o.multipleScattering);

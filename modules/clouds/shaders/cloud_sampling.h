@@ -10,7 +10,8 @@
 
 VKFX_SHADER_BEGIN(clouds::shader)
 
-// Prototypes: texel coordinates are already wrapped into the texture.
+// Prototypes: texel coordinates are already wrapped into the texture (for the 3D noises, into
+// one level of the mip chain their image holds).
 vec4 fetchShapeNoise(ivec3 texel);
 vec4 fetchDetailNoise(ivec3 texel);
 vec4 fetchWeather(ivec2 texel);
@@ -18,42 +19,68 @@ vec4 fetchCurl(ivec2 texel);
 vec4 fetchWeatherMaxFine(ivec2 texel);    // kWeatherMaxFineSize^2
 vec4 fetchWeatherMaxCoarse(ivec2 texel);  // kWeatherMaxCoarseSize^2
 
-VKFX_INLINE vec4 sampleShapeNoise(vec3 uvw) {
-  const int mask = kShapeNoiseSize - 1;
-  const vec3 p = uvw * float(kShapeNoiseSize) - 0.5f;
-  const vec3 pFloor = floor(p);
-  const vec3 f = p - pFloor;
-  const ivec3 i0 = ivec3(pFloor) & mask;
-  const ivec3 i1 = (i0 + 1) & mask;
-  const vec4 c000 = fetchShapeNoise(ivec3(i0.x, i0.y, i0.z));
-  const vec4 c100 = fetchShapeNoise(ivec3(i1.x, i0.y, i0.z));
-  const vec4 c010 = fetchShapeNoise(ivec3(i0.x, i1.y, i0.z));
-  const vec4 c110 = fetchShapeNoise(ivec3(i1.x, i1.y, i0.z));
-  const vec4 c001 = fetchShapeNoise(ivec3(i0.x, i0.y, i1.z));
-  const vec4 c101 = fetchShapeNoise(ivec3(i1.x, i0.y, i1.z));
-  const vec4 c011 = fetchShapeNoise(ivec3(i0.x, i1.y, i1.z));
-  const vec4 c111 = fetchShapeNoise(ivec3(i1.x, i1.y, i1.z));
-  return mix(mix(mix(c000, c100, f.x), mix(c010, c110, f.x), f.y),
-             mix(mix(c001, c101, f.x), mix(c011, c111, f.x), f.y), f.z);
+// Where `level` of an n^3 noise's mip chain starts in its n x n x 3n/2 image. Level 0 fills the
+// first n slices; level L >= 1 (n >> L texels a side) is the cube at x = n - 2 (n >> L) on the
+// slices above (z = n), so the levels lie side by side along x: [0, n/2), [n/2, 3n/4), ...
+VKFX_INLINE ivec3 noiseLevelOrigin(int level, int n) {
+  return level > 0 ? ivec3(n - 2 * (n >> level), 0, n) : ivec3(0);
 }
 
-VKFX_INLINE vec4 sampleDetailNoise(vec3 uvw) {
-  const int mask = kDetailNoiseSize - 1;
-  const vec3 p = uvw * float(kDetailNoiseSize) - 0.5f;
+// The mip level at which one texel of a noise, `texelMetres` apart at level 0, is as wide as
+// `footprintMetres`, what one pixel sees of the sample: log2 of their ratio, rounded down or up
+// by `dither` in [0, 1) so that the frames a pixel averages blend the two levels around it (a
+// blend within one sample would double its 8 fetches). 0 for footprints below one texel.
+VKFX_INLINE int noiseLevel(float footprintMetres, float texelMetres, float dither, int levels) {
+  const float lod = log2(max(footprintMetres, 1e-20f) / texelMetres);
+  return clamp(int(floor(lod + dither)), 0, levels - 1);
+}
+
+// The 8 texels around a point of a tiling n^3 texture at one level of its chain (addresses in
+// the chain's image) and the point's place between them.
+struct TrilinearCell {
+  ivec3 i0;
+  ivec3 i1;
+  vec3 f;
+};
+
+VKFX_INLINE TrilinearCell trilinearCell(vec3 uvw, int level, int n) {
+  const int size = n >> level;
+  const ivec3 origin = noiseLevelOrigin(level, n);
+  const vec3 p = uvw * float(size) - 0.5f;
   const vec3 pFloor = floor(p);
-  const vec3 f = p - pFloor;
-  const ivec3 i0 = ivec3(pFloor) & mask;
-  const ivec3 i1 = (i0 + 1) & mask;
-  const vec4 c000 = fetchDetailNoise(ivec3(i0.x, i0.y, i0.z));
-  const vec4 c100 = fetchDetailNoise(ivec3(i1.x, i0.y, i0.z));
-  const vec4 c010 = fetchDetailNoise(ivec3(i0.x, i1.y, i0.z));
-  const vec4 c110 = fetchDetailNoise(ivec3(i1.x, i1.y, i0.z));
-  const vec4 c001 = fetchDetailNoise(ivec3(i0.x, i0.y, i1.z));
-  const vec4 c101 = fetchDetailNoise(ivec3(i1.x, i0.y, i1.z));
-  const vec4 c011 = fetchDetailNoise(ivec3(i0.x, i1.y, i1.z));
-  const vec4 c111 = fetchDetailNoise(ivec3(i1.x, i1.y, i1.z));
-  return mix(mix(mix(c000, c100, f.x), mix(c010, c110, f.x), f.y),
-             mix(mix(c001, c101, f.x), mix(c011, c111, f.x), f.y), f.z);
+  TrilinearCell c;
+  c.f = p - pFloor;
+  c.i0 = (ivec3(pFloor) & (size - 1)) + origin;
+  c.i1 = ((ivec3(pFloor) + 1) & (size - 1)) + origin;
+  return c;
+}
+
+VKFX_INLINE vec4 sampleShapeNoise(vec3 uvw, int level) {
+  const TrilinearCell c = trilinearCell(uvw, level, kShapeNoiseSize);
+  const vec4 c000 = fetchShapeNoise(ivec3(c.i0.x, c.i0.y, c.i0.z));
+  const vec4 c100 = fetchShapeNoise(ivec3(c.i1.x, c.i0.y, c.i0.z));
+  const vec4 c010 = fetchShapeNoise(ivec3(c.i0.x, c.i1.y, c.i0.z));
+  const vec4 c110 = fetchShapeNoise(ivec3(c.i1.x, c.i1.y, c.i0.z));
+  const vec4 c001 = fetchShapeNoise(ivec3(c.i0.x, c.i0.y, c.i1.z));
+  const vec4 c101 = fetchShapeNoise(ivec3(c.i1.x, c.i0.y, c.i1.z));
+  const vec4 c011 = fetchShapeNoise(ivec3(c.i0.x, c.i1.y, c.i1.z));
+  const vec4 c111 = fetchShapeNoise(ivec3(c.i1.x, c.i1.y, c.i1.z));
+  return mix(mix(mix(c000, c100, c.f.x), mix(c010, c110, c.f.x), c.f.y),
+             mix(mix(c001, c101, c.f.x), mix(c011, c111, c.f.x), c.f.y), c.f.z);
+}
+
+VKFX_INLINE vec4 sampleDetailNoise(vec3 uvw, int level) {
+  const TrilinearCell c = trilinearCell(uvw, level, kDetailNoiseSize);
+  const vec4 c000 = fetchDetailNoise(ivec3(c.i0.x, c.i0.y, c.i0.z));
+  const vec4 c100 = fetchDetailNoise(ivec3(c.i1.x, c.i0.y, c.i0.z));
+  const vec4 c010 = fetchDetailNoise(ivec3(c.i0.x, c.i1.y, c.i0.z));
+  const vec4 c110 = fetchDetailNoise(ivec3(c.i1.x, c.i1.y, c.i0.z));
+  const vec4 c001 = fetchDetailNoise(ivec3(c.i0.x, c.i0.y, c.i1.z));
+  const vec4 c101 = fetchDetailNoise(ivec3(c.i1.x, c.i0.y, c.i1.z));
+  const vec4 c011 = fetchDetailNoise(ivec3(c.i0.x, c.i1.y, c.i1.z));
+  const vec4 c111 = fetchDetailNoise(ivec3(c.i1.x, c.i1.y, c.i1.z));
+  return mix(mix(mix(c000, c100, c.f.x), mix(c010, c110, c.f.x), c.f.y),
+             mix(mix(c001, c101, c.f.x), mix(c011, c111, c.f.x), c.f.y), c.f.z);
 }
 
 VKFX_INLINE vec4 sampleWeather(vec2 uv) {

@@ -60,7 +60,7 @@ VKFX_INLINE ShadowColumn marchShadowColumn(vec3 base, vec3 light, uint steps, fl
       }
     }
     const vec3 p = base + light * t;
-    const FieldSample field = sampleField(vec3(p.x, 0.0f, p.z), altitude, 0.0f, 0u, u);
+    const FieldSample field = sampleField(vec3(p.x, 0.0f, p.z), altitude, 0.0f, 0.0f, 0u, u);
     column.samples += 1.0f;
     CLOUDS_WHEN(field.sigmaT > 0.0f) {
       column.opticalDepth += field.sigmaT * stepLength;

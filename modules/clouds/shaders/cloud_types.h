@@ -19,8 +19,12 @@ VKFX_SHADER_BEGIN(clouds::shader)
 // --- Texture sizes (powers of two: wrapping is a bit mask) ----------------------------------
 const int kShapeNoiseSize = 128;  // low-frequency 3D noise, RGBA8
 const int kDetailNoiseSize = 32;  // high-frequency 3D noise, RGBA8
-const int kCurlNoiseSize = 128;   // 2D curl noise, RGBA8 (RG used)
-const int kWeatherMapSize = 512;  // 2D weather map, RGBA8: coverage, type, density
+// The 3D noises keep their whole mip chain, down to 1 texel (the mean), in one storage image
+// of n x n x 3n/2 texels (noiseLevelOrigin() in cloud_sampling.h says where each level lies).
+const int kShapeNoiseLevels = 8;   // 128^3 .. 1^3
+const int kDetailNoiseLevels = 6;  // 32^3 .. 1^3
+const int kCurlNoiseSize = 128;    // 2D curl noise, RGBA8 (RG used)
+const int kWeatherMapSize = 512;   // 2D weather map, RGBA8: coverage, type, density
 // Empty-space skipping: the weather map's maximum coverage (R) and type (G) over cells, at two
 // levels (64 x 64 cells of 8 x 8 texels, 8 x 8 cells of 64 x 64 texels), each cell's maximum
 // including a one-texel apron because the march filters the weather map bilinearly.
@@ -102,7 +106,8 @@ const uint kGodRayLightOut = 4u;   // RGBA16F: what the composite adds to a sky 
 const uint kSkyAmbientUniforms = 0u;
 const uint kSkyAmbientSky = 1u;        // the host's sky image (a placeholder without one)
 const uint kSkyAmbientShadowMap = 2u;  // the cloud shadow map (a placeholder without one)
-// noise_*.comp and weather_procedural.comp: the texture they generate
+// noise_*.comp and weather_procedural.comp: the texture they generate (noise_mip.comp: the
+// 3D noise whose mip chain it completes)
 const uint kGeneratorTarget = 0u;
 // weather_resample.comp: the module's weather map from the host's painted one
 const uint kResampleTarget = 0u;
@@ -202,7 +207,8 @@ struct CloudUniforms {
   float detailTileMetres;
   vec2 weatherOffsetMetres;  // camera xz inside the weather tile (coverage does not scroll)
   float weatherTileMetres;
-  float padding1;
+  float noiseFootprintPerMetre;  // the noise's level of detail: texel width (m) whose level a
+                                 //   sample reads per metre of distance (0: the finest always)
   vec2 curlOffsetMetres;
   float curlTileMetres;
   float curlStrengthMetres;  // swirl of the detail noise at the cloud base
@@ -290,6 +296,14 @@ struct AmbientConstants {
   uint flags;           // kAmbient* bits
   uint shadowCascades;  // cascades side by side in the shadow map (cascade 0 is read)
   uint shadowTexels;    // texels per cascade side
+  uint padding0;
+  uint padding1;
+};
+
+// Push constants of noise_mip.comp: makes `level` of a 3D noise's chain from the level above.
+struct NoiseMipConstants {
+  uint size;   // texels per side of level 0
+  uint level;  // the level made, >= 1
   uint padding0;
   uint padding1;
 };
@@ -491,6 +505,7 @@ CLOUDS_ASSERT_OFFSET(CloudUniforms, phaseNormaliserInverseLow, 608);
 CLOUDS_ASSERT_OFFSET(CloudUniforms, phaseNormaliserInverseHigh, 624);
 static_assert(sizeof(clouds::shader::CloudUniforms) == 640);
 static_assert(sizeof(clouds::shader::NoiseConstants) == 16);
+static_assert(sizeof(clouds::shader::NoiseMipConstants) == 16);
 static_assert(sizeof(clouds::shader::AmbientConstants) == 32);
 static_assert(sizeof(clouds::shader::WeatherConstants) == 16);
 static_assert(sizeof(clouds::shader::MaximaConstants) == 16);

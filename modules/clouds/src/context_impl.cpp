@@ -40,15 +40,16 @@ detail::OwnedBuffer uniformBlock(const detail::DeviceContext& device, VkDeviceSi
 }
 
 detail::UniqueDescriptorPool makePool(const detail::DeviceContext& device, std::uint32_t frames) {
-  // Fixed sets: 3 noise generators, 2 weather generators, 3 maxima. Per slot: 9 sets.
+  // Fixed sets: 3 noise generators, 2 mip chains, 2 weather generators, 3 maxima. Per slot: 9
+  // sets.
   const VkDescriptorPoolSize sizes[] = {
-      {VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, 16 + 42 * frames},
+      {VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, 18 + 42 * frames},
       {VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 4 + 16 * frames},
       {VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 13 * frames},
       {VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 5 * frames},
   };
   VkDescriptorPoolCreateInfo info{VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO};
-  info.maxSets = 8 + 14 * frames;
+  info.maxSets = 10 + 14 * frames;
   info.poolSizeCount = static_cast<std::uint32_t>(std::size(sizes));
   info.pPoolSizes = sizes;
   return device.createDescriptorPool(info, "descriptor pool");
@@ -137,6 +138,14 @@ void Context::Impl::writeFixedSets() {
       .storageImage(shader::kGeneratorTarget, im.detailNoise.view())
       .commit();
   SetWriter(device_, curlSet_).storageImage(shader::kGeneratorTarget, im.curlNoise.view()).commit();
+  shapeMipSet_ = allocateSet(Program::NoiseMip);
+  detailMipSet_ = allocateSet(Program::NoiseMip);
+  SetWriter(device_, shapeMipSet_)
+      .storageImage(shader::kGeneratorTarget, im.shapeNoise.view())
+      .commit();
+  SetWriter(device_, detailMipSet_)
+      .storageImage(shader::kGeneratorTarget, im.detailNoise.view())
+      .commit();
   for (std::uint32_t i = 0; i < 2; ++i) {
     weatherSets_[i] = allocateSet(Program::Weather);
     SetWriter(device_, weatherSets_[i])

@@ -114,6 +114,7 @@ class Context::Impl {
 
   // record_weather.cpp
   void recordNoise(VkCommandBuffer cmd);
+  void recordNoiseMipChains(VkCommandBuffer cmd);  // (part of recordNoise)
   void recordWeather(VkCommandBuffer cmd, const FrameInputs& inputs, const Settings& settings,
                      Slot& slot);
   void recordWeatherRows(VkCommandBuffer cmd, const Settings& settings,
@@ -166,6 +167,8 @@ class Context::Impl {
   // Sets over fixed images, written once.
   VkDescriptorSet shapeSet_ = VK_NULL_HANDLE;
   VkDescriptorSet detailSet_ = VK_NULL_HANDLE;
+  VkDescriptorSet shapeMipSet_ = VK_NULL_HANDLE;   // noise_mip.comp on the shape noise's chain
+  VkDescriptorSet detailMipSet_ = VK_NULL_HANDLE;  // ... and on the detail noise's
   VkDescriptorSet curlSet_ = VK_NULL_HANDLE;
   std::array<VkDescriptorSet, 2> weatherSets_{};         // generator, per map
   std::array<VkDescriptorSet, 2> weatherMaxFineSets_{};  // map -> fine maxima, per map

@@ -50,8 +50,11 @@ ModuleImages::ModuleImages(const DeviceContext& device) : device_(device) {
   const auto w = static_cast<std::uint32_t>(shader::kWeatherMapSize);
   const auto fine = static_cast<std::uint32_t>(shader::kWeatherMaxFineSize);
   const auto coarse = static_cast<std::uint32_t>(shader::kWeatherMaxCoarseSize);
-  shapeNoise = make(VK_IMAGE_TYPE_3D, kNoiseFormat, {s, s, s}, kStorage, "shape noise");
-  detailNoise = make(VK_IMAGE_TYPE_3D, kNoiseFormat, {d, d, d}, kStorage, "detail noise");
+  // The 3D noises hold their mip chains above level 0 (noiseLevelOrigin()): n x n x 3n/2.
+  shapeNoise =
+      make(VK_IMAGE_TYPE_3D, kNoiseFormat, {s, s, s + s / 2}, kStorage, "shape noise mip chain");
+  detailNoise =
+      make(VK_IMAGE_TYPE_3D, kNoiseFormat, {d, d, d + d / 2}, kStorage, "detail noise mip chain");
   curlNoise = make(VK_IMAGE_TYPE_2D, kNoiseFormat, {c, c, 1}, kStorage, "curl noise");
   for (std::uint32_t i = 0; i < 2; ++i) {
     weatherMaps[i] = make(VK_IMAGE_TYPE_2D, kNoiseFormat, {w, w, 1}, kStorage,

@@ -13,6 +13,7 @@
 #include "clouds_shaders/lightning_bolts.comp.spv.h"
 #include "clouds_shaders/noise_curl.comp.spv.h"
 #include "clouds_shaders/noise_detail.comp.spv.h"
+#include "clouds_shaders/noise_mip.comp.spv.h"
 #include "clouds_shaders/noise_shape.comp.spv.h"
 #include "clouds_shaders/reconstruct.comp.spv.h"
 #include "clouds_shaders/sky_ambient.comp.spv.h"
@@ -56,6 +57,11 @@ std::vector<ProgramDesc> programTable() {
        {{kGeneratorTarget, kImage}},
        sizeof(NoiseConstants),
        "curl noise generator"},
+      {Program::NoiseMip,
+       noise_mip_comp_spv,
+       {{kGeneratorTarget, kImage}},
+       sizeof(NoiseMipConstants),
+       "noise mip chain"},
       {Program::Weather,
        weather_procedural_comp_spv,
        {{kGeneratorTarget, kImage}},

@@ -15,6 +15,7 @@ enum class Program : std::uint32_t {
   ShapeNoise,       // noise_shape.comp: 128^3 low-frequency Perlin-Worley + Worley fBm
   DetailNoise,      // noise_detail.comp: 32^3 high-frequency Worley fBm
   CurlNoise,        // noise_curl.comp: 128^2 curl noise
+  NoiseMip,         // noise_mip.comp: one level of a 3D noise's mip chain
   Weather,          // weather_procedural.comp: rows of the procedural weather map
   WeatherResample,  // weather_resample.comp: the host's painted map into the module's
   WeatherMaxima,    // weather_max.comp: one level of the empty-space-skipping grid

@@ -51,8 +51,38 @@ void Context::Impl::recordNoise(VkCommandBuffer cmd) {
     }
   }
   detail::memoryBarrier(device_, cmd, kCompute, kStorageWrite, kCompute, kStorageRead);
+  recordNoiseMipChains(cmd);
   endPass(cmd, detail::Pass::Noise);
   noiseGenerated_ = true;
+}
+
+void Context::Impl::recordNoiseMipChains(VkCommandBuffer cmd) {
+  const auto& fn = device_.fn();
+  const detail::ComputeProgram& program = programs_[Program::NoiseMip];
+  fn.vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, program.find());
+  struct Chain {
+    VkDescriptorSet set;
+    int size;
+    int levels;
+  };
+  const Chain chains[] = {{shapeMipSet_, shader::kShapeNoiseSize, shader::kShapeNoiseLevels},
+                          {detailMipSet_, shader::kDetailNoiseSize, shader::kDetailNoiseLevels}};
+  // Level by level, each from the one above: both chains' level L, then a barrier.
+  for (int level = 1; level < shader::kShapeNoiseLevels; ++level) {
+    for (const Chain& chain : chains) {
+      if (level >= chain.levels) continue;
+      fn.vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, program.layout(), 0, 1,
+                                 &chain.set, 0, nullptr);
+      const shader::NoiseMipConstants constants{static_cast<std::uint32_t>(chain.size),
+                                                static_cast<std::uint32_t>(level), 0u, 0u};
+      fn.vkCmdPushConstants(cmd, program.layout(), VK_SHADER_STAGE_COMPUTE_BIT, 0,
+                            sizeof(constants), &constants);
+      const std::uint32_t n = detail::groupsFor(static_cast<std::uint32_t>(chain.size >> level),
+                                                shader::kWorkgroupSize3D);
+      fn.vkCmdDispatch(cmd, n, n, n);
+    }
+    detail::memoryBarrier(device_, cmd, kCompute, kStorageWrite, kCompute, kStorageRead);
+  }
 }
 
 void Context::Impl::recordWeather(VkCommandBuffer cmd, const FrameInputs& inputs,

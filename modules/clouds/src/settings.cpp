@@ -65,6 +65,7 @@ std::span<const SettingRange> settingRanges() {
       CLOUDS_RANGE(detailTileMetres, 10.0, 1e6),
       CLOUDS_RANGE(detailErosion, 0.0, 1.0),
       CLOUDS_RANGE(detailDistanceMetres, 0.0, 1e7),
+      CLOUDS_RANGE(noiseTexelsPerPixel, 1.0, 64.0),
       CLOUDS_RANGE(curlTileMetres, 100.0, 1e7),
       CLOUDS_RANGE(curlStrengthMetres, 0.0, 10000.0),
       CLOUDS_RANGE(windDirection.x, -1e6, 1e6),
@@ -160,6 +161,7 @@ Settings referenceSettings(const Settings& base) {
   s.updateInterval = 1;
   s.temporalReuse = false;
   s.emptySpaceSkipping = false;
+  s.noiseLevelOfDetail = false;  // the subpixel jitter filters the noise over the pixel
   s.maxViewSteps = 8192;
   s.viewStepMetres = 12.0f;
   s.viewStepGrowth = 0.0015f;

@@ -59,6 +59,7 @@ bool cloudsLookDifferent(const Settings& a, const Settings& b) {
                            a.detailTileMetres,
                            a.detailErosion,
                            a.detailDistanceMetres,
+                           a.noiseTexelsPerPixel,
                            a.curlTileMetres,
                            a.curlStrengthMetres,
                            a.windDirection.x,
@@ -101,6 +102,7 @@ bool cloudsLookDifferent(const Settings& a, const Settings& b) {
                            b.detailTileMetres,
                            b.detailErosion,
                            b.detailDistanceMetres,
+                           b.noiseTexelsPerPixel,
                            b.curlTileMetres,
                            b.curlStrengthMetres,
                            b.windDirection.x,
@@ -137,7 +139,8 @@ bool cloudsLookDifferent(const Settings& a, const Settings& b) {
          a.maxViewSteps != b.maxViewSteps || a.lightSteps != b.lightSteps ||
          a.cheapSampling != b.cheapSampling || a.emptySamplesToCoarse != b.emptySamplesToCoarse ||
          a.detail != b.detail || a.jitter != b.jitter ||
-         a.emptySpaceSkipping != b.emptySpaceSkipping;
+         a.emptySpaceSkipping != b.emptySpaceSkipping ||
+         a.noiseLevelOfDetail != b.noiseLevelOfDetail;
 }
 
 TemporalFrame TemporalState::plan(const FrameInputs& in, const Settings& s,

@@ -56,6 +56,13 @@ shader::CloudUniforms buildUniforms(const FrameInputs& in, const Settings& s,
   u.detailTileMetres = s.detailTileMetres;
   u.weatherOffsetMetres = offset(camera, s.weatherTileMetres);
   u.weatherTileMetres = s.weatherTileMetres;
+  // One output pixel's angle (rad) at the centre of the view: the height of the near plane at
+  // unit distance, 2 / |P[1][1]| for a perspective projection, over the output's rows.
+  const float pixelsPerRadian =
+      std::abs(in.projection[1][1]) * 0.5f * static_cast<float>(context.fullExtent.height);
+  u.noiseFootprintPerMetre = s.noiseLevelOfDetail && pixelsPerRadian > 0.0f
+                                 ? 1.0f / (pixelsPerRadian * s.noiseTexelsPerPixel)
+                                 : 0.0f;
   u.curlOffsetMetres = offset(scrolled, s.curlTileMetres);
   u.curlTileMetres = s.curlTileMetres;
   u.curlStrengthMetres = s.curlStrengthMetres;

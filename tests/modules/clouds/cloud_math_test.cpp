@@ -264,3 +264,38 @@ TEST(CloudMath, BasesSeeTheGroundLitBySunAndSkyAndTheHorizonBeside) {
 }
 
 }  // namespace
+
+namespace {
+
+TEST(CloudMath, TheNoiseMipLevelsLieSideBySideInTheirImage) {
+  for (const int n : {kShapeNoiseSize, kDetailNoiseSize}) {
+    const int levels = n == kShapeNoiseSize ? kShapeNoiseLevels : kDetailNoiseLevels;
+    ASSERT_EQ(n >> (levels - 1), 1) << "the chain ends at one texel, the mean";
+    EXPECT_EQ(noiseLevelOrigin(0, n), ivec3(0));
+    int nextX = 0;  // levels 1.. follow each other along x on the slices above level 0
+    for (int level = 1; level < levels; ++level) {
+      const ivec3 o = noiseLevelOrigin(level, n);
+      const int size = n >> level;
+      EXPECT_EQ(o, ivec3(nextX, 0, n)) << "n " << n << " level " << level;
+      EXPECT_LE(o.x + size, n);
+      EXPECT_LE(o.z + size, n + n / 2) << "inside the n x n x 3n/2 image";
+      nextX = o.x + size;
+    }
+  }
+}
+
+TEST(CloudMath, TheNoiseLevelIsLog2OfTheFootprintInTexelsRoundedByTheDither) {
+  const float texel = 40.0f;
+  EXPECT_EQ(noiseLevel(0.0f, texel, 0.99f, 6), 0) << "no footprint: the finest level";
+  EXPECT_EQ(noiseLevel(39.0f, texel, 0.99f, 6), 0) << "below a texel: the finest level";
+  EXPECT_EQ(noiseLevel(80.0f, texel, 0.0f, 6), 1);
+  EXPECT_EQ(noiseLevel(80.0f, texel, 0.99f, 6), 1) << "exactly level 1";
+  EXPECT_EQ(noiseLevel(1e9f, texel, 0.5f, 6), 5) << "clamped to the last level";
+  // Between levels 1 and 2 (log2 = 1.5), the dither picks the lower one half the time.
+  int lower = 0;
+  for (int i = 0; i < 100; ++i)
+    lower += noiseLevel(113.137f, texel, (float(i) + 0.5f) / 100.0f, 6) == 1;
+  EXPECT_EQ(lower, 50);
+}
+
+}  // namespace

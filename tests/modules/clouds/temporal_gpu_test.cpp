@@ -56,9 +56,19 @@ CloudView aboveTheLayerView() {
   return view;
 }
 
+// High without the noise's level of detail: at 160 x 90 a pixel is 4 times as wide as at the
+// benchmark's 640 x 360, so the coarser noise levels start 4 times nearer, at the distance of
+// these cloud tops, and take away part of the detail whose recovery these tests measure (the
+// level of detail's own accuracy is the benchmark's to measure, at 640 x 360).
+clouds::Settings highWithFinestNoise() {
+  clouds::Settings s = clouds::settingsFor(clouds::Quality::High);
+  s.noiseLevelOfDetail = false;
+  return s;
+}
+
 TEST_F(CloudTemporal, TemporalUpsamplingConvergesToDetailFinerThanTheTrace) {
   const CloudView view = aboveTheLayerView();
-  const clouds::Settings upsampled = clouds::settingsFor(clouds::Quality::High);
+  const clouds::Settings upsampled = highWithFinestNoise();
   ASSERT_TRUE(clouds::upsamplesTemporally(upsampled));
   clouds::Settings traceOnly = upsampled;
   traceOnly.temporalUpsampling = false;
@@ -98,7 +108,7 @@ TEST_F(CloudTemporal, TemporalUpsamplingHelpsUnderWindDriftToo) {
   // Time runs (the wind drifts the clouds' detail, 10 m/s): every frame reprojects and
   // resamples the output history instead of reading it in place.
   CloudView view = aboveTheLayerView();
-  const clouds::Settings upsampled = clouds::settingsFor(clouds::Quality::High);
+  const clouds::Settings upsampled = highWithFinestNoise();
   clouds::Settings traceOnly = upsampled;
   traceOnly.temporalUpsampling = false;
   constexpr int kFrames = 136;

@@ -42,7 +42,7 @@ const std::map<std::string, std::size_t> kCppOffsets = {FIELD(inverseProjection)
                                                         FIELD(detailTileMetres),
                                                         FIELD(weatherOffsetMetres),
                                                         FIELD(weatherTileMetres),
-                                                        FIELD(padding1),
+                                                        FIELD(noiseFootprintPerMetre),
                                                         FIELD(curlOffsetMetres),
                                                         FIELD(curlTileMetres),
                                                         FIELD(curlStrengthMetres),
