@@ -25,8 +25,9 @@ clouds::tools::CpuTextures syntheticTextures() {
       b = static_cast<std::uint8_t>(state >> 24);
     }
   };
-  fill(t.shape, 128u * 128u * 128u, 1);
-  fill(t.detail, 32u * 32u * 32u, 2);
+  // The 3D noises with room for their mip chains (n x n x 3n/2), random at every level.
+  fill(t.shape, 128u * 128u * 192u, 1);
+  fill(t.detail, 32u * 32u * 48u, 2);
   fill(t.curl, 128u * 128u, 3);
   fill(t.weather, 512u * 512u, 4);
   t.weatherMaxFine = clouds::tools::weatherMaxima(t.weather, kWeatherMapSize, kWeatherMaxFineSize);

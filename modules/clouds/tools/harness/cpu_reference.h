@@ -11,8 +11,8 @@
 namespace clouds::tools {
 
 struct CpuTextures {
-  std::vector<std::uint8_t> shape;    // 128^3 RGBA8
-  std::vector<std::uint8_t> detail;   // 32^3 RGBA8
+  std::vector<std::uint8_t> shape;    // 128 x 128 x 192 RGBA8: 128^3 and its mip chain
+  std::vector<std::uint8_t> detail;   // 32 x 32 x 48 RGBA8: 32^3 and its mip chain
   std::vector<std::uint8_t> curl;     // 128^2 RGBA8
   std::vector<std::uint8_t> weather;  // 512^2 RGBA8
   // Empty-space-skipping maxima computed on the CPU from `weather` (see weatherMaxima).
