@@ -55,32 +55,25 @@ VKFX_INLINE TrilinearCell trilinearCell(vec3 uvw, int level, int n) {
   return c;
 }
 
+// The trilinear blend of the 8 texels of TrilinearCell `c`, each read by `fetch` (a 3D fetch
+// prototype above): one body for both noises, since GLSL cannot pass a function.
+#define CLOUDS_TRILINEAR(fetch, c)                                                                \
+  mix(mix(mix(fetch(ivec3(c.i0.x, c.i0.y, c.i0.z)), fetch(ivec3(c.i1.x, c.i0.y, c.i0.z)), c.f.x), \
+          mix(fetch(ivec3(c.i0.x, c.i1.y, c.i0.z)), fetch(ivec3(c.i1.x, c.i1.y, c.i0.z)), c.f.x), \
+          c.f.y),                                                                                 \
+      mix(mix(fetch(ivec3(c.i0.x, c.i0.y, c.i1.z)), fetch(ivec3(c.i1.x, c.i0.y, c.i1.z)), c.f.x), \
+          mix(fetch(ivec3(c.i0.x, c.i1.y, c.i1.z)), fetch(ivec3(c.i1.x, c.i1.y, c.i1.z)), c.f.x), \
+          c.f.y),                                                                                 \
+      c.f.z)
+
 VKFX_INLINE vec4 sampleShapeNoise(vec3 uvw, int level) {
   const TrilinearCell c = trilinearCell(uvw, level, kShapeNoiseSize);
-  const vec4 c000 = fetchShapeNoise(ivec3(c.i0.x, c.i0.y, c.i0.z));
-  const vec4 c100 = fetchShapeNoise(ivec3(c.i1.x, c.i0.y, c.i0.z));
-  const vec4 c010 = fetchShapeNoise(ivec3(c.i0.x, c.i1.y, c.i0.z));
-  const vec4 c110 = fetchShapeNoise(ivec3(c.i1.x, c.i1.y, c.i0.z));
-  const vec4 c001 = fetchShapeNoise(ivec3(c.i0.x, c.i0.y, c.i1.z));
-  const vec4 c101 = fetchShapeNoise(ivec3(c.i1.x, c.i0.y, c.i1.z));
-  const vec4 c011 = fetchShapeNoise(ivec3(c.i0.x, c.i1.y, c.i1.z));
-  const vec4 c111 = fetchShapeNoise(ivec3(c.i1.x, c.i1.y, c.i1.z));
-  return mix(mix(mix(c000, c100, c.f.x), mix(c010, c110, c.f.x), c.f.y),
-             mix(mix(c001, c101, c.f.x), mix(c011, c111, c.f.x), c.f.y), c.f.z);
+  return CLOUDS_TRILINEAR(fetchShapeNoise, c);
 }
 
 VKFX_INLINE vec4 sampleDetailNoise(vec3 uvw, int level) {
   const TrilinearCell c = trilinearCell(uvw, level, kDetailNoiseSize);
-  const vec4 c000 = fetchDetailNoise(ivec3(c.i0.x, c.i0.y, c.i0.z));
-  const vec4 c100 = fetchDetailNoise(ivec3(c.i1.x, c.i0.y, c.i0.z));
-  const vec4 c010 = fetchDetailNoise(ivec3(c.i0.x, c.i1.y, c.i0.z));
-  const vec4 c110 = fetchDetailNoise(ivec3(c.i1.x, c.i1.y, c.i0.z));
-  const vec4 c001 = fetchDetailNoise(ivec3(c.i0.x, c.i0.y, c.i1.z));
-  const vec4 c101 = fetchDetailNoise(ivec3(c.i1.x, c.i0.y, c.i1.z));
-  const vec4 c011 = fetchDetailNoise(ivec3(c.i0.x, c.i1.y, c.i1.z));
-  const vec4 c111 = fetchDetailNoise(ivec3(c.i1.x, c.i1.y, c.i1.z));
-  return mix(mix(mix(c000, c100, c.f.x), mix(c010, c110, c.f.x), c.f.y),
-             mix(mix(c001, c101, c.f.x), mix(c011, c111, c.f.x), c.f.y), c.f.z);
+  return CLOUDS_TRILINEAR(fetchDetailNoise, c);
 }
 
 VKFX_INLINE vec4 sampleWeather(vec2 uv) {

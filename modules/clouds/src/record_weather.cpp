@@ -1,6 +1,7 @@
 // Recording the module's textures: the noise generation of the first frame, the weather map
 // (procedural, prepared a band of rows per frame ahead of its period, or the host's painted
 // one resampled) and its maxima for empty-space skipping.
+#include <algorithm>
 #include <cmath>
 
 #include "context_impl.h"
@@ -68,7 +69,8 @@ void Context::Impl::recordNoiseMipChains(VkCommandBuffer cmd) {
   const Chain chains[] = {{shapeMipSet_, shader::kShapeNoiseSize, shader::kShapeNoiseLevels},
                           {detailMipSet_, shader::kDetailNoiseSize, shader::kDetailNoiseLevels}};
   // Level by level, each from the one above: both chains' level L, then a barrier.
-  for (int level = 1; level < shader::kShapeNoiseLevels; ++level) {
+  for (int level = 1; level < std::max(shader::kShapeNoiseLevels, shader::kDetailNoiseLevels);
+       ++level) {
     for (const Chain& chain : chains) {
       if (level >= chain.levels) continue;
       fn.vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, program.layout(), 0, 1,
