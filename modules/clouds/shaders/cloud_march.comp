@@ -90,9 +90,10 @@ void main() {
   options.multipleScattering = kMultipleScattering;
   options.lightSteps = kLightSteps;
   options.emptySpace = kEmptySpace;
-  const float jitter = rayJitter(pixel, u.temporalIndex, u.tileSize,
+  const float jitter = rayJitter(pixel, u.rayStartOffset, u.tileSize,
                                  (u.flags & kFlagRebuiltInsideLayer) != 0u, kJitterMode);
-  const MarchResult result = marchClouds(direction, distance, jitter, u, options);
+  const MarchResult result = marchClouds(
+      direction, distance, jitter, lightJitter(u.lightRound, kJitterMode), u, options);
 
   imageStore(outSamples, ivec2(pixel),
              packCloudSample(vec4(result.radiance, result.transmittance),

@@ -208,16 +208,40 @@ VKFX_INLINE float emptySpaceSkip(vec2 origin, float t, vec3 rayDirection, float 
   return t;
 }
 
-// A fixed unit vector per light sample: the cone kernel (deterministic, no arrays).
-VKFX_INLINE vec3 coneKernel(uint index) {
-  const vec3 h = hashCell(ivec3(int(index), 17, 29), 977u) * 2.0f - 1.0f;
-  return h / max(length(h), 1e-3f);
+// The cone kernel: the sideways direction of a ray's `index`-th light sample, a unit vector of
+// a low-discrepancy sequence on the sphere (Roberts' R2 over height and azimuth) moved per ray by
+// `rotation` in [0, 1)^2 (a Cranley-Patterson rotation). However many samples a ray takes,
+// their directions spread over the sphere, and other rays (pixels, frames) take others, so the
+// cone's spread is sampled uniformly on average. (A fixed hashed vector per index made each
+// light-step count its own cone: the estimates of 10 and 16 steps differed, and neither
+// converged on the Reference's 24.)
+VKFX_INLINE vec3 coneKernel(uint index, vec2 rotation) {
+  const float z = 1.0f - 2.0f * fract(rotation.x + float(index) * 0.7548776662f);
+  const float azimuth = 2.0f * kPi * fract(rotation.y + float(index) * 0.5698402910f);
+  const float radius = sqrt(max(1.0f - z * z, 0.0f));
+  return vec3(radius * cos(azimuth), radius * sin(azimuth), z);
 }
 
-// Optical depth towards the sun from a cloudy sample; `steps` samples at distances growing
-// quadratically over the cone length, each spread sideways by the cone kernel.
+// The random numbers of the light samples of the rays of one round of refreshes (a pixel is
+// refreshed once per round): x places each sample in its stretch of the cone, yz rotate the cone
+// kernel (coneKernel()). All the rays of a round share them, so a frame shows no grain of
+// per-pixel cones, and the rounds a pixel averages (as it averages its rays' start offsets)
+// average the cone. Jitter mode 0 (none): the middle of each stretch and one cone for every
+// ray, as deterministic as the view steps.
+VKFX_INLINE vec3 lightJitter(uint round, uint mode) {
+  if (mode == 0u) return vec3(0.5f);
+  return hashCell(ivec3(int(round & 0xffffffu), 0, 0), 7127u);
+}
+
+// Optical depth towards the sun from a cloudy sample: the extinction integrated along the sun's
+// direction over the cone length, each point spread sideways by d x lightConeSpread in a
+// direction uniform over the sphere (the cone). Estimated by `steps` samples, one in each of
+// `steps` stretches whose length grows quadratically with the distance (near the sample, where
+// the shadowing detail is, they are short), at the place `jitter.x` in its stretch and in the
+// direction coneKernel() gives it: a stratified estimate of one integral, so more steps are
+// the same integral with less noise, and a ray's samples averaged over frames converge on it.
 VKFX_INLINE float lightOpticalDepth(vec3 flatOffset, float altitude, float distance,
-                                    float lodDither, uint steps, IN(CloudUniforms) u,
+                                    float lodDither, uint steps, vec3 jitter, IN(CloudUniforms) u,
                                     INOUT(float) samples) {
   const vec3 sun = u.sunDirection;
   const float coneLength = u.lightConeMetres;
@@ -228,8 +252,8 @@ VKFX_INLINE float lightOpticalDepth(vec3 flatOffset, float altitude, float dista
     const float s1 = float(j + 1u) / float(steps);
     const float d0 = coneLength * s0 * s0;
     const float d1 = coneLength * s1 * s1;
-    const float d = 0.5f * (d0 + d1);
-    const vec3 offset = sun * d + coneKernel(j) * (d * spread);
+    const float d = mix(d0, d1, jitter.x);
+    const vec3 offset = sun * d + coneKernel(j, vec2(jitter.y, jitter.z)) * (d * spread);
     // Over a few kilometres the curvature drop (d^2 / 2R, ~0.2 m) is negligible.
     const FieldSample s = sampleField(flatOffset + vec3(offset.x, 0.0f, offset.z),
                                       altitude + offset.y, distance + d, lodDither, 0u, u);
@@ -267,31 +291,31 @@ VKFX_INLINE float sceneDistanceFromDepth(float depth, vec2 pixelCentre, vec2 ext
   return length(vec3(view) / view.w);
 }
 
-// Ray-start jitter in [0, 1) for a pixel marched 1 in tileSize^2 frames (temporalIndex: frames
-// since the history was reset): a 4x4 Bayer pattern over the pixels (the pixels of a tile,
-// marched in turn, start apart; the rays of one frame, at the same place in each tile, start
-// together: a frame without history interpolates them without a pattern), moved along a Halton
-// sequence over the pixel's own refreshes (temporalIndex / tileSize^2). (Over the frame index, a
-// pixel refreshed every 16th frame saw Halton points 16 apart, whose lowest four bits are the
-// same: offsets within 1/16 of each other, a fixed pattern of dots no accumulation removes.)
-// `spreadOverTiles` (a frame without history inside the layer, where thin cloud all around
-// makes a ray's result depend much on where it starts, so that rays starting together bias the
-// whole frame) also spreads a frame's rays over a 2x2 Bayer pattern of the tiles, which
-// reconstruct.comp's tent averages exactly (it weighs even and odd tiles alike).
-VKFX_INLINE float rayJitter(uvec2 pixel, uint temporalIndex, uint tileSize, bool spreadOverTiles,
+// Ray-start jitter in [0, 1) for a pixel: a 4x4 Bayer pattern over the pixels (the pixels of a
+// tile, marched in turn, start apart; the rays of one frame, at the same place in each tile,
+// start together: a frame without history interpolates them without a pattern), moved by
+// this round's `startOffset` (refreshStartOffset()), which moves along each pixel's own
+// refreshes. (Over the frame index, a pixel refreshed every 16th frame saw Halton points 16
+// apart, whose lowest four bits are the same: offsets within 1/16 of each other, a fixed
+// pattern of dots no accumulation removes.) `spreadOverTiles` (a frame without history inside
+// the layer, where thin cloud all around makes a ray's result depend much on where it starts,
+// so that rays starting together bias the whole frame) also spreads a frame's rays over a 2x2
+// Bayer pattern of the tiles of side `tileSize`, which reconstruct.comp's tent averages
+// exactly (it weighs even and odd tiles alike).
+VKFX_INLINE float rayJitter(uvec2 pixel, float startOffset, uint tileSize, bool spreadOverTiles,
                             uint mode) {
   if (mode == 0u) return 0.5f;
   const uint k = max(tileSize, 1u);
-  const float refresh = halton((temporalIndex / (k * k)) % 64u + 1u, 2u);
   const float tiles = spreadOverTiles ? bayer2x2(pixel / k) : 0.0f;
-  return fract(bayer4x4(pixel) + refresh + tiles);
+  return fract(bayer4x4(pixel) + startOffset + tiles);
 }
 
 // Marches one view ray. `rayDirection` is a unit world-space vector (y up), `sceneDistance`
 // the distance to the host's geometry along it (kInfiniteDistance for sky), `jitter` in [0, 1)
-// places each step's sample in its step and rounds the noise's level of detail.
+// places each step's sample in its step and rounds the noise's level of detail, `lightRandom`
+// places the light samples (lightJitter()).
 VKFX_INLINE MarchResult marchClouds(vec3 rayDirection, float sceneDistance, float jitter,
-                                    IN(CloudUniforms) u, IN(MarchOptions) o) {
+                                    vec3 lightRandom, IN(CloudUniforms) u, IN(MarchOptions) o) {
   MarchResult r;
   r.radiance = vec3(0.0f);
   r.transmittance = 1.0f;
@@ -350,7 +374,7 @@ VKFX_INLINE MarchResult marchClouds(vec3 rayDirection, float sceneDistance, floa
     }
     CLOUDS_WHEN(field.sigmaT > 0.0f) {
       const float tau = lightOpticalDepth(flatOffset, sampleAltitude, sampleDistance, jitter,
-                                          o.lightSteps, u, r.lightSamples);
+                                          o.lightSteps, lightRandom, u, r.lightSamples);
       const float sunLight = terrainSunLight(flatOffset, sampleAltitude);
       const vec3 light = sampleRadiance(tau, sunLight, phases, field.profile, field.heightFraction,
                                         u, o.multipleScattering);

@@ -106,6 +106,21 @@ VKFX_INLINE float halton(uint index, uint base) {
   return result;
 }
 
+// Where the rays of one round of refreshes start in their first step, in [0, 1): a Halton
+// sequence over the rounds (a pixel is refreshed once per round of k x k frames). With temporal
+// upsampling a trace pixel's refreshes take turns over the `streams` output pixels it covers
+// (round % streams picks the output pixel, round / streams counts its visits), and each output
+// pixel keeps the mean of its own samples: so each runs the sequence over its own visits,
+// shifted by its own point of the same sequence, and both an output pixel's samples and each
+// round of visits are spread over [0, 1). (One sequence over the rounds gave an output pixel
+// the points 4 indices apart, whose two lowest bits agree: all its samples started within
+// [1/2, 3/4) of a step, and their mean kept the error of where they started.) `streams` 1: one
+// sequence over the rounds. The first round starts mid-step: a single frame is a midpoint rule.
+VKFX_INLINE float refreshStartOffset(uint round, uint streams) {
+  const uint s = max(streams, 1u);
+  return fract(halton((round / s) % 64u, 2u) + halton(round % s, 2u) + 0.5f);
+}
+
 // 2x2 Bayer threshold in [0, 1) for a pixel: (0, 0) 1/8, (1, 1) 3/8, (1, 0) 5/8, (0, 1) 7/8.
 VKFX_INLINE float bayer2x2(uvec2 pixel) {
   const uint v = (pixel.x ^ pixel.y) & 1u;

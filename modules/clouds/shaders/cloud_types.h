@@ -255,8 +255,9 @@ struct CloudUniforms {
   float emptySamplesToCoarse;
   uint temporalIndex;  // frames since the history was reset: jitter and update order
   uint maxViewSteps;
-  uint flags;  // kFlag*
-  uint padding7;
+  uint flags;            // kFlag*
+  float rayStartOffset;  // [0, 1): where this frame's rays start in their first step, before
+                         //   each pixel's own term (rayJitter(); refreshStartOffset())
 
   // Resolution and temporal reconstruction.
   uvec2 traceExtent;    // px
@@ -271,7 +272,8 @@ struct CloudUniforms {
   vec2 subpixelOffset;         // this frame's offset of the rays inside their pixels (trace pixels;
                                //   jitter mode 2: accumulating frames supersamples)
   float upsamplingMaxSamples;  // temporal upsampling: own samples averaged before a running mean
-  float padding8;
+  uint lightRound;             // the round of refreshes this frame's rays belong to: it rotates
+                               //   their light samples' cone (lightJitter())
 
   // The host's aerial perspective (vkfx/aerial_perspective.glsl), when it gives one.
   vec3 aerialPerspectiveScale;    // multiplies the volume's radiance

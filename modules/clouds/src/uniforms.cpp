@@ -15,6 +15,18 @@ double wrapToTile(double x, double tile) {
   return r < 0.0 ? r + tile : r;
 }
 
+namespace {
+
+// A frame without history inside the layer, made from a sparse pattern of its own rays (the
+// tent of reconstruct.comp). When every trace pixel is marched (a tile of 1: the Reference,
+// or reuse off at an update interval of 1) each pixel is its own ray, and a tent would only
+// blur it.
+bool rebuiltInsideLayer(const TemporalFrame& temporal) {
+  return temporal.insideLayer && !temporal.useHistory && temporal.tileSize > 1;
+}
+
+}  // namespace
+
 shader::CloudUniforms buildUniforms(const FrameInputs& in, const Settings& s,
                                     const UniformContext& context) {
   shader::CloudUniforms u{};
@@ -114,9 +126,7 @@ shader::CloudUniforms buildUniforms(const FrameInputs& in, const Settings& s,
   u.maxViewSteps = s.maxViewSteps;
   u.flags = (context.reversedZ ? shader::kFlagReversedZ : 0u) |
             (context.hasDepth ? shader::kFlagHasDepth : 0u) |
-            (context.temporal.insideLayer && !context.temporal.useHistory
-                 ? shader::kFlagRebuiltInsideLayer
-                 : 0u);
+            (rebuiltInsideLayer(context.temporal) ? shader::kFlagRebuiltInsideLayer : 0u);
 
   u.traceExtent = glm::uvec2(context.traceExtent.width, context.traceExtent.height);
   u.outputExtent = glm::uvec2(context.fullExtent.width, context.fullExtent.height);
@@ -161,19 +171,24 @@ shader::CloudUniforms buildUniforms(const FrameInputs& in, const Settings& s,
   // rays while it accumulates: a frame rebuilt from its own samples wants them centred.
   const bool subpixel =
       s.jitter == Jitter::BayerHaltonSubpixel || context.temporal.useOutputHistory;
+  const std::uint32_t m = s.traceScale <= 0.25f ? 4u : s.traceScale <= 0.5f ? 2u : 1u;
+  // The frame after a reset (index 0) marches without accumulating: the rounds start at
+  // index 1, so that its pixels' next refresh (index k * k) is still in round 0.
+  const std::uint32_t index = context.temporal.useOutputHistory
+                                  ? std::max(context.temporal.temporalIndex, 1u) - 1u
+                                  : context.temporal.temporalIndex;
+  const std::uint32_t round = index / (k * k);
   if (subpixel) {
-    const std::uint32_t m = s.traceScale <= 0.25f ? 4u : s.traceScale <= 0.5f ? 2u : 1u;
-    // The frame after a reset (index 0) marches without accumulating: the rounds start at
-    // index 1, so that its pixels' next refresh (index k * k) is still in round 0.
-    const std::uint32_t index = context.temporal.useOutputHistory
-                                    ? std::max(context.temporal.temporalIndex, 1u) - 1u
-                                    : context.temporal.temporalIndex;
-    const std::uint32_t round = index / (k * k);
     const glm::uvec2 outputPixel = tilePhase(m, round);
     const std::uint32_t n = (round / (m * m)) % 64u + 1u;
     const glm::vec2 inside(shader::halton(n, 2u), shader::halton(n, 3u));
     u.subpixelOffset = (glm::vec2(outputPixel) + inside) / float(m) - 0.5f;
   }
+  // The rays' start offset moves along the rounds too; while the output pixels keep their own
+  // samples, along each one's own visits (refreshStartOffset()).
+  u.rayStartOffset =
+      shader::refreshStartOffset(round, context.temporal.useOutputHistory ? m * m : 1u);
+  u.lightRound = round;
   u.upsamplingMaxSamples = static_cast<float>(s.upsamplingMaxSamples);
   if (in.aerialPerspective.view != VK_NULL_HANDLE) {
     u.aerialPerspectiveScale = in.aerialPerspective.radianceScale;

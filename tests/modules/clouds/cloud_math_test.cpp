@@ -205,7 +205,8 @@ TEST(CloudMath, RayJitterIsStratifiedOverRefreshesTilesAndFrames) {
       // A pixel refreshed every k * k frames: 16 refreshes spread over [0, 1).
       std::vector<float> refreshes;
       for (uint round = 0; round < 16; ++round) {
-        refreshes.push_back(rayJitter(uvec2(5u, 2u), round * k * k + 3u, k, spread, mode));
+        refreshes.push_back(
+            rayJitter(uvec2(5u, 2u), refreshStartOffset(round, 1u), k, spread, mode));
       }
       EXPECT_LE(widestGap(refreshes), 1.5f / 16.0f) << "tile " << k;
     }
@@ -215,7 +216,8 @@ TEST(CloudMath, RayJitterIsStratifiedOverRefreshesTilesAndFrames) {
   for (const uint k : {1u, 4u}) {
     std::vector<float> tile;
     for (uint i = 0; i < 16; ++i)
-      tile.push_back(rayJitter(uvec2(8u + i % 4u, 4u + i / 4u), i * k * k / 16u, k, false, mode));
+      tile.push_back(
+          rayJitter(uvec2(8u + i % 4u, 4u + i / 4u), refreshStartOffset(0u, 1u), k, false, mode));
     EXPECT_LE(widestGap(tile), 1.5f / 16.0f) << "tile " << k;
   }
   // Inside the layer a frame without history marches one pixel in 2 x 2: its rays spread over
@@ -226,16 +228,47 @@ TEST(CloudMath, RayJitterIsStratifiedOverRefreshesTilesAndFrames) {
   std::vector<float> outside;
   for (uint y = 0; y < 2; ++y) {
     for (uint x = 0; x < 2; ++x) {
-      inside.push_back(rayJitter(uvec2(x, y) * 2u + 1u, 7u, 2u, true, mode));
-      outside.push_back(rayJitter(uvec2(x, y) * 4u + 1u, 7u, 4u, false, mode));
+      inside.push_back(
+          rayJitter(uvec2(x, y) * 2u + 1u, refreshStartOffset(1u, 1u), 2u, true, mode));
+      outside.push_back(
+          rayJitter(uvec2(x, y) * 4u + 1u, refreshStartOffset(0u, 1u), 4u, false, mode));
     }
   }
   EXPECT_LE(widestGap(inside), 0.375f);
-  EXPECT_EQ(rayJitter(uvec2(5u, 3u) * 2u, 7u, 2u, true, mode),
-            rayJitter(uvec2(7u, 1u) * 2u, 7u, 2u, true, mode));
+  EXPECT_EQ(rayJitter(uvec2(5u, 3u) * 2u, 0.25f, 2u, true, mode),
+            rayJitter(uvec2(7u, 1u) * 2u, 0.25f, 2u, true, mode));
   EXPECT_EQ(*std::min_element(outside.begin(), outside.end()),
             *std::max_element(outside.begin(), outside.end()));
-  EXPECT_EQ(rayJitter(uvec2(3u, 1u), 9u, 4u, false, 0u), 0.5f) << "no jitter: the step's middle";
+  EXPECT_EQ(rayJitter(uvec2(3u, 1u), 0.3f, 4u, false, 0u), 0.5f) << "no jitter: the step's middle";
+}
+
+// With temporal upsampling each output pixel keeps the mean of its own samples, which a trace
+// pixel's refreshes visit in turn: the rays' start offsets spread over [0, 1) along each output
+// pixel's own visits, and over each round of visits to all of them.
+TEST(CloudMath, RayStartOffsetsAreStratifiedOverEachOutputPixelsOwnSamples) {
+  for (const uint streams : {1u, 4u, 16u}) {
+    for (uint stream = 0; stream < streams; ++stream) {
+      std::vector<float> own;
+      for (uint visit = 0; visit < 4; ++visit) {
+        own.push_back(refreshStartOffset(visit * streams + stream, streams));
+      }
+      EXPECT_LE(widestGap(own), 0.25f + 1e-6f) << streams << " streams, stream " << stream;
+    }
+    for (uint visit = 0; visit < 4; ++visit) {
+      std::vector<float> round;
+      for (uint stream = 0; stream < streams; ++stream) {
+        round.push_back(refreshStartOffset(visit * streams + stream, streams));
+      }
+      EXPECT_LE(widestGap(round), 1.0f / float(streams) + 1e-6f) << streams << " streams";
+    }
+  }
+  // One sequence over the rounds, as before: an output pixel's four own samples started within
+  // a quarter of a step.
+  std::vector<float> oneSequence;
+  for (uint visit = 0; visit < 4; ++visit) {
+    oneSequence.push_back(refreshStartOffset(visit * 4u, 1u));
+  }
+  EXPECT_GT(widestGap(oneSequence), 0.5f);
 }
 
 // The light cloud bases get from below (groundLitBaseRadiance()): the ground's radiance over

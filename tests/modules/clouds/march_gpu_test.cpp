@@ -246,6 +246,56 @@ TEST_F(CloudMarch, MatchesTheCpuReferenceOnCanonicalViews) {
   }
 }
 
+// Inside the layer a frame without history is rebuilt from a sparse pattern of rays by a tent
+// (reconstruct.comp); when every pixel is marched (a tile of 1, as the Reference does) each
+// pixel is its own ray, and the tent would only blur the clouds' edges: the output is the march.
+TEST_F(CloudMarch, AFrameMarchedAtEveryPixelInsideTheLayerIsItsOwnRays) {
+  const VkExtent2D extent{128, 72};
+  CloudView inside;
+  inside.position.y = 2300.0;
+  inside.pitchDegrees = 5.0;
+  clouds::Settings look;
+  look.coverage = 0.55f;
+  const clouds::Settings settings = clouds::tools::singleFrame(look);
+  const clouds::tools::CloudFrame gpu = harness().render(inside, settings, extent);
+  ASSERT_TRUE(harness().context().lastFrameReport().insideLayer);
+  const clouds::tools::CloudFrame cpu = clouds::tools::renderCpuReference(
+      clouds::tools::readTextures(harness()), impl().lastUniforms(), settings, {});
+  float peak = 1.0f;
+  for (const glm::vec4& p : cpu.radiance) peak = std::max({peak, p.r, p.g, p.b});
+  EXPECT_GE(clouds::tools::psnr(gpu.radiance, cpu.radiance, peak), 40.0);
+}
+
+// The light integral is one integral (the extinction along the cone towards the sun), which more
+// light steps estimate with less noise: inside a dense cloud, where a pixel shows what its near
+// samples are lit by, the Reference averaged over 8 frames comes closer to itself with 64 light
+// steps as its steps grow (measured: 39.2, 44.5 and 50.0 dB), and its own 24 are within 47 dB of
+// it. (With a fixed hashed cone kernel per step count each count was its own cone: 6, 12 and 24
+// steps were 35.2, 31.8 and 27.0 dB from 64.)
+TEST_F(CloudMarch, TheReferencesLightIntegralConvergesAsItsStepsGrow) {
+  const VkExtent2D extent{96, 54};
+  CloudView inside;
+  inside.position.y = 2300.0;
+  inside.pitchDegrees = 0.0;
+  inside.yawDegrees = 270.0;
+  clouds::Settings look;
+  look.coverage = 0.85f;
+  const auto render = [&](std::uint32_t steps) {
+    clouds::Settings s = clouds::referenceSettings(look);
+    s.lightSteps = steps;
+    return harness().renderAveraged(inside, s, extent, 8);
+  };
+  const clouds::tools::CloudFrame converged = render(64);
+  double previous = 0.0;
+  for (const std::uint32_t steps : {6u, 12u, 24u}) {
+    const double psnr = clouds::tools::psnr(render(steps).radiance, converged.radiance, 1.0);
+    std::printf("%u light steps: %.1f dB from 64\n", steps, psnr);
+    EXPECT_GT(psnr, previous + 2.0) << steps << " light steps";
+    previous = psnr;
+  }
+  EXPECT_GE(previous, 47.0) << "the Reference's 24 light steps";
+}
+
 // Counts non-finite, negative and out-of-range outputs of the last render with a shader.
 struct InvalidCounts {
   std::uint32_t nonFinite, negative, transmittanceOutOfRange, pixels;

@@ -123,9 +123,10 @@ CloudFrame renderCpuReference(const CpuTextures& textures, const CloudUniforms& 
       const vec3 direction = pixelRayDirection(centre, extent, u);
       const float sceneDistance =
           sceneDistanceFromDepth(depth.empty() ? 0.0f : depth[i], centre, extent, u);
-      const float jitter = rayJitter(pixel, u.temporalIndex, u.tileSize,
+      const float jitter = rayJitter(pixel, u.rayStartOffset, u.tileSize,
                                      (u.flags & kFlagRebuiltInsideLayer) != 0u, variant.jitter);
-      const MarchResult r = marchClouds(direction, sceneDistance, jitter, u, options);
+      const MarchResult r = marchClouds(direction, sceneDistance, jitter,
+                                        lightJitter(u.lightRound, variant.jitter), u, options);
       frame.radiance[i] = vec4(r.radiance, r.transmittance);
       frame.depth[i] = vec2(r.frontDepth, r.weightedDepth);
     }

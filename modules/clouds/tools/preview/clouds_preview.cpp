@@ -46,7 +46,10 @@ int main(int argc, char** argv) {
     view.sunAzimuthDegrees = get("sunAzimuth", 200);
     view.groundDepth = get("ground", 0) != 0;
     view.timeSeconds = get("time", 0);
+    // The preset first (quality=0..3), then every key given overrides its field.
     clouds::Settings s;
+    if (kv.count("quality"))
+      s = clouds::settingsFor(static_cast<clouds::Quality>(get("quality", 2)), s);
     s.coverage = static_cast<float>(get("coverage", s.coverage));
     s.cloudType = static_cast<float>(get("type", s.cloudType));
     s.extinctionPerMetre = static_cast<float>(get("extinction", s.extinctionPerMetre));
@@ -68,19 +71,29 @@ int main(int argc, char** argv) {
     s.layerTopMetres = static_cast<float>(get("top", s.layerTopMetres));
     s.viewStepMetres = static_cast<float>(get("step", s.viewStepMetres));
     s.anvilBias = static_cast<float>(get("anvil", s.anvilBias));
-    if (kv.count("quality"))
-      s = clouds::settingsFor(static_cast<clouds::Quality>(get("quality", 2)), s);
     if (kv.count("detailDistance")) s.detailDistanceMetres = float(get("detailDistance", 0));
     if (kv.count("cutoff")) s.transmittanceCutoff = float(get("cutoff", 0));
     if (kv.count("maxSteps")) s.maxViewSteps = std::uint32_t(get("maxSteps", 0));
     if (kv.count("cheap")) s.cheapSampling = get("cheap", 1) != 0;
+    if (kv.count("detail")) s.detail = get("detail", 1) != 0;
+    if (kv.count("emptySpace")) s.emptySpaceSkipping = get("emptySpace", 1) != 0;
+    if (kv.count("noiseLod")) s.noiseLevelOfDetail = get("noiseLod", 1) != 0;
+    if (kv.count("upsampling")) s.temporalUpsampling = get("upsampling", 1) != 0;
     if (kv.count("traceScale")) s.traceScale = float(get("traceScale", 0.5));
     if (kv.count("interval")) s.updateInterval = std::uint32_t(get("interval", 16));
     if (kv.count("growth")) s.viewStepGrowth = float(get("growth", 0.004));
-    if (get("reference", 0) != 0) s = clouds::referenceSettings(s);
+    if (get("reference", 0) != 0) {
+      s = clouds::referenceSettings(s);
+      if (kv.count("referenceLightSteps"))
+        s.lightSteps = std::uint32_t(get("referenceLightSteps", 24));
+    }
     const auto start = std::chrono::steady_clock::now();
+    // average=N: the mean of N frames after a cut (the Reference's supersampling), else the
+    // last of `frames` frames.
     const clouds::tools::CloudFrame frame =
-        harness.render(view, s, extent, static_cast<std::uint32_t>(get("frames", 1)));
+        kv.count("average")
+            ? harness.renderAveraged(view, s, extent, static_cast<std::uint32_t>(get("average", 8)))
+            : harness.render(view, s, extent, static_cast<std::uint32_t>(get("frames", 1)));
     const double ms =
         std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
     engine::assets::writePng(
