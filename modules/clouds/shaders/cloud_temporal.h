@@ -74,21 +74,51 @@ VKFX_INLINE vec2 unpackCloudDepth(uvec4 texel) {
   return vec2(uintBitsToFloat(texel.z), uintBitsToFloat(texel.w));
 }
 
-// The output-resolution history of temporal upsampling is packed the same way, except that
-// the four low mantissa bits of the weighted depth carry how many of the pixel's own samples
-// it holds (0 to 15; a relative change of the depth under 2^-19, 2 cm at 10 km).
-VKFX_INLINE uvec4 packOutputHistory(vec4 radiance, vec2 depth, uint ownSamples) {
-  uvec4 texel = packCloudSample(radiance, depth);
-  texel.w = (texel.w & ~15u) | min(ownSamples, 15u);
-  return texel;
+// Shared-exponent RGB (the RGB9E5 of texture formats): three 9-bit mantissas and one 5-bit
+// exponent in 32 bits, for non-negative radiance up to 65408; each channel to within 1/512 of
+// the largest. Round trips are exact: a value read back packs to the same bits.
+VKFX_INLINE uint packSharedExponent(vec3 rgb) {
+  const float largest = 65408.0f;  // (2^9 - 1) / 2^9 x 2^(31 - 15)
+  const vec3 c = clamp(rgb, vec3(0.0f), vec3(largest));
+  const float maximum = max(c.x, max(c.y, c.z));
+  int exponent = max(-16, int(floor(log2(max(maximum, 1e-30f))))) + 16;
+  if (floor(maximum / exp2(float(exponent - 24)) + 0.5f) >= 512.0f) exponent += 1;
+  const vec3 mantissa = floor(c / exp2(float(exponent - 24)) + 0.5f);
+  return uint(mantissa.x) | (uint(mantissa.y) << 9u) | (uint(mantissa.z) << 18u) |
+         (uint(exponent) << 27u);
 }
 
-VKFX_INLINE uint ownSampleCount(uvec4 texel) {
-  return texel.w & 15u;
+VKFX_INLINE vec3 unpackSharedExponent(uint texel) {
+  const vec3 mantissa =
+      vec3(float(texel & 511u), float((texel >> 9u) & 511u), float((texel >> 18u) & 511u));
+  return mantissa * exp2(float(int(texel >> 27u) - 24));
 }
 
-VKFX_INLINE vec2 unpackOutputHistoryDepth(uvec4 texel) {
-  return vec2(uintBitsToFloat(texel.z), uintBitsToFloat(texel.w & ~15u));
+// The output-resolution history of temporal upsampling: the mean of a pixel's own samples, the
+// nearest front depth among them, and how many there are, in one RG32UI texel (8 bytes: on
+// lavapipe an image store costs about in proportion to its bytes, and this one is written at
+// every output pixel of every frame): x = the radiance in shared-exponent RGB, y = the front
+// depth as a half float (m, up to 65 km) | the transmittance in 12 bits << 16 | the own-sample
+// count (0 to 15) << 28.
+VKFX_INLINE uvec2 packOutputHistory(vec4 radiance, float frontDepth, uint ownSamples) {
+  const uint transmittance = uint(saturate(radiance.w) * 4095.0f + 0.5f);
+  return uvec2(packSharedExponent(vec3(radiance)),
+               (packHalf2x16(vec2(min(frontDepth, 65000.0f), 0.0f)) & 0xffffu) |
+                   (transmittance << 16u) | (min(ownSamples, 15u) << 28u));
+}
+
+VKFX_INLINE vec4 unpackOutputHistory(uvec2 texel) {
+  return vec4(unpackSharedExponent(texel.x), float((texel.y >> 16u) & 0xfffu) / 4095.0f);
+}
+
+// The front depth (m) kept with the own samples; 0 without cloud, NaN when the texel is not one
+// this pass wrote (a poisoned history is caught by it).
+VKFX_INLINE float outputHistoryFrontDepth(uvec2 texel) {
+  return unpackHalf2x16(texel.y & 0xffffu).x;
+}
+
+VKFX_INLINE uint ownSampleCount(uvec2 texel) {
+  return texel.y >> 28u;
 }
 
 // Reprojection: where points along this frame's view ray were on last frame's image. A point

@@ -24,7 +24,7 @@
 // 8 the host's aerial perspective (3D); 9 the god rays' light (a quarter of the output res);
 // 10 the clouds' lightning glow (trace res).
 // Outputs: 3 RGBA16F radiance + transmittance, 4 RG32F depths (output res); 7 this frame's
-// output history (output res, packed with the own-sample count).
+// output history (output res, RG32UI: packOutputHistory()).
 // References: Karis 2014 (temporal accumulation, neighbourhood clamp); Schneider 2015.
 #extension GL_GOOGLE_include_directive : require
 #include "cloud_temporal.h"
@@ -47,8 +47,8 @@ layout(binding = kUpsampleHostDepth) uniform sampler2D hostDepth;
 layout(binding = kUpsampleRadianceOut, rgba16f) uniform writeonly image2D outRadiance;
 layout(binding = kUpsampleDepthOut, rg32f) uniform writeonly image2D outDepth;
 layout(binding = kUpsampleFresh, rgba32ui) uniform readonly uimage2D freshSamples;
-layout(binding = kUpsampleHistory, rgba32ui) uniform readonly uimage2D outputHistory;
-layout(binding = kUpsampleHistoryOut, rgba32ui) uniform writeonly uimage2D outputHistoryOut;
+layout(binding = kUpsampleHistory, rg32ui) uniform readonly uimage2D outputHistory;
+layout(binding = kUpsampleHistoryOut, rg32ui) uniform writeonly uimage2D outputHistoryOut;
 layout(binding = kUpsampleAerialPerspective) uniform sampler3D aerialPerspective;
 layout(binding = kUpsampleGodRayLight) uniform sampler2D godRayLight;
 layout(binding = kUpsampleLightningGlow) uniform sampler2D lightningGlow;
@@ -70,9 +70,9 @@ void occlude(float scene, inout vec4 radiance, inout vec2 depth) {
 }
 
 // Last frame's output history at `position` (output pixels): radiance bilinear over the taps
-// that hold own samples (a tap without is a placeholder, not "no cloud"), depths and the
-// own-sample count of the valid tap with the largest weight; no count when none is valid.
-vec4 outputHistoryAt(vec2 position, out vec2 depth, out uint ownSamples) {
+// that hold own samples (a tap without is a placeholder, not "no cloud"), the front depth and
+// the own-sample count of the valid tap with the largest weight; no count when none is valid.
+vec4 outputHistoryAt(vec2 position, out float front, out uint ownSamples) {
   const vec2 p = position - 0.5f;
   const ivec2 i = ivec2(floor(p));
   const vec2 f = p - floor(p);
@@ -80,19 +80,19 @@ vec4 outputHistoryAt(vec2 position, out vec2 depth, out uint ownSamples) {
   vec4 radiance = vec4(0.0f);
   float weightSum = 0.0f;
   float bestWeight = 0.0f;
-  depth = vec2(0.0f);
+  front = 0.0f;
   ownSamples = 0u;
   for (int tap = 0; tap < 4; ++tap) {
     const ivec2 offset = ivec2(tap & 1, tap >> 1);
-    const uvec4 h = imageLoad(outputHistory, clamp(i + offset, ivec2(0), last));
+    const uvec2 h = imageLoad(outputHistory, clamp(i + offset, ivec2(0), last)).xy;
     const uint count = ownSampleCount(h);
     const float bilinear = (offset.x == 1 ? f.x : 1.0f - f.x) * (offset.y == 1 ? f.y : 1.0f - f.y);
     const float w = count > 0u ? bilinear : 0.0f;
-    radiance += w * unpackCloudRadiance(h);
+    radiance += w * unpackOutputHistory(h);
     weightSum += w;
     if (w > bestWeight) {
       bestWeight = w;
-      depth = unpackOutputHistoryDepth(h);
+      front = outputHistoryFrontDepth(h);
       ownSamples = count;
     }
   }
@@ -180,21 +180,22 @@ void main() {
   // The trace pixel under this one: this frame's fresh sample is there when its ray went
   // through this pixel.
   const uvec2 trace = min(uvec2((vec2(pixel) + 0.5f) * scale), u.traceExtent - 1u);
-  // The mean of this pixel's own samples so far, and how many there are.
+  // The mean of this pixel's own samples so far, the nearest front depth among them, and how
+  // many there are.
   vec4 own = vec4(0.0f, 0.0f, 0.0f, 1.0f);
-  vec2 ownDepth = vec2(0.0f);
+  float ownFront = 0.0f;
   uint ownSamples = 0u;
   // (Every path of a shader costs on lavapipe, which runs both sides of a branch for all
   // lanes: what a frame does not need is compiled out by specialization instead.)
   if (kOutputHistory != 0u) {
     vec4 history;
-    vec2 historyDepth;
+    float historyFront;
     uint historySamples;
     bool certain = true;
     if (kOutputHistory == 1u) {
-      const uvec4 here = imageLoad(outputHistory, ivec2(pixel));
-      history = unpackCloudRadiance(here);
-      historyDepth = unpackOutputHistoryDepth(here);
+      const uvec2 here = imageLoad(outputHistory, ivec2(pixel)).xy;
+      history = unpackOutputHistory(here);
+      historyFront = outputHistoryFrontDepth(here);
       historySamples = ownSampleCount(here);
     } else {
       // Reprojected through the cloud's weighted depth (as the trace history is,
@@ -207,7 +208,7 @@ void main() {
           unpackCloudDepth(imageLoad(traceSamples, ivec2(trace))), vec2(full), u);
       certain = reprojected.onScreen &&
                 reprojected.spread * scale.x < 0.5f * u.historyClampSpreadPixels;
-      history = outputHistoryAt(reprojected.position, historyDepth, historySamples);
+      history = outputHistoryAt(reprojected.position, historyFront, historySamples);
       // Something moved (the camera, or the clouds' detail with the wind): the own samples
       // may be stale; keep them within the range of this frame's trace pixels around.
       const vec4 margin = (hi - lo) * u.historyClampMargin + vec4(0.002f);
@@ -215,10 +216,10 @@ void main() {
     }
     // Kept where no geometry now stands in front of it and it is finite; anything else starts
     // again from the spatial estimate.
-    if (certain && historySamples > 0u && !behindGeometry(scene, historyDepth) &&
-        finiteVec4(history) && !any(isnan(historyDepth))) {
+    if (certain && historySamples > 0u && !behindGeometry(scene, vec2(historyFront, 0.0f)) &&
+        finiteVec4(history) && !isnan(historyFront)) {
       own = history;
-      ownDepth = historyDepth;
+      ownFront = historyFront;
       ownSamples = historySamples;
     }
 
@@ -234,11 +235,8 @@ void main() {
       if (!behindGeometry(scene, d) && finiteVec4(r) && !any(isnan(d))) {
         // The mean of the own samples so far, then a running mean over the last few.
         const float weight = 1.0f / min(float(ownSamples) + 1.0f, u.upsamplingMaxSamples);
-        DepthBlend blend = depthBlendStart();
-        depthBlendAdd(blend, 1.0f - weight, own.a, ownDepth);
-        depthBlendAdd(blend, weight, r.a, d);
         own = mix(own, r, weight);
-        ownDepth = depthBlendResult(blend);
+        if (d.x > 0.0f) ownFront = ownFront > 0.0f ? min(ownFront, d.x) : d.x;
         ownSamples = min(ownSamples + 1u, uint(u.upsamplingMaxSamples));
       }
     }
@@ -246,14 +244,17 @@ void main() {
 
   // The result: the own samples' mean, blended with the spatial estimate until two of them
   // vouch for it. A single ray is a noisy point sample: shown alone next to pixels without
-  // one, the first round of own samples would read as a dither pattern.
+  // one, the first round of own samples would read as a dither pattern. The history keeps the
+  // own samples' front only: their weighted depth is this frame's trace's.
   const float trust = min(float(ownSamples) * 0.5f, 1.0f);
+  const vec4 radiance = mix(spatial, own, trust);
   DepthBlend blend = depthBlendStart();
   depthBlendAdd(blend, 1.0f - trust, spatial.a, spatialDepth);
-  depthBlendAdd(blend, trust, own.a, ownDepth);
-  const vec4 radiance = mix(spatial, own, trust);
+  const float ownWeighted = spatialDepth.y > 0.0f ? spatialDepth.y : ownFront;
+  depthBlendAdd(blend, trust, own.a, vec2(ownFront, ownWeighted));
   const vec2 depth = depthBlendResult(blend);
-  imageStore(outputHistoryOut, ivec2(pixel), packOutputHistory(own, ownDepth, ownSamples));
+  const uvec2 history = packOutputHistory(own, ownFront, ownSamples);
+  imageStore(outputHistoryOut, ivec2(pixel), uvec4(history, 0u, 0u));
   imageStore(outRadiance, ivec2(pixel), outputRadiance(pixel, radiance, depth, scene));
   imageStore(outDepth, ivec2(pixel), vec4(depth, 0.0f, 0.0f));
 }

@@ -16,9 +16,9 @@ using detail::Program;
 namespace {
 
 // The storage formats the module's images use (module_images.cpp, shaders' format qualifiers).
-constexpr VkFormat kStorageFormats[] = {VK_FORMAT_R8G8B8A8_UNORM, VK_FORMAT_R16G16B16A16_SFLOAT,
-                                        VK_FORMAT_R32G32_SFLOAT, VK_FORMAT_R32_SFLOAT,
-                                        VK_FORMAT_R32G32B32A32_UINT};
+constexpr VkFormat kStorageFormats[] = {VK_FORMAT_R8G8B8A8_UNORM,    VK_FORMAT_R16G16B16A16_SFLOAT,
+                                        VK_FORMAT_R32G32_SFLOAT,     VK_FORMAT_R32_SFLOAT,
+                                        VK_FORMAT_R32G32B32A32_UINT, VK_FORMAT_R32G32_UINT};
 
 const detail::DeviceContext& checkedDevice(const detail::DeviceContext& device) {
   for (VkFormat format : kStorageFormats) {

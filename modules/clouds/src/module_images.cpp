@@ -13,6 +13,9 @@ constexpr VkFormat kDepthOutputFormat = VK_FORMAT_R32G32_SFLOAT;
 // Trace-resolution samples: radiance, transmittance and both depths packed in one texel
 // (cloud_temporal.h). The output-resolution history packs the same plus a sample count.
 constexpr VkFormat kSampleFormat = VK_FORMAT_R32G32B32A32_UINT;
+// Temporal upsampling's output-resolution history, written at every output pixel: 8 bytes
+// (packOutputHistory()).
+constexpr VkFormat kOutputHistoryFormat = VK_FORMAT_R32G32_UINT;
 // Every image can be read back (the module's tests and tools); outputs also take clears (a
 // provably clear sky is cleared, not marched) and histories transfers in (tests poison them).
 constexpr VkImageUsageFlags kStorage = VK_IMAGE_USAGE_STORAGE_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT;
@@ -132,10 +135,10 @@ bool ModuleImages::grow(const ImageSizes& sizes, std::optional<std::uint64_t> la
   if (sizes.upsampling && !upsamplingFits) {
     const VkExtent3D e = extent3(grown(outputHistory[0], sizes.output));
     for (std::uint32_t i = 0; i < 2; ++i) {
-      replace(
-          outputHistory[i],
-          make(VK_IMAGE_TYPE_2D, kSampleFormat, e, kHistory, "output history " + std::to_string(i)),
-          lastUse);
+      replace(outputHistory[i],
+              make(VK_IMAGE_TYPE_2D, kOutputHistoryFormat, e, kHistory,
+                   "output history " + std::to_string(i)),
+              lastUse);
     }
     historyLost = true;
   }

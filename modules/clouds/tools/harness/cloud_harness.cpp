@@ -385,11 +385,12 @@ void CloudHarness::poisonHistory() {
                                   VK_ACCESS_2_MEMORY_READ_BIT | VK_ACCESS_2_MEMORY_WRITE_BIT};
     const gfx::ImageState transfer{VK_IMAGE_LAYOUT_GENERAL, VK_PIPELINE_STAGE_2_CLEAR_BIT,
                                    VK_ACCESS_2_TRANSFER_WRITE_BIT};
-    // Packed samples (cloud_temporal.h): half-float NaN radiance, float NaN depths.
+    // Packed samples (cloud_temporal.h): half-float NaN radiance, float NaN depths. The output
+    // history (RG32UI) takes the first two words: its front depth a half-float NaN, and its top
+    // bits an own-sample count of 7, so the poisoned texels claim to hold samples and must be
+    // caught as not finite.
     VkClearColorValue nan{};
     nan.uint32[0] = nan.uint32[1] = 0x7E007E00u;
-    // The weighted depth's low bits are the output history's own-sample count (3 here), so
-    // the poisoned texels claim to hold samples and must be caught as not finite.
     nan.uint32[2] = 0x7FC00000u;
     nan.uint32[3] = 0x7FC00003u;
     const clouds::detail::ModuleImages& images = moduleImages();
