@@ -58,15 +58,14 @@ struct CoarseShape {
   float density;  // [0, 1]: the profile scaled by the coverage
 };
 
-VKFX_INLINE CoarseShape coarseShape(vec4 shapeNoise, float heightFraction, IN(WeatherSample) w,
+// `shapeNoise`: the shape noise's value (shapeNoiseValue()).
+VKFX_INLINE CoarseShape coarseShape(float shapeNoise, float heightFraction, IN(WeatherSample) w,
                                     float anvilBias) {
   CoarseShape shape;
   shape.profile = 0.0f;
   shape.density = 0.0f;
   if (heightFraction < 0.0f || heightFraction > 1.0f) return shape;
-  const float lowFrequencyFbm =
-      dot(vec3(shapeNoise.y, shapeNoise.z, shapeNoise.w), vec3(0.625f, 0.25f, 0.125f));
-  float base = remap(shapeNoise.x, lowFrequencyFbm - 1.0f, 1.0f, 0.0f, 1.0f);
+  float base = shapeNoise;
   base *= heightGradient(heightFraction, w.type);
   // Anvil: raise coverage towards the top of the layer.
   const float anvilExponent =
@@ -78,11 +77,10 @@ VKFX_INLINE CoarseShape coarseShape(vec4 shapeNoise, float heightFraction, IN(We
   return shape;
 }
 
-// Erodes a base density by the high-frequency detail noise (wispy low, billowy high).
-VKFX_INLINE float erodeDensity(float base, vec4 detailNoise, float heightFraction, float erosion) {
-  const float fbm =
-      dot(vec3(detailNoise.x, detailNoise.y, detailNoise.z), vec3(0.625f, 0.25f, 0.125f));
-  const float modifier = mix(fbm, 1.0f - fbm, saturate(heightFraction * 10.0f));
+// Erodes a base density by the high-frequency detail noise (detailNoiseValue(): wispy low,
+// billowy high).
+VKFX_INLINE float erodeDensity(float base, float detailNoise, float heightFraction, float erosion) {
+  const float modifier = mix(detailNoise, 1.0f - detailNoise, saturate(heightFraction * 10.0f));
   return saturate(remap(base, modifier * erosion, 1.0f, 0.0f, 1.0f));
 }
 

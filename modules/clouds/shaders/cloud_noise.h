@@ -132,6 +132,20 @@ VKFX_INLINE vec4 highFrequencyNoiseTexel(vec3 uvw, uint seed) {
               worleyFbm(uvw, 8, seed + 26u), 1.0f);
 }
 
+// What the shape noise texture holds: the base shape of the clouds, in [0, 1], the Perlin-Worley
+// noise remapped by the low-frequency Worley fBm of the other channels (Schneider 2015). Made
+// once per texel when the texture is made, so a sample reads one value, not four channels.
+VKFX_INLINE float shapeNoiseValue(vec4 channels) {
+  const float lowFrequencyFbm =
+      dot(vec3(channels.y, channels.z, channels.w), vec3(0.625f, 0.25f, 0.125f));
+  return saturate(remap(channels.x, lowFrequencyFbm - 1.0f, 1.0f, 0.0f, 1.0f));
+}
+
+// What the detail noise texture holds: the Worley fBm of its three frequencies, in [0, 1].
+VKFX_INLINE float detailNoiseValue(vec4 channels) {
+  return dot(vec3(channels.x, channels.y, channels.z), vec3(0.625f, 0.25f, 0.125f));
+}
+
 // Curl of a periodic 2D potential (Perlin fBm), by central differences; unit-range output
 // encoded as 0.5 + 0.5 * curl in RG. Used to swirl the detail noise.
 VKFX_INLINE vec2 curlNoiseTexel(vec2 uv, float texelSize, uint seed) {

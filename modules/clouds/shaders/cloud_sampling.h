@@ -1,6 +1,6 @@
 // Texture sampling for the cloud model, shared by GPU and CPU. Shaders implement the fetch
-// prototypes with texelFetch on RGBA8 textures; the CPU reference with array lookups of the
-// same (read-back) texels. Filtering is done here, by hand: trilinear from 8 fetches is about
+// prototypes with imageLoad on RGBA8 textures; the CPU reference with array lookups of the
+// same (read-back) texels. Filtering is done here, by hand: trilinear from fetches is about
 // twice as fast as sampler filtering of 3D textures on lavapipe, and it makes GPU and CPU
 // filter identically. Coordinates are in tile units and wrap (the textures tile).
 #ifndef CLOUDS_CLOUD_SAMPLING_H
@@ -35,12 +35,15 @@ VKFX_INLINE int noiseLevel(float footprintMetres, float texelMetres, float dithe
   return clamp(int(floor(lod + dither)), 0, levels - 1);
 }
 
-// The 8 texels around a point of a tiling n^3 texture at one level of its chain (addresses in
-// the chain's image) and the point's place between them.
+// The 3D noises are packed for their filtering: level L's texel (x, y, z) holds in RGBA the
+// level's values at (x, y, z), (x + 1, y, z), (x, y + 1, z) and (x + 1, y + 1, z) (wrapping
+// round the level, which tiles), so that the 8 values a trilinear sample blends come in 2
+// fetches, not 8 (noise_mip.comp packs them). On lavapipe an image fetch is a gather over the
+// lanes, and the march fetches these noises at every sample.
 struct TrilinearCell {
-  ivec3 i0;
-  ivec3 i1;
-  vec3 f;
+  ivec3 i0;  // the cell's lowest corner (address in the chain's image)
+  int z1;    // the z of its upper layer
+  vec3 f;    // the point's place in the cell
 };
 
 VKFX_INLINE TrilinearCell trilinearCell(vec3 uvw, int level, int n) {
@@ -51,29 +54,32 @@ VKFX_INLINE TrilinearCell trilinearCell(vec3 uvw, int level, int n) {
   TrilinearCell c;
   c.f = p - pFloor;
   c.i0 = (ivec3(pFloor) & (size - 1)) + origin;
-  c.i1 = ((ivec3(pFloor) + 1) & (size - 1)) + origin;
+  c.z1 = ((int(pFloor.z) + 1) & (size - 1)) + origin.z;
   return c;
 }
 
-// The trilinear blend of the 8 texels of TrilinearCell `c`, each read by `fetch` (a 3D fetch
-// prototype above): one body for both noises, since GLSL cannot pass a function.
-#define CLOUDS_TRILINEAR(fetch, c)                                                                \
-  mix(mix(mix(fetch(ivec3(c.i0.x, c.i0.y, c.i0.z)), fetch(ivec3(c.i1.x, c.i0.y, c.i0.z)), c.f.x), \
-          mix(fetch(ivec3(c.i0.x, c.i1.y, c.i0.z)), fetch(ivec3(c.i1.x, c.i1.y, c.i0.z)), c.f.x), \
-          c.f.y),                                                                                 \
-      mix(mix(fetch(ivec3(c.i0.x, c.i0.y, c.i1.z)), fetch(ivec3(c.i1.x, c.i0.y, c.i1.z)), c.f.x), \
-          mix(fetch(ivec3(c.i0.x, c.i1.y, c.i1.z)), fetch(ivec3(c.i1.x, c.i1.y, c.i1.z)), c.f.x), \
-          c.f.y),                                                                                 \
-      c.f.z)
+// The trilinear blend of a packed cell's two texels (its lower and upper layer), each read by
+// `fetch` (a 3D fetch prototype above): one body for both noises, since GLSL cannot pass a
+// function.
+#define CLOUDS_PACKED_TRILINEAR(fetch, c) \
+  mix(bilinearOfPacked(fetch(c.i0), c.f), \
+      bilinearOfPacked(fetch(ivec3(c.i0.x, c.i0.y, c.z1)), c.f), c.f.z)
 
-VKFX_INLINE vec4 sampleShapeNoise(vec3 uvw, int level) {
-  const TrilinearCell c = trilinearCell(uvw, level, kShapeNoiseSize);
-  return CLOUDS_TRILINEAR(fetchShapeNoise, c);
+// The bilinear blend over x and y of a packed texel (see above) at the place `f` in its cell.
+VKFX_INLINE float bilinearOfPacked(vec4 texel, vec3 f) {
+  return mix(mix(texel.x, texel.y, f.x), mix(texel.z, texel.w, f.x), f.y);
 }
 
-VKFX_INLINE vec4 sampleDetailNoise(vec3 uvw, int level) {
+// The shape noise's value (shapeNoiseValue()) at `uvw` (tiles) from `level` of its chain.
+VKFX_INLINE float sampleShapeNoise(vec3 uvw, int level) {
+  const TrilinearCell c = trilinearCell(uvw, level, kShapeNoiseSize);
+  return CLOUDS_PACKED_TRILINEAR(fetchShapeNoise, c);
+}
+
+// The detail noise's value (detailNoiseValue()) at `uvw` (tiles) from `level` of its chain.
+VKFX_INLINE float sampleDetailNoise(vec3 uvw, int level) {
   const TrilinearCell c = trilinearCell(uvw, level, kDetailNoiseSize);
-  return CLOUDS_TRILINEAR(fetchDetailNoise, c);
+  return CLOUDS_PACKED_TRILINEAR(fetchDetailNoise, c);
 }
 
 VKFX_INLINE vec4 sampleWeather(vec2 uv) {

@@ -17,8 +17,8 @@
 VKFX_SHADER_BEGIN(clouds::shader)
 
 // --- Texture sizes (powers of two: wrapping is a bit mask) ----------------------------------
-const int kShapeNoiseSize = 128;  // low-frequency 3D noise, RGBA8
-const int kDetailNoiseSize = 32;  // high-frequency 3D noise, RGBA8
+const int kShapeNoiseSize = 128;  // low-frequency 3D noise, RGBA8 packed (cloud_sampling.h)
+const int kDetailNoiseSize = 32;  // high-frequency 3D noise, RGBA8 packed (cloud_sampling.h)
 // The 3D noises keep their whole mip chain, down to 1 texel (the mean), in one storage image
 // of n x n x 3n/2 texels (noiseLevelOrigin() in cloud_sampling.h says where each level lies).
 const int kShapeNoiseLevels = 8;   // 128^3 .. 1^3
@@ -302,12 +302,13 @@ struct AmbientConstants {
   uint padding1;
 };
 
-// Push constants of noise_mip.comp: makes `level` of a 3D noise's chain from the level above.
+// Push constants of noise_mip.comp: packs level 0 of a 3D noise (one of four passes, by the
+// parity of x and y) or makes `level` of its chain from the level above.
 struct NoiseMipConstants {
-  uint size;   // texels per side of level 0
-  uint level;  // the level made, >= 1
+  uint size;    // texels per side of level 0
+  uint level;   // the level made; 0: pack level 0
+  uint parity;  // level 0: the texels packed in this pass, x & 1 | (y & 1) << 1
   uint padding0;
-  uint padding1;
 };
 
 // Push constants of the noise generators.

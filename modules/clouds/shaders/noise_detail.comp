@@ -1,6 +1,7 @@
 #version 460
-// Generates the high-frequency detail noise (32^3 RGBA8, tiling): Worley fBm at three
-// frequencies (cloud_noise.h). One invocation per texel. Push constants: seed, size.
+// Generates level 0 of the high-frequency detail noise (32^3, tiling): Worley fBm at three
+// frequencies (detailNoiseValue(), cloud_noise.h), in every channel until noise_mip.comp packs
+// the level. One invocation per texel. Push constants: seed, size.
 #extension GL_GOOGLE_include_directive : require
 #include "cloud_noise.h"
 #include "cloud_types.h"
@@ -15,5 +16,6 @@ void main() {
   const uint size = constants.size;
   if (any(greaterThanEqual(texel, uvec3(size)))) return;
   const vec3 uvw = (vec3(texel) + 0.5f) / float(size);
-  imageStore(target, ivec3(texel), highFrequencyNoiseTexel(uvw, constants.seed));
+  const float value = detailNoiseValue(highFrequencyNoiseTexel(uvw, constants.seed));
+  imageStore(target, ivec3(texel), vec4(value));
 }

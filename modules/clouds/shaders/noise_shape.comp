@@ -1,6 +1,7 @@
 #version 460
-// Generates the low-frequency shape noise (128^3 RGBA8, tiling): R Perlin-Worley, G/B/A Worley
-// fBm at 4/8/16 cells (cloud_noise.h). One invocation per texel. Push constants: seed, size.
+// Generates level 0 of the low-frequency shape noise (128^3, tiling): the value of Perlin-Worley
+// and Worley fBm at 4/8/16 cells (shapeNoiseValue(), cloud_noise.h), in every channel until
+// noise_mip.comp packs the level. One invocation per texel. Push constants: seed, size.
 #extension GL_GOOGLE_include_directive : require
 #include "cloud_noise.h"
 #include "cloud_types.h"
@@ -15,5 +16,6 @@ void main() {
   const uint size = constants.size;
   if (any(greaterThanEqual(texel, uvec3(size)))) return;
   const vec3 uvw = (vec3(texel) + 0.5f) / float(size);
-  imageStore(target, ivec3(texel), lowFrequencyNoiseTexel(uvw, constants.seed));
+  const float value = shapeNoiseValue(lowFrequencyNoiseTexel(uvw, constants.seed));
+  imageStore(target, ivec3(texel), vec4(value));
 }

@@ -68,20 +68,33 @@ void Context::Impl::recordNoiseMipChains(VkCommandBuffer cmd) {
   };
   const Chain chains[] = {{shapeMipSet_, shader::kShapeNoiseSize, shader::kShapeNoiseLevels},
                           {detailMipSet_, shader::kDetailNoiseSize, shader::kDetailNoiseLevels}};
-  // Level by level, each from the one above: both chains' level L, then a barrier.
+  const auto dispatch = [&](const Chain& chain, std::uint32_t level, std::uint32_t parity,
+                            std::uint32_t width, std::uint32_t depth) {
+    fn.vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, program.layout(), 0, 1,
+                               &chain.set, 0, nullptr);
+    const shader::NoiseMipConstants constants{static_cast<std::uint32_t>(chain.size), level, parity,
+                                              0u};
+    fn.vkCmdPushConstants(cmd, program.layout(), VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof(constants),
+                          &constants);
+    const std::uint32_t groups = detail::groupsFor(width, shader::kWorkgroupSize3D);
+    fn.vkCmdDispatch(cmd, groups, groups, detail::groupsFor(depth, shader::kWorkgroupSize3D));
+  };
+  // Level 0 packed in four passes, by the parity of x and y (no pass reads what it writes).
+  for (std::uint32_t parity = 0; parity < 4; ++parity) {
+    for (const Chain& chain : chains) {
+      const auto n = static_cast<std::uint32_t>(chain.size);
+      dispatch(chain, 0u, parity, n / 2, n);
+    }
+    detail::memoryBarrier(device_, cmd, kCompute, kStorageWrite | kStorageRead, kCompute,
+                          kStorageRead | kStorageWrite);
+  }
+  // Then level by level, each from the one below: both chains' level L, then a barrier.
   for (int level = 1; level < std::max(shader::kShapeNoiseLevels, shader::kDetailNoiseLevels);
        ++level) {
     for (const Chain& chain : chains) {
       if (level >= chain.levels) continue;
-      fn.vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, program.layout(), 0, 1,
-                                 &chain.set, 0, nullptr);
-      const shader::NoiseMipConstants constants{static_cast<std::uint32_t>(chain.size),
-                                                static_cast<std::uint32_t>(level), 0u, 0u};
-      fn.vkCmdPushConstants(cmd, program.layout(), VK_SHADER_STAGE_COMPUTE_BIT, 0,
-                            sizeof(constants), &constants);
-      const std::uint32_t n = detail::groupsFor(static_cast<std::uint32_t>(chain.size >> level),
-                                                shader::kWorkgroupSize3D);
-      fn.vkCmdDispatch(cmd, n, n, n);
+      const auto n = static_cast<std::uint32_t>(chain.size >> level);
+      dispatch(chain, static_cast<std::uint32_t>(level), 0u, n, n);
     }
     detail::memoryBarrier(device_, cmd, kCompute, kStorageWrite, kCompute, kStorageRead);
   }

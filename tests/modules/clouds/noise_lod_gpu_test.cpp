@@ -1,7 +1,7 @@
 // The noise's level of detail (Settings::noiseLevelOfDetail): each level of the mip chains is
-// the box mean of the level above; far clouds, whose noise is finer than their pixels, read
-// coarser levels and so flicker less as their rays move by a fraction of a pixel, without
-// thinning out; near clouds read level 0 and are the same image as without it.
+// the box mean of the level below, packed for 2-fetch filtering; far clouds, whose noise is finer
+// than their pixels, read coarser levels and so flicker less as their rays move by a fraction of a
+// pixel, without thinning out; near clouds read level 0 and are the same image as without it.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -25,58 +25,70 @@ int chainTexel(const std::vector<std::uint8_t>& chain, int n, int level, glm::iv
                std::size_t(channel)];
 }
 
-// Largest difference (in 1/255) between each texel of levels 1.. and the mean of the 8 texels it
-// covers one level up; and between the last level (1 texel) and the mean of level 0.
+// A level's value at texel (x, y, z): the first channel of the packed texel (cloud_sampling.h).
+int chainValue(const std::vector<std::uint8_t>& chain, int n, int level, glm::ivec3 t) {
+  return chainTexel(chain, n, level, t, 0);
+}
+
+// Largest difference (in 1/255) between each value of levels 1.. and the mean of the 8 values
+// it covers one level down; between the last level (1 texel) and the mean of level 0; and
+// between each texel's other channels and the values they pack (its neighbours at +x, +y and
+// +x+y, wrapping round the level).
 struct ChainError {
   double boxMean = 0.0;
   double lastLevelFromTheMean = 0.0;
+  int packing = 0;
 };
 
 ChainError chainError(const std::vector<std::uint8_t>& chain, int n, int levels) {
   ChainError e;
-  for (int level = 1; level < levels; ++level) {
+  for (int level = 0; level < levels; ++level) {
     const int size = n >> level;
     for (int z = 0; z < size; ++z) {
       for (int y = 0; y < size; ++y) {
         for (int x = 0; x < size; ++x) {
-          for (int c = 0; c < 4; ++c) {
-            double sum = 0.0;
-            for (int k = 0; k < 8; ++k) {
-              const glm::ivec3 q(2 * x + (k & 1), 2 * y + ((k >> 1) & 1), 2 * z + (k >> 2));
-              sum += chainTexel(chain, n, level - 1, q, c);
-            }
-            const double got = chainTexel(chain, n, level, {x, y, z}, c);
-            e.boxMean = std::max(e.boxMean, std::abs(got - sum / 8.0));
+          for (int c = 1; c < 4; ++c) {
+            const glm::ivec3 neighbour((x + (c & 1)) % size, (y + (c >> 1)) % size, z);
+            e.packing = std::max(e.packing, std::abs(chainTexel(chain, n, level, {x, y, z}, c) -
+                                                     chainValue(chain, n, level, neighbour)));
           }
+          if (level == 0) continue;
+          double sum = 0.0;
+          for (int k = 0; k < 8; ++k) {
+            const glm::ivec3 q(2 * x + (k & 1), 2 * y + ((k >> 1) & 1), 2 * z + (k >> 2));
+            sum += chainValue(chain, n, level - 1, q);
+          }
+          const double got = chainValue(chain, n, level, {x, y, z});
+          e.boxMean = std::max(e.boxMean, std::abs(got - sum / 8.0));
         }
       }
     }
   }
-  for (int c = 0; c < 4; ++c) {
-    double sum = 0.0;
-    for (int z = 0; z < n; ++z) {
-      for (int y = 0; y < n; ++y) {
-        for (int x = 0; x < n; ++x) sum += chainTexel(chain, n, 0, {x, y, z}, c);
-      }
+  double sum = 0.0;
+  for (int z = 0; z < n; ++z) {
+    for (int y = 0; y < n; ++y) {
+      for (int x = 0; x < n; ++x) sum += chainValue(chain, n, 0, {x, y, z});
     }
-    const double last = chainTexel(chain, n, levels - 1, {0, 0, 0}, c);
-    e.lastLevelFromTheMean = std::max(e.lastLevelFromTheMean, std::abs(last - sum / (n * n * n)));
   }
+  const double last = chainValue(chain, n, levels - 1, {0, 0, 0});
+  e.lastLevelFromTheMean = std::abs(last - sum / (n * n * n));
   return e;
 }
 
-TEST_F(NoiseLod, EachLevelOfTheMipChainsIsTheBoxMeanOfTheLevelAbove) {
+TEST_F(NoiseLod, EachLevelOfTheMipChainsIsTheBoxMeanOfTheLevelBelowPacked) {
   auto r = renderer();
   r->render(test::cumulusView(), clouds::Settings{}, {16, 16});  // generates the noise
   using namespace clouds::shader;
   const ChainError shape = chainError(r->readShapeNoise(), kShapeNoiseSize, kShapeNoiseLevels);
   const ChainError detail = chainError(r->readDetailNoise(), kDetailNoiseSize, kDetailNoiseLevels);
   // Each level is rounded to 8 bits once (half a step); the last level has been rounded once
-  // per level on the way down.
+  // per level on the way down. The packed channels are the neighbours' values exactly.
   EXPECT_LE(shape.boxMean, 0.5 + 1e-9);
   EXPECT_LE(detail.boxMean, 0.5 + 1e-9);
   EXPECT_LE(shape.lastLevelFromTheMean, 0.5 * (kShapeNoiseLevels - 1));
   EXPECT_LE(detail.lastLevelFromTheMean, 0.5 * (kDetailNoiseLevels - 1));
+  EXPECT_EQ(shape.packing, 0);
+  EXPECT_EQ(detail.packing, 0);
 }
 
 // Above the layer, looking out towards the horizon: most clouds are 10 to 60 km away, where a
