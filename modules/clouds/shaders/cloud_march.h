@@ -357,7 +357,12 @@ VKFX_INLINE MarchResult marchClouds(vec3 rayDirection, float sceneDistance, floa
         continue;
       }
     }
-    const float stepLength = min(viewStepLength(t, u) * (fine ? 1.0f : coarseFactor), end - t);
+    // The sample budget covers the whole segment: where the steps would run out before its end
+    // (a long ray through a tall layer towards the horizon), they stretch to reach it rather
+    // than leave the far clouds unmarched.
+    const float budgetStep = (end - t) / float(max(maxSteps - samples, 1));
+    const float stepLength =
+        min(max(viewStepLength(t, u) * (fine ? 1.0f : coarseFactor), budgetStep), end - t);
     const float sampleDistance = t + jitter * stepLength;
     const vec3 flatOffset = rayDirection * sampleDistance;
     const float sampleAltitude =

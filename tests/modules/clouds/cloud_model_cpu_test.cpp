@@ -104,6 +104,27 @@ TEST(CloudModelCpu, HomogeneousSlabTransmittanceMatchesBeerLambert) {
   }
 }
 
+// A ray whose steps would run out before the end of its segment (a long ray through a tall
+// layer towards the horizon) stretches them to reach it: the far clouds are marched coarsely
+// rather than left out. A homogeneous slab's steps are exact at any length, so 8 steps of the
+// 50 m asked for must still give Beer-Lambert over the whole path (which they cover 1/12 of).
+TEST(CloudModelCpu, ASmallStepBudgetStillCoversTheWholeLayer) {
+  const VkExtent2D extent{1, 1};
+  const double pitch = 30.0;
+  clouds::Settings s = slabSettings(1.0f, 50.0f);
+  s.maxViewSteps = 8;
+  CloudUniforms u = uniformsFor(s, 300.0, pitch, extent);
+  const vec3 dir = pixelRayDirection(vec2(0.5f, 0.5f), vec2(1.0f, 1.0f), u);
+  const vec2 segment = layerSegment(300.0f, dir.y, u);
+  const double path = double(segment.y) - double(segment.x);
+  ASSERT_GT(path, 12.0 * 8.0 * 50.0);
+  s.extinctionPerMetre = static_cast<float>(1.0 / path);  // optical depth 1 along the ray
+  u = uniformsFor(s, 300.0, pitch, extent);
+  u.flags |= kFlagHomogeneous;
+  const auto frame = clouds::tools::renderCpuReference(textures(), u, s, {}, 1);
+  EXPECT_NEAR(frame.radiance[0].a, std::exp(-1.0), 1e-4);
+}
+
 // Single scattering from a homogeneous slab seen straight up with the sun at elevation e:
 // L = E p albedo sigma e^{-sigma D / mu} int_0^D e^{-sigma s (1 - 1/mu)} ds.
 double slabSingleScattering(double sigma, double thickness, double mu, double phase) {

@@ -221,7 +221,8 @@ struct Settings {
   float sunStrength = 1.0f;                     // [0, 100] scales the direct sun term
 
   // --- Ray-march ---------------------------------------------------------------------------
-  std::uint32_t maxViewSteps = 128;        // [1, 16384] samples along a view ray at most
+  std::uint32_t maxViewSteps = 128;        // [1, 16384] samples along a view ray at most (steps
+                                           // stretch where they would not reach its end)
   float viewStepMetres = 60.0f;            // [0.5, 10000] step length at the camera
   float viewStepGrowth = 0.004f;           // [0, 1] extra step length per metre of distance
   std::uint32_t lightSteps = 6;            // [0, 64] samples towards the sun per cloudy sample
