@@ -52,6 +52,34 @@ std::vector<BenchView> canonicalViews() {
   above.position.y = 6500.0;
   above.pitchDegrees = -25.0;
   add("above the layer", above, clouds::Settings{});
+
+  // Where empty-space skipping should pay: sparse cumulus far below, the rays crossing long
+  // empty stretches of the layer between them.
+  clouds::Settings sparse;
+  sparse.coverage = 0.4f;
+  add("sparse cumulus from above", above, sparse);
+
+  // Flying inside a tall cumulus layer, looking down through thin cloud at the ground: cloud
+  // all around, near and far, and the ground (the host's depth) seen through it.
+  clouds::tools::CloudView insideLayer = ground;
+  insideLayer.position.y = 4000.0;
+  insideLayer.pitchDegrees = -35.0;
+  insideLayer.groundDepth = true;
+  clouds::Settings tallLayer;
+  tallLayer.coverage = 0.62f;
+  tallLayer.cloudType = 0.85f;
+  tallLayer.layerTopMetres = 7000.0f;
+  add("inside the layer", insideLayer, tallLayer);
+
+  // Near clouds: 300 m below the base, looking up at a cumulus a few hundred metres away (its
+  // detail must survive the reduced trace).
+  clouds::tools::CloudView nearCloud = ground;
+  nearCloud.position.y = 1200.0;
+  nearCloud.pitchDegrees = 40.0;
+  nearCloud.yawDegrees = 90.0;
+  clouds::Settings nearCumulus;
+  nearCumulus.coverage = 0.6f;
+  add("near cumulus", nearCloud, nearCumulus);
   return views;
 }
 
