@@ -147,6 +147,37 @@ TEST_F(CloudTemporal, TemporalUpsamplingHelpsUnderWindDriftToo) {
   EXPECT_NEAR(meanOpacity(out), meanOpacity(withUpsampling), 0.5 * meanOpacity(withUpsampling));
 }
 
+// Near clouds keep their detail: a cumulus a few hundred metres overhead (the benchmark's
+// "near cumulus" view), converged at High, against the Reference; the blur of a reduced trace
+// (a quarter-resolution one, as Low and Medium trace) is what it must not show.
+TEST_F(CloudTemporal, ACloudAFewHundredMetresAwayKeepsItsDetail) {
+  CloudView view = cumulusView();
+  view.position.y = 1200.0;  // 300 m below the base
+  view.pitchDegrees = 40.0;
+  view.yawDegrees = 90.0;
+  clouds::Settings look;
+  look.coverage = 0.6f;
+  const clouds::Settings high = clouds::settingsFor(clouds::Quality::High, look);
+  clouds::Settings quarterTrace = high;
+  quarterTrace.traceScale = 0.25f;
+  const clouds::tools::CloudFrame referenceFrame = renderer()->renderAveraged(
+      view, clouds::settingsFor(clouds::Quality::Reference, look), kExtent, 16);
+  ASSERT_GT(meanOpacity(referenceFrame), 0.2) << "the view must be full of near cloud";
+  const std::vector<glm::vec3> reference = clouds::tools::tonemappedPixels(referenceFrame, view);
+  const auto psnrAfter48Frames = [&](const clouds::Settings& s) {
+    return clouds::tools::imageError(
+               clouds::tools::tonemappedPixels(renderer()->render(view, s, kExtent, 48), view),
+               reference)
+        .psnr();
+  };
+  const double highPsnr = psnrAfter48Frames(high);
+  const double quarterPsnr = psnrAfter48Frames(quarterTrace);
+  std::printf("near cumulus: High %.1f dB, its trace at a quarter of the resolution %.1f dB\n",
+              highPsnr, quarterPsnr);
+  EXPECT_GE(highPsnr, 38.0);
+  EXPECT_GE(highPsnr, quarterPsnr + 4.0);
+}
+
 TEST_F(CloudTemporal, NanInTheOutputHistoryOfAConvergedViewNeverReachesTheOutput) {
   // Converged: most output pixels come from their own samples in the output history, not
   // from the trace; poisoned, they must fall back to the trace.
