@@ -183,11 +183,16 @@ void main() {
         vec2(u.traceExtent), u);
     previous = historyAt(reprojected.position, historyDepth);
     usable = reprojected.onScreen && finiteVec4(previous) && !any(isnan(historyDepth));
+    // The box is as wide as the fresh samples' range but centred on this pixel's own
+    // estimate (bilinear between them): the range of the four is the same for every pixel
+    // between them, and history clamped to it took one value per tile, which showed as
+    // blocks of k x k pixels (ground seen through near cloud, with the wind blowing).
     const vec4 lo = min(min(r00, r10), min(r01, r11));
     const vec4 hi = max(max(r00, r10), max(r01, r11));
-    const vec4 margin = (hi - lo) * u.historyClampMargin + vec4(0.002f);
+    const vec4 halfRange = (hi - lo) * (0.5f + u.historyClampMargin) + vec4(0.002f);
     const float clampStrength = saturate(reprojected.spread / u.historyClampSpreadPixels);
-    previous = mix(previous, clamp(previous, lo - margin, hi + margin), clampStrength);
+    previous =
+        mix(previous, clamp(previous, current - halfRange, current + halfRange), clampStrength);
   }
   vec4 result = current;
   vec2 resultDepth = currentDepth;
