@@ -82,8 +82,12 @@ VKFX_INLINE uint packSharedExponent(vec3 rgb) {
   const vec3 c = clamp(rgb, vec3(0.0f), vec3(largest));
   const float maximum = max(c.x, max(c.y, c.z));
   int exponent = max(-16, int(floor(log2(max(maximum, 1e-30f))))) + 16;
-  if (floor(maximum / exp2(float(exponent - 24)) + 0.5f) >= 512.0f) exponent += 1;
-  const vec3 mantissa = floor(c / exp2(float(exponent - 24)) + 0.5f);
+  float unit = exp2(float(exponent - 24));  // the value of a mantissa's unit
+  // Rounding the largest channel up to 512 units carries into the next exponent.
+  const bool carry = floor(maximum / unit + 0.5f) >= 512.0f;
+  exponent += carry ? 1 : 0;
+  unit *= carry ? 2.0f : 1.0f;
+  const vec3 mantissa = floor(c / unit + 0.5f);
   return uint(mantissa.x) | (uint(mantissa.y) << 9u) | (uint(mantissa.z) << 18u) |
          (uint(exponent) << 27u);
 }

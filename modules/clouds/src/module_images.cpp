@@ -11,7 +11,7 @@ constexpr VkFormat kNoiseFormat = VK_FORMAT_R8G8B8A8_UNORM;
 constexpr VkFormat kRadianceFormat = VK_FORMAT_R16G16B16A16_SFLOAT;
 constexpr VkFormat kDepthOutputFormat = VK_FORMAT_R32G32_SFLOAT;
 // Trace-resolution samples: radiance, transmittance and both depths packed in one texel
-// (cloud_temporal.h). The output-resolution history packs the same plus a sample count.
+// (cloud_temporal.h).
 constexpr VkFormat kSampleFormat = VK_FORMAT_R32G32B32A32_UINT;
 // Temporal upsampling's output-resolution history, written at every output pixel: 8 bytes
 // (packOutputHistory()).
