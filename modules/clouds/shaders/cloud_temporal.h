@@ -1,7 +1,8 @@
 // Temporal reconstruction at the trace resolution, shared by reconstruct.comp (and readable by
 // tests): which pixels are fresh this frame, the spatial estimate from this frame's fresh
-// samples, reprojection of last frame's result through the cloud's depth, and the clamp of
-// that history to the fresh neighbourhood (so moving and relit clouds do not ghost).
+// samples, reprojection of last frame's result through the cloud's depth and its resampling
+// filter, and the clamp of that history to the fresh neighbourhood (so moving and relit clouds
+// do not ghost).
 #ifndef CLOUDS_CLOUD_TEMPORAL_H
 #define CLOUDS_CLOUD_TEMPORAL_H
 
@@ -173,6 +174,16 @@ VKFX_INLINE Reprojection reprojectPixel(vec3 viewDirection, vec2 cloudDepth, vec
   r.spread = length(previousPosition(ray, nearest, extent) - previousPosition(ray, far, extent));
   r.onScreen = all(greaterThanEqual(r.position, vec2(0.0f))) && all(lessThan(r.position, extent));
   return r;
+}
+
+// Catmull-Rom weights of the four texels around a point at fraction `f` (in [0, 1)) past the
+// second, along one axis. Reprojected history is resampled at a fraction of a pixel off at every
+// frame between refreshes: bilinear weights blur it a little each time, these keep it sharp
+// (they interpolate, and reproduce quadratics exactly). They dip below zero beside an edge: the
+// caller clamps what they give to the values it can take.
+VKFX_INLINE vec4 catmullRomWeights(float f) {
+  return vec4(f * (-0.5f + f * (1.0f - 0.5f * f)), 1.0f + f * f * (-2.5f + 1.5f * f),
+              f * (0.5f + f * (2.0f - 1.5f * f)), f * f * (-0.5f + 0.5f * f));
 }
 
 VKFX_INLINE bool finiteVec4(vec4 v) {

@@ -51,20 +51,23 @@ ivec2 freshAt(ivec2 p) {
   return clamp(p, ivec2(u.tilePhase), last);
 }
 
-// Last frame's radiance at `position` (bilinear) and its cloud depths at the nearest of the
-// four pixels (depths are not filtered: a blend of two clouds' depths is neither's).
+// Last frame's radiance at `position` (Catmull-Rom over 4 x 4 texels, catmullRomWeights(): at
+// 320x180 it costs this pass about 0.2 ms over bilinear, on frames that reproject) and its
+// cloud depths at the nearest texel (depths are not filtered: a blend of two clouds' depths is
+// neither's).
 vec4 historyAt(vec2 position, out vec2 depth) {
   const vec2 p = position - 0.5f;
   const vec2 f = p - floor(p);
   const ivec2 i = ivec2(floor(p));
-  const uvec4 h00 = imageLoad(history, clampPixel(i));
-  const uvec4 h10 = imageLoad(history, clampPixel(i + ivec2(1, 0)));
-  const uvec4 h01 = imageLoad(history, clampPixel(i + ivec2(0, 1)));
-  const uvec4 h11 = imageLoad(history, clampPixel(i + ivec2(1, 1)));
-  const uvec4 nearest = f.y < 0.5f ? (f.x < 0.5f ? h00 : h10) : (f.x < 0.5f ? h01 : h11);
-  depth = unpackCloudDepth(nearest);
-  return mix(mix(unpackCloudRadiance(h00), unpackCloudRadiance(h10), f.x),
-             mix(unpackCloudRadiance(h01), unpackCloudRadiance(h11), f.x), f.y);
+  const vec4 wx = catmullRomWeights(f.x);
+  const vec4 wy = catmullRomWeights(f.y);
+  vec4 radiance = vec4(0.0f);
+  for (int t = 0; t < 16; ++t) {
+    const uvec4 h = imageLoad(history, clampPixel(i + ivec2((t & 3) - 1, (t >> 2) - 1)));
+    radiance += wx[t & 3] * wy[t >> 2] * unpackCloudRadiance(h);
+  }
+  depth = unpackCloudDepth(imageLoad(history, clampPixel(ivec2(floor(position)))));
+  return vec4(max(radiance.rgb, vec3(0.0f)), saturate(radiance.a));
 }
 
 // The pixel's result, and with lightning its glow.
@@ -128,9 +131,8 @@ void insideLayerEstimate(uvec2 pixel, out vec4 radiance, out vec2 depth) {
   depth = depthBlendResult(blend);
 }
 
-// Image loads dominate this pass on lavapipe (each is a gather), so it takes 8 per pixel: the
-// 2 x 2 fresh samples around the pixel, which give both this frame's estimate and the clamp
-// range, and 2 x 2 of history.
+// Image loads dominate this pass on lavapipe (each is a gather), so the estimate and the clamp
+// range come from the same 2 x 2 fresh samples around the pixel.
 void main() {
   loadFrameUniforms();
   const uvec2 pixel = gl_GlobalInvocationID.xy;

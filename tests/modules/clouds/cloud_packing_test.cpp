@@ -1,5 +1,6 @@
 // The packed texels of the temporal passes (shaders/cloud_temporal.h), compiled as C++: the
-// output history's shared-exponent radiance, transmittance, front depth and own-sample count.
+// output history's shared-exponent radiance, transmittance, front depth and own-sample count;
+// and the filter that resamples the reprojected history.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -46,6 +47,20 @@ TEST(CloudPacking, OutputHistoryKeepsTransmittanceFrontDepthAndCount) {
       << "beyond 65 km the front is kept at 65 km";
   // A texel this pass never wrote (poisoned with half-float NaNs) says so by its front depth.
   EXPECT_TRUE(std::isnan(outputHistoryFrontDepth(uvec2(0x7E007E00u, 0x7E007E00u))));
+}
+
+// The reprojected history's resampling weights: they interpolate (a texel read at its centre
+// is itself), sum to one, and reproduce a quadratic exactly, which bilinear weights do not
+// (their error, f (1 - f) / 2 of the curvature, is the blur each frame adds).
+TEST(HistoryResampling, CatmullRomWeightsInterpolateAndKeepCurvature) {
+  EXPECT_EQ(catmullRomWeights(0.0f), vec4(0.0f, 1.0f, 0.0f, 0.0f));
+  for (float f = 0.0f; f < 1.0f; f += 0.125f) {
+    const vec4 w = catmullRomWeights(f);
+    EXPECT_NEAR(w.x + w.y + w.z + w.w, 1.0f, 1e-6f) << f;
+    // Texels at -1, 0, 1, 2 holding x^2: the point at f reads f^2.
+    EXPECT_NEAR(w.x * 1.0f + w.z * 1.0f + w.w * 4.0f, f * f, 1e-6f) << f;
+    EXPECT_NEAR(-w.x + w.z + 2.0f * w.w, f, 1e-6f) << f;
+  }
 }
 
 }  // namespace

@@ -1,7 +1,7 @@
 // Temporal reconstruction on lavapipe: a static camera converges to the Reference, and with
 // temporal upsampling to detail finer than the trace; the frame after a cut, a resize or
 // relighting equals a fresh renderer's; NaN in the history never reaches the output; the
-// camera in the layer turns reprojection off.
+// camera in the layer turns reprojection off; a turning camera's history stays sharp.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -319,6 +319,32 @@ TEST_F(CloudTemporal, InsideTheLayerReprojectionIsOffButFramesStayComplete) {
     EXPECT_EQ(report.tileSize, 2u) << "every frame rebuilt from 1 in 4 fresh pixels";
     ASSERT_TRUE(allValid(out));
   }
+}
+
+// A turning camera (0.13 degrees a frame, a sixth of a trace pixel at 160x90) reads its history
+// a fraction of a pixel off at every frame, up to 16 times between refreshes: it loses some
+// accuracy against a camera held still (whose history averages more rays), but resampled
+// bilinearly it also blurred. Measured: 4.7 dB below the held camera with Catmull-Rom
+// (catmullRomWeights), 5.3 dB with bilinear weights.
+TEST_F(CloudTemporal, ATurningCameraKeepsItsHistorySharp) {
+  const clouds::Settings high = clouds::settingsFor(clouds::Quality::High);
+  CloudView view = cumulusView();
+  auto turning = renderer();
+  clouds::tools::CloudFrame turned;
+  for (int frame = 0; frame < 64; ++frame) {
+    view.yawDegrees += 0.13;
+    turned = turning->render(view, high, kExtent);
+    ASSERT_EQ(turning->context().lastFrameReport().historyUsed, frame > 0);
+  }
+  auto held = renderer();
+  clouds::tools::CloudFrame still;
+  for (int frame = 0; frame < 64; ++frame) still = held->render(view, high, kExtent);
+  const clouds::tools::CloudFrame reference = renderer()->renderAveraged(
+      view, clouds::settingsFor(clouds::Quality::Reference), kExtent, 16);
+  const double turnedPsnr = psnrAgainst(turned, reference, view);
+  const double stillPsnr = psnrAgainst(still, reference, view);
+  std::printf("turning: %.2f dB, held still: %.2f dB\n", turnedPsnr, stillPsnr);
+  EXPECT_GT(turnedPsnr, stillPsnr - 5.0);
 }
 
 }  // namespace
