@@ -61,12 +61,14 @@ vec4 historyAt(vec2 position, out vec2 depth) {
   const ivec2 i = ivec2(floor(p));
   const vec4 wx = catmullRomWeights(f.x);
   const vec4 wy = catmullRomWeights(f.y);
+  // The nearest texel is one of the middle 2 x 2 of the 16: its depths come from that load.
+  const int nearest = (f.y < 0.5f ? 4 : 8) + (f.x < 0.5f ? 1 : 2);
   vec4 radiance = vec4(0.0f);
   for (int t = 0; t < 16; ++t) {
     const uvec4 h = imageLoad(history, clampPixel(i + ivec2((t & 3) - 1, (t >> 2) - 1)));
     radiance += wx[t & 3] * wy[t >> 2] * unpackCloudRadiance(h);
+    if (t == nearest) depth = unpackCloudDepth(h);
   }
-  depth = unpackCloudDepth(imageLoad(history, clampPixel(ivec2(floor(position)))));
   return vec4(max(radiance.rgb, vec3(0.0f)), saturate(radiance.a));
 }
 
