@@ -6,7 +6,9 @@
 // host-side offsets into the tiling textures are computed in double precision). The march:
 //  - finds the segment of the view ray inside the shell (camera below, inside or above), stops
 //    at the host's scene depth and at the maximum distance, and skips rays that hit the ground;
-//  - steps with a length that grows with distance (Schneider 2022: near step + growth x t);
+//  - steps with a length that grows with distance (Schneider 2022: near step + growth x t),
+//    shorter still within a few steps of the camera (half the distance), stretched to the
+//    sample budget where a long ray would not reach its end;
 //  - takes coarse steps on cheap low-frequency samples in empty space and steps back into fine
 //    steps with full detail on a hit, returning to coarse steps after a run of empty samples;
 //  - marches towards the sun only where there is cloud (a cone of samples with growing spacing
@@ -95,6 +97,36 @@ VKFX_INLINE vec2 layerSegment(float altitude, float cosZenith, IN(CloudUniforms)
 
 VKFX_INLINE float viewStepLength(float t, IN(CloudUniforms) u) {
   return u.viewStepMetres + u.viewStepGrowth * t;
+}
+
+// Near the camera a step is kNearStepRatio of its distance from it, never below a sixteenth of
+// viewStepMetres, until that ratio reaches the preset's own step (at about twice
+// viewStepMetres: 120 m at Medium); these near steps (9 of them) are taken on top of the sample
+// budget. They matter only with the camera in or at the edge of cloud, where the cloud within
+// a few hundred metres covers much of the screen and the rays of a whole region sample it at
+// the same places: at the preset's step (60 m at Medium, or a long ray's
+// budget-stretched step) a ray's haze hinged on where its one sample there fell. Flying inside
+// a tall layer over the ground (Medium, 256x144) every ray started at 0.05 of its steps saw
+// the ground through thin cloud 4x as bright as every ray started at 0.95 (1.2x with near
+// steps), and a frame's pattern of start offsets showed as a grid of dots. Taken out of the
+// budget instead, they cost the far steps of long rays: High lost 1.2 dB on the static
+// "inside the layer" view towards its horizon.
+const float kNearStepRatio = 0.5f;
+const int kMaxNearSteps = 16;  // 9 with Medium's steps
+VKFX_INLINE bool isNearStep(float t, IN(CloudUniforms) u) {
+  return kNearStepRatio * t < viewStepLength(t, u);
+}
+
+// The step that starts `t` metres along a ray whose segment ends at `end`, with `samplesLeft`
+// of its sample budget left; `scale` is 1 for fine steps, coarseStepFactor for coarse ones.
+// Where the steps would run out before the segment's end (a long ray through a tall layer
+// towards the horizon or the ground), they stretch to reach it rather than leave the far
+// clouds unmarched; near the camera they are short (isNearStep).
+VKFX_INLINE float marchStepLength(float t, float end, int samplesLeft, float scale,
+                                  IN(CloudUniforms) u) {
+  if (isNearStep(t, u)) return min(max(kNearStepRatio * t, u.viewStepMetres * 0.0625f), end - t);
+  const float budgetStep = (end - t) / float(max(samplesLeft, 1));
+  return min(max(viewStepLength(t, u) * scale, budgetStep), end - t);
 }
 
 // One cloud-field evaluation at a point given camera-relative (flat) offset and altitude.
@@ -344,8 +376,8 @@ VKFX_INLINE MarchResult marchClouds(vec3 rayDirection, float sceneDistance, floa
   int emptyRun = 0;
   int samples = 0;
   // Jumps over empty cells do not spend the sample budget (a long ray over clear sky must
-  // still reach the clouds behind it); kMaxSkips bounds them.
-  for (int i = 0; i < maxSteps + kMaxSkips; ++i) {
+  // still reach the clouds behind it); kMaxSkips bounds them. Nor do the near steps.
+  for (int i = 0; i < maxSteps + kMaxSkips + kMaxNearSteps; ++i) {
     if (t >= end || r.transmittance < cutoff || samples >= maxSteps) break;
     if (o.emptySpace != 0u) {
       const float skipTo =
@@ -357,12 +389,9 @@ VKFX_INLINE MarchResult marchClouds(vec3 rayDirection, float sceneDistance, floa
         continue;
       }
     }
-    // The sample budget covers the whole segment: where the steps would run out before its end
-    // (a long ray through a tall layer towards the horizon), they stretch to reach it rather
-    // than leave the far clouds unmarched.
-    const float budgetStep = (end - t) / float(max(maxSteps - samples, 1));
+    const bool nearCamera = isNearStep(t, u);
     const float stepLength =
-        min(max(viewStepLength(t, u) * (fine ? 1.0f : coarseFactor), budgetStep), end - t);
+        marchStepLength(t, end, maxSteps - samples, fine ? 1.0f : coarseFactor, u);
     const float sampleDistance = t + jitter * stepLength;
     const vec3 flatOffset = rayDirection * sampleDistance;
     const float sampleAltitude =
@@ -370,7 +399,7 @@ VKFX_INLINE MarchResult marchClouds(vec3 rayDirection, float sceneDistance, floa
     const FieldSample field =
         sampleField(flatOffset, sampleAltitude, sampleDistance, jitter, fine ? o.detail : 0u, u);
     r.viewSamples += 1.0f;
-    ++samples;
+    if (!nearCamera) ++samples;
     if (!fine && field.base > 0.0f) {
       // A coarse sample found cloud: go back one coarse step and resample it finely.
       fine = true;

@@ -7,7 +7,7 @@
 //  - no usable history (off-screen, not finite): bilinear from this frame's fresh samples
 //    (never black, never a smear);
 //  - a frame without history (reset, cut, resize, jump, relight: kHistoryNone): bilinear
-//    from this frame's fresh samples too; but moving inside the layer, where thin cloud all
+//    from this frame's fresh samples too; but in or near the layer, where thin cloud all
 //    around makes each ray's result depend much on where it started, a tent over them that
 //    averages their jitter and keeps the edges of the scene behind the clouds
 //    (insideLayerEstimate).
@@ -25,7 +25,7 @@
 #include "cloud_temporal.h"
 
 layout(local_size_x = kWorkgroupSize2D, local_size_y = kWorkgroupSize2D) in;
-// Last frame's result (kSpecHistory): 0 none (reset, inside the layer...), 1 nothing moved
+// Last frame's result (kSpecHistory): 0 none (reset, cut, resize...), 1 nothing moved
 // (read in place, unclamped: exact), 2 reprojected. Every path of a shader costs on lavapipe,
 // which runs both sides of a branch, so what a frame does not need is compiled out.
 layout(constant_id = kSpecHistory) const uint kHistory = 2u;

@@ -31,7 +31,7 @@
 
 layout(local_size_x = kWorkgroupSize2D, local_size_y = kWorkgroupSize2D) in;
 layout(constant_id = kSpecTemporalUpsampling) const uint kTemporalUpsampling = 0u;
-// Last frame's output history: 0 none (reset, resize, inside the layer...), 1 the camera and
+// Last frame's output history: 0 none (reset, resize, cut...), 1 the camera and
 // the clouds held still (each pixel's history is where it was: no reprojection, one load),
 // 2 reprojected (kSpecOutputHistory).
 layout(constant_id = kSpecOutputHistory) const uint kOutputHistory = 0u;

@@ -1,10 +1,10 @@
 #pragma once
 // The temporal reconstruction's bookkeeping, as plain logic (unit-tested without a GPU): per
 // frame it decides whether last frame's result can be reprojected (or why not: reset, resize,
-// a jump or turn of the camera, relighting, new settings or weather map, the camera in or
-// near the cloud layer), which pixel of each tile the march refreshes, and which history image
-// is read and written. It is the one owner of "previous": the camera, sun and time the
-// history was made with, recorded by commit() and used by the next plan().
+// a jump or turn of the camera, relighting, new settings or weather map), which pixel of each
+// tile the march refreshes (more of them while the camera moves in or near the cloud layer),
+// and which history image is read and written. It is the one owner of "previous": the camera,
+// sun and time the history was made with, recorded by commit() and used by the next plan().
 #include <glm/glm.hpp>
 
 #include <cstdint>

@@ -171,6 +171,56 @@ TEST(CloudMath, AltitudeAlongRayMatchesDoublePrecision) {
   }
 }
 
+// The steps of a ray from `start` to `end` (m) with a budget of `maxSteps` samples, as the march
+// takes them (fine steps throughout): where each starts, and whether it was a near step (one
+// outside the budget).
+struct Step {
+  float start;
+  bool near;
+};
+std::vector<Step> marchSteps(float start, float end, int maxSteps, const CloudUniforms& u) {
+  std::vector<Step> steps;
+  int budgeted = 0;
+  for (float t = start; t < end && budgeted < maxSteps;) {
+    const bool near = isNearStep(t, u);
+    steps.push_back({t, near});
+    t += marchStepLength(t, end, maxSteps - budgeted, 1.0f, u);
+    if (!near) ++budgeted;
+  }
+  steps.push_back({end, false});
+  return steps;
+}
+
+// Medium's steps (60 m, growing 0.004 m per m; 96 samples) near the camera are short: half
+// their distance from it, from 3.75 m, until that reaches 60 m. There the cloud around the
+// camera covers much of the screen and its rays sample it at the same places. They are taken
+// on top of the budget, so a long ray's far steps stay as they were.
+TEST(CloudMath, NearTheCameraStepsAreShortAndOutsideTheBudget) {
+  CloudUniforms u{};
+  u.viewStepMetres = 60.0f;
+  u.viewStepGrowth = 0.004f;
+  const int maxSteps = 96;
+  const std::vector<Step> inside = marchSteps(0.0f, 6000.0f, maxSteps, u);
+  const auto nearSteps = std::count_if(inside.begin(), inside.end(), [](Step s) { return s.near; });
+  EXPECT_GE(nearSteps, 8) << "the first 120 m: 2 samples at Medium's own step";
+  EXPECT_LE(nearSteps, kMaxNearSteps);
+  EXPECT_FLOAT_EQ(inside[1].start - inside[0].start, 3.75f);
+  const auto firstFar = std::find_if(inside.begin(), inside.end(), [](Step s) { return !s.near; });
+  EXPECT_NEAR(firstFar->start, 120.0f, 15.0f);
+  EXPECT_LE(inside.size() - std::size_t(nearSteps), std::size_t(maxSteps) + 1) << "the budget";
+  EXPECT_NEAR(inside[inside.size() - 2].start, 6000.0f, 200.0f) << "the ray reaches its end";
+  // The far steps take the whole budget: the first is the budget's stretch from there.
+  EXPECT_NEAR((firstFar + 1)->start - firstFar->start,
+              std::max(60.0f + 0.004f * firstFar->start, (6000.0f - firstFar->start) / maxSteps),
+              1e-2f);
+  // From below the layer (the segment starts 1 km away) nothing changes: Medium's step there,
+  // or the budget's if longer.
+  const std::vector<Step> below = marchSteps(1000.0f, 7000.0f, maxSteps, u);
+  EXPECT_FALSE(below[0].near);
+  EXPECT_NEAR(below[1].start - below[0].start,
+              std::max(60.0f + 0.004f * 1000.0f, 6000.0f / float(maxSteps)), 1e-3f);
+}
+
 TEST(CloudMath, BayerIsAPermutationAndHaltonIsInRange) {
   std::set<float> values;
   for (uint y = 0; y < 4; ++y) {

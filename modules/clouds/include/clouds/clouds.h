@@ -278,9 +278,9 @@ struct Settings {
   // is uncertain: fully where the nearest cloud and the far distance reproject this many trace
   // pixels apart (a moving camera near cloud), not at all for a static or turning camera.
   float historyClampSpreadPixels = 1.0f;  // [0.01, 100]
-  // No reprojection inside the layer or this close to it: one depth per pixel cannot describe
-  // cloud all around the camera. Below or above it, near cloud is handled by the parallax
-  // clamp (historyClampSpreadPixels) instead.
+  // Inside the layer or this close to it, a moving camera refreshes 2 x 2 tiles of the trace
+  // each frame whatever updateInterval says (the cloud all around it changes from frame to
+  // frame), and a frame without history is rebuilt by a tent over its rays (reconstruct.comp).
   float insideLayerMarginMetres = 50.0f;       // [0, 5000]
   float historyResetDistanceMetres = 2000.0f;  // [1, 1e6] camera move in one frame that resets
   float historyResetAngleDegrees = 30.0f;      // [0.1, 180] camera turn in one frame that resets
