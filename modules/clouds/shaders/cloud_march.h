@@ -100,21 +100,23 @@ VKFX_INLINE float viewStepLength(float t, IN(CloudUniforms) u) {
 }
 
 // Near the camera a step is kNearStepRatio of its distance from it, never below a sixteenth of
-// viewStepMetres, until that ratio reaches the preset's own step (at about twice
-// viewStepMetres: 120 m at Medium); these near steps (9 of them) are taken on top of the sample
-// budget. They matter only with the camera in or at the edge of cloud, where the cloud within
-// a few hundred metres covers much of the screen and the rays of a whole region sample it at
-// the same places: at the preset's step (60 m at Medium, or a long ray's
-// budget-stretched step) a ray's haze hinged on where its one sample there fell. Flying inside
-// a tall layer over the ground (Medium, 256x144) every ray started at 0.05 of its steps saw
-// the ground through thin cloud 4x as bright as every ray started at 0.95 (1.2x with near
+// viewStepMetres, until that ratio reaches viewStepMetres (twice viewStepMetres from the
+// camera: 120 m at Medium). These near steps (9 from the camera, whatever the settings) are
+// taken on top of the sample budget. They matter only with the camera in or at the edge of
+// cloud, where the cloud within a few hundred metres covers much of the screen and the rays of
+// a whole region sample it at the same places: at the preset's step (60 m at Medium, or a long
+// ray's budget-stretched step) a ray's haze hinged on where its one sample there fell. Flying
+// inside a tall layer over the ground (Medium, 256x144) every ray started at 0.05 of its steps
+// saw the ground through thin cloud 4x as bright as every ray started at 0.95 (1.2x with near
 // steps), and a frame's pattern of start offsets showed as a grid of dots. Taken out of the
 // budget instead, they cost the far steps of long rays: High lost 1.2 dB on the static
 // "inside the layer" view towards its horizon.
 const float kNearStepRatio = 0.5f;
-const int kMaxNearSteps = 16;  // 9 with Medium's steps
+// Loop iterations the near steps may take: 9, each at most twice (a coarse sample that finds
+// cloud is taken again as a fine one at the same place).
+const int kMaxNearSteps = 18;
 VKFX_INLINE bool isNearStep(float t, IN(CloudUniforms) u) {
-  return kNearStepRatio * t < viewStepLength(t, u);
+  return kNearStepRatio * t < u.viewStepMetres;
 }
 
 // The step that starts `t` metres along a ray whose segment ends at `end`, with `samplesLeft`

@@ -194,7 +194,8 @@ std::vector<Step> marchSteps(float start, float end, int maxSteps, const CloudUn
 // Medium's steps (60 m, growing 0.004 m per m; 96 samples) near the camera are short: half
 // their distance from it, from 3.75 m, until that reaches 60 m. There the cloud around the
 // camera covers much of the screen and its rays sample it at the same places. They are taken
-// on top of the budget, so a long ray's far steps stay as they were.
+// on top of the budget, so a long ray's far steps stay as they were (the march itself:
+// CloudModelCpu.NearTheCameraStepsComeOnTopOfTheBudget).
 TEST(CloudMath, NearTheCameraStepsAreShortAndOutsideTheBudget) {
   CloudUniforms u{};
   u.viewStepMetres = 60.0f;
@@ -207,7 +208,6 @@ TEST(CloudMath, NearTheCameraStepsAreShortAndOutsideTheBudget) {
   EXPECT_FLOAT_EQ(inside[1].start - inside[0].start, 3.75f);
   const auto firstFar = std::find_if(inside.begin(), inside.end(), [](Step s) { return !s.near; });
   EXPECT_NEAR(firstFar->start, 120.0f, 15.0f);
-  EXPECT_LE(inside.size() - std::size_t(nearSteps), std::size_t(maxSteps) + 1) << "the budget";
   EXPECT_NEAR(inside[inside.size() - 2].start, 6000.0f, 200.0f) << "the ray reaches its end";
   // The far steps take the whole budget: the first is the budget's stretch from there.
   EXPECT_NEAR((firstFar + 1)->start - firstFar->start,

@@ -125,6 +125,33 @@ TEST(CloudModelCpu, ASmallStepBudgetStillCoversTheWholeLayer) {
   EXPECT_NEAR(frame.radiance[0].a, std::exp(-1.0), 1e-4);
 }
 
+// The march from inside the layer takes its short steps near the camera on top of the sample
+// budget: 9 of them (from a sixteenth of the 50 m step, half the distance, to 100 m), then the
+// 8 steps of the budget, stretched to reach the top of the layer (Beer-Lambert over the whole
+// path). From below the layer there are none.
+TEST(CloudModelCpu, NearTheCameraStepsComeOnTopOfTheBudget) {
+  const VkExtent2D extent{1, 1};
+  clouds::Settings s = slabSettings(1.0f, 50.0f);
+  s.maxViewSteps = 8;
+  MarchOptions options{};
+  options.lightSteps = 1;
+  for (const double altitude : {2500.0, 300.0}) {
+    CloudUniforms u = uniformsFor(s, altitude, 30.0, extent);
+    const vec3 dir = pixelRayDirection(vec2(0.5f, 0.5f), vec2(1.0f, 1.0f), u);
+    const vec2 segment = layerSegment(float(altitude), dir.y, u);
+    const double path = double(segment.y) - double(segment.x);
+    ASSERT_GT(path, 1000.0);
+    clouds::Settings slab = s;
+    slab.extinctionPerMetre = static_cast<float>(1.0 / path);  // optical depth 1 along the ray
+    u = uniformsFor(slab, altitude, 30.0, extent);
+    u.flags |= kFlagHomogeneous;
+    const MarchResult r = marchClouds(dir, kInfiniteDistance, 0.5f, vec3(0.5f), u, options);
+    const bool inside = altitude > 1500.0;
+    EXPECT_EQ(r.viewSamples, inside ? 8.0f + 9.0f : 8.0f) << "altitude " << altitude;
+    EXPECT_NEAR(r.transmittance, std::exp(-1.0), 1e-4) << "altitude " << altitude;
+  }
+}
+
 // Single scattering from a homogeneous slab seen straight up with the sun at elevation e:
 // L = E p albedo sigma e^{-sigma D / mu} int_0^D e^{-sigma s (1 - 1/mu)} ds.
 double slabSingleScattering(double sigma, double thickness, double mu, double phase) {

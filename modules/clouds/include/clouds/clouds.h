@@ -222,8 +222,10 @@ struct Settings {
 
   // --- Ray-march ---------------------------------------------------------------------------
   std::uint32_t maxViewSteps = 128;        // [1, 16384] samples along a view ray at most (steps
-                                           // stretch where they would not reach its end)
-  float viewStepMetres = 60.0f;            // [0.5, 10000] step length at the camera
+                                           // stretch where they would not reach its end), plus
+                                           // 9 near the camera
+  float viewStepMetres = 60.0f;            // [0.5, 10000] step length near the camera (within
+                                           // twice this, half the distance to it, from 1/16)
   float viewStepGrowth = 0.004f;           // [0, 1] extra step length per metre of distance
   std::uint32_t lightSteps = 6;            // [0, 64] samples towards the sun per cloudy sample
   float lightConeMetres = 1800.0f;         // [1, 100000] reach of the light samples
