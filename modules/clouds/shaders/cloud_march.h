@@ -112,6 +112,7 @@ VKFX_INLINE float viewStepLength(float t, IN(CloudUniforms) u) {
 // budget instead, they cost the far steps of long rays: High lost 1.2 dB on the static
 // "inside the layer" view towards its horizon.
 const float kNearStepRatio = 0.5f;
+const float kNearStepMinFraction = 0.0625f;  // of viewStepMetres: the first steps' length
 // Loop iterations the near steps may take: 9, each at most twice (a coarse sample that finds
 // cloud is taken again as a fine one at the same place).
 const int kMaxNearSteps = 18;
@@ -126,7 +127,9 @@ VKFX_INLINE bool isNearStep(float t, IN(CloudUniforms) u) {
 // clouds unmarched; near the camera they are short (isNearStep).
 VKFX_INLINE float marchStepLength(float t, float end, int samplesLeft, float scale,
                                   IN(CloudUniforms) u) {
-  if (isNearStep(t, u)) return min(max(kNearStepRatio * t, u.viewStepMetres * 0.0625f), end - t);
+  if (isNearStep(t, u)) {
+    return min(max(kNearStepRatio * t, u.viewStepMetres * kNearStepMinFraction), end - t);
+  }
   const float budgetStep = (end - t) / float(max(samplesLeft, 1));
   return min(max(viewStepLength(t, u) * scale, budgetStep), end - t);
 }

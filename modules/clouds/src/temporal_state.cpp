@@ -190,8 +190,7 @@ TemporalFrame TemporalState::plan(const FrameInputs& in, const Settings& s,
   // refreshes 2 x 2 tiles too. (At High, 640x360, against the Reference: flying up into the
   // base, 35.1 dB, where rebuilding each frame without history, as production engines do
   // here, gave 30.0; clouds_bench's fly-through.)
-  const bool movingInsideLayer =
-      frame.insideLayer && havePrevious_ && in.cameraPosition != cameraPosition_;
+  const bool movingInsideLayer = frame.insideLayer && in.cameraPosition != cameraPosition_;
   frame.tileSize = frame.useHistory && !movingInsideLayer ? k : std::min(k, 2u);
   frame.phase = tilePhase(frame.tileSize, frame.temporalIndex);
   frame.upsampleTemporally = upsamplesTemporally(s);
