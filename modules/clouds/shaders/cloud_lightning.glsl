@@ -1,6 +1,6 @@
 // The clouds' lightning glow per unit of cloud (GLSL only), for a pass that declares this
-// frame's flashes as `lightning[]` (LightningUniforms, indexed by gl_NumWorkGroups.z - 1 like
-// frame_uniforms.glsl's block) and has loaded `u`.
+// frame's flashes as `lightning[]` (LightningUniforms, indexed like frame_uniforms.glsl's block)
+// and has loaded `u`.
 //
 // Nubis Evolved's glow term (Schneider 2022: potential pow(1 - d / r, 12), less where the cloud
 // is dense) and the flash's sky light (vkfx/lightning_light.h: the core's inverse square, the
@@ -18,7 +18,7 @@
 vec3 flashLightPerCloud(vec3 ray, float transmittance, vec2 depth) {
   vec3 glow = vec3(0.0f);
   if (depth.y <= 0.0f || transmittance >= 1.0f) return glow;
-  const uint slot = gl_NumWorkGroups.z - 1u;
+  const uint slot = CLOUDS_FRAME_UNIFORMS_INDEX;
   const vec3 cloud = ray * depth.y;  // camera-relative (m)
   const float span = max(2.0f * (depth.y - depth.x), 1.0f);
   const float opticalDepth = min(-log(max(transmittance, 1e-6f)), 1.0f);

@@ -56,7 +56,7 @@ layout(binding = kMarchCloudShadowParameters, std140) uniform TerrainShadow {
 // terrain: read from the shadow map's terrain channel when the host gave its terrain.
 float terrainSunLight(vec3 flatOffset, float altitude) {
   if (kTerrainShadow == 0u) return 1.0f;
-  const uint slot = gl_NumWorkGroups.z - 1u;
+  const uint slot = CLOUDS_FRAME_UNIFORMS_INDEX;
   float light = 1.0f;
   // Only below the highest terrain (a loop of 0 or 1 trips: most cloud is above it).
   for (int i = 0; i < (altitude < terrainShadow[slot].terrainTopMetres ? 1 : 0); ++i) {

@@ -385,6 +385,12 @@ struct TerrainShadowConstants {
   uint padding2;
 };
 
+// Push constants of the trace passes (scene distance, march, reconstruct, upsample): which
+// element of frame_uniforms.glsl's block to read, always 0 (why: frame_uniforms.glsl).
+struct FrameUniformsIndex {
+  uint index;
+};
+
 // Push constants of the composite helper.
 struct CompositeConstants {
   uvec2 extent;  // host colour extent (px)
@@ -410,8 +416,8 @@ struct LightningUniforms {
 // to list, a grid over the bolts' bounds from `origin` (output pixels).
 struct LightningBoltsConstants {
   uvec2 origin;
-  uint listedBlocks;  // 0/1
-  uint padding0;
+  uint listedBlocks;        // 0/1
+  uint frameUniformsIndex;  // always 0 (frame_uniforms.glsl)
 };
 
 // The bolts' pieces on screen (lightning_bolts.comp, kBoltsPieces), a storage buffer the
@@ -445,8 +451,9 @@ const uint kBoltMaxBlocks = 4096u;
 
 // god_ray_occlusion.comp's push constants.
 struct GodRayOcclusionConstants {
-  uvec2 maskExtent;  // texels: the render extent over kGodRayDownsample, rounded up
-  uvec2 padding0;
+  uvec2 maskExtent;         // texels: the render extent over kGodRayDownsample, rounded up
+  uint frameUniformsIndex;  // always 0 (frame_uniforms.glsl)
+  uint padding0;
 };
 
 // The god rays' light (vkfx/god_rays.h's uses: god_rays.comp makes it per mask texel, the
@@ -513,6 +520,7 @@ static_assert(sizeof(clouds::shader::AmbientConstants) == 32);
 static_assert(sizeof(clouds::shader::WeatherConstants) == 16);
 static_assert(sizeof(clouds::shader::MaximaConstants) == 16);
 static_assert(sizeof(clouds::shader::CompositeConstants) == 16);
+static_assert(sizeof(clouds::shader::FrameUniformsIndex) == 4);
 static_assert(sizeof(clouds::shader::GodRayOcclusionConstants) == 16);
 static_assert(sizeof(clouds::shader::LightningUniforms) == 16 + 32 * 16);
 static_assert(sizeof(clouds::shader::LightningBoltsHeader) == 4 * 16);

@@ -5,10 +5,14 @@
 // loop bound (constant-offset loads only) into the shader, re-optimising and re-loading it
 // at every dispatch that follows a descriptor bind: about 5 ms per dispatch for the march,
 // per frame, measured on Mesa 22.3. Indexing the block with a value the compiler cannot fold
-// (the dispatch depth minus one, always 0 here: every pass dispatches one layer) makes every
-// load dynamically addressed, which the inliner skips, while the loads stay uniform (scalar).
-// A storage buffer avoids the inliner too, but its loads are per-lane and cost more than the
-// inlining saved (measured: the upsample and reconstruct twice as slow at 640x360).
+// makes every load dynamically addressed, which the inliner skips. The index is a push
+// constant (always 0): lavapipe loads a uniform at an offset made of push constants once for
+// all lanes, where one made of anything else (gl_NumWorkGroups, as before) is gathered lane by
+// lane: at 640x360 that cost the upsample 0.6 ms of its 2.4 at Medium. A storage buffer
+// avoids the inliner too, but its loads are per-lane as well.
+//
+// A shader with push constants of its own defines CLOUDS_FRAME_UNIFORMS_INDEX to the member
+// that holds the index before including this file.
 #ifndef CLOUDS_FRAME_UNIFORMS_GLSL
 #define CLOUDS_FRAME_UNIFORMS_GLSL
 
@@ -16,8 +20,13 @@ layout(binding = kBindingUniforms, std140) uniform FrameUniforms {
   CloudUniforms frameUniforms[1];
 };
 
+#ifndef CLOUDS_FRAME_UNIFORMS_INDEX
+layout(push_constant) uniform FrameUniformsConstants { FrameUniformsIndex frameIndex; };
+#define CLOUDS_FRAME_UNIFORMS_INDEX frameIndex.index
+#endif
+
 CloudUniforms u;
 
-void loadFrameUniforms() { u = frameUniforms[gl_NumWorkGroups.z - 1u]; }
+void loadFrameUniforms() { u = frameUniforms[CLOUDS_FRAME_UNIFORMS_INDEX]; }
 
 #endif

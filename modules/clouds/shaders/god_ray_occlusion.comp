@@ -13,11 +13,12 @@
 #include "cloud_temporal.h"
 
 layout(local_size_x = kWorkgroupSize2D, local_size_y = kWorkgroupSize2D) in;
+layout(push_constant) uniform Constants { GodRayOcclusionConstants c; };
+#define CLOUDS_FRAME_UNIFORMS_INDEX c.frameUniformsIndex
 #include "frame_uniforms.glsl"
 layout(binding = kGodRayTraceSamples, rgba32ui) uniform readonly uimage2D traceSamples;
 layout(binding = kGodRaySceneDistance, r32f) uniform readonly image2D sceneDistance;
 layout(binding = kGodRayOcclusionOut, r32f) uniform writeonly image2D occlusion;
-layout(push_constant) uniform Constants { GodRayOcclusionConstants c; };
 
 #include "cloud_march.h"
 

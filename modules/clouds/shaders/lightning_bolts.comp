@@ -17,6 +17,8 @@
 layout(local_size_x = kWorkgroupSize2D, local_size_y = kWorkgroupSize2D) in;
 // 1: the host gave an aerial perspective; the bolts are hazed with it.
 layout(constant_id = kSpecBoltsAerialPerspective) const uint kAerialPerspective = 0u;
+layout(push_constant) uniform Constants { LightningBoltsConstants constants; };
+#define CLOUDS_FRAME_UNIFORMS_INDEX constants.frameUniformsIndex
 #include "frame_uniforms.glsl"
 layout(binding = kBoltsHostDepth) uniform sampler2D hostDepth;
 layout(binding = kBoltsRadiance, rgba16f) uniform image2D radianceImage;
@@ -27,7 +29,6 @@ layout(binding = kBoltsPieces, std430) readonly buffer LightningBolts {
   LightningBoltsHeader bolts;
   uvec4 boltQuads[];
 };
-layout(push_constant) uniform Constants { LightningBoltsConstants constants; };
 
 #include "vkfx/aerial_perspective.glsl"
 

@@ -265,6 +265,9 @@ void Context::Impl::bindAndDispatch(VkCommandBuffer cmd, Program program, VkPipe
   fn.vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pipeline);
   fn.vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, programs_[program].layout(), 0, 1,
                              &set, 0, nullptr);
+  const shader::FrameUniformsIndex index{0};
+  fn.vkCmdPushConstants(cmd, programs_[program].layout(), VK_SHADER_STAGE_COMPUTE_BIT, 0,
+                        sizeof(index), &index);
   fn.vkCmdDispatch(cmd, detail::groupsFor(width, shader::kWorkgroupSize2D),
                    detail::groupsFor(height, shader::kWorkgroupSize2D), 1);
 }
