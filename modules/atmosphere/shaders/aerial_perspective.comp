@@ -34,7 +34,7 @@ layout(binding = kBindingCloudShadowParameters, std140) uniform CloudShadow {
 float cloudSunVisibility(vec3 relative) {
   float visibility = 1.0;
   for (int i = 0; i < ((u.flags & kFlagCloudShadow) != 0u ? 1 : 0); ++i) {
-    const uint slot = gl_NumWorkGroups.z - 1u;
+    const uint slot = uniformsIndex;
     vec4 uv01;
     vec4 uv23;
     CLOUD_SHADOW_COORDINATES(cloudShadow[slot], relative, uv01, uv23);

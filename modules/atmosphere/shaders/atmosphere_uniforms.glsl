@@ -4,8 +4,9 @@
 // Why the dynamically indexed block: lavapipe "inlines" uniform-buffer values that decide a
 // branch or a loop bound into the shader and re-optimises it at every dispatch after a
 // descriptor bind (measured by the clouds module at ~5 ms a dispatch); indexing the block with
-// a value the compiler cannot fold (the dispatch depth minus one, always 0) makes the loads
-// dynamic, which the inliner skips.
+// a value the compiler cannot fold makes the loads dynamic, which the inliner skips. In compute
+// shaders the index is a push constant (always 0), which lavapipe loads once for all lanes (as
+// the clouds' frame_uniforms.glsl explains); the sky's draw uses the instance index.
 #ifndef ATMOSPHERE_UNIFORMS_GLSL
 #define ATMOSPHERE_UNIFORMS_GLSL
 
@@ -15,10 +16,11 @@ layout(binding = kBindingUniforms, std140) uniform Uniforms {
 
 AtmosphereUniforms u;
 
-// Compute shaders index with the dispatch depth; the sky's draw (a graphics pipeline, which has
+// Compute shaders index with a push constant; the sky's draw (a graphics pipeline, which has
 // no workgroups) defines ATMOSPHERE_GRAPHICS and indexes with the instance index, also 0.
 #ifndef ATMOSPHERE_GRAPHICS
-void loadUniforms() { u = frameUniforms[gl_NumWorkGroups.z - 1u]; }
+layout(push_constant) uniform UniformsIndex { uint uniformsIndex; };
+void loadUniforms() { u = frameUniforms[uniformsIndex]; }
 #endif
 void loadUniformsAt(uint zero) { u = frameUniforms[zero]; }
 

@@ -83,6 +83,7 @@ class Context::Impl {
   void releaseRetired(std::uint64_t frameIndex);
   void beginPass(VkCommandBuffer cmd, detail::Program program);
   void endPass(VkCommandBuffer cmd, detail::Program program);
+  void pushUniformsIndex(VkCommandBuffer cmd, VkPipelineLayout layout);
   void bindAndDispatch(VkCommandBuffer cmd, detail::Program program, const Slot& slot,
                        std::uint32_t x, std::uint32_t y, std::uint32_t z = 1);
   // `shadow`: the frame's cloud shadow (dispatch(); render() passes none and keeps it).

@@ -83,7 +83,8 @@ SpecializationKey applyKey(bool hasDepth, bool reversedZ) {
 Programs::Programs(const DeviceContext& device, bool reversedZ) {
   for (const ProgramDesc& desc : programTable()) {
     auto& program = programs_[index(desc.program)];
-    program = std::make_unique<ComputeProgram>(device, desc.spirv, desc.bindings, 0u, desc.name);
+    program = std::make_unique<ComputeProgram>(device, desc.spirv, desc.bindings,
+                                               sizeof(std::uint32_t), desc.name);
     if (desc.program == Program::Apply) {
       program->prepare(applyKey(false, reversedZ));
       program->prepare(applyKey(true, reversedZ));

@@ -28,6 +28,14 @@ void Context::Impl::endPass(VkCommandBuffer cmd, Program program) {
   device_.endLabel(cmd);
 }
 
+// The index of the uniform block's element the compute passes read, always 0
+// (atmosphere_uniforms.glsl says why it is a push constant).
+void Context::Impl::pushUniformsIndex(VkCommandBuffer cmd, VkPipelineLayout layout) {
+  const std::uint32_t index = 0;
+  device_.fn().vkCmdPushConstants(cmd, layout, VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof(index),
+                                  &index);
+}
+
 void Context::Impl::bindAndDispatch(VkCommandBuffer cmd, Program program, const Slot& slot,
                                     std::uint32_t x, std::uint32_t y, std::uint32_t z) {
   const auto& fn = device_.fn();
@@ -35,6 +43,7 @@ void Context::Impl::bindAndDispatch(VkCommandBuffer cmd, Program program, const 
   fn.vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, p.find());
   fn.vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, p.layout(), 0, 1,
                              &slot.sets[detail::index(program)], 0, nullptr);
+  pushUniformsIndex(cmd, p.layout());
   fn.vkCmdDispatch(cmd, x, y, z);
 }
 
@@ -176,6 +185,7 @@ void Context::Impl::render(VkCommandBuffer cmd, VkImageView color, VkImageView d
                        p.find(detail::applyKey(depth != VK_NULL_HANDLE, info_.reversedZ)));
   fn.vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, p.layout(), 0, 1,
                              &slot.sets[detail::index(Program::Apply)], 0, nullptr);
+  pushUniformsIndex(cmd, p.layout());
   const std::uint32_t group = shader::kWorkgroupSize2D;
   fn.vkCmdDispatch(cmd, detail::groupsFor(lastExtent_.width, group),
                    detail::groupsFor(lastExtent_.height, group), 1);
