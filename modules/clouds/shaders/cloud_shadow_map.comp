@@ -19,11 +19,11 @@ layout(local_size_x = kWorkgroupSize2D, local_size_y = kWorkgroupSize2D) in;
 
 layout(constant_id = kSpecShadowEmptySpace) const uint kEmptySpace = 1u;
 
-// Its push constants (ShadowMapConstants, inside TerrainShadowConstants' 128 bytes) have no room
-// for frame_uniforms.glsl's index: this pass keeps the lane-by-lane loads. They cost it nothing
-// measurable: with the index in the push constants (the rows packed into one word to make room)
-// the pass took as long (Medium 1.14-1.28 ms either way, clouds_bench's shadow section, two
-// rounds interleaved), its time being its marches, not its one load of the uniforms.
+// Its push constants (ShadowMapConstants, inside TerrainShadowConstants' 128 bytes) have no
+// spare word for frame_uniforms.glsl's index, so this pass keeps the lane-by-lane loads. Making
+// one (the rows packed into one word) bought nothing: the pass took as long (Medium 1.14-1.28 ms
+// either way, clouds_bench's shadow section, two rounds interleaved), its time being its
+// marches, not its one load of the uniforms.
 #define CLOUDS_FRAME_UNIFORMS_INDEX (gl_NumWorkGroups.z - 1u)
 #include "frame_uniforms.glsl"
 layout(binding = kShadowShapeNoise, rgba8) uniform readonly image3D shapeNoise;
