@@ -32,8 +32,8 @@
 layout(local_size_x = kWorkgroupSize2D, local_size_y = kWorkgroupSize2D) in;
 layout(constant_id = kSpecTemporalUpsampling) const uint kTemporalUpsampling = 0u;
 // Last frame's output history: 0 none (reset, resize, cut...), 1 the camera and
-// the clouds held still (each pixel's history is where it was: no reprojection, one load),
-// 2 reprojected (kSpecOutputHistory).
+// the clouds held still (each pixel's history is where it was: no reprojection, one load,
+// updated in place), 2 reprojected (kSpecOutputHistory).
 layout(constant_id = kSpecOutputHistory) const uint kOutputHistory = 0u;
 // 1: the host gave an aerial perspective; the output is hazed with it (kSpecAerialPerspective).
 layout(constant_id = kSpecAerialPerspective) const uint kAerialPerspective = 0u;
@@ -185,6 +185,7 @@ void main() {
   vec4 own = vec4(0.0f, 0.0f, 0.0f, 1.0f);
   float ownFront = 0.0f;
   uint ownSamples = 0u;
+  bool tookFresh = false;  // this frame's fresh sample was added to the own samples
   // (Every path of a shader costs on lavapipe, which runs both sides of a branch for all
   // lanes: what a frame does not need is compiled out by specialization instead.)
   if (kOutputHistory != 0u) {
@@ -238,6 +239,7 @@ void main() {
         own = mix(own, r, weight);
         if (d.x > 0.0f) ownFront = ownFront > 0.0f ? min(ownFront, d.x) : d.x;
         ownSamples = min(ownSamples + 1u, uint(u.upsamplingMaxSamples));
+        tookFresh = true;
       }
     }
   }
@@ -253,8 +255,16 @@ void main() {
   const float ownWeighted = spatialDepth.y > 0.0f ? spatialDepth.y : ownFront;
   depthBlendAdd(blend, trust, own.a, vec2(ownFront, ownWeighted));
   const vec2 depth = depthBlendResult(blend);
-  const uvec2 history = packOutputHistory(own, ownFront, ownSamples);
-  imageStore(outputHistoryOut, ivec2(pixel), uvec4(history, 0u, 0u));
+  // Nothing moved (kOutputHistory 1): the history is updated in place (TemporalState), and
+  // only pixels with a fresh sample (1 in 64 at High) pack and store, in a loop that rows of 8
+  // without one skip (7 in 8). The others would store the bits they read, or, where this
+  // frame set the history aside (geometry now in front, not finite), keep what is still the
+  // clouds' own samples for when the geometry has gone (a fresh sample replaces a poisoned
+  // one: its mean starts again from the sample alone).
+  CLOUDS_WHEN(kOutputHistory != 1u || tookFresh) {
+    const uvec2 history = packOutputHistory(own, ownFront, ownSamples);
+    imageStore(outputHistoryOut, ivec2(pixel), uvec4(history, 0u, 0u));
+  }
   imageStore(outRadiance, ivec2(pixel), outputRadiance(pixel, radiance, depth, scene));
   imageStore(outDepth, ivec2(pixel), vec4(depth, 0.0f, 0.0f));
 }

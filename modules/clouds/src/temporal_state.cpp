@@ -195,8 +195,6 @@ TemporalFrame TemporalState::plan(const FrameInputs& in, const Settings& s,
   frame.phase = tilePhase(frame.tileSize, frame.temporalIndex);
   frame.upsampleTemporally = upsamplesTemporally(s);
   frame.useOutputHistory = frame.upsampleTemporally && frame.useHistory && wroteOutputHistory_;
-  frame.readHistory = latestHistory_;
-  frame.writeHistory = 1u - latestHistory_;
   frame.cameraDelta = havePrevious_ ? in.cameraPosition - cameraPosition_ : glm::dvec3(0.0);
   frame.deltaSeconds = havePrevious_ ? std::max(in.timeSeconds - timeSeconds_, 0.0) : 0.0;
   const bool noDrift = frame.deltaSeconds == 0.0 || s.windSpeedMetresPerSecond == 0.0f;
@@ -204,6 +202,11 @@ TemporalFrame TemporalState::plan(const FrameInputs& in, const Settings& s,
   frame.previousProjection = havePrevious_ ? projection_ : in.projection;
   frame.still = havePrevious_ && frame.cameraDelta == glm::dvec3(0.0) && noDrift &&
                 in.view == view_ && in.projection == projection_;
+  // While nothing moves, a pixel's history stays where it is and changes only where a fresh
+  // sample lands (1 in 16 of the trace's pixels, 1 in 64 of the output's at High): the passes
+  // update it in place and store only those pixels. Otherwise they write the other image.
+  frame.readHistory = latestHistory_;
+  frame.writeHistory = frame.still && frame.useHistory ? latestHistory_ : 1u - latestHistory_;
   return frame;
 }
 

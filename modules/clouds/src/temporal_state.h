@@ -21,7 +21,7 @@ struct TemporalFrame {
   glm::uvec2 phase{0, 0};           // that pixel's offset in its tile
   std::uint32_t temporalIndex = 0;  // frames since the history was last reset
   std::uint32_t readHistory = 0;    // history image holding last frame's result
-  std::uint32_t writeHistory = 1;   // history image this frame writes
+  std::uint32_t writeHistory = 1;   // history image this frame writes (the same when still)
   // Temporal upsampling (Settings::temporalUpsampling): this frame accumulates into the
   // output-resolution history, and reads last frame's (valid only when it was written, at
   // this output extent, and the trace history is usable too). Same ping-pong indices.

@@ -51,7 +51,14 @@ TEST(TemporalState, FirstFrameHasNoHistoryThenAStaticCameraReprojects) {
   EXPECT_EQ(second.tileSize, 4u);
   EXPECT_EQ(second.temporalIndex, 1u);
   EXPECT_EQ(second.readHistory, first.writeHistory) << "reads what the last frame wrote";
-  EXPECT_NE(second.writeHistory, second.readHistory);
+  EXPECT_TRUE(second.still);
+  EXPECT_EQ(second.writeHistory, second.readHistory) << "nothing moved: updated in place";
+  clouds::FrameInputs moved = groundCamera();
+  moved.cameraPosition.x += 1.0;
+  const TemporalFrame third = run(state, moved, s);
+  EXPECT_FALSE(third.still);
+  EXPECT_EQ(third.readHistory, second.writeHistory);
+  EXPECT_NE(third.writeHistory, third.readHistory) << "reprojected into the other image";
 }
 
 TEST(TemporalState, TilePhasesVisitEveryPixelOfTheTileInBayerOrder) {
