@@ -213,53 +213,36 @@ VKFX_INLINE float cellExitDistance(vec2 p, vec2 d, float cell) {
   return min(exitX, exitZ) + 0.01f;
 }
 
-// Where a ray that is `t` metres along and above `top` (m) comes down to that altitude next:
-// t itself when it is not above it after all (float rounding), infinite when it never comes
-// down (a rising ray). A `curved` ray is the view march's, which starts at the camera and
-// curves away from the planet (layerSegment()); the shadow march's rays are straight.
-VKFX_INLINE float distanceDownTo(float top, float t, float altitude, vec3 direction, bool curved,
-                                 IN(CloudUniforms) u) {
-  if (!curved) {
-    return direction.y < 0.0f ? t + (top - altitude) / direction.y : kInfiniteDistance;
-  }
-  // Below the sphere at `top` for distances in [below.x, below.y] (none when both are -1).
-  const vec2 below = raySphere(u.cameraAltitudeMetres, direction.y, top, u.planetRadiusMetres);
-  if (t < below.x) return below.x;
-  return t <= below.y ? t : kInfiniteDistance;
-}
-
-// Empty-space skipping through one weather cell of side `cell` (m) whose maxima (R coverage, G
-// type) are `maxima`: the distance to jump to from `t` (t itself where the cell may hold cloud
-// at the sample). A cell without coverage is jumped over whole. Above the tallest cloud its
-// coverage and type allow, a ray jumps to the cell's edge or, if it comes down to that top
-// first, to where it does: a view from above the layer skips the clear air over the cloud tops.
-VKFX_INLINE float skipThroughCell(vec4 maxima, vec2 p, vec2 d, float cell, float t, float altitude,
-                                  vec3 direction, bool curved, IN(CloudUniforms) u) {
-  const float exit = t + cellExitDistance(p, d, cell);
-  if (layerCoverage(maxima.x, u.coverage) <= 0.0f) return exit;
+// True when a weather cell's maxima (R coverage, G type) leave no cloud at `altitude`: zero
+// coverage, or (for a ray whose altitude only grows) above the tallest cloud type's top.
+VKFX_INLINE bool weatherCellEmpty(vec4 maxima, float altitude, bool ascending,
+                                  IN(CloudUniforms) u) {
+  const float coverage = layerCoverage(maxima.x, u.coverage);
   const float type = saturate(u.cloudType + (maxima.y - 0.5f) * u.typeVariation);
   const float top =
       u.layerBottomMetres + typeProfile(type).w * (u.layerTopMetres - u.layerBottomMetres);
-  if (altitude <= top) return t;
-  return min(exit, distanceDownTo(top, t, altitude, direction, curved, u));
+  return coverage <= 0.0f || (ascending && altitude > top);
 }
 
 // Empty-space skipping: the distance to jump to from `t` (t itself when the sample's cell may
 // hold cloud), from the coarse then the fine grid of weather maxima, for a ray that starts at
-// the camera-relative flat offset `origin` (x, z) and is at `altitude` (m) at `t`.
+// the camera-relative flat offset `origin` (x, z).
 VKFX_INLINE float emptySpaceSkip(vec2 origin, float t, vec3 rayDirection, float altitude,
-                                 bool curved, IN(CloudUniforms) u) {
+                                 IN(CloudUniforms) u) {
   const vec2 d = vec2(rayDirection.x, rayDirection.z);
   const vec2 p = u.weatherOffsetMetres + origin + d * t;
+  const bool ascending = rayDirection.y >= 0.0f;
   const float coarse = u.coarseCellMetres;
   const ivec2 coarseCell = ivec2(floor(p / coarse)) & (kWeatherMaxCoarseSize - 1);
-  const float coarseSkip = skipThroughCell(fetchWeatherMaxCoarse(coarseCell), p, d, coarse, t,
-                                           altitude, rayDirection, curved, u);
-  if (coarseSkip > t) return coarseSkip;
+  if (weatherCellEmpty(fetchWeatherMaxCoarse(coarseCell), altitude, ascending, u)) {
+    return t + cellExitDistance(p, d, coarse);
+  }
   const float fine = u.fineCellMetres;
   const ivec2 fineCell = ivec2(floor(p / fine)) & (kWeatherMaxFineSize - 1);
-  return skipThroughCell(fetchWeatherMaxFine(fineCell), p, d, fine, t, altitude, rayDirection,
-                         curved, u);
+  if (weatherCellEmpty(fetchWeatherMaxFine(fineCell), altitude, ascending, u)) {
+    return t + cellExitDistance(p, d, fine);
+  }
+  return t;
 }
 
 // The cone kernel: the sideways direction of a ray's `index`-th light sample, a unit vector of
@@ -404,7 +387,7 @@ VKFX_INLINE MarchResult marchClouds(vec3 rayDirection, float sceneDistance, floa
     if (o.emptySpace != 0u) {
       const float skipTo =
           emptySpaceSkip(vec2(0.0f), t, rayDirection,
-                         altitudeAlongRay(t, cosZenith, altitude, u.planetRadiusMetres), true, u);
+                         altitudeAlongRay(t, cosZenith, altitude, u.planetRadiusMetres), u);
       if (skipTo > t) {
         t = skipTo;
         r.skippedCells += 1.0f;

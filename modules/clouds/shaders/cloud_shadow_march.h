@@ -52,7 +52,7 @@ VKFX_INLINE ShadowColumn marchShadowColumn(vec3 base, vec3 light, uint steps, fl
     if (emptySpace != 0u) {
       // The ray only climbs: an empty cell (or one whose tallest cloud is below) is skipped
       // to the first step whose sample lies beyond it.
-      const float skipTo = emptySpaceSkip(origin, t, light, altitude, false, u);
+      const float skipTo = emptySpaceSkip(origin, t, light, altitude, u);
       if (skipTo > t) {
         // (Clamped before the conversion: a vertical ray skips to "infinity".)
         k = int(min(ceil((skipTo - start) / stepLength - jitter), float(steps)));
