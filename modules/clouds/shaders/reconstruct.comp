@@ -75,8 +75,9 @@ vec4 historyAt(vec2 position, out vec2 depth) {
 
 // The pixel's result, and with lightning its glow. Read in place (nothing moved: the history
 // and the output are one image, TemporalState), a result that did not `change` is already
-// there, bit for bit: only fresh pixels are packed and stored, in a loop of 0 or 1 trips
-// that lanes without one skip (3 in 4 rows of 8 at a 1-in-16 refresh).
+// there, bit for bit: only the others (fresh pixels, and any whose history was unusable) are
+// packed and stored, in a loop of 0 or 1 trips that rows of 8 lanes without one skip (3 in 4
+// at a 1-in-16 refresh).
 void writeResult(uvec2 pixel, vec4 result, vec2 resultDepth, bool changed) {
   CLOUDS_WHEN(kHistory != kHistoryInPlace || changed) {
     imageStore(outSamples, ivec2(pixel), packCloudSample(result, resultDepth));
