@@ -26,6 +26,7 @@ layout(constant_id = kSpecLightSteps) const uint kLightSteps = 6u;
 layout(constant_id = kSpecCounters) const uint kCounters = 0u;
 layout(constant_id = kSpecEmptySpace) const uint kEmptySpace = 1u;
 layout(constant_id = kSpecTerrainShadow) const uint kTerrainShadow = 0u;
+layout(constant_id = kSpecLightReuse) const uint kLightReuse = 1u;
 
 #include "frame_uniforms.glsl"
 layout(binding = kMarchShapeNoise, rgba8) uniform readonly image3D shapeNoise;
@@ -90,6 +91,7 @@ void main() {
   options.multipleScattering = kMultipleScattering;
   options.lightSteps = kLightSteps;
   options.emptySpace = kEmptySpace;
+  options.lightReuse = kLightReuse;
   const float jitter = rayJitter(pixel, u.rayStartOffset, u.tileSize,
                                  (u.flags & kFlagRebuiltInsideLayer) != 0u, kJitterMode);
   const MarchResult result = marchClouds(

@@ -45,6 +45,7 @@ struct MarchOptions {
   uint multipleScattering;  // octave approximation
   uint lightSteps;          // samples towards the sun per cloudy view sample
   uint emptySpace;          // jump over weather cells without cloud
+  uint lightReuse;          // the sun's optical depth on every other step (lightOpticalDepth())
 };
 
 struct MarchResult {
@@ -380,6 +381,9 @@ VKFX_INLINE MarchResult marchClouds(vec3 rayDirection, float sceneDistance, floa
   bool fine = o.cheapSampling == 0u;
   int emptyRun = 0;
   int samples = 0;
+  // The optical depth towards the sun of the last cloudy sample, while the ray is in cloud.
+  float sunOpticalDepth = 0.0f;
+  bool inCloud = false;
   // Jumps over empty cells do not spend the sample budget (a long ray over clear sky must
   // still reach the clouds behind it); kMaxSkips bounds them. Nor do the near steps.
   for (int i = 0; i < maxSteps + kMaxSkips + kMaxNearSteps; ++i) {
@@ -411,12 +415,21 @@ VKFX_INLINE MarchResult marchClouds(vec3 rayDirection, float sceneDistance, floa
       emptyRun = 0;
       continue;
     }
-    CLOUDS_WHEN(field.sigmaT > 0.0f) {
-      const float tau = lightOpticalDepth(flatOffset, sampleAltitude, sampleDistance, jitter,
+    // With light reuse, a cloudy sample that follows another takes its optical depth towards
+    // the sun on odd iterations: the sun's path from two samples one fine step apart differs
+    // by that step's share of it. The iteration's parity (not the ray's count of cloudy
+    // samples) decides, so the lanes of a group skip the light samples together: on lavapipe
+    // a group takes them when any of its lanes does.
+    const bool reuse = o.lightReuse != 0u && inCloud && (i & 1) == 1;
+    CLOUDS_WHEN(field.sigmaT > 0.0f && !reuse) {
+      sunOpticalDepth = lightOpticalDepth(flatOffset, sampleAltitude, sampleDistance, jitter,
                                           o.lightSteps, lightRandom, u, r.lightSamples);
+    }
+    inCloud = field.sigmaT > 0.0f;
+    CLOUDS_WHEN(field.sigmaT > 0.0f) {
       const float sunLight = terrainSunLight(flatOffset, sampleAltitude);
-      const vec3 light = sampleRadiance(tau, sunLight, phases, field.profile, field.heightFraction,
-                                        u, o.multipleScattering);
+      const vec3 light = sampleRadiance(sunOpticalDepth, sunLight, phases, field.profile,
+                                        field.heightFraction, u, o.multipleScattering);
       const float stepTransmittance = beerLambert(field.sigmaT * stepLength);
       // Energy-conserving step (Hillaire 2016): the scattered light of a homogeneous step is
       // S (1 - exp(-sigma d)) / sigma with S = albedo sigma L, weighted by the transmittance.

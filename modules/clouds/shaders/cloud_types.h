@@ -127,7 +127,8 @@ const uint kSpecLightSteps = 4u;          // light samples per view sample (>= 0
 const uint kSpecCounters = 5u;            // 0/1: accumulate work counters (benchmarks, tests)
 const uint kSpecEmptySpace = 6u;          // 0/1: skip empty weather cells
 const uint kSpecTerrainShadow = 7u;       // 0/1: the terrain's shadow takes the sun from clouds
-const uint kMarchSpecCount = 8u;
+const uint kSpecLightReuse = 8u;          // 0/1: the sun's optical depth on every other step
+const uint kMarchSpecCount = 9u;
 // reconstruct.comp
 const uint kSpecHistory = 0u;  // 0 none, 1 read in place (nothing moved), 2 reprojected
 const uint kSpecReconstructLightning = 1u;  // 0/1: write the glow with this frame's flashes

@@ -1,9 +1,17 @@
 #include "pipeline_variants.h"
 
+#include <tuple>
+
 #include "cloud_types.h"
 #include "uniforms.h"
 
 namespace clouds::detail {
+
+namespace {
+constexpr std::size_t kKeyCapacity = std::tuple_size_v<decltype(SpecializationKey::values)>;
+static_assert(shader::kMarchSpecCount <= kKeyCapacity && shader::kUpsampleSpecCount <= kKeyCapacity,
+              "a program has more specialization constants than a key holds");
+}  // namespace
 
 SpecializationKey marchKey(const Settings& settings, bool workCounters, bool terrainShadow) {
   const MarchVariant v = marchVariant(settings);
@@ -16,6 +24,7 @@ SpecializationKey marchKey(const Settings& settings, bool workCounters, bool ter
   key.values[shader::kSpecCounters] = workCounters ? 1u : 0u;
   key.values[shader::kSpecEmptySpace] = v.emptySpace;
   key.values[shader::kSpecTerrainShadow] = terrainShadow ? 1u : 0u;
+  key.values[shader::kSpecLightReuse] = v.lightReuse;
   key.count = shader::kMarchSpecCount;
   return key;
 }

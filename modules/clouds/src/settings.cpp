@@ -162,6 +162,7 @@ Settings referenceSettings(const Settings& base) {
   s.temporalReuse = false;
   s.emptySpaceSkipping = false;
   s.noiseLevelOfDetail = false;  // the subpixel jitter filters the noise over the pixel
+  s.lightEveryOtherStep = false;
   s.maxViewSteps = 8192;
   s.viewStepMetres = 12.0f;
   s.viewStepGrowth = 0.0015f;
@@ -248,8 +249,13 @@ Settings settingsFor(Quality quality, const Settings& base) {
       s.traceScale = 0.5f;
       s.updateInterval = 16;
       s.maxViewSteps = 96;
+      // Half Medium's growth of the step with distance: seen from above the layer, High's error
+      // lies on the rims of clouds tens of kilometres away, where the steps grew longest
+      // (+1 dB there for 2.5% more time, which light reuse pays back). Coarse steps stay about
+      // as long, so crossing empty space costs what it did.
       s.viewStepMetres = 60.0f;
-      s.viewStepGrowth = 0.004f;
+      s.viewStepGrowth = 0.002f;
+      s.coarseStepFactor = 3.3f;
       s.lightSteps = 6;
       s.detailDistanceMetres = 60000.0f;  // to the max distance: far clouds seen from above
                                           // are visibly fatter without their erosion
@@ -264,7 +270,8 @@ Settings settingsFor(Quality quality, const Settings& base) {
       s.updateInterval = 4;
       s.maxViewSteps = 160;
       s.viewStepMetres = 40.0f;
-      s.viewStepGrowth = 0.003f;
+      s.viewStepGrowth = 0.002f;  // High's, with High's coarse steps
+      s.coarseStepFactor = 3.3f;
       s.lightSteps = 10;
       s.detailDistanceMetres = 60000.0f;
       s.transmittanceCutoff = 0.002f;

@@ -139,7 +139,8 @@ bool cloudsLookDifferent(const Settings& a, const Settings& b) {
          a.cheapSampling != b.cheapSampling || a.emptySamplesToCoarse != b.emptySamplesToCoarse ||
          a.detail != b.detail || a.jitter != b.jitter ||
          a.emptySpaceSkipping != b.emptySpaceSkipping ||
-         a.noiseLevelOfDetail != b.noiseLevelOfDetail;
+         a.noiseLevelOfDetail != b.noiseLevelOfDetail ||
+         a.lightEveryOtherStep != b.lightEveryOtherStep;
 }
 
 TemporalFrame TemporalState::plan(const FrameInputs& in, const Settings& s,

@@ -204,7 +204,8 @@ MarchVariant marchVariant(const Settings& s) {
   const Jitter jitter = upsamplesTemporally(s) ? Jitter::BayerHaltonSubpixel : s.jitter;
   return MarchVariant{
       static_cast<std::uint32_t>(jitter), s.detail ? 1u : 0u, s.cheapSampling ? 1u : 0u,
-      s.multipleScattering ? 1u : 0u,     s.lightSteps,       s.emptySpaceSkipping ? 1u : 0u};
+      s.multipleScattering ? 1u : 0u,     s.lightSteps,       s.emptySpaceSkipping ? 1u : 0u,
+      s.lightEveryOtherStep ? 1u : 0u};
 }
 
 VkExtent2D traceExtentFor(VkExtent2D full, float traceScale) {

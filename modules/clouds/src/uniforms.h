@@ -28,6 +28,7 @@ struct MarchVariant {
   std::uint32_t multipleScattering;
   std::uint32_t lightSteps;
   std::uint32_t emptySpace;
+  std::uint32_t lightReuse;
 };
 MarchVariant marchVariant(const Settings& settings);
 

@@ -75,7 +75,8 @@ clouds::Settings slabSettings(float sigma, float stepMetres) {
   s.inScatterStrength = 0.0f;
   s.ambientOcclusionStrength = 0.0f;
   s.jitter = clouds::Jitter::None;
-  s.emptySpaceSkipping = false;  // the homogeneous test slab ignores the weather map
+  s.emptySpaceSkipping = false;   // the homogeneous test slab ignores the weather map
+  s.lightEveryOtherStep = false;  // every sample's own light (LightReuse... tests the reuse)
   return s;
 }
 
@@ -189,6 +190,67 @@ TEST(CloudModelCpu, SlabRadianceConvergesAsStepsDouble) {
   for (double e : errors) trace += std::to_string(e) + " ";
   EXPECT_LT(errors.back(), errors.front() / 10.0) << trace;
   EXPECT_LT(errors.back(), 2e-3) << trace;
+}
+
+// Light reuse (MarchOptions::lightReuse): of two cloudy samples in a row, the second takes the
+// first's optical depth towards the sun. Through the slab, where that depth changes smoothly,
+// about half the light samples give the same transmittance and a single scattering that
+// differs by the step's share of the sun's path: a first-order error, halving with the step.
+TEST(CloudModelCpu, LightReuseHalvesTheLightSamplesForAFirstOrderError) {
+  const VkExtent2D extent{1, 1};
+  const double elevation = glm::radians(50.0);
+  const glm::vec3 sun(0.0f, static_cast<float>(std::sin(elevation)),
+                      -static_cast<float>(std::cos(elevation)));
+  const double thickness = 2500.0;
+  const float sigma = 0.4f / 2500.0f;
+  const std::uint32_t lightSteps = 8;
+  std::vector<double> differences;
+  std::string trace;
+  for (float step : {100.0f, 50.0f, 25.0f}) {
+    clouds::Settings s = slabSettings(sigma, step);
+    s.lightConeMetres = static_cast<float>(thickness / std::sin(elevation) * 1.0001);
+    s.lightConeSpread = 0.0f;
+    s.albedo = 1.0f;
+    CloudUniforms u = uniformsFor(s, 300.0, 90.0, extent, sun);
+    u.flags |= kFlagHomogeneous;
+    const vec3 dir = pixelRayDirection(vec2(0.5f, 0.5f), vec2(1.0f, 1.0f), u);
+    MarchOptions options{};
+    options.lightSteps = lightSteps;
+    const MarchResult own = marchClouds(dir, kInfiniteDistance, 0.5f, vec3(0.5f), u, options);
+    options.lightReuse = 1u;
+    const MarchResult reused = marchClouds(dir, kInfiniteDistance, 0.5f, vec3(0.5f), u, options);
+    // Every other sample marches its own (the first of the run included): half, rounded up.
+    EXPECT_NEAR(reused.lightSamples, own.lightSamples / 2.0f, float(lightSteps)) << step;
+    EXPECT_EQ(reused.transmittance, own.transmittance) << step;
+    differences.push_back(std::abs(reused.radiance.r - own.radiance.r) / own.radiance.r);
+    trace += std::to_string(differences.back()) + " ";
+  }
+  EXPECT_GT(differences.front(), 0.0) << trace;  // the reuse took place
+  EXPECT_LT(differences.front(), 0.02) << trace;
+  EXPECT_LT(differences.back(), differences.front() / 3.0) << trace;  // 4x finer steps
+}
+
+// The first cloudy sample of a run has no optical depth to reuse, even on a step where it
+// would. With cheap sampling and a budget of 2, the coarse sample that finds the slab (step 0)
+// is taken again as a fine one on step 1, the ray's only cloudy sample: with reuse or without,
+// the same light.
+TEST(CloudModelCpu, LightReuseNeverReusesAcrossEmptySpace) {
+  const VkExtent2D extent{1, 1};
+  const glm::vec3 sun(0.0f, 0.766f, -0.643f);
+  clouds::Settings s = slabSettings(0.4f / 2500.0f, 100.0f);
+  s.maxViewSteps = 2;
+  CloudUniforms u = uniformsFor(s, 300.0, 90.0, extent, sun);
+  u.flags |= kFlagHomogeneous;
+  const vec3 dir = pixelRayDirection(vec2(0.5f, 0.5f), vec2(1.0f, 1.0f), u);
+  MarchOptions options{};
+  options.cheapSampling = 1u;
+  options.lightSteps = 4;
+  const MarchResult own = marchClouds(dir, kInfiniteDistance, 0.5f, vec3(0.5f), u, options);
+  options.lightReuse = 1u;
+  const MarchResult reused = marchClouds(dir, kInfiniteDistance, 0.5f, vec3(0.5f), u, options);
+  ASSERT_EQ(own.viewSamples, 2.0f);
+  EXPECT_EQ(reused.lightSamples, own.lightSamples);
+  EXPECT_EQ(reused.radiance.r, own.radiance.r);
 }
 
 TEST(CloudModelCpu, WhiteFurnaceConservesEnergy) {

@@ -23,6 +23,8 @@ TEST(CloudSettings, ReferenceIsMoreAccurateOnEveryCostKnob) {
   EXPECT_GT(ref.maxViewSteps, base.maxViewSteps);
   EXPECT_GT(ref.lightSteps, base.lightSteps);
   EXPECT_FALSE(ref.cheapSampling);
+  EXPECT_TRUE(base.lightEveryOtherStep);
+  EXPECT_FALSE(ref.lightEveryOtherStep);
   EXPECT_LT(ref.transmittanceCutoff, base.transmittanceCutoff);
 }
 

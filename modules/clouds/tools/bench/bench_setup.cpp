@@ -113,9 +113,9 @@ namespace {
 // High's value of each knob: where High sits in each sweep.
 const std::map<std::string, double>& highKnobs() {
   static const std::map<std::string, double> knobs = {
-      {"view step", 1.0},           {"light steps", 6.0},          {"trace scale", 0.5},
-      {"update interval", 16.0},    {"temporal reuse", 1.0},       {"empty-space skipping", 1.0},
-      {"temporal upsampling", 1.0}, {"noise level of detail", 1.0}};
+      {"view step", 1.0},           {"light steps", 6.0},           {"trace scale", 0.5},
+      {"update interval", 16.0},    {"temporal reuse", 1.0},        {"empty-space skipping", 1.0},
+      {"temporal upsampling", 1.0}, {"noise level of detail", 1.0}, {"light reuse", 1.0}};
   return knobs;
 }
 
@@ -178,9 +178,12 @@ std::vector<BenchConfig> benchConfigs() {
         [](clouds::Settings& s, double) { s.temporalUpsampling = false; });
   sweep("noise level of detail", {0.0}, "",
         [](clouds::Settings& s, double) { s.noiseLevelOfDetail = false; });
+  sweep("light reuse", {0.0}, "",
+        [](clouds::Settings& s, double) { s.lightEveryOtherStep = false; });
   for (BenchConfig& c : configs) {
     if (c.sweep == "temporal reuse" || c.sweep == "empty-space skipping" ||
-        c.sweep == "temporal upsampling" || c.sweep == "noise level of detail") {
+        c.sweep == "temporal upsampling" || c.sweep == "noise level of detail" ||
+        c.sweep == "light reuse") {
       c.value = "off";
       c.name = c.sweep + " off";
     }

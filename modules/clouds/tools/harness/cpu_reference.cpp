@@ -106,8 +106,8 @@ CloudFrame renderCpuReference(const CpuTextures& textures, const CloudUniforms& 
                               unsigned threads) {
   gTextures = &textures;
   const clouds::detail::MarchVariant variant = clouds::detail::marchVariant(settings);
-  MarchOptions options{variant.detail, variant.cheapSampling, variant.multipleScattering,
-                       variant.lightSteps, variant.emptySpace};
+  MarchOptions options{variant.detail,     variant.cheapSampling, variant.multipleScattering,
+                       variant.lightSteps, variant.emptySpace,    variant.lightReuse};
   CloudFrame frame;
   frame.extent = {u.traceExtent.x, u.traceExtent.y};
   const std::size_t pixels = std::size_t{u.traceExtent.x} * u.traceExtent.y;
