@@ -12,8 +12,9 @@
 //  - takes coarse steps on cheap low-frequency samples in empty space and steps back into fine
 //    steps with full detail on a hit, returning to coarse steps after a run of empty samples;
 //  - marches towards the sun only where there is cloud (a cone of samples with growing spacing
-//    and no detail), integrates each step energy-conservingly, and exits early once the
-//    transmittance is negligible (renormalising, so no energy is lost).
+//    and no detail; with light reuse on every other step while the ray stays in cloud),
+//    integrates each step energy-conservingly, and exits early once the transmittance is
+//    negligible (renormalising, so no energy is lost).
 // lavapipe executes the body of an `if` whenever it is reached, even when no lane takes it, so
 // data-dependent work sits in loops whose trip count is 0 when there is nothing to do
 // (CLOUDS_WHEN below), and feature toggles arrive as compile-time constants (MarchOptions).

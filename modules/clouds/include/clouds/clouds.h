@@ -244,6 +244,7 @@ struct Settings {
   // remapped noise: from 1 texel a pixel, far clouds flicker half as much but High loses 5.7 dB
   // against the Reference above the layer; from 4 (the default) it keeps its accuracy.
   bool noiseLevelOfDetail = true;
+  float noiseTexelsPerPixel = 4.0f;  // [1, 64] level-0 texels a pixel covers where LOD starts
   // Light reuse: of two cloudy view samples in a row, the second takes the first's optical
   // depth towards the sun instead of marching its own (on every other step of the march, the
   // same steps for every ray, so that on a CPU's 8-wide lanes whole groups skip the light
@@ -251,7 +252,6 @@ struct Settings {
   // view -0.4 to +0.9 dB), 3% less time along its fly-through; the Reference marches every
   // sample's own.
   bool lightEveryOtherStep = true;
-  float noiseTexelsPerPixel = 4.0f;  // [1, 64] level-0 texels a pixel covers where LOD starts
   Jitter jitter = Jitter::BayerHalton;
   bool emptySpaceSkipping = true;  // jump over weather cells without cloud (exact)
 
