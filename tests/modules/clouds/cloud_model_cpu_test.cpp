@@ -160,22 +160,40 @@ double slabSingleScattering(double sigma, double thickness, double mu, double ph
   return phase * sigma * std::exp(-sigma * thickness / mu) * std::expm1(-k * thickness) / -k;
 }
 
+// The sunlit slab of the single-scattering tests: 2500 m thick, optical depth 0.4 vertically,
+// the sun 50 degrees up, seen straight up from below; the light march spans the sun's whole
+// path through it along the sun itself (no cone), albedo 1.
+constexpr double kSunlitSlabThickness = 2500.0;
+constexpr float kSunlitSlabSigma = 0.4f / 2500.0f;
+const double kSunlitSlabElevation = glm::radians(50.0);
+const glm::vec3 kSunlitSlabSun(0.0f, static_cast<float>(std::sin(kSunlitSlabElevation)),
+                               -static_cast<float>(std::cos(kSunlitSlabElevation)));
+
+clouds::Settings sunlitSlabSettings(float stepMetres) {
+  clouds::Settings s = slabSettings(kSunlitSlabSigma, stepMetres);
+  s.lightConeMetres =
+      static_cast<float>(kSunlitSlabThickness / std::sin(kSunlitSlabElevation) * 1.0001);
+  s.lightConeSpread = 0.0f;
+  s.albedo = 1.0f;
+  return s;
+}
+
+CloudUniforms sunlitSlabUniforms(const clouds::Settings& s) {
+  CloudUniforms u = uniformsFor(s, 300.0, 90.0, VkExtent2D{1, 1}, kSunlitSlabSun);
+  u.flags |= kFlagHomogeneous;
+  return u;
+}
+
 TEST(CloudModelCpu, SlabRadianceConvergesAsStepsDouble) {
-  const VkExtent2D extent{1, 1};
-  const double elevation = glm::radians(50.0);
-  const glm::vec3 sun(0.0f, static_cast<float>(std::sin(elevation)),
-                      -static_cast<float>(std::cos(elevation)));
-  const double thickness = 2500.0;
-  const float sigma = 0.4f / 2500.0f;  // optical depth 0.4 vertically
+  const glm::vec3 sun = kSunlitSlabSun;
+  const double elevation = kSunlitSlabElevation;
+  const double thickness = kSunlitSlabThickness;
+  const float sigma = kSunlitSlabSigma;
   std::vector<double> errors;
   for (std::uint32_t doubling = 0; doubling < 6; ++doubling) {
-    clouds::Settings s = slabSettings(sigma, 500.0f / float(1u << doubling));
+    clouds::Settings s = sunlitSlabSettings(500.0f / float(1u << doubling));
     s.lightSteps = 2u << doubling;
-    s.lightConeMetres = static_cast<float>(thickness / std::sin(elevation) * 1.0001);
-    s.lightConeSpread = 0.0f;
-    s.albedo = 1.0f;
-    CloudUniforms u = uniformsFor(s, 300.0, 90.0, extent, sun);
-    u.flags |= kFlagHomogeneous;
+    const CloudUniforms u = sunlitSlabUniforms(s);
     const auto frame = clouds::tools::renderCpuReference(textures(), u, s, {}, 1);
     const vec3 dir = pixelRayDirection(vec2(0.5f, 0.5f), vec2(1.0f, 1.0f), u);
     const double phase =
@@ -197,22 +215,11 @@ TEST(CloudModelCpu, SlabRadianceConvergesAsStepsDouble) {
 // about half the light samples give the same transmittance and a single scattering that
 // differs by the step's share of the sun's path: a first-order error, halving with the step.
 TEST(CloudModelCpu, LightReuseHalvesTheLightSamplesForAFirstOrderError) {
-  const VkExtent2D extent{1, 1};
-  const double elevation = glm::radians(50.0);
-  const glm::vec3 sun(0.0f, static_cast<float>(std::sin(elevation)),
-                      -static_cast<float>(std::cos(elevation)));
-  const double thickness = 2500.0;
-  const float sigma = 0.4f / 2500.0f;
   const std::uint32_t lightSteps = 8;
   std::vector<double> differences;
   std::string trace;
   for (float step : {100.0f, 50.0f, 25.0f}) {
-    clouds::Settings s = slabSettings(sigma, step);
-    s.lightConeMetres = static_cast<float>(thickness / std::sin(elevation) * 1.0001);
-    s.lightConeSpread = 0.0f;
-    s.albedo = 1.0f;
-    CloudUniforms u = uniformsFor(s, 300.0, 90.0, extent, sun);
-    u.flags |= kFlagHomogeneous;
+    const CloudUniforms u = sunlitSlabUniforms(sunlitSlabSettings(step));
     const vec3 dir = pixelRayDirection(vec2(0.5f, 0.5f), vec2(1.0f, 1.0f), u);
     MarchOptions options{};
     options.lightSteps = lightSteps;
@@ -235,12 +242,9 @@ TEST(CloudModelCpu, LightReuseHalvesTheLightSamplesForAFirstOrderError) {
 // is taken again as a fine one on step 1, the ray's only cloudy sample: with reuse or without,
 // the same light.
 TEST(CloudModelCpu, LightReuseNeverReusesAcrossEmptySpace) {
-  const VkExtent2D extent{1, 1};
-  const glm::vec3 sun(0.0f, 0.766f, -0.643f);
-  clouds::Settings s = slabSettings(0.4f / 2500.0f, 100.0f);
+  clouds::Settings s = sunlitSlabSettings(100.0f);
   s.maxViewSteps = 2;
-  CloudUniforms u = uniformsFor(s, 300.0, 90.0, extent, sun);
-  u.flags |= kFlagHomogeneous;
+  const CloudUniforms u = sunlitSlabUniforms(s);
   const vec3 dir = pixelRayDirection(vec2(0.5f, 0.5f), vec2(1.0f, 1.0f), u);
   MarchOptions options{};
   options.cheapSampling = 1u;
