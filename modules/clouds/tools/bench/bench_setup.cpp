@@ -188,6 +188,10 @@ std::vector<BenchConfig> benchConfigs() {
       c.name = c.sweep + " off";
     }
   }
+  BenchConfig again;
+  again.name = kHighTimedAgain;
+  again.timingRepeat = true;
+  configs.push_back(again);
   return configs;
 }
 

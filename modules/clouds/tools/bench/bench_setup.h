@@ -38,6 +38,9 @@ struct BenchConfig {
   std::string sweep;  // "" for presets, else the knob ("light steps", ...)
   std::string value;  // the knob's value as shown on the plot ("10")
   bool preset = false;
+  // High once more (kHighTimedAgain), last in the interleaving: how far apart two timings of
+  // the same work land in this run (the targets' "cheaper" must be more than that).
+  bool timingRepeat = false;
   clouds::Quality quality = clouds::Quality::High;  // the base of the configuration
   // Applied to settingsFor(quality, look).
   void (*adjust)(clouds::Settings& settings, double value) = nullptr;
@@ -45,6 +48,8 @@ struct BenchConfig {
 
   clouds::Settings settingsFor(const clouds::Settings& look) const;
 };
+
+inline constexpr const char* kHighTimedAgain = "High, timed again";
 
 // The quality presets Low, Medium, High, Ultra as configurations.
 std::vector<BenchConfig> presetConfigs();
