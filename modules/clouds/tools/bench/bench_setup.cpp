@@ -167,27 +167,24 @@ std::vector<BenchConfig> benchConfigs() {
         [](clouds::Settings& s, double scale) { s.traceScale = float(scale); });
   sweep("update interval", {4.0, 1.0}, "",
         [](clouds::Settings& s, double n) { s.updateInterval = std::uint32_t(n); });
+  // A feature switched off: one point, named "<feature> off".
+  const auto switchedOff = [&](const char* feature, void (*adjust)(clouds::Settings&, double)) {
+    sweep(feature, {0.0}, "", adjust);
+    configs.back().value = "off";
+    configs.back().name = std::string(feature) + " off";
+  };
   // Off: every pixel marched every frame with no history (what reuse saves).
-  sweep("temporal reuse", {0.0}, "", [](clouds::Settings& s, double) {
+  switchedOff("temporal reuse", [](clouds::Settings& s, double) {
     s.temporalReuse = false;
     s.updateInterval = 1;
   });
-  sweep("empty-space skipping", {0.0}, "",
-        [](clouds::Settings& s, double) { s.emptySpaceSkipping = false; });
-  sweep("temporal upsampling", {0.0}, "",
-        [](clouds::Settings& s, double) { s.temporalUpsampling = false; });
-  sweep("noise level of detail", {0.0}, "",
-        [](clouds::Settings& s, double) { s.noiseLevelOfDetail = false; });
-  sweep("light reuse", {0.0}, "",
-        [](clouds::Settings& s, double) { s.lightEveryOtherStep = false; });
-  for (BenchConfig& c : configs) {
-    if (c.sweep == "temporal reuse" || c.sweep == "empty-space skipping" ||
-        c.sweep == "temporal upsampling" || c.sweep == "noise level of detail" ||
-        c.sweep == "light reuse") {
-      c.value = "off";
-      c.name = c.sweep + " off";
-    }
-  }
+  switchedOff("empty-space skipping",
+              [](clouds::Settings& s, double) { s.emptySpaceSkipping = false; });
+  switchedOff("temporal upsampling",
+              [](clouds::Settings& s, double) { s.temporalUpsampling = false; });
+  switchedOff("noise level of detail",
+              [](clouds::Settings& s, double) { s.noiseLevelOfDetail = false; });
+  switchedOff("light reuse", [](clouds::Settings& s, double) { s.lightEveryOtherStep = false; });
   BenchConfig again;
   again.name = kHighTimedAgain;
   again.timingRepeat = true;
