@@ -192,7 +192,8 @@ void writeMarkdown(const std::filesystem::path& file, const BenchResults& result
          "the machine's speed cancels. Error is against the Reference mode of the same view "
          "averaged over "
       << o.referenceFrames
-      << " frames whose rays move inside their pixels (converged and supersampled), on the "
+      << " frames whose rays move over a 4 x 4 grid inside their pixels (converged and "
+         "supersampled; the grid's points are not the presets' own, bench_reference.h), on the "
          "tonemapped image (values in [0, 1]); PSNR over several views is pooled from their mean "
          "squared error, leaving out the clear sky (identical in every configuration, PSNR 200). "
          "Pass times are medians over the frames that ran the pass (the weather map is made "

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <memory>
 
+#include "bench_reference.h"
 #include "engine/core/error.h"
 
 namespace bench {
@@ -87,12 +88,16 @@ struct Reference {
 Reference renderReference(clouds::tools::CloudHarness& harness,
                           const clouds::tools::CloudView& view, const clouds::Settings& look,
                           VkExtent2D extent, std::uint32_t frames) {
-  const clouds::Settings settings = clouds::settingsFor(clouds::Quality::Reference, look);
+  clouds::Settings settings = clouds::settingsFor(clouds::Quality::Reference, look);
+  // Rays at their pixels' centres: the bench moves them (bench_reference.h).
+  settings.jitter = clouds::Jitter::BayerHalton;
   harness.cut();
   clouds::tools::CloudFrame sum;
   Reference reference;
   for (std::uint32_t i = 0; i < frames; ++i) {
-    const clouds::tools::CloudFrame frame = harness.render(view, settings, extent);
+    clouds::tools::CloudView jittered = view;
+    jittered.projectionJitterPixels = referenceSubpixelOffset(i);
+    const clouds::tools::CloudFrame frame = harness.render(jittered, settings, extent);
     reference.milliseconds.push_back(harness.lastGpuMilliseconds());
     if (i == 0) {
       sum = frame;

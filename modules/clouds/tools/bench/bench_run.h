@@ -22,7 +22,7 @@ struct RunOptions {
   // 1-in-16 refresh and half-resolution trace, 64 give every output pixel an own sample).
   std::uint32_t upsampledConvergeFrames = 128;
   std::uint32_t timedFrames = 9;        // static views: timed frames per configuration
-  std::uint32_t referenceFrames = 8;    // frames averaged into each Reference image
+  std::uint32_t referenceFrames = 16;   // frames averaged into each Reference image
   std::uint32_t flyFrames = 48;         // frames of the fly-through
   std::uint32_t flyReferenceEvery = 8;  // reference (and error) every n-th fly-through frame
   std::uint32_t flyWarmUpFrames = 16;   // no error measured before this frame of the path

@@ -70,8 +70,12 @@ glm::mat4 viewMatrix(const CloudView& v) {
 }
 
 glm::mat4 projectionMatrix(const CloudView& v, VkExtent2D extent) {
-  return render::perspectiveReversedZ(glm::radians(v.verticalFovDegrees),
-                                      float(extent.width) / float(extent.height), kNearMetres);
+  glm::mat4 projection = render::perspectiveReversedZ(
+      glm::radians(v.verticalFovDegrees), float(extent.width) / float(extent.height), kNearMetres);
+  // A shift in normalised device coordinates (2 units across the image) after the divide by w.
+  projection[2][0] += 2.0f * v.projectionJitterPixels.x / float(extent.width);
+  projection[2][1] += 2.0f * v.projectionJitterPixels.y / float(extent.height);
+  return projection;
 }
 
 PixelRays::PixelRays(const CloudView& view, VkExtent2D extent)

@@ -30,6 +30,10 @@ struct CloudView {
   double yawDegrees = 0.0;     // counter-clockwise seen from above
   double pitchDegrees = 10.0;  // up is positive
   float verticalFovDegrees = 70.0f;
+  // Moves every ray by this much of an output pixel, through the projection (as a host's TAA
+  // jitter would): the bench's Reference takes its subpixel positions from its own sequence,
+  // so that its average owes nothing to the positions the module's presets sample.
+  glm::vec2 projectionJitterPixels{0.0f};
   double sunElevationDegrees = 35.0;
   double sunAzimuthDegrees = 200.0;  // 0 = towards -Z, counter-clockwise
   glm::vec3 sunIlluminance{10.0f, 9.6f, 9.0f};
