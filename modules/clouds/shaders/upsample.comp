@@ -244,11 +244,22 @@ void main() {
     }
   }
 
-  // The result: the own samples' mean, blended with the spatial estimate until two of them
-  // vouch for it. A single ray is a noisy point sample: shown alone next to pixels without
-  // one, the first round of own samples would read as a dither pattern. The history keeps the
-  // own samples' front only: their weighted depth is this frame's trace's.
-  const float trust = min(float(ownSamples) * 0.5f, 1.0f);
+  // The result: the own samples' mean, blended with the spatial estimate. A few rays are a
+  // noisy point sample of the pixel: shown alone next to pixels without one, the first round
+  // of own samples would read as a dither pattern. On a silhouette (the trace pixels around
+  // range from cloud to clear) the spatial estimate smears the edge, so two own samples are
+  // trusted alone; where the trace pixels agree on the cover, it is the better half of the
+  // estimate while the own samples are a plain mean of n (n / (n + 1) of the trust; High's
+  // static views: +0.5 dB above the layer, +0.6 to +1.7 on four others, against the trace
+  // pixels' agreement ignored; 0.5 or 2 times this edge measure scored lower above the layer).
+  // A running mean (n at upsamplingMaxSamples: Ultra's refresh every 4th frame) averages more
+  // rays than n and is trusted alone: blending in the spatial estimate cost Ultra 2.2 dB
+  // pooled. The history keeps the own samples' front only: their weighted depth is this
+  // frame's trace's.
+  const float silhouette = hi.a - lo.a;  // transmittances: in [0, 1]
+  const float n = float(ownSamples);
+  const float settled = n >= u.upsamplingMaxSamples ? 1.0f : n / (n + 1.0f);
+  const float trust = mix(settled, min(n * 0.5f, 1.0f), silhouette);
   const vec4 radiance = mix(spatial, own, trust);
   DepthBlend blend = depthBlendStart();
   depthBlendAdd(blend, 1.0f - trust, spatial.a, spatialDepth);

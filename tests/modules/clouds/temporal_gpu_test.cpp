@@ -1,5 +1,6 @@
 // Temporal reconstruction on lavapipe: a static camera converges to the Reference, and with
-// temporal upsampling to detail finer than the trace; the frame after a cut, a resize or
+// temporal upsampling to detail finer than the trace, its few own samples blended with the
+// trace where the trace agrees; the frame after a cut, a resize or
 // relighting equals a fresh renderer's; NaN in the history never reaches the output; a camera
 // held or moving inside the layer keeps its history; a turning camera's history stays sharp.
 #include <gtest/gtest.h>
@@ -102,6 +103,33 @@ TEST_F(CloudTemporal, TemporalUpsamplingConvergesToDetailFinerThanTheTrace) {
   // 24.9 and 31.8 dB. The gain over the trace is the property; the floor guards a collapse.
   EXPECT_GE(upsampledPsnr, 26.0) << "trace only: " << traceOnlyPsnr << " dB";
   EXPECT_GE(upsampledPsnr, traceOnlyPsnr + 5.0) << "trace only: " << traceOnlyPsnr << " dB";
+}
+
+// Two own samples are a noisy point sample of their pixel: where the trace pixels around agree
+// on the cover, the spatial estimate is blended in (a third of it for two samples), and on a
+// silhouette it is not. With upsamplingMaxSamples at 2 the two samples are a settled running
+// mean, trusted alone everywhere: the blend's gain shows against it.
+TEST_F(CloudTemporal, FewOwnSamplesAreBlendedWithTheTraceWhereItAgrees) {
+  const clouds::Settings high = highWithFinestNoise();
+  clouds::Settings ownAlone = high;
+  ownAlone.upsamplingMaxSamples = 2;
+  // PSNR against 16 Reference frames after 128 frames (two own samples per output pixel).
+  const auto psnrAfter128Frames = [](const CloudView& view, const clouds::Settings& settings) {
+    const std::vector<glm::vec3> reference = clouds::tools::tonemappedPixels(
+        renderer()->renderAveraged(view, clouds::settingsFor(clouds::Quality::Reference), kExtent,
+                                   16),
+        view);
+    const clouds::tools::CloudFrame frame = renderer()->render(view, settings, kExtent, 129);
+    return clouds::tools::imageError(clouds::tools::tonemappedPixels(frame, view), reference)
+        .psnr();
+  };
+  // Measured: cumulus from below 45.42 dB against 44.86 alone; above the layer 29.21 against
+  // 27.97. With the blend everywhere, silhouettes too: 45.03 and 27.95 (above the layer no
+  // better than alone: its far rims are most of its error).
+  const CloudView below = cumulusView();
+  EXPECT_GE(psnrAfter128Frames(below, high), psnrAfter128Frames(below, ownAlone) + 0.35);
+  const CloudView above = aboveTheLayerView();
+  EXPECT_GE(psnrAfter128Frames(above, high), psnrAfter128Frames(above, ownAlone) + 0.6);
 }
 
 TEST_F(CloudTemporal, TemporalUpsamplingHelpsUnderWindDriftToo) {
