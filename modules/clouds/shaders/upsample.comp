@@ -7,8 +7,9 @@
 // output-resolution history of each pixel's own samples: the march moves its rays inside
 // their trace pixels from one refresh to the next, so over the rounds every output pixel is
 // hit by rays of its own. A pixel's result is then the mean of its own samples (up to
-// CloudUniforms.upsamplingMaxSamples, then a running mean), reprojected like the trace history and
-// blended with the bilinear estimate until it holds two; a pixel whose history is uncertain
+// CloudUniforms.upsamplingMaxSamples, then a running mean), reprojected like the trace history
+// and blended with the bilinear estimate: on a silhouette until it holds two, elsewhere until
+// the running mean takes over (main()); a pixel whose history is uncertain
 // (parallax clamp) starts again from the bilinear estimate, as does every pixel of a frame
 // without history. Static and turning views converge to full-resolution detail; a camera
 // moving past near cloud sees what the trace resolution gives. Whether there is history, and

@@ -1,8 +1,8 @@
 // Temporal reconstruction on lavapipe: a static camera converges to the Reference, and with
 // temporal upsampling to detail finer than the trace, its few own samples blended with the
-// trace where the trace agrees; the frame after a cut, a resize or
-// relighting equals a fresh renderer's; NaN in the history never reaches the output; a camera
-// held or moving inside the layer keeps its history; a turning camera's history stays sharp.
+// trace where the trace agrees; the frame after a cut, a resize or relighting equals a fresh
+// renderer's; NaN in the history never reaches the output; a camera held or moving inside the
+// layer keeps its history; a turning camera's history stays sharp.
 #include <gtest/gtest.h>
 
 #include <cmath>
