@@ -7,6 +7,7 @@
 
 #include <cmath>
 #include <cstdio>
+#include <utility>
 
 #include "cloud_gpu_fixture.h"
 #include "cpu_reference.h"
@@ -113,23 +114,27 @@ TEST_F(CloudTemporal, FewOwnSamplesAreBlendedWithTheTraceWhereItAgrees) {
   const clouds::Settings high = highWithFinestNoise();
   clouds::Settings ownAlone = high;
   ownAlone.upsamplingMaxSamples = 2;
-  // PSNR against 16 Reference frames after 128 frames (two own samples per output pixel).
-  const auto psnrAfter128Frames = [](const CloudView& view, const clouds::Settings& settings) {
+  // PSNR of each setting against 16 Reference frames after 128 frames (two own samples per
+  // output pixel): {the blend, own samples alone}.
+  const auto psnrAfter128Frames = [&](const CloudView& view) {
     const std::vector<glm::vec3> reference = clouds::tools::tonemappedPixels(
         renderer()->renderAveraged(view, clouds::settingsFor(clouds::Quality::Reference), kExtent,
                                    16),
         view);
-    const clouds::tools::CloudFrame frame = renderer()->render(view, settings, kExtent, 129);
-    return clouds::tools::imageError(clouds::tools::tonemappedPixels(frame, view), reference)
-        .psnr();
+    const auto psnr = [&](const clouds::Settings& settings) {
+      const clouds::tools::CloudFrame frame = renderer()->render(view, settings, kExtent, 129);
+      return clouds::tools::imageError(clouds::tools::tonemappedPixels(frame, view), reference)
+          .psnr();
+    };
+    return std::pair{psnr(high), psnr(ownAlone)};
   };
   // Measured: cumulus from below 45.42 dB against 44.86 alone; above the layer 29.21 against
   // 27.97. With the blend everywhere, silhouettes too: 45.03 and 27.95 (above the layer no
   // better than alone: its far rims are most of its error).
-  const CloudView below = cumulusView();
-  EXPECT_GE(psnrAfter128Frames(below, high), psnrAfter128Frames(below, ownAlone) + 0.35);
-  const CloudView above = aboveTheLayerView();
-  EXPECT_GE(psnrAfter128Frames(above, high), psnrAfter128Frames(above, ownAlone) + 0.6);
+  const auto [belowBlended, belowAlone] = psnrAfter128Frames(cumulusView());
+  EXPECT_GE(belowBlended, belowAlone + 0.35);
+  const auto [aboveBlended, aboveAlone] = psnrAfter128Frames(aboveTheLayerView());
+  EXPECT_GE(aboveBlended, aboveAlone + 0.6);
 }
 
 TEST_F(CloudTemporal, TemporalUpsamplingHelpsUnderWindDriftToo) {

@@ -19,11 +19,10 @@ namespace bench {
 // share Halton base-2 coordinates, but its rows (odd eighths) never meet the base-3 ones: the
 // nearest of the module's first 16 Halton points is 0.06 pixel away.
 inline glm::vec2 referenceSubpixelOffset(std::uint32_t i) {
-  // Bayer 4 x 4: kBayer[cell] is the frame (mod 16) that looks at cell (x = cell % 4, y = cell /
-  // 4).
-  constexpr std::uint32_t kBayer[16] = {0, 8, 2, 10, 12, 4, 14, 6, 3, 11, 1, 9, 15, 7, 13, 5};
-  std::uint32_t cell = 0;
-  while (kBayer[cell] != i % 16u) ++cell;
+  // The cell (x = cell % 4, y = cell / 4) frame i % 16 looks at: a 4 x 4 Bayer matrix's cells
+  // in the order of their thresholds.
+  constexpr std::uint32_t kCellOfFrame[16] = {0, 10, 2, 8, 5, 15, 7, 13, 1, 11, 3, 9, 4, 14, 6, 12};
+  const std::uint32_t cell = kCellOfFrame[i % 16u];
   return (glm::vec2(float(cell % 4u), float(cell / 4u)) + 0.5f) / 4.0f - 0.5f;
 }
 
