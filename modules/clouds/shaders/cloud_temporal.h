@@ -17,6 +17,24 @@ VKFX_INLINE bool isFreshPixel(uvec2 pixel, IN(CloudUniforms) u) {
   return (pixel.x & mask) == u.tilePhase.x && (pixel.y & mask) == u.tilePhase.y;
 }
 
+// Where a tile's edge ray `ray` (0 or 1) keeps its sample in this frame's samples
+// (kFlagEdgeRays): the tile's pixel half a tile away from its fresh one on both axes, or on x
+// only (k a power of two, at least 2). The passes read only the fresh pixels of this frame's
+// samples, so the tile's others are free.
+VKFX_INLINE uvec2 edgeRaySlot(uvec2 freshPixel, uint ray, IN(CloudUniforms) u) {
+  const uint halfTile = u.tileSize / 2u;
+  return freshPixel ^ uvec2(halfTile, ray == 0u ? halfTile : 0u);
+}
+
+// Where edge ray `ray` sits in its trace pixel this frame (trace pixels, as subpixelOffset).
+VKFX_INLINE vec2 edgeSubpixelOffset(uint ray, IN(CloudUniforms) u) {
+  return ray == 0u ? vec2(u.edgeSubpixelOffsets.x, u.edgeSubpixelOffsets.y)
+                   : vec2(u.edgeSubpixelOffsets.z, u.edgeSubpixelOffsets.w);
+}
+
+// What an edge ray's slot holds when its tile marched none: every bit set (unpacked, a NaN).
+const uint kNoEdgeRay = 0xffffffffu;
+
 // Bilinear weights and the four fresh pixels around `pixel` on this frame's k-grid.
 VKFX_INLINE void freshNeighbours(uvec2 pixel, IN(CloudUniforms) u, OUT(ivec2) p00, OUT(vec2) f) {
   const float k = float(u.tileSize);

@@ -55,6 +55,8 @@ const uint kMarchWeatherMaxCoarse = 8u;
 const uint kMarchCounters = 9u;
 const uint kMarchCloudShadow = 10u;            // the shadow map (terrain channel), sampled
 const uint kMarchCloudShadowParameters = 11u;  // its CloudShadowParameters (uniform block)
+const uint kMarchTraceHistory = 12u;  // last frame's reconstruction (edge rays: kSpecEdgeRays)
+const uint kMarchEdgeRayList = 13u;   // the edge rays' tiles and dispatch (kSpecEdgeRays)
 // reconstruct.comp
 const uint kReconstructFresh = 1u;
 const uint kReconstructHistory = 2u;
@@ -128,7 +130,15 @@ const uint kSpecCounters = 5u;            // 0/1: accumulate work counters (benc
 const uint kSpecEmptySpace = 6u;          // 0/1: skip empty weather cells
 const uint kSpecTerrainShadow = 7u;       // 0/1: the terrain's shadow takes the sun from clouds
 const uint kSpecLightReuse = 8u;          // 0/1: the sun's optical depth on every other step
-const uint kMarchSpecCount = 9u;
+const uint kSpecEdgeRays = 9u;            // kEdgeRays*: more rays for tiles on silhouettes
+const uint kMarchSpecCount = 10u;
+// The variants of kSpecEdgeRays: none; the tiles' march, which lists the edge tiles; the
+// edge rays' march, over that list (an indirect dispatch).
+const uint kEdgeRaysOff = 0u;
+const uint kEdgeRaysFind = 1u;
+const uint kEdgeRaysMarch = 2u;
+const uint kEdgeRayListHeaderBytes = 16u;  // cloud_march.comp's EdgeRayList before its tiles
+const uint kMaxEdgeRaysPerTile = 2u;       // Settings::edgeRays; slots in a tile: edgeRaySlot()
 // reconstruct.comp
 const uint kSpecHistory = 0u;  // 0 none, 1 read in place (nothing moved), 2 reprojected
 const uint kSpecReconstructLightning = 1u;  // 0/1: write the glow with this frame's flashes
@@ -163,6 +173,9 @@ const uint kFlagHomogeneous = 4u;  // tests: density 1 everywhere inside the lay
 // A frame without history, the camera in or near the layer: its rays spread their start
 // offsets over the tiles (rayJitter), and it is rebuilt from them by a tent (reconstruct.comp).
 const uint kFlagRebuiltInsideLayer = 8u;
+// This frame marches edge rays (Settings::edgeRays, with an output history to keep them):
+// pixels of each tile hold its edge rays' samples, or kNoEdgeRay (edgeRaySlot()).
+const uint kFlagEdgeRays = 16u;
 
 // --- Work counters (a storage buffer of uints, reset every frame) ----------------------------
 const uint kCounterViewSamples = 0u;   // density samples along view rays
@@ -170,6 +183,7 @@ const uint kCounterLightSamples = 1u;  // density samples towards the sun
 const uint kCounterTracedPixels = 2u;  // rays marched
 const uint kCounterEarlyExits = 3u;    // rays stopped by the transmittance cutoff
 const uint kCounterSkippedCells = 4u;  // empty weather cells jumped over
+const uint kCounterEdgeRays = 5u;      // edge rays marched (also counted as rays marched)
 const uint kCounterCount = 8u;
 
 // --- The per-frame uniform block --------------------------------------------------------------
@@ -280,14 +294,19 @@ struct CloudUniforms {
   vec3 aerialPerspectiveScale;    // multiplies the volume's radiance
   float aerialPerspectiveRange;   // m, the distance of its last slice
   float aerialPerspectiveSlices;  // its depth in slices
-  float padding9;
-  float padding10;
-  float padding11;
+  // Edge rays (kFlagEdgeRays): how many per edge tile, and where each starts in its first step
+  // (as rayStartOffset for this frame's other rays; x the first, y the second).
+  uint edgeRaysPerTile;
+  vec2 edgeRayStartOffsets;
 
   // 1 / the integral over the sphere of each multiple-scattering octave's phase (octaves 0-3,
   // 4-7): the silver lining's max() gains energy that these give back (silverLiningPhase()).
   vec4 phaseNormaliserInverseLow;
   vec4 phaseNormaliserInverseHigh;
+
+  // Edge rays: where each sits in its trace pixel (as subpixelOffset for this frame's other
+  // rays; xy the first, zw the second).
+  vec4 edgeSubpixelOffsets;
 };
 
 // Push constants of sky_ambient.comp: which sources the frame has, and the ground's albedo.
@@ -512,9 +531,12 @@ CLOUDS_ASSERT_OFFSET(CloudUniforms, upsamplingMaxSamples, 568);
 CLOUDS_ASSERT_OFFSET(CloudUniforms, aerialPerspectiveScale, 576);
 CLOUDS_ASSERT_OFFSET(CloudUniforms, aerialPerspectiveRange, 588);
 CLOUDS_ASSERT_OFFSET(CloudUniforms, aerialPerspectiveSlices, 592);
+CLOUDS_ASSERT_OFFSET(CloudUniforms, edgeRaysPerTile, 596);
+CLOUDS_ASSERT_OFFSET(CloudUniforms, edgeRayStartOffsets, 600);
 CLOUDS_ASSERT_OFFSET(CloudUniforms, phaseNormaliserInverseLow, 608);
 CLOUDS_ASSERT_OFFSET(CloudUniforms, phaseNormaliserInverseHigh, 624);
-static_assert(sizeof(clouds::shader::CloudUniforms) == 640);
+CLOUDS_ASSERT_OFFSET(CloudUniforms, edgeSubpixelOffsets, 640);
+static_assert(sizeof(clouds::shader::CloudUniforms) == 656);
 static_assert(sizeof(clouds::shader::NoiseConstants) == 16);
 static_assert(sizeof(clouds::shader::NoiseMipConstants) == 16);
 static_assert(sizeof(clouds::shader::AmbientConstants) == 32);

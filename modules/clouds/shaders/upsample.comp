@@ -226,12 +226,26 @@ void main() {
     }
 
     // This frame's fresh sample, when its ray (moved inside its trace pixel by u.subpixelOffset)
-    // went through this output pixel: one pixel in (k / scale)^2 has one. Samples hidden by
-    // geometry are not kept (the geometry may move away).
+    // went through this output pixel: one pixel in (k / scale)^2 has one; or one of its trace
+    // pixel's edge rays, when that went through it (kFlagEdgeRays; each through another output
+    // pixel of the trace pixel) and was marched (its slot holds kNoEdgeRay when not). Samples
+    // hidden by geometry are not kept (the geometry may move away).
+    const bool freshPixel = isFreshPixel(trace, u);
     const vec2 hit = (vec2(trace) + 0.5f + u.subpixelOffset) / scale;
-    const bool fresh = isFreshPixel(trace, u) && all(equal(uvec2(floor(hit)), pixel));
-    if (fresh) {
-      const uvec4 packed = imageLoad(freshSamples, ivec2(trace));
+    const bool fresh = freshPixel && all(equal(uvec2(floor(hit)), pixel));
+    uvec2 at = trace;  // where this pixel's sample of this frame is, if any
+    bool edge = false;
+    const uint edgeRays = (u.flags & kFlagEdgeRays) != 0u ? u.edgeRaysPerTile : 0u;
+    for (uint ray = 0u; ray < edgeRays; ++ray) {
+      const vec2 edgeHit = (vec2(trace) + 0.5f + edgeSubpixelOffset(ray, u)) / scale;
+      if (freshPixel && all(equal(uvec2(floor(edgeHit)), pixel))) {
+        edge = true;
+        at = edgeRaySlot(trace, ray, u);
+      }
+    }
+    edge = edge && all(lessThan(edgeRaySlot(trace, 0u, u), u.traceExtent));
+    const uvec4 packed = imageLoad(freshSamples, ivec2(edge ? at : trace));
+    if (fresh || (edge && packed.x != kNoEdgeRay)) {
       const vec4 r = unpackCloudRadiance(packed);
       const vec2 d = unpackCloudDepth(packed);
       if (!behindGeometry(scene, d) && finiteVec4(r) && !any(isnan(d))) {

@@ -177,6 +177,10 @@ detail::ImageSizes imageSizesFor(const Settings& settings, VkExtent2D renderExte
           settings.lightningFlashes > 0 ? trace : VkExtent2D{0, 0}};
 }
 
+VkDeviceSize edgeRayListBytesFor(const Settings& settings, VkExtent2D renderExtent) {
+  return detail::edgeRayListBytes(detail::traceExtentFor(renderExtent, settings.traceScale));
+}
+
 // The shadow map's cascade atlas: the cascades side by side ({0, 0}: none); and the spare
 // cascade, when a cascade is made over several frames.
 detail::ShadowExtents shadowExtentFor(const Settings& settings) {
@@ -214,6 +218,18 @@ void Context::Impl::prepare(const Settings& settings, VkExtent2D renderExtent) {
           "lightning bolts " + std::to_string(i));
     }
   }
+  // The edge rays' list, only for settings that have edge rays.
+  if (detail::marchVariant(settings).edgeRays != 0u) {
+    const VkDeviceSize bytes = edgeRayListBytesFor(settings, renderExtent);
+    for (std::size_t i = 0; i < slots_.size(); ++i) {
+      if (slots_[i].edgeRayList.size() >= bytes) continue;
+      slots_[i].edgeRayList = detail::OwnedBuffer(device_, bytes,
+                                                  VK_BUFFER_USAGE_STORAGE_BUFFER_BIT |
+                                                      VK_BUFFER_USAGE_INDIRECT_BUFFER_BIT |
+                                                      VK_BUFFER_USAGE_TRANSFER_DST_BIT,
+                                                  "edge ray list " + std::to_string(i));
+    }
+  }
   // Images retired before any frame used them can go now.
   images_.releaseRetired(lastFrameIndex_.value_or(0), info_.maxFramesInFlight);
 }
@@ -237,6 +253,10 @@ std::string Context::Impl::unprepared(const Settings& settings, VkExtent2D rende
     if ((settings.lightningFlashes > 0 && slot.lightning.buffer() == VK_NULL_HANDLE) ||
         slot.bolts.size() < detail::boltBufferBytes(settings.lightningBoltSegments)) {
       return "the lightning buffers for these settings";
+    }
+    if (detail::marchVariant(settings).edgeRays != 0u &&
+        slot.edgeRayList.size() < edgeRayListBytesFor(settings, renderExtent)) {
+      return "the edge rays' list for these settings";
     }
   }
   return {};
@@ -409,7 +429,7 @@ MemoryUsage Context::Impl::memoryUsage() const {
   for (const Slot& slot : slots_) {
     usage.bufferBytes += slot.uniforms.bytes() + slot.counters.bytes() +
                          slot.shadowUniforms.bytes() + slot.shadowParameters.bytes() +
-                         slot.godRayLight.bytes();
+                         slot.godRayLight.bytes() + slot.edgeRayList.bytes();
     usage.lightningBytes += slot.lightning.bytes() + slot.bolts.bytes();
   }
   return usage;
@@ -423,6 +443,7 @@ WorkCounters Context::Impl::workCounters(std::uint64_t frameIndex) const {
   counters.viewSamples = values[shader::kCounterViewSamples];
   counters.lightSamples = values[shader::kCounterLightSamples];
   counters.tracedPixels = values[shader::kCounterTracedPixels];
+  counters.edgeRays = values[shader::kCounterEdgeRays];
   counters.earlyExits = values[shader::kCounterEarlyExits];
   counters.skippedCells = values[shader::kCounterSkippedCells];
   return counters;

@@ -98,6 +98,7 @@ class Context::Impl {
     detail::OwnedBuffer godRayLight;  // god_rays.comp's GodRayLightUniforms
     detail::OwnedBuffer lightning;    // this frame's LightningUniforms (lightningFlashes > 0)
     detail::OwnedBuffer bolts;        // this frame's bolts on screen (lightningBoltSegments > 0)
+    detail::OwnedBuffer edgeRayList;  // the march's edge tiles and their dispatch (edgeRays)
     VkDescriptorSet lightningBolts = VK_NULL_HANDLE;
   };
 
@@ -141,6 +142,8 @@ class Context::Impl {
                       const shader::MarchTerrainShadow* shadow);
   void recordSkyAmbient(VkCommandBuffer cmd, const FrameInputs& inputs, const Settings& settings,
                         bool shadowMapMade, Slot& slot);
+  // Empties the edge rays' list before the march fills it (Settings::edgeRays).
+  void recordEdgeRayListReset(VkCommandBuffer cmd, Slot& slot);
   void recordClearSky(VkCommandBuffer cmd, Slot& slot);
   // record_lightning.cpp: this frame's flashes into the slot's block; whether there are any
   // (the reconstruction then makes their glow and the upsample adds it).

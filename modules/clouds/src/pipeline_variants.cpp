@@ -13,7 +13,8 @@ static_assert(shader::kMarchSpecCount <= kKeyCapacity && shader::kUpsampleSpecCo
               "a program has more specialization constants than a key holds");
 }  // namespace
 
-SpecializationKey marchKey(const Settings& settings, bool workCounters, bool terrainShadow) {
+SpecializationKey marchKey(const Settings& settings, bool workCounters, bool terrainShadow,
+                           std::uint32_t edgeRays) {
   const MarchVariant v = marchVariant(settings);
   SpecializationKey key;
   key.values[shader::kSpecJitter] = v.jitter;
@@ -25,6 +26,7 @@ SpecializationKey marchKey(const Settings& settings, bool workCounters, bool ter
   key.values[shader::kSpecEmptySpace] = v.emptySpace;
   key.values[shader::kSpecTerrainShadow] = terrainShadow ? 1u : 0u;
   key.values[shader::kSpecLightReuse] = v.lightReuse;
+  key.values[shader::kSpecEdgeRays] = v.edgeRays != 0u ? edgeRays : shader::kEdgeRaysOff;
   key.count = shader::kMarchSpecCount;
   return key;
 }
@@ -75,7 +77,10 @@ std::vector<std::pair<Program, SpecializationKey>> variantsFor(const Settings& s
   const std::uint32_t histories[] = {shader::kHistoryNone, shader::kHistoryInPlace,
                                      shader::kHistoryReprojected};
   std::vector<std::pair<Program, SpecializationKey>> variants;
-  variants.emplace_back(Program::March, marchKey(settings, workCounters, false));
+  for (std::uint32_t edgeRays : {shader::kEdgeRaysFind, shader::kEdgeRaysMarch}) {
+    if (edgeRays == shader::kEdgeRaysMarch && marchVariant(settings).edgeRays == 0u) continue;
+    variants.emplace_back(Program::March, marchKey(settings, workCounters, false, edgeRays));
+  }
   // With lightning, frames without a flash write no glow.
   for (std::uint32_t history : histories) {
     for (bool lightning : {false, true}) {
@@ -104,7 +109,10 @@ std::vector<std::pair<Program, SpecializationKey>> variantsFor(const Settings& s
   if (settings.shadowCascades > 0) {
     variants.emplace_back(Program::ShadowMap, shadowMapKey(settings));
     variants.emplace_back(Program::TerrainShadow, SpecializationKey{});
-    variants.emplace_back(Program::March, marchKey(settings, workCounters, true));
+    for (std::uint32_t edgeRays : {shader::kEdgeRaysFind, shader::kEdgeRaysMarch}) {
+      if (edgeRays == shader::kEdgeRaysMarch && marchVariant(settings).edgeRays == 0u) continue;
+      variants.emplace_back(Program::March, marchKey(settings, workCounters, true, edgeRays));
+    }
   }
   // No room for bolts, no bolt pipelines.
   if (settings.lightningBoltSegments > 0) {

@@ -6,6 +6,7 @@
 #include <utility>
 #include <vector>
 
+#include "cloud_types.h"
 #include "clouds/clouds.h"
 #include "kit.h"
 #include "programs.h"
@@ -13,8 +14,10 @@
 namespace clouds::detail {
 
 // `terrainShadow`: the terrain's shadow takes the sun from the clouds (FrameInputs::terrain
-// with a shadow map).
-SpecializationKey marchKey(const Settings& settings, bool workCounters, bool terrainShadow);
+// with a shadow map). `edgeRays`: the tiles' march (shader::kEdgeRaysFind, which lists the edge
+// tiles when the settings have edge rays) or the edge rays' (kEdgeRaysMarch).
+SpecializationKey marchKey(const Settings& settings, bool workCounters, bool terrainShadow,
+                           std::uint32_t edgeRays = shader::kEdgeRaysFind);
 // `history`: kHistoryNone, kHistoryInPlace or kHistoryReprojected (cloud_types.h).
 // `lightning`: write the glow with this frame's flashes too.
 SpecializationKey reconstructKey(std::uint32_t history, bool lightning);

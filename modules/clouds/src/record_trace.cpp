@@ -102,6 +102,7 @@ void Context::Impl::recordTrace(VkCommandBuffer cmd, const FrameInputs& inputs,
       upsampling ? im.outputHistory[temporal.readHistory].view() : im.samplesPlaceholder.view();
   const VkImageView outputHistoryOut =
       upsampling ? im.outputHistory[temporal.writeHistory].view() : im.samplesPlaceholder.view();
+  const bool edgeRays = detail::marchesEdgeRays(settings, temporal);
 
   using namespace shader;
   detail::SetWriter(device_, slot.sceneDistance)
@@ -126,6 +127,12 @@ void Context::Impl::recordTrace(VkCommandBuffer cmd, const FrameInputs& inputs,
           terrainShadow ? VK_IMAGE_LAYOUT_GENERAL : VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL)
       .uniformBuffer(kMarchCloudShadowParameters, slot.shadowParameters.buffer(),
                      sizeof(MarchTerrainShadow))
+      // Read only by frames that march edge rays (kFlagEdgeRays), which have a history; the
+      // variants without edge rays never touch the list, for which the counters stand in.
+      .storageImage(kMarchTraceHistory, historyIn.view())
+      .storageBuffer(kMarchEdgeRayList,
+                     edgeRays ? slot.edgeRayList.buffer() : slot.counters.buffer(),
+                     edgeRays ? slot.edgeRayList.size() : slot.counters.size())
       .commit();
   // Without room for flashes, stand-ins: the frame's uniforms for their block and the
   // radiance output (of the glow's format) for the glow; the variant never touches them.
@@ -183,12 +190,23 @@ void Context::Impl::recordTrace(VkCommandBuffer cmd, const FrameInputs& inputs,
   endPass(cmd, detail::Pass::SceneDistance);
 
   const std::uint32_t k = temporal.tileSize;
+  if (edgeRays) recordEdgeRayListReset(cmd, slot);
   beginPass(cmd, detail::Pass::March, "clouds: march");
   // One invocation per tile: only the pixels marched this frame.
-  bindAndDispatch(
-      cmd, Program::March,
-      programs_[Program::March].find(detail::marchKey(settings, info_.workCounters, terrainShadow)),
-      slot.march, (traceExtent.width + k - 1) / k, (traceExtent.height + k - 1) / k);
+  const detail::ComputeProgram& march = programs_[Program::March];
+  bindAndDispatch(cmd, Program::March,
+                  march.find(detail::marchKey(settings, info_.workCounters, terrainShadow)),
+                  slot.march, (traceExtent.width + k - 1) / k, (traceExtent.height + k - 1) / k);
+  if (edgeRays) {
+    // Then one per edge tile the march listed, as many groups as the list says.
+    detail::memoryBarrier(device_, cmd, kCompute, kStorageWrite,
+                          kCompute | VK_PIPELINE_STAGE_2_DRAW_INDIRECT_BIT,
+                          kStorageRead | VK_ACCESS_2_INDIRECT_COMMAND_READ_BIT);
+    fn.vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE,
+                         march.find(detail::marchKey(settings, info_.workCounters, terrainShadow,
+                                                     shader::kEdgeRaysMarch)));
+    fn.vkCmdDispatchIndirect(cmd, slot.edgeRayList.buffer(), 0);
+  }
   detail::memoryBarrier(device_, cmd, kCompute, kStorageWrite, kCompute, kStorageRead);
   endPass(cmd, detail::Pass::March);
 
@@ -236,6 +254,19 @@ void Context::Impl::recordTrace(VkCommandBuffer cmd, const FrameInputs& inputs,
       .storageBuffer(kBoltsPieces, slot.bolts.buffer(), slot.bolts.size())
       .commit();
   recordBolts(cmd, inputs, hazed, slot);
+}
+
+void Context::Impl::recordEdgeRayListReset(VkCommandBuffer cmd, Slot& slot) {
+  // An empty list: no groups (x 0, y 1, z 1) and no tiles, once earlier commands in this queue
+  // (a frame of this slot recorded in the same submission) are done with it.
+  const std::uint32_t empty[4] = {0u, 1u, 1u, 0u};
+  static_assert(sizeof(empty) == shader::kEdgeRayListHeaderBytes);
+  detail::memoryBarrier(device_, cmd, kCompute | VK_PIPELINE_STAGE_2_DRAW_INDIRECT_BIT,
+                        kStorageRead | kStorageWrite | VK_ACCESS_2_INDIRECT_COMMAND_READ_BIT,
+                        VK_PIPELINE_STAGE_2_TRANSFER_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT);
+  device_.fn().vkCmdUpdateBuffer(cmd, slot.edgeRayList.buffer(), 0, sizeof(empty), empty);
+  detail::memoryBarrier(device_, cmd, VK_PIPELINE_STAGE_2_TRANSFER_BIT,
+                        VK_ACCESS_2_TRANSFER_WRITE_BIT, kCompute, kStorageRead | kStorageWrite);
 }
 
 void Context::Impl::recordClearSky(VkCommandBuffer cmd, Slot& slot) {

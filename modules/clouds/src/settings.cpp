@@ -7,6 +7,7 @@
 #include <type_traits>
 #include <utility>
 
+#include "cloud_types.h"
 #include "clouds/clouds.h"
 #include "setting_ranges.h"
 
@@ -98,6 +99,7 @@ std::span<const SettingRange> settingRanges() {
       CLOUDS_RANGE(coarseStepFactor, 1.0, 16.0),
       CLOUDS_RANGE(emptySamplesToCoarse, 1, 1000),
       CLOUDS_RANGE(upsamplingMaxSamples, 1, 15),
+      CLOUDS_RANGE(edgeRays, 0, shader::kMaxEdgeRaysPerTile),
       CLOUDS_RANGE(temporalFreshWeight, 0.05, 1.0),
       CLOUDS_RANGE(temporalStillFreshWeight, 0.05, 1.0),
       CLOUDS_RANGE(historyClampMargin, 0.0, 1.0),
@@ -266,6 +268,7 @@ Settings settingsFor(Quality quality, const Settings& base) {
                                           // are visibly fatter without their erosion
       s.transmittanceCutoff = 0.005f;
       s.temporalUpsampling = true;
+      s.edgeRays = 2;
       break;
     // Ultra is High refreshed 4x as often, with finer view steps and more light samples: the
     // benchmark's knobs that bought the most accuracy for their time around High. (A full-

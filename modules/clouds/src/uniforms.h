@@ -29,8 +29,17 @@ struct MarchVariant {
   std::uint32_t lightSteps;
   std::uint32_t emptySpace;
   std::uint32_t lightReuse;
+  std::uint32_t edgeRays;  // 0/1: the settings have edge rays (and temporal upsampling)
 };
 MarchVariant marchVariant(const Settings& settings);
+
+// Whether a frame marches edge rays (Settings::edgeRays): only while the output history keeps
+// their samples, and with a second pixel in each tile to hold them (edgeRaySlot()).
+bool marchesEdgeRays(const Settings& settings, const TemporalFrame& temporal);
+
+// The bytes of the edge rays' list for a trace extent: its header (the indirect dispatch and
+// the count) and a tile per 2 x 2 trace pixels (the smallest tile that has edge rays).
+VkDeviceSize edgeRayListBytes(VkExtent2D traceExtent);
 
 // The trace resolution for an output extent: ceil(extent x scale), at least 1.
 VkExtent2D traceExtentFor(VkExtent2D full, float traceScale);

@@ -160,6 +160,9 @@ TEST(CloudSettings, TemporalKnobsAreChecked) {
   EXPECT_NE(clouds::validateSettings(s).find("Settings.upsamplingMaxSamples"), std::string::npos);
   s.upsamplingMaxSamples = 16;  // the count lives in 4 bits of the output history
   EXPECT_NE(clouds::validateSettings(s).find("Settings.upsamplingMaxSamples"), std::string::npos);
+  s = clouds::settingsFor(clouds::Quality::High);
+  s.edgeRays = 3;  // a tile's trace pixel has three output pixels besides its ray's
+  EXPECT_NE(clouds::validateSettings(s).find("Settings.edgeRays"), std::string::npos);
 }
 
 }  // namespace

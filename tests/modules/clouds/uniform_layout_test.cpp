@@ -100,11 +100,11 @@ const std::map<std::string, std::size_t> kCppOffsets = {FIELD(inverseProjection)
                                                         FIELD(aerialPerspectiveScale),
                                                         FIELD(aerialPerspectiveRange),
                                                         FIELD(aerialPerspectiveSlices),
-                                                        FIELD(padding9),
-                                                        FIELD(padding10),
-                                                        FIELD(padding11),
+                                                        FIELD(edgeRaysPerTile),
+                                                        FIELD(edgeRayStartOffsets),
                                                         FIELD(phaseNormaliserInverseLow),
-                                                        FIELD(phaseNormaliserInverseHigh)};
+                                                        FIELD(phaseNormaliserInverseHigh),
+                                                        FIELD(edgeSubpixelOffsets)};
 #undef FIELD
 
 std::string reflect() {

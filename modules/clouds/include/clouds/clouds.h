@@ -120,7 +120,8 @@ struct PassTiming {
 struct WorkCounters {
   std::uint64_t viewSamples = 0;   // density samples along view rays
   std::uint64_t lightSamples = 0;  // density samples towards the sun
-  std::uint64_t tracedPixels = 0;  // rays marched
+  std::uint64_t tracedPixels = 0;  // rays marched (edge rays included)
+  std::uint64_t edgeRays = 0;      // of which edge rays (Settings::edgeRays)
   std::uint64_t earlyExits = 0;    // rays ended by the transmittance cutoff
   std::uint64_t skippedCells = 0;  // empty weather cells jumped over
 };
@@ -282,6 +283,13 @@ struct Settings {
   // this frame's trace neighbourhood, which keeps less of the detail.
   bool temporalUpsampling = false;
   std::uint32_t upsamplingMaxSamples = 4;  // [1, 15] own samples averaged before the running mean
+  // Edge rays (temporal upsampling only): a tile whose trace pixels around ranged from cloud
+  // to clear last frame (the rims of clouds, where an output pixel's coverage is what its few
+  // own samples get wrong) marches this many more rays this frame, each through another output
+  // pixel of its trace pixel, so that output pixels on silhouettes gather own samples up to
+  // three times as fast. A second dispatch marches the listed edge tiles' rays side by side,
+  // so the cost follows their count.
+  std::uint32_t edgeRays = 0;       // [0, 2] more rays per tile on a silhouette
   float historyClampMargin = 0.1f;  // [0, 1] slack of the history clamp (x neighbourhood range)
   // The history is clamped to this frame's fresh neighbourhood only as far as its reprojection
   // is uncertain: fully where the nearest cloud and the far distance reproject this many trace

@@ -113,9 +113,11 @@ namespace {
 // High's value of each knob: where High sits in each sweep.
 const std::map<std::string, double>& highKnobs() {
   static const std::map<std::string, double> knobs = {
-      {"view step", 1.0},           {"light steps", 6.0},           {"trace scale", 0.5},
-      {"update interval", 16.0},    {"temporal reuse", 1.0},        {"empty-space skipping", 1.0},
-      {"temporal upsampling", 1.0}, {"noise level of detail", 1.0}, {"light reuse", 1.0}};
+      {"view step", 1.0},           {"light steps", 6.0},
+      {"trace scale", 0.5},         {"update interval", 16.0},
+      {"temporal reuse", 1.0},      {"empty-space skipping", 1.0},
+      {"temporal upsampling", 1.0}, {"noise level of detail", 1.0},
+      {"light reuse", 1.0},         {"edge rays", 2.0}};
   return knobs;
 }
 
@@ -185,6 +187,9 @@ std::vector<BenchConfig> benchConfigs() {
   switchedOff("noise level of detail",
               [](clouds::Settings& s, double) { s.noiseLevelOfDetail = false; });
   switchedOff("light reuse", [](clouds::Settings& s, double) { s.lightEveryOtherStep = false; });
+  switchedOff("edge rays", [](clouds::Settings& s, double) { s.edgeRays = 0; });
+  sweep("edge rays", {1.0}, "",
+        [](clouds::Settings& s, double n) { s.edgeRays = std::uint32_t(n); });
   BenchConfig again;
   again.name = kHighTimedAgain;
   again.timingRepeat = true;

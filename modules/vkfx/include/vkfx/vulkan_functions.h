@@ -45,6 +45,7 @@ namespace vkfx {
   X(vkCmdBindDescriptorSets)       \
   X(vkCmdPushConstants)            \
   X(vkCmdDispatch)                 \
+  X(vkCmdDispatchIndirect)         \
   X(vkCmdDraw)                     \
   X(vkCmdSetViewport)              \
   X(vkCmdSetScissor)               \
