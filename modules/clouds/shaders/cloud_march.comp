@@ -139,10 +139,12 @@ void marchRay(uvec2 pixel, vec2 centre, float startOffset, uvec2 slot) {
   }
 }
 
+// Invocations in a workgroup: the second dispatch's groups are counted in these.
+const uint kGroupInvocations = kWorkgroupSize2D * kWorkgroupSize2D;
+
 // The second dispatch: one edge ray per invocation, a listed tile's rays side by side.
 void marchListedEdgeRay() {
-  const uint index = gl_WorkGroupID.x * kWorkgroupSize2D * kWorkgroupSize2D +
-                     gl_LocalInvocationIndex;
+  const uint index = gl_WorkGroupID.x * kGroupInvocations + gl_LocalInvocationIndex;
   const uint perTile = u.edgeRaysPerTile;
   if (index >= edgeRayDispatch.w * perTile) return;
   const uint packed = edgeRayTiles[index / perTile];
@@ -173,10 +175,10 @@ void main() {
   CLOUDS_WHEN(kEdgeRays == kEdgeRaysFind && (u.flags & kFlagEdgeRays) != 0u &&
               all(lessThan(edgeRaySlot(pixel, 0u, u), extent))) {
     if (onSilhouette(pixel)) {
-      const uint tile = atomicAdd(edgeRayDispatch.w, 1u);
-      edgeRayTiles[tile] = pixel.x | pixel.y << 16u;
-      const uint lastRay = (tile + 1u) * u.edgeRaysPerTile - 1u;
-      atomicMax(edgeRayDispatch.x, lastRay / (kWorkgroupSize2D * kWorkgroupSize2D) + 1u);
+      const uint listed = atomicAdd(edgeRayDispatch.w, 1u);
+      edgeRayTiles[listed] = pixel.x | pixel.y << 16u;
+      const uint lastRay = (listed + 1u) * u.edgeRaysPerTile - 1u;
+      atomicMax(edgeRayDispatch.x, lastRay / kGroupInvocations + 1u);
     } else {
       for (uint ray = 0u; ray < u.edgeRaysPerTile; ++ray) {
         imageStore(outSamples, ivec2(edgeRaySlot(pixel, ray, u)), uvec4(kNoEdgeRay));

@@ -77,10 +77,14 @@ std::vector<std::pair<Program, SpecializationKey>> variantsFor(const Settings& s
   const std::uint32_t histories[] = {shader::kHistoryNone, shader::kHistoryInPlace,
                                      shader::kHistoryReprojected};
   std::vector<std::pair<Program, SpecializationKey>> variants;
-  for (std::uint32_t edgeRays : {shader::kEdgeRaysFind, shader::kEdgeRaysMarch}) {
-    if (edgeRays == shader::kEdgeRaysMarch && marchVariant(settings).edgeRays == 0u) continue;
-    variants.emplace_back(Program::March, marchKey(settings, workCounters, false, edgeRays));
-  }
+  // The tiles' march, and with edge rays the edge rays' march.
+  const auto addMarch = [&](bool terrainShadow) {
+    variants.emplace_back(Program::March, marchKey(settings, workCounters, terrainShadow));
+    if (marchVariant(settings).edgeRays == 0u) return;
+    variants.emplace_back(Program::March,
+                          marchKey(settings, workCounters, terrainShadow, shader::kEdgeRaysMarch));
+  };
+  addMarch(false);
   // With lightning, frames without a flash write no glow.
   for (std::uint32_t history : histories) {
     for (bool lightning : {false, true}) {
@@ -109,10 +113,7 @@ std::vector<std::pair<Program, SpecializationKey>> variantsFor(const Settings& s
   if (settings.shadowCascades > 0) {
     variants.emplace_back(Program::ShadowMap, shadowMapKey(settings));
     variants.emplace_back(Program::TerrainShadow, SpecializationKey{});
-    for (std::uint32_t edgeRays : {shader::kEdgeRaysFind, shader::kEdgeRaysMarch}) {
-      if (edgeRays == shader::kEdgeRaysMarch && marchVariant(settings).edgeRays == 0u) continue;
-      variants.emplace_back(Program::March, marchKey(settings, workCounters, true, edgeRays));
-    }
+    addMarch(true);
   }
   // No room for bolts, no bolt pipelines.
   if (settings.lightningBoltSegments > 0) {

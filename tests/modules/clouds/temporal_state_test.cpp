@@ -29,6 +29,24 @@ clouds::FrameInputs groundCamera() {
   return in;
 }
 
+// The ground camera with a projection, for building a frame's uniforms.
+clouds::FrameInputs projectedGroundCamera() {
+  clouds::FrameInputs in = groundCamera();
+  in.projection = glm::perspective(1.0f, 16.0f / 9.0f, 0.5f, 1000.0f);
+  return in;
+}
+
+// A frame at 160 x 90 with a half-resolution trace refreshed 1 in 16 that keeps its output
+// history (temporal upsampling accumulates).
+clouds::detail::UniformContext upsamplingFrame() {
+  clouds::detail::UniformContext context;
+  context.traceExtent = {80, 45};
+  context.fullExtent = {160, 90};
+  context.temporal.tileSize = 4;
+  context.temporal.useOutputHistory = true;
+  return context;
+}
+
 // Runs `frames` identical frames and returns the plan of the last.
 TemporalFrame run(TemporalState& state, const clouds::FrameInputs& in, const clouds::Settings& s,
                   int frames = 1, VkExtent2D trace = kTrace) {
@@ -117,13 +135,8 @@ TEST(TemporalState, UpsamplingRaysVisitEveryOutputPixelOfTheirTracePixelFirst) {
   // round and covers 2 x 2 output pixels; its rays must hit each of them in the first four
   // rounds, whatever the frame inside the round.
   const clouds::Settings s = clouds::settingsFor(clouds::Quality::High);
-  clouds::FrameInputs in = groundCamera();
-  in.projection = glm::perspective(1.0f, 16.0f / 9.0f, 0.5f, 1000.0f);
-  clouds::detail::UniformContext context;
-  context.traceExtent = {80, 45};
-  context.fullExtent = {160, 90};
-  context.temporal.tileSize = 4;
-  context.temporal.useOutputHistory = true;
+  const clouds::FrameInputs in = projectedGroundCamera();
+  clouds::detail::UniformContext context = upsamplingFrame();
   std::set<std::pair<int, int>> hit;
   for (std::uint32_t round = 0; round < 4; ++round) {
     context.temporal.temporalIndex = round * 16 + 5;
@@ -152,13 +165,8 @@ TEST(TemporalState, UpsamplingRaysVisitEveryOutputPixelOfTheirTracePixelFirst) {
 TEST(TemporalState, EdgeRaysHitOtherOutputPixelsAndKeepTheirSamplesCentred) {
   const clouds::Settings s = clouds::settingsFor(clouds::Quality::High);
   ASSERT_EQ(s.edgeRays, 2u);
-  clouds::FrameInputs in = groundCamera();
-  in.projection = glm::perspective(1.0f, 16.0f / 9.0f, 0.5f, 1000.0f);
-  clouds::detail::UniformContext context;
-  context.traceExtent = {80, 45};
-  context.fullExtent = {160, 90};
-  context.temporal.tileSize = 4;
-  context.temporal.useOutputHistory = true;
+  const clouds::FrameInputs in = projectedGroundCamera();
+  clouds::detail::UniformContext context = upsamplingFrame();
   // Each output pixel's points (in the pixel, [0, 1)^2) over eight rounds: all rays, and the
   // rays alone.
   std::map<std::pair<int, int>, std::vector<glm::vec2>> all, rays;
