@@ -439,6 +439,47 @@ TEST_F(CloudMarch, GroundHidesCloudsBehindItAndCloudsInFrontCoverIt) {
   EXPECT_GT(covered, int(high.radiance.size() / 4));
 }
 
+TEST_F(CloudMarch, SkySeenThroughOnePixelGapsInNearGeometryShowsItsClouds) {
+  // A wall 100 m away with single sky pixels in it, 5 pixels apart (every position inside a
+  // trace pixel's footprint, of 1, 2 x 2 and 4 x 4 pixels, and of the uneven footprints of a
+  // trace 45 rows high at half of 90... here 45 / 2 and 45 / 4 rounded up): each trace pixel
+  // must take the farthest geometry of its footprint, so that the clouds behind a gap are
+  // marched. A gap a trace pixel missed shows no cloud at all.
+  const VkExtent2D extent{80, 45};
+  CloudView wall;
+  wall.pitchDegrees = 25.0;
+  const float wallDepth = 0.5f / 100.0f;  // reversed-Z, near plane 0.5 m
+  wall.hostDepth.assign(std::size_t(extent.width) * extent.height, wallDepth);
+  std::vector<std::size_t> gaps;
+  for (std::uint32_t y = 1; y < extent.height; y += 5) {
+    for (std::uint32_t x = 2; x < extent.width; x += 5) {
+      gaps.push_back(std::size_t(y) * extent.width + x);
+      wall.hostDepth[gaps.back()] = 0.0f;
+    }
+  }
+  CloudView open = wall;
+  open.hostDepth.clear();
+  for (float traceScale : {1.0f, 0.5f, 0.25f}) {
+    clouds::Settings s = clouds::tools::singleFrame({});
+    s.coverage = 0.8f;
+    s.traceScale = traceScale;
+    const clouds::tools::CloudFrame sky = harness().render(open, s, extent);
+    const clouds::tools::CloudFrame seen = harness().render(wall, s, extent);
+    int cloudyGaps = 0;
+    for (std::size_t i : gaps) {
+      const float opacity = 1.0f - sky.radiance[i].a;
+      if (opacity < 0.2f) continue;
+      ++cloudyGaps;
+      // The gap's own trace pixel weighs at least 0.625^2 in its bilinear estimate; the
+      // others may be wall.
+      EXPECT_GE(1.0f - seen.radiance[i].a, 0.3f * opacity)
+          << "gap " << i % extent.width << ", " << i / extent.width << " at trace scale "
+          << traceScale;
+    }
+    EXPECT_GT(cloudyGaps, int(gaps.size() / 2)) << "the sky behind the wall must be cloudy";
+  }
+}
+
 TEST_F(CloudMarch, FramesFarFromTheOriginMatchTheOrigin) {
   // The default tiles (weather 50 km, shape 6.25 km, detail 1.25 km, curl 12.5 km) all divide
   // 100 km and 10,000 km, so the same clouds must appear; float world coordinates would not

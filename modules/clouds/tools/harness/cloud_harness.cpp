@@ -121,6 +121,14 @@ CloudHarness::~CloudHarness() {
   device_.waitIdle();
 }
 
+namespace {
+
+bool hasHostDepth(const CloudView& view) {
+  return view.groundDepth || !view.hostDepth.empty();
+}
+
+}  // namespace
+
 void CloudHarness::prepareDepth(const CloudView& view, VkExtent2D extent) {
   if (!depth_ || depth_.extent().width != extent.width || depth_.extent().height != extent.height) {
     depth_ = gfx::Image(device_,
@@ -132,10 +140,14 @@ void CloudHarness::prepareDepth(const CloudView& view, VkExtent2D extent) {
                                        VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT,
                                        "harness depth"});
   }
-  // A flat ground at y = 0, ray-cast on the CPU.
+  // The view's own values, or a flat ground at y = 0, ray-cast on the CPU.
+  if (!view.hostDepth.empty() && view.hostDepth.size() != std::size_t(extent.width) * extent.height)
+    throw engine::Error("CloudView::hostDepth: one value a pixel of the extent");
   const std::vector<float> depth =
-      render::flatGroundDepth(viewMatrix(view), projectionMatrix(view, extent), kNearMetres,
-                              view.position.y, extent.width, extent.height);
+      !view.hostDepth.empty()
+          ? view.hostDepth
+          : render::flatGroundDepth(viewMatrix(view), projectionMatrix(view, extent), kNearMetres,
+                                    view.position.y, extent.width, extent.height);
   depthValues_ = depth;
   gfx::uploadToImage(
       device_, depth_,
@@ -149,7 +161,7 @@ clouds::FrameInputs CloudHarness::makeInputs(const CloudView& view, VkExtent2D e
   clouds::FrameInputs in;
   in.commandBuffer = cmd;
   in.renderExtent = extent;
-  in.depthView = view.groundDepth ? depth_.view() : VK_NULL_HANDLE;
+  in.depthView = hasHostDepth(view) ? depth_.view() : VK_NULL_HANDLE;
   in.view = viewMatrix(view);
   in.projection = projectionMatrix(view, extent);
   in.cameraPosition = view.position;
@@ -195,7 +207,7 @@ CloudFrame CloudHarness::renderAveraged(const CloudView& view, const clouds::Set
 
 std::string CloudHarness::tryRender(const CloudView& view, const clouds::Settings& settings,
                                     VkExtent2D extent) {
-  if (view.groundDepth) {
+  if (hasHostDepth(view)) {
     prepareDepth(view, extent);
   } else {
     depthValues_.clear();

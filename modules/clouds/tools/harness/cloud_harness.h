@@ -43,6 +43,9 @@ struct CloudView {
   // map before each frame, whose shade on the ground dims the light cloud bases get from it.
   std::optional<glm::vec3> groundAlbedo;
   bool groundDepth = false;  // a flat ground at y = 0 in the host depth buffer
+  // Optional host depth values instead (reversed-Z, one a pixel, rows top to bottom); the
+  // extent rendered must match.
+  std::vector<float> hostDepth;
   double timeSeconds = 0.0;
   // Optional host images (sampled, SHADER_READ_ONLY_OPTIMAL): painted weather, sky radiance.
   VkImageView weatherView = VK_NULL_HANDLE;
