@@ -14,6 +14,10 @@ layout(binding = kSceneDistanceOut, r32f) uniform writeonly image2D outDistance;
 
 #include "cloud_march.h"
 
+// The farther of two depth values (with reversed-Z, the smaller).
+float farther(float a, float b, bool reversed) { return reversed ? min(a, b) : max(a, b); }
+vec2 farther(vec2 a, vec2 b, bool reversed) { return reversed ? min(a, b) : max(a, b); }
+
 void main() {
   loadFrameUniforms();
   const uvec2 pixel = gl_GlobalInvocationID.xy;
@@ -42,9 +46,8 @@ void main() {
       vec4 depths = textureGather(hostDepth, (vec2(corner) + 1.0f) * texelSize, 0);
       if (!wide.x) depths.yz = vec2(nearest);
       if (!wide.y) depths.xy = vec2(nearest);
-      const vec2 pairs = reversed ? min(depths.xy, depths.zw) : max(depths.xy, depths.zw);
-      const float block = reversed ? min(pairs.x, pairs.y) : max(pairs.x, pairs.y);
-      farthestDepth = reversed ? min(farthestDepth, block) : max(farthestDepth, block);
+      const vec2 pairs = farther(depths.xy, depths.zw, reversed);
+      farthestDepth = farther(farthestDepth, farther(pairs.x, pairs.y, reversed), reversed);
     }
   }
   const vec2 centre = 0.5f * (vec2(first) + vec2(last + 1u));
