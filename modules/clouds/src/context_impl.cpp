@@ -196,9 +196,11 @@ void Context::Impl::prepare(const Settings& settings, VkExtent2D renderExtent) {
     if (programs_.has(program)) programs_[program].prepare(key);  // composite: optional
   }
   const detail::ImageSizes sizes = imageSizesFor(settings, renderExtent);
+  const VkImage outputs = images_.radiance.image();
   if (!images_.fit(sizes) && images_.grow(sizes, lastFrameIndex_)) {
     temporal_.forget("images resized");
   }
+  if (images_.radiance.image() != outputs) outputsHoldClearSky_ = false;  // new, undefined
   if (images_.fitShadow(shadowExtentFor(settings), lastFrameIndex_)) shadowCascades_.forget();
   // The flashes' block, only for settings that can have flashes.
   if (settings.lightningFlashes > 0) {
@@ -350,6 +352,7 @@ void Context::Impl::dispatch(const FrameInputs& inputs, const Settings& settings
   if (skyIsClear(settings)) {
     // Nothing can be marched: the outputs are the empty sky, and the next frame starts afresh.
     recordClearSky(cmd, slot);
+    outputsHoldClearSky_ = true;
     if (settings.godRaySamples > 0)
       recordGodRays(cmd, inputs, settings, images_.history[0], false, slot);
     temporal_.forget("after a clear sky");
@@ -373,6 +376,7 @@ void Context::Impl::dispatch(const FrameInputs& inputs, const Settings& settings
       recordSkyAmbient(cmd, inputs, settings, shadowMapMade, slot);
     }
     recordTrace(cmd, inputs, settings, temporal, traceExtent, terrainShadow, slot);
+    outputsHoldClearSky_ = false;
     temporal_.commit(temporal, inputs, settings, traceExtent);
     report_ = FrameReport{traceExtent,          temporal.tileSize,    temporal.useHistory,
                           temporal.insideLayer, temporal.resetReason, shadowCascadesMade_};

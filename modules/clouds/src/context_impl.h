@@ -144,6 +144,7 @@ class Context::Impl {
                         bool shadowMapMade, Slot& slot);
   // Empties the edge rays' list before the march fills it (Settings::edgeRays).
   void recordEdgeRayListReset(VkCommandBuffer cmd, Slot& slot);
+  // The outputs as the empty sky, unless they still hold it (outputsHoldClearSky_).
   void recordClearSky(VkCommandBuffer cmd, Slot& slot);
   // record_lightning.cpp: this frame's flashes into the slot's block; whether there are any
   // (the reconstruction then makes their glow and the upsample adds it).
@@ -186,6 +187,10 @@ class Context::Impl {
   std::uint32_t lastSlot_ = 0;
   VkExtent2D lastExtent_{0, 0};
   detail::TemporalState temporal_;
+  // The outputs hold the empty sky a clear frame made, and nothing has written them since
+  // (each upsample, bolt and image replacement resets it): a clear sky that stays clear costs
+  // no clears after its first frame.
+  bool outputsHoldClearSky_ = false;
   detail::ShadowCascades shadowCascades_;
   ShadowMapParameters shadowParameters_{};
   std::optional<std::uint64_t> shadowFrame_;     // the frame of the last dispatchShadowMap()

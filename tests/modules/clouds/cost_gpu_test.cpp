@@ -76,6 +76,30 @@ TEST_F(CloudCost, ClearSkyCostsLessThanATenthOfOvercast) {
   EXPECT_GT(samples(overcastWork), 0u);
 }
 
+// A sky that stays clear is cleared once: its later frames leave the outputs as they are. The
+// clears come back whenever something else wrote the outputs (a cloudy frame) or they were
+// replaced (a larger render extent), each of which would otherwise show through.
+TEST_F(CloudCost, AClearSkyIsClearedOnceThenLeftAsItIs) {
+  clouds::Settings clear = clouds::settingsFor(clouds::Quality::Medium);
+  clear.coverage = 0.0f;
+  clouds::Settings overcast = clear;
+  overcast.coverage = 1.0f;
+  const auto expectEmptySky = [](const clouds::tools::CloudFrame& frame, const char* when) {
+    SCOPED_TRACE(when);
+    for (const glm::vec4& p : frame.radiance) ASSERT_EQ(p, glm::vec4(0.0f, 0.0f, 0.0f, 1.0f));
+    for (const glm::vec2& d : frame.depth) ASSERT_EQ(d, glm::vec2(0.0f));
+  };
+  auto r = renderer();
+  r->render(cumulusView(), clear, {kExtent.width / 2, kExtent.height / 2});
+  expectEmptySky(r->render(cumulusView(), clear, kExtent), "outputs replaced by larger ones");
+  const glm::vec4 mark(1.0f, 2.0f, 3.0f, 0.5f);
+  r->markRadianceOutput(mark);
+  const clouds::tools::CloudFrame kept = r->render(cumulusView(), clear, kExtent);
+  for (const glm::vec4& p : kept.radiance) ASSERT_EQ(p, mark) << "a clear frame cleared again";
+  r->render(cumulusView(), overcast, kExtent);
+  expectEmptySky(r->render(cumulusView(), clear, kExtent), "after a cloudy frame");
+}
+
 TEST_F(CloudCost, EachPresetCostsMoreThanTheOneBelowIt) {
   const clouds::Quality presets[] = {clouds::Quality::Low, clouds::Quality::Medium,
                                      clouds::Quality::High, clouds::Quality::Ultra,

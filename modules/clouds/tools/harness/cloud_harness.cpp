@@ -422,6 +422,21 @@ void CloudHarness::poisonHistory() {
   });
 }
 
+void CloudHarness::markRadianceOutput(glm::vec4 value) {
+  device_.immediateSubmit([&](VkCommandBuffer cmd) {
+    const VkImageSubresourceRange range{VK_IMAGE_ASPECT_COLOR_BIT, 0, 1, 0, 1};
+    const gfx::ImageState general{VK_IMAGE_LAYOUT_GENERAL, VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT,
+                                  VK_ACCESS_2_MEMORY_READ_BIT | VK_ACCESS_2_MEMORY_WRITE_BIT};
+    const gfx::ImageState transfer{VK_IMAGE_LAYOUT_GENERAL, VK_PIPELINE_STAGE_2_CLEAR_BIT,
+                                   VK_ACCESS_2_TRANSFER_WRITE_BIT};
+    const VkClearColorValue mark{{value.r, value.g, value.b, value.a}};
+    const VkImage image = moduleImages().radiance.image();
+    gfx::imageBarrier(cmd, image, range, general, transfer);
+    vkCmdClearColorImage(cmd, image, VK_IMAGE_LAYOUT_GENERAL, &mark, 1, &range);
+    gfx::imageBarrier(cmd, image, range, transfer, general);
+  });
+}
+
 clouds::WorkCounters CloudHarness::lastWorkCounters() const {
   return frameIndex_ == 0 ? clouds::WorkCounters{} : context_->workCounters(frameIndex_ - 1);
 }

@@ -155,6 +155,9 @@ class CloudHarness {
   // Overwrites the temporal history images (trace and output resolution) with NaN (tests:
   // poisoned history must not leak).
   void poisonHistory();
+  // Fills the radiance output with `value`: a mark that tells a test, reading it back after a
+  // frame, whether that frame wrote the output.
+  void markRadianceOutput(glm::vec4 value);
   // The work counters and pass times of the last rendered frame (zeros / empty unless
   // created with workCounters / passTimings).
   clouds::WorkCounters lastWorkCounters() const;
