@@ -440,9 +440,9 @@ TEST_F(CloudMarch, GroundHidesCloudsBehindItAndCloudsInFrontCoverIt) {
 }
 
 TEST_F(CloudMarch, SkySeenThroughOnePixelGapsInNearGeometryShowsItsClouds) {
-  // A wall 100 m away with single sky pixels in it, 5 pixels apart (every position inside a
-  // trace pixel's footprint, of 1, 2 x 2 and 4 x 4 pixels, and of the uneven footprints of a
-  // trace 45 rows high at half of 90... here 45 / 2 and 45 / 4 rounded up): each trace pixel
+  // A wall 100 m away with single sky pixels in it, 5 pixels apart: every position inside a
+  // trace pixel's footprint of 1, 2 x 2 or 4 x 4 pixels, and in the uneven footprints of the
+  // 45 rows halved and quartered (23 and 12 trace rows, rounded up). Each trace pixel
   // must take the farthest geometry of its footprint, so that the clouds behind a gap are
   // marched. A gap a trace pixel missed shows no cloud at all.
   const VkExtent2D extent{80, 45};

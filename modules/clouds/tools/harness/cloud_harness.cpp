@@ -8,6 +8,7 @@
 #include <cmath>
 #include <cstring>
 #include <glm/gtc/packing.hpp>
+#include <initializer_list>
 
 #include "engine/core/error.h"
 #include "engine/gfx/barriers.h"
@@ -371,6 +372,25 @@ std::vector<std::uint8_t> readTexels(gfx::Device& device, VkImage image, VkExten
   return std::vector<std::uint8_t>(first, first + bytes.size());
 }
 
+// Fills each of the module's `images` (in GENERAL; null handles, images not made yet, skipped)
+// with `value`, ordered after and before all other work.
+void fillImages(gfx::Device& device, std::initializer_list<VkImage> images,
+                const VkClearColorValue& value) {
+  device.immediateSubmit([&](VkCommandBuffer cmd) {
+    const VkImageSubresourceRange range{VK_IMAGE_ASPECT_COLOR_BIT, 0, 1, 0, 1};
+    const gfx::ImageState general{VK_IMAGE_LAYOUT_GENERAL, VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT,
+                                  VK_ACCESS_2_MEMORY_READ_BIT | VK_ACCESS_2_MEMORY_WRITE_BIT};
+    const gfx::ImageState transfer{VK_IMAGE_LAYOUT_GENERAL, VK_PIPELINE_STAGE_2_CLEAR_BIT,
+                                   VK_ACCESS_2_TRANSFER_WRITE_BIT};
+    for (VkImage image : images) {
+      if (image == VK_NULL_HANDLE) continue;
+      gfx::imageBarrier(cmd, image, range, general, transfer);
+      vkCmdClearColorImage(cmd, image, VK_IMAGE_LAYOUT_GENERAL, &value, 1, &range);
+      gfx::imageBarrier(cmd, image, range, transfer, general);
+    }
+  });
+}
+
 }  // namespace
 
 const clouds::detail::ModuleImages& CloudHarness::moduleImages() const {
@@ -395,46 +415,25 @@ std::vector<std::uint8_t> CloudHarness::readWeatherMaxFine() {
 }
 
 void CloudHarness::poisonHistory() {
-  device_.immediateSubmit([&](VkCommandBuffer cmd) {
-    const VkImageSubresourceRange range{VK_IMAGE_ASPECT_COLOR_BIT, 0, 1, 0, 1};
-    const gfx::ImageState general{VK_IMAGE_LAYOUT_GENERAL, VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT,
-                                  VK_ACCESS_2_MEMORY_READ_BIT | VK_ACCESS_2_MEMORY_WRITE_BIT};
-    const gfx::ImageState transfer{VK_IMAGE_LAYOUT_GENERAL, VK_PIPELINE_STAGE_2_CLEAR_BIT,
-                                   VK_ACCESS_2_TRANSFER_WRITE_BIT};
-    // Packed samples (cloud_temporal.h): half-float NaN radiance, float NaN depths. The output
-    // history (RG32UI) takes the first two words: its front depth a half-float NaN, and its top
-    // bits an own-sample count of 7, so the poisoned texels claim to hold samples and must be
-    // caught as not finite.
-    VkClearColorValue nan{};
-    nan.uint32[0] = nan.uint32[1] = 0x7E007E00u;
-    nan.uint32[2] = 0x7FC00000u;
-    nan.uint32[3] = 0x7FC00003u;
-    const clouds::detail::ModuleImages& images = moduleImages();
-    for (std::uint32_t i = 0; i < 2; ++i) {
-      // The output histories exist only once settings that upsample temporally were prepared.
-      for (VkImage image : {images.history[i].image(), images.outputHistory[i].image()}) {
-        if (image == VK_NULL_HANDLE) continue;
-        gfx::imageBarrier(cmd, image, range, general, transfer);
-        vkCmdClearColorImage(cmd, image, VK_IMAGE_LAYOUT_GENERAL, &nan, 1, &range);
-        gfx::imageBarrier(cmd, image, range, transfer, general);
-      }
-    }
-  });
+  // Packed samples (cloud_temporal.h): half-float NaN radiance, float NaN depths. The output
+  // history (RG32UI) takes the first two words: its front depth a half-float NaN, and its top
+  // bits an own-sample count of 7, so the poisoned texels claim to hold samples and must be
+  // caught as not finite. The output histories exist only once settings that upsample
+  // temporally were prepared.
+  VkClearColorValue nan{};
+  nan.uint32[0] = nan.uint32[1] = 0x7E007E00u;
+  nan.uint32[2] = 0x7FC00000u;
+  nan.uint32[3] = 0x7FC00003u;
+  const clouds::detail::ModuleImages& images = moduleImages();
+  fillImages(device_,
+             {images.history[0].image(), images.history[1].image(), images.outputHistory[0].image(),
+              images.outputHistory[1].image()},
+             nan);
 }
 
 void CloudHarness::markRadianceOutput(glm::vec4 value) {
-  device_.immediateSubmit([&](VkCommandBuffer cmd) {
-    const VkImageSubresourceRange range{VK_IMAGE_ASPECT_COLOR_BIT, 0, 1, 0, 1};
-    const gfx::ImageState general{VK_IMAGE_LAYOUT_GENERAL, VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT,
-                                  VK_ACCESS_2_MEMORY_READ_BIT | VK_ACCESS_2_MEMORY_WRITE_BIT};
-    const gfx::ImageState transfer{VK_IMAGE_LAYOUT_GENERAL, VK_PIPELINE_STAGE_2_CLEAR_BIT,
-                                   VK_ACCESS_2_TRANSFER_WRITE_BIT};
-    const VkClearColorValue mark{{value.r, value.g, value.b, value.a}};
-    const VkImage image = moduleImages().radiance.image();
-    gfx::imageBarrier(cmd, image, range, general, transfer);
-    vkCmdClearColorImage(cmd, image, VK_IMAGE_LAYOUT_GENERAL, &mark, 1, &range);
-    gfx::imageBarrier(cmd, image, range, transfer, general);
-  });
+  fillImages(device_, {moduleImages().radiance.image()},
+             VkClearColorValue{{value.r, value.g, value.b, value.a}});
 }
 
 clouds::WorkCounters CloudHarness::lastWorkCounters() const {
