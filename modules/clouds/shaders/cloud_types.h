@@ -144,12 +144,13 @@ const uint kSpecHistory = 0u;  // 0 none, 1 read in place (nothing moved), 2 rep
 const uint kSpecReconstructLightning = 1u;  // 0/1: write the glow with this frame's flashes
 const uint kReconstructSpecCount = 2u;
 // upsample.comp
-const uint kSpecTemporalUpsampling = 0u;  // 0/1: accumulate the output-resolution history
-const uint kSpecOutputHistory = 1u;       // 0 none, 1 read in place (nothing moved), 2 reprojected
-const uint kSpecAerialPerspective = 2u;   // 0/1: haze the output (FrameInputs::aerialPerspective)
-const uint kSpecUpsampleGodRays = 3u;     // 0/1: add god_rays.comp's light to the sky's pixels
-const uint kSpecUpsampleLightning = 4u;   // 0/1: the clouds glow with LightningUniforms' flashes
-const uint kUpsampleSpecCount = 5u;
+const uint kSpecTemporalUpsampling = 0u;   // 0/1: accumulate the output-resolution history
+const uint kSpecOutputHistory = 1u;        // 0 none, 1 read in place (nothing moved), 2 reprojected
+const uint kSpecAerialPerspective = 2u;    // 0/1: haze the output (FrameInputs::aerialPerspective)
+const uint kSpecUpsampleGodRays = 3u;      // 0/1: add god_rays.comp's light to the sky's pixels
+const uint kSpecUpsampleLightning = 4u;    // 0/1: the clouds glow with LightningUniforms' flashes
+const uint kSpecUpsampleDepthOutput = 5u;  // 0/1: store the cloud depth output
+const uint kUpsampleSpecCount = 6u;
 // lightning_bolts.comp
 const uint kSpecBoltsAerialPerspective = 0u;  // 0/1: haze them (FrameInputs::aerialPerspective)
 const uint kBoltsSpecCount = 1u;

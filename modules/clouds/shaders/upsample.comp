@@ -24,8 +24,9 @@
 // 2 host depth; 5 this frame's marched samples (trace res); 6 last frame's output history;
 // 8 the host's aerial perspective (3D); 9 the god rays' light (a quarter of the output res);
 // 10 the clouds' lightning glow (trace res).
-// Outputs: 3 RGBA16F radiance + transmittance, 4 RG32F depths (output res); 7 this frame's
-// output history (output res, RG32UI: packOutputHistory()).
+// Outputs: 3 RGBA16F radiance + transmittance, 4 RG32F depths (output res; only with
+// kSpecUpsampleDepthOutput: Settings::depthOutput, or the bolts' pass reads them); 7 this
+// frame's output history (output res, RG32UI: packOutputHistory()).
 // References: Karis 2014 (temporal accumulation, neighbourhood clamp); Schneider 2015.
 #extension GL_GOOGLE_include_directive : require
 #include "cloud_temporal.h"
@@ -42,6 +43,10 @@ layout(constant_id = kSpecAerialPerspective) const uint kAerialPerspective = 0u;
 layout(constant_id = kSpecUpsampleGodRays) const uint kGodRays = 0u;
 // 1: lightning: the clouds glow with this frame's flashes (kSpecUpsampleLightning).
 layout(constant_id = kSpecUpsampleLightning) const uint kLightning = 0u;
+// 1: store the cloud depth output (kSpecUpsampleDepthOutput). A host that does not read it
+// saves its store, about a quarter of the pass on lavapipe (an image store there is a loop
+// over the lanes for each 32-bit word, and the depths are two).
+layout(constant_id = kSpecUpsampleDepthOutput) const uint kDepthOutput = 1u;
 #include "frame_uniforms.glsl"
 layout(binding = kUpsampleTraceSamples, rgba32ui) uniform readonly uimage2D traceSamples;
 layout(binding = kUpsampleHostDepth) uniform sampler2D hostDepth;
@@ -179,7 +184,7 @@ void main() {
   spatialEstimate(pixel, scene, scale, spatial, spatialDepth, lo, hi);
   if (kTemporalUpsampling == 0u) {
     imageStore(outRadiance, ivec2(pixel), outputRadiance(pixel, spatial, spatialDepth, scene));
-    imageStore(outDepth, ivec2(pixel), vec4(spatialDepth, 0.0f, 0.0f));
+    if (kDepthOutput != 0u) imageStore(outDepth, ivec2(pixel), vec4(spatialDepth, 0.0f, 0.0f));
     return;
   }
 
@@ -294,5 +299,5 @@ void main() {
     imageStore(outputHistoryOut, ivec2(pixel), uvec4(history, 0u, 0u));
   }
   imageStore(outRadiance, ivec2(pixel), outputRadiance(pixel, radiance, depth, scene));
-  imageStore(outDepth, ivec2(pixel), vec4(depth, 0.0f, 0.0f));
+  if (kDepthOutput != 0u) imageStore(outDepth, ivec2(pixel), vec4(depth, 0.0f, 0.0f));
 }

@@ -173,8 +173,12 @@ detail::ImageSizes imageSizesFor(const Settings& settings, VkExtent2D renderExte
           ? VkExtent2D{(renderExtent.width + d - 1) / d, (renderExtent.height + d - 1) / d}
           : VkExtent2D{0, 0};
   const VkExtent2D trace = detail::traceExtentFor(renderExtent, settings.traceScale);
-  return {renderExtent, trace, upsamplesTemporally(settings), godRays,
-          settings.lightningFlashes > 0 ? trace : VkExtent2D{0, 0}};
+  return {renderExtent,
+          trace,
+          upsamplesTemporally(settings),
+          godRays,
+          settings.lightningFlashes > 0 ? trace : VkExtent2D{0, 0},
+          detail::writesCloudDepth(settings) ? renderExtent : VkExtent2D{0, 0}};
 }
 
 VkDeviceSize edgeRayListBytesFor(const Settings& settings, VkExtent2D renderExtent) {
@@ -196,11 +200,15 @@ void Context::Impl::prepare(const Settings& settings, VkExtent2D renderExtent) {
     if (programs_.has(program)) programs_[program].prepare(key);  // composite: optional
   }
   const detail::ImageSizes sizes = imageSizesFor(settings, renderExtent);
-  const VkImage outputs = images_.radiance.image();
+  const VkImage radiance = images_.radiance.image();
+  const VkImage depth = images_.depth.image();
   if (!images_.fit(sizes) && images_.grow(sizes, lastFrameIndex_)) {
     temporal_.forget("images resized");
   }
-  if (images_.radiance.image() != outputs) outputsHoldClearSky_ = false;  // new, undefined
+  // New outputs are undefined until written or cleared.
+  if (images_.radiance.image() != radiance || images_.depth.image() != depth) {
+    outputsHoldClearSky_ = false;
+  }
   if (images_.fitShadow(shadowExtentFor(settings), lastFrameIndex_)) shadowCascades_.forget();
   // The flashes' block, only for settings that can have flashes.
   if (settings.lightningFlashes > 0) {
@@ -412,7 +420,7 @@ Outputs Context::Impl::outputs() const {
   const detail::OwnedImage& radiance = images_.radiance;
   const detail::OwnedImage& depth = images_.depth;
   out.radiance = {radiance.image(), radiance.view(), radiance.format()};
-  out.depth = {depth.image(), depth.view(), depth.format()};
+  if (depth) out.depth = {depth.image(), depth.view(), depth.format()};  // else null
   out.extent = lastExtent_;
   const detail::OwnedImage& shadow = images_.shadowMap;
   if (shadow) {

@@ -74,6 +74,8 @@ ModuleImages::ModuleImages(const DeviceContext& device) : device_(device) {
       make(VK_IMAGE_TYPE_2D, kSampleFormat, {1, 1, 1}, kStorage, "no output history");
   hazePlaceholder = make(VK_IMAGE_TYPE_3D, kRadianceFormat, {1, 1, 1}, VK_IMAGE_USAGE_SAMPLED_BIT,
                          "no aerial perspective", VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL);
+  noDepthOutput = make(VK_IMAGE_TYPE_2D, kDepthOutputFormat, {1, 1, 1}, VK_IMAGE_USAGE_STORAGE_BIT,
+                       "no cloud depth output");
 }
 
 OwnedImage ModuleImages::make(VkImageType type, VkFormat format, VkExtent3D extent,
@@ -96,9 +98,11 @@ void ModuleImages::replace(OwnedImage& slot, OwnedImage replacement,
 }
 
 bool ModuleImages::fit(const ImageSizes& sizes) const {
-  return holds(radiance, sizes.output) && holds(depth, sizes.output) &&
-         holds(sceneDistance, sizes.trace) && holds(traceSamples, sizes.trace) &&
-         holds(history[0], sizes.trace) && holds(history[1], sizes.trace) &&
+  // A depth output no longer wanted does not fit either: grow() frees it.
+  const bool depthFits = sizes.depth.width == 0 ? !depth : holds(depth, sizes.depth);
+  return holds(radiance, sizes.output) && depthFits && holds(sceneDistance, sizes.trace) &&
+         holds(traceSamples, sizes.trace) && holds(history[0], sizes.trace) &&
+         holds(history[1], sizes.trace) &&
          (!sizes.upsampling ||
           (holds(outputHistory[0], sizes.output) && holds(outputHistory[1], sizes.output))) &&
          (sizes.lightning.width == 0 || holds(lightningGlow, sizes.lightning)) &&
@@ -109,9 +113,14 @@ bool ModuleImages::fit(const ImageSizes& sizes) const {
 
 bool ModuleImages::grow(const ImageSizes& sizes, std::optional<std::uint64_t> lastUse) {
   bool historyLost = false;
-  if (!holds(radiance, sizes.output) || !holds(depth, sizes.output)) {
+  if (!holds(radiance, sizes.output)) {
     const VkExtent3D e = extent3(grown(radiance, sizes.output));
     replace(radiance, make(VK_IMAGE_TYPE_2D, kRadianceFormat, e, kOutput, "radiance"), lastUse);
+  }
+  if (sizes.depth.width == 0) {
+    if (depth) replace(depth, OwnedImage{}, lastUse);
+  } else if (!holds(depth, sizes.depth)) {
+    const VkExtent3D e = extent3(grown(depth, sizes.depth));
     replace(depth, make(VK_IMAGE_TYPE_2D, kDepthOutputFormat, e, kOutput, "cloud depth"), lastUse);
   }
   const bool traceFits = holds(sceneDistance, sizes.trace) && holds(traceSamples, sizes.trace) &&
@@ -213,7 +222,8 @@ MemoryUsage ModuleImages::memoryUsage() const {
   m.shadowBytes = shadowMap.bytes() + shadowSpare.bytes();
   m.godRayBytes = godRayOcclusion.bytes() + godRayMask.bytes() + godRayLight.bytes();
   m.lightningBytes = lightningGlow.bytes();
-  m.bufferBytes = depthPlaceholder.bytes() + samplesPlaceholder.bytes() + hazePlaceholder.bytes();
+  m.bufferBytes = depthPlaceholder.bytes() + samplesPlaceholder.bytes() + hazePlaceholder.bytes() +
+                  noDepthOutput.bytes();
   for (const Retired& r : retired_) m.retiredBytes += r.image.bytes();
   return m;
 }

@@ -32,6 +32,7 @@ struct ImageSizes {
   bool upsampling = false;     // the output-resolution histories of temporal upsampling
   VkExtent2D godRays{0, 0};    // the god-ray occlusion image and mask ({0, 0}: none)
   VkExtent2D lightning{0, 0};  // the clouds' lightning glow, the trace's ({0, 0}: none)
+  VkExtent2D depth{0, 0};      // the cloud depth output, the output's ({0, 0}: none)
 };
 
 class ModuleImages {
@@ -54,6 +55,13 @@ class ModuleImages {
   // Records the first layout transition of every image made since the last call.
   void recordInitialLayouts(VkCommandBuffer cmd);
   MemoryUsage memoryUsage() const;
+  // Calls `visit` with each output the host reads: the radiance, and the depth when there is
+  // one (writesCloudDepth()).
+  template <typename Visit>
+  void forEachOutput(Visit&& visit) const {
+    visit(radiance);
+    if (depth) visit(depth);
+  }
 
   // Fixed.
   OwnedImage shapeNoise;
@@ -65,9 +73,10 @@ class ModuleImages {
   OwnedImage depthPlaceholder;    // 1 x 1 sampled R32F: no host depth
   OwnedImage samplesPlaceholder;  // 1 x 1 storage RGBA32UI: no output history
   OwnedImage hazePlaceholder;     // 1 x 1 x 1 sampled RGBA16F: no aerial perspective
+  OwnedImage noDepthOutput;       // 1 x 1 storage RG32F: no cloud depth output
   // Sized by grow().
-  OwnedImage radiance;  // outputs, output resolution
-  OwnedImage depth;
+  OwnedImage radiance;                      // outputs, output resolution
+  OwnedImage depth;                         // none without a cloud depth output (ImageSizes::depth)
   OwnedImage sceneDistance;                 // trace resolution, R32F
   OwnedImage traceSamples;                  // this frame's marched pixels (packed samples)
   std::array<OwnedImage, 2> history;        // reconstructed frames, ping-pong

@@ -40,15 +40,20 @@ SpecializationKey reconstructKey(std::uint32_t history, bool lightning) {
 }
 
 SpecializationKey upsampleKey(bool temporalUpsampling, std::uint32_t outputHistory, bool hazed,
-                              bool godRays, bool lightning) {
+                              bool godRays, bool lightning, bool depthOutput) {
   SpecializationKey key;
   key.values[shader::kSpecTemporalUpsampling] = temporalUpsampling ? 1u : 0u;
   key.values[shader::kSpecOutputHistory] = outputHistory;
   key.values[shader::kSpecAerialPerspective] = hazed ? 1u : 0u;
   key.values[shader::kSpecUpsampleGodRays] = godRays ? 1u : 0u;
   key.values[shader::kSpecUpsampleLightning] = lightning ? 1u : 0u;
+  key.values[shader::kSpecUpsampleDepthOutput] = depthOutput ? 1u : 0u;
   key.count = shader::kUpsampleSpecCount;
   return key;
+}
+
+bool writesCloudDepth(const Settings& settings) {
+  return settings.depthOutput || settings.lightningBoltSegments > 0;
 }
 
 SpecializationKey boltsKey(bool hazed) {
@@ -104,7 +109,8 @@ std::vector<std::pair<Program, SpecializationKey>> variantsFor(const Settings& s
         for (bool lightning : {false, true}) {
           if (lightning && settings.lightningFlashes == 0) continue;
           variants.emplace_back(Program::Upsample,
-                                upsampleKey(upsampling, history, hazed, godRays, lightning));
+                                upsampleKey(upsampling, history, hazed, godRays, lightning,
+                                            writesCloudDepth(settings)));
         }
       }
     }

@@ -22,9 +22,13 @@ SpecializationKey marchKey(const Settings& settings, bool workCounters, bool ter
 // `lightning`: write the glow with this frame's flashes too.
 SpecializationKey reconstructKey(std::uint32_t history, bool lightning);
 // `hazed`: the host gave an aerial perspective this frame; `godRays`: add the god rays' light;
-// `lightning`: the clouds glow with this frame's flashes.
+// `lightning`: the clouds glow with this frame's flashes; `depthOutput`: store the cloud depth
+// output (writesCloudDepth()).
 SpecializationKey upsampleKey(bool temporalUpsampling, std::uint32_t outputHistory, bool hazed,
-                              bool godRays, bool lightning);
+                              bool godRays, bool lightning, bool depthOutput);
+// Whether the module writes the cloud depth output: the host reads it (Settings::depthOutput),
+// or the bolts' pass does (lightningBoltSegments > 0).
+bool writesCloudDepth(const Settings& settings);
 // The bolts' pass; `hazed`: the host gave an aerial perspective this frame.
 SpecializationKey boltsKey(bool hazed);
 

@@ -83,10 +83,10 @@ void Context::Impl::recordBolts(VkCommandBuffer cmd, const FrameInputs& inputs, 
                           &constants);
     fn.vkCmdDispatch(cmd, groups.x, groups.y, 1);
   }
-  for (const detail::OwnedImage* image : {&images_.radiance, &images_.depth}) {
-    detail::barrier(device_, cmd, image->image(), VK_IMAGE_LAYOUT_GENERAL, VK_IMAGE_LAYOUT_GENERAL,
+  images_.forEachOutput([&](const detail::OwnedImage& image) {
+    detail::barrier(device_, cmd, image.image(), VK_IMAGE_LAYOUT_GENERAL, VK_IMAGE_LAYOUT_GENERAL,
                     kCompute, kStorageWrite, kHostReadStages, kHostReadAccess);
-  }
+  });
   endPass(cmd, detail::Pass::LightningBolts);
 }
 

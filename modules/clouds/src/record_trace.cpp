@@ -152,7 +152,8 @@ void Context::Impl::recordTrace(VkCommandBuffer cmd, const FrameInputs& inputs,
       .storageImage(kUpsampleTraceSamples, historyOut.view())
       .sampledImage(kUpsampleHostDepth, depthView, nearest, depthLayout)
       .storageImage(kUpsampleRadianceOut, im.radiance.view())
-      .storageImage(kUpsampleDepthOut, im.depth.view())
+      // Without a depth output, a stand-in the variant never stores to.
+      .storageImage(kUpsampleDepthOut, im.depth ? im.depth.view() : im.noDepthOutput.view())
       .storageImage(kUpsampleFresh, im.traceSamples.view())
       .storageImage(kUpsampleHistory, outputHistoryIn)
       .storageImage(kUpsampleHistoryOut, outputHistoryOut)
@@ -232,15 +233,16 @@ void Context::Impl::recordTrace(VkCommandBuffer cmd, const FrameInputs& inputs,
   const std::uint32_t outputHistory = historyVariant(temporal.useOutputHistory, temporal.still);
   bindAndDispatch(cmd, Program::Upsample,
                   programs_[Program::Upsample].find(
-                      detail::upsampleKey(upsampling, outputHistory, hazed, godRays, lightning)),
+                      detail::upsampleKey(upsampling, outputHistory, hazed, godRays, lightning,
+                                          detail::writesCloudDepth(settings))),
                   slot.upsample, inputs.renderExtent.width, inputs.renderExtent.height);
   // The bolts' pass reads and writes the outputs next; else the host reads them.
   const bool bolts = !inputs.lightningBolts.empty() && slot.bolts.buffer() != VK_NULL_HANDLE;
-  for (const detail::OwnedImage* image : {&im.radiance, &im.depth}) {
-    detail::barrier(device_, cmd, image->image(), VK_IMAGE_LAYOUT_GENERAL, VK_IMAGE_LAYOUT_GENERAL,
+  im.forEachOutput([&](const detail::OwnedImage& image) {
+    detail::barrier(device_, cmd, image.image(), VK_IMAGE_LAYOUT_GENERAL, VK_IMAGE_LAYOUT_GENERAL,
                     kCompute, kStorageWrite, bolts ? kCompute : kHostReadStages,
                     bolts ? kStorageRead | kStorageWrite : kHostReadAccess);
-  }
+  });
   endPass(cmd, detail::Pass::Upsample);
   if (!bolts) return;
   detail::SetWriter(device_, slot.lightningBolts)
@@ -289,13 +291,14 @@ void Context::Impl::recordClearSky(VkCommandBuffer cmd, Slot& slot) {
     fn.vkCmdClearColorImage(cmd, images_.radiance.image(), VK_IMAGE_LAYOUT_GENERAL, &noCloud, 1,
                             &range);
     const VkClearColorValue noDepth{};
-    fn.vkCmdClearColorImage(cmd, images_.depth.image(), VK_IMAGE_LAYOUT_GENERAL, &noDepth, 1,
-                            &range);
-    for (const detail::OwnedImage* image : {&images_.radiance, &images_.depth}) {
-      detail::barrier(device_, cmd, image->image(), VK_IMAGE_LAYOUT_GENERAL,
-                      VK_IMAGE_LAYOUT_GENERAL, transfer, VK_ACCESS_2_TRANSFER_WRITE_BIT,
-                      kHostReadStages, kHostReadAccess);
+    if (images_.depth) {
+      fn.vkCmdClearColorImage(cmd, images_.depth.image(), VK_IMAGE_LAYOUT_GENERAL, &noDepth, 1,
+                              &range);
     }
+    images_.forEachOutput([&](const detail::OwnedImage& image) {
+      detail::barrier(device_, cmd, image.image(), VK_IMAGE_LAYOUT_GENERAL, VK_IMAGE_LAYOUT_GENERAL,
+                      transfer, VK_ACCESS_2_TRANSFER_WRITE_BIT, kHostReadStages, kHostReadAccess);
+    });
   }
   if (info_.workCounters) {
     fn.vkCmdFillBuffer(cmd, slot.counters.buffer(), 0, VK_WHOLE_SIZE, 0u);

@@ -235,6 +235,54 @@ TEST_F(Contract, MemoryIsSizedToWhatIsUsedAndReported) {
   device.waitIdle();
 }
 
+// The cloud depth output exists while something reads it: the host (Settings::depthOutput)
+// or the module's own bolts (lightningBoltSegments > 0). Without it dispatch() runs as before
+// (the validation layer sees every binding filled) and the image, once no frame can use it,
+// is freed.
+TEST_F(Contract, TheDepthOutputExistsWhileSomethingReadsIt) {
+  engine::gfx::Device& device = this->device();
+  clouds::Error error;
+  auto context = clouds::Context::create(shimmedInfo(device), &error);
+  ASSERT_TRUE(context) << error.message;
+  std::uint64_t frameIndex = 0;
+  const auto run = [&](const clouds::Settings& settings) {
+    ASSERT_TRUE(context->prepare(settings, kExtent, &error)) << error.message;
+    for (int i = 0; i < 3; ++i) {
+      device.immediateSubmit([&](VkCommandBuffer cmd) {
+        ASSERT_TRUE(context->dispatch(frame(cmd, kExtent, frameIndex++), settings, &error))
+            << error.message;
+      });
+    }
+  };
+  const auto hasDepth = [&] { return context->outputs().depth.image != VK_NULL_HANDLE; };
+  clouds::Settings read = clouds::settingsFor(clouds::Quality::High);
+  ASSERT_TRUE(read.depthOutput) << "hosts get the depth unless they say otherwise";
+  run(read);
+  EXPECT_TRUE(hasDepth());
+  EXPECT_EQ(context->outputs().depth.format, VK_FORMAT_R32G32_SFLOAT);
+  const std::uint64_t withDepth = context->memoryUsage().outputBytes;
+
+  clouds::Settings unread = read;
+  unread.depthOutput = false;
+  run(unread);
+  EXPECT_FALSE(hasDepth());
+  EXPECT_LT(context->memoryUsage().outputBytes, withDepth);
+  EXPECT_EQ(context->memoryUsage().retiredBytes, 0u) << "freed once no frame can use it";
+
+  clouds::Settings bolts = unread;
+  bolts.lightningBoltSegments = 4;
+  run(bolts);
+  EXPECT_TRUE(hasDepth()) << "the bolts' pass reads the clouds' depth";
+  EXPECT_EQ(context->memoryUsage().outputBytes, withDepth);
+
+  // A clear sky clears only the outputs there are.
+  unread.coverage = 0.0f;
+  run(unread);
+  EXPECT_FALSE(hasDepth());
+  EXPECT_EQ(std::string(context->lastFrameReport().resetReason), "clear sky: nothing to march");
+  device.waitIdle();
+}
+
 TEST_F(Contract, EveryErrorHasACode) {
   engine::gfx::Device& device = this->device();
   clouds::Error error;

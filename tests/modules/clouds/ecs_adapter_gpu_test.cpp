@@ -34,6 +34,27 @@ TEST_F(CloudsModuleOnDevice, InstallsAndRegistersItsRenderFeature) {
   EXPECT_TRUE(app.world().ctx().has<clouds::ecs::CloudStatus>());
 }
 
+// The engine reads the clouds' radiance only, so the feature asks for no depth output: its
+// outputs are the RGBA16F radiance alone (the status reports the memory of the prepare before).
+TEST_F(CloudsModuleOnDevice, AsksForNoDepthOutputItWouldNotRead) {
+  engine::ecs::App app;
+  app.world().ctx().emplace<engine::render::RenderDevice>(
+      renderDevice(device(), VK_FORMAT_R16G16B16A16_SFLOAT));
+  app.world().emplace<clouds::ecs::CloudLayer>(app.world().create(), clouds::ecs::CloudLayer{});
+  ASSERT_TRUE(app.addModule<clouds::ecs::CloudsModule>());
+  engine::render::RenderFeature& clouds =
+      *app.world().ctx().get<engine::render::RenderFeatures>().features.at(0);
+  const VkExtent2D extent{320, 180};
+  clouds.prepare(extent, 0);
+  clouds.prepare(extent, 1);
+  const std::uint64_t pixels = std::uint64_t{extent.width} * extent.height;
+  const std::uint64_t outputs =
+      app.world().ctx().get<clouds::ecs::CloudStatus>().memory.outputBytes;
+  EXPECT_GE(outputs, pixels * 8) << "the radiance";
+  EXPECT_LT(outputs, pixels * 16) << "and no RG32F depth beside it";
+  device().waitIdle();
+}
+
 TEST_F(CloudsModuleOnDevice, ADeviceItCannotUseMakesItSkipItselfWithAWarning) {
   test::LogCapture log;
   const std::vector<std::string>& warnings = log.warnings;

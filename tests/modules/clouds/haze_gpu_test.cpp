@@ -17,6 +17,7 @@ using clouds::tools::CloudFrame;
 using clouds::tools::CloudView;
 using test::cumulusView;
 using test::kExtent;
+using test::meanOpacity;
 using CloudHaze = test::CloudGpuTest;
 
 constexpr std::uint32_t kSlices = 16;
@@ -90,6 +91,44 @@ TEST_F(CloudHaze, CloudsAreHazedAtTheirWeightedDepth) {
   EXPECT_GT(cloudy, clean.radiance.size() / 20) << "the view must hold cloud";
   // Half-float outputs and the GPU's filtering weights: a few parts in a thousand.
   EXPECT_LT(worst, 0.01f);
+}
+
+// A host that does not read the cloud depth (Settings::depthOutput false) gets no depth
+// image and the same radiance to the bit: the depths are still used inside (the haze reads the
+// weighted one, the histories reproject through them); only their store is left out. Medium's
+// upsample and High's temporal one each store the depth in their own place; the turning frames
+// take High's reprojected history.
+TEST_F(CloudHaze, WithoutTheDepthOutputTheHazedRadianceIsTheSame) {
+  const engine::gfx::Image volume = makeAir(device());
+  for (clouds::Quality quality : {clouds::Quality::Medium, clouds::Quality::High}) {
+    SCOPED_TRACE(clouds::qualityName(quality));
+    const clouds::Settings with = clouds::settingsFor(quality);
+    clouds::Settings without = with;
+    without.depthOutput = false;
+    auto stored = renderer();
+    auto left = renderer();
+    CloudView view = cumulusView();
+    view.aerialPerspective = {volume.view(), VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL, kSlices,
+                              kRangeMetres, glm::vec3(1.0f)};
+    CloudFrame a, b;
+    for (int frame = 0; frame < 6; ++frame) {
+      view.yawDegrees += frame < 3 ? 0.0 : 0.5;
+      a = stored->render(view, with, kExtent);
+      b = left->render(view, without, kExtent);
+    }
+    EXPECT_FALSE(a.depth.empty());
+    EXPECT_TRUE(b.depth.empty()) << "no depth output to read back";
+    EXPECT_EQ(left->context().outputs().depth.image, VkImage{VK_NULL_HANDLE});
+    const std::uint64_t depthBytes =
+        stored->memoryUsage().outputBytes - left->memoryUsage().outputBytes;
+    EXPECT_GE(depthBytes, std::uint64_t{kExtent.width} * kExtent.height * 8) << "RG32F";
+    EXPECT_LT(depthBytes, std::uint64_t{kExtent.width} * kExtent.height * 16);
+    ASSERT_GT(meanOpacity(a), 0.002) << "the view must show clouds";
+    ASSERT_EQ(a.radiance.size(), b.radiance.size());
+    for (std::size_t i = 0; i < a.radiance.size(); ++i) {
+      ASSERT_EQ(a.radiance[i], b.radiance[i]) << "pixel " << i;
+    }
+  }
 }
 
 TEST_F(CloudHaze, HazeAtTheFrontDepthWouldBeWrong) {

@@ -111,6 +111,9 @@ bool CloudFeature::prepare(VkExtent2D extent, std::uint64_t frameIndex) {
     status.passTimings = context_->passTimings(frameIndex - framesInFlight_);
   }
   settings_ = cloudSettings(world_);
+  // The engine's passes read the clouds' radiance only (addPasses() hands on no depth): the
+  // module need not store its depth output (a quarter of its upsample on lavapipe).
+  settings_.depthOutput = false;
   clouds::Error error;
   prepared_ = context_->prepare(settings_, extent, &error);
   if (!prepared_) reportError(error);
@@ -232,7 +235,10 @@ SceneTextures CloudFeature::addPasses(FrameGraph& graph, const SceneTextures& sc
   const VkExtent3D sceneExtent = graph.textureDesc(scene.hdr).extent;
   const TextureHandle radiance =
       importOutput(graph, "cloud radiance", imported_.radiance, sceneExtent);
-  const TextureHandle depth = importOutput(graph, "cloud depth", imported_.depth, sceneExtent);
+  // The depth output exists only for the bolts' pass, which the module runs inside dispatch().
+  const TextureHandle depth = imported_.depth.image != VK_NULL_HANDLE
+                                  ? importOutput(graph, "cloud depth", imported_.depth, sceneExtent)
+                                  : TextureHandle{};
 
   struct MarchData {
     TextureHandle sceneDepth, skyRadiance, aerialPerspective, radiance, depth;
@@ -251,7 +257,7 @@ SceneTextures CloudFeature::addPasses(FrameGraph& graph, const SceneTextures& sc
         // pass its mean (the clouds' shade on the ground that lights their bases).
         if (scene.cloudShadow.valid()) builder.read(scene.cloudShadow, Access::SampledReadGeneral);
         d.radiance = builder.write(radiance, Access::StorageWrite);
-        d.depth = builder.write(depth, Access::StorageWrite);
+        if (depth.valid()) d.depth = builder.write(depth, Access::StorageWrite);
       },
       [this, scene](const MarchData& d, PassContext& context) {
         const auto viewOf = [&](TextureHandle h) {

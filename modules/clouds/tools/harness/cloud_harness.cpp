@@ -250,10 +250,19 @@ CloudFrame CloudHarness::render(const CloudView& view, const clouds::Settings& s
   CloudFrame frame;
   frame.extent = extent;
   const std::size_t pixels = std::size_t{extent.width} * extent.height;
-  gfx::Buffer radiance(device_, gfx::BufferDesc{pixels * 8, VK_BUFFER_USAGE_TRANSFER_DST_BIT,
-                                                gfx::MemoryUsage::Readback, "harness radiance"});
-  gfx::Buffer depth(device_, gfx::BufferDesc{pixels * 8, VK_BUFFER_USAGE_TRANSFER_DST_BIT,
-                                             gfx::MemoryUsage::Readback, "harness depth readback"});
+  // Both outputs are 8 bytes a pixel (RGBA16F, RG32F); without a depth output, the radiance.
+  struct Readback {
+    VkImage image;
+    gfx::Buffer buffer;
+  };
+  std::vector<Readback> readbacks;
+  for (VkImage image : {out.radiance.image, out.depth.image}) {
+    if (image == VK_NULL_HANDLE) continue;
+    readbacks.push_back(
+        {image, gfx::Buffer(device_, gfx::BufferDesc{pixels * 8, VK_BUFFER_USAGE_TRANSFER_DST_BIT,
+                                                     gfx::MemoryUsage::Readback,
+                                                     "harness output readback"})});
+  }
   device_.immediateSubmit([&](VkCommandBuffer cmd) {
     VkBufferImageCopy region{};
     region.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
@@ -261,33 +270,28 @@ CloudFrame CloudHarness::render(const CloudView& view, const clouds::Settings& s
     const VkImageSubresourceRange range{VK_IMAGE_ASPECT_COLOR_BIT, 0, 1, 0, 1};
     const gfx::ImageState source{VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
                                  VK_PIPELINE_STAGE_2_TRANSFER_BIT, VK_ACCESS_2_TRANSFER_READ_BIT};
-    for (VkImage image : {out.radiance.image, out.depth.image}) {
-      gfx::imageBarrier(cmd, image, range, general, source);
+    for (const Readback& r : readbacks) {
+      gfx::imageBarrier(cmd, r.image, range, general, source);
+      vkCmdCopyImageToBuffer(cmd, r.image, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, r.buffer.vk(), 1,
+                             &region);
+      // Back to GENERAL, as the module expects its outputs between frames.
+      gfx::imageBarrier(cmd, r.image, range, source, general);
+      gfx::bufferBarrier(cmd, r.buffer.vk(), VK_PIPELINE_STAGE_2_TRANSFER_BIT,
+                         VK_ACCESS_2_TRANSFER_WRITE_BIT, VK_PIPELINE_STAGE_2_HOST_BIT,
+                         VK_ACCESS_2_HOST_READ_BIT);
     }
-    vkCmdCopyImageToBuffer(cmd, out.radiance.image, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
-                           radiance.vk(), 1, &region);
-    vkCmdCopyImageToBuffer(cmd, out.depth.image, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, depth.vk(),
-                           1, &region);
-    // Back to GENERAL, as the module expects its outputs between frames.
-    for (VkImage image : {out.radiance.image, out.depth.image}) {
-      gfx::imageBarrier(cmd, image, range, source, general);
-    }
-    gfx::bufferBarrier(cmd, radiance.vk(), VK_PIPELINE_STAGE_2_TRANSFER_BIT,
-                       VK_ACCESS_2_TRANSFER_WRITE_BIT, VK_PIPELINE_STAGE_2_HOST_BIT,
-                       VK_ACCESS_2_HOST_READ_BIT);
-    gfx::bufferBarrier(cmd, depth.vk(), VK_PIPELINE_STAGE_2_TRANSFER_BIT,
-                       VK_ACCESS_2_TRANSFER_WRITE_BIT, VK_PIPELINE_STAGE_2_HOST_BIT,
-                       VK_ACCESS_2_HOST_READ_BIT);
   });
   frame.radiance.resize(pixels);
-  frame.depth.resize(pixels);
-  const auto* halves = reinterpret_cast<const std::uint16_t*>(radiance.mapped());
+  const auto* halves = reinterpret_cast<const std::uint16_t*>(readbacks[0].buffer.mapped());
   for (std::size_t i = 0; i < pixels; ++i) {
     frame.radiance[i] =
         glm::vec4(glm::unpackHalf1x16(halves[4 * i + 0]), glm::unpackHalf1x16(halves[4 * i + 1]),
                   glm::unpackHalf1x16(halves[4 * i + 2]), glm::unpackHalf1x16(halves[4 * i + 3]));
   }
-  std::memcpy(frame.depth.data(), depth.mapped(), pixels * 8);
+  if (readbacks.size() > 1) {
+    frame.depth.resize(pixels);
+    std::memcpy(frame.depth.data(), readbacks[1].buffer.mapped(), pixels * 8);
+  }
   return frame;
 }
 

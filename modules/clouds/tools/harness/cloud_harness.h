@@ -82,7 +82,7 @@ class PixelRays {
 struct CloudFrame {
   VkExtent2D extent{};
   std::vector<glm::vec4> radiance;  // rgb radiance, a transmittance
-  std::vector<glm::vec2> depth;     // front depth, weighted depth (m)
+  std::vector<glm::vec2> depth;     // front depth, weighted depth (m); none without the output
 };
 
 // The cloud shadow map as read back (Outputs::shadowMap): texels (optical depth, highest and
