@@ -3,8 +3,9 @@
 //
 // Fixed images (noise, weather maps and their maxima, placeholders) are made at creation.
 // The rest scale with the render size and are made by prepare(): the outputs at the render
-// extent, the trace images (scene distance, this frame's samples, two histories) at the trace
-// extent, and the two output-resolution histories only for settings that upsample temporally.
+// extent (the depth only while something reads it: writesCloudDepth()), the trace images
+// (scene distance, this frame's samples, two histories) at the trace extent, and the two
+// output-resolution histories only for settings that upsample temporally.
 // They only grow, to the largest size asked for on each axis; an image they replace is kept
 // on a retire list until the frames in flight that may still use it have completed.
 //
