@@ -463,6 +463,7 @@ int main(int argc, char** argv) {
   std::unique_ptr<clouds::Context> clouds = clouds::Context::create(info, &error);
   clouds::Settings settings;  // the defaults, with a little more coverage: broken cumulus
   settings.coverage = 0.62f;
+  settings.depthOutput = false;  // composite() reads the radiance only: no depth to store
   if (!withClouds || !cloudShadows) settings.shadowCascades = 0;  // no map, no pass, no memory
   // The shadow map read back to the CPU: shadowMapResolution x cascades wide, RGBA16F.
   const VkExtent2D shadowExtent{settings.shadowMapResolution * settings.shadowCascades,
