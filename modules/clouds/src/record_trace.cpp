@@ -290,8 +290,8 @@ void Context::Impl::recordClearSky(VkCommandBuffer cmd, Slot& slot) {
     noCloud.float32[3] = 1.0f;  // transmittance 1, no radiance
     fn.vkCmdClearColorImage(cmd, images_.radiance.image(), VK_IMAGE_LAYOUT_GENERAL, &noCloud, 1,
                             &range);
-    const VkClearColorValue noDepth{};
     if (images_.depth) {
+      const VkClearColorValue noDepth{};
       fn.vkCmdClearColorImage(cmd, images_.depth.image(), VK_IMAGE_LAYOUT_GENERAL, &noDepth, 1,
                               &range);
     }

@@ -18,15 +18,17 @@ namespace {
 
 using CloudsModuleOnDevice = test::GpuTest;
 
-engine::render::RenderDevice renderDevice(engine::gfx::Device& device, VkFormat hdr) {
-  return engine::render::RenderDevice{&device, hdr, VK_FORMAT_D32_SFLOAT, 2, {640, 360}};
+// An app on `device` whose renderer's scene colour is `hdr`, with a cloud layer in its world:
+// what the clouds' module needs to install itself.
+void addRendererAndCloudLayer(engine::ecs::App& app, engine::gfx::Device& device, VkFormat hdr) {
+  app.world().ctx().emplace<engine::render::RenderDevice>(
+      engine::render::RenderDevice{&device, hdr, VK_FORMAT_D32_SFLOAT, 2, {640, 360}});
+  app.world().emplace<clouds::ecs::CloudLayer>(app.world().create(), clouds::ecs::CloudLayer{});
 }
 
 TEST_F(CloudsModuleOnDevice, InstallsAndRegistersItsRenderFeature) {
   engine::ecs::App app;
-  app.world().ctx().emplace<engine::render::RenderDevice>(
-      renderDevice(device(), VK_FORMAT_R16G16B16A16_SFLOAT));
-  app.world().emplace<clouds::ecs::CloudLayer>(app.world().create(), clouds::ecs::CloudLayer{});
+  addRendererAndCloudLayer(app, device(), VK_FORMAT_R16G16B16A16_SFLOAT);
   ASSERT_TRUE(app.addModule<clouds::ecs::CloudsModule>());
   const auto& features = app.world().ctx().get<engine::render::RenderFeatures>().features;
   ASSERT_EQ(features.size(), 1u);
@@ -38,9 +40,7 @@ TEST_F(CloudsModuleOnDevice, InstallsAndRegistersItsRenderFeature) {
 // outputs are the RGBA16F radiance alone (the status reports the memory of the prepare before).
 TEST_F(CloudsModuleOnDevice, AsksForNoDepthOutputItWouldNotRead) {
   engine::ecs::App app;
-  app.world().ctx().emplace<engine::render::RenderDevice>(
-      renderDevice(device(), VK_FORMAT_R16G16B16A16_SFLOAT));
-  app.world().emplace<clouds::ecs::CloudLayer>(app.world().create(), clouds::ecs::CloudLayer{});
+  addRendererAndCloudLayer(app, device(), VK_FORMAT_R16G16B16A16_SFLOAT);
   ASSERT_TRUE(app.addModule<clouds::ecs::CloudsModule>());
   engine::render::RenderFeature& clouds =
       *app.world().ctx().get<engine::render::RenderFeatures>().features.at(0);
@@ -59,9 +59,7 @@ TEST_F(CloudsModuleOnDevice, ADeviceItCannotUseMakesItSkipItselfWithAWarning) {
   test::LogCapture log;
   const std::vector<std::string>& warnings = log.warnings;
   engine::ecs::App app;
-  app.world().ctx().emplace<engine::render::RenderDevice>(
-      renderDevice(device(), VK_FORMAT_R8G8B8A8_UNORM));
-  app.world().emplace<clouds::ecs::CloudLayer>(app.world().create(), clouds::ecs::CloudLayer{});
+  addRendererAndCloudLayer(app, device(), VK_FORMAT_R8G8B8A8_UNORM);
   EXPECT_FALSE(app.addModule<clouds::ecs::CloudsModule>());
   EXPECT_FALSE(app.world().ctx().has<engine::render::RenderFeatures>());
   ASSERT_EQ(warnings.size(), 1u);
