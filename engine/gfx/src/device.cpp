@@ -33,7 +33,8 @@ struct FeatureChain {
   FeatureChain(const FeatureChain&) = delete;
 };
 
-// The features the engine and the clouds module rely on; missing ones make a device unsuitable.
+// The features the engine and the effect modules it hosts rely on; missing ones make a device
+// unsuitable.
 std::string missingRequiredFeature(const FeatureChain& f) {
   if (!f.v12.timelineSemaphore) return "timelineSemaphore";
   if (!f.v12.hostQueryReset) return "hostQueryReset";

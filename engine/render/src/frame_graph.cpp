@@ -28,6 +28,10 @@ VkBuffer PassContext::buffer(BufferHandle h) const {
   return graph_->vkBuffer(h.index);
 }
 
+Blackboard& PassContext::blackboard() const {
+  return graph_->blackboard_;
+}
+
 void PassContext::bind(const gfx::Pipeline& pipeline, const gfx::DescriptorWriter& writer) const {
   gfx::bindPipeline(*device_, cmd(), pipeline, descriptors(), writer);
 }

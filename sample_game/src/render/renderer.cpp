@@ -2,6 +2,7 @@
 
 #include "clouds/ecs/cloud_frame.h"
 #include "clouds/ecs/lightning.h"
+#include "fxcontracts/ecs/frame_entries.h"
 
 #include "render/scene_pass.h"
 
@@ -45,9 +46,8 @@ Renderer::Renderer(gfx::Device& device, render::PresentTarget& target, ecs::Worl
     sky_ = std::make_unique<SkyPass>(device, kHdrFormat);
     pipelines.push_back(&sky_->pipeline());
   }
-  const bool cloudShadows =
-      std::any_of(features_.begin(), features_.end(),
-                  [](const render::RenderFeature* f) { return f->castsCloudShadow(); });
+  const bool cloudShadows = anyFeature(
+      [](const render::RenderFeature* f) { return f->publishes<fxcontracts::ecs::CloudShadow>(); });
   if (const auto* mesh = world.ctx().tryGet<TerrainMesh>()) {
     // A storm's flashes light the ground: the terrain's variant with that code (none without).
     bool storm = false;
@@ -143,25 +143,28 @@ void Renderer::rebuildGraph(VkExtent2D extent) {
   // gradient sky.
   render::SceneTextures scene;
   scene.extent = extent;
-  scene.cloudShadowReceived =
-      (terrain_ && terrain_->shadowedByClouds()) ||
-      std::any_of(features_.begin(), features_.end(),
-                  [](const render::RenderFeature* f) { return f->receivesCloudShadow(); });
+  // A cloud shadow map is made only for a frame that receives it.
+  if ((terrain_ && terrain_->shadowedByClouds()) || anyFeature([](const render::RenderFeature* f) {
+        return f->reads<fxcontracts::ecs::CloudShadow>();
+      })) {
+    graph.blackboard().put(fxcontracts::ecs::CloudShadowWanted{});
+  }
   // What shadows the frame, then what the scene reads (the sky and its haze may read shadows).
   for (render::RenderFeature* feature : features_) scene = feature->addShadowPasses(graph, scene);
   const render::TextureHandle sunlight =
-      sunlight_ ? sunlight_->addPass(graph, scene, &cameraPosition_) : render::TextureHandle{};
+      sunlight_ ? sunlight_->addPass(graph, &cameraPosition_) : render::TextureHandle{};
   for (render::RenderFeature* feature : features_) {
     scene = feature->addPassesBeforeScene(graph, scene);
   }
   if (sky_) scene.hdr = addSkyPass(graph, *sky_, hdrDesc, &sceneFrame_);
-  if (terrain_ && terrain_->hazedByAerialPerspective() && !scene.aerialPerspective.valid()) {
-    scene.aerialPerspective = importNoHaze(graph);
-    scene.aerialPerspectiveSlices = 1;
-    scene.aerialPerspectiveRangeMetres = 1.0f;
+  if (terrain_ && terrain_->hazedByAerialPerspective() &&
+      !graph.blackboard().has<fxcontracts::ecs::AerialPerspective>()) {
+    fxcontracts::ecs::AerialPerspective noHaze;
+    noHaze.volume = importNoHaze(graph);
+    noHaze.slices = 1;
+    noHaze.rangeMetres = 1.0f;
+    graph.blackboard().put(noHaze);
   }
-  hazeRangeMetres_ = scene.aerialPerspectiveRangeMetres;
-  hazeSlices_ = scene.aerialPerspectiveSlices;
   // The opaque scene, and a feature's sky behind it: a graphics pass whenever either exists.
   if (terrain_ || !skyDrawers_.empty()) {
     const SceneTargets targets = addScenePass(graph, terrain_.get(), scene, sunlight, skyDrawers_,
@@ -209,7 +212,8 @@ void Renderer::updateFrameConstants(ecs::World& world, VkExtent2D extent) {
   f.skyZenith = glm::vec4(sky.zenith, 0.0f);
   f.skyHorizon = glm::vec4(sky.horizon, 0.0f);
   f.skyGround = glm::vec4(sky.ground, 0.0f);
-  f.fog = glm::vec4(fog.densityPerMetre, hazeRangeMetres_, float(hazeSlices_), 0.0f);
+  // y, z: the aerial perspective's range and slices, filled by the scene pass (scene_pass.h).
+  f.fog = glm::vec4(fog.densityPerMetre, 0.0f, 0.0f, 0.0f);
   f.sunAboveAir = glm::vec4(sun.illuminance, 0.0f);
   f.extent = glm::uvec4(extent.width, extent.height, 0u, 0u);
   f.terrain = terrainMaterials_;
@@ -284,8 +288,9 @@ std::vector<std::string> Renderer::passNames() const {
 
 std::vector<std::string> Renderer::shadowCasters() const {
   std::vector<std::string> casters;
-  if (std::any_of(features_.begin(), features_.end(),
-                  [](const render::RenderFeature* f) { return f->castsCloudShadow(); })) {
+  if (anyFeature([](const render::RenderFeature* f) {
+        return f->publishes<fxcontracts::ecs::CloudShadow>();
+      })) {
     casters.emplace_back("clouds");
   }
   if (world_ != nullptr) casters.emplace_back("terrain");  // its heightfield went to the map

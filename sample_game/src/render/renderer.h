@@ -9,6 +9,7 @@
 // rebuilds the frame graph when the output size or a feature's resources change, and each frame
 // fills the per-frame constants from the world, records, submits and presents. Windowed and
 // headless runs use it identically; only the PresentTarget differs.
+#include <algorithm>
 #include <filesystem>
 #include <memory>
 #include <optional>
@@ -70,6 +71,10 @@ class Renderer {
   void rebuildGraph(VkExtent2D extent);
   void updateFrameConstants(engine::ecs::World& world, VkExtent2D extent);
   std::optional<std::filesystem::path> takeCaptureRequest(engine::ecs::World& world);
+  template <typename Predicate>
+  bool anyFeature(Predicate predicate) const {
+    return std::any_of(features_.begin(), features_.end(), predicate);
+  }
 
   engine::gfx::Device& device_;
   engine::render::PresentTarget& target_;
@@ -94,8 +99,6 @@ class Renderer {
   engine::render::TextureHandle targetHandle_;
   VkExtent2D graphExtent_{0, 0};
   SceneFrameBinding sceneFrame_{};
-  float hazeRangeMetres_ = 0.0f;  // the aerial perspective the terrain reads (graph build)
-  std::uint32_t hazeSlices_ = 0;
   // A hazed terrain's aerial perspective while the feature that makes it has none (its
   // prepare() failed): one texel, no in-scatter and full transmittance. Made when first needed.
   std::unique_ptr<engine::gfx::Image> noHaze_;

@@ -1,6 +1,7 @@
 #include "render/scene_pass.h"
 
 #include "engine/gfx/descriptors.h"
+#include "fxcontracts/ecs/frame_entries.h"
 
 namespace sample {
 
@@ -16,6 +17,8 @@ SceneTargets addScenePass(render::FrameGraph& graph, const TerrainRenderer* terr
     render::TextureHandle sunlight;
   };
   const bool featureSky = !skyDrawers.empty();
+  const auto* haze = graph.blackboard().find<fxcontracts::ecs::AerialPerspective>();
+  const auto* sky = graph.blackboard().find<fxcontracts::ecs::SkyRadiance>();
   const Data& data = graph.addPass<Data>(
       featureSky ? "scene" : "terrain", render::PassType::Graphics,
       [&](render::PassBuilder& builder, Data& d) {
@@ -29,23 +32,32 @@ SceneTargets addScenePass(render::FrameGraph& graph, const TerrainRenderer* terr
         desc.format = depthFormat;
         d.targets.depth = builder.depthAttachment(builder.createTexture("scene depth", desc),
                                                   VK_ATTACHMENT_LOAD_OP_CLEAR);
-        if (terrain != nullptr && terrain->hazedByAerialPerspective()) {
-          d.haze = builder.read(scene.aerialPerspective, render::Access::SampledReadGeneral);
+        if (terrain != nullptr && terrain->hazedByAerialPerspective() && haze != nullptr) {
+          d.haze = builder.read(haze->volume, render::Access::SampledReadGeneral);
         }
         if (terrain != nullptr && terrain->shadowedByClouds()) {
           d.sunlight = builder.read(sunlight, render::Access::SampledReadGeneral);
         }
         // The sky reads what the feature recorded before the scene (ordered after it; the
         // feature synchronises its own images).
-        if (featureSky && scene.skyRadiance.valid()) {
-          builder.read(scene.skyRadiance, render::Access::SampledReadGeneral);
+        if (featureSky && sky != nullptr) {
+          builder.read(sky->texture, render::Access::SampledReadGeneral);
         }
       },
       [terrain, frame, skyDrawers](const Data& d, render::PassContext& context) {
         if (terrain != nullptr) {
+          gfx::ConstantRing::Slice constants = frame->slice;
+          if (d.haze.valid()) {
+            // The haze's reach as its pass (ordered before this one) wrote it this frame.
+            const auto& air = context.blackboard().get<fxcontracts::ecs::AerialPerspective>();
+            shaders::SceneFrame hazed = frame->data;
+            hazed.fog.y = air.rangeMetres;
+            hazed.fog.z = float(air.slices);
+            constants = context.constants().push(hazed);
+          }
           gfx::DescriptorWriter writer;
-          writer.uniformBuffer(TerrainRenderer::kFrameBinding, frame->slice.buffer,
-                               frame->slice.offset, frame->slice.size);
+          writer.uniformBuffer(TerrainRenderer::kFrameBinding, constants.buffer, constants.offset,
+                               constants.size);
           if (d.haze.valid()) {
             writer.combinedImageSampler(TerrainRenderer::kHazeBinding, context.view(d.haze),
                                         terrain->linearSampler(), VK_IMAGE_LAYOUT_GENERAL);

@@ -19,8 +19,9 @@ struct SceneTargets {
 
 // `scene.hdr`: the colour to draw over (the gradient sky), or invalid for a new one (cleared;
 // every pixel is then the terrain's or a feature's sky). `terrain` may be null when a feature
-// draws the sky. The terrain is hazed with `scene.aerialPerspective` when it was made for it,
-// and lit through `sunlight` (TerrainSunlight) when it was made shadowed by the clouds.
+// draws the sky. The terrain is hazed with the blackboard's fxcontracts::ecs::AerialPerspective
+// when it was made for it (the haze's range and slices read when the pass executes), and lit
+// through `sunlight` (TerrainSunlight) when it was made shadowed by the clouds.
 SceneTargets addScenePass(engine::render::FrameGraph& graph, const TerrainRenderer* terrain,
                           const engine::render::SceneTextures& scene,
                           engine::render::TextureHandle sunlight,

@@ -6,6 +6,7 @@
 #include "engine/core/error.h"
 #include "engine/gfx/descriptors.h"
 #include "engine/gfx/upload.h"
+#include "fxcontracts/ecs/frame_entries.h"
 #include "sample_shaders/terrain_sunlight.comp.spv.h"
 #include "terrain_sunlight_map.h"
 
@@ -97,7 +98,6 @@ TerrainSunlightSchedule::Rows TerrainSunlightSchedule::next(bool shadowMapRemade
 }
 
 render::TextureHandle TerrainSunlight::addPass(render::FrameGraph& graph,
-                                               const render::SceneTextures& scene,
                                                const glm::dvec3* cameraPosition) {
   render::ImportedTexture imported;
   imported.image = image_.vk();
@@ -108,7 +108,8 @@ render::TextureHandle TerrainSunlight::addPass(render::FrameGraph& graph,
   imported.final = kReadByTheScene;
   const render::TextureHandle map = graph.importTexture("terrain sunlight", imported);
   // No shadow map this frame: the map keeps what it holds.
-  if (!scene.cloudShadow.valid() || scene.cloudShadowParameters == nullptr) return map;
+  const auto* cloudShadow = graph.blackboard().find<fxcontracts::ecs::CloudShadow>();
+  if (cloudShadow == nullptr) return map;
   struct Data {
     render::TextureHandle cloudShadow;
     render::TextureHandle map;
@@ -116,15 +117,14 @@ render::TextureHandle TerrainSunlight::addPass(render::FrameGraph& graph,
   const Data& data = graph.addPass<Data>(
       "terrain sunlight", render::PassType::Compute,
       [&](render::PassBuilder& builder, Data& d) {
-        d.cloudShadow = builder.read(scene.cloudShadow, render::Access::SampledReadGeneral);
+        d.cloudShadow = builder.read(cloudShadow->map, render::Access::SampledReadGeneral);
         d.map = builder.write(map, render::Access::StorageWrite);
       },
-      [this, cameraPosition, parameters = scene.cloudShadowParameters,
-       remadeWhole = scene.cloudShadowRemadeWhole](const Data& d, render::PassContext& context) {
-        const TerrainSunlightSchedule::Rows rows =
-            schedule_.next(remadeWhole != nullptr && *remadeWhole);
+      [this, cameraPosition](const Data& d, render::PassContext& context) {
         // The map's pass has executed: this frame's parameters are filled.
-        const gfx::ConstantRing::Slice block = context.constants().push(*parameters);
+        const auto& shadow = context.blackboard().get<fxcontracts::ecs::CloudShadow>();
+        const TerrainSunlightSchedule::Rows rows = schedule_.next(shadow.remadeWhole);
+        const gfx::ConstantRing::Slice block = context.constants().push(shadow.parameters);
         gfx::DescriptorWriter writer;
         writer.combinedImageSampler(kHeightfieldBinding, heightfield_.view, sampler_.vk());
         writer.combinedImageSampler(kCloudShadowBinding, context.view(d.cloudShadow), sampler_.vk(),

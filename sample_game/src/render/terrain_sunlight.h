@@ -23,7 +23,6 @@
 #include "engine/gfx/pipelines.h"
 #include "engine/gfx/resources.h"
 #include "engine/render/frame_graph.h"
-#include "engine/render/render_feature.h"
 #include "engine/render/scene_components.h"
 
 namespace sample {
@@ -64,12 +63,11 @@ class TerrainSunlight {
   // the map ([0, 1] per axis) and the map's reciprocal size (1/m).
   glm::vec4 placementFor(const glm::dvec3& cameraPosition) const;
 
-  // Imports the map and adds the pass that refreshes the rows due (reading `scene.cloudShadow`
-  // and its parameters; `cameraPosition` is read when the pass executes); returns the map for
-  // the scene to read. Without a cloud shadow map in the frame there is no pass: the map keeps
-  // what it holds.
+  // Imports the map and adds the pass that refreshes the rows due (reading the blackboard's
+  // fxcontracts::ecs::CloudShadow, its parameters when the pass executes, as `cameraPosition`);
+  // returns the map for the scene to read. Without a cloud shadow map in the frame there is no
+  // pass: the map keeps what it holds.
   engine::render::TextureHandle addPass(engine::render::FrameGraph& graph,
-                                        const engine::render::SceneTextures& scene,
                                         const glm::dvec3* cameraPosition);
 
  private:

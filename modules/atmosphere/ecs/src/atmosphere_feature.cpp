@@ -118,11 +118,27 @@ void AtmosphereFeature::reportError(const atmosphere::Error& error) {
   errorLogged_ = true;
 }
 
-void AtmosphereFeature::dispatch(VkCommandBuffer cmd, VkExtent2D extent, std::uint64_t frameIndex,
-                                 VkImageView shadowView,
-                                 const CloudShadowParameterBlock* shadowParameters) {
+bool AtmosphereFeature::publishesEntry(std::type_index entry) const {
+  return entry == typeid(fxcontracts::ecs::SkyRadiance) ||
+         entry == typeid(fxcontracts::ecs::AerialPerspective);
+}
+
+bool AtmosphereFeature::readsEntry(std::type_index entry) const {
+  return entry == typeid(fxcontracts::ecs::CloudShadow);
+}
+
+void AtmosphereFeature::describeHaze(fxcontracts::ecs::AerialPerspective& haze) const {
+  haze.slices = imported_.aerialPerspective.extent.depth;
+  haze.rangeMetres = imported_.aerialPerspectiveRangeMetres;
+  haze.rayleighScatteringPerMetre = parameters_.rayleighScatteringPerMetre;
+  haze.mieScatteringPerMetre = parameters_.mieScatteringPerMetre;
+  haze.miePhaseG = parameters_.miePhaseG;
+}
+
+void AtmosphereFeature::dispatch(
+    VkCommandBuffer cmd, VkExtent2D extent, std::uint64_t frameIndex, VkImageView shadowView,
+    const fxcontracts::ecs::CloudShadowParameterBlock* shadowParameters) {
   atmosphere::FrameInputs inputs = atmosphereFrameInputs(world_, cmd, extent, frameIndex);
-  // The map's parameters are filled when its pass executes, before this one.
   if (shadowView != VK_NULL_HANDLE && shadowParameters != nullptr) {
     inputs.cloudShadow.view = shadowView;
     inputs.cloudShadow.layout = VK_IMAGE_LAYOUT_GENERAL;
@@ -166,6 +182,7 @@ SceneTextures AtmosphereFeature::addPassesBeforeScene(FrameGraph& graph,
   const TextureHandle froxels =
       import("aerial perspective", imported_.aerialPerspective, VK_IMAGE_TYPE_3D);
 
+  const auto* cloudShadow = graph.blackboard().find<fxcontracts::ecs::CloudShadow>();
   struct DispatchData {
     TextureHandle environment, froxels, cloudShadow;
   };
@@ -174,29 +191,32 @@ SceneTextures AtmosphereFeature::addPassesBeforeScene(FrameGraph& graph,
       [&](PassBuilder& builder, DispatchData& d) {
         d.environment = builder.write(environment, Access::StorageWrite);
         d.froxels = builder.write(froxels, Access::StorageWrite);
-        if (scene.cloudShadow.valid()) {
-          d.cloudShadow = builder.read(scene.cloudShadow, Access::SampledReadGeneral);
+        if (cloudShadow != nullptr) {
+          d.cloudShadow = builder.read(cloudShadow->map, Access::SampledReadGeneral);
         }
         builder.sideEffect();  // the sky's measurement, read back by the host
       },
-      [this, extent = scene.extent, parameters = scene.cloudShadowParameters](
-          const DispatchData& d, PassContext& context) {
-        const VkImageView shadow =
-            d.cloudShadow.valid() ? context.view(d.cloudShadow) : VK_NULL_HANDLE;
-        dispatch(context.cmd(), extent, context.frameIndex(), shadow, parameters);
+      [this, extent = scene.extent](const DispatchData& d, PassContext& context) {
+        // The map's parameters as its pass (ordered before this one) wrote them this frame.
+        VkImageView shadowView = VK_NULL_HANDLE;
+        const fxcontracts::ecs::CloudShadowParameterBlock* shadowParameters = nullptr;
+        if (d.cloudShadow.valid()) {
+          shadowView = context.view(d.cloudShadow);
+          shadowParameters = &context.blackboard().get<fxcontracts::ecs::CloudShadow>().parameters;
+        }
+        dispatch(context.cmd(), extent, context.frameIndex(), shadowView, shadowParameters);
+        // This frame's parameters (prepare() read them from the world) for the haze's readers.
+        describeHaze(context.blackboard().get<fxcontracts::ecs::AerialPerspective>());
       });
 
   // The sky itself is drawn in the renderer's scene pass, after its geometry, where only the
   // pixels the geometry left empty are shaded (drawSkyInScenePass).
-  SceneTextures out = scene;
-  out.skyRadiance = made.environment;
-  out.aerialPerspective = made.froxels;
-  out.aerialPerspectiveSlices = imported_.aerialPerspective.extent.depth;
-  out.aerialPerspectiveRangeMetres = imported_.aerialPerspectiveRangeMetres;
-  out.hazeRayleighPerMetre = parameters_.rayleighScatteringPerMetre;
-  out.hazeMiePerMetre = parameters_.mieScatteringPerMetre;
-  out.hazeMiePhaseG = parameters_.miePhaseG;
-  return out;
+  graph.blackboard().put(fxcontracts::ecs::SkyRadiance{made.environment});
+  fxcontracts::ecs::AerialPerspective haze;
+  haze.volume = made.froxels;
+  describeHaze(haze);
+  graph.blackboard().put(haze);
+  return scene;
 }
 
 SceneTextures AtmosphereFeature::addPasses(FrameGraph& /*graph*/, const SceneTextures& scene) {

@@ -7,14 +7,17 @@
 //                     feature casts one (the froxels' light shafts);
 //   "atmosphere sky"  records Context::render without depth into a new scene colour: the sky
 //                     and the sun's disc in every pixel, for the renderer to draw over.
-// The sky map and the froxels are imported into the graph and handed on (SceneTextures): the
-// renderer hazes its geometry with the froxels, the clouds read both.
+// The sky map and the froxels are imported into the graph and handed on as the blackboard's
+// fxcontracts::ecs::SkyRadiance and AerialPerspective (whose per-frame values the "atmosphere"
+// pass writes when it executes): the renderer hazes its geometry with the froxels, the clouds
+// read both.
 #include <memory>
 #include <optional>
 
 #include "atmosphere/atmosphere.h"
 #include "engine/ecs/world.h"
 #include "engine/render/render_feature.h"
+#include "fxcontracts/ecs/frame_entries.h"
 
 namespace atmosphere::ecs {
 
@@ -27,8 +30,6 @@ class AtmosphereFeature final : public engine::render::RenderFeature {
   const char* name() const override { return "atmosphere"; }
   std::uint64_t gpuMemoryBytes() const override { return context_->memoryUsage().totalBytes(); }
   bool drawsSky() const override { return true; }
-  // Its aerial perspective reads the clouds' shadow map: light shafts in the haze.
-  bool receivesCloudShadow() const override { return true; }
   void drawSkyInScenePass(VkCommandBuffer cmd) override;
   bool prepare(VkExtent2D extent, std::uint64_t frameIndex) override;
   engine::render::SceneTextures addPassesBeforeScene(
@@ -36,6 +37,11 @@ class AtmosphereFeature final : public engine::render::RenderFeature {
   engine::render::SceneTextures addPasses(engine::render::FrameGraph& graph,
                                           const engine::render::SceneTextures& scene) override;
   void finish(std::uint64_t lastFrameIndex) override;
+
+ protected:
+  bool publishesEntry(std::type_index entry) const override;
+  // Its aerial perspective reads the clouds' shadow map: light shafts in the haze.
+  bool readsEntry(std::type_index entry) const override;
 
  private:
   void publishMeasurements(std::uint64_t completedFrame);
@@ -45,7 +51,9 @@ class AtmosphereFeature final : public engine::render::RenderFeature {
   // `shadowView` and `shadowParameters`: the frame's cloud shadow map, if any.
   void dispatch(VkCommandBuffer cmd, VkExtent2D extent, std::uint64_t frameIndex,
                 VkImageView shadowView,
-                const engine::render::CloudShadowParameterBlock* shadowParameters);
+                const fxcontracts::ecs::CloudShadowParameterBlock* shadowParameters);
+  // This frame's values of the haze the blackboard hands on.
+  void describeHaze(fxcontracts::ecs::AerialPerspective& haze) const;
   void reportError(const atmosphere::Error& error);
 
   engine::ecs::World& world_;

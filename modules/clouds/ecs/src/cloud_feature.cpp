@@ -174,20 +174,29 @@ std::vector<std::string> CloudFeature::effects() const {
   return names;
 }
 
-void CloudFeature::dispatchShadowMap(const HostFrame& host) {
+bool CloudFeature::publishesEntry(std::type_index entry) const {
+  return castsShadow_ && entry == typeid(fxcontracts::ecs::CloudShadow);
+}
+
+bool CloudFeature::readsEntry(std::type_index entry) const {
+  return entry == typeid(fxcontracts::ecs::SkyRadiance) ||
+         entry == typeid(fxcontracts::ecs::AerialPerspective);
+}
+
+void CloudFeature::dispatchShadowMap(const HostFrame& host, fxcontracts::ecs::CloudShadow& shadow) {
   HostFrame frame = host;
   frame.weatherView = weatherMap_ ? weatherMap_->view() : VK_NULL_HANDLE;
   clouds::Error error;
   if (context_->dispatchShadowMap(cloudFrameInputs(world_, frame), settings_, &error)) {
     const clouds::ShadowMapParameters& p = context_->outputs().shadowParameters;
-    static_assert(sizeof(p) == sizeof(shadowParameters_));
-    std::copy(std::begin(p.cascade), std::end(p.cascade), shadowParameters_.begin());
-    shadowParameters_.back() = p.info;
+    static_assert(sizeof(p) == sizeof(shadow.parameters));
+    std::copy(std::begin(p.cascade), std::end(p.cascade), shadow.parameters.begin());
+    shadow.parameters.back() = p.info;
     const std::uint32_t every = (1u << settings_.shadowCascades) - 1u;
-    shadowRemadeWhole_ = context_->lastFrameReport().shadowCascadesMade == every;
+    shadow.remadeWhole = context_->lastFrameReport().shadowCascadesMade == every;
   } else {
-    shadowParameters_ = {};  // no shadow rather than a stale one
-    shadowRemadeWhole_ = true;
+    shadow.parameters = {};  // no shadow rather than a stale one
+    shadow.remadeWhole = true;
     reportError(error);
   }
 }
@@ -201,7 +210,8 @@ void CloudFeature::composite(VkCommandBuffer cmd, VkImageView color, VkExtent2D 
 SceneTextures CloudFeature::addShadowPasses(FrameGraph& graph, const SceneTextures& scene) {
   imported_ = usableOutputs();
   // No receiver in this frame, no map.
-  if (!castsShadow_ || !scene.cloudShadowReceived || imported_.shadowMap.image == VK_NULL_HANDLE) {
+  if (!castsShadow_ || !graph.blackboard().has<fxcontracts::ecs::CloudShadowWanted>() ||
+      imported_.shadowMap.image == VK_NULL_HANDLE) {
     return scene;
   }
   const VkExtent3D extent{settings_.shadowMapResolution * settings_.shadowCascades,
@@ -220,13 +230,10 @@ SceneTextures CloudFeature::addShadowPasses(FrameGraph& graph, const SceneTextur
         host.commandBuffer = context.cmd();
         host.extent = sceneExtent;
         host.frameIndex = context.frameIndex();
-        dispatchShadowMap(host);
+        dispatchShadowMap(host, context.blackboard().get<fxcontracts::ecs::CloudShadow>());
       });
-  SceneTextures out = scene;
-  out.cloudShadow = shadow.map;
-  out.cloudShadowParameters = &shadowParameters_;
-  out.cloudShadowRemadeWhole = &shadowRemadeWhole_;
-  return out;
+  graph.blackboard().put(fxcontracts::ecs::CloudShadow{shadow.map});
+  return scene;
 }
 
 SceneTextures CloudFeature::addPasses(FrameGraph& graph, const SceneTextures& scene) {
@@ -240,6 +247,10 @@ SceneTextures CloudFeature::addPasses(FrameGraph& graph, const SceneTextures& sc
                                   ? importOutput(graph, "cloud depth", imported_.depth, sceneExtent)
                                   : TextureHandle{};
 
+  // What other features made for this frame: the sky's light, the haze, the shadow map.
+  const auto* sky = graph.blackboard().find<fxcontracts::ecs::SkyRadiance>();
+  const auto* haze = graph.blackboard().find<fxcontracts::ecs::AerialPerspective>();
+  const auto* shadow = graph.blackboard().find<fxcontracts::ecs::CloudShadow>();
   struct MarchData {
     TextureHandle sceneDepth, skyRadiance, aerialPerspective, radiance, depth;
   };
@@ -247,19 +258,17 @@ SceneTextures CloudFeature::addPasses(FrameGraph& graph, const SceneTextures& sc
       "clouds", PassType::Compute,
       [&](PassBuilder& builder, MarchData& d) {
         if (scene.depth.valid()) d.sceneDepth = builder.read(scene.depth, Access::SampledRead);
-        if (scene.skyRadiance.valid()) {
-          d.skyRadiance = builder.read(scene.skyRadiance, Access::SampledReadGeneral);
-        }
-        if (scene.aerialPerspective.valid()) {
-          d.aerialPerspective = builder.read(scene.aerialPerspective, Access::SampledReadGeneral);
+        if (sky != nullptr) d.skyRadiance = builder.read(sky->texture, Access::SampledReadGeneral);
+        if (haze != nullptr) {
+          d.aerialPerspective = builder.read(haze->volume, Access::SampledReadGeneral);
         }
         // The march reads the map's terrain channel (mountains shade the clouds), the ambient
         // pass its mean (the clouds' shade on the ground that lights their bases).
-        if (scene.cloudShadow.valid()) builder.read(scene.cloudShadow, Access::SampledReadGeneral);
+        if (shadow != nullptr) builder.read(shadow->map, Access::SampledReadGeneral);
         d.radiance = builder.write(radiance, Access::StorageWrite);
         if (depth.valid()) d.depth = builder.write(depth, Access::StorageWrite);
       },
-      [this, scene](const MarchData& d, PassContext& context) {
+      [this](const MarchData& d, PassContext& context) {
         const auto viewOf = [&](TextureHandle h) {
           return h.valid() ? context.view(h) : VK_NULL_HANDLE;
         };
@@ -270,11 +279,15 @@ SceneTextures CloudFeature::addPasses(FrameGraph& graph, const SceneTextures& sc
         host.depthView = viewOf(d.sceneDepth);
         host.skyRadianceView = viewOf(d.skyRadiance);
         host.aerialPerspectiveView = viewOf(d.aerialPerspective);
-        host.aerialPerspectiveSlices = scene.aerialPerspectiveSlices;
-        host.aerialPerspectiveRangeMetres = scene.aerialPerspectiveRangeMetres;
-        host.hazeRayleighPerMetre = scene.hazeRayleighPerMetre;
-        host.hazeMiePerMetre = scene.hazeMiePerMetre;
-        host.hazeMiePhaseG = scene.hazeMiePhaseG;
+        // The haze's values as its pass (ordered before this one) wrote them this frame.
+        using fxcontracts::ecs::AerialPerspective;
+        if (const auto* air = context.blackboard().find<AerialPerspective>()) {
+          host.aerialPerspectiveSlices = air->slices;
+          host.aerialPerspectiveRangeMetres = air->rangeMetres;
+          host.hazeRayleighPerMetre = air->rayleighScatteringPerMetre;
+          host.hazeMiePerMetre = air->mieScatteringPerMetre;
+          host.hazeMiePhaseG = air->miePhaseG;
+        }
         host.frameIndex = context.frameIndex();
         dispatch(host);
       });
@@ -289,9 +302,7 @@ SceneTextures CloudFeature::addPasses(FrameGraph& graph, const SceneTextures& sc
         // God rays read the scene's depth and haze (vkfx/god_rays.h).
         if (settings_.godRaySamples > 0) {
           if (scene.depth.valid()) builder.read(scene.depth, Access::SampledRead);
-          if (scene.aerialPerspective.valid()) {
-            builder.read(scene.aerialPerspective, Access::SampledReadGeneral);
-          }
+          if (haze != nullptr) builder.read(haze->volume, Access::SampledReadGeneral);
         }
         d.hdr = builder.write(scene.hdr, Access::StorageWrite);
       },

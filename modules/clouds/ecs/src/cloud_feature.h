@@ -5,12 +5,13 @@
 // shadows,
 //   "cloud shadows"     records Context::dispatchShadowMap (the cascades due this frame) and
 //                       hands the map and its parameters to the passes after it (the haze,
-//                       the terrain);
+//                       the terrain) as the blackboard's fxcontracts::ecs::CloudShadow, when
+//                       the frame has a receiver (fxcontracts::ecs::CloudShadowWanted);
 // then after the opaque scene:
-//   "clouds"            reads the scene depth (and the sky's radiance and the aerial
+//   "clouds"            reads the scene depth (and the blackboard's sky radiance and aerial
 //                       perspective when a feature that draws the sky provides them) and
-//                       records Context::dispatch with the inputs built from the world at that
-//                       moment (cloud_frame.h);
+//                       records Context::dispatch with the inputs built from the world and the
+//                       blackboard at that moment (cloud_frame.h);
 //   "clouds composite"  applies the result over the scene colour (colour * T + radiance).
 // The module's outputs are imported into the graph so later passes can read them.
 #include <memory>
@@ -20,6 +21,7 @@
 #include "engine/ecs/world.h"
 #include "engine/gfx/resources.h"
 #include "engine/render/render_feature.h"
+#include "fxcontracts/ecs/frame_entries.h"
 
 namespace clouds::ecs {
 
@@ -37,7 +39,6 @@ class CloudFeature final : public engine::render::RenderFeature {
   const char* name() const override { return "clouds"; }
   std::vector<std::string> effects() const override;
   std::uint64_t gpuMemoryBytes() const override { return context_->memoryUsage().totalBytes(); }
-  bool castsCloudShadow() const override { return castsShadow_; }
   bool prepare(VkExtent2D extent, std::uint64_t frameIndex) override;
   engine::render::SceneTextures addShadowPasses(
       engine::render::FrameGraph& graph, const engine::render::SceneTextures& scene) override;
@@ -45,9 +46,14 @@ class CloudFeature final : public engine::render::RenderFeature {
                                           const engine::render::SceneTextures& scene) override;
   void finish(std::uint64_t lastFrameIndex) override;
 
+ protected:
+  bool publishesEntry(std::type_index entry) const override;
+  bool readsEntry(std::type_index entry) const override;
+
  private:
   void dispatch(const HostFrame& host);
-  void dispatchShadowMap(const HostFrame& host);
+  // Fills `shadow`'s per-frame values.
+  void dispatchShadowMap(const HostFrame& host, fxcontracts::ecs::CloudShadow& shadow);
   void composite(VkCommandBuffer cmd, VkImageView color, VkExtent2D extent);
   void reportError(const clouds::Error& error);
 
@@ -65,10 +71,7 @@ class CloudFeature final : public engine::render::RenderFeature {
   clouds::Outputs usableOutputs() const;
   bool prepared_ = false;     // this frame's prepare() succeeded
   bool castsShadow_ = false;  // the layer's settings have a shadow map
-  // This frame's shadow-map parameters, filled when "cloud shadows" executes.
-  engine::render::CloudShadowParameterBlock shadowParameters_{};
-  bool shadowRemadeWhole_ = false;  // every cascade was made this frame
-  bool dispatched_ = false;         // this frame's dispatch succeeded
+  bool dispatched_ = false;   // this frame's dispatch succeeded
   bool errorLogged_ = false;
 };
 

@@ -1,6 +1,6 @@
 #pragma once
 // Image error metrics, the one implementation every comparison uses: the golden frames, the
-// clouds' GPU tests and their accuracy-versus-cost benchmark. Images are flat float arrays
+// effects' GPU tests and their accuracy-versus-cost benchmarks. Images are flat float arrays
 // of pixels with `stride` values each, of which the first `channels` are compared.
 #include <cstddef>
 #include <limits>

@@ -1,8 +1,8 @@
 #pragma once
 // Strict reading of JSON data files (scenes, scripts, asset parameters). Every accessor
 // checks presence, type and range and throws engine::Error as
-//   "<file>: <json path>: <reason>"     e.g. "scenes/noon.json: clouds.coverage: must be in [0, 1],
-//   got 1.5"
+//   "<file>: <json path>: <reason>"     e.g. "scenes/noon.json: camera.fov: must be in [1, 179],
+//   got 200"
 // and finish() rejects keys nobody read (typos do not pass silently). Nothing is applied
 // half-way: callers read everything into plain structs first.
 #include <nlohmann/json.hpp>

@@ -10,7 +10,7 @@ namespace engine::ecs {
 class World;
 class Scheduler;
 
-/// A feature (clouds, camera control, debug overlay...) that installs itself: it emplaces the
+/// A feature (an effect, camera control, debug overlay...) that installs itself: it emplaces the
 /// context singletons and event queues it owns and adds its systems to the phases they belong
 /// in. Modules talk to each other only through components, singletons and events.
 ///
@@ -26,7 +26,7 @@ class Module {
  public:
   virtual ~Module();
 
-  /// Short unique name for logs and App::hasModule(), e.g. "clouds".
+  /// Short unique name for logs and App::hasModule(), e.g. "flight".
   virtual std::string_view name() const = 0;
 
   /// Whether the module can run with what `world` provides. When it returns false it should

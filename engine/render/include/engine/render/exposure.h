@@ -9,7 +9,7 @@
 // illuminance the sun (through the air) and the sky put on a horizontal surface and sets
 // EV100 = log2(E * 100 / C) with the meter calibration C = 250 lx s (ISO 2720), plus the
 // compensation. Noon sunlight (about 100 klx) meters EV100 15, the photographers' "sunny 16";
-// an overcast scene meters what its sky and sun give, with clouds in front of the sun unseen.
+// an overcast scene meters what its sky and sun give; what hides the sun locally is unseen.
 // Below daylight the meter is trusted less and less (dimLightCompensationEv): an incident
 // reading of a twilight sky alone would expose it to near white, where the eye (and a
 // photographer) sees dusk as dusk. The result adapts towards the metered value exponentially,

@@ -22,6 +22,7 @@
 #include "engine/gfx/device.h"
 #include "engine/gfx/frame_ring.h"
 #include "engine/gfx/resources.h"
+#include "engine/render/blackboard.h"
 #include "engine/render/resource_access.h"
 
 namespace engine::render {
@@ -87,6 +88,8 @@ class PassContext {
   gfx::DescriptorArena& descriptors() const { return *frame_->descriptors; }
   gfx::ConstantRing& constants() const { return *frame_->constants; }
   std::uint64_t frameIndex() const { return frame_->index; }
+  // The graph's per-frame values: a publishing pass writes its entry here, a reader reads it.
+  Blackboard& blackboard() const;
 
   VkImage image(TextureHandle h) const;
   VkImageView view(TextureHandle h) const;
@@ -99,7 +102,7 @@ class PassContext {
 
  private:
   friend class FrameGraph;
-  const FrameGraph* graph_ = nullptr;
+  FrameGraph* graph_ = nullptr;
   gfx::Device* device_ = nullptr;
   const gfx::FrameRing::Frame* frame_ = nullptr;
 };
@@ -153,6 +156,11 @@ class FrameGraph {
 
   void compile();
   void execute(const gfx::FrameRing::Frame& frame);
+
+  // Per-frame values passes publish for each other (blackboard.h): put while building,
+  // written and read by passes when they execute (PassContext::blackboard()).
+  Blackboard& blackboard() { return blackboard_; }
+  const Blackboard& blackboard() const { return blackboard_; }
 
   // Exact per-pass GPU times (default on): each pass's end timestamp waits behind a full
   // execution barrier, so a pass's time is its own work. Without it, work a device defers
@@ -259,6 +267,7 @@ class FrameGraph {
   VkBuffer vkBuffer(std::uint16_t resource) const;
 
   gfx::Device* device_;
+  Blackboard blackboard_;
   std::vector<Resource> resources_;
   std::vector<Pass> passes_;
   std::vector<std::uint16_t> order_;

@@ -1,7 +1,7 @@
 #pragma once
 // Components every renderer of the engine understands, independent of any game: the viewpoint,
-// the sun and what the air lets through of it, the sky's light, fog. Effect adapters (the
-// clouds, the atmosphere) read and provide these; games write them.
+// the sun and what the air lets through of it, the sky's light, fog. Effect adapters read and
+// provide these; games write them.
 #include <vulkan/vulkan.h>
 
 #include <functional>
@@ -47,7 +47,7 @@ struct Sun {
 };
 
 // Context singleton: how much of the sun's light the scene's air lets through to an altitude.
-// The atmosphere module provides it from its model when the scene has one; a game without one
+// An effect that models the air provides it when the scene has one; a game without one
 // provides its own (the sample's analytic air mass). Absent: nothing is in the way.
 struct SunTransmittance {
   // RGB transmittance in [0, 1] from the top of the atmosphere to `altitudeMetres` at the
@@ -61,8 +61,8 @@ glm::vec3 sunIlluminanceAt(const Sun& sun, const SunTransmittance* transmittance
                            double altitudeMetres);
 
 // Context singleton: sky radiance (kcd/m^2, RGB) for ambient light: the sky straight up, at the
-// horizon, and the light coming up from below (ground and air). The atmosphere module measures
-// it from its sky; a game without one sets it itself.
+// horizon, and the light coming up from below (ground and air). An effect that draws the sky
+// measures it from its sky; a game without one sets it itself.
 struct SkyLight {
   glm::vec3 zenith{1.5f, 2.8f, 6.5f};
   glm::vec3 horizon{5.5f, 6.2f, 7.5f};
@@ -70,14 +70,14 @@ struct SkyLight {
 };
 
 // Context singleton: the Lambertian albedo of the scene's ground at large (RGB, [0, 1]), for
-// light bounced off it (cloud bases lit from below). The atmosphere module publishes the one
-// its sky is made with; absent, effects do without the ground's light.
+// light bounced off it (e.g. onto what floats above it). An effect that models the air
+// publishes the one its sky is made with; absent, effects do without the ground's light.
 struct GroundAlbedo {
   glm::vec3 rgb{0.3f};
 };
 
 // Context singleton: the scene's ground as a heightfield on the GPU, for effects that need its
-// shape rather than its triangles (the clouds' terrain shadow). Published by whoever owns the
+// shape rather than its triangles (e.g. to shadow with it). Published by whoever owns the
 // terrain, for as long as the image lives; absent when nothing should be shadowed by the
 // terrain. The image is static, in SHADER_READ_ONLY_OPTIMAL, one float channel that filters
 // linearly: altitude (m), texel (0, 0) at `originMetres`, u along +x and v along +z.
@@ -90,7 +90,7 @@ struct TerrainHeightfield {
 };
 
 // Context singleton: exponential distance fog towards the sky, the cheap alternative for scenes
-// without an atmosphere module (which hazes with its aerial perspective instead).
+// without an effect that models the air's scattering.
 struct Fog {
   float densityPerMetre = 0.0f;  // 0: no fog
 };

@@ -21,7 +21,7 @@ struct HostFrame {
   VkImageView depthView = VK_NULL_HANDLE;  // none when the scene has no geometry
   VkImageLayout depthLayout = VK_IMAGE_LAYOUT_DEPTH_READ_ONLY_OPTIMAL;
   VkImageView weatherView = VK_NULL_HANDLE;  // the layer's painted weather map, if it has one
-  // What a feature that draws the sky provides (engine::render::SceneTextures), if one does:
+  // What a feature that draws the sky provides (contracts/ecs/frame_entries.h), if one does:
   // the sky's radiance for the clouds' ambient, and the haze for their radiance. Both GENERAL.
   VkImageView skyRadianceView = VK_NULL_HANDLE;
   VkImageView aerialPerspectiveView = VK_NULL_HANDLE;
