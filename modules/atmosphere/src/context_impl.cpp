@@ -3,6 +3,8 @@
 #include "context_impl.h"
 
 #include <algorithm>
+#include <map>
+#include <vector>
 
 #include "equality.h"
 
@@ -23,18 +25,29 @@ const detail::DeviceContext& checkedDevice(const detail::DeviceContext& device) 
   return device;
 }
 
-detail::UniqueDescriptorPool makePool(const detail::DeviceContext& device, std::uint32_t frames) {
-  // Per slot: six sets for the programs and one for the sky's draw, at most 6 bindings each.
-  const VkDescriptorPoolSize sizes[] = {
-      {VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, 8 * frames},
-      {VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 16 * frames},
-      {VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 8 * frames},
-      {VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 2 * frames},
-  };
+// Exactly the sets the context allocates: per frame slot one for each program and, when the host
+// asked for the sky's draw, one for it; the descriptors are the programs' bindings.
+detail::UniqueDescriptorPool makePool(const detail::DeviceContext& device,
+                                      const detail::Programs& programs, bool skyDraw,
+                                      std::uint32_t frames) {
+  std::map<VkDescriptorType, std::uint32_t> descriptors;
+  std::uint32_t sets = 0;
+  for (std::size_t p = 0; p < static_cast<std::size_t>(detail::Program::Count); ++p) {
+    ++sets;
+    for (const vkfx::Binding& binding : programs[detail::Program(p)].bindings()) {
+      ++descriptors[binding.type];
+    }
+  }
+  if (skyDraw) {
+    ++sets;
+    for (const auto& binding : detail::SkyDraw::kBindings) ++descriptors[binding.type];
+  }
+  std::vector<VkDescriptorPoolSize> sizes;
+  for (const auto& [type, count] : descriptors) sizes.push_back({type, count * frames});
   VkDescriptorPoolCreateInfo info{VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO};
-  info.maxSets = 8 * frames;
-  info.poolSizeCount = static_cast<std::uint32_t>(std::size(sizes));
-  info.pPoolSizes = sizes;
+  info.maxSets = sets * frames;
+  info.poolSizeCount = static_cast<std::uint32_t>(sizes.size());
+  info.pPoolSizes = sizes.data();
   return device.createDescriptorPool(info, "descriptor pool");
 }
 
@@ -50,7 +63,8 @@ Context::Impl::Impl(const CreateInfo& info, const detail::VulkanFunctions& funct
       programs_(checkedDevice(device_), info.reversedZ),
       linearSampler_(device_.createSampler(VK_FILTER_LINEAR, kClamp, "linear sampler")),
       nearestSampler_(device_.createSampler(VK_FILTER_NEAREST, kClamp, "nearest sampler")),
-      pool_(makePool(device_, info.maxFramesInFlight)) {
+      pool_(makePool(device_, programs_, info.skyPassColorFormat != VK_FORMAT_UNDEFINED,
+                     info.maxFramesInFlight)) {
   if (info.skyPassColorFormat != VK_FORMAT_UNDEFINED) {
     skyDraw_ = std::make_unique<detail::SkyDraw>(device_, info.skyPassColorFormat, info.depthFormat,
                                                  info.reversedZ);

@@ -1,5 +1,6 @@
 #include "sky_draw.h"
 
+#include <iterator>
 #include <span>
 
 #include "atmosphere_shaders/sky_draw.frag.spv.h"
@@ -21,14 +22,12 @@ vkfx::UniqueShaderModule shaderModule(const DeviceContext& device,
 
 SkyDraw::SkyDraw(const DeviceContext& device, VkFormat colorFormat, VkFormat depthFormat,
                  bool reversedZ) {
-  const VkDescriptorSetLayoutBinding bindings[] = {
-      {shader::kBindingUniforms, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 1,
-       VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT, nullptr},
-      {shader::kBindingSkyView, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1,
-       VK_SHADER_STAGE_FRAGMENT_BIT, nullptr},
-  };
+  VkDescriptorSetLayoutBinding bindings[std::size(kBindings)] = {};
+  for (std::size_t i = 0; i < std::size(kBindings); ++i) {
+    bindings[i] = {kBindings[i].slot, kBindings[i].type, 1, kBindings[i].stages, nullptr};
+  }
   VkDescriptorSetLayoutCreateInfo setInfo{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO};
-  setInfo.bindingCount = 2;
+  setInfo.bindingCount = static_cast<std::uint32_t>(std::size(bindings));
   setInfo.pBindings = bindings;
   setLayout_ = device.createSetLayout(setInfo, "sky draw set layout");
   const VkDescriptorSetLayout setLayout = setLayout_.get();

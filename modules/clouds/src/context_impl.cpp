@@ -6,6 +6,7 @@
 #include <cstring>
 
 #include "cloud_density.h"
+#include "descriptor_sets.h"
 #include "lightning_bolts.h"
 #include "pipeline_variants.h"
 
@@ -39,22 +40,6 @@ detail::OwnedBuffer uniformBlock(const detail::DeviceContext& device, VkDeviceSi
       device, bytes, VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT, name);
 }
 
-detail::UniqueDescriptorPool makePool(const detail::DeviceContext& device, std::uint32_t frames) {
-  // Fixed sets: 3 noise generators, 2 mip chains, 2 weather generators, 3 maxima. Per slot: 9
-  // sets.
-  const VkDescriptorPoolSize sizes[] = {
-      {VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, 18 + 42 * frames},
-      {VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 4 + 16 * frames},
-      {VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 13 * frames},
-      {VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 5 * frames},
-  };
-  VkDescriptorPoolCreateInfo info{VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO};
-  info.maxSets = 10 + 14 * frames;
-  info.poolSizeCount = static_cast<std::uint32_t>(std::size(sizes));
-  info.pPoolSizes = sizes;
-  return device.createDescriptorPool(info, "descriptor pool");
-}
-
 }  // namespace
 
 // Rows of the next period's weather map generated per frame: 1/16 of the map, ~3 ms on lavapipe,
@@ -73,7 +58,7 @@ Context::Impl::Impl(const CreateInfo& info, const detail::VulkanFunctions& funct
                                            "linear sampler")),
       clampedLinearSampler_(device_.createSampler(
           VK_FILTER_LINEAR, VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE, "clamped linear sampler")),
-      pool_(makePool(device_, info.maxFramesInFlight)),
+      pool_(detail::makeDescriptorPool(device_, programs_, info.maxFramesInFlight)),
       weatherSchedule_(static_cast<std::uint32_t>(shader::kWeatherMapSize), kWeatherRowsAhead) {
   if (info.passTimings) {
     timer_ =

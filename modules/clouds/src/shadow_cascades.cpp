@@ -5,6 +5,7 @@
 #include <cstddef>
 
 #include "cloud_shadow_march.h"
+#include "setting_effects.h"
 #include "temporal_state.h"
 
 namespace clouds::detail {
@@ -18,14 +19,6 @@ constexpr float kBlendBand = 0.1f;
 
 double angleDegrees(const glm::dvec3& a, const glm::dvec3& b) {
   return glm::degrees(std::acos(std::clamp(glm::dot(a, b), -1.0, 1.0)));
-}
-
-bool shadowSettingsDiffer(const Settings& a, const Settings& b) {
-  return a.shadowCascades != b.shadowCascades || a.shadowMapResolution != b.shadowMapResolution ||
-         a.shadowNearSideMetres != b.shadowNearSideMetres ||
-         a.shadowCascadeRatio != b.shadowCascadeRatio || a.shadowSteps != b.shadowSteps ||
-         a.terrainShadowSteps != b.terrainShadowSteps ||
-         a.layerBottomMetres != b.layerBottomMetres || a.layerTopMetres != b.layerTopMetres;
 }
 
 bool sameTerrain(const FrameInputs::Terrain& a, const FrameInputs::Terrain& b) {
@@ -88,7 +81,9 @@ CascadeJob ShadowCascades::placement(std::uint32_t c, const FrameInputs& in,
 bool ShadowCascades::stale(const Made& made, const CascadeJob& now, const FrameInputs& in,
                            const Settings& s) const {
   if (!made.valid || in.reset) return true;
-  if (shadowSettingsDiffer(settings_, s) || cloudsLookDifferent(settings_, s)) return true;
+  if (settingsDifferIn(kRemakesShadows, settings_, s) || cloudsLookDifferent(settings_, s)) {
+    return true;
+  }
   if (in.weatherView != weatherView_ || !sameTerrain(in.terrain, terrain_)) return true;
   if (angleDegrees(made.basis.light, now.basis.light) > double(s.relightResetDegrees)) return true;
   const double age = in.timeSeconds - made.timeSeconds;

@@ -1,5 +1,7 @@
 #include "temporal_state.h"
 
+#include "setting_effects.h"
+
 #include <algorithm>
 #include <cmath>
 #include <iterator>
@@ -40,107 +42,7 @@ glm::uvec2 tilePhase(std::uint32_t k, std::uint32_t n) {
 }
 
 bool cloudsLookDifferent(const Settings& a, const Settings& b) {
-  const auto differ = [](float x, float y) {
-    return std::abs(x - y) > 0.01f * std::max(std::abs(x), std::abs(y)) + 1e-6f;
-  };
-  const float floatsA[] = {a.layerBottomMetres,
-                           a.layerTopMetres,
-                           a.planetRadiusMetres,
-                           a.coverage,
-                           a.cloudType,
-                           a.typeVariation,
-                           a.densityVariation,
-                           a.weatherTileMetres,
-                           a.densityMultiplier,
-                           a.extinctionPerMetre,
-                           a.anvilBias,
-                           a.shapeTileMetres,
-                           a.detailTileMetres,
-                           a.detailErosion,
-                           a.detailDistanceMetres,
-                           a.noiseTexelsPerPixel,
-                           a.curlTileMetres,
-                           a.curlStrengthMetres,
-                           a.windDirection.x,
-                           a.windDirection.y,
-                           a.windSpeedMetresPerSecond,
-                           a.skewMetres,
-                           a.albedo,
-                           a.phaseForwardG,
-                           a.phaseBackwardG,
-                           a.phaseBackwardWeight,
-                           a.silverIntensity,
-                           a.silverSpread,
-                           a.msExtinctionScale,
-                           a.msContribution,
-                           a.msEccentricityScale,
-                           a.inScatterStrength,
-                           a.inScatterCoreProfile,
-                           a.ambientOcclusionStrength,
-                           a.ambientStrength,
-                           a.sunStrength,
-                           a.viewStepMetres,
-                           a.viewStepGrowth,
-                           a.lightConeMetres,
-                           a.lightConeSpread,
-                           a.maxDistanceMetres,
-                           a.transmittanceCutoff,
-                           a.coarseStepFactor};
-  const float floatsB[] = {b.layerBottomMetres,
-                           b.layerTopMetres,
-                           b.planetRadiusMetres,
-                           b.coverage,
-                           b.cloudType,
-                           b.typeVariation,
-                           b.densityVariation,
-                           b.weatherTileMetres,
-                           b.densityMultiplier,
-                           b.extinctionPerMetre,
-                           b.anvilBias,
-                           b.shapeTileMetres,
-                           b.detailTileMetres,
-                           b.detailErosion,
-                           b.detailDistanceMetres,
-                           b.noiseTexelsPerPixel,
-                           b.curlTileMetres,
-                           b.curlStrengthMetres,
-                           b.windDirection.x,
-                           b.windDirection.y,
-                           b.windSpeedMetresPerSecond,
-                           b.skewMetres,
-                           b.albedo,
-                           b.phaseForwardG,
-                           b.phaseBackwardG,
-                           b.phaseBackwardWeight,
-                           b.silverIntensity,
-                           b.silverSpread,
-                           b.msExtinctionScale,
-                           b.msContribution,
-                           b.msEccentricityScale,
-                           b.inScatterStrength,
-                           b.inScatterCoreProfile,
-                           b.ambientOcclusionStrength,
-                           b.ambientStrength,
-                           b.sunStrength,
-                           b.viewStepMetres,
-                           b.viewStepGrowth,
-                           b.lightConeMetres,
-                           b.lightConeSpread,
-                           b.maxDistanceMetres,
-                           b.transmittanceCutoff,
-                           b.coarseStepFactor};
-  static_assert(std::size(floatsA) == std::size(floatsB));
-  for (std::size_t i = 0; i < std::size(floatsA); ++i) {
-    if (differ(floatsA[i], floatsB[i])) return true;
-  }
-  return a.multipleScattering != b.multipleScattering ||
-         a.multipleScatteringOctaves != b.multipleScatteringOctaves ||
-         a.maxViewSteps != b.maxViewSteps || a.lightSteps != b.lightSteps ||
-         a.cheapSampling != b.cheapSampling || a.emptySamplesToCoarse != b.emptySamplesToCoarse ||
-         a.detail != b.detail || a.jitter != b.jitter ||
-         a.emptySpaceSkipping != b.emptySpaceSkipping ||
-         a.noiseLevelOfDetail != b.noiseLevelOfDetail ||
-         a.lightEveryOtherStep != b.lightEveryOtherStep;
+  return settingsDifferIn(kResetsHistory, a, b);
 }
 
 TemporalFrame TemporalState::plan(const FrameInputs& in, const Settings& s,

@@ -48,8 +48,8 @@ constexpr std::uint32_t tileSizeFor(std::uint32_t updateInterval) {
   return k;
 }
 
-// True when `a` and `b` render visibly different clouds: a look or march setting differs by
-// more than 1% (a flag or count at all). The temporal knobs themselves do not count.
+// True when `a` and `b` render visibly different clouds: a field setting_effects.h marks as
+// resetting the history differs by more than 1% (a flag, count or choice at all).
 bool cloudsLookDifferent(const Settings& a, const Settings& b);
 
 class TemporalState {
