@@ -155,6 +155,17 @@ class Context::Impl {
   void recordTrace(VkCommandBuffer cmd, const FrameInputs& inputs, const Settings& settings,
                    const detail::TemporalFrame& temporal, VkExtent2D traceExtent,
                    bool terrainShadow, Slot& slot);
+  // recordTrace()'s passes, in their order, each over the set recordTrace() wrote for it.
+  void recordSceneDistance(VkCommandBuffer cmd, VkExtent2D traceExtent, Slot& slot);
+  // `edgeRays`: detail::marchesEdgeRays(), which adds the edge tiles' dispatch.
+  void recordMarch(VkCommandBuffer cmd, const Settings& settings, std::uint32_t tileSize,
+                   VkExtent2D traceExtent, bool terrainShadow, bool edgeRays, Slot& slot);
+  // `lightning`: recordLightning() wrote flashes, whose glow is reconstructed too.
+  void recordReconstruct(VkCommandBuffer cmd, const detail::TemporalFrame& temporal,
+                         VkExtent2D traceExtent, bool lightning, Slot& slot);
+  // `toBolts`: the bolts' pass follows; else the outputs are left visible to the host.
+  void recordUpsample(VkCommandBuffer cmd, VkPipeline pipeline, VkExtent2D renderExtent,
+                      bool toBolts, Slot& slot);
 
   // Declaration order is destruction order reversed: everything below uses device_.
   CreateInfo info_;

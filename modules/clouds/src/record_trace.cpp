@@ -16,11 +16,208 @@ using detail::kStorageWrite;
 constexpr VkPipelineStageFlags2 kCompute = detail::kComputeStage;
 using detail::kHostReadAccess;
 using detail::kHostReadStages;
+constexpr VkDeviceSize kUniformBytes = sizeof(shader::CloudUniforms);
 
 // The history variant of a frame: none, read in place (nothing moved) or reprojected.
 std::uint32_t historyVariant(bool use, bool still) {
   if (!use) return shader::kHistoryNone;
   return still ? shader::kHistoryInPlace : shader::kHistoryReprojected;
+}
+
+struct TraceSamplers {
+  VkSampler nearest = VK_NULL_HANDLE;
+  VkSampler linear = VK_NULL_HANDLE;
+  VkSampler clampedLinear = VK_NULL_HANDLE;
+};
+
+// What this frame's trace reads and writes, decided once: the host's optional images or the
+// module's stand-ins for those it does not give, the history images, and the optional work.
+struct TraceFrame {
+  const detail::ModuleImages& images;
+  TraceSamplers samplers;
+  VkBuffer uniforms = VK_NULL_HANDLE;
+  VkImageView depthView = VK_NULL_HANDLE;
+  VkImageLayout depthLayout = VK_IMAGE_LAYOUT_UNDEFINED;
+  bool hazed = false;  // the host gave an aerial perspective
+  VkImageView hazeView = VK_NULL_HANDLE;
+  VkImageLayout hazeLayout = VK_IMAGE_LAYOUT_UNDEFINED;
+  const detail::OwnedImage& historyIn;
+  const detail::OwnedImage& historyOut;
+  VkImageView outputHistoryIn = VK_NULL_HANDLE;
+  VkImageView outputHistoryOut = VK_NULL_HANDLE;
+  bool terrainShadow = false;  // the march reads the terrain's shadow from the shadow map
+  bool edgeRays = false;       // detail::marchesEdgeRays()
+};
+
+TraceFrame traceFrame(const detail::ModuleImages& im, const TraceSamplers& samplers,
+                      VkBuffer uniforms, const FrameInputs& inputs, const Settings& settings,
+                      const detail::TemporalFrame& temporal, bool terrainShadow) {
+  const bool hasDepth = inputs.depthView != VK_NULL_HANDLE;
+  const FrameInputs::AerialPerspective& haze = inputs.aerialPerspective;
+  const bool hazed = haze.view != VK_NULL_HANDLE;
+  // Without temporal upsampling the upsample pass never touches its output history: any
+  // storage image of the format fills the bindings.
+  const bool upsampling = temporal.upsampleTemporally;
+  const VkImageView noOutputHistory = im.samplesPlaceholder.view();
+  return TraceFrame{
+      .images = im,
+      .samplers = samplers,
+      .uniforms = uniforms,
+      .depthView = hasDepth ? inputs.depthView : im.depthPlaceholder.view(),
+      .depthLayout = hasDepth ? inputs.depthLayout : VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL,
+      .hazed = hazed,
+      .hazeView = hazed ? haze.view : im.hazePlaceholder.view(),
+      .hazeLayout = hazed ? haze.layout : VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL,
+      .historyIn = im.history[temporal.readHistory],
+      .historyOut = im.history[temporal.writeHistory],
+      .outputHistoryIn =
+          upsampling ? im.outputHistory[temporal.readHistory].view() : noOutputHistory,
+      .outputHistoryOut =
+          upsampling ? im.outputHistory[temporal.writeHistory].view() : noOutputHistory,
+      .terrainShadow = terrainShadow,
+      .edgeRays = detail::marchesEdgeRays(settings, temporal),
+  };
+}
+
+void writeSceneDistanceSet(const detail::DeviceContext& device, VkDescriptorSet set,
+                           const TraceFrame& frame) {
+  using namespace shader;
+  detail::SetWriter(device, set)
+      .uniformBuffer(kBindingUniforms, frame.uniforms, kUniformBytes)
+      .sampledImage(kSceneDistanceHostDepth, frame.depthView, frame.samplers.nearest,
+                    frame.depthLayout)
+      .storageImage(kSceneDistanceOut, frame.images.sceneDistance.view())
+      .commit();
+}
+
+void writeMarchSet(const detail::DeviceContext& device, VkDescriptorSet set,
+                   const TraceFrame& frame, const detail::OwnedImage& weatherMap,
+                   const detail::OwnedBuffer& counters,
+                   const detail::OwnedBuffer& terrainShadowParameters,
+                   const detail::OwnedBuffer& edgeRayList) {
+  using namespace shader;
+  const detail::ModuleImages& im = frame.images;
+  detail::SetWriter(device, set)
+      .uniformBuffer(kBindingUniforms, frame.uniforms, kUniformBytes)
+      .storageImage(kMarchShapeNoise, im.shapeNoise.view())
+      .storageImage(kMarchDetailNoise, im.detailNoise.view())
+      .storageImage(kMarchWeatherMap, weatherMap.view())
+      .storageImage(kMarchCurlNoise, im.curlNoise.view())
+      .storageImage(kMarchSceneDistance, im.sceneDistance.view())
+      .storageImage(kMarchSamplesOut, im.traceSamples.view())
+      .storageImage(kMarchWeatherMaxFine, im.weatherMaxFine.view())
+      .storageImage(kMarchWeatherMaxCoarse, im.weatherMaxCoarse.view())
+      .storageBuffer(kMarchCounters, counters.buffer(), counters.size())
+      .sampledImage(
+          kMarchCloudShadow, frame.terrainShadow ? im.shadowMap.view() : im.depthPlaceholder.view(),
+          frame.samplers.clampedLinear,
+          frame.terrainShadow ? VK_IMAGE_LAYOUT_GENERAL : VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL)
+      .uniformBuffer(kMarchCloudShadowParameters, terrainShadowParameters.buffer(),
+                     sizeof(MarchTerrainShadow))
+      // Read only by frames that march edge rays (kFlagEdgeRays), which have a history; the
+      // variants without edge rays never touch the list, for which the counters stand in.
+      .storageImage(kMarchTraceHistory, frame.historyIn.view())
+      .storageBuffer(kMarchEdgeRayList, frame.edgeRays ? edgeRayList.buffer() : counters.buffer(),
+                     frame.edgeRays ? edgeRayList.size() : counters.size())
+      .commit();
+}
+
+void writeReconstructSet(const detail::DeviceContext& device, VkDescriptorSet set,
+                         const TraceFrame& frame, const detail::OwnedBuffer& flashes) {
+  using namespace shader;
+  const detail::ModuleImages& im = frame.images;
+  // Without room for flashes, stand-ins: the frame's uniforms for their block and the
+  // radiance output (of the glow's format) for the glow; the variant never touches them.
+  const bool glowRoom = flashes.buffer() != VK_NULL_HANDLE;
+  detail::SetWriter(device, set)
+      .uniformBuffer(kBindingUniforms, frame.uniforms, kUniformBytes)
+      .storageImage(kReconstructFresh, im.traceSamples.view())
+      .storageImage(kReconstructHistory, frame.historyIn.view())
+      .storageImage(kReconstructOut, frame.historyOut.view())
+      .uniformBuffer(kReconstructFlashes, glowRoom ? flashes.buffer() : frame.uniforms,
+                     sizeof(LightningUniforms))
+      .storageImage(kReconstructGlow, glowRoom ? im.lightningGlow.view() : im.radiance.view())
+      .storageImage(kReconstructSceneDistance, im.sceneDistance.view())
+      .commit();
+}
+
+void writeUpsampleSet(const detail::DeviceContext& device, VkDescriptorSet set,
+                      const TraceFrame& frame) {
+  using namespace shader;
+  const detail::ModuleImages& im = frame.images;
+  detail::SetWriter(device, set)
+      .uniformBuffer(kBindingUniforms, frame.uniforms, kUniformBytes)
+      .storageImage(kUpsampleTraceSamples, frame.historyOut.view())
+      .sampledImage(kUpsampleHostDepth, frame.depthView, frame.samplers.nearest, frame.depthLayout)
+      .storageImage(kUpsampleRadianceOut, im.radiance.view())
+      // Without a depth output, a stand-in the variant never stores to.
+      .storageImage(kUpsampleDepthOut, im.depth ? im.depth.view() : im.noDepthOutput.view())
+      .storageImage(kUpsampleFresh, im.traceSamples.view())
+      .storageImage(kUpsampleHistory, frame.outputHistoryIn)
+      .storageImage(kUpsampleHistoryOut, frame.outputHistoryOut)
+      .sampledImage(kUpsampleAerialPerspective, frame.hazeView, frame.samplers.linear,
+                    frame.hazeLayout)
+      // Without a glow, a stand-in: the variants without lightning never read it.
+      .sampledImage(
+          kUpsampleLightningGlow,
+          im.lightningGlow ? im.lightningGlow.view() : im.depthPlaceholder.view(),
+          frame.samplers.linear,
+          im.lightningGlow ? VK_IMAGE_LAYOUT_GENERAL : VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL)
+      .sampledImage(
+          kUpsampleGodRayLight, im.godRayLight ? im.godRayLight.view() : im.depthPlaceholder.view(),
+          frame.samplers.clampedLinear,
+          im.godRayLight ? VK_IMAGE_LAYOUT_GENERAL : VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL)
+      .commit();
+}
+
+void writeBoltsSet(const detail::DeviceContext& device, VkDescriptorSet set,
+                   const TraceFrame& frame, const detail::OwnedBuffer& bolts) {
+  using namespace shader;
+  const detail::ModuleImages& im = frame.images;
+  detail::SetWriter(device, set)
+      .uniformBuffer(kBindingUniforms, frame.uniforms, kUniformBytes)
+      .sampledImage(kBoltsHostDepth, frame.depthView, frame.samplers.nearest, frame.depthLayout)
+      .storageImage(kBoltsRadiance, im.radiance.view())
+      .storageImage(kBoltsDepth, im.depth.view())
+      .sampledImage(kBoltsAerialPerspective, frame.hazeView, frame.samplers.linear,
+                    frame.hazeLayout)
+      .storageBuffer(kBoltsPieces, bolts.buffer(), bolts.size())
+      .commit();
+}
+
+void resetWorkCounters(const detail::DeviceContext& device, VkCommandBuffer cmd,
+                       const detail::OwnedBuffer& counters) {
+  device.fn().vkCmdFillBuffer(cmd, counters.buffer(), 0, VK_WHOLE_SIZE, 0u);
+  detail::memoryBarrier(device, cmd, VK_PIPELINE_STAGE_2_TRANSFER_BIT,
+                        VK_ACCESS_2_TRANSFER_WRITE_BIT, kCompute, kStorageRead | kStorageWrite);
+}
+
+// For the host, once the frame completed (Context::workCounters()).
+void makeWorkCountersReadable(const detail::DeviceContext& device, VkCommandBuffer cmd) {
+  detail::memoryBarrier(device, cmd, kCompute, kStorageWrite, VK_PIPELINE_STAGE_2_HOST_BIT,
+                        VK_ACCESS_2_HOST_READ_BIT);
+}
+
+// The march's second dispatch: one invocation per edge tile the first one listed, as many
+// groups as the list says.
+void dispatchListedEdgeTiles(const detail::DeviceContext& device, VkCommandBuffer cmd,
+                             VkPipeline edgeRaysMarch, const detail::OwnedBuffer& edgeRayList) {
+  detail::memoryBarrier(device, cmd, kCompute, kStorageWrite,
+                        kCompute | VK_PIPELINE_STAGE_2_DRAW_INDIRECT_BIT,
+                        kStorageRead | VK_ACCESS_2_INDIRECT_COMMAND_READ_BIT);
+  device.fn().vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, edgeRaysMarch);
+  device.fn().vkCmdDispatchIndirect(cmd, edgeRayList.buffer(), 0);
+}
+
+// The upsample's outputs, for the bolts' pass, which reads and writes them next, or else for
+// the host's reads.
+void makeOutputsVisible(const detail::DeviceContext& device, VkCommandBuffer cmd,
+                        const detail::ModuleImages& im, bool toBolts) {
+  im.forEachOutput([&](const detail::OwnedImage& image) {
+    detail::barrier(device, cmd, image.image(), VK_IMAGE_LAYOUT_GENERAL, VK_IMAGE_LAYOUT_GENERAL,
+                    kCompute, kStorageWrite, toBolts ? kCompute : kHostReadStages,
+                    toBolts ? kStorageRead | kStorageWrite : kHostReadAccess);
+  });
 }
 
 }  // namespace
@@ -82,106 +279,41 @@ void Context::Impl::recordSkyAmbient(VkCommandBuffer cmd, const FrameInputs& inp
 void Context::Impl::recordTrace(VkCommandBuffer cmd, const FrameInputs& inputs,
                                 const Settings& settings, const detail::TemporalFrame& temporal,
                                 VkExtent2D traceExtent, bool terrainShadow, Slot& slot) {
-  const auto& fn = device_.fn();
-  const detail::ModuleImages& im = images_;
-  const bool hasDepth = inputs.depthView != VK_NULL_HANDLE;
-  const VkImageView depthView = hasDepth ? inputs.depthView : im.depthPlaceholder.view();
-  const VkImageLayout depthLayout =
-      hasDepth ? inputs.depthLayout : VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL;
-  const VkSampler nearest = nearestSampler_.get();
-  const FrameInputs::AerialPerspective& haze = inputs.aerialPerspective;
-  const bool hazed = haze.view != VK_NULL_HANDLE;
-  const VkBuffer uniforms = slot.uniforms.buffer();
-  const VkDeviceSize uniformBytes = sizeof(shader::CloudUniforms);
-  const detail::OwnedImage& historyIn = im.history[temporal.readHistory];
-  const detail::OwnedImage& historyOut = im.history[temporal.writeHistory];
-  // Without temporal upsampling the upsample pass never touches its output history: any
-  // storage image of the format fills the bindings.
-  const bool upsampling = temporal.upsampleTemporally;
-  const VkImageView outputHistoryIn =
-      upsampling ? im.outputHistory[temporal.readHistory].view() : im.samplesPlaceholder.view();
-  const VkImageView outputHistoryOut =
-      upsampling ? im.outputHistory[temporal.writeHistory].view() : im.samplesPlaceholder.view();
-  const bool edgeRays = detail::marchesEdgeRays(settings, temporal);
-
-  using namespace shader;
-  detail::SetWriter(device_, slot.sceneDistance)
-      .uniformBuffer(kBindingUniforms, uniforms, uniformBytes)
-      .sampledImage(kSceneDistanceHostDepth, depthView, nearest, depthLayout)
-      .storageImage(kSceneDistanceOut, im.sceneDistance.view())
-      .commit();
-  detail::SetWriter(device_, slot.march)
-      .uniformBuffer(kBindingUniforms, uniforms, uniformBytes)
-      .storageImage(kMarchShapeNoise, im.shapeNoise.view())
-      .storageImage(kMarchDetailNoise, im.detailNoise.view())
-      .storageImage(kMarchWeatherMap, weatherMap().view())
-      .storageImage(kMarchCurlNoise, im.curlNoise.view())
-      .storageImage(kMarchSceneDistance, im.sceneDistance.view())
-      .storageImage(kMarchSamplesOut, im.traceSamples.view())
-      .storageImage(kMarchWeatherMaxFine, im.weatherMaxFine.view())
-      .storageImage(kMarchWeatherMaxCoarse, im.weatherMaxCoarse.view())
-      .storageBuffer(kMarchCounters, slot.counters.buffer(), slot.counters.size())
-      .sampledImage(
-          kMarchCloudShadow, terrainShadow ? im.shadowMap.view() : im.depthPlaceholder.view(),
-          clampedLinearSampler_.get(),
-          terrainShadow ? VK_IMAGE_LAYOUT_GENERAL : VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL)
-      .uniformBuffer(kMarchCloudShadowParameters, slot.shadowParameters.buffer(),
-                     sizeof(MarchTerrainShadow))
-      // Read only by frames that march edge rays (kFlagEdgeRays), which have a history; the
-      // variants without edge rays never touch the list, for which the counters stand in.
-      .storageImage(kMarchTraceHistory, historyIn.view())
-      .storageBuffer(kMarchEdgeRayList,
-                     edgeRays ? slot.edgeRayList.buffer() : slot.counters.buffer(),
-                     edgeRays ? slot.edgeRayList.size() : slot.counters.size())
-      .commit();
-  // Without room for flashes, stand-ins: the frame's uniforms for their block and the
-  // radiance output (of the glow's format) for the glow; the variant never touches them.
-  const bool glowRoom = slot.lightning.buffer() != VK_NULL_HANDLE;
-  detail::SetWriter(device_, slot.reconstruct)
-      .uniformBuffer(kBindingUniforms, uniforms, uniformBytes)
-      .storageImage(kReconstructFresh, im.traceSamples.view())
-      .storageImage(kReconstructHistory, historyIn.view())
-      .storageImage(kReconstructOut, historyOut.view())
-      .uniformBuffer(kReconstructFlashes, glowRoom ? slot.lightning.buffer() : uniforms,
-                     sizeof(LightningUniforms))
-      .storageImage(kReconstructGlow, glowRoom ? im.lightningGlow.view() : im.radiance.view())
-      .storageImage(kReconstructSceneDistance, im.sceneDistance.view())
-      .commit();
-  detail::SetWriter(device_, slot.upsample)
-      .uniformBuffer(kBindingUniforms, uniforms, uniformBytes)
-      .storageImage(kUpsampleTraceSamples, historyOut.view())
-      .sampledImage(kUpsampleHostDepth, depthView, nearest, depthLayout)
-      .storageImage(kUpsampleRadianceOut, im.radiance.view())
-      // Without a depth output, a stand-in the variant never stores to.
-      .storageImage(kUpsampleDepthOut, im.depth ? im.depth.view() : im.noDepthOutput.view())
-      .storageImage(kUpsampleFresh, im.traceSamples.view())
-      .storageImage(kUpsampleHistory, outputHistoryIn)
-      .storageImage(kUpsampleHistoryOut, outputHistoryOut)
-      .sampledImage(kUpsampleAerialPerspective, hazed ? haze.view : im.hazePlaceholder.view(),
-                    linearSampler_.get(),
-                    hazed ? haze.layout : VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL)
-      // Without a glow, a stand-in: the variants without lightning never read it.
-      .sampledImage(
-          kUpsampleLightningGlow,
-          im.lightningGlow ? im.lightningGlow.view() : im.depthPlaceholder.view(),
-          linearSampler_.get(),
-          im.lightningGlow ? VK_IMAGE_LAYOUT_GENERAL : VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL)
-      .sampledImage(
-          kUpsampleGodRayLight, im.godRayLight ? im.godRayLight.view() : im.depthPlaceholder.view(),
-          clampedLinearSampler_.get(),
-          im.godRayLight ? VK_IMAGE_LAYOUT_GENERAL : VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL)
-      .commit();
+  const TraceSamplers samplers{nearestSampler_.get(), linearSampler_.get(),
+                               clampedLinearSampler_.get()};
+  const TraceFrame frame = traceFrame(images_, samplers, slot.uniforms.buffer(), inputs, settings,
+                                      temporal, terrainShadow);
+  writeSceneDistanceSet(device_, slot.sceneDistance, frame);
+  writeMarchSet(device_, slot.march, frame, weatherMap(), slot.counters, slot.shadowParameters,
+                slot.edgeRayList);
+  writeReconstructSet(device_, slot.reconstruct, frame, slot.lightning);
+  writeUpsampleSet(device_, slot.upsample, frame);
 
   // Everything these passes write may still be read by earlier commands (last frame's
   // reconstruction and upsample, the host's reads of the outputs).
   detail::memoryBarrier(device_, cmd, kHostReadStages, kHostReadAccess | kStorageRead, kCompute,
                         kStorageWrite);
-  if (info_.workCounters) {
-    fn.vkCmdFillBuffer(cmd, slot.counters.buffer(), 0, VK_WHOLE_SIZE, 0u);
-    detail::memoryBarrier(device_, cmd, VK_PIPELINE_STAGE_2_TRANSFER_BIT,
-                          VK_ACCESS_2_TRANSFER_WRITE_BIT, kCompute, kStorageRead | kStorageWrite);
-  }
+  if (info_.workCounters) resetWorkCounters(device_, cmd, slot.counters);
 
+  recordSceneDistance(cmd, traceExtent, slot);
+  recordMarch(cmd, settings, temporal.tileSize, traceExtent, terrainShadow, frame.edgeRays, slot);
+  const bool lightning = recordLightning(cmd, inputs, slot);
+  recordReconstruct(cmd, temporal, traceExtent, lightning, slot);
+  const bool godRays =
+      settings.godRaySamples > 0 &&
+      recordGodRays(cmd, inputs, settings, frame.historyOut, /*traced=*/true, slot);
+  const std::uint32_t outputHistory = historyVariant(temporal.useOutputHistory, temporal.still);
+  const VkPipeline upsample = programs_[Program::Upsample].find(
+      detail::upsampleKey(temporal.upsampleTemporally, outputHistory, frame.hazed, godRays,
+                          lightning, detail::writesCloudDepth(settings)));
+  const bool bolts = !inputs.lightningBolts.empty() && slot.bolts.buffer() != VK_NULL_HANDLE;
+  recordUpsample(cmd, upsample, inputs.renderExtent, bolts, slot);
+  if (!bolts) return;
+  writeBoltsSet(device_, slot.lightningBolts, frame, slot.bolts);
+  recordBolts(cmd, inputs, frame.hazed, slot);
+}
+
+void Context::Impl::recordSceneDistance(VkCommandBuffer cmd, VkExtent2D traceExtent, Slot& slot) {
   beginPass(cmd, detail::Pass::SceneDistance, "clouds: scene distance");
   bindAndDispatch(cmd, Program::SceneDistance, programs_[Program::SceneDistance].find(),
                   slot.sceneDistance, traceExtent.width, traceExtent.height);
@@ -189,8 +321,12 @@ void Context::Impl::recordTrace(VkCommandBuffer cmd, const FrameInputs& inputs,
   // barrier waits for it.
   detail::memoryBarrier(device_, cmd, kCompute, kStorageWrite, kCompute, kStorageRead);
   endPass(cmd, detail::Pass::SceneDistance);
+}
 
-  const std::uint32_t k = temporal.tileSize;
+void Context::Impl::recordMarch(VkCommandBuffer cmd, const Settings& settings,
+                                std::uint32_t tileSize, VkExtent2D traceExtent, bool terrainShadow,
+                                bool edgeRays, Slot& slot) {
+  const std::uint32_t k = tileSize;
   if (edgeRays) recordEdgeRayListReset(cmd, slot);
   beginPass(cmd, detail::Pass::March, "clouds: march");
   // One invocation per tile: only the pixels marched this frame.
@@ -199,23 +335,18 @@ void Context::Impl::recordTrace(VkCommandBuffer cmd, const FrameInputs& inputs,
                   march.find(detail::marchKey(settings, info_.workCounters, terrainShadow)),
                   slot.march, (traceExtent.width + k - 1) / k, (traceExtent.height + k - 1) / k);
   if (edgeRays) {
-    // Then one per edge tile the march listed, as many groups as the list says.
-    detail::memoryBarrier(device_, cmd, kCompute, kStorageWrite,
-                          kCompute | VK_PIPELINE_STAGE_2_DRAW_INDIRECT_BIT,
-                          kStorageRead | VK_ACCESS_2_INDIRECT_COMMAND_READ_BIT);
-    fn.vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE,
-                         march.find(detail::marchKey(settings, info_.workCounters, terrainShadow,
-                                                     shader::kEdgeRaysMarch)));
-    fn.vkCmdDispatchIndirect(cmd, slot.edgeRayList.buffer(), 0);
+    dispatchListedEdgeTiles(device_, cmd,
+                            march.find(detail::marchKey(settings, info_.workCounters, terrainShadow,
+                                                        shader::kEdgeRaysMarch)),
+                            slot.edgeRayList);
   }
   detail::memoryBarrier(device_, cmd, kCompute, kStorageWrite, kCompute, kStorageRead);
   endPass(cmd, detail::Pass::March);
+  if (info_.workCounters) makeWorkCountersReadable(device_, cmd);
+}
 
-  if (info_.workCounters) {
-    detail::memoryBarrier(device_, cmd, kCompute, kStorageWrite, VK_PIPELINE_STAGE_2_HOST_BIT,
-                          VK_ACCESS_2_HOST_READ_BIT);
-  }
-  const bool lightning = recordLightning(cmd, inputs, slot);
+void Context::Impl::recordReconstruct(VkCommandBuffer cmd, const detail::TemporalFrame& temporal,
+                                      VkExtent2D traceExtent, bool lightning, Slot& slot) {
   beginPass(cmd, detail::Pass::Reconstruct, "clouds: reconstruct");
   const std::uint32_t history = historyVariant(temporal.useHistory, temporal.still);
   bindAndDispatch(cmd, Program::Reconstruct,
@@ -225,37 +356,15 @@ void Context::Impl::recordTrace(VkCommandBuffer cmd, const FrameInputs& inputs,
   detail::memoryBarrier(device_, cmd, kCompute, kStorageWrite, kCompute,
                         kStorageRead | VK_ACCESS_2_SHADER_SAMPLED_READ_BIT);
   endPass(cmd, detail::Pass::Reconstruct);
+}
 
-  const bool godRays = settings.godRaySamples > 0 &&
-                       recordGodRays(cmd, inputs, settings, historyOut, /*traced=*/true, slot);
-
+void Context::Impl::recordUpsample(VkCommandBuffer cmd, VkPipeline pipeline,
+                                   VkExtent2D renderExtent, bool toBolts, Slot& slot) {
   beginPass(cmd, detail::Pass::Upsample, "clouds: upsample");
-  const std::uint32_t outputHistory = historyVariant(temporal.useOutputHistory, temporal.still);
-  bindAndDispatch(cmd, Program::Upsample,
-                  programs_[Program::Upsample].find(
-                      detail::upsampleKey(upsampling, outputHistory, hazed, godRays, lightning,
-                                          detail::writesCloudDepth(settings))),
-                  slot.upsample, inputs.renderExtent.width, inputs.renderExtent.height);
-  // The bolts' pass reads and writes the outputs next; else the host reads them.
-  const bool bolts = !inputs.lightningBolts.empty() && slot.bolts.buffer() != VK_NULL_HANDLE;
-  im.forEachOutput([&](const detail::OwnedImage& image) {
-    detail::barrier(device_, cmd, image.image(), VK_IMAGE_LAYOUT_GENERAL, VK_IMAGE_LAYOUT_GENERAL,
-                    kCompute, kStorageWrite, bolts ? kCompute : kHostReadStages,
-                    bolts ? kStorageRead | kStorageWrite : kHostReadAccess);
-  });
+  bindAndDispatch(cmd, Program::Upsample, pipeline, slot.upsample, renderExtent.width,
+                  renderExtent.height);
+  makeOutputsVisible(device_, cmd, images_, toBolts);
   endPass(cmd, detail::Pass::Upsample);
-  if (!bolts) return;
-  detail::SetWriter(device_, slot.lightningBolts)
-      .uniformBuffer(kBindingUniforms, uniforms, uniformBytes)
-      .sampledImage(kBoltsHostDepth, depthView, nearest, depthLayout)
-      .storageImage(kBoltsRadiance, im.radiance.view())
-      .storageImage(kBoltsDepth, im.depth.view())
-      .sampledImage(kBoltsAerialPerspective, hazed ? haze.view : im.hazePlaceholder.view(),
-                    linearSampler_.get(),
-                    hazed ? haze.layout : VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL)
-      .storageBuffer(kBoltsPieces, slot.bolts.buffer(), slot.bolts.size())
-      .commit();
-  recordBolts(cmd, inputs, hazed, slot);
 }
 
 void Context::Impl::recordEdgeRayListReset(VkCommandBuffer cmd, Slot& slot) {

@@ -7,6 +7,7 @@
 //      its scene through it on the CPU (ground_shadow.h: from the documentation alone),
 //   4. records clouds::Context::dispatch() and composite() into its own command buffer,
 //   5. submits, reads the colour back, tonemaps it and writes a binary PPM image.
+// main(), at the end of this file, reads as these steps; each is a function above it.
 // It enables exactly what the module's README requires (Vulkan 1.3, synchronization2,
 // shaderStorageImageExtendedFormats) and no extension.
 //
@@ -73,8 +74,8 @@ struct Gpu {
   VkPhysicalDeviceMemoryProperties memory{};
 };
 
-Gpu createGpu(bool validation) {
-  Gpu gpu;
+// With --validation, the layer and a messenger that prints and counts every message (exit 3).
+void createInstance(Gpu& gpu, bool validation) {
   VkApplicationInfo app{VK_STRUCTURE_TYPE_APPLICATION_INFO};
   app.pApplicationName = "clouds minimal host";
   app.apiVersion = VK_API_VERSION_1_3;
@@ -102,7 +103,9 @@ Gpu createGpu(bool validation) {
         vkGetInstanceProcAddr(gpu.instance, "vkCreateDebugUtilsMessengerEXT"));
     vkCheck(create(gpu.instance, &messengerInfo, nullptr, &gpu.messenger), "debug messenger");
   }
+}
 
+void pickPhysicalDevice(Gpu& gpu) {
   // Any device with Vulkan 1.3 and a graphics+compute queue; real GPUs first.
   std::uint32_t count = 0;
   vkEnumeratePhysicalDevices(gpu.instance, &count, nullptr);
@@ -134,7 +137,9 @@ Gpu createGpu(bool validation) {
       break;
     }
   }
+}
 
+void createDevice(Gpu& gpu) {
   // The module needs synchronization2 and storage images of extended formats (RG32F).
   VkPhysicalDeviceVulkan13Features features13{
       VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_3_FEATURES};
@@ -154,6 +159,13 @@ Gpu createGpu(bool validation) {
   vkCheck(vkCreateDevice(gpu.physical, &deviceInfo, nullptr, &gpu.device), "vkCreateDevice");
   vkGetDeviceQueue(gpu.device, gpu.queueFamily, 0, &gpu.queue);
   vkGetPhysicalDeviceMemoryProperties(gpu.physical, &gpu.memory);
+}
+
+Gpu createGpu(bool validation) {
+  Gpu gpu;
+  createInstance(gpu, validation);
+  pickPhysicalDevice(gpu);
+  createDevice(gpu);
   return gpu;
 }
 
@@ -375,35 +387,41 @@ bool writePpm(const std::string& path, VkExtent2D extent, const std::uint16_t* h
   return static_cast<bool>(out);
 }
 
-}  // namespace
+// --- Command line --------------------------------------------------------------------------
 
-int main(int argc, char** argv) {
+struct Options {
   std::string outputPath = "clouds_minimal_host.ppm";
   VkExtent2D extent{320, 180};
-  const char* env = std::getenv("CLOUDSCAPE_VALIDATION");
-  bool validation = env != nullptr && env[0] != '\0' && env[0] != '0';
+  bool validation = false;
   bool withClouds = true;
   bool cloudShadows = true;
   bool claimDebugUtils = false;
   int frames = 1;
+};
+
+// Reads the command line (and CLOUDSCAPE_VALIDATION) into `options`. Returns 0, or the exit
+// code of a bad command line (2) once it has said what is wrong.
+int parseOptions(int argc, char** argv, Options& options) {
+  const char* env = std::getenv("CLOUDSCAPE_VALIDATION");
+  options.validation = env != nullptr && env[0] != '\0' && env[0] != '0';
   for (int i = 1; i < argc; ++i) {
     const std::string arg = argv[i];
     if (arg == "--output" && i + 1 < argc) {
-      outputPath = argv[++i];
+      options.outputPath = argv[++i];
     } else if (arg == "--width" && i + 1 < argc) {
-      extent.width = static_cast<std::uint32_t>(std::atoi(argv[++i]));
+      options.extent.width = static_cast<std::uint32_t>(std::atoi(argv[++i]));
     } else if (arg == "--height" && i + 1 < argc) {
-      extent.height = static_cast<std::uint32_t>(std::atoi(argv[++i]));
+      options.extent.height = static_cast<std::uint32_t>(std::atoi(argv[++i]));
     } else if (arg == "--frames" && i + 1 < argc) {
-      frames = std::atoi(argv[++i]);
+      options.frames = std::atoi(argv[++i]);
     } else if (arg == "--validation") {
-      validation = true;
+      options.validation = true;
     } else if (arg == "--no-clouds") {
-      withClouds = false;
+      options.withClouds = false;
     } else if (arg == "--no-cloud-shadows") {
-      cloudShadows = false;
+      options.cloudShadows = false;
     } else if (arg == "--claim-debug-utils") {
-      claimDebugUtils = true;
+      options.claimDebugUtils = true;
     } else {
       std::fprintf(stderr,
                    "usage: %s [--output FILE.ppm] [--width W] [--height H] [--frames N] "
@@ -412,218 +430,341 @@ int main(int argc, char** argv) {
       return 2;
     }
   }
+  const VkExtent2D extent = options.extent;
   if (extent.width < 8 || extent.height < 8 || extent.width > 8192 || extent.height > 8192) {
     std::fprintf(stderr, "minimal_host: --width/--height must be in [8, 8192]\n");
     return 2;
   }
-  if (frames < 1 || frames > 10000) {
+  if (options.frames < 1 || options.frames > 10000) {
     std::fprintf(stderr, "minimal_host: --frames must be in [1, 10000]\n");
     return 2;
   }
+  return 0;
+}
 
-  Gpu gpu = createGpu(validation);
+// --- The host's images and submissions -------------------------------------------------------
 
-  // The host's images: a reversed-Z depth buffer and an HDR colour image the module composites
-  // into (STORAGE usage, RGBA16F as CreateInfo::compositeColorFormat says).
-  Image depth = createImage(gpu, VK_FORMAT_D32_SFLOAT, extent,
-                            VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT,
-                            VK_IMAGE_ASPECT_DEPTH_BIT);
-  Image colour = createImage(gpu, VK_FORMAT_R16G16B16A16_SFLOAT, extent,
-                             VK_IMAGE_USAGE_STORAGE_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT |
-                                 VK_IMAGE_USAGE_TRANSFER_SRC_BIT,
-                             VK_IMAGE_ASPECT_COLOR_BIT);
-  const std::size_t pixels = std::size_t{extent.width} * extent.height;
-  HostBuffer depthUpload = createHostBuffer(gpu, pixels * 4, VK_BUFFER_USAGE_TRANSFER_SRC_BIT);
-  HostBuffer colourUpload = createHostBuffer(gpu, pixels * 8, VK_BUFFER_USAGE_TRANSFER_SRC_BIT);
-  HostBuffer readback = createHostBuffer(gpu, pixels * 8, VK_BUFFER_USAGE_TRANSFER_DST_BIT);
+std::size_t pixelCount(VkExtent2D extent) {
+  return std::size_t{extent.width} * extent.height;
+}
 
+// The host's images: a reversed-Z depth buffer and an HDR colour image the module composites
+// into (STORAGE usage, RGBA16F as CreateInfo::compositeColorFormat says); and the buffers that
+// fill them from the CPU and read the colour back.
+struct HostImages {
+  Image depth;
+  Image colour;
+  HostBuffer depthUpload;
+  HostBuffer colourUpload;
+  HostBuffer readback;
+};
+
+HostImages createHostImages(const Gpu& gpu, VkExtent2D extent) {
+  HostImages images;
+  images.depth = createImage(gpu, VK_FORMAT_D32_SFLOAT, extent,
+                             VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT,
+                             VK_IMAGE_ASPECT_DEPTH_BIT);
+  images.colour = createImage(gpu, VK_FORMAT_R16G16B16A16_SFLOAT, extent,
+                              VK_IMAGE_USAGE_STORAGE_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT |
+                                  VK_IMAGE_USAGE_TRANSFER_SRC_BIT,
+                              VK_IMAGE_ASPECT_COLOR_BIT);
+  const std::size_t pixels = pixelCount(extent);
+  images.depthUpload = createHostBuffer(gpu, pixels * 4, VK_BUFFER_USAGE_TRANSFER_SRC_BIT);
+  images.colourUpload = createHostBuffer(gpu, pixels * 8, VK_BUFFER_USAGE_TRANSFER_SRC_BIT);
+  images.readback = createHostBuffer(gpu, pixels * 8, VK_BUFFER_USAGE_TRANSFER_DST_BIT);
+  return images;
+}
+
+// The scene as the CPU made it last, and the camera and sun it is seen with.
+struct Scene {
   Camera camera;
-  const glm::vec3 sun = glm::normalize(glm::vec3(-0.4f, 0.45f, -0.8f));
-  std::vector<float> depthValues(pixels);
-  std::vector<std::uint16_t> colourValues(pixels * 4);
-  buildScene(camera, extent, sun, nullptr, depthValues, colourValues);
-  std::memcpy(depthUpload.mapped, depthValues.data(), pixels * 4);
-  std::memcpy(colourUpload.mapped, colourValues.data(), pixels * 8);
+  glm::vec3 sun = glm::normalize(glm::vec3(-0.4f, 0.45f, -0.8f));
+  std::vector<float> depth;
+  std::vector<std::uint16_t> colour;
+};
 
-  // The clouds module: created from the host's handles and entry points, then prepared for
-  // the settings and size it will render (pipelines and images), outside any recording.
+// The scene lit as if the clouds cast no shadow, copied into the upload buffers.
+Scene buildUnshadowedScene(VkExtent2D extent, const HostImages& images) {
+  Scene scene;
+  const std::size_t pixels = pixelCount(extent);
+  scene.depth.resize(pixels);
+  scene.colour.resize(pixels * 4);
+  buildScene(scene.camera, extent, scene.sun, nullptr, scene.depth, scene.colour);
+  std::memcpy(images.depthUpload.mapped, scene.depth.data(), pixels * 4);
+  std::memcpy(images.colourUpload.mapped, scene.colour.data(), pixels * 8);
+  return scene;
+}
+
+// One command buffer, recorded, submitted and waited for in turn (maxFramesInFlight = 1).
+struct Submission {
+  VkCommandPool pool = VK_NULL_HANDLE;
+  VkCommandBuffer cmd = VK_NULL_HANDLE;
+  VkFence fence = VK_NULL_HANDLE;
+};
+
+Submission createSubmission(const Gpu& gpu) {
+  Submission submission;
+  VkCommandPoolCreateInfo poolInfo{VK_STRUCTURE_TYPE_COMMAND_POOL_CREATE_INFO};
+  poolInfo.flags = VK_COMMAND_POOL_CREATE_RESET_COMMAND_BUFFER_BIT;
+  poolInfo.queueFamilyIndex = gpu.queueFamily;
+  vkCheck(vkCreateCommandPool(gpu.device, &poolInfo, nullptr, &submission.pool),
+          "vkCreateCommandPool");
+  VkCommandBufferAllocateInfo cmdInfo{VK_STRUCTURE_TYPE_COMMAND_BUFFER_ALLOCATE_INFO};
+  cmdInfo.commandPool = submission.pool;
+  cmdInfo.commandBufferCount = 1;
+  vkCheck(vkAllocateCommandBuffers(gpu.device, &cmdInfo, &submission.cmd),
+          "vkAllocateCommandBuffers");
+  VkFenceCreateInfo fenceInfo{VK_STRUCTURE_TYPE_FENCE_CREATE_INFO};
+  vkCheck(vkCreateFence(gpu.device, &fenceInfo, nullptr, &submission.fence), "vkCreateFence");
+  return submission;
+}
+
+void beginRecording(const Submission& submission) {
+  VkCommandBufferBeginInfo begin{VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO};
+  begin.flags = VK_COMMAND_BUFFER_USAGE_ONE_TIME_SUBMIT_BIT;
+  vkCheck(vkBeginCommandBuffer(submission.cmd, &begin), "vkBeginCommandBuffer");
+}
+
+void submitAndWait(const Gpu& gpu, const Submission& submission) {
+  vkCheck(vkEndCommandBuffer(submission.cmd), "vkEndCommandBuffer");
+  VkSubmitInfo submit{VK_STRUCTURE_TYPE_SUBMIT_INFO};
+  submit.commandBufferCount = 1;
+  submit.pCommandBuffers = &submission.cmd;
+  vkCheck(vkQueueSubmit(gpu.queue, 1, &submit, submission.fence), "vkQueueSubmit");
+  vkCheck(vkWaitForFences(gpu.device, 1, &submission.fence, VK_TRUE, UINT64_MAX),
+          "vkWaitForFences");
+  vkCheck(vkResetFences(gpu.device, 1, &submission.fence), "vkResetFences");
+}
+
+// --- The clouds module -----------------------------------------------------------------------
+
+// The clouds module: created from the host's handles and entry points, then (in main())
+// prepared for the settings and size it will render (pipelines and images), outside any
+// recording.
+std::unique_ptr<clouds::Context> createClouds(const Gpu& gpu, const Options& options,
+                                              clouds::Error* error) {
   clouds::CreateInfo info;
   info.instance = gpu.instance;
   info.physicalDevice = gpu.physical;
   info.device = gpu.device;
   info.getInstanceProcAddr = vkGetInstanceProcAddr;
   info.getDeviceProcAddr = vkGetDeviceProcAddr;
-  info.debugUtils = validation || claimDebugUtils;  // only --validation enables the extension
+  // Only --validation enables the extension (--claim-debug-utils claims it all the same).
+  info.debugUtils = options.validation || options.claimDebugUtils;
   info.depthFormat = VK_FORMAT_D32_SFLOAT;
   info.compositeColorFormat = VK_FORMAT_R16G16B16A16_SFLOAT;
-  info.maxRenderExtent = extent;
+  info.maxRenderExtent = options.extent;
   info.maxFramesInFlight = 1;
   info.reversedZ = true;
-  clouds::Error error;
-  std::unique_ptr<clouds::Context> clouds = clouds::Context::create(info, &error);
+  return clouds::Context::create(info, error);
+}
+
+clouds::Settings cloudSettings(const Options& options) {
   clouds::Settings settings;  // the defaults, with a little more coverage: broken cumulus
   settings.coverage = 0.62f;
   settings.depthOutput = false;  // composite() reads the radiance only: no depth to store
-  if (!withClouds || !cloudShadows) settings.shadowCascades = 0;  // no map, no pass, no memory
-  // The shadow map read back to the CPU: shadowMapResolution x cascades wide, RGBA16F.
-  const VkExtent2D shadowExtent{settings.shadowMapResolution * settings.shadowCascades,
-                                settings.shadowMapResolution};
-  HostBuffer shadowReadback = createHostBuffer(
-      gpu, std::max<VkDeviceSize>(VkDeviceSize{shadowExtent.width} * shadowExtent.height * 8, 8),
+  if (!options.withClouds || !options.cloudShadows) {
+    settings.shadowCascades = 0;  // no map, no pass, no memory
+  }
+  return settings;
+}
+
+// The shadow map read back to the CPU: shadowMapResolution x cascades wide, RGBA16F.
+struct ShadowReadback {
+  HostBuffer buffer;
+  VkExtent2D extent{0, 0};
+};
+
+ShadowReadback createShadowReadback(const Gpu& gpu, const clouds::Settings& settings) {
+  ShadowReadback readback;
+  readback.extent = {settings.shadowMapResolution * settings.shadowCascades,
+                     settings.shadowMapResolution};
+  readback.buffer = createHostBuffer(
+      gpu,
+      std::max<VkDeviceSize>(VkDeviceSize{readback.extent.width} * readback.extent.height * 8, 8),
       VK_BUFFER_USAGE_TRANSFER_DST_BIT);
-  if (!clouds || !clouds->prepare(settings, extent, &error)) {
-    std::fprintf(stderr, "minimal_host: %s (%s)\n", error.message.c_str(),
-                 clouds::errorCodeName(error.code));
-    return 1;
+  return readback;
+}
+
+int reportError(const clouds::Error& error) {
+  std::fprintf(stderr, "minimal_host: %s (%s)\n", error.message.c_str(),
+               clouds::errorCodeName(error.code));
+  return 1;
+}
+
+// --- A frame ---------------------------------------------------------------------------------
+
+// What main() made for the frames.
+struct Host {
+  Options options;
+  Gpu gpu;
+  HostImages images;
+  Scene scene;
+  ShadowReadback shadowReadback;
+  Submission submission;
+};
+
+clouds::FrameInputs frameInputs(const Host& host, int frame) {
+  const Camera& camera = host.scene.camera;
+  const VkExtent2D extent = host.options.extent;
+  clouds::FrameInputs inputs;
+  inputs.renderExtent = extent;
+  inputs.depthView = host.images.depth.view;
+  inputs.depthLayout = VK_IMAGE_LAYOUT_DEPTH_READ_ONLY_OPTIMAL;
+  inputs.view = viewMatrix(camera);
+  inputs.projection = projectionMatrix(camera, float(extent.width) / float(extent.height));
+  inputs.cameraPosition = glm::dvec3(camera.position);
+  inputs.sunDirection = host.scene.sun;
+  inputs.sunIlluminance = glm::vec3(12.0f, 11.5f, 10.5f);
+  inputs.ambientTop = glm::vec3(0.45f, 0.6f, 0.95f);
+  inputs.ambientBottom = glm::vec3(0.3f, 0.32f, 0.35f);
+  inputs.groundAlbedo = kGrassAlbedo;  // cloud bases are lit from below by the grass
+  inputs.timeSeconds = frame / 30.0;
+  inputs.frameIndex = static_cast<std::uint64_t>(frame);
+  return inputs;
+}
+
+void recordShadowMapReadback(VkCommandBuffer cmd, VkImage map, const ShadowReadback& readback) {
+  imageBarrier(cmd, map, VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_GENERAL,
+               VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
+               VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT, VK_PIPELINE_STAGE_2_TRANSFER_BIT,
+               VK_ACCESS_2_TRANSFER_READ_BIT);
+  VkBufferImageCopy mapRegion{};
+  mapRegion.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
+  mapRegion.imageExtent = {readback.extent.width, readback.extent.height, 1};
+  vkCmdCopyImageToBuffer(cmd, map, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, readback.buffer.buffer, 1,
+                         &mapRegion);
+  // Back to GENERAL, where the module keeps its outputs between frames, visible to how it
+  // reads them (as storage and sampled images) and writes them.
+  imageBarrier(cmd, map, VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
+               VK_IMAGE_LAYOUT_GENERAL, VK_PIPELINE_STAGE_2_TRANSFER_BIT,
+               VK_ACCESS_2_TRANSFER_READ_BIT, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
+               VK_ACCESS_2_SHADER_STORAGE_READ_BIT | VK_ACCESS_2_SHADER_SAMPLED_READ_BIT |
+                   VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT);
+}
+
+GroundShadow readGroundShadow(const ShadowReadback& readback,
+                              const clouds::ShadowMapParameters& parameters) {
+  GroundShadow shadow;
+  shadow.width = readback.extent.width;
+  shadow.height = readback.extent.height;
+  shadow.parameters = parameters;
+  const auto* halves = static_cast<const std::uint16_t*>(readback.buffer.mapped);
+  shadow.texels.resize(std::size_t{shadow.width} * shadow.height);
+  for (std::size_t i = 0; i < shadow.texels.size(); ++i) {
+    shadow.texels[i] =
+        glm::vec4(glm::unpackHalf1x16(halves[4 * i]), glm::unpackHalf1x16(halves[4 * i + 1]),
+                  glm::unpackHalf1x16(halves[4 * i + 2]), glm::unpackHalf1x16(halves[4 * i + 3]));
   }
+  return shadow;
+}
 
-  VkCommandPool pool = VK_NULL_HANDLE;
-  VkCommandPoolCreateInfo poolInfo{VK_STRUCTURE_TYPE_COMMAND_POOL_CREATE_INFO};
-  poolInfo.flags = VK_COMMAND_POOL_CREATE_RESET_COMMAND_BUFFER_BIT;
-  poolInfo.queueFamilyIndex = gpu.queueFamily;
-  vkCheck(vkCreateCommandPool(gpu.device, &poolInfo, nullptr, &pool), "vkCreateCommandPool");
-  VkCommandBuffer cmd = VK_NULL_HANDLE;
-  VkCommandBufferAllocateInfo cmdInfo{VK_STRUCTURE_TYPE_COMMAND_BUFFER_ALLOCATE_INFO};
-  cmdInfo.commandPool = pool;
-  cmdInfo.commandBufferCount = 1;
-  vkCheck(vkAllocateCommandBuffers(gpu.device, &cmdInfo, &cmd), "vkAllocateCommandBuffers");
-  VkFence fence = VK_NULL_HANDLE;
-  VkFenceCreateInfo fenceInfo{VK_STRUCTURE_TYPE_FENCE_CREATE_INFO};
-  vkCheck(vkCreateFence(gpu.device, &fenceInfo, nullptr, &fence), "vkCreateFence");
+// The clouds' shadow first, read back: the host lights its scene through it (on the CPU,
+// ground_shadow.h), then uploads that colour in the frame's submission. A GPU host would read
+// the map in its own shaders instead (vkfx/cloud_shadow.h), in the same submission.
+bool lightSceneThroughCloudShadow(Host& host, clouds::Context& clouds,
+                                  const clouds::Settings& settings, clouds::FrameInputs& inputs,
+                                  clouds::Error* error) {
+  beginRecording(host.submission);
+  inputs.commandBuffer = host.submission.cmd;
+  if (!clouds.dispatchShadowMap(inputs, settings, error)) return false;
+  recordShadowMapReadback(host.submission.cmd, clouds.outputs().shadowMap.image,
+                          host.shadowReadback);
+  submitAndWait(host.gpu, host.submission);
+  const GroundShadow shadow =
+      readGroundShadow(host.shadowReadback, clouds.outputs().shadowParameters);
+  Scene& scene = host.scene;
+  buildScene(scene.camera, host.options.extent, scene.sun, &shadow, scene.depth, scene.colour);
+  std::memcpy(host.images.colourUpload.mapped, scene.colour.data(),
+              pixelCount(host.options.extent) * 8);
+  return true;
+}
 
-  // One frame per submission, waited for before the next (maxFramesInFlight = 1): the scene's
-  // colour is uploaded afresh, then the clouds are dispatched and composited over it.
+VkBufferImageCopy wholeImage(VkImageAspectFlags aspect, VkExtent2D extent) {
   VkBufferImageCopy region{};
+  region.imageSubresource = {aspect, 0, 0, 1};
   region.imageExtent = {extent.width, extent.height, 1};
-  const auto beginRecording = [&] {
-    VkCommandBufferBeginInfo begin{VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO};
-    begin.flags = VK_COMMAND_BUFFER_USAGE_ONE_TIME_SUBMIT_BIT;
-    vkCheck(vkBeginCommandBuffer(cmd, &begin), "vkBeginCommandBuffer");
-  };
-  const auto submitAndWait = [&] {
-    vkCheck(vkEndCommandBuffer(cmd), "vkEndCommandBuffer");
-    VkSubmitInfo submit{VK_STRUCTURE_TYPE_SUBMIT_INFO};
-    submit.commandBufferCount = 1;
-    submit.pCommandBuffers = &cmd;
-    vkCheck(vkQueueSubmit(gpu.queue, 1, &submit, fence), "vkQueueSubmit");
-    vkCheck(vkWaitForFences(gpu.device, 1, &fence, VK_TRUE, UINT64_MAX), "vkWaitForFences");
-    vkCheck(vkResetFences(gpu.device, 1, &fence), "vkResetFences");
-  };
-  const auto fail = [&](const clouds::Error& e) {
-    std::fprintf(stderr, "minimal_host: %s (%s)\n", e.message.c_str(),
-                 clouds::errorCodeName(e.code));
-    return 1;
-  };
-  for (int frame = 0; frame < frames; ++frame) {
-    clouds::FrameInputs inputs;
-    inputs.renderExtent = extent;
-    inputs.depthView = depth.view;
-    inputs.depthLayout = VK_IMAGE_LAYOUT_DEPTH_READ_ONLY_OPTIMAL;
-    inputs.view = viewMatrix(camera);
-    inputs.projection = projectionMatrix(camera, float(extent.width) / float(extent.height));
-    inputs.cameraPosition = glm::dvec3(camera.position);
-    inputs.sunDirection = sun;
-    inputs.sunIlluminance = glm::vec3(12.0f, 11.5f, 10.5f);
-    inputs.ambientTop = glm::vec3(0.45f, 0.6f, 0.95f);
-    inputs.ambientBottom = glm::vec3(0.3f, 0.32f, 0.35f);
-    inputs.groundAlbedo = kGrassAlbedo;  // cloud bases are lit from below by the grass
-    inputs.timeSeconds = frame / 30.0;
-    inputs.frameIndex = static_cast<std::uint64_t>(frame);
+  return region;
+}
 
-    if (settings.shadowCascades > 0) {
-      // The clouds' shadow first, read back: the host lights its scene through it (on the CPU,
-      // ground_shadow.h), then uploads that colour below. A GPU host would read the map in its
-      // own shaders instead (vkfx/cloud_shadow.h), in the same submission.
-      beginRecording();
-      inputs.commandBuffer = cmd;
-      if (!clouds->dispatchShadowMap(inputs, settings, &error)) return fail(error);
-      const VkImage map = clouds->outputs().shadowMap.image;
-      imageBarrier(cmd, map, VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_GENERAL,
-                   VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
-                   VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT, VK_PIPELINE_STAGE_2_TRANSFER_BIT,
-                   VK_ACCESS_2_TRANSFER_READ_BIT);
-      VkBufferImageCopy mapRegion{};
-      mapRegion.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
-      mapRegion.imageExtent = {shadowExtent.width, shadowExtent.height, 1};
-      vkCmdCopyImageToBuffer(cmd, map, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, shadowReadback.buffer,
-                             1, &mapRegion);
-      // Back to GENERAL, where the module keeps its outputs between frames, visible to how it
-      // reads them (as storage and sampled images) and writes them.
-      imageBarrier(cmd, map, VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
-                   VK_IMAGE_LAYOUT_GENERAL, VK_PIPELINE_STAGE_2_TRANSFER_BIT,
-                   VK_ACCESS_2_TRANSFER_READ_BIT, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
-                   VK_ACCESS_2_SHADER_STORAGE_READ_BIT | VK_ACCESS_2_SHADER_SAMPLED_READ_BIT |
-                       VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT);
-      submitAndWait();
-      GroundShadow shadow;
-      shadow.width = shadowExtent.width;
-      shadow.height = shadowExtent.height;
-      shadow.parameters = clouds->outputs().shadowParameters;
-      const auto* halves = static_cast<const std::uint16_t*>(shadowReadback.mapped);
-      shadow.texels.resize(std::size_t{shadow.width} * shadow.height);
-      for (std::size_t i = 0; i < shadow.texels.size(); ++i) {
-        shadow.texels[i] = glm::vec4(
-            glm::unpackHalf1x16(halves[4 * i]), glm::unpackHalf1x16(halves[4 * i + 1]),
-            glm::unpackHalf1x16(halves[4 * i + 2]), glm::unpackHalf1x16(halves[4 * i + 3]));
-      }
-      buildScene(camera, extent, sun, &shadow, depthValues, colourValues);
-      std::memcpy(colourUpload.mapped, colourValues.data(), pixels * 8);
-    }
+// The depth never changes: it is uploaded once, then stays readable by the module.
+void recordDepthUpload(VkCommandBuffer cmd, const HostImages& images, VkExtent2D extent) {
+  const VkBufferImageCopy region = wholeImage(VK_IMAGE_ASPECT_DEPTH_BIT, extent);
+  imageBarrier(cmd, images.depth.image, VK_IMAGE_ASPECT_DEPTH_BIT, VK_IMAGE_LAYOUT_UNDEFINED,
+               VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, VK_PIPELINE_STAGE_2_NONE, 0,
+               VK_PIPELINE_STAGE_2_TRANSFER_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT);
+  vkCmdCopyBufferToImage(cmd, images.depthUpload.buffer, images.depth.image,
+                         VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1, &region);
+  imageBarrier(cmd, images.depth.image, VK_IMAGE_ASPECT_DEPTH_BIT,
+               VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, VK_IMAGE_LAYOUT_DEPTH_READ_ONLY_OPTIMAL,
+               VK_PIPELINE_STAGE_2_TRANSFER_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT,
+               VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_SHADER_SAMPLED_READ_BIT);
+}
 
-    beginRecording();
-    inputs.commandBuffer = cmd;
-    if (frame == 0) {
-      region.imageSubresource = {VK_IMAGE_ASPECT_DEPTH_BIT, 0, 0, 1};
-      imageBarrier(cmd, depth.image, VK_IMAGE_ASPECT_DEPTH_BIT, VK_IMAGE_LAYOUT_UNDEFINED,
-                   VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, VK_PIPELINE_STAGE_2_NONE, 0,
-                   VK_PIPELINE_STAGE_2_TRANSFER_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT);
-      vkCmdCopyBufferToImage(cmd, depthUpload.buffer, depth.image,
-                             VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1, &region);
-      imageBarrier(cmd, depth.image, VK_IMAGE_ASPECT_DEPTH_BIT,
-                   VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, VK_IMAGE_LAYOUT_DEPTH_READ_ONLY_OPTIMAL,
-                   VK_PIPELINE_STAGE_2_TRANSFER_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT,
-                   VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_SHADER_SAMPLED_READ_BIT);
-    }
-    // The colour: the scene afresh, then GENERAL for the module's compute shaders.
-    region.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
-    imageBarrier(cmd, colour.image, VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_UNDEFINED,
-                 VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, VK_PIPELINE_STAGE_2_TRANSFER_BIT,
-                 VK_ACCESS_2_TRANSFER_READ_BIT, VK_PIPELINE_STAGE_2_TRANSFER_BIT,
-                 VK_ACCESS_2_TRANSFER_WRITE_BIT);
-    vkCmdCopyBufferToImage(cmd, colourUpload.buffer, colour.image,
-                           VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1, &region);
-    imageBarrier(cmd, colour.image, VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
-                 VK_IMAGE_LAYOUT_GENERAL, VK_PIPELINE_STAGE_2_TRANSFER_BIT,
-                 VK_ACCESS_2_TRANSFER_WRITE_BIT, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
-                 VK_ACCESS_2_SHADER_STORAGE_READ_BIT | VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT);
+// The colour: the scene afresh, then GENERAL for the module's compute shaders.
+void recordColourUpload(VkCommandBuffer cmd, const HostImages& images, VkExtent2D extent) {
+  const VkBufferImageCopy region = wholeImage(VK_IMAGE_ASPECT_COLOR_BIT, extent);
+  imageBarrier(cmd, images.colour.image, VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_UNDEFINED,
+               VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, VK_PIPELINE_STAGE_2_TRANSFER_BIT,
+               VK_ACCESS_2_TRANSFER_READ_BIT, VK_PIPELINE_STAGE_2_TRANSFER_BIT,
+               VK_ACCESS_2_TRANSFER_WRITE_BIT);
+  vkCmdCopyBufferToImage(cmd, images.colourUpload.buffer, images.colour.image,
+                         VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1, &region);
+  imageBarrier(cmd, images.colour.image, VK_IMAGE_ASPECT_COLOR_BIT,
+               VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, VK_IMAGE_LAYOUT_GENERAL,
+               VK_PIPELINE_STAGE_2_TRANSFER_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT,
+               VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
+               VK_ACCESS_2_SHADER_STORAGE_READ_BIT | VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT);
+}
 
-    if (withClouds && (!clouds->dispatch(inputs, settings, &error) ||
-                       !clouds->composite(cmd, colour.view, extent, &error))) {
-      return fail(error);
-    }
+void recordColourReadback(VkCommandBuffer cmd, const HostImages& images, VkExtent2D extent) {
+  const VkBufferImageCopy region = wholeImage(VK_IMAGE_ASPECT_COLOR_BIT, extent);
+  imageBarrier(cmd, images.colour.image, VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_GENERAL,
+               VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
+               VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT, VK_PIPELINE_STAGE_2_TRANSFER_BIT,
+               VK_ACCESS_2_TRANSFER_READ_BIT);
+  vkCmdCopyImageToBuffer(cmd, images.colour.image, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
+                         images.readback.buffer, 1, &region);
+}
 
-    imageBarrier(cmd, colour.image, VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_GENERAL,
-                 VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
-                 VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT, VK_PIPELINE_STAGE_2_TRANSFER_BIT,
-                 VK_ACCESS_2_TRANSFER_READ_BIT);
-    vkCmdCopyImageToBuffer(cmd, colour.image, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, readback.buffer,
-                           1, &region);
-    submitAndWait();
+// One frame: with a shadow map, the clouds' shadow lights the scene first; then one submission
+// uploads the scene, dispatches the clouds, composites them over it and reads the colour back.
+bool renderFrame(Host& host, clouds::Context& clouds, const clouds::Settings& settings, int frame,
+                 clouds::Error* error) {
+  clouds::FrameInputs inputs = frameInputs(host, frame);
+  if (settings.shadowCascades > 0 &&
+      !lightSceneThroughCloudShadow(host, clouds, settings, inputs, error)) {
+    return false;
   }
+  const VkExtent2D extent = host.options.extent;
+  const VkCommandBuffer cmd = host.submission.cmd;
+  beginRecording(host.submission);
+  inputs.commandBuffer = cmd;
+  if (frame == 0) recordDepthUpload(cmd, host.images, extent);
+  recordColourUpload(cmd, host.images, extent);
+  if (host.options.withClouds && (!clouds.dispatch(inputs, settings, error) ||
+                                  !clouds.composite(cmd, host.images.colour.view, extent, error))) {
+    return false;
+  }
+  recordColourReadback(cmd, host.images, extent);
+  submitAndWait(host.gpu, host.submission);
+  return true;
+}
 
-  const bool written =
-      writePpm(outputPath, extent, static_cast<const std::uint16_t*>(readback.mapped));
-  if (written) std::printf("minimal_host: wrote %s\n", outputPath.c_str());
+// --- Teardown --------------------------------------------------------------------------------
 
-  // Teardown: the GPU is idle (fence waited), so the module can go first.
-  clouds.reset();
-  vkDestroyFence(gpu.device, fence, nullptr);
-  vkDestroyCommandPool(gpu.device, pool, nullptr);
-  for (HostBuffer* b : {&depthUpload, &colourUpload, &readback, &shadowReadback}) {
+// Everything main() made but the module, which goes first: the GPU is idle (fence waited).
+void destroyHost(Host& host) {
+  const Gpu& gpu = host.gpu;
+  vkDestroyFence(gpu.device, host.submission.fence, nullptr);
+  vkDestroyCommandPool(gpu.device, host.submission.pool, nullptr);
+  HostImages& images = host.images;
+  for (HostBuffer* b :
+       {&images.depthUpload, &images.colourUpload, &images.readback, &host.shadowReadback.buffer}) {
     vkDestroyBuffer(gpu.device, b->buffer, nullptr);
     vkFreeMemory(gpu.device, b->memory, nullptr);
   }
-  for (Image* image : {&depth, &colour}) {
+  for (Image* image : {&images.depth, &images.colour}) {
     vkDestroyImageView(gpu.device, image->view, nullptr);
     vkDestroyImage(gpu.device, image->image, nullptr);
     vkFreeMemory(gpu.device, image->memory, nullptr);
@@ -635,6 +776,39 @@ int main(int argc, char** argv) {
     destroy(gpu.instance, gpu.messenger, nullptr);
   }
   vkDestroyInstance(gpu.instance, nullptr);
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  Host host;
+  if (const int badCommandLine = parseOptions(argc, argv, host.options)) return badCommandLine;
+  const VkExtent2D extent = host.options.extent;
+  host.gpu = createGpu(host.options.validation);
+  host.images = createHostImages(host.gpu, extent);
+  host.scene = buildUnshadowedScene(extent, host.images);
+
+  clouds::Error error;
+  std::unique_ptr<clouds::Context> clouds = createClouds(host.gpu, host.options, &error);
+  const clouds::Settings settings = cloudSettings(host.options);
+  host.shadowReadback = createShadowReadback(host.gpu, settings);
+  if (!clouds || !clouds->prepare(settings, extent, &error)) return reportError(error);
+  host.submission = createSubmission(host.gpu);
+
+  // One frame per submission, waited for before the next (maxFramesInFlight = 1): the scene's
+  // colour is uploaded afresh, then the clouds are dispatched and composited over it.
+  for (int frame = 0; frame < host.options.frames; ++frame) {
+    if (!renderFrame(host, *clouds, settings, frame, &error)) return reportError(error);
+  }
+
+  const std::string& outputPath = host.options.outputPath;
+  const bool written =
+      writePpm(outputPath, extent, static_cast<const std::uint16_t*>(host.images.readback.mapped));
+  if (written) std::printf("minimal_host: wrote %s\n", outputPath.c_str());
+
+  // Teardown: the GPU is idle (fence waited), so the module can go first.
+  clouds.reset();
+  destroyHost(host);
   if (!written) {
     std::fprintf(stderr, "minimal_host: cannot write %s\n", outputPath.c_str());
     return 1;
