@@ -108,9 +108,10 @@ struct CreateInfo {
 // GPU time of one of the module's passes in a frame (CreateInfo::passTimings). A frame has, in
 // recording order: "noise" (its first frame only), "weather" (frames that make or resample a
 // weather map), "shadow map" (dispatchShadowMap() with cascades due), "terrain shadow" (the
-// same, with FrameInputs::terrain), "sky ambient" (with
-// FrameInputs::skyView or groundAlbedo), then either "clear sky" (nothing to march) or "scene
-// distance", "march", "reconstruct", "upsample".
+// same, with FrameInputs::terrain), "sky ambient" (with FrameInputs::skyView or groundAlbedo),
+// then either "clear sky" (nothing to march; then "god rays" too, with godRaySamples > 0) or
+// "scene distance", "march", "lightning" (with this frame's flashes), "reconstruct", "god rays"
+// (godRaySamples > 0), "upsample", "lightning bolts" (with this frame's bolts).
 struct PassTiming {
   const char* name = "";  // static storage: valid for the life of the program
   double milliseconds = 0.0;
@@ -205,8 +206,7 @@ struct Settings {
   float phaseBackwardG = -0.3f;      // [-1, 1] backward HG lobe
   float phaseBackwardWeight = 0.3f;  // [0, 1] blend towards the backward lobe
   float silverIntensity = 0.0f;      // [0, 10] the seeds' silver lining: a sharp forward lobe
-                                     //   max()ed with the two, renormalised (0: off; see the
-                                     //   README for what it costs the reflected light)
+                                     //   max()ed with the two, renormalised (0: off)
   float silverSpread = 0.05f;        // [0, 0.99] its width: its HG g is 0.99 - spread
   bool multipleScattering = true;    // octave approximation of multiple scattering
   std::uint32_t multipleScatteringOctaves = 6;  // [1, 8]
@@ -242,15 +242,14 @@ struct Settings {
   // angle), so distant clouds alias less; nearer ones keep level 0. Off: level 0 everywhere,
   // what the Reference does (its rays move inside their pixels instead). The density remaps the
   // noise against the coverage, and the remap of averaged noise is not the average of the
-  // remapped noise: from 1 texel a pixel, far clouds flicker half as much but High loses 5.7 dB
-  // against the Reference above the layer; from 4 (the default) it keeps its accuracy.
+  // remapped noise: fewer texels a pixel flicker less but lose accuracy; 4 (the default) keeps
+  // it.
   bool noiseLevelOfDetail = true;
   float noiseTexelsPerPixel = 4.0f;  // [1, 64] level-0 texels a pixel covers where LOD starts
   // Light reuse: of two cloudy view samples in a row, the second takes the first's optical
   // depth towards the sun instead of marching its own (on every other step of the march, the
   // same steps for every ray, so that on a CPU's 8-wide lanes whole groups skip the light
-  // samples together). Measured at High (640x360): the benchmark's pooled PSNR unchanged (per
-  // view -0.4 to +0.9 dB), 3% less time along its fly-through; the Reference marches every
+  // samples together). The error is first order in the step; the Reference marches every
   // sample's own.
   bool lightEveryOtherStep = true;
   Jitter jitter = Jitter::BayerHalton;
@@ -276,8 +275,8 @@ struct Settings {
   // slowly turning view converges to full-resolution detail (two own samples per output pixel
   // after 2 x updateInterval / traceScale^2 frames: 128 at High) instead of staying at the
   // trace resolution. Where the history is uncertain it falls back to the trace-resolution
-  // reconstruction. Costs a second pair of output-resolution history images (16 bytes per
-  // pixel each) and about doubles the upsample pass (+2 to 3 ms a frame at 640x360 on lavapipe).
+  // reconstruction. Costs two output-resolution history images (8 bytes per pixel each) and a
+  // dearer upsample pass, which reprojects them.
   // Sharpest with a still camera and still clouds; when anything moves (the camera, or the
   // clouds' detail with the wind) the own samples are reprojected every frame and clamped to
   // this frame's trace neighbourhood, which keeps less of the detail.
@@ -305,9 +304,9 @@ struct Settings {
   float relightResetRatio = 0.2f;              // [0.001, 10] relative change of sun illuminance
 
   // --- Cloud depth output (Outputs::depth) ---------------------------------------------------
-  // false: a host that reads only the radiance output saves the depth output's stores (at
-  // 640x360 on lavapipe, about 1.3 ms of a 5.6 ms upsample at Medium) and its memory; the
-  // depths are still used inside (haze, reprojection) and the radiance is the same to the bit.
+  // false: a host that reads only the radiance output saves the depth output's stores and its
+  // memory; the depths are still used inside (haze, reprojection) and the radiance is the same
+  // to the bit.
   // Outputs::depth is then null, unless lightningBoltSegments > 0 (the bolts' pass reads it).
   bool depthOutput = true;
 
