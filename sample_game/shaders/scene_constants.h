@@ -10,20 +10,20 @@ SHADER_NAMESPACE_BEGIN
 
 // Per-frame lighting and camera for the scene passes (a uniform buffer).
 struct SceneFrame {
-  mat4 viewProjection;       // camera-relative world -> clip (reversed-Z)
-  vec4 cameraPosition;       // xyz world position (m), w unused
-  vec4 cameraRight;          // xyz; w = tan(horizontal fov / 2)
-  vec4 cameraUp;             // xyz; w = tan(vertical fov / 2)
-  vec4 cameraForward;        // xyz; w unused
-  vec4 sunDirection;         // xyz towards the sun; w = sun disc radiance scale
-  vec4 sunIlluminance;       // rgb
-  vec4 skyZenith;            // rgb sky radiance straight up
-  vec4 skyHorizon;           // rgb at the horizon
-  vec4 skyGround;            // rgb bounced light from below
-  vec4 fog;                  // x density (1/m) of the fog alternative; y the aerial perspective's
-                             //   range (m), z its slices (vkfx/aerial_perspective.glsl); w unused
-  vec4 sunAboveAir;          // rgb the sun's illuminance above the air (the haze's radiance scale)
-  uvec4 extent;              // xy output size (px)
+  mat4 viewProjection;  // camera-relative world -> clip (reversed-Z)
+  vec4 cameraPosition;  // xyz world position (m), w unused
+  vec4 cameraRight;     // xyz; w = tan(horizontal fov / 2)
+  vec4 cameraUp;        // xyz; w = tan(vertical fov / 2)
+  vec4 cameraForward;   // xyz; w unused
+  vec4 sunDirection;    // xyz towards the sun; w = sun disc radiance scale
+  vec4 sunIlluminance;  // rgb
+  vec4 skyZenith;       // rgb sky radiance straight up
+  vec4 skyHorizon;      // rgb at the horizon
+  vec4 skyGround;       // rgb bounced light from below
+  vec4 fog;             // x density (1/m) of the fog alternative; y the aerial perspective's
+                        //   range (m), z its slices (fxcontracts/aerial_perspective.glsl); w unused
+  vec4 sunAboveAir;     // rgb the sun's illuminance above the air (the haze's radiance scale)
+  uvec4 extent;         // xy output size (px)
   TerrainMaterials terrain;  // rock and snow over the terrain mesh's colours
   vec4 sunlightMap;          // the terrain's sunlight map: xy the camera's place in it ([0, 1]),
                              //   zw its reciprocal size (1/m) (terrain_sunlight_map.h)

@@ -2,19 +2,22 @@
 // The terrain's sunlight map (compute; terrain_sunlight.h): one invocation per texel of the
 // rows this frame refreshes. Each texel is the terrain's surface at the heightfield texel's
 // centre; it reads the clouds' transmittance and the terrain's own shadow there from the cloud
-// shadow map, as any receiver does (vkfx/cloud_shadow.h), and stores their product.
-// Inputs: 0 the heightfield (R32F or R16F altitudes, m), 1 the cloud shadow map, 2 its
-// parameters (this frame's camera); push constants TerrainSunlightConstants. Output: 3 the map.
+// shadow map, as any receiver does (fxcontracts/cloud_shadow.h), and stores their product.
+// Inputs (bindings.h): the heightfield (R32F or R16F altitudes, m), the cloud shadow map, its
+// parameters (this frame's camera); push constants TerrainSunlightConstants. Output: the map.
 #extension GL_GOOGLE_include_directive : require
+#include "bindings.h"
 #include "terrain_sunlight_map.h"
 
 layout(local_size_x = kTerrainSunlightGroupSize, local_size_y = kTerrainSunlightGroupSize) in;
 
-layout(binding = 0) uniform sampler2D heightfield;
-#define CLOUD_SHADOW_MAP_BINDING 1
-#include "vkfx/cloud_shadow_sampled.glsl"
-layout(binding = 2, std140) uniform CloudShadow { CloudShadowParameters cloudShadow; };
-layout(binding = 3, r16f) uniform writeonly image2D sunlight;
+layout(binding = kSunlightHeightfieldBinding) uniform sampler2D heightfield;
+#define CLOUD_SHADOW_MAP_BINDING kSunlightCloudShadowBinding
+#include "fxcontracts/cloud_shadow_sampled.glsl"
+layout(binding = kSunlightShadowParametersBinding, std140) uniform CloudShadow {
+  CloudShadowParameters cloudShadow;
+};
+layout(binding = kSunlightMapBinding, r16f) uniform writeonly image2D sunlight;
 layout(push_constant) uniform Constants { TerrainSunlightConstants c; };
 
 void main() {

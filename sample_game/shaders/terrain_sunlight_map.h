@@ -1,7 +1,7 @@
 // The terrain's sunlight map, shared by its compute shader and the C++ that places it: per
 // texel of the terrain's heightfield (same grid, same texel centres), the share of the sun that
 // reaches the surface there past the clouds and past the terrain itself, both read from the
-// clouds' shadow map (vkfx/cloud_shadow.h). The terrain then lights each fragment with one
+// clouds' shadow map (fxcontracts/cloud_shadow.h). The terrain then lights each fragment with one
 // filtered read of it instead of the shadow map's cascade selection per fragment and per vertex.
 #ifndef SAMPLE_SHADERS_TERRAIN_SUNLIGHT_MAP_H
 #define SAMPLE_SHADERS_TERRAIN_SUNLIGHT_MAP_H

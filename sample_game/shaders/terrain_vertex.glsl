@@ -10,10 +10,11 @@
 // 0.3 ms at 640x360 on lavapipe). Positions are in world metres; the camera position is
 // subtracted before projecting so precision stays where the viewer is. Reversed-Z depth.
 #extension GL_GOOGLE_include_directive : require
+#include "bindings.h"
 #include "scene_constants.h"
-#include "vkfx/lightning_light.h"
+#include "fxcontracts/lightning_light.h"
 
-layout(binding = 0, std140) uniform Frame { SceneFrame frame; };
+layout(binding = kTerrainFrameBinding, std140) uniform Frame { SceneFrame frame; };
 layout(location = 0) in vec3 inPosition;
 layout(location = 1) in vec3 inNormal;
 layout(location = 2) in vec3 inColor;
@@ -27,8 +28,8 @@ layout(location = 4) out vec4 outFlashLight;
 layout(constant_id = 0) const bool kLightning = false;
 
 #ifdef TERRAIN_HAZED
-#include "vkfx/aerial_perspective.glsl"
-layout(binding = 1) uniform sampler3D aerialPerspective;
+#include "fxcontracts/aerial_perspective.glsl"
+layout(binding = kTerrainHazeBinding) uniform sampler3D aerialPerspective;
 layout(location = 3) out vec4 outHaze;  // rgb in-scattered (kcd/m^2), a transmittance
 #endif
 
@@ -38,8 +39,8 @@ void main() {
   outRelative = relative;
   outNormal = inNormal;
   outColor = inColor;
-  // A lightning flash lights the ground (vkfx/lightning_light.h): directly, the glowing core of
-  // the cloud around it as a sphere of its radiance, whose irradiance at distance d is
+  // A lightning flash lights the ground (fxcontracts/lightning_light.h): directly, the glowing
+  // core of the cloud around it as a sphere of its radiance, whose irradiance at distance d is
   // pi L (core / d)^2 (Lambert: albedo / pi of it); and from the whole sky, the cloud the core
   // lights (terrain_fragment.glsl weighs each by the surface's normal).
   outFlashLight = vec4(0.0f);

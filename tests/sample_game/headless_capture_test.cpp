@@ -415,7 +415,7 @@ TEST(HeadlessCapture, GodRaysTakeTheShadowedHazeAwayTowardsTheSun) {
 }
 
 // Without an atmosphere there is no haze to mask: god rays fall back to a glow along the clear
-// paths towards the sun (vkfx/god_rays.h), which only adds light, most of it near the sun.
+// paths towards the sun (fxcontracts/god_rays.h), which only adds light, most of it near the sun.
 TEST(HeadlessCapture, WithoutHazeGodRaysGlowAroundTheSun) {
   const fs::path none = freshDir("no_glow");
   const fs::path glow = freshDir("glow");

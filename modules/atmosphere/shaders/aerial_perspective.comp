@@ -23,7 +23,7 @@ layout(binding = kBindingMultiScattering) uniform sampler2D multiScatteringLut;
 layout(binding = kBindingTarget, rgba16f) uniform writeonly image3D target;
 
 #define CLOUD_SHADOW_MAP_BINDING kBindingCloudShadow
-#include "vkfx/cloud_shadow_sampled.glsl"
+#include "fxcontracts/cloud_shadow_sampled.glsl"
 // Indexed like the uniforms (atmosphere_uniforms.glsl), read in place.
 layout(binding = kBindingCloudShadowParameters, std140) uniform CloudShadow {
   CloudShadowParameters cloudShadow[1];

@@ -3,14 +3,14 @@
 // depth is the far plane (or there is no depth: kSpecHasDepth 0) the sky (sky_radiance.glsl)
 // and the sun's disc with limb darkening seen through the air (clamped to maxRadiance, a
 // half-float target's range); elsewhere the aerial perspective at the pixel's distance
-// (vkfx/aerial_perspective.glsl), colour = colour * transmittance + in-scattering (Hillaire
+// (fxcontracts/aerial_perspective.glsl), colour = colour * transmittance + in-scattering (Hillaire
 // 2020). Everything times the sun's illuminance.
 // Inputs: uniforms, the sky-view LUT, the aerial-perspective froxels, the host's depth.
 // Output: the host's colour (RGBA16F storage, GENERAL).
 #extension GL_GOOGLE_include_directive : require
 #include "atmosphere_types.h"
 #include "atmosphere_model.h"
-#include "vkfx/aerial_perspective.glsl"
+#include "fxcontracts/aerial_perspective.glsl"
 
 layout(local_size_x = kWorkgroupSize2D, local_size_y = kWorkgroupSize2D) in;
 layout(constant_id = kSpecHasDepth) const uint kHasDepth = 1u;

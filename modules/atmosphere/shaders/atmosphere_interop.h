@@ -6,7 +6,7 @@
 #ifndef ATMOSPHERE_INTEROP_H
 #define ATMOSPHERE_INTEROP_H
 
-#include "vkfx/shader_interop.h"
+#include "fxcontracts/shader_interop.h"
 
 #ifdef __cplusplus
 #define ATMOSPHERE_MODEL_BEGIN  \

@@ -62,7 +62,7 @@ struct Medium {
   vec3 extinction;  // scattering and absorption (Mie, ozone)
 };
 
-VKFX_INLINE Medium sampleMedium(real altitude, IN(AtmosphereModel) a) {
+FX_INLINE Medium sampleMedium(real altitude, IN(AtmosphereModel) a) {
   const real h = max(altitude, 0.0);
   const real rayleighDensity = exp(-h / a.rayleighScaleHeight);
   const real mieDensity = exp(-h / a.mieScaleHeight);
@@ -76,12 +76,12 @@ VKFX_INLINE Medium sampleMedium(real altitude, IN(AtmosphereModel) a) {
   return m;
 }
 
-VKFX_INLINE real rayleighPhase(real cosTheta) {
+FX_INLINE real rayleighPhase(real cosTheta) {
   return 3.0 / (16.0 * kPi) * (1.0 + cosTheta * cosTheta);
 }
 
 // Cornette-Shanks: Henyey-Greenstein's shape with Rayleigh's (1 + cos^2), normalised.
-VKFX_INLINE real miePhase(real g, real cosTheta) {
+FX_INLINE real miePhase(real g, real cosTheta) {
   const real k = 3.0 / (8.0 * kPi) * (1.0 - g * g) / (2.0 + g * g);
   const real denominator = 1.0 + g * g - 2.0 * g * cosTheta;
   return k * (1.0 + cosTheta * cosTheta) / (denominator * sqrt(denominator));
@@ -92,7 +92,7 @@ VKFX_INLINE real miePhase(real g, real cosTheta) {
 // first intersection ahead, or -1 when there is none. The discriminant is in its
 // radius-difference form, (R - r)(R + r) + r^2 mu^2, which keeps float precision at planet
 // scale (r^2 (mu^2 - 1) + R^2 cancels catastrophically).
-VKFX_INLINE real raySphere(real r, real mu, real R) {
+FX_INLINE real raySphere(real r, real mu, real R) {
   const real discriminant = (R - r) * (R + r) + r * r * mu * mu;
   if (discriminant < 0.0) return -1.0;
   const real root = sqrt(discriminant);
@@ -103,7 +103,7 @@ VKFX_INLINE real raySphere(real r, real mu, real R) {
 }
 
 // Whether a ray from radius r with zenith cosine mu hits the ground.
-VKFX_INLINE bool rayHitsGround(real r, real mu, IN(AtmosphereModel) a) {
+FX_INLINE bool rayHitsGround(real r, real mu, IN(AtmosphereModel) a) {
   return mu < 0.0 && (a.bottomRadius - r) * (a.bottomRadius + r) + r * r * mu * mu >= 0.0;
 }
 
@@ -111,14 +111,14 @@ VKFX_INLINE bool rayHitsGround(real r, real mu, IN(AtmosphereModel) a) {
 // Texel centres on a texture of `size` texels: [0, 1] to [0.5 / size, 1 - 0.5 / size] and back.
 // (Hillaire's reference code maps [0, 1] with (u + 0.5 / size) * size / (size + 1), which is not
 // the inverse of the second function: its lookups land up to a texel off.)
-VKFX_INLINE real fromUnitToSubUv(real u, real size) {
+FX_INLINE real fromUnitToSubUv(real u, real size) {
   return 0.5 / size + u * ((size - 1.0) / size);
 }
-VKFX_INLINE real fromSubUvToUnit(real u, real size) {
+FX_INLINE real fromSubUvToUnit(real u, real size) {
   return (u - 0.5 / size) * (size / (size - 1.0));
 }
 
-VKFX_INLINE vec2 transmittanceUv(real r, real mu, IN(AtmosphereModel) a) {
+FX_INLINE vec2 transmittanceUv(real r, real mu, IN(AtmosphereModel) a) {
   const real top = a.topRadius;
   const real bottom = a.bottomRadius;
   const real horizon = sqrt((top - bottom) * (top + bottom));  // to the top, from the ground
@@ -130,7 +130,7 @@ VKFX_INLINE vec2 transmittanceUv(real r, real mu, IN(AtmosphereModel) a) {
   return vec2((d - dMin) / max(dMax - dMin, 1e-3), rho / horizon);
 }
 
-VKFX_INLINE void transmittanceParams(vec2 uv, IN(AtmosphereModel) a, OUT(real) r, OUT(real) mu) {
+FX_INLINE void transmittanceParams(vec2 uv, IN(AtmosphereModel) a, OUT(real) r, OUT(real) mu) {
   const real top = a.topRadius;
   const real bottom = a.bottomRadius;
   const real horizon = sqrt((top - bottom) * (top + bottom));
@@ -143,7 +143,7 @@ VKFX_INLINE void transmittanceParams(vec2 uv, IN(AtmosphereModel) a, OUT(real) r
   mu = clamp(mu, -1.0, 1.0);
 }
 
-VKFX_INLINE vec2 multiScatteringUv(real r, real muSun, IN(AtmosphereModel) a, real size) {
+FX_INLINE vec2 multiScatteringUv(real r, real muSun, IN(AtmosphereModel) a, real size) {
   const real m = clamp(muSun, -1.0, 1.0);
   const real u = 0.5 + 0.5 * sign(m) * sqrt(abs(m));
   const real v = clamp((r - a.bottomRadius) / (a.topRadius - a.bottomRadius), 0.0, 1.0);
@@ -151,8 +151,8 @@ VKFX_INLINE vec2 multiScatteringUv(real r, real muSun, IN(AtmosphereModel) a, re
 }
 
 // The inverse of multiScatteringUv: the altitude (m) and sun zenith cosine of a texel.
-VKFX_INLINE void multiScatteringParams(vec2 uv, real size, IN(AtmosphereModel) a,
-                                       OUT(real) altitude, OUT(real) muSun) {
+FX_INLINE void multiScatteringParams(vec2 uv, real size, IN(AtmosphereModel) a, OUT(real) altitude,
+                                     OUT(real) muSun) {
   const real t = clamp(fromSubUvToUnit(uv.x, size), 0.0, 1.0) * 2.0 - 1.0;
   muSun = sign(t) * t * t;
   altitude = clamp(fromSubUvToUnit(uv.y, size), 0.0, 1.0) * (a.topRadius - a.bottomRadius);
@@ -163,12 +163,12 @@ VKFX_INLINE void multiScatteringParams(vec2 uv, real size, IN(AtmosphereModel) a
 // that hit the ground, each with its texels crowded towards the horizon; u holds the azimuth
 // from the sun, crowded towards the sun (Hillaire 2020, section 5.3). Texture coordinates of a
 // view direction (its zenith cosine and the cosine of its azimuth from the sun's) and back.
-VKFX_INLINE real horizonDip(real r, IN(AtmosphereModel) a) {
+FX_INLINE real horizonDip(real r, IN(AtmosphereModel) a) {
   const real toHorizon = sqrt(max((r - a.bottomRadius) * (r + a.bottomRadius), 0.0));
   return acos(clamp(toHorizon / r, -1.0, 1.0));
 }
 
-VKFX_INLINE vec2 skyViewUv(real viewZenithCos, real lightViewCos, real beta, vec2 size) {
+FX_INLINE vec2 skyViewUv(real viewZenithCos, real lightViewCos, real beta, vec2 size) {
   const real zenithHorizonAngle = kPi - beta;
   const real viewZenith = acos(clamp(viewZenithCos, -1.0, 1.0));
   real v;
@@ -181,8 +181,8 @@ VKFX_INLINE vec2 skyViewUv(real viewZenithCos, real lightViewCos, real beta, vec
   return vec2(fromUnitToSubUv(u, size.x), fromUnitToSubUv(v, size.y));
 }
 
-VKFX_INLINE void skyViewParams(vec2 uv, real beta, vec2 size, OUT(real) viewZenithCos,
-                               OUT(real) lightViewCos) {
+FX_INLINE void skyViewParams(vec2 uv, real beta, vec2 size, OUT(real) viewZenithCos,
+                             OUT(real) lightViewCos) {
   const real u = clamp(fromSubUvToUnit(uv.x, size.x), 0.0, 1.0);
   const real v = clamp(fromSubUvToUnit(uv.y, size.y), 0.0, 1.0);
   const real zenithHorizonAngle = kPi - beta;
@@ -203,7 +203,7 @@ vec3 sampleMultiScattering(vec2 uv);
 // --- Integrals ---------------------------------------------------------------------------------
 // Optical depth from radius r along zenith cosine mu to the top of the atmosphere (midpoint
 // rule; the ray is assumed not to hit the ground). The transmittance LUT is exp(-this).
-VKFX_INLINE vec3 opticalDepthToTop(real r, real mu, uint samples, IN(AtmosphereModel) a) {
+FX_INLINE vec3 opticalDepthToTop(real r, real mu, uint samples, IN(AtmosphereModel) a) {
   const real pathLength = max(raySphere(r, mu, a.topRadius), 0.0);
   const real dt = pathLength / real(samples);
   vec3 depth = vec3(0.0);
@@ -218,7 +218,7 @@ VKFX_INLINE vec3 opticalDepthToTop(real r, real mu, uint samples, IN(AtmosphereM
 
 // The sun's transmittance from radius r with the sun at zenith cosine muSun, from the LUT, with
 // the planet's shadow.
-VKFX_INLINE vec3 sunTransmittance(real r, real muSun, IN(AtmosphereModel) a) {
+FX_INLINE vec3 sunTransmittance(real r, real muSun, IN(AtmosphereModel) a) {
   if (rayHitsGround(r, muSun, a)) return vec3(0.0);
   return sampleTransmittance(transmittanceUv(r, muSun, a));
 }
@@ -235,7 +235,7 @@ struct Scattering {
 const uint kPhaseIsotropic = 0u;   // the multiple-scattering LUT's second-order integral
 const uint kPhaseAtmosphere = 1u;  // Rayleigh and Mie
 
-VKFX_INLINE Scattering noScattering() {
+FX_INLINE Scattering noScattering() {
   Scattering s;
   s.luminance = vec3(0.0);
   s.transmittance = vec3(1.0);
@@ -246,9 +246,9 @@ VKFX_INLINE Scattering noScattering() {
 // Accumulates the segment [t0, t1] of the ray from `origin` along `direction` (unit) into `s`,
 // with `samples` samples at segment midpoints. Each step's in-scattering is integrated
 // analytically against the step's extinction (energy-conserving for any step length).
-VKFX_INLINE void scatterAlong(INOUT(Scattering) s, vec3 origin, vec3 direction, vec3 sun, real t0,
-                              real t1, uint samples, uint phaseMode, uint multipleScattering,
-                              real multiScatteringSize, IN(AtmosphereModel) a) {
+FX_INLINE void scatterAlong(INOUT(Scattering) s, vec3 origin, vec3 direction, vec3 sun, real t0,
+                            real t1, uint samples, uint phaseMode, uint multipleScattering,
+                            real multiScatteringSize, IN(AtmosphereModel) a) {
   if (t1 <= t0 || samples == 0u) return;
   const real cosTheta = dot(direction, sun);
   const real phaseR = rayleighPhase(cosTheta);
@@ -280,10 +280,10 @@ VKFX_INLINE void scatterAlong(INOUT(Scattering) s, vec3 origin, vec3 direction, 
 // The whole ray inside the atmosphere, from `origin` (planet-centred, inside or above it), up
 // to `maxDistance`, the ground or the top; with `ground`, the sunlit ground it ends on bounces
 // its light back (Lambertian).
-VKFX_INLINE Scattering integrateScattering(vec3 origin, vec3 direction, vec3 sun, real maxDistance,
-                                           uint samples, uint phaseMode, uint multipleScattering,
-                                           real multiScatteringSize, uint ground,
-                                           IN(AtmosphereModel) a) {
+FX_INLINE Scattering integrateScattering(vec3 origin, vec3 direction, vec3 sun, real maxDistance,
+                                         uint samples, uint phaseMode, uint multipleScattering,
+                                         real multiScatteringSize, uint ground,
+                                         IN(AtmosphereModel) a) {
   Scattering s = noScattering();
   real r = length(origin);
   real mu = dot(origin, direction) / r;
@@ -312,19 +312,19 @@ VKFX_INLINE Scattering integrateScattering(vec3 origin, vec3 direction, vec3 sun
 }
 
 // Sky-view LUT direction for its parameters: Y up at the camera, the sun in the XY plane.
-VKFX_INLINE vec3 skyViewDirection(real viewZenithCos, real lightViewCos) {
+FX_INLINE vec3 skyViewDirection(real viewZenithCos, real lightViewCos) {
   const real viewZenithSin = sqrt(max(1.0 - viewZenithCos * viewZenithCos, 0.0));
   const real lightViewSin = sqrt(max(1.0 - lightViewCos * lightViewCos, 0.0));
   return vec3(viewZenithSin * lightViewCos, viewZenithCos, viewZenithSin * lightViewSin);
 }
 
-VKFX_INLINE vec3 sunInSkyViewFrame(real sunZenithCos) {
+FX_INLINE vec3 sunInSkyViewFrame(real sunZenithCos) {
   return vec3(sqrt(max(1.0 - sunZenithCos * sunZenithCos, 0.0)), sunZenithCos, 0.0);
 }
 
 // The cosine of a world direction's azimuth from the sun's (the planet's up is +Y at the
 // camera); 1 when either is vertical.
-VKFX_INLINE real azimuthCosineFromSun(vec3 direction, vec3 sun) {
+FX_INLINE real azimuthCosineFromSun(vec3 direction, vec3 sun) {
   const vec2 d = vec2(direction.x, direction.z);
   const vec2 s = vec2(sun.x, sun.z);
   const real lengths = length(d) * length(s);
@@ -337,8 +337,8 @@ VKFX_INLINE real azimuthCosineFromSun(vec3 direction, vec3 sun) {
 // directions on the sphere it averages the second order L2 (single scattering with the
 // isotropic phase, the sunlit ground bouncing) and f_ms, the fraction the air around re-scatters;
 // Psi = L2 / (1 - f_ms) sums the geometric series of all orders.
-VKFX_INLINE vec3 multipleScatteringTexel(vec2 uv, real size, uint directions, uint samples,
-                                         IN(AtmosphereModel) a) {
+FX_INLINE vec3 multipleScatteringTexel(vec2 uv, real size, uint directions, uint samples,
+                                       IN(AtmosphereModel) a) {
   real altitude = 0.0;
   real muSun = 0.0;
   multiScatteringParams(uv, size, a, altitude, muSun);
@@ -375,7 +375,7 @@ VKFX_INLINE vec3 multipleScatteringTexel(vec2 uv, real size, uint directions, ui
 // dot(a - b, a - b) / 2. Limb darkening after Neckel & Labs' linear law with coefficient 0.6,
 // normalised so the disc integrates to 1; the distance from the centre in disc radii is
 // sqrt(versine / radiusVersine), exact to (angular radius)^2 / 12.
-VKFX_INLINE real sunDiscRadiance(real versine, real radiusVersine) {
+FX_INLINE real sunDiscRadiance(real versine, real radiusVersine) {
   if (versine > radiusVersine) return 0.0;
   const real solidAngle = 2.0 * kPi * radiusVersine;
   const real mu = sqrt(max(1.0 - versine / radiusVersine, 0.0));

@@ -5,9 +5,9 @@
 #ifndef ATMOSPHERE_TYPES_H
 #define ATMOSPHERE_TYPES_H
 
-#include "vkfx/shader_interop.h"
+#include "fxcontracts/shader_interop.h"
 
-VKFX_SHADER_BEGIN(atmosphere::shader)
+FX_SHADER_BEGIN(atmosphere::shader)
 
 // --- Sizes ----------------------------------------------------------------------------------
 const uint kWorkgroupSize2D = 8u;    // 8 x 8 threads for image passes
@@ -97,7 +97,7 @@ struct SkyLighting {
 
 // Push constants of the LUT passes that need none: none. Of apply.comp: none (uniforms).
 
-VKFX_SHADER_END
+FX_SHADER_END
 
 #ifdef __cplusplus
 #include <cstddef>

@@ -9,7 +9,7 @@
 #include "cloud_math.h"
 #include "cloud_types.h"
 
-VKFX_SHADER_BEGIN(clouds::shader)
+FX_SHADER_BEGIN(clouds::shader)
 
 struct WeatherSample {
   float coverage;  // [0, 1]: fraction of the sky this column can fill
@@ -18,7 +18,7 @@ struct WeatherSample {
 };
 
 // Height-gradient ramps (up start, up end, down start, down end) as fractions of the layer.
-VKFX_INLINE vec4 typeProfile(float type) {
+FX_INLINE vec4 typeProfile(float type) {
   const vec4 stratus = vec4(0.0f, 0.06f, 0.16f, 0.28f);
   const vec4 stratocumulus = vec4(0.02f, 0.16f, 0.42f, 0.62f);
   const vec4 cumulus = vec4(0.0f, 0.12f, 0.72f, 1.0f);
@@ -28,7 +28,7 @@ VKFX_INLINE vec4 typeProfile(float type) {
 }
 
 // Probability of cloud at `heightFraction` (0 = layer bottom, 1 = top) for a cloud type.
-VKFX_INLINE float heightGradient(float heightFraction, float type) {
+FX_INLINE float heightGradient(float heightFraction, float type) {
   const vec4 r = typeProfile(type);
   return remapClamped(heightFraction, r.x, r.y, 0.0f, 1.0f) *
          remapClamped(heightFraction, r.z, r.w, 1.0f, 0.0f);
@@ -37,13 +37,13 @@ VKFX_INLINE float heightGradient(float heightFraction, float type) {
 // The coverage of a weather texel under the global coverage c: texel + 2 c - 1, so c = 0 is a
 // clear sky, c = 1 overcast and 0.5 the map as painted. (The host side uses it too, to know a
 // sky that cannot hold cloud.)
-VKFX_INLINE float layerCoverage(float weatherCoverage, float coverage) {
+FX_INLINE float layerCoverage(float weatherCoverage, float coverage) {
   return saturate(weatherCoverage + 2.0f * coverage - 1.0f);
 }
 
 // Decodes an RGBA8 weather texel under the global settings: coverage by layerCoverage(), type
 // = settings type moved by the map's variation, density = mix(1, texel density, variation).
-VKFX_INLINE WeatherSample decodeWeather(vec4 texel, IN(CloudUniforms) u) {
+FX_INLINE WeatherSample decodeWeather(vec4 texel, IN(CloudUniforms) u) {
   WeatherSample w;
   w.coverage = layerCoverage(texel.x, u.coverage);
   w.type = saturate(u.cloudType + (texel.y - 0.5f) * u.typeVariation);
@@ -59,8 +59,8 @@ struct CoarseShape {
 };
 
 // `shapeNoise`: the shape noise's value (shapeNoiseValue()).
-VKFX_INLINE CoarseShape coarseShape(float shapeNoise, float heightFraction, IN(WeatherSample) w,
-                                    float anvilBias) {
+FX_INLINE CoarseShape coarseShape(float shapeNoise, float heightFraction, IN(WeatherSample) w,
+                                  float anvilBias) {
   CoarseShape shape;
   shape.profile = 0.0f;
   shape.density = 0.0f;
@@ -79,11 +79,11 @@ VKFX_INLINE CoarseShape coarseShape(float shapeNoise, float heightFraction, IN(W
 
 // Erodes a base density by the high-frequency detail noise (detailNoiseValue(): wispy low,
 // billowy high).
-VKFX_INLINE float erodeDensity(float base, float detailNoise, float heightFraction, float erosion) {
+FX_INLINE float erodeDensity(float base, float detailNoise, float heightFraction, float erosion) {
   const float modifier = mix(detailNoise, 1.0f - detailNoise, saturate(heightFraction * 10.0f));
   return saturate(remap(base, modifier * erosion, 1.0f, 0.0f, 1.0f));
 }
 
-VKFX_SHADER_END
+FX_SHADER_END
 
 #endif

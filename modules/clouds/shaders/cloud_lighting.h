@@ -12,7 +12,7 @@
 #include "cloud_math.h"
 #include "cloud_types.h"
 
-VKFX_SHADER_BEGIN(clouds::shader)
+FX_SHADER_BEGIN(clouds::shader)
 
 // The phase of each multiple-scattering octave (1/sr): octave n scatters with the lobes'
 // eccentricities scaled by c^n. The angle to the sun is the same all along a ray, so a march
@@ -24,7 +24,7 @@ struct OctavePhases {
   float cosToSun;
 };
 
-VKFX_INLINE OctavePhases octavePhases(float cosTheta, IN(CloudUniforms) u) {
+FX_INLINE OctavePhases octavePhases(float cosTheta, IN(CloudUniforms) u) {
   OctavePhases phases;
   phases.low = vec4(0.0f);
   phases.high = vec4(0.0f);
@@ -51,8 +51,8 @@ VKFX_INLINE OctavePhases octavePhases(float cosTheta, IN(CloudUniforms) u) {
 // With multiple scattering, Wrenninge's octaves: octave n sees the light's optical depth scaled
 // by a^n and contributes b^n (the defaults are tuned so that a thick sunlit cloud reflects
 // most of the sun, as measured clouds do: march_gpu_test's sunlit slab).
-VKFX_INLINE float directScattering(float lightOpticalDepth, IN(OctavePhases) phases,
-                                   IN(CloudUniforms) u, uint multipleScattering) {
+FX_INLINE float directScattering(float lightOpticalDepth, IN(OctavePhases) phases,
+                                 IN(CloudUniforms) u, uint multipleScattering) {
   if (multipleScattering == 0u) return beerLambert(lightOpticalDepth) * phases.low.x;
   const int octaves = int(clamp(u.msOctaves, 1.0f, 8.0f));
   float extinctionScale = 1.0f;
@@ -76,7 +76,7 @@ VKFX_INLINE float directScattering(float lightOpticalDepth, IN(OctavePhases) pha
 //    forward through thin edges makes them bright (the silver lining). So the edge term fades as
 //    the view ray turns towards the sun (`cosToSun`, the cosine between them): fully there at
 //    90 degrees and beyond, gone looking into the sun. The dark base stays in every direction.
-VKFX_INLINE float inScatterProbability(float core, float heightFraction, float cosToSun) {
+FX_INLINE float inScatterProbability(float core, float heightFraction, float cosToSun) {
   const float edgeProbability =
       0.05f + pow(saturate(core), remapClamped(heightFraction, 0.3f, 0.85f, 0.5f, 2.0f));
   const float depthProbability = mix(saturate(edgeProbability), 1.0f, saturate(cosToSun));
@@ -96,8 +96,8 @@ const float kGroundShareOfLowerHemisphere = 0.82635182f;
 // clouds' shadow) and the sky (irradiance pi `skyTop`, `skyTop` the cosine-weighted mean
 // radiance of the upper hemisphere), seen over most of the lower hemisphere, and the horizon's
 // radiance over the rest.
-VKFX_INLINE vec3 groundLitBaseRadiance(vec3 horizon, vec3 skyTop, vec3 groundAlbedo,
-                                       vec3 sunIlluminance, float sunUp, float groundSunlit) {
+FX_INLINE vec3 groundLitBaseRadiance(vec3 horizon, vec3 skyTop, vec3 groundAlbedo,
+                                     vec3 sunIlluminance, float sunUp, float groundSunlit) {
   const vec3 groundIrradiance =
       sunIlluminance * (max(sunUp, 0.0f) * saturate(groundSunlit)) + kPi * skyTop;
   const vec3 ground = groundAlbedo * groundIrradiance / kPi;
@@ -107,9 +107,9 @@ VKFX_INLINE vec3 groundLitBaseRadiance(vec3 horizon, vec3 skyTop, vec3 groundAlb
 // Radiance scattered towards the viewer at a sample, per unit scattering coefficient (before
 // the albedo). `profile` is the coarse shape in [0, 1] (coarseShape()); `sunLight` in [0, 1]
 // the share of the sun not hidden by the terrain.
-VKFX_INLINE vec3 sampleRadiance(float lightOpticalDepth, float sunLight, IN(OctavePhases) phases,
-                                float profile, float heightFraction, IN(CloudUniforms) u,
-                                uint multipleScattering) {
+FX_INLINE vec3 sampleRadiance(float lightOpticalDepth, float sunLight, IN(OctavePhases) phases,
+                              float profile, float heightFraction, IN(CloudUniforms) u,
+                              uint multipleScattering) {
   const float core = profile / max(u.inScatterCoreProfile, 1e-3f);
   const float inScatter = mix(1.0f, inScatterProbability(core, heightFraction, phases.cosToSun),
                               saturate(u.inScatterStrength));
@@ -123,6 +123,6 @@ VKFX_INLINE vec3 sampleRadiance(float lightOpticalDepth, float sunLight, IN(Octa
   return sun + ambient;
 }
 
-VKFX_SHADER_END
+FX_SHADER_END
 
 #endif

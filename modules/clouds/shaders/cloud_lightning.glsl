@@ -3,15 +3,15 @@
 // and has loaded `u`.
 //
 // Nubis Evolved's glow term (Schneider 2022: potential pow(1 - d / r, 12), less where the cloud
-// is dense) and the flash's sky light (vkfx/lightning_light.h: the core's inverse square, the
-// light that makes the whole deck flicker), at the clouds' transmittance-weighted depth along
+// is dense) and the flash's sky light (fxcontracts/lightning_light.h: the core's inverse square,
+// the light that makes the whole deck flicker), at the clouds' transmittance-weighted depth along
 // the pixel's ray. The local density of the seeds' pseudo-attenuation is that of the cloud the
 // pixel sees into: its optical depth (at most 1: an opaque cloud shows its outer skin) over its
 // depth span (twice the weighted depth past the front), exact for a thin uniform cloud.
 #ifndef CLOUDS_CLOUD_LIGHTNING_GLSL
 #define CLOUDS_CLOUD_LIGHTNING_GLSL
 
-#include "vkfx/lightning_light.h"
+#include "fxcontracts/lightning_light.h"
 
 // `ray`: the pixel's world-space unit ray; `transmittance` and `depth` (front, weighted; m):
 // the clouds it sees.

@@ -8,7 +8,7 @@
 // Inputs: binding 0 CloudUniforms; 1-4 shape noise, detail noise, weather map, curl noise
 // (RGBA8, imageLoad); 5 scene distance (R32F, trace res); 7-8 weather maxima (empty-space
 // skipping); with the terrain's shadow, 10-11 the cloud shadow map and its parameters (its
-// terrain channel, vkfx/cloud_shadow.h). Outputs: 6 the marched samples (radiance,
+// terrain channel, fxcontracts/cloud_shadow.h). Outputs: 6 the marched samples (radiance,
 // transmittance, front and weighted depth in metres; packed, cloud_temporal.h); 9 work
 // counters. Feature toggles are specialization constants.
 // Edge rays (kSpecEdgeRays, while the frame's kFlagEdgeRays is set): the tiles on a silhouette
@@ -62,7 +62,7 @@ vec4 fetchWeatherMaxFine(ivec2 texel) { return imageLoad(weatherMaxFine, texel);
 vec4 fetchWeatherMaxCoarse(ivec2 texel) { return imageLoad(weatherMaxCoarse, texel); }
 
 #define CLOUD_SHADOW_MAP_BINDING kMarchCloudShadow
-#include "vkfx/cloud_shadow_sampled.glsl"
+#include "fxcontracts/cloud_shadow_sampled.glsl"
 // Indexed like frame_uniforms.glsl's block, for the same reason.
 layout(binding = kMarchCloudShadowParameters, std140) uniform TerrainShadow {
   MarchTerrainShadow terrainShadow[1];

@@ -31,7 +31,7 @@
 #define CLOUDS_WHEN(condition) \
   for (int whenOnce_ = 0; whenOnce_ < ((condition) ? 1 : 0); ++whenOnce_)
 
-VKFX_SHADER_BEGIN(clouds::shader)
+FX_SHADER_BEGIN(clouds::shader)
 
 const float kInfiniteDistance = 1e30f;
 const int kMaxSkips = 96;  // empty weather cells a view ray may jump over
@@ -63,7 +63,7 @@ struct MarchResult {
 // Altitude after travelling `t` along a ray from `altitude` whose cosine with the local up is
 // `cosZenith`. Written as altitude + delta / (sqrt(r0^2 + delta) + r0) to avoid subtracting
 // two planet radii in float.
-VKFX_INLINE float altitudeAlongRay(float t, float cosZenith, float altitude, float radius) {
+FX_INLINE float altitudeAlongRay(float t, float cosZenith, float altitude, float radius) {
   const float r0 = radius + altitude;
   const float delta = t * (t + 2.0f * r0 * cosZenith);
   return altitude + delta / (sqrt(max(r0 * r0 + delta, 0.0f)) + r0);
@@ -71,7 +71,7 @@ VKFX_INLINE float altitudeAlongRay(float t, float cosZenith, float altitude, flo
 
 // The [start, end) distances of a view ray inside the cloud shell; end <= start when the ray
 // misses it or hits the ground first.
-VKFX_INLINE vec2 layerSegment(float altitude, float cosZenith, IN(CloudUniforms) u) {
+FX_INLINE vec2 layerSegment(float altitude, float cosZenith, IN(CloudUniforms) u) {
   const float radius = u.planetRadiusMetres;
   const float bottom = u.layerBottomMetres;
   const float top = u.layerTopMetres;
@@ -97,7 +97,7 @@ VKFX_INLINE vec2 layerSegment(float altitude, float cosZenith, IN(CloudUniforms)
   return vec2(start, end);
 }
 
-VKFX_INLINE float viewStepLength(float t, IN(CloudUniforms) u) {
+FX_INLINE float viewStepLength(float t, IN(CloudUniforms) u) {
   return u.viewStepMetres + u.viewStepGrowth * t;
 }
 
@@ -118,7 +118,7 @@ const float kNearStepMinFraction = 0.0625f;  // of viewStepMetres: the first ste
 // Loop iterations the near steps may take: 9, each at most twice (a coarse sample that finds
 // cloud is taken again as a fine one at the same place).
 const int kMaxNearSteps = 18;
-VKFX_INLINE bool isNearStep(float t, IN(CloudUniforms) u) {
+FX_INLINE bool isNearStep(float t, IN(CloudUniforms) u) {
   return kNearStepRatio * t < u.viewStepMetres;
 }
 
@@ -127,8 +127,8 @@ VKFX_INLINE bool isNearStep(float t, IN(CloudUniforms) u) {
 // Where the steps would run out before the segment's end (a long ray through a tall layer
 // towards the horizon or the ground), they stretch to reach it rather than leave the far
 // clouds unmarched; near the camera they are short (isNearStep).
-VKFX_INLINE float marchStepLength(float t, float end, int samplesLeft, float scale,
-                                  IN(CloudUniforms) u) {
+FX_INLINE float marchStepLength(float t, float end, int samplesLeft, float scale,
+                                IN(CloudUniforms) u) {
   if (isNearStep(t, u)) {
     return min(max(kNearStepRatio * t, u.viewStepMetres * kNearStepMinFraction), end - t);
   }
@@ -145,8 +145,8 @@ struct FieldSample {
   float sigmaT;   // extinction (1/m)
 };
 
-VKFX_INLINE vec3 noisePosition(vec3 flatOffset, float altitude, float heightFraction,
-                               IN(CloudUniforms) u) {
+FX_INLINE vec3 noisePosition(vec3 flatOffset, float altitude, float heightFraction,
+                             IN(CloudUniforms) u) {
   // Skew the shape downwind with height (Nubis: clouds lean with the wind as they rise).
   const vec2 skew = u.windDirection * (u.skewMetres * saturate(heightFraction));
   return vec3(flatOffset.x + skew.x, altitude, flatOffset.z + skew.y);
@@ -154,8 +154,8 @@ VKFX_INLINE vec3 noisePosition(vec3 flatOffset, float altitude, float heightFrac
 
 // `distance` (m) from the camera sets the noise's level of detail (noiseLevel(): the pixel's
 // footprint there, u.noiseFootprintPerMetre x distance), `lodDither` in [0, 1) rounds it.
-VKFX_INLINE FieldSample sampleField(vec3 flatOffset, float altitude, float distance,
-                                    float lodDither, uint wantDetail, IN(CloudUniforms) u) {
+FX_INLINE FieldSample sampleField(vec3 flatOffset, float altitude, float distance, float lodDither,
+                                  uint wantDetail, IN(CloudUniforms) u) {
   FieldSample s;
   const float bottom = u.layerBottomMetres;
   const float top = u.layerTopMetres;
@@ -204,7 +204,7 @@ VKFX_INLINE FieldSample sampleField(vec3 flatOffset, float altitude, float dista
 
 // Distance along the flat (x, z) direction `d` from `p` to the boundary of its `cell`-metre
 // grid cell, a little beyond so the next query lands in the next cell; 1e30 when d is vertical.
-VKFX_INLINE float cellExitDistance(vec2 p, vec2 d, float cell) {
+FX_INLINE float cellExitDistance(vec2 p, vec2 d, float cell) {
   const vec2 base = floor(p / cell) * cell;
   float exitX = kInfiniteDistance;
   float exitZ = kInfiniteDistance;
@@ -217,8 +217,7 @@ VKFX_INLINE float cellExitDistance(vec2 p, vec2 d, float cell) {
 
 // True when a weather cell's maxima (R coverage, G type) leave no cloud at `altitude`: zero
 // coverage, or (for a ray whose altitude only grows) above the tallest cloud type's top.
-VKFX_INLINE bool weatherCellEmpty(vec4 maxima, float altitude, bool ascending,
-                                  IN(CloudUniforms) u) {
+FX_INLINE bool weatherCellEmpty(vec4 maxima, float altitude, bool ascending, IN(CloudUniforms) u) {
   const float coverage = layerCoverage(maxima.x, u.coverage);
   const float type = saturate(u.cloudType + (maxima.y - 0.5f) * u.typeVariation);
   const float top =
@@ -229,8 +228,8 @@ VKFX_INLINE bool weatherCellEmpty(vec4 maxima, float altitude, bool ascending,
 // Empty-space skipping: the distance to jump to from `t` (t itself when the sample's cell may
 // hold cloud), from the coarse then the fine grid of weather maxima, for a ray that starts at
 // the camera-relative flat offset `origin` (x, z).
-VKFX_INLINE float emptySpaceSkip(vec2 origin, float t, vec3 rayDirection, float altitude,
-                                 IN(CloudUniforms) u) {
+FX_INLINE float emptySpaceSkip(vec2 origin, float t, vec3 rayDirection, float altitude,
+                               IN(CloudUniforms) u) {
   const vec2 d = vec2(rayDirection.x, rayDirection.z);
   const vec2 p = u.weatherOffsetMetres + origin + d * t;
   const bool ascending = rayDirection.y >= 0.0f;
@@ -254,7 +253,7 @@ VKFX_INLINE float emptySpaceSkip(vec2 origin, float t, vec3 rayDirection, float 
 // cone's spread is sampled uniformly on average. (A fixed hashed vector per index made each
 // light-step count its own cone: the estimates of 10 and 16 steps differed, and neither
 // converged on the Reference's 24.)
-VKFX_INLINE vec3 coneKernel(uint index, vec2 rotation) {
+FX_INLINE vec3 coneKernel(uint index, vec2 rotation) {
   const float z = 1.0f - 2.0f * fract(rotation.x + float(index) * 0.7548776662f);
   const float azimuth = 2.0f * kPi * fract(rotation.y + float(index) * 0.5698402910f);
   const float radius = sqrt(max(1.0f - z * z, 0.0f));
@@ -267,7 +266,7 @@ VKFX_INLINE vec3 coneKernel(uint index, vec2 rotation) {
 // per-pixel cones, and the rounds a pixel averages (as it averages its rays' start offsets)
 // average the cone. Jitter mode 0 (none): the middle of each stretch and one cone for every
 // ray, as deterministic as the view steps.
-VKFX_INLINE vec3 lightJitter(uint round, uint mode) {
+FX_INLINE vec3 lightJitter(uint round, uint mode) {
   if (mode == 0u) return vec3(0.5f);
   return hashCell(ivec3(int(round & 0xffffffu), 0, 0), 7127u);
 }
@@ -279,9 +278,9 @@ VKFX_INLINE vec3 lightJitter(uint round, uint mode) {
 // the shadowing detail is, they are short), at the place `jitter.x` in its stretch and in the
 // direction coneKernel() gives it: a stratified estimate of one integral, so more steps are
 // the same integral with less noise, and a ray's samples averaged over frames converge on it.
-VKFX_INLINE float lightOpticalDepth(vec3 flatOffset, float altitude, float distance,
-                                    float lodDither, uint steps, vec3 jitter, IN(CloudUniforms) u,
-                                    INOUT(float) samples) {
+FX_INLINE float lightOpticalDepth(vec3 flatOffset, float altitude, float distance, float lodDither,
+                                  uint steps, vec3 jitter, IN(CloudUniforms) u,
+                                  INOUT(float) samples) {
   const vec3 sun = u.sunDirection;
   const float coneLength = u.lightConeMetres;
   const float spread = u.lightConeSpread;
@@ -303,7 +302,7 @@ VKFX_INLINE float lightOpticalDepth(vec3 flatOffset, float altitude, float dista
 }
 
 // View-space unit direction of the ray through a pixel centre (pixel units, y down).
-VKFX_INLINE vec3 viewRayDirection(vec2 pixelCentre, vec2 extent, IN(CloudUniforms) u) {
+FX_INLINE vec3 viewRayDirection(vec2 pixelCentre, vec2 extent, IN(CloudUniforms) u) {
   const vec2 ndc = pixelCentre / extent * 2.0f - 1.0f;
   // A point on the near plane: depth 1 with reversed-Z, 0 otherwise; finite either way.
   const float nearDepth = (u.flags & kFlagReversedZ) != 0u ? 1.0f : 0.0f;
@@ -313,14 +312,14 @@ VKFX_INLINE vec3 viewRayDirection(vec2 pixelCentre, vec2 extent, IN(CloudUniform
 }
 
 // World-space unit direction of the view ray through a pixel centre (pixel units, y down).
-VKFX_INLINE vec3 pixelRayDirection(vec2 pixelCentre, vec2 extent, IN(CloudUniforms) u) {
+FX_INLINE vec3 pixelRayDirection(vec2 pixelCentre, vec2 extent, IN(CloudUniforms) u) {
   return vec3(u.viewToWorld * vec4(viewRayDirection(pixelCentre, extent, u), 0.0f));
 }
 
 // Distance along the pixel's ray to the host geometry for a depth-buffer value; the sky
 // (far plane, or depth 0 with reversed-Z) is kInfiniteDistance.
-VKFX_INLINE float sceneDistanceFromDepth(float depth, vec2 pixelCentre, vec2 extent,
-                                         IN(CloudUniforms) u) {
+FX_INLINE float sceneDistanceFromDepth(float depth, vec2 pixelCentre, vec2 extent,
+                                       IN(CloudUniforms) u) {
   const bool reversed = (u.flags & kFlagReversedZ) != 0u;
   if ((u.flags & kFlagHasDepth) == 0u) return kInfiniteDistance;
   if (reversed ? depth <= 0.0f : depth >= 1.0f) return kInfiniteDistance;
@@ -341,8 +340,8 @@ VKFX_INLINE float sceneDistanceFromDepth(float depth, vec2 pixelCentre, vec2 ext
 // so that rays starting together bias the whole frame) also spreads a frame's rays over a 2x2
 // Bayer pattern of the tiles of side `tileSize`, which reconstruct.comp's tent averages
 // exactly (it weighs even and odd tiles alike).
-VKFX_INLINE float rayJitter(uvec2 pixel, float startOffset, uint tileSize, bool spreadOverTiles,
-                            uint mode) {
+FX_INLINE float rayJitter(uvec2 pixel, float startOffset, uint tileSize, bool spreadOverTiles,
+                          uint mode) {
   if (mode == 0u) return 0.5f;
   const uint k = max(tileSize, 1u);
   const float tiles = spreadOverTiles ? bayer2x2(pixel / k) : 0.0f;
@@ -353,8 +352,8 @@ VKFX_INLINE float rayJitter(uvec2 pixel, float startOffset, uint tileSize, bool 
 // the distance to the host's geometry along it (kInfiniteDistance for sky), `jitter` in [0, 1)
 // places each step's sample in its step and rounds the noise's level of detail, `lightRandom`
 // places the light samples (lightJitter()).
-VKFX_INLINE MarchResult marchClouds(vec3 rayDirection, float sceneDistance, float jitter,
-                                    vec3 lightRandom, IN(CloudUniforms) u, IN(MarchOptions) o) {
+FX_INLINE MarchResult marchClouds(vec3 rayDirection, float sceneDistance, float jitter,
+                                  vec3 lightRandom, IN(CloudUniforms) u, IN(MarchOptions) o) {
   MarchResult r;
   r.radiance = vec3(0.0f);
   r.transmittance = 1.0f;
@@ -456,6 +455,6 @@ VKFX_INLINE MarchResult marchClouds(vec3 rayDirection, float sceneDistance, floa
   return r;
 }
 
-VKFX_SHADER_END
+FX_SHADER_END
 
 #endif

@@ -5,34 +5,33 @@
 #ifndef CLOUDS_CLOUD_MATH_H
 #define CLOUDS_CLOUD_MATH_H
 
-#include "vkfx/shader_interop.h"
+#include "fxcontracts/shader_interop.h"
 
-VKFX_SHADER_BEGIN(clouds::shader)
+FX_SHADER_BEGIN(clouds::shader)
 
 const float kPi = 3.14159265358979f;
 // g beyond this makes HG a delta peak whose float evaluation overflows (g = 1 gives 0/0).
 const float kMaxPhaseG = 0.99f;
 
-VKFX_INLINE float saturate(float x) {
+FX_INLINE float saturate(float x) {
   return clamp(x, 0.0f, 1.0f);
 }
 
 // Maps `value` from [oldMin, oldMax] to [newMin, newMax] (no clamping), as in Nubis. A
 // degenerate source range maps everything to newMin instead of dividing by zero.
-VKFX_INLINE float remap(float value, float oldMin, float oldMax, float newMin, float newMax) {
+FX_INLINE float remap(float value, float oldMin, float oldMax, float newMin, float newMax) {
   const float range = oldMax - oldMin;
   const float t = abs(range) > 1e-7f ? (value - oldMin) / range : 0.0f;
   return newMin + t * (newMax - newMin);
 }
 
-VKFX_INLINE float remapClamped(float value, float oldMin, float oldMax, float newMin,
-                               float newMax) {
+FX_INLINE float remapClamped(float value, float oldMin, float oldMax, float newMin, float newMax) {
   return mix(newMin, newMax, saturate(remap(value, oldMin, oldMax, 0.0f, 1.0f)));
 }
 
 // Henyey-Greenstein phase function, normalised over the sphere (units 1/sr). g is clamped to
 // [-0.99, 0.99] so g = +-1 cannot produce 0/0, and the base is kept positive.
-VKFX_INLINE float henyeyGreenstein(float cosTheta, float g) {
+FX_INLINE float henyeyGreenstein(float cosTheta, float g) {
   const float gc = clamp(g, -kMaxPhaseG, kMaxPhaseG);
   const float c = clamp(cosTheta, -1.0f, 1.0f);
   const float g2 = gc * gc;
@@ -42,7 +41,7 @@ VKFX_INLINE float henyeyGreenstein(float cosTheta, float g) {
 
 // Two HG lobes blended so the result stays normalised: a strong forward lobe gives the silver
 // lining towards the sun, a weak backward lobe keeps clouds facing away from the sun lit.
-VKFX_INLINE float dualLobePhase(float cosTheta, float forwardG, float backwardG, float blend) {
+FX_INLINE float dualLobePhase(float cosTheta, float forwardG, float backwardG, float blend) {
   const float w = saturate(blend);
   return mix(henyeyGreenstein(cosTheta, forwardG), henyeyGreenstein(cosTheta, backwardG), w);
 }
@@ -53,21 +52,21 @@ VKFX_INLINE float dualLobePhase(float cosTheta, float forwardG, float backwardG,
 // The max gains energy; `normaliserInverse` (1 / its integral over the sphere, computed on the
 // CPU: phase_normaliser.cpp) gives it back, so the phase integrates to 1 and the white furnace
 // holds. silverIntensity 0 (normaliserInverse 1) is the mix alone.
-VKFX_INLINE float silverLiningPhase(float cosTheta, float forwardG, float backwardG, float blend,
-                                    float silverG, float silverIntensity, float normaliserInverse) {
+FX_INLINE float silverLiningPhase(float cosTheta, float forwardG, float backwardG, float blend,
+                                  float silverG, float silverIntensity, float normaliserInverse) {
   const float lobes = dualLobePhase(cosTheta, forwardG, backwardG, blend);
   const float silver = max(silverIntensity, 0.0f) * henyeyGreenstein(cosTheta, silverG);
   return max(lobes, silver) * normaliserInverse;
 }
 
 // Beer-Lambert transmittance for an optical depth (>= 0). exp(-x) of a huge x is 0, never NaN.
-VKFX_INLINE float beerLambert(float opticalDepth) {
+FX_INLINE float beerLambert(float opticalDepth) {
   return exp(-max(opticalDepth, 0.0f));
 }
 
 // (1 - exp(-sigma * d)) / sigma, the in-scattering weight of a homogeneous step of length d
 // (Hillaire 2016), written so sigma = 0 gives d instead of 0/0.
-VKFX_INLINE float stepScatteringWeight(float sigmaT, float stepLength) {
+FX_INLINE float stepScatteringWeight(float sigmaT, float stepLength) {
   const float x = max(sigmaT, 0.0f) * stepLength;
   if (x < 1e-4f) return stepLength * (1.0f - 0.5f * x);
   return (1.0f - exp(-x)) / max(sigmaT, 1e-30f);
@@ -78,7 +77,7 @@ VKFX_INLINE float stepScatteringWeight(float sigmaT, float stepLength) {
 // of the ray with the local up. The altitude-difference form keeps float precision at planet
 // scale (a textbook |o - c|^2 - r^2 loses metres near the horizon). Returns the near and far
 // roots in x and y; y < 0 when the sphere is not hit at all (x = y = -1).
-VKFX_INLINE vec2 raySphere(float altitude, float cosZenith, float sphereAltitude, float radius) {
+FX_INLINE vec2 raySphere(float altitude, float cosZenith, float sphereAltitude, float radius) {
   const float distanceToCentre = radius + altitude;
   const float b = distanceToCentre * cosZenith;  // dot(origin - centre, direction)
   // c = |origin - centre|^2 - r^2, from the altitude difference.
@@ -94,7 +93,7 @@ VKFX_INLINE vec2 raySphere(float altitude, float cosZenith, float sphereAltitude
 }
 
 // Halton radical inverse, base 2 or 3 (jitter sequences).
-VKFX_INLINE float halton(uint index, uint base) {
+FX_INLINE float halton(uint index, uint base) {
   float f = 1.0f;
   float result = 0.0f;
   uint i = index;
@@ -116,20 +115,20 @@ VKFX_INLINE float halton(uint index, uint base) {
 // the points 4 indices apart, whose two lowest bits agree: all its samples started within
 // [1/2, 3/4) of a step, and their mean kept the error of where they started.) `streams` 1: one
 // sequence over the rounds. The first round starts mid-step: a single frame is a midpoint rule.
-VKFX_INLINE float refreshStartOffset(uint round, uint streams) {
+FX_INLINE float refreshStartOffset(uint round, uint streams) {
   const uint s = max(streams, 1u);
   return fract(halton((round / s) % 64u, 2u) + halton(round % s, 2u) + 0.5f);
 }
 
 // 2x2 Bayer threshold in [0, 1) for a pixel: (0, 0) 1/8, (1, 1) 3/8, (1, 0) 5/8, (0, 1) 7/8.
-VKFX_INLINE float bayer2x2(uvec2 pixel) {
+FX_INLINE float bayer2x2(uvec2 pixel) {
   const uint v = (pixel.x ^ pixel.y) & 1u;
   const uint index = (v << 1u) | (pixel.y & 1u);
   return (float(index) + 0.5f) / 4.0f;
 }
 
 // 4x4 Bayer threshold in [0, 1) for a pixel.
-VKFX_INLINE float bayer4x4(uvec2 pixel) {
+FX_INLINE float bayer4x4(uvec2 pixel) {
   const uint x = pixel.x & 3u;
   const uint y = pixel.y & 3u;
   // Interleave the bits of x ^ y and y: the classic recursive Bayer construction.
@@ -138,6 +137,6 @@ VKFX_INLINE float bayer4x4(uvec2 pixel) {
   return (float(index) + 0.5f) / 16.0f;
 }
 
-VKFX_SHADER_END
+FX_SHADER_END
 
 #endif

@@ -8,9 +8,9 @@
 
 #include "cloud_math.h"
 
-VKFX_SHADER_BEGIN(clouds::shader)
+FX_SHADER_BEGIN(clouds::shader)
 
-VKFX_INLINE uvec3 pcg3d(uvec3 v) {
+FX_INLINE uvec3 pcg3d(uvec3 v) {
   v = v * 1664525u + 1013904223u;
   v.x += v.y * v.z;
   v.y += v.z * v.x;
@@ -23,27 +23,27 @@ VKFX_INLINE uvec3 pcg3d(uvec3 v) {
 }
 
 // Three uniform values in [0, 1) for an integer lattice cell and a seed.
-VKFX_INLINE vec3 hashCell(ivec3 cell, uint seed) {
+FX_INLINE vec3 hashCell(ivec3 cell, uint seed) {
   const uvec3 h = pcg3d(uvec3(cell) + uvec3(seed, seed * 7919u, seed * 104729u));
   return vec3(h >> 8u) * (1.0f / 16777216.0f);
 }
 
 // Wraps a lattice coordinate into [0, period); valid for coordinates >= -period.
-VKFX_INLINE ivec3 wrapCell(ivec3 cell, int period) {
+FX_INLINE ivec3 wrapCell(ivec3 cell, int period) {
   return (cell + ivec3(period)) % period;
 }
 
-VKFX_INLINE float fade(float t) {
+FX_INLINE float fade(float t) {
   return t * t * t * (t * (t * 6.0f - 15.0f) + 10.0f);
 }
 
-VKFX_INLINE float gradientDot(ivec3 cell, vec3 offset, int period, uint seed) {
+FX_INLINE float gradientDot(ivec3 cell, vec3 offset, int period, uint seed) {
   const vec3 g = hashCell(wrapCell(cell, period), seed) * 2.0f - 1.0f;
   return dot(g, offset);
 }
 
 // Periodic gradient noise, period `period` cells, p in cell units (>= 0). Output about [-1, 1].
-VKFX_INLINE float perlinNoise(vec3 p, int period, uint seed) {
+FX_INLINE float perlinNoise(vec3 p, int period, uint seed) {
   const vec3 cellFloor = floor(p);
   const ivec3 i = ivec3(cellFloor);
   const vec3 f = p - cellFloor;
@@ -65,7 +65,7 @@ VKFX_INLINE float perlinNoise(vec3 p, int period, uint seed) {
 
 // Fractal sum of `octaves` periodic Perlin octaves starting at `period` cells over the tile;
 // `uvw` in [0, 1) tile units. Output in [0, 1].
-VKFX_INLINE float perlinFbm(vec3 uvw, int period, int octaves, uint seed) {
+FX_INLINE float perlinFbm(vec3 uvw, int period, int octaves, uint seed) {
   float sum = 0.0f;
   float amplitude = 1.0f;
   float total = 0.0f;
@@ -82,7 +82,7 @@ VKFX_INLINE float perlinFbm(vec3 uvw, int period, int octaves, uint seed) {
 // Periodic cellular noise with one feature point per cell (stratified, so only the 27
 // neighbouring cells can hold the nearest point). Returns 1 - F1 in [0, 1] (inverted: cloud
 // "puffs" are bright), with F1 in cell units.
-VKFX_INLINE float worleyNoise(vec3 uvw, int cells, uint seed) {
+FX_INLINE float worleyNoise(vec3 uvw, int cells, uint seed) {
   const vec3 p = uvw * float(cells);
   const vec3 cellFloor = floor(p);
   const ivec3 base = ivec3(cellFloor);
@@ -102,7 +102,7 @@ VKFX_INLINE float worleyNoise(vec3 uvw, int cells, uint seed) {
 }
 
 // Worley fBm over three octaves (cells, 2 cells, 4 cells) with Nubis' 0.625 / 0.25 / 0.125.
-VKFX_INLINE float worleyFbm(vec3 uvw, int cells, uint seed) {
+FX_INLINE float worleyFbm(vec3 uvw, int cells, uint seed) {
   return worleyNoise(uvw, cells, seed) * 0.625f + worleyNoise(uvw, cells * 2, seed + 1u) * 0.25f +
          worleyNoise(uvw, cells * 4, seed + 2u) * 0.125f;
 }
@@ -112,7 +112,7 @@ VKFX_INLINE float worleyFbm(vec3 uvw, int cells, uint seed) {
 // of Worley cells is subtracted from the low regions of connected Perlin noise, leaving round
 // shapes. (The dilating form of Hillaire's generator, remap(perlin, 0, 1, worley, 1), leaves
 // so little empty space that coverage 0.5 is already overcast.)
-VKFX_INLINE vec4 lowFrequencyNoiseTexel(vec3 uvw, uint seed) {
+FX_INLINE vec4 lowFrequencyNoiseTexel(vec3 uvw, uint seed) {
   const float perlin = perlinFbm(uvw, 4, 3, seed);
   const float worley4 = worleyNoise(uvw, 4, seed + 10u);
   const float worley8 = worleyNoise(uvw, 8, seed + 11u);
@@ -127,7 +127,7 @@ VKFX_INLINE vec4 lowFrequencyNoiseTexel(vec3 uvw, uint seed) {
 }
 
 // High-frequency detail texel (32^3 texture): Worley fBm at three frequencies; A unused (1).
-VKFX_INLINE vec4 highFrequencyNoiseTexel(vec3 uvw, uint seed) {
+FX_INLINE vec4 highFrequencyNoiseTexel(vec3 uvw, uint seed) {
   return vec4(worleyFbm(uvw, 2, seed + 20u), worleyFbm(uvw, 4, seed + 23u),
               worleyFbm(uvw, 8, seed + 26u), 1.0f);
 }
@@ -135,20 +135,20 @@ VKFX_INLINE vec4 highFrequencyNoiseTexel(vec3 uvw, uint seed) {
 // What the shape noise texture holds: the base shape of the clouds, in [0, 1], the Perlin-Worley
 // noise remapped by the low-frequency Worley fBm of the other channels (Schneider 2015). Made
 // once per texel when the texture is made, so a sample reads one value, not four channels.
-VKFX_INLINE float shapeNoiseValue(vec4 channels) {
+FX_INLINE float shapeNoiseValue(vec4 channels) {
   const float lowFrequencyFbm =
       dot(vec3(channels.y, channels.z, channels.w), vec3(0.625f, 0.25f, 0.125f));
   return saturate(remap(channels.x, lowFrequencyFbm - 1.0f, 1.0f, 0.0f, 1.0f));
 }
 
 // What the detail noise texture holds: the Worley fBm of its three frequencies, in [0, 1].
-VKFX_INLINE float detailNoiseValue(vec4 channels) {
+FX_INLINE float detailNoiseValue(vec4 channels) {
   return dot(vec3(channels.x, channels.y, channels.z), vec3(0.625f, 0.25f, 0.125f));
 }
 
 // Curl of a periodic 2D potential (Perlin fBm), by central differences; unit-range output
 // encoded as 0.5 + 0.5 * curl in RG. Used to swirl the detail noise.
-VKFX_INLINE vec2 curlNoiseTexel(vec2 uv, float texelSize, uint seed) {
+FX_INLINE vec2 curlNoiseTexel(vec2 uv, float texelSize, uint seed) {
   const float e = texelSize;
   const float n1 = perlinFbm(vec3(uv + vec2(0.0f, e), 0.0f), 4, 3, seed + 40u);
   const float n2 = perlinFbm(vec3(uv - vec2(0.0f, e), 0.0f), 4, 3, seed + 40u);
@@ -159,6 +159,6 @@ VKFX_INLINE vec2 curlNoiseTexel(vec2 uv, float texelSize, uint seed) {
   return clamp(curl, vec2(-1.0f), vec2(1.0f)) * 0.5f + 0.5f;
 }
 
-VKFX_SHADER_END
+FX_SHADER_END
 
 #endif

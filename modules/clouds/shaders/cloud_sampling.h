@@ -8,7 +8,7 @@
 
 #include "cloud_types.h"
 
-VKFX_SHADER_BEGIN(clouds::shader)
+FX_SHADER_BEGIN(clouds::shader)
 
 // Prototypes: texel coordinates are already wrapped into the texture (for the 3D noises, into
 // one level of the mip chain their image holds).
@@ -22,7 +22,7 @@ vec4 fetchWeatherMaxCoarse(ivec2 texel);  // kWeatherMaxCoarseSize^2
 // Where `level` of an n^3 noise's mip chain starts in its n x n x 3n/2 image. Level 0 fills the
 // first n slices; level L >= 1 (n >> L texels a side) is the cube at x = n - 2 (n >> L) on the
 // slices above (z = n), so the levels lie side by side along x: [0, n/2), [n/2, 3n/4), ...
-VKFX_INLINE ivec3 noiseLevelOrigin(int level, int n) {
+FX_INLINE ivec3 noiseLevelOrigin(int level, int n) {
   return level > 0 ? ivec3(n - 2 * (n >> level), 0, n) : ivec3(0);
 }
 
@@ -30,7 +30,7 @@ VKFX_INLINE ivec3 noiseLevelOrigin(int level, int n) {
 // `footprintMetres`, what one pixel sees of the sample: log2 of their ratio, rounded down or up
 // by `dither` in [0, 1) so that the frames a pixel averages blend the two levels around it (a
 // blend within one sample would double its 8 fetches). 0 for footprints below one texel.
-VKFX_INLINE int noiseLevel(float footprintMetres, float texelMetres, float dither, int levels) {
+FX_INLINE int noiseLevel(float footprintMetres, float texelMetres, float dither, int levels) {
   const float lod = log2(max(footprintMetres, 1e-20f) / texelMetres);
   return clamp(int(floor(lod + dither)), 0, levels - 1);
 }
@@ -46,7 +46,7 @@ struct TrilinearCell {
   vec3 f;    // the point's place in the cell
 };
 
-VKFX_INLINE TrilinearCell trilinearCell(vec3 uvw, int level, int n) {
+FX_INLINE TrilinearCell trilinearCell(vec3 uvw, int level, int n) {
   const int size = n >> level;
   const ivec3 origin = noiseLevelOrigin(level, n);
   const vec3 p = uvw * float(size) - 0.5f;
@@ -66,23 +66,23 @@ VKFX_INLINE TrilinearCell trilinearCell(vec3 uvw, int level, int n) {
       bilinearOfPacked(fetch(ivec3(c.i0.x, c.i0.y, c.z1)), c.f), c.f.z)
 
 // The bilinear blend over x and y of a packed texel (see above) at the place `f` in its cell.
-VKFX_INLINE float bilinearOfPacked(vec4 texel, vec3 f) {
+FX_INLINE float bilinearOfPacked(vec4 texel, vec3 f) {
   return mix(mix(texel.x, texel.y, f.x), mix(texel.z, texel.w, f.x), f.y);
 }
 
 // The shape noise's value (shapeNoiseValue()) at `uvw` (tiles) from `level` of its chain.
-VKFX_INLINE float sampleShapeNoise(vec3 uvw, int level) {
+FX_INLINE float sampleShapeNoise(vec3 uvw, int level) {
   const TrilinearCell c = trilinearCell(uvw, level, kShapeNoiseSize);
   return CLOUDS_PACKED_TRILINEAR(fetchShapeNoise, c);
 }
 
 // The detail noise's value (detailNoiseValue()) at `uvw` (tiles) from `level` of its chain.
-VKFX_INLINE float sampleDetailNoise(vec3 uvw, int level) {
+FX_INLINE float sampleDetailNoise(vec3 uvw, int level) {
   const TrilinearCell c = trilinearCell(uvw, level, kDetailNoiseSize);
   return CLOUDS_PACKED_TRILINEAR(fetchDetailNoise, c);
 }
 
-VKFX_INLINE vec4 sampleWeather(vec2 uv) {
+FX_INLINE vec4 sampleWeather(vec2 uv) {
   const int mask = kWeatherMapSize - 1;
   const vec2 p = uv * float(kWeatherMapSize) - 0.5f;
   const vec2 pFloor = floor(p);
@@ -93,7 +93,7 @@ VKFX_INLINE vec4 sampleWeather(vec2 uv) {
              mix(fetchWeather(ivec2(i0.x, i1.y)), fetchWeather(ivec2(i1.x, i1.y)), f.x), f.y);
 }
 
-VKFX_INLINE vec2 sampleCurl(vec2 uv) {
+FX_INLINE vec2 sampleCurl(vec2 uv) {
   const int mask = kCurlNoiseSize - 1;
   const vec2 p = uv * float(kCurlNoiseSize) - 0.5f;
   const vec2 pFloor = floor(p);
@@ -105,6 +105,6 @@ VKFX_INLINE vec2 sampleCurl(vec2 uv) {
   return vec2(c.x, c.y) * 2.0f - 1.0f;
 }
 
-VKFX_SHADER_END
+FX_SHADER_END
 
 #endif

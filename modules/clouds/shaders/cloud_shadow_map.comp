@@ -1,7 +1,7 @@
 #version 460
 // Cloud shadow map (compute): one cascade of the Beer shadow map per dispatch, one invocation
 // per texel. Each texel's sun ray is marched up through the layer with the shared model
-// (cloud_shadow_march.h) and stored as the receivers read it (vkfx/cloud_shadow.h): optical
+// (cloud_shadow_march.h) and stored as the receivers read it (fxcontracts/cloud_shadow.h): optical
 // depth, highest and lowest cloud altitude; the terrain channel kept or emptied
 // (terrain_shadow_map.comp writes it).
 // Inputs: binding 0 CloudUniforms (this frame's field: camera-relative offsets, coverage,
@@ -13,7 +13,7 @@
 #extension GL_GOOGLE_include_directive : require
 
 #include "cloud_types.h"
-#include "vkfx/cloud_shadow.h"
+#include "fxcontracts/cloud_shadow.h"
 
 layout(local_size_x = kWorkgroupSize2D, local_size_y = kWorkgroupSize2D) in;
 

@@ -1,4 +1,4 @@
-// One texel of the cloud shadow map (vkfx/cloud_shadow.h), shared by the shadow-map shader
+// One texel of the cloud shadow map (fxcontracts/cloud_shadow.h), shared by the shadow-map shader
 // and the CPU reference: the sun ray through a camera-relative point, marched up through the
 // cloud layer in equal steps with the low-frequency shape alone (as the view march's light
 // samples are), skipping weather cells that hold no cloud. It returns the ray's whole optical
@@ -12,7 +12,7 @@
 
 #include "cloud_march.h"
 
-VKFX_SHADER_BEGIN(clouds::shader)
+FX_SHADER_BEGIN(clouds::shader)
 
 struct ShadowColumn {
   float opticalDepth;  // of the whole ray through the layer
@@ -28,8 +28,8 @@ struct ShadowColumn {
 // The sun ray through the camera-relative point `base` along `light` (unit, light.y > 0),
 // sampled at `steps` equal steps from the layer's bottom to its top, each at `jitter` in
 // [0, 1) of its step.
-VKFX_INLINE ShadowColumn marchShadowColumn(vec3 base, vec3 light, uint steps, float jitter,
-                                           uint emptySpace, IN(CloudUniforms) u) {
+FX_INLINE ShadowColumn marchShadowColumn(vec3 base, vec3 light, uint steps, float jitter,
+                                         uint emptySpace, IN(CloudUniforms) u) {
   ShadowColumn column;
   column.opticalDepth = 0.0f;
   column.frontAltitude = u.layerTopMetres;
@@ -79,8 +79,8 @@ VKFX_INLINE ShadowColumn marchShadowColumn(vec3 base, vec3 light, uint steps, fl
 // Texel `texel` of the cascade a dispatch makes with `c`: its ray through the camera-relative
 // point at the texel's centre, jittered by a hash of the texel's place on the world grid (so
 // the map does not shimmer as the cascade scrolls).
-VKFX_INLINE ShadowColumn marchShadowTexel(IN(ShadowMapConstants) c, uvec2 texel, uint emptySpace,
-                                          IN(CloudUniforms) u) {
+FX_INLINE ShadowColumn marchShadowTexel(IN(ShadowMapConstants) c, uvec2 texel, uint emptySpace,
+                                        IN(CloudUniforms) u) {
   const float size = c.light.w;
   const vec3 base = vec3(c.axisU) * (c.axisU.w + float(texel.x) * size) +
                     vec3(c.axisV) * (c.axisV.w + float(texel.y) * size);
@@ -93,7 +93,7 @@ VKFX_INLINE ShadowColumn marchShadowTexel(IN(ShadowMapConstants) c, uvec2 texel,
 // below a few degrees the air has already taken nearly all of its light).
 const float kShadowMinSunSine = 0.0349f;  // sin(2 degrees)
 
-VKFX_INLINE vec3 shadowLightDirection(vec3 sun) {
+FX_INLINE vec3 shadowLightDirection(vec3 sun) {
   const vec2 horizontal = vec2(sun.x, sun.z);
   const float length2 = dot(horizontal, horizontal);
   if (sun.y >= kShadowMinSunSine || length2 < 1e-12f) {
@@ -104,6 +104,6 @@ VKFX_INLINE vec3 shadowLightDirection(vec3 sun) {
   return vec3(azimuth.x * cosine, kShadowMinSunSine, azimuth.y * cosine);
 }
 
-VKFX_SHADER_END
+FX_SHADER_END
 
 #endif

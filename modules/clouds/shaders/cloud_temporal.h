@@ -9,9 +9,9 @@
 #include "cloud_math.h"
 #include "cloud_types.h"
 
-VKFX_SHADER_BEGIN(clouds::shader)
+FX_SHADER_BEGIN(clouds::shader)
 
-VKFX_INLINE bool isFreshPixel(uvec2 pixel, IN(CloudUniforms) u) {
+FX_INLINE bool isFreshPixel(uvec2 pixel, IN(CloudUniforms) u) {
   // k is a power of two: a mask, not a modulo (integer division is scalarised on a CPU).
   const uint mask = u.tileSize - 1u;
   return (pixel.x & mask) == u.tilePhase.x && (pixel.y & mask) == u.tilePhase.y;
@@ -21,13 +21,13 @@ VKFX_INLINE bool isFreshPixel(uvec2 pixel, IN(CloudUniforms) u) {
 // (kFlagEdgeRays): the tile's pixel half a tile away from its fresh one on both axes, or on x
 // only (k a power of two, at least 2). The passes read only the fresh pixels of this frame's
 // samples, so the tile's others are free.
-VKFX_INLINE uvec2 edgeRaySlot(uvec2 freshPixel, uint ray, IN(CloudUniforms) u) {
+FX_INLINE uvec2 edgeRaySlot(uvec2 freshPixel, uint ray, IN(CloudUniforms) u) {
   const uint halfTile = u.tileSize / 2u;
   return freshPixel ^ uvec2(halfTile, ray == 0u ? halfTile : 0u);
 }
 
 // Where edge ray `ray` sits in its trace pixel this frame (trace pixels, as subpixelOffset).
-VKFX_INLINE vec2 edgeSubpixelOffset(uint ray, IN(CloudUniforms) u) {
+FX_INLINE vec2 edgeSubpixelOffset(uint ray, IN(CloudUniforms) u) {
   return ray == 0u ? vec2(u.edgeSubpixelOffsets.x, u.edgeSubpixelOffsets.y)
                    : vec2(u.edgeSubpixelOffsets.z, u.edgeSubpixelOffsets.w);
 }
@@ -36,7 +36,7 @@ VKFX_INLINE vec2 edgeSubpixelOffset(uint ray, IN(CloudUniforms) u) {
 const uint kNoEdgeRay = 0xffffffffu;
 
 // Bilinear weights and the four fresh pixels around `pixel` on this frame's k-grid.
-VKFX_INLINE void freshNeighbours(uvec2 pixel, IN(CloudUniforms) u, OUT(ivec2) p00, OUT(vec2) f) {
+FX_INLINE void freshNeighbours(uvec2 pixel, IN(CloudUniforms) u, OUT(ivec2) p00, OUT(vec2) f) {
   const float k = float(u.tileSize);
   const vec2 phase = vec2(float(u.tilePhase.x), float(u.tilePhase.y));
   const vec2 grid = (vec2(pixel) - phase) / k;
@@ -55,7 +55,7 @@ struct DepthBlend {
   float opacitySum;   // sum of weight x opacity
 };
 
-VKFX_INLINE DepthBlend depthBlendStart() {
+FX_INLINE DepthBlend depthBlendStart() {
   DepthBlend b;
   b.front = 0.0f;
   b.weightedSum = 0.0f;
@@ -63,44 +63,44 @@ VKFX_INLINE DepthBlend depthBlendStart() {
   return b;
 }
 
-VKFX_INLINE void depthBlendAdd(INOUT(DepthBlend) b, float weight, float transmittance, vec2 depth) {
+FX_INLINE void depthBlendAdd(INOUT(DepthBlend) b, float weight, float transmittance, vec2 depth) {
   if (weight > 0.0f && depth.x > 0.0f) b.front = b.front > 0.0f ? min(b.front, depth.x) : depth.x;
   const float opacity = weight * saturate(1.0f - transmittance);
   b.weightedSum += opacity * depth.y;
   b.opacitySum += opacity;
 }
 
-VKFX_INLINE vec2 depthBlendResult(DepthBlend b) {
+FX_INLINE vec2 depthBlendResult(DepthBlend b) {
   return vec2(b.front, b.opacitySum > 1e-6f ? b.weightedSum / b.opacitySum : 0.0f);
 }
 
 // A marched or reconstructed pixel in one RGBA32UI texel, so the passes that read several
 // neighbours (reconstruction, upsample) take one image load per neighbour instead of two:
 // x = half2(r, g), y = half2(b, transmittance), z = front depth, w = weighted depth (float).
-VKFX_INLINE uvec4 packCloudSample(vec4 radiance, vec2 depth) {
+FX_INLINE uvec4 packCloudSample(vec4 radiance, vec2 depth) {
   return uvec4(packHalf2x16(vec2(radiance.x, radiance.y)),
                packHalf2x16(vec2(radiance.z, radiance.w)), floatBitsToUint(depth.x),
                floatBitsToUint(depth.y));
 }
 
-VKFX_INLINE vec4 unpackCloudRadiance(uvec4 texel) {
+FX_INLINE vec4 unpackCloudRadiance(uvec4 texel) {
   const vec2 rg = unpackHalf2x16(texel.x);
   const vec2 ba = unpackHalf2x16(texel.y);
   return vec4(rg.x, rg.y, ba.x, ba.y);
 }
 
-VKFX_INLINE vec2 unpackCloudDepth(uvec4 texel) {
+FX_INLINE vec2 unpackCloudDepth(uvec4 texel) {
   return vec2(uintBitsToFloat(texel.z), uintBitsToFloat(texel.w));
 }
 
 // The exponent of a positive normal float, floor(log2(x)), read from its bits: exact, where a
 // CPU driver's log2 is a polynomial (and costs like one).
-VKFX_INLINE int floorLog2(float x) {
+FX_INLINE int floorLog2(float x) {
   return int((floatBitsToUint(x) >> 23u) & 0xffu) - 127;
 }
 
 // 2^e for an integer e in [-126, 127], made from its bits: exact and cheap, as above.
-VKFX_INLINE float exp2Integer(int e) {
+FX_INLINE float exp2Integer(int e) {
   return uintBitsToFloat(uint(e + 127) << 23u);
 }
 
@@ -109,7 +109,7 @@ VKFX_INLINE float exp2Integer(int e) {
 // the largest. Round trips are exact: a value read back packs to the same bits. (Every output
 // pixel may pack one a frame: bit operations, not log2, exp2 and divisions, which took
 // 1.1 ms of High's 6.8 ms upsample at 640x360 on lavapipe.)
-VKFX_INLINE uint packSharedExponent(vec3 rgb) {
+FX_INLINE uint packSharedExponent(vec3 rgb) {
   const float largest = 65408.0f;  // (2^9 - 1) / 2^9 x 2^(31 - 15)
   const vec3 c = clamp(rgb, vec3(0.0f), vec3(largest));
   const float maximum = max(c.x, max(c.y, c.z));
@@ -124,7 +124,7 @@ VKFX_INLINE uint packSharedExponent(vec3 rgb) {
          (uint(exponent) << 27u);
 }
 
-VKFX_INLINE vec3 unpackSharedExponent(uint texel) {
+FX_INLINE vec3 unpackSharedExponent(uint texel) {
   const vec3 mantissa =
       vec3(float(texel & 511u), float((texel >> 9u) & 511u), float((texel >> 18u) & 511u));
   return mantissa * exp2Integer(int(texel >> 27u) - 24);
@@ -136,24 +136,24 @@ VKFX_INLINE vec3 unpackSharedExponent(uint texel) {
 // every output pixel of every frame): x = the radiance in shared-exponent RGB, y = the front
 // depth as a half float (m, up to 65 km) | the transmittance in 12 bits << 16 | the own-sample
 // count (0 to 15) << 28.
-VKFX_INLINE uvec2 packOutputHistory(vec4 radiance, float frontDepth, uint ownSamples) {
+FX_INLINE uvec2 packOutputHistory(vec4 radiance, float frontDepth, uint ownSamples) {
   const uint transmittance = uint(saturate(radiance.w) * 4095.0f + 0.5f);
   return uvec2(packSharedExponent(vec3(radiance)),
                (packHalf2x16(vec2(min(frontDepth, 65000.0f), 0.0f)) & 0xffffu) |
                    (transmittance << 16u) | (min(ownSamples, 15u) << 28u));
 }
 
-VKFX_INLINE vec4 unpackOutputHistory(uvec2 texel) {
+FX_INLINE vec4 unpackOutputHistory(uvec2 texel) {
   return vec4(unpackSharedExponent(texel.x), float((texel.y >> 16u) & 0xfffu) / 4095.0f);
 }
 
 // The front depth (m) kept with the own samples; 0 without cloud, NaN when the texel is not one
 // this pass wrote (a poisoned history is caught by it).
-VKFX_INLINE float outputHistoryFrontDepth(uvec2 texel) {
+FX_INLINE float outputHistoryFrontDepth(uvec2 texel) {
   return unpackHalf2x16(texel.y & 0xffffu).x;
 }
 
-VKFX_INLINE uint ownSampleCount(uvec2 texel) {
+FX_INLINE uint ownSampleCount(uvec2 texel) {
   return texel.y >> 28u;
 }
 
@@ -167,7 +167,7 @@ struct PreviousRay {
 };
 
 // `viewDirection`: the pixel's unit ray direction in this frame's view space.
-VKFX_INLINE PreviousRay previousRay(vec3 viewDirection, IN(CloudUniforms) u) {
+FX_INLINE PreviousRay previousRay(vec3 viewDirection, IN(CloudUniforms) u) {
   PreviousRay r;
   r.along = u.previousClipFromView * vec4(viewDirection, 0.0f);
   r.origin = u.previousClipOrigin;
@@ -176,7 +176,7 @@ VKFX_INLINE PreviousRay previousRay(vec3 viewDirection, IN(CloudUniforms) u) {
 
 // Image position (pixels of an image of `extent`) of the point `distance` metres along the
 // ray last frame; far off-screen when it was behind last frame's camera.
-VKFX_INLINE vec2 previousPosition(PreviousRay ray, float distance, vec2 extent) {
+FX_INLINE vec2 previousPosition(PreviousRay ray, float distance, vec2 extent) {
   const vec4 clip = ray.along * distance + ray.origin;
   if (clip.w <= 0.0f) return vec2(-1e6f);
   return (vec2(clip) / clip.w * 0.5f + 0.5f) * extent;
@@ -195,8 +195,8 @@ struct Reprojection {
 
 // `viewDirection`: the pixel's unit ray direction in this frame's view space; `cloudDepth`:
 // front and weighted depth (m), 0 without cloud.
-VKFX_INLINE Reprojection reprojectPixel(vec3 viewDirection, vec2 cloudDepth, vec2 extent,
-                                        IN(CloudUniforms) u) {
+FX_INLINE Reprojection reprojectPixel(vec3 viewDirection, vec2 cloudDepth, vec2 extent,
+                                      IN(CloudUniforms) u) {
   const PreviousRay ray = previousRay(viewDirection, u);
   const float far = u.maxDistanceMetres;
   Reprojection r;
@@ -212,15 +212,15 @@ VKFX_INLINE Reprojection reprojectPixel(vec3 viewDirection, vec2 cloudDepth, vec
 // frame between refreshes: bilinear weights blur it a little each time, these keep it sharp
 // (they interpolate, and reproduce quadratics exactly). They dip below zero beside an edge: the
 // caller clamps what they give to the values it can take.
-VKFX_INLINE vec4 catmullRomWeights(float f) {
+FX_INLINE vec4 catmullRomWeights(float f) {
   return vec4(f * (-0.5f + f * (1.0f - 0.5f * f)), 1.0f + f * f * (-2.5f + 1.5f * f),
               f * (0.5f + f * (2.0f - 1.5f * f)), f * f * (-0.5f + 0.5f * f));
 }
 
-VKFX_INLINE bool finiteVec4(vec4 v) {
+FX_INLINE bool finiteVec4(vec4 v) {
   return !(any(isnan(v)) || any(isinf(v)));
 }
 
-VKFX_SHADER_END
+FX_SHADER_END
 
 #endif

@@ -10,11 +10,11 @@
 #ifndef CLOUDS_CLOUD_TYPES_H
 #define CLOUDS_CLOUD_TYPES_H
 
-#include "vkfx/cloud_shadow.h"
-#include "vkfx/god_rays.h"
-#include "vkfx/shader_interop.h"
+#include "fxcontracts/cloud_shadow.h"
+#include "fxcontracts/god_rays.h"
+#include "fxcontracts/shader_interop.h"
 
-VKFX_SHADER_BEGIN(clouds::shader)
+FX_SHADER_BEGIN(clouds::shader)
 
 // --- Texture sizes (powers of two: wrapping is a bit mask) ----------------------------------
 const int kShapeNoiseSize = 128;  // low-frequency 3D noise, RGBA8 packed (cloud_sampling.h)
@@ -80,7 +80,7 @@ const uint kShadowShapeNoise = 1u;
 const uint kShadowWeatherMap = 2u;
 const uint kShadowWeatherMaxFine = 3u;
 const uint kShadowWeatherMaxCoarse = 4u;
-const uint kShadowMapOut = 5u;    // the cascade atlas (vkfx/cloud_shadow.h), RGBA16F
+const uint kShadowMapOut = 5u;    // the cascade atlas (fxcontracts/cloud_shadow.h), RGBA16F
 const uint kShadowMapSpare = 6u;  // one cascade in the making (kShadowTexelToSpare), RGBA16F
 // terrain_shadow_map.comp
 const uint kTerrainShadowHeight = 0u;  // the host's heightfield, sampled
@@ -291,7 +291,7 @@ struct CloudUniforms {
   uint lightRound;             // the round of refreshes this frame's rays belong to: it rotates
                                //   their light samples' cone (lightJitter())
 
-  // The host's aerial perspective (vkfx/aerial_perspective.glsl), when it gives one.
+  // The host's aerial perspective (fxcontracts/aerial_perspective.glsl), when it gives one.
   vec3 aerialPerspectiveScale;    // multiplies the volume's radiance
   float aerialPerspectiveRange;   // m, the distance of its last slice
   float aerialPerspectiveSlices;  // its depth in slices
@@ -380,7 +380,7 @@ const uint kShadowTexelToSpare = 2u;
 // the shadow map's lookup parameters, and the terrain's highest altitude (no sample above it can
 // be in the terrain's shadow: the march does not look).
 #ifdef __cplusplus
-using vkfx::shader::CloudShadowParameters;
+using fxcontracts::shader::CloudShadowParameters;
 #endif
 struct MarchTerrainShadow {
   CloudShadowParameters map;
@@ -398,7 +398,7 @@ struct TerrainShadowConstants {
   vec2 heightInverseSize;   // 1 / its extent along x and z (1/m)
   float minAltitudeMetres;  // the terrain's lowest and highest altitude
   float maxAltitudeMetres;
-  float biasMetres;  // subtracted from the stored altitude (vkfx/cloud_shadow.h)
+  float biasMetres;  // subtracted from the stored altitude (fxcontracts/cloud_shadow.h)
   uint steps;        // heightfield samples along each ray
   float cameraAltitudeMetres;
   uint padding0;
@@ -419,8 +419,8 @@ struct CompositeConstants {
 };
 
 #ifdef __cplusplus
-using vkfx::shader::GodRayParameters;  // god_rays.comp's push constants
-using vkfx::shader::kGodRayDownsample;
+using fxcontracts::shader::GodRayParameters;  // god_rays.comp's push constants
+using fxcontracts::shader::kGodRayDownsample;
 #endif
 
 // The flashes the clouds glow with this frame (reconstruct.comp, kReconstructFlashes), a uniform
@@ -477,7 +477,7 @@ struct GodRayOcclusionConstants {
   uint padding0;
 };
 
-// The god rays' light (vkfx/god_rays.h's uses: god_rays.comp makes it per mask texel, the
+// The god rays' light (fxcontracts/god_rays.h's uses: god_rays.comp makes it per mask texel, the
 // upsample adds it to the sky's pixels), a uniform block.
 struct GodRayLightUniforms {
   mat4 viewFromClip;  // the host's inverse projection: a pixel's view-space position
@@ -491,7 +491,7 @@ struct GodRayLightUniforms {
   vec4 sunIlluminance;    // xyz (the fallback's glow), w the haze's slices
 };
 
-VKFX_SHADER_END
+FX_SHADER_END
 
 #ifdef __cplusplus
 #include <cstddef>

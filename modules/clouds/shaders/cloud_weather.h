@@ -7,10 +7,10 @@
 
 #include "cloud_noise.h"
 
-VKFX_SHADER_BEGIN(clouds::shader)
+FX_SHADER_BEGIN(clouds::shader)
 
 // `uv` in [0, 1) over the tile; `phase` in [0, 1) the evolution of the weather.
-VKFX_INLINE vec4 proceduralWeatherTexel(vec2 uv, float phase, uint seed) {
+FX_INLINE vec4 proceduralWeatherTexel(vec2 uv, float phase, uint seed) {
   const float coverage = perlinFbm(vec3(uv.x, uv.y, phase), 4, 5, seed + 100u);
   const float type = perlinFbm(vec3(uv.x, uv.y, phase), 2, 2, seed + 200u);
   const float density = perlinFbm(vec3(uv.x, uv.y, phase), 4, 3, seed + 300u);
@@ -20,6 +20,6 @@ VKFX_INLINE vec4 proceduralWeatherTexel(vec2 uv, float phase, uint seed) {
               saturate(remap(density, 0.3f, 0.7f, 0.2f, 1.0f)), 1.0f);
 }
 
-VKFX_SHADER_END
+FX_SHADER_END
 
 #endif

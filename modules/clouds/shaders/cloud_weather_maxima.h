@@ -8,12 +8,12 @@
 
 #include "cloud_types.h"
 
-VKFX_SHADER_BEGIN(clouds::shader)
+FX_SHADER_BEGIN(clouds::shader)
 
 // Prototype: the source level's texel (already wrapped into [0, sourceSize)).
 vec4 fetchMaximaSource(ivec2 texel);
 
-VKFX_INLINE vec2 weatherCellMaxima(ivec2 cell, int sourceSize, int cellSize) {
+FX_INLINE vec2 weatherCellMaxima(ivec2 cell, int sourceSize, int cellSize) {
   vec2 maxima = vec2(0.0f);
   for (int y = -1; y <= cellSize; ++y) {
     for (int x = -1; x <= cellSize; ++x) {
@@ -25,6 +25,6 @@ VKFX_INLINE vec2 weatherCellMaxima(ivec2 cell, int sourceSize, int cellSize) {
   return maxima;
 }
 
-VKFX_SHADER_END
+FX_SHADER_END
 
 #endif

@@ -1,5 +1,5 @@
 #version 460
-// God rays, first pass (vkfx/god_rays.h): the occlusion image at a quarter of the render
+// God rays, first pass (fxcontracts/god_rays.h): the occlusion image at a quarter of the render
 // extent per axis, made from the reconstructed trace image before the upsample. Each texel is
 // the mean, over the trace pixels its 4 x 4 output pixels fall in, of the clouds'
 // transmittance where the scene distance is infinite (sky) and 0 on the host's geometry: what

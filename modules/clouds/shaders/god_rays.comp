@@ -1,5 +1,5 @@
 #version 460
-// God rays, second pass (vkfx/god_rays.h): the mask, and the light the composite adds to the
+// God rays, second pass (fxcontracts/god_rays.h): the mask, and the light the composite adds to the
 // sky's pixels. Each texel averages the occlusion image at GodRayParameters' samples on its way
 // towards the sun on screen, their weights decaying (Mitchell 2007): 1 where the air along its
 // pixels' rays sees the sun past everything on screen, lower in the shadows clouds and
@@ -26,7 +26,7 @@ layout(push_constant) uniform Constants { GodRayParameters p; };
 
 float fetchGodRayOcclusion(vec2 uv) { return textureLod(occlusion, uv, 0.0f).r; }
 
-#include "vkfx/aerial_perspective.glsl"
+#include "fxcontracts/aerial_perspective.glsl"
 
 void main() {
   const uvec2 texel = gl_GlobalInvocationID.xy;

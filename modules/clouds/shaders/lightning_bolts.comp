@@ -30,7 +30,7 @@ layout(binding = kBoltsPieces, std430) readonly buffer LightningBolts {
   uvec4 boltQuads[];
 };
 
-#include "vkfx/aerial_perspective.glsl"
+#include "fxcontracts/aerial_perspective.glsl"
 
 #include "cloud_march.h"
 

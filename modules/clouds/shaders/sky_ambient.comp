@@ -17,7 +17,7 @@ layout(local_size_x = kSkyAmbientLanes) in;
 layout(binding = kSkyAmbientUniforms, std430) buffer Uniforms { CloudUniforms u; };
 layout(binding = kSkyAmbientSky) uniform sampler2D sky;
 #define CLOUD_SHADOW_MAP_BINDING kSkyAmbientShadowMap
-#include "vkfx/cloud_shadow_sampled.glsl"
+#include "fxcontracts/cloud_shadow_sampled.glsl"
 layout(push_constant) uniform Constants { AmbientConstants constants; };
 
 // Reduced over the lanes: the sky's upper hemisphere (rgb, weight), its horizon band (rgb,

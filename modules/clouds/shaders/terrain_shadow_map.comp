@@ -2,7 +2,7 @@
 // The terrain's shadow in the cloud shadow map (compute): after cloud_shadow_map.comp has made
 // a cascade, one invocation per texel walks the texel's sun ray over the host's heightfield
 // (terrain_shadow_march.h) and writes the altitude below which the terrain hides the sun into
-// the texel's alpha (vkfx/cloud_shadow.h), keeping the clouds' channels.
+// the texel's alpha (fxcontracts/cloud_shadow.h), keeping the clouds' channels.
 // Inputs: binding 0 the heightfield (altitude in metres, sampled linearly, clamped); push
 // constants TerrainShadowConstants (the cascade and the heightfield's placement). Output: 1 the
 // cascade atlas (read and written in place).

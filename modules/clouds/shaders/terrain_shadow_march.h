@@ -1,5 +1,5 @@
 // The terrain's shadow on one sun ray of the cloud shadow map (its alpha channel,
-// vkfx/cloud_shadow.h), shared by terrain_shadow_map.comp and the CPU reference: the ray is
+// fxcontracts/cloud_shadow.h), shared by terrain_shadow_map.comp and the CPU reference: the ray is
 // walked over the host's heightfield from where it is at the terrain's lowest altitude to where
 // it clears the highest, and the altitude where it last leaves the ground is the top of the
 // shadow (everything on the ray below it is hidden from the sun; the ray only climbs).
@@ -10,16 +10,16 @@
 #define CLOUDS_TERRAIN_SHADOW_MARCH_H
 
 #include "cloud_types.h"
-#include "vkfx/cloud_shadow.h"
+#include "fxcontracts/cloud_shadow.h"
 
-VKFX_SHADER_BEGIN(clouds::shader)
+FX_SHADER_BEGIN(clouds::shader)
 
 float fetchTerrainHeight(vec2 uv);
 
 // The interval of ray distances whose (x, z) lie inside the heightfield, intersected with
 // [start, end]; empty (x > y) when the ray misses it.
-VKFX_INLINE vec2 clipToHeightfield(vec2 origin, vec2 direction, float start, float end,
-                                   IN(TerrainShadowConstants) t) {
+FX_INLINE vec2 clipToHeightfield(vec2 origin, vec2 direction, float start, float end,
+                                 IN(TerrainShadowConstants) t) {
   const vec2 size = vec2(1.0f) / t.heightInverseSize;
   const vec2 low = t.heightOriginMetres;
   const vec2 high = t.heightOriginMetres + size;
@@ -41,8 +41,8 @@ VKFX_INLINE vec2 clipToHeightfield(vec2 origin, vec2 direction, float start, flo
 }
 
 // Height of the terrain above the ray at distance `s` along it (negative: the ray is above).
-VKFX_INLINE float terrainAboveRay(vec3 base, vec3 light, float baseAltitude, float s,
-                                  IN(TerrainShadowConstants) t) {
+FX_INLINE float terrainAboveRay(vec3 base, vec3 light, float baseAltitude, float s,
+                                IN(TerrainShadowConstants) t) {
   const vec2 p = vec2(base.x + light.x * s, base.z + light.z * s);
   const vec2 uv = (p - t.heightOriginMetres) * t.heightInverseSize;
   return fetchTerrainHeight(uv) - (baseAltitude + light.y * s);
@@ -51,8 +51,8 @@ VKFX_INLINE float terrainAboveRay(vec3 base, vec3 light, float baseAltitude, flo
 // The altitude (m) below which the sun ray through the camera-relative point `base` along
 // `light` (unit, light.y > 0) is in the terrain's shadow, sampled at t.steps + 1 points; a ray
 // the terrain never hides gets the terrain's lowest altitude. `cameraAltitude` in metres.
-VKFX_INLINE float terrainShadowTop(vec3 base, vec3 light, float cameraAltitude,
-                                   IN(TerrainShadowConstants) t) {
+FX_INLINE float terrainShadowTop(vec3 base, vec3 light, float cameraAltitude,
+                                 IN(TerrainShadowConstants) t) {
   const float baseAltitude = cameraAltitude + base.y;
   // The ray between the terrain's lowest and highest altitude, and over the heightfield.
   const vec2 range = clipToHeightfield(vec2(base.x, base.z), vec2(light.x, light.z),
@@ -80,8 +80,8 @@ VKFX_INLINE float terrainShadowTop(vec3 base, vec3 light, float cameraAltitude,
 }
 
 // The terrain channel of texel `texel` of the cascade in `t.cascade`: the ray through the
-// texel's centre (as marchShadowTexel() places it), lowered as vkfx/cloud_shadow.h says.
-VKFX_INLINE float terrainShadowTexel(IN(TerrainShadowConstants) t, uvec2 texel) {
+// texel's centre (as marchShadowTexel() places it), lowered as fxcontracts/cloud_shadow.h says.
+FX_INLINE float terrainShadowTexel(IN(TerrainShadowConstants) t, uvec2 texel) {
   const ShadowMapConstants c = t.cascade;
   const float size = c.light.w;
   const vec3 base = vec3(c.axisU) * (c.axisU.w + float(texel.x) * size) +
@@ -89,6 +89,6 @@ VKFX_INLINE float terrainShadowTexel(IN(TerrainShadowConstants) t, uvec2 texel) 
   return terrainShadowTop(base, vec3(c.light), t.cameraAltitudeMetres, t) - t.biasMetres;
 }
 
-VKFX_SHADER_END
+FX_SHADER_END
 
 #endif

@@ -17,8 +17,9 @@
 //
 // With the host's aerial perspective (kSpecAerialPerspective) the output is hazed: hazed().
 // With god rays (kSpecUpsampleGodRays), the sky's pixels then get god_rays.comp's light, as
-// much as the clouds let the sky through (vkfx/god_rays.h): the screen-space mask says nothing
-// of the air in front of the host's geometry or of opaque cloud. The histories keep neither.
+// much as the clouds let the sky through (fxcontracts/god_rays.h): the screen-space mask says
+// nothing of the air in front of the host's geometry or of opaque cloud. The histories keep
+// neither.
 //
 // Inputs: 0 CloudUniforms; 1 reconstructed samples (trace res, packed: cloud_temporal.h);
 // 2 host depth; 5 this frame's marched samples (trace res); 6 last frame's output history;
@@ -59,7 +60,7 @@ layout(binding = kUpsampleAerialPerspective) uniform sampler3D aerialPerspective
 layout(binding = kUpsampleGodRayLight) uniform sampler2D godRayLight;
 layout(binding = kUpsampleLightningGlow) uniform sampler2D lightningGlow;
 
-#include "vkfx/aerial_perspective.glsl"
+#include "fxcontracts/aerial_perspective.glsl"
 
 #include "cloud_march.h"
 

@@ -1,7 +1,7 @@
 #pragma once
-// Where the sun is for the god-ray mask (vkfx/god_rays.h), from the host's camera: its position
-// on screen in the mask's uv and the fade, pure arithmetic (unit-tested). The fade is 1 with
-// the sun on screen and 1 degree or more above the horizon, falls to 0 as it leaves the screen
+// Where the sun is for the god-ray mask (fxcontracts/god_rays.h), from the host's camera: its
+// position on screen in the mask's uv and the fade, pure arithmetic (unit-tested). The fade is 1
+// with the sun on screen and 1 degree or more above the horizon, falls to 0 as it leaves the screen
 // by half of it or sinks to 1 degree below the horizon, and is 0 behind the camera.
 #include <glm/glm.hpp>
 

@@ -82,12 +82,13 @@ class ModuleImages {
   OwnedImage traceSamples;                  // this frame's marched pixels (packed samples)
   std::array<OwnedImage, 2> history;        // reconstructed frames, ping-pong
   std::array<OwnedImage, 2> outputHistory;  // temporal upsampling's own samples, ping-pong
-  OwnedImage shadowMap;        // the cloud shadow map's cascade atlas (Settings::shadowCascades)
-  OwnedImage shadowSpare;      // one cascade in the making (Settings::shadowFramesPerCascade > 1)
-  OwnedImage godRayOcclusion;  // what hides the sun, a quarter of the output (vkfx/god_rays.h)
-  OwnedImage godRayMask;       // its radial blur (Outputs::godRayMask)
-  OwnedImage godRayLight;      // what the upsample adds to the sky's pixels
-  OwnedImage lightningGlow;    // the clouds' glow per unit of cloud, trace res
+  OwnedImage shadowMap;    // the cloud shadow map's cascade atlas (Settings::shadowCascades)
+  OwnedImage shadowSpare;  // one cascade in the making (Settings::shadowFramesPerCascade > 1)
+  OwnedImage
+      godRayOcclusion;       // what hides the sun, a quarter of the output (fxcontracts/god_rays.h)
+  OwnedImage godRayMask;     // its radial blur (Outputs::godRayMask)
+  OwnedImage godRayLight;    // what the upsample adds to the sky's pixels
+  OwnedImage lightningGlow;  // the clouds' glow per unit of cloud, trace res
 
  private:
   struct Retired {

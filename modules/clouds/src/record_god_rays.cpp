@@ -1,4 +1,4 @@
-// Recording the god-ray mask (vkfx/god_rays.h) between the reconstruction and the upsample:
+// Recording the god-ray mask (fxcontracts/god_rays.h) between the reconstruction and the upsample:
 // the occlusion image (the reconstructed clouds' transmittance where the scene distance is the
 // sky), then its radial blur towards the sun with the light the upsample adds to the sky's
 // pixels (a quarter of the resolution holds it: it is smooth but for the mask). With the sun

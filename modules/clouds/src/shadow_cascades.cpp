@@ -14,7 +14,7 @@ namespace {
 // A cascade is remade at once when its time is this old (s) or negative: the weather and the
 // clouds' shapes have moved on from what the wind's drift can account for.
 constexpr double kMaxCascadeAgeSeconds = 10.0;
-// Fraction of a side over which a cascade blends into the next (vkfx/cloud_shadow.h).
+// Fraction of a side over which a cascade blends into the next (fxcontracts/cloud_shadow.h).
 constexpr float kBlendBand = 0.1f;
 
 double angleDegrees(const glm::dvec3& a, const glm::dvec3& b) {
@@ -100,9 +100,9 @@ ShadowPlan ShadowCascades::plan(const FrameInputs& in, const Settings& s) const 
   plan.nextTurn = turn_;
   std::vector<CascadeJob>& jobs = plan.jobs;
   const std::uint32_t cascades = std::min<std::uint32_t>(
-      s.shadowCascades, static_cast<std::uint32_t>(vkfx::shader::kCloudShadowMaxCascades));
+      s.shadowCascades, static_cast<std::uint32_t>(fxcontracts::shader::kCloudShadowMaxCascades));
   if (cascades == 0) return plan;
-  std::array<bool, vkfx::shader::kCloudShadowMaxCascades> chosen{};
+  std::array<bool, fxcontracts::shader::kCloudShadowMaxCascades> chosen{};
   for (std::uint32_t c = 0; c < cascades; ++c) {
     CascadeJob job = placement(c, in, s);
     if (stale(made_[c], job, in, s)) {
@@ -168,7 +168,7 @@ CascadeSlice ShadowCascades::nextSlice(const FrameInputs& in, const Settings& s,
   }
   // Begin the cascade whose turn it is.
   const std::uint32_t cascades = std::min<std::uint32_t>(
-      s.shadowCascades, static_cast<std::uint32_t>(vkfx::shader::kCloudShadowMaxCascades));
+      s.shadowCascades, static_cast<std::uint32_t>(fxcontracts::shader::kCloudShadowMaxCascades));
   CascadeSlice slice;
   slice.job = placement(cascadeForTurn(plan.nextTurn++, cascades), in, s);
   slice.cameraPosition = in.cameraPosition;
@@ -267,7 +267,8 @@ shader::TerrainShadowConstants terrainShadowConstants(const CascadeJob& job, con
   k.maxAltitudeMetres = terrain.maxAltitudeMetres;
   // One texel (the rays of a texel's footprint differ by that much) and the fade below the
   // shadow's edge: a receiver at its own ray's exit from the ground stays lit.
-  k.biasMetres = static_cast<float>(job.texelMetres) + vkfx::shader::kCloudShadowTerrainRampMetres;
+  k.biasMetres =
+      static_cast<float>(job.texelMetres) + fxcontracts::shader::kCloudShadowTerrainRampMetres;
   k.steps = s.terrainShadowSteps;
   k.cameraAltitudeMetres = static_cast<float>(in.cameraPosition.y);
   return k;
@@ -276,6 +277,7 @@ shader::TerrainShadowConstants terrainShadowConstants(const CascadeJob& job, con
 }  // namespace clouds::detail
 
 // The public struct is the shaders' parameter block, field for field.
-static_assert(sizeof(clouds::ShadowMapParameters) == sizeof(vkfx::shader::CloudShadowParameters));
+static_assert(sizeof(clouds::ShadowMapParameters) ==
+              sizeof(fxcontracts::shader::CloudShadowParameters));
 static_assert(offsetof(clouds::ShadowMapParameters, info) ==
-              offsetof(vkfx::shader::CloudShadowParameters, info));
+              offsetof(fxcontracts::shader::CloudShadowParameters, info));

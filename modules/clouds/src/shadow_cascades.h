@@ -1,7 +1,7 @@
 #pragma once
 // The cloud shadow map's cascades as plain logic (unit-tested without a GPU): where each
 // cascade lies, which cascades a frame remakes, and the lookup parameters hosts read
-// (vkfx/cloud_shadow.h).
+// (fxcontracts/cloud_shadow.h).
 //
 // Placement: cascade c is a square of side shadowNearSideMetres x ratio^c seen along the light
 // direction, on a grid of whole texels fixed in the world (plane coordinates along U and V, in
@@ -25,7 +25,7 @@
 
 #include "cloud_types.h"
 #include "clouds/clouds.h"
-#include "vkfx/cloud_shadow.h"
+#include "fxcontracts/cloud_shadow.h"
 
 namespace clouds::detail {
 
@@ -125,10 +125,10 @@ class ShadowCascades {
     double timeSeconds = 0.0;  // of the first slice: the clouds it holds
   };
 
-  std::array<Made, vkfx::shader::kCloudShadowMaxCascades> made_{};
+  std::array<Made, fxcontracts::shader::kCloudShadowMaxCascades> made_{};
   // Whether each cascade was made with a terrain (its channel then holds that terrain's shadow
   // over the rays in made_).
-  std::array<bool, vkfx::shader::kCloudShadowMaxCascades> hasTerrain_{};
+  std::array<bool, fxcontracts::shader::kCloudShadowMaxCascades> hasTerrain_{};
   std::optional<Building> building_;
   std::uint64_t turn_ = 0;
   Settings settings_{};  // those the made cascades were made with

@@ -4,7 +4,7 @@
 # The effect modules' build-time shaders. Lives with the kit so every module builds on its own
 # when dropped into another project (the engine has its own, cmake/CloudscapeShaders.cmake:
 # neither reaches into the other). The kit's include folder is on the shaders' include path,
-# so they can include "vkfx/shader_interop.h".
+# so they can include "fxcontracts/shader_interop.h".
 #
 # Compiles each GLSL source with glslangValidator at build time into a C header holding the
 # SPIR-V words (`const uint32_t <file>_<stage>_spv[]`, internal linkage) under
@@ -27,8 +27,10 @@ function(vkfx_embed_shaders target)
   set(out_root ${CMAKE_CURRENT_BINARY_DIR}/shaders)
   set(out_dir ${out_root}/${ARG_NAMESPACE})
   file(MAKE_DIRECTORY ${out_dir})
-  # The kit's headers (vkfx/shader_interop.h), wherever the function is called from.
-  get_filename_component(kit_include ${CMAKE_CURRENT_FUNCTION_LIST_DIR}/../include ABSOLUTE)
+  # The contracts' headers (fxcontracts/shader_interop.h and the host-facing contracts),
+  # wherever the function is called from.
+  get_filename_component(kit_include ${CMAKE_CURRENT_FUNCTION_LIST_DIR}/../../fxcontracts/include
+                         ABSOLUTE)
   set(include_flags "-I${kit_include}")
   foreach(dir IN LISTS ARG_INCLUDE_DIRS)
     list(APPEND include_flags "-I${dir}")

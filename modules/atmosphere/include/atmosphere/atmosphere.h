@@ -132,10 +132,10 @@ struct FrameInputs {
   std::uint64_t frameIndex = 0;    // increases by one a frame; picks per-frame slots
 
   // Optional shadow of the sun in the air (light shafts): a cloud shadow map laid out and read
-  // as vkfx/cloud_shadow.h says (the clouds module's Outputs::shadowMap and shadowParameters,
-  // relative to this frame's camera). With it the aerial perspective's single scattering of
-  // the sun is taken where the map says the sun is hidden (by cloud, and by terrain when the
-  // map has it), so shadowed air scatters less; its multiple scattering is left as it is.
+  // as fxcontracts/cloud_shadow.h says (the clouds module's Outputs::shadowMap and
+  // shadowParameters, relative to this frame's camera). With it the aerial perspective's single
+  // scattering of the sun is taken where the map says the sun is hidden (by cloud, and by terrain
+  // when the map has it), so shadowed air scatters less; its multiple scattering is left as it is.
   struct CloudShadow {
     VkImageView view = VK_NULL_HANDLE;               // none: the air is lit everywhere
     VkImageLayout layout = VK_IMAGE_LAYOUT_GENERAL;  // sampled (linear, clamped) in this layout
@@ -159,7 +159,7 @@ struct Outputs {
   OutputImage transmittance;       // the parameterisation of atmosphere_model.h
   OutputImage multipleScattering;  // ditto
   OutputImage skyView;             // ditto, for this frame's camera altitude; unit sun
-  // The aerial perspective, laid out as vkfx/aerial_perspective.glsl says (read it with that
+  // The aerial perspective, laid out as fxcontracts/aerial_perspective.glsl says (read it with that
   // header's aerialPerspectiveAt()): 3D, x and y this frame's screen (its view and
   // projection), slice s (texel centre) at aerialPerspectiveRangeMetres * ((s + 0.5) /
   // slices)^2 along each pixel's ray; rgb the radiance the air in front scatters towards the

@@ -299,7 +299,7 @@ SceneTextures CloudFeature::addPasses(FrameGraph& graph, const SceneTextures& sc
       "clouds composite", PassType::Compute,
       [&](PassBuilder& builder, CompositeData& d) {
         d.radiance = builder.read(march.radiance, Access::StorageRead);
-        // God rays read the scene's depth and haze (vkfx/god_rays.h).
+        // God rays read the scene's depth and haze (fxcontracts/god_rays.h).
         if (settings_.godRaySamples > 0) {
           if (scene.depth.valid()) builder.read(scene.depth, Access::SampledRead);
           if (haze != nullptr) builder.read(haze->volume, Access::SampledReadGeneral);

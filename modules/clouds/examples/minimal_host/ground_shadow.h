@@ -3,7 +3,7 @@
 // documentation alone (clouds.h, ShadowMapParameters and Outputs::shadowMap), as another
 // engine would: the atlas read back to the CPU, then per lit point of the host's scene the
 // finest cascade that holds it, a bilinear read and Beer's law. (An engine with shaders would
-// include vkfx/cloud_shadow.h instead, which also blends cascades and reads the terrain
+// include fxcontracts/cloud_shadow.h instead, which also blends cascades and reads the terrain
 // channel.)
 #include <glm/glm.hpp>
 

@@ -661,7 +661,7 @@ GroundShadow readGroundShadow(const ShadowReadback& readback,
 
 // The clouds' shadow first, read back: the host lights its scene through it (on the CPU,
 // ground_shadow.h), then uploads that colour in the frame's submission. A GPU host would read
-// the map in its own shaders instead (vkfx/cloud_shadow.h), in the same submission.
+// the map in its own shaders instead (fxcontracts/cloud_shadow.h), in the same submission.
 bool lightSceneThroughCloudShadow(Host& host, clouds::Context& clouds,
                                   const clouds::Settings& settings, clouds::FrameInputs& inputs,
                                   clouds::Error* error) {

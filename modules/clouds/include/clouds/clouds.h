@@ -336,13 +336,14 @@ struct Settings {
   // over 2 km of relief, 23 km of ray: 48 samples are 480 m apart).
   std::uint32_t terrainShadowSteps = 48;  // [1, 1024]
 
-  // --- God rays (Outputs::godRayMask, vkfx/god_rays.h) ---------------------------------------
-  // dispatch() makes the god-ray mask at a quarter of the render extent: the share of each
-  // pixel's way towards the sun on screen that sees it past the clouds and the host's geometry
-  // (a radial blur, Mitchell 2007). The radiance output then takes the hidden part of the
-  // haze's Mie in-scattering from the sky's pixels (with FrameInputs::aerialPerspective and
-  // its scattering coefficients), or adds a glow along the clear paths (without). A sky that
-  // cannot hold cloud is not marched and gets none. 0 samples: no mask, no pass, no memory.
+  // --- God rays (Outputs::godRayMask, fxcontracts/god_rays.h)
+  // --------------------------------------- dispatch() makes the god-ray mask at a quarter of the
+  // render extent: the share of each pixel's way towards the sun on screen that sees it past the
+  // clouds and the host's geometry (a radial blur, Mitchell 2007). The radiance output then takes
+  // the hidden part of the haze's Mie in-scattering from the sky's pixels (with
+  // FrameInputs::aerialPerspective and its scattering coefficients), or adds a glow along the clear
+  // paths (without). A sky that cannot hold cloud is not marched and gets none. 0 samples: no mask,
+  // no pass, no memory.
   std::uint32_t godRaySamples = 0;   // [0, 128] samples along each texel's way to the sun
   float godRayLength = 0.9f;         // [0.05, 1] fraction of the way the samples cover
   float godRayDecay = 0.97f;         // [0.5, 1] weight of each sample over the one before
@@ -454,7 +455,7 @@ struct FrameInputs {
   std::optional<glm::vec3> groundAlbedo;
 
   // Optional aerial perspective: the haze between the camera and every distance, as a 3D
-  // volume laid out as vkfx/aerial_perspective.glsl says (the atmosphere module's
+  // volume laid out as fxcontracts/aerial_perspective.glsl says (the atmosphere module's
   // Outputs::aerialPerspective). With it the clouds' radiance output is hazed at their
   // transmittance-weighted depth, rgb * T_air + L_air * (1 - T_clouds), the way the host's
   // geometry is hazed by the same volume; the transmittance output stays the clouds' own.
@@ -466,7 +467,7 @@ struct FrameInputs {
     glm::vec3 radianceScale{1.0f};  // multiplies its rgb (the atmosphere's: the sun's
                                     //   illuminance at the top of the atmosphere), >= 0
     // The air's scattering at the ground (per metre) and Mie's asymmetry: god rays take the
-    // Mie share of the haze (vkfx/god_rays.h). All 0: the haze gets no god rays.
+    // Mie share of the haze (fxcontracts/god_rays.h). All 0: the haze gets no god rays.
     glm::vec3 rayleighScatteringPerMetre{0.0f};  // >= 0
     glm::vec3 mieScatteringPerMetre{0.0f};       // >= 0
     float miePhaseG = 0.8f;                      // (-1, 1)
@@ -476,7 +477,7 @@ struct FrameInputs {
   // Optional terrain (the host's ground as a heightfield): with it each shadow-map texel also
   // holds where the terrain hides the sun from its ray (the "terrain shadow" pass, in
   // dispatchShadowMap()), so clouds in a mountain's shadow lose their direct sun (dispatch())
-  // and a host can shadow its terrain on itself with the same lookup (vkfx/cloud_shadow.h).
+  // and a host can shadow its terrain on itself with the same lookup (fxcontracts/cloud_shadow.h).
   // Needs the shadow map: Settings::shadowCascades > 0 and dispatchShadowMap() every frame
   // before dispatch(). Outside the heightfield there is no terrain.
   struct Terrain {
@@ -518,7 +519,7 @@ struct OutputImage {
 
 // Where the cascades of the cloud shadow map lie, relative to the camera of the last
 // dispatchShadowMap(); std140-compatible (13 vec4s), so a host copies it into its own uniform
-// block. The lookup, as GLSL and C++: vkfx/cloud_shadow.h (CloudShadowParameters), in short:
+// block. The lookup, as GLSL and C++: fxcontracts/cloud_shadow.h (CloudShadowParameters), in short:
 // for a camera-relative position p (m) and cascade c, with U, V, L = cascade[3c .. 3c+2].xyz,
 //   uv = (dot(U, p) - cascade[3c].w, dot(V, p) - cascade[3c+1].w) * cascade[3c+2].w
 // is in [0, 1]^2 inside the cascade; its texel t (at atlas uv ((c + uv.x) / cascades, uv.y))
@@ -537,7 +538,8 @@ struct ShadowMapParameters {
 struct Outputs {
   // RGBA16F: rgb in-scattered radiance towards the camera (premultiplied), a transmittance.
   // Composite: colour = max(scene * a + rgb, 0). With god rays rgb also holds their light for
-  // the sky's pixels (vkfx/god_rays.h), negative where the haze in the clouds' shadow loses it.
+  // the sky's pixels (fxcontracts/god_rays.h), negative where the haze in the clouds' shadow loses
+  // it.
   OutputImage radiance;
   // RG32F: r distance (m) to the first cloud along the pixel's ray, g transmittance-weighted
   // mean distance (m) of the cloud (for haze blending and reprojection); 0 where no cloud.
@@ -554,8 +556,8 @@ struct Outputs {
   // The god-ray mask (Settings::godRaySamples > 0; else null): R32F at godRayParameters'
   // extent (a quarter of the render extent per axis, rounded up), in GENERAL with the writes of
   // the last dispatch() visible to compute- and fragment-shader reads; meaning and use:
-  // vkfx/god_rays.h. Its parameters: sun (xy the sun's position in the mask's uv, z the fade,
-  // w the samples), blur (x length, y decay, zw the mask's extent).
+  // fxcontracts/god_rays.h. Its parameters: sun (xy the sun's position in the mask's uv, z the
+  // fade, w the samples), blur (x length, y decay, zw the mask's extent).
   OutputImage godRayMask;
   glm::vec4 godRaySun{0.0f};
   glm::vec4 godRayBlur{0.0f};

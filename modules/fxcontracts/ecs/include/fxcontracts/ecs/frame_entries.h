@@ -24,16 +24,16 @@ struct SkyRadiance {
   engine::render::TextureHandle texture;
 };
 
-// The haze between the camera and every distance (vkfx/aerial_perspective.glsl), its radiance
-// per unit of the sun's illuminance, kept in GENERAL. Published by the atmosphere's feature, or
-// by a renderer that hazes with a neutral volume of its own.
+// The haze between the camera and every distance (fxcontracts/aerial_perspective.glsl), its
+// radiance per unit of the sun's illuminance, kept in GENERAL. Published by the atmosphere's
+// feature, or by a renderer that hazes with a neutral volume of its own.
 struct AerialPerspective {
   engine::render::TextureHandle volume;
   // Written by the publishing pass every frame:
   std::uint32_t slices = 0;  // the volume's depth in slices
   float rangeMetres = 0.0f;  // the distance of its last slice
   // What the haze is made of, for effects that weigh its Mie share (god rays,
-  // vkfx/god_rays.h): the air's scattering at the ground (per metre) and its Mie asymmetry.
+  // fxcontracts/god_rays.h): the air's scattering at the ground (per metre) and its Mie asymmetry.
   glm::vec3 rayleighScatteringPerMetre{0.0f};
   glm::vec3 mieScatteringPerMetre{0.0f};
   float miePhaseG = 0.8f;
@@ -44,11 +44,11 @@ struct AerialPerspective {
 // made.
 struct CloudShadowWanted {};
 
-// The lookup parameters of a cloud shadow map (vkfx/cloud_shadow.h's CloudShadowParameters:
+// The lookup parameters of a cloud shadow map (fxcontracts/cloud_shadow.h's CloudShadowParameters:
 // 13 vec4s, std140), as a receiver copies them into its uniforms.
 using CloudShadowParameterBlock = std::array<glm::vec4, 13>;
 
-// The clouds' shadow for receivers lit by the sun (vkfx/cloud_shadow.h), kept in GENERAL.
+// The clouds' shadow for receivers lit by the sun (fxcontracts/cloud_shadow.h), kept in GENERAL.
 // Published by the clouds' feature when it casts shadows and CloudShadowWanted is there.
 struct CloudShadow {
   engine::render::TextureHandle map;
