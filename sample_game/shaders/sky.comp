@@ -1,14 +1,14 @@
 #version 460
 // Sky (compute): writes the scene's HDR colour for every pixel from the view ray: the sky
 // gradient of the time of day and the sun (scene_constants.h). Later passes draw terrain and
-// composite clouds over it. Output: binding 1, RGBA16F storage image. Input: binding 0
-// SceneFrame.
+// composite clouds over it. Output: an RGBA16F storage image. Input: SceneFrame (bindings.h).
 #extension GL_GOOGLE_include_directive : require
+#include "bindings.h"
 #include "scene_constants.h"
 
 layout(local_size_x = 8, local_size_y = 8) in;
-layout(binding = 0, std140) uniform Frame { SceneFrame frame; };
-layout(binding = 1, rgba16f) uniform writeonly image2D outColor;
+layout(binding = kSkyFrameBinding, std140) uniform Frame { SceneFrame frame; };
+layout(binding = kSkyColorBinding, rgba16f) uniform writeonly image2D outColor;
 
 void main() {
   const uvec2 pixel = gl_GlobalInvocationID.xy;

@@ -5,9 +5,10 @@
 // (TERRAIN_HAZED: a scene with an atmosphere) or, the cheap alternative, fogged towards the
 // gradient sky behind the fragment.
 #extension GL_GOOGLE_include_directive : require
+#include "bindings.h"
 #include "scene_constants.h"
 
-layout(binding = 0, std140) uniform Frame { SceneFrame frame; };
+layout(binding = kTerrainFrameBinding, std140) uniform Frame { SceneFrame frame; };
 #include "terrain_lighting.glsl"
 layout(location = 0) in vec3 inRelative;
 layout(location = 1) in vec3 inNormal;
@@ -22,7 +23,7 @@ layout(location = 3) in vec4 inHaze;
 #endif
 
 #ifdef TERRAIN_CLOUD_SHADOWS
-layout(binding = 2) uniform sampler2D sunlightMap;  // terrain_sunlight_map.h
+layout(binding = kTerrainSunlightBinding) uniform sampler2D sunlightMap;  // terrain_sunlight_map.h
 #endif
 
 // The share of the sun the fragment sees: what the clouds let through, and none where the

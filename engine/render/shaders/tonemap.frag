@@ -5,7 +5,7 @@
 #extension GL_GOOGLE_include_directive : require
 #include "tonemap_operator.h"
 
-layout(binding = 0) uniform sampler2D hdrImage;
+layout(binding = kTonemapHdrBinding) uniform sampler2D hdrImage;
 layout(push_constant) uniform Constants { TonemapConstants constants; };
 
 layout(location = 0) in vec2 inUv;

@@ -8,6 +8,9 @@
 
 SHADER_NAMESPACE_BEGIN
 
+// The pass's one descriptor: the HDR image it reads (tonemap.frag, Tonemapper).
+const uint kTonemapHdrBinding = 0;
+
 struct TonemapConstants {
   float exposure;  // linear multiplier applied to HDR radiance before the curve
   uint debugView;  // 0: tonemapped; 1: raw HDR clamped (for debugging)

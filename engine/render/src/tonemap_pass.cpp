@@ -14,8 +14,8 @@ Tonemapper::Tonemapper(gfx::Device& device, VkFormat hdrFormat, VkFormat targetF
   gfx::GraphicsPipelineDesc desc;
   desc.vertexSpirv = fullscreen_vert_spv;
   desc.fragmentSpirv = tonemap_frag_spv;
-  desc.bindings = {{0, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, hdrFormat, VK_IMAGE_VIEW_TYPE_2D,
-                    VK_FILTER_NEAREST}};
+  desc.bindings = {{shaders::kTonemapHdrBinding, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER,
+                    hdrFormat, VK_IMAGE_VIEW_TYPE_2D, VK_FILTER_NEAREST}};
   desc.pushConstantBytes = sizeof(shaders::TonemapConstants);
   desc.colorFormats = {targetFormat};
   desc.debugName = "tonemap";
@@ -36,7 +36,8 @@ TextureHandle addTonemapPass(FrameGraph& graph, const Tonemapper& tonemapper, Te
       },
       [&tonemapper, settings](const Data& d, PassContext& context) {
         gfx::DescriptorWriter writer;
-        writer.combinedImageSampler(0, context.view(d.hdr), tonemapper.sampler());
+        writer.combinedImageSampler(shaders::kTonemapHdrBinding, context.view(d.hdr),
+                                    tonemapper.sampler());
         context.bind(tonemapper.pipeline(), writer);
         shaders::TonemapConstants constants{settings->exposure, settings->rawHdrView ? 1u : 0u,
                                             0.0f, 0.0f};

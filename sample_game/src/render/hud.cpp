@@ -6,6 +6,7 @@
 #include <cstdio>
 #include <cstring>
 
+#include "bindings.h"
 #include "clouds/ecs/cloud_components.h"
 #include "engine/ecs/frame_time.h"
 #include "engine/gfx/descriptors.h"
@@ -61,7 +62,8 @@ Hud::Hud(gfx::Device& device, VkFormat targetFormat)
   gfx::GraphicsPipelineDesc desc;
   desc.vertexSpirv = hud_vert_spv;
   desc.fragmentSpirv = hud_frag_spv;
-  desc.bindings = {{0, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, VK_FORMAT_R8G8B8A8_UNORM}};
+  desc.bindings = {{shaders::kHudFontBinding, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER,
+                    VK_FORMAT_R8G8B8A8_UNORM}};
   desc.pushConstantBytes = sizeof(HudConstants);
   desc.colorFormats = {targetFormat};
   desc.blend = gfx::BlendMode::Alpha;
@@ -170,7 +172,7 @@ void Hud::record(VkCommandBuffer cmd, gfx::DescriptorArena& descriptors,
   const ImDrawData* draw = ImGui::GetDrawData();
   if (draw == nullptr || draw->TotalVtxCount == 0) return;
   gfx::DescriptorWriter writer;
-  writer.combinedImageSampler(0, font_.view(), sampler_.vk());
+  writer.combinedImageSampler(shaders::kHudFontBinding, font_.view(), sampler_.vk());
   gfx::bindPipeline(device, cmd, pipeline_, descriptors, writer);
   const HudConstants constants{glm::vec2(2.0f / float(extent_.width), 2.0f / float(extent_.height)),
                                glm::vec2(-1.0f, -1.0f)};

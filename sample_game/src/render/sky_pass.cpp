@@ -1,5 +1,6 @@
 #include "render/sky_pass.h"
 
+#include "bindings.h"
 #include "engine/gfx/descriptors.h"
 #include "sample_shaders/sky.comp.spv.h"
 
@@ -10,8 +11,8 @@ using namespace engine;
 SkyPass::SkyPass(gfx::Device& device, VkFormat hdrFormat) {
   gfx::ComputePipelineDesc desc;
   desc.spirv = sky_comp_spv;
-  desc.bindings = {{0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER},
-                   {1, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, hdrFormat}};
+  desc.bindings = {{shaders::kSkyFrameBinding, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER},
+                   {shaders::kSkyColorBinding, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, hdrFormat}};
   desc.debugName = "sky";
   pipeline_ = gfx::Pipeline(device, desc);
 }
@@ -30,8 +31,9 @@ render::TextureHandle addSkyPass(render::FrameGraph& graph, const SkyPass& sky,
       },
       [&sky, frame](const Data& d, render::PassContext& context) {
         gfx::DescriptorWriter writer;
-        writer.uniformBuffer(0, frame->slice.buffer, frame->slice.offset, frame->slice.size);
-        writer.storageImage(1, context.view(d.hdr));
+        writer.uniformBuffer(shaders::kSkyFrameBinding, frame->slice.buffer, frame->slice.offset,
+                             frame->slice.size);
+        writer.storageImage(shaders::kSkyColorBinding, context.view(d.hdr));
         context.bind(sky.pipeline(), writer);
         const VkExtent3D extent = context.extent(d.hdr);
         vkCmdDispatch(context.cmd(), gfx::groupCount(extent.width, 8),

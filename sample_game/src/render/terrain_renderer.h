@@ -10,6 +10,7 @@
 
 #include <glm/glm.hpp>
 
+#include "bindings.h"
 #include "engine/assets/gltf_loader.h"
 #include "engine/gfx/pipelines.h"
 #include "engine/gfx/resources.h"
@@ -50,10 +51,10 @@ bool boxInFrustum(const glm::mat4& viewProjection, const glm::vec3& boundsMin,
 
 class TerrainRenderer {
  public:
-  // Descriptor bindings of the terrain pipeline.
-  static constexpr std::uint32_t kFrameBinding = 0;     // SceneFrame
-  static constexpr std::uint32_t kHazeBinding = 1;      // the aerial perspective (3D)
-  static constexpr std::uint32_t kSunlightBinding = 2;  // the terrain's sunlight map
+  // Descriptor bindings of the terrain pipeline (shaders/bindings.h).
+  static constexpr std::uint32_t kFrameBinding = engine::shaders::kTerrainFrameBinding;
+  static constexpr std::uint32_t kHazeBinding = engine::shaders::kTerrainHazeBinding;
+  static constexpr std::uint32_t kSunlightBinding = engine::shaders::kTerrainSunlightBinding;
   // Specialization constant: 1 lights the terrain with the brightest flash in progress.
   static constexpr std::uint32_t kLightningConstant = 0;
 

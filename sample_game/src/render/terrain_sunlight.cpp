@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <vector>
 
+#include "bindings.h"
 #include "engine/core/error.h"
 #include "engine/gfx/descriptors.h"
 #include "engine/gfx/upload.h"
@@ -16,10 +17,10 @@ using namespace engine;
 
 namespace {
 
-constexpr std::uint32_t kHeightfieldBinding = 0;
-constexpr std::uint32_t kCloudShadowBinding = 1;
-constexpr std::uint32_t kCloudShadowParametersBinding = 2;
-constexpr std::uint32_t kSunlightBinding = 3;
+using shaders::kSunlightCloudShadowBinding;
+using shaders::kSunlightHeightfieldBinding;
+using shaders::kSunlightMapBinding;
+using shaders::kSunlightShadowParametersBinding;
 
 // Where the map is between frames: the scene pass's fragment shaders read it last.
 const render::ResourceState kReadByTheScene{VK_IMAGE_LAYOUT_GENERAL,
@@ -63,12 +64,12 @@ TerrainSunlight::TerrainSunlight(gfx::Device& device, const render::TerrainHeigh
 
   gfx::ComputePipelineDesc desc;
   desc.spirv = terrain_sunlight_comp_spv;
-  desc.bindings = {
-      {kHeightfieldBinding, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, VK_FORMAT_R32_SFLOAT},
-      {kCloudShadowBinding, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER,
-       VK_FORMAT_R16G16B16A16_SFLOAT},
-      {kCloudShadowParametersBinding, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER},
-      {kSunlightBinding, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, kFormat}};
+  desc.bindings = {{kSunlightHeightfieldBinding, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER,
+                    VK_FORMAT_R32_SFLOAT},
+                   {kSunlightCloudShadowBinding, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER,
+                    VK_FORMAT_R16G16B16A16_SFLOAT},
+                   {kSunlightShadowParametersBinding, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER},
+                   {kSunlightMapBinding, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, kFormat}};
   desc.pushConstantBytes = sizeof(shaders::TerrainSunlightConstants);
   desc.debugName = "terrain sunlight";
   pipeline_ = gfx::Pipeline(device, desc);
@@ -126,11 +127,12 @@ render::TextureHandle TerrainSunlight::addPass(render::FrameGraph& graph,
         const TerrainSunlightSchedule::Rows rows = schedule_.next(shadow.remadeWhole);
         const gfx::ConstantRing::Slice block = context.constants().push(shadow.parameters);
         gfx::DescriptorWriter writer;
-        writer.combinedImageSampler(kHeightfieldBinding, heightfield_.view, sampler_.vk());
-        writer.combinedImageSampler(kCloudShadowBinding, context.view(d.cloudShadow), sampler_.vk(),
-                                    VK_IMAGE_LAYOUT_GENERAL);
-        writer.uniformBuffer(kCloudShadowParametersBinding, block.buffer, block.offset, block.size);
-        writer.storageImage(kSunlightBinding, context.view(d.map));
+        writer.combinedImageSampler(kSunlightHeightfieldBinding, heightfield_.view, sampler_.vk());
+        writer.combinedImageSampler(kSunlightCloudShadowBinding, context.view(d.cloudShadow),
+                                    sampler_.vk(), VK_IMAGE_LAYOUT_GENERAL);
+        writer.uniformBuffer(kSunlightShadowParametersBinding, block.buffer, block.offset,
+                             block.size);
+        writer.storageImage(kSunlightMapBinding, context.view(d.map));
         context.bind(pipeline_, writer);
         const glm::dvec2 texel = heightfield_.sizeMetres / double(resolution_);
         shaders::TerrainSunlightConstants constants{};
