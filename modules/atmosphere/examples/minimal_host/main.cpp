@@ -8,8 +8,9 @@
 //   4. submits, reads the colour back, tonemaps it and writes a binary PPM image.
 // main(), at the end of this file, reads as these steps; each is a function above it. It
 // enables exactly what the module's README requires (Vulkan 1.3, synchronization2,
-// shaderStorageImageExtendedFormats) and no extension. The Vulkan set-up has the shape of the
-// clouds module's minimal host on purpose: each example is meant to be read and copied alone.
+// shaderStorageImageExtendedFormats) and no extension; that set-up, its images and buffers and
+// the camera conventions are ../../../examples/raw_vulkan_host.h, shared with the clouds
+// module's example.
 //
 // Usage: atmosphere_minimal_host [--output FILE.ppm] [--width W] [--height H] [--frames N]
 //                                [--validation]
@@ -31,29 +32,12 @@
 #include <vector>
 
 #include "atmosphere/atmosphere.h"
+#include "raw_vulkan_host.h"
 
 namespace {
 
-// --- Errors and validation -------------------------------------------------------------------
-
-void vkCheck(VkResult result, const char* what) {
-  if (result != VK_SUCCESS) {
-    std::fprintf(stderr, "atmosphere_minimal_host: %s failed (VkResult %d)\n", what,
-                 static_cast<int>(result));
-    std::exit(1);
-  }
-}
-
-int gValidationMessages = 0;
-
-VKAPI_ATTR VkBool32 VKAPI_CALL countMessage(VkDebugUtilsMessageSeverityFlagBitsEXT,
-                                            VkDebugUtilsMessageTypeFlagsEXT,
-                                            const VkDebugUtilsMessengerCallbackDataEXT* data,
-                                            void*) {
-  ++gValidationMessages;
-  std::fprintf(stderr, "validation: %s\n", data->pMessage);
-  return VK_FALSE;
-}
+// Vulkan set-up, images, buffers, barriers and the camera conventions (raw_vulkan_host.h).
+using namespace example;
 
 struct Options {
   std::string output = "atmosphere_minimal_host.ppm";
@@ -92,194 +76,6 @@ int parseOptions(int argc, char** argv, Options& options) {
   return 0;
 }
 
-// --- Vulkan set-up -------------------------------------------------------------------------------
-
-struct Gpu {
-  VkInstance instance = VK_NULL_HANDLE;
-  VkDebugUtilsMessengerEXT messenger = VK_NULL_HANDLE;
-  VkPhysicalDevice physical = VK_NULL_HANDLE;
-  VkDevice device = VK_NULL_HANDLE;
-  std::uint32_t queueFamily = 0;
-  VkQueue queue = VK_NULL_HANDLE;
-  VkPhysicalDeviceMemoryProperties memory{};
-};
-
-void createInstanceAndMessenger(Gpu& gpu, bool validation) {
-  VkApplicationInfo app{VK_STRUCTURE_TYPE_APPLICATION_INFO};
-  app.pApplicationName = "atmosphere minimal host";
-  app.apiVersion = VK_API_VERSION_1_3;
-  const char* layer = "VK_LAYER_KHRONOS_validation";
-  const char* extension = VK_EXT_DEBUG_UTILS_EXTENSION_NAME;
-  VkInstanceCreateInfo info{VK_STRUCTURE_TYPE_INSTANCE_CREATE_INFO};
-  info.pApplicationInfo = &app;
-  info.enabledLayerCount = validation ? 1 : 0;
-  info.ppEnabledLayerNames = &layer;
-  info.enabledExtensionCount = validation ? 1 : 0;
-  info.ppEnabledExtensionNames = &extension;
-  vkCheck(vkCreateInstance(&info, nullptr, &gpu.instance), "vkCreateInstance");
-  if (!validation) return;
-  VkDebugUtilsMessengerCreateInfoEXT messenger{
-      VK_STRUCTURE_TYPE_DEBUG_UTILS_MESSENGER_CREATE_INFO_EXT};
-  messenger.messageSeverity = VK_DEBUG_UTILS_MESSAGE_SEVERITY_WARNING_BIT_EXT |
-                              VK_DEBUG_UTILS_MESSAGE_SEVERITY_ERROR_BIT_EXT;
-  messenger.messageType =
-      VK_DEBUG_UTILS_MESSAGE_TYPE_VALIDATION_BIT_EXT | VK_DEBUG_UTILS_MESSAGE_TYPE_GENERAL_BIT_EXT;
-  messenger.pfnUserCallback = &countMessage;
-  const auto create = reinterpret_cast<PFN_vkCreateDebugUtilsMessengerEXT>(
-      vkGetInstanceProcAddr(gpu.instance, "vkCreateDebugUtilsMessengerEXT"));
-  vkCheck(create(gpu.instance, &messenger, nullptr, &gpu.messenger), "debug messenger");
-}
-
-// The first Vulkan 1.3 device (lavapipe on a machine without a GPU) and its first queue family
-// with compute and transfer.
-void chooseDevice(Gpu& gpu) {
-  std::uint32_t count = 0;
-  vkEnumeratePhysicalDevices(gpu.instance, &count, nullptr);
-  std::vector<VkPhysicalDevice> devices(count);
-  vkEnumeratePhysicalDevices(gpu.instance, &count, devices.data());
-  for (VkPhysicalDevice candidate : devices) {
-    VkPhysicalDeviceProperties properties{};
-    vkGetPhysicalDeviceProperties(candidate, &properties);
-    if (properties.apiVersion >= VK_API_VERSION_1_3) {
-      gpu.physical = candidate;
-      break;
-    }
-  }
-  if (gpu.physical == VK_NULL_HANDLE) {
-    std::fprintf(stderr, "atmosphere_minimal_host: no Vulkan 1.3 device\n");
-    std::exit(1);
-  }
-  std::uint32_t families = 0;
-  vkGetPhysicalDeviceQueueFamilyProperties(gpu.physical, &families, nullptr);
-  std::vector<VkQueueFamilyProperties> properties(families);
-  vkGetPhysicalDeviceQueueFamilyProperties(gpu.physical, &families, properties.data());
-  for (std::uint32_t i = 0; i < families; ++i) {
-    if (properties[i].queueFlags & VK_QUEUE_COMPUTE_BIT) {
-      gpu.queueFamily = i;
-      break;
-    }
-  }
-  vkGetPhysicalDeviceMemoryProperties(gpu.physical, &gpu.memory);
-}
-
-// Exactly what the module's README asks for: synchronization2 and extended storage formats.
-void createDeviceWithTheModulesFeatures(Gpu& gpu) {
-  VkPhysicalDeviceVulkan13Features features13{
-      VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_3_FEATURES};
-  features13.synchronization2 = VK_TRUE;
-  VkPhysicalDeviceFeatures2 features{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_FEATURES_2};
-  features.pNext = &features13;
-  features.features.shaderStorageImageExtendedFormats = VK_TRUE;
-  const float priority = 1.0f;
-  VkDeviceQueueCreateInfo queue{VK_STRUCTURE_TYPE_DEVICE_QUEUE_CREATE_INFO};
-  queue.queueFamilyIndex = gpu.queueFamily;
-  queue.queueCount = 1;
-  queue.pQueuePriorities = &priority;
-  VkDeviceCreateInfo info{VK_STRUCTURE_TYPE_DEVICE_CREATE_INFO};
-  info.pNext = &features;
-  info.queueCreateInfoCount = 1;
-  info.pQueueCreateInfos = &queue;
-  vkCheck(vkCreateDevice(gpu.physical, &info, nullptr, &gpu.device), "vkCreateDevice");
-  vkGetDeviceQueue(gpu.device, gpu.queueFamily, 0, &gpu.queue);
-}
-
-std::uint32_t findMemory(const Gpu& gpu, std::uint32_t allowed, VkMemoryPropertyFlags wanted) {
-  for (std::uint32_t i = 0; i < gpu.memory.memoryTypeCount; ++i) {
-    const bool has = (gpu.memory.memoryTypes[i].propertyFlags & wanted) == wanted;
-    if ((allowed & (1u << i)) != 0 && has) return i;
-  }
-  std::fprintf(stderr, "atmosphere_minimal_host: no memory type fits\n");
-  std::exit(1);
-}
-
-// --- The host's images and a staging buffer ------------------------------------------------------
-
-struct Image {
-  VkImage image = VK_NULL_HANDLE;
-  VkDeviceMemory memory = VK_NULL_HANDLE;
-  VkImageView view = VK_NULL_HANDLE;
-};
-
-Image makeImage(const Gpu& gpu, VkFormat format, VkExtent2D extent, VkImageUsageFlags usage,
-                VkImageAspectFlags aspect) {
-  Image made;
-  VkImageCreateInfo info{VK_STRUCTURE_TYPE_IMAGE_CREATE_INFO};
-  info.imageType = VK_IMAGE_TYPE_2D;
-  info.format = format;
-  info.extent = {extent.width, extent.height, 1};
-  info.mipLevels = 1;
-  info.arrayLayers = 1;
-  info.samples = VK_SAMPLE_COUNT_1_BIT;
-  info.usage = usage;
-  vkCheck(vkCreateImage(gpu.device, &info, nullptr, &made.image), "vkCreateImage");
-  VkMemoryRequirements needs{};
-  vkGetImageMemoryRequirements(gpu.device, made.image, &needs);
-  VkMemoryAllocateInfo allocation{VK_STRUCTURE_TYPE_MEMORY_ALLOCATE_INFO};
-  allocation.allocationSize = needs.size;
-  allocation.memoryTypeIndex =
-      findMemory(gpu, needs.memoryTypeBits, VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT);
-  vkCheck(vkAllocateMemory(gpu.device, &allocation, nullptr, &made.memory), "vkAllocateMemory");
-  vkBindImageMemory(gpu.device, made.image, made.memory, 0);
-  VkImageViewCreateInfo view{VK_STRUCTURE_TYPE_IMAGE_VIEW_CREATE_INFO};
-  view.image = made.image;
-  view.viewType = VK_IMAGE_VIEW_TYPE_2D;
-  view.format = format;
-  view.subresourceRange = {aspect, 0, 1, 0, 1};
-  vkCheck(vkCreateImageView(gpu.device, &view, nullptr, &made.view), "vkCreateImageView");
-  return made;
-}
-
-void destroyImage(const Gpu& gpu, Image& image) {
-  vkDestroyImageView(gpu.device, image.view, nullptr);
-  vkDestroyImage(gpu.device, image.image, nullptr);
-  vkFreeMemory(gpu.device, image.memory, nullptr);
-}
-
-struct Staging {
-  VkBuffer buffer = VK_NULL_HANDLE;
-  VkDeviceMemory memory = VK_NULL_HANDLE;
-  void* mapped = nullptr;
-};
-
-Staging makeStaging(const Gpu& gpu, VkDeviceSize bytes) {
-  Staging made;
-  VkBufferCreateInfo info{VK_STRUCTURE_TYPE_BUFFER_CREATE_INFO};
-  info.size = bytes;
-  info.usage = VK_BUFFER_USAGE_TRANSFER_SRC_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT;
-  vkCheck(vkCreateBuffer(gpu.device, &info, nullptr, &made.buffer), "vkCreateBuffer");
-  VkMemoryRequirements needs{};
-  vkGetBufferMemoryRequirements(gpu.device, made.buffer, &needs);
-  VkMemoryAllocateInfo allocation{VK_STRUCTURE_TYPE_MEMORY_ALLOCATE_INFO};
-  allocation.allocationSize = needs.size;
-  allocation.memoryTypeIndex =
-      findMemory(gpu, needs.memoryTypeBits,
-                 VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT | VK_MEMORY_PROPERTY_HOST_COHERENT_BIT);
-  vkCheck(vkAllocateMemory(gpu.device, &allocation, nullptr, &made.memory), "vkAllocateMemory");
-  vkBindBufferMemory(gpu.device, made.buffer, made.memory, 0);
-  vkCheck(vkMapMemory(gpu.device, made.memory, 0, VK_WHOLE_SIZE, 0, &made.mapped), "vkMapMemory");
-  return made;
-}
-
-void transition(VkCommandBuffer cmd, VkImage image, VkImageAspectFlags aspect, VkImageLayout from,
-                VkImageLayout to, VkPipelineStageFlags2 after, VkAccessFlags2 written,
-                VkPipelineStageFlags2 before, VkAccessFlags2 read) {
-  VkImageMemoryBarrier2 barrier{VK_STRUCTURE_TYPE_IMAGE_MEMORY_BARRIER_2};
-  barrier.srcStageMask = after;
-  barrier.srcAccessMask = written;
-  barrier.dstStageMask = before;
-  barrier.dstAccessMask = read;
-  barrier.oldLayout = from;
-  barrier.newLayout = to;
-  barrier.srcQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
-  barrier.dstQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
-  barrier.image = image;
-  barrier.subresourceRange = {aspect, 0, 1, 0, 1};
-  VkDependencyInfo dependency{VK_STRUCTURE_TYPE_DEPENDENCY_INFO};
-  dependency.imageMemoryBarrierCount = 1;
-  dependency.pImageMemoryBarriers = &barrier;
-  vkCmdPipelineBarrier2(cmd, &dependency);
-}
-
 // --- The scene: a camera 300 m over a flat ground, looking towards a low sun -------------------
 
 constexpr float kCameraAltitudeMetres = 300.0f;
@@ -289,33 +85,19 @@ const glm::vec3 kForward = glm::normalize(glm::vec3(0.0f, 0.05f, -1.0f));
 const glm::vec3 kTowardsSun = glm::normalize(glm::vec3(0.3f, 0.1f, -1.0f));
 constexpr float kSunKilolux = 127.0f;  // at the top of the air; the ground's colour likewise
 
-glm::mat4 viewMatrix() {  // rotation only: the module works camera-relative
-  const glm::vec3 right = glm::normalize(glm::cross(kForward, glm::vec3(0, 1, 0)));
-  const glm::vec3 up = glm::cross(right, kForward);
-  glm::mat4 view(1.0f);
-  for (int i = 0; i < 3; ++i) {
-    view[i][0] = right[i];
-    view[i][1] = up[i];
-    view[i][2] = -kForward[i];
-  }
-  return view;
+glm::mat4 viewOfTheCamera() {
+  return viewMatrix(glm::vec3(0.0f, kCameraAltitudeMetres, 0.0f), kForward);
 }
 
-glm::mat4 projectionMatrix(VkExtent2D extent) {  // reversed-Z, infinite far plane, y down
-  const float f = 1.0f / std::tan(kVerticalFov * 0.5f);
-  glm::mat4 projection(0.0f);
-  projection[0][0] = f * float(extent.height) / float(extent.width);
-  projection[1][1] = -f;
-  projection[3][2] = kNearMetres;
-  projection[2][3] = -1.0f;
-  return projection;
+glm::mat4 projectionOfTheCamera(VkExtent2D extent) {
+  return reversedZProjection(kVerticalFov, float(extent.width) / float(extent.height), kNearMetres);
 }
 
 // Per pixel: reversed-Z depth of the ground (0, the far plane, where the ray sees sky) and its
 // colour, grey lit by the sun (half floats, RGBA).
 void makeScene(VkExtent2D extent, std::vector<float>& depth, std::vector<std::uint16_t>& colour) {
-  const glm::mat4 toView = glm::inverse(projectionMatrix(extent));
-  const glm::mat3 toWorld = glm::transpose(glm::mat3(viewMatrix()));
+  const glm::mat4 toView = glm::inverse(projectionOfTheCamera(extent));
+  const glm::mat3 toWorld = glm::transpose(glm::mat3(viewOfTheCamera()));
   const glm::vec3 ground = glm::vec3(0.3f) * kSunKilolux * kTowardsSun.y / 3.14159265f;
   depth.assign(std::size_t{extent.width} * extent.height, 0.0f);
   colour.assign(depth.size() * 4, glm::packHalf1x16(0.0f));
@@ -338,67 +120,82 @@ void makeScene(VkExtent2D extent, std::vector<float>& depth, std::vector<std::ui
   }
 }
 
-// --- Per frame ---------------------------------------------------------------------------------
-
-struct Frame {
-  VkCommandPool pool = VK_NULL_HANDLE;
-  VkCommandBuffer cmd = VK_NULL_HANDLE;
-  VkFence fence = VK_NULL_HANDLE;
+// The host's colour and depth (in the formats CreateInfo defaults to: RGBA16F with storage use,
+// D32) and one host-visible buffer that holds the scene to upload and the picture read back.
+struct HostImages {
+  Image colour;
+  Image depth;
+  HostBuffer staging;
+  VkDeviceSize colourBytes = 0;  // the staging buffer's colour part; the depth follows it
 };
 
-Frame makeFrame(const Gpu& gpu) {
-  Frame frame;
-  VkCommandPoolCreateInfo pool{VK_STRUCTURE_TYPE_COMMAND_POOL_CREATE_INFO};
-  pool.flags = VK_COMMAND_POOL_CREATE_RESET_COMMAND_BUFFER_BIT;
-  pool.queueFamilyIndex = gpu.queueFamily;
-  vkCheck(vkCreateCommandPool(gpu.device, &pool, nullptr, &frame.pool), "vkCreateCommandPool");
-  VkCommandBufferAllocateInfo allocation{VK_STRUCTURE_TYPE_COMMAND_BUFFER_ALLOCATE_INFO};
-  allocation.commandPool = frame.pool;
-  allocation.level = VK_COMMAND_BUFFER_LEVEL_PRIMARY;
-  allocation.commandBufferCount = 1;
-  vkCheck(vkAllocateCommandBuffers(gpu.device, &allocation, &frame.cmd), "command buffer");
-  VkFenceCreateInfo fence{VK_STRUCTURE_TYPE_FENCE_CREATE_INFO};
-  vkCheck(vkCreateFence(gpu.device, &fence, nullptr, &frame.fence), "vkCreateFence");
-  return frame;
+HostImages createHostImages(const Gpu& gpu, VkExtent2D extent) {
+  HostImages images;
+  images.colour = createImage(gpu, VK_FORMAT_R16G16B16A16_SFLOAT, extent,
+                              VK_IMAGE_USAGE_STORAGE_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT |
+                                  VK_IMAGE_USAGE_TRANSFER_DST_BIT,
+                              VK_IMAGE_ASPECT_COLOR_BIT);
+  images.depth = createImage(gpu, VK_FORMAT_D32_SFLOAT, extent,
+                             VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT,
+                             VK_IMAGE_ASPECT_DEPTH_BIT);
+  std::vector<float> depths;
+  std::vector<std::uint16_t> colours;
+  makeScene(extent, depths, colours);
+  images.colourBytes = colours.size() * sizeof(std::uint16_t);
+  const VkDeviceSize depthBytes = depths.size() * sizeof(float);
+  images.staging =
+      createHostBuffer(gpu, images.colourBytes + depthBytes,
+                       VK_BUFFER_USAGE_TRANSFER_SRC_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT);
+  std::memcpy(images.staging.mapped, colours.data(), images.colourBytes);
+  std::memcpy(static_cast<char*>(images.staging.mapped) + images.colourBytes, depths.data(),
+              depthBytes);
+  return images;
 }
+
+void destroyHostImages(const Gpu& gpu, HostImages& images) {
+  destroyHostBuffer(gpu, images.staging);
+  destroyImage(gpu, images.colour);
+  destroyImage(gpu, images.depth);
+}
+
+// --- Per frame ---------------------------------------------------------------------------------
 
 // The scene into the host's images, in the layouts render() reads them in: the colour in
 // GENERAL for its storage writes, the depth sampled read-only.
-void recordSceneUpload(VkCommandBuffer cmd, const Staging& staging, VkDeviceSize colourBytes,
-                       const Image& colour, const Image& depth, VkExtent2D extent) {
+void recordSceneUpload(VkCommandBuffer cmd, const HostImages& images, VkExtent2D extent) {
   const VkImageAspectFlags c = VK_IMAGE_ASPECT_COLOR_BIT;
   const VkImageAspectFlags d = VK_IMAGE_ASPECT_DEPTH_BIT;
-  transition(cmd, colour.image, c, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
-             VK_PIPELINE_STAGE_2_NONE, 0, VK_PIPELINE_STAGE_2_COPY_BIT,
-             VK_ACCESS_2_TRANSFER_WRITE_BIT);
-  transition(cmd, depth.image, d, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
-             VK_PIPELINE_STAGE_2_NONE, 0, VK_PIPELINE_STAGE_2_COPY_BIT,
-             VK_ACCESS_2_TRANSFER_WRITE_BIT);
+  imageBarrier(cmd, images.colour.image, c, VK_IMAGE_LAYOUT_UNDEFINED,
+               VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, VK_PIPELINE_STAGE_2_NONE, 0,
+               VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT);
+  imageBarrier(cmd, images.depth.image, d, VK_IMAGE_LAYOUT_UNDEFINED,
+               VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, VK_PIPELINE_STAGE_2_NONE, 0,
+               VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT);
   VkBufferImageCopy region{};
   region.imageSubresource = {c, 0, 0, 1};
   region.imageExtent = {extent.width, extent.height, 1};
-  vkCmdCopyBufferToImage(cmd, staging.buffer, colour.image, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1,
-                         &region);
-  region.bufferOffset = colourBytes;
+  vkCmdCopyBufferToImage(cmd, images.staging.buffer, images.colour.image,
+                         VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1, &region);
+  region.bufferOffset = images.colourBytes;
   region.imageSubresource.aspectMask = d;
-  vkCmdCopyBufferToImage(cmd, staging.buffer, depth.image, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1,
-                         &region);
-  transition(cmd, colour.image, c, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, VK_IMAGE_LAYOUT_GENERAL,
-             VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT,
-             VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
-             VK_ACCESS_2_SHADER_STORAGE_READ_BIT | VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT);
-  transition(cmd, depth.image, d, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
-             VK_IMAGE_LAYOUT_DEPTH_READ_ONLY_OPTIMAL, VK_PIPELINE_STAGE_2_COPY_BIT,
-             VK_ACCESS_2_TRANSFER_WRITE_BIT, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
-             VK_ACCESS_2_SHADER_SAMPLED_READ_BIT);
+  vkCmdCopyBufferToImage(cmd, images.staging.buffer, images.depth.image,
+                         VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1, &region);
+  imageBarrier(cmd, images.colour.image, c, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
+               VK_IMAGE_LAYOUT_GENERAL, VK_PIPELINE_STAGE_2_COPY_BIT,
+               VK_ACCESS_2_TRANSFER_WRITE_BIT, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
+               VK_ACCESS_2_SHADER_STORAGE_READ_BIT | VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT);
+  imageBarrier(cmd, images.depth.image, d, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
+               VK_IMAGE_LAYOUT_DEPTH_READ_ONLY_OPTIMAL, VK_PIPELINE_STAGE_2_COPY_BIT,
+               VK_ACCESS_2_TRANSFER_WRITE_BIT, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
+               VK_ACCESS_2_SHADER_SAMPLED_READ_BIT);
 }
 
-void recordColourReadback(VkCommandBuffer cmd, const Image& colour, const Staging& staging,
+void recordColourReadback(VkCommandBuffer cmd, const Image& colour, const HostBuffer& staging,
                           VkExtent2D extent) {
-  transition(cmd, colour.image, VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_GENERAL,
-             VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
-             VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT, VK_PIPELINE_STAGE_2_COPY_BIT,
-             VK_ACCESS_2_TRANSFER_READ_BIT);
+  imageBarrier(cmd, colour.image, VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_GENERAL,
+               VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
+               VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT, VK_PIPELINE_STAGE_2_COPY_BIT,
+               VK_ACCESS_2_TRANSFER_READ_BIT);
   VkBufferImageCopy region{};
   region.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
   region.imageExtent = {extent.width, extent.height, 1};
@@ -409,38 +206,29 @@ void recordColourReadback(VkCommandBuffer cmd, const Image& colour, const Stagin
 // One frame: the scene anew, the module's dispatch and render over it, and on the last frame
 // the picture back to the host. Exits on a module error with its code's name.
 void renderFrame(const Gpu& gpu, atmosphere::Context& sky, const atmosphere::Parameters& air,
-                 const atmosphere::Settings& settings, const Frame& frame, const Staging& staging,
-                 VkDeviceSize colourBytes, const Image& colour, const Image& depth,
-                 VkExtent2D extent, std::uint64_t index, bool last) {
-  VkCommandBufferBeginInfo begin{VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO};
-  begin.flags = VK_COMMAND_BUFFER_USAGE_ONE_TIME_SUBMIT_BIT;
-  vkCheck(vkBeginCommandBuffer(frame.cmd, &begin), "vkBeginCommandBuffer");
-  recordSceneUpload(frame.cmd, staging, colourBytes, colour, depth, extent);
+                 const atmosphere::Settings& settings, const Submission& frame,
+                 const HostImages& images, VkExtent2D extent, std::uint64_t index, bool last) {
+  beginRecording(frame);
+  recordSceneUpload(frame.cmd, images, extent);
   atmosphere::FrameInputs in;
   in.commandBuffer = frame.cmd;
   in.renderExtent = extent;
-  in.view = viewMatrix();
-  in.projection = projectionMatrix(extent);
+  in.view = viewOfTheCamera();
+  in.projection = projectionOfTheCamera(extent);
   in.cameraPosition = glm::dvec3(0.0, kCameraAltitudeMetres, 0.0);
   in.sunDirection = kTowardsSun;
   in.sunIlluminance = glm::vec3(kSunKilolux);
   in.frameIndex = index;
   atmosphere::Error error;
   if (!sky.dispatch(in, air, settings, &error) ||
-      !sky.render(frame.cmd, colour.view, depth.view, VK_IMAGE_LAYOUT_DEPTH_READ_ONLY_OPTIMAL,
-                  extent, &error)) {
+      !sky.render(frame.cmd, images.colour.view, images.depth.view,
+                  VK_IMAGE_LAYOUT_DEPTH_READ_ONLY_OPTIMAL, extent, &error)) {
     std::fprintf(stderr, "atmosphere_minimal_host: %s (%s)\n", error.message.c_str(),
                  atmosphere::errorCodeName(error.code));
     std::exit(1);
   }
-  if (last) recordColourReadback(frame.cmd, colour, staging, extent);
-  vkCheck(vkEndCommandBuffer(frame.cmd), "vkEndCommandBuffer");
-  VkSubmitInfo submit{VK_STRUCTURE_TYPE_SUBMIT_INFO};
-  submit.commandBufferCount = 1;
-  submit.pCommandBuffers = &frame.cmd;
-  vkCheck(vkQueueSubmit(gpu.queue, 1, &submit, frame.fence), "vkQueueSubmit");
-  vkCheck(vkWaitForFences(gpu.device, 1, &frame.fence, VK_TRUE, UINT64_MAX), "vkWaitForFences");
-  vkCheck(vkResetFences(gpu.device, 1, &frame.fence), "vkResetFences");
+  if (last) recordColourReadback(frame.cmd, images.colour, images.staging, extent);
+  submitAndWait(gpu, frame);
 }
 
 // The HDR colour (kcd/m^2) through an exposure for daylight and Reinhard, as sRGB-ish 8-bit.
@@ -458,74 +246,58 @@ bool writePpm(const std::string& path, const std::uint16_t* halves, VkExtent2D e
   return bool(out);
 }
 
+// The module on the host's device, prepared for the picture's size; exits on an error.
+std::unique_ptr<atmosphere::Context> createSky(const Gpu& gpu, const Options& options,
+                                               const atmosphere::Parameters& air,
+                                               const atmosphere::Settings& settings) {
+  atmosphere::CreateInfo info;
+  info.instance = gpu.instance;
+  info.physicalDevice = gpu.physical;
+  info.device = gpu.device;
+  info.getInstanceProcAddr = vkGetInstanceProcAddr;
+  info.getDeviceProcAddr = vkGetDeviceProcAddr;
+  info.debugUtils = options.validation;  // the messenger's extension is enabled then
+  info.maxRenderExtent = options.extent;
+  info.maxFramesInFlight = 1;  // this host waits for each frame
+  atmosphere::Error error;
+  std::unique_ptr<atmosphere::Context> sky = atmosphere::Context::create(info, &error);
+  if (!sky || !sky->prepare(air, settings, options.extent, &error)) {
+    std::fprintf(stderr, "atmosphere_minimal_host: %s (%s)\n", error.message.c_str(),
+                 atmosphere::errorCodeName(error.code));
+    std::exit(1);
+  }
+  return sky;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
   Options options;
   if (const int bad = parseOptions(argc, argv, options)) return bad;
-  Gpu gpu;
-  createInstanceAndMessenger(gpu, options.validation);
-  chooseDevice(gpu);
-  createDeviceWithTheModulesFeatures(gpu);
+  programName() = "atmosphere_minimal_host";
+  Gpu gpu = createGpu(options.validation);
+  const atmosphere::Parameters air;  // Earth
+  const atmosphere::Settings settings = atmosphere::settingsFor(atmosphere::Quality::Medium);
+  bool written = false;
   {
-    const VkExtent2D extent = options.extent;
-    atmosphere::CreateInfo info;
-    info.instance = gpu.instance;
-    info.physicalDevice = gpu.physical;
-    info.device = gpu.device;
-    info.getInstanceProcAddr = vkGetInstanceProcAddr;
-    info.getDeviceProcAddr = vkGetDeviceProcAddr;
-    info.debugUtils = options.validation;
-    info.maxRenderExtent = extent;
-    info.maxFramesInFlight = 1;  // this host waits for each frame
-    atmosphere::Error error;
-    const std::unique_ptr<atmosphere::Context> sky = atmosphere::Context::create(info, &error);
-    const atmosphere::Parameters air;  // Earth
-    const atmosphere::Settings settings = atmosphere::settingsFor(atmosphere::Quality::Medium);
-    if (!sky || !sky->prepare(air, settings, extent, &error)) {
-      std::fprintf(stderr, "atmosphere_minimal_host: %s (%s)\n", error.message.c_str(),
-                   atmosphere::errorCodeName(error.code));
-      return 1;
-    }
-    Image colour = makeImage(gpu, info.colorFormat, extent,
-                             VK_IMAGE_USAGE_STORAGE_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT |
-                                 VK_IMAGE_USAGE_TRANSFER_DST_BIT,
-                             VK_IMAGE_ASPECT_COLOR_BIT);
-    Image depth = makeImage(gpu, info.depthFormat, extent,
-                            VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT,
-                            VK_IMAGE_ASPECT_DEPTH_BIT);
-    std::vector<float> depths;
-    std::vector<std::uint16_t> colours;
-    makeScene(extent, depths, colours);
-    const VkDeviceSize colourBytes = colours.size() * sizeof(std::uint16_t);
-    const Staging staging = makeStaging(gpu, colourBytes + depths.size() * sizeof(float));
-    std::memcpy(staging.mapped, colours.data(), colourBytes);
-    std::memcpy(static_cast<char*>(staging.mapped) + colourBytes, depths.data(),
-                depths.size() * sizeof(float));
-    const Frame frame = makeFrame(gpu);
+    const std::unique_ptr<atmosphere::Context> sky = createSky(gpu, options, air, settings);
+    HostImages images = createHostImages(gpu, options.extent);
+    Submission frame = createSubmission(gpu);
     for (int i = 0; i < options.frames; ++i) {
-      renderFrame(gpu, *sky, air, settings, frame, staging, colourBytes, colour, depth, extent,
+      renderFrame(gpu, *sky, air, settings, frame, images, options.extent,
                   static_cast<std::uint64_t>(i), i + 1 == options.frames);
     }
-    if (!writePpm(options.output, static_cast<const std::uint16_t*>(staging.mapped), extent)) {
-      std::fprintf(stderr, "atmosphere_minimal_host: cannot write %s\n", options.output.c_str());
-      return 1;
-    }
-    vkDestroyFence(gpu.device, frame.fence, nullptr);
-    vkDestroyCommandPool(gpu.device, frame.pool, nullptr);
-    vkDestroyBuffer(gpu.device, staging.buffer, nullptr);
-    vkFreeMemory(gpu.device, staging.memory, nullptr);
-    destroyImage(gpu, colour);
-    destroyImage(gpu, depth);
+    written = writePpm(options.output, static_cast<const std::uint16_t*>(images.staging.mapped),
+                       options.extent);
+    destroySubmission(gpu, frame);
+    destroyHostImages(gpu, images);
   }  // the module's objects go before the device
-  vkDestroyDevice(gpu.device, nullptr);
-  if (gpu.messenger != VK_NULL_HANDLE) {
-    const auto destroy = reinterpret_cast<PFN_vkDestroyDebugUtilsMessengerEXT>(
-        vkGetInstanceProcAddr(gpu.instance, "vkDestroyDebugUtilsMessengerEXT"));
-    destroy(gpu.instance, gpu.messenger, nullptr);
+  destroyGpu(gpu);
+  if (!written) {
+    std::fprintf(stderr, "atmosphere_minimal_host: cannot write %s\n", options.output.c_str());
+    return 1;
   }
-  vkDestroyInstance(gpu.instance, nullptr);
   std::printf("atmosphere_minimal_host: wrote %s (%u x %u, %d frame(s))\n", options.output.c_str(),
               options.extent.width, options.extent.height, options.frames);
-  return gValidationMessages > 0 ? 3 : 0;
+  return validationMessages() > 0 ? 3 : 0;
 }

@@ -9,7 +9,9 @@
 //   5. submits, reads the colour back, tonemaps it and writes a binary PPM image.
 // main(), at the end of this file, reads as these steps; each is a function above it.
 // It enables exactly what the module's README requires (Vulkan 1.3, synchronization2,
-// shaderStorageImageExtendedFormats) and no extension.
+// shaderStorageImageExtendedFormats) and no extension; that set-up, its images and buffers and
+// the camera conventions are ../../../examples/raw_vulkan_host.h, which the atmosphere module's
+// example shares.
 //
 // Usage: clouds_minimal_host [--output FILE.ppm] [--width W] [--height H] [--frames N]
 //                            [--validation] [--no-clouds] [--no-cloud-shadows]
@@ -39,222 +41,12 @@
 
 #include "clouds/clouds.h"
 #include "ground_shadow.h"
+#include "raw_vulkan_host.h"
 
 namespace {
 
-// --- Errors and validation -------------------------------------------------------------------
-
-void vkCheck(VkResult result, const char* what) {
-  if (result != VK_SUCCESS) {
-    std::fprintf(stderr, "minimal_host: %s failed (VkResult %d)\n", what, static_cast<int>(result));
-    std::exit(1);
-  }
-}
-
-int gValidationMessages = 0;
-
-VKAPI_ATTR VkBool32 VKAPI_CALL onValidation(VkDebugUtilsMessageSeverityFlagBitsEXT,
-                                            VkDebugUtilsMessageTypeFlagsEXT,
-                                            const VkDebugUtilsMessengerCallbackDataEXT* data,
-                                            void*) {
-  ++gValidationMessages;
-  std::fprintf(stderr, "validation: %s\n", data->pMessage);
-  return VK_FALSE;
-}
-
-// --- Vulkan setup ------------------------------------------------------------------------------
-
-struct Gpu {
-  VkInstance instance = VK_NULL_HANDLE;
-  VkDebugUtilsMessengerEXT messenger = VK_NULL_HANDLE;
-  VkPhysicalDevice physical = VK_NULL_HANDLE;
-  VkDevice device = VK_NULL_HANDLE;
-  std::uint32_t queueFamily = 0;
-  VkQueue queue = VK_NULL_HANDLE;
-  VkPhysicalDeviceMemoryProperties memory{};
-};
-
-// With --validation, the layer and a messenger that prints and counts every message (exit 3).
-void createInstance(Gpu& gpu, bool validation) {
-  VkApplicationInfo app{VK_STRUCTURE_TYPE_APPLICATION_INFO};
-  app.pApplicationName = "clouds minimal host";
-  app.apiVersion = VK_API_VERSION_1_3;
-  const char* layer = "VK_LAYER_KHRONOS_validation";
-  const char* debugUtils = VK_EXT_DEBUG_UTILS_EXTENSION_NAME;
-  VkInstanceCreateInfo instanceInfo{VK_STRUCTURE_TYPE_INSTANCE_CREATE_INFO};
-  instanceInfo.pApplicationInfo = &app;
-  if (validation) {
-    instanceInfo.enabledLayerCount = 1;
-    instanceInfo.ppEnabledLayerNames = &layer;
-    instanceInfo.enabledExtensionCount = 1;
-    instanceInfo.ppEnabledExtensionNames = &debugUtils;
-  }
-  vkCheck(vkCreateInstance(&instanceInfo, nullptr, &gpu.instance), "vkCreateInstance");
-  if (validation) {
-    VkDebugUtilsMessengerCreateInfoEXT messengerInfo{
-        VK_STRUCTURE_TYPE_DEBUG_UTILS_MESSENGER_CREATE_INFO_EXT};
-    messengerInfo.messageSeverity = VK_DEBUG_UTILS_MESSAGE_SEVERITY_WARNING_BIT_EXT |
-                                    VK_DEBUG_UTILS_MESSAGE_SEVERITY_ERROR_BIT_EXT;
-    messengerInfo.messageType = VK_DEBUG_UTILS_MESSAGE_TYPE_VALIDATION_BIT_EXT |
-                                VK_DEBUG_UTILS_MESSAGE_TYPE_GENERAL_BIT_EXT |
-                                VK_DEBUG_UTILS_MESSAGE_TYPE_PERFORMANCE_BIT_EXT;
-    messengerInfo.pfnUserCallback = &onValidation;
-    auto create = reinterpret_cast<PFN_vkCreateDebugUtilsMessengerEXT>(
-        vkGetInstanceProcAddr(gpu.instance, "vkCreateDebugUtilsMessengerEXT"));
-    vkCheck(create(gpu.instance, &messengerInfo, nullptr, &gpu.messenger), "debug messenger");
-  }
-}
-
-void pickPhysicalDevice(Gpu& gpu) {
-  // Any device with Vulkan 1.3 and a graphics+compute queue; real GPUs first.
-  std::uint32_t count = 0;
-  vkEnumeratePhysicalDevices(gpu.instance, &count, nullptr);
-  std::vector<VkPhysicalDevice> devices(count);
-  vkEnumeratePhysicalDevices(gpu.instance, &count, devices.data());
-  int bestScore = -1;
-  for (VkPhysicalDevice candidate : devices) {
-    VkPhysicalDeviceProperties props{};
-    vkGetPhysicalDeviceProperties(candidate, &props);
-    if (props.apiVersion < VK_API_VERSION_1_3) continue;
-    const int score = props.deviceType == VK_PHYSICAL_DEVICE_TYPE_CPU ? 0 : 1;
-    if (score > bestScore) {
-      bestScore = score;
-      gpu.physical = candidate;
-    }
-  }
-  if (gpu.physical == VK_NULL_HANDLE) {
-    std::fprintf(stderr, "minimal_host: no Vulkan 1.3 device\n");
-    std::exit(1);
-  }
-  std::uint32_t familyCount = 0;
-  vkGetPhysicalDeviceQueueFamilyProperties(gpu.physical, &familyCount, nullptr);
-  std::vector<VkQueueFamilyProperties> families(familyCount);
-  vkGetPhysicalDeviceQueueFamilyProperties(gpu.physical, &familyCount, families.data());
-  for (std::uint32_t i = 0; i < familyCount; ++i) {
-    if ((families[i].queueFlags & (VK_QUEUE_GRAPHICS_BIT | VK_QUEUE_COMPUTE_BIT)) ==
-        (VK_QUEUE_GRAPHICS_BIT | VK_QUEUE_COMPUTE_BIT)) {
-      gpu.queueFamily = i;
-      break;
-    }
-  }
-}
-
-void createDevice(Gpu& gpu) {
-  // The module needs synchronization2 and storage images of extended formats (RG32F).
-  VkPhysicalDeviceVulkan13Features features13{
-      VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_3_FEATURES};
-  features13.synchronization2 = VK_TRUE;
-  VkPhysicalDeviceFeatures2 features{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_FEATURES_2};
-  features.pNext = &features13;
-  features.features.shaderStorageImageExtendedFormats = VK_TRUE;
-  const float priority = 1.0f;
-  VkDeviceQueueCreateInfo queueInfo{VK_STRUCTURE_TYPE_DEVICE_QUEUE_CREATE_INFO};
-  queueInfo.queueFamilyIndex = gpu.queueFamily;
-  queueInfo.queueCount = 1;
-  queueInfo.pQueuePriorities = &priority;
-  VkDeviceCreateInfo deviceInfo{VK_STRUCTURE_TYPE_DEVICE_CREATE_INFO};
-  deviceInfo.pNext = &features;
-  deviceInfo.queueCreateInfoCount = 1;
-  deviceInfo.pQueueCreateInfos = &queueInfo;
-  vkCheck(vkCreateDevice(gpu.physical, &deviceInfo, nullptr, &gpu.device), "vkCreateDevice");
-  vkGetDeviceQueue(gpu.device, gpu.queueFamily, 0, &gpu.queue);
-  vkGetPhysicalDeviceMemoryProperties(gpu.physical, &gpu.memory);
-}
-
-Gpu createGpu(bool validation) {
-  Gpu gpu;
-  createInstance(gpu, validation);
-  pickPhysicalDevice(gpu);
-  createDevice(gpu);
-  return gpu;
-}
-
-std::uint32_t memoryType(const Gpu& gpu, std::uint32_t bits, VkMemoryPropertyFlags flags) {
-  for (std::uint32_t i = 0; i < gpu.memory.memoryTypeCount; ++i) {
-    if ((bits & (1u << i)) && (gpu.memory.memoryTypes[i].propertyFlags & flags) == flags) return i;
-  }
-  std::fprintf(stderr, "minimal_host: no suitable memory type\n");
-  std::exit(1);
-}
-
-struct Image {
-  VkImage image = VK_NULL_HANDLE;
-  VkDeviceMemory memory = VK_NULL_HANDLE;
-  VkImageView view = VK_NULL_HANDLE;
-};
-
-Image createImage(const Gpu& gpu, VkFormat format, VkExtent2D extent, VkImageUsageFlags usage,
-                  VkImageAspectFlags aspect) {
-  Image image;
-  VkImageCreateInfo info{VK_STRUCTURE_TYPE_IMAGE_CREATE_INFO};
-  info.imageType = VK_IMAGE_TYPE_2D;
-  info.format = format;
-  info.extent = {extent.width, extent.height, 1};
-  info.mipLevels = 1;
-  info.arrayLayers = 1;
-  info.samples = VK_SAMPLE_COUNT_1_BIT;
-  info.usage = usage;
-  vkCheck(vkCreateImage(gpu.device, &info, nullptr, &image.image), "vkCreateImage");
-  VkMemoryRequirements req{};
-  vkGetImageMemoryRequirements(gpu.device, image.image, &req);
-  VkMemoryAllocateInfo alloc{VK_STRUCTURE_TYPE_MEMORY_ALLOCATE_INFO};
-  alloc.allocationSize = req.size;
-  alloc.memoryTypeIndex = memoryType(gpu, req.memoryTypeBits, VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT);
-  vkCheck(vkAllocateMemory(gpu.device, &alloc, nullptr, &image.memory), "vkAllocateMemory");
-  vkBindImageMemory(gpu.device, image.image, image.memory, 0);
-  VkImageViewCreateInfo viewInfo{VK_STRUCTURE_TYPE_IMAGE_VIEW_CREATE_INFO};
-  viewInfo.image = image.image;
-  viewInfo.viewType = VK_IMAGE_VIEW_TYPE_2D;
-  viewInfo.format = format;
-  viewInfo.subresourceRange = {aspect, 0, 1, 0, 1};
-  vkCheck(vkCreateImageView(gpu.device, &viewInfo, nullptr, &image.view), "vkCreateImageView");
-  return image;
-}
-
-struct HostBuffer {
-  VkBuffer buffer = VK_NULL_HANDLE;
-  VkDeviceMemory memory = VK_NULL_HANDLE;
-  void* mapped = nullptr;
-};
-
-HostBuffer createHostBuffer(const Gpu& gpu, VkDeviceSize size, VkBufferUsageFlags usage) {
-  HostBuffer b;
-  VkBufferCreateInfo info{VK_STRUCTURE_TYPE_BUFFER_CREATE_INFO};
-  info.size = size;
-  info.usage = usage;
-  vkCheck(vkCreateBuffer(gpu.device, &info, nullptr, &b.buffer), "vkCreateBuffer");
-  VkMemoryRequirements req{};
-  vkGetBufferMemoryRequirements(gpu.device, b.buffer, &req);
-  VkMemoryAllocateInfo alloc{VK_STRUCTURE_TYPE_MEMORY_ALLOCATE_INFO};
-  alloc.allocationSize = req.size;
-  alloc.memoryTypeIndex =
-      memoryType(gpu, req.memoryTypeBits,
-                 VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT | VK_MEMORY_PROPERTY_HOST_COHERENT_BIT);
-  vkCheck(vkAllocateMemory(gpu.device, &alloc, nullptr, &b.memory), "vkAllocateMemory");
-  vkBindBufferMemory(gpu.device, b.buffer, b.memory, 0);
-  vkMapMemory(gpu.device, b.memory, 0, VK_WHOLE_SIZE, 0, &b.mapped);
-  return b;
-}
-
-void imageBarrier(VkCommandBuffer cmd, VkImage image, VkImageAspectFlags aspect, VkImageLayout from,
-                  VkImageLayout to, VkPipelineStageFlags2 srcStage, VkAccessFlags2 srcAccess,
-                  VkPipelineStageFlags2 dstStage, VkAccessFlags2 dstAccess) {
-  VkImageMemoryBarrier2 b{VK_STRUCTURE_TYPE_IMAGE_MEMORY_BARRIER_2};
-  b.srcStageMask = srcStage;
-  b.srcAccessMask = srcAccess;
-  b.dstStageMask = dstStage;
-  b.dstAccessMask = dstAccess;
-  b.oldLayout = from;
-  b.newLayout = to;
-  b.srcQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
-  b.dstQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
-  b.image = image;
-  b.subresourceRange = {aspect, 0, 1, 0, 1};
-  VkDependencyInfo dep{VK_STRUCTURE_TYPE_DEPENDENCY_INFO};
-  dep.imageMemoryBarrierCount = 1;
-  dep.pImageMemoryBarriers = &b;
-  vkCmdPipelineBarrier2(cmd, &dep);
-}
+// Vulkan set-up, images, buffers, barriers and the camera conventions (raw_vulkan_host.h).
+using namespace example;
 
 // --- The synthetic scene -------------------------------------------------------------------------
 
@@ -266,33 +58,12 @@ struct Camera {
 };
 
 glm::mat4 viewMatrix(const Camera& c) {
-  const glm::vec3 r = glm::normalize(glm::cross(c.forward, glm::vec3(0, 1, 0)));
-  const glm::vec3 u = glm::cross(r, c.forward);
-  glm::mat4 v(1.0f);
-  v[0][0] = r.x;
-  v[1][0] = r.y;
-  v[2][0] = r.z;
-  v[0][1] = u.x;
-  v[1][1] = u.y;
-  v[2][1] = u.z;
-  v[0][2] = -c.forward.x;
-  v[1][2] = -c.forward.y;
-  v[2][2] = -c.forward.z;
-  v[3][0] = -glm::dot(r, c.position);
-  v[3][1] = -glm::dot(u, c.position);
-  v[3][2] = glm::dot(c.forward, c.position);
-  return v;
+  return example::viewMatrix(c.position, c.forward);
 }
 
 // Reversed-Z, infinite far plane, Vulkan clip space (y down).
 glm::mat4 projectionMatrix(const Camera& c, float aspect) {
-  const float f = 1.0f / std::tan(c.verticalFov * 0.5f);
-  glm::mat4 p(0.0f);
-  p[0][0] = f / aspect;
-  p[1][1] = -f;
-  p[3][2] = c.nearPlane;
-  p[2][3] = -1.0f;
-  return p;
+  return reversedZProjection(c.verticalFov, aspect, c.nearPlane);
 }
 
 // The ground plane's colour, and the albedo the clouds are told lights their bases from below.
@@ -496,46 +267,6 @@ Scene buildUnshadowedScene(VkExtent2D extent, const HostImages& images) {
 }
 
 // One command buffer, recorded, submitted and waited for in turn (maxFramesInFlight = 1).
-struct Submission {
-  VkCommandPool pool = VK_NULL_HANDLE;
-  VkCommandBuffer cmd = VK_NULL_HANDLE;
-  VkFence fence = VK_NULL_HANDLE;
-};
-
-Submission createSubmission(const Gpu& gpu) {
-  Submission submission;
-  VkCommandPoolCreateInfo poolInfo{VK_STRUCTURE_TYPE_COMMAND_POOL_CREATE_INFO};
-  poolInfo.flags = VK_COMMAND_POOL_CREATE_RESET_COMMAND_BUFFER_BIT;
-  poolInfo.queueFamilyIndex = gpu.queueFamily;
-  vkCheck(vkCreateCommandPool(gpu.device, &poolInfo, nullptr, &submission.pool),
-          "vkCreateCommandPool");
-  VkCommandBufferAllocateInfo cmdInfo{VK_STRUCTURE_TYPE_COMMAND_BUFFER_ALLOCATE_INFO};
-  cmdInfo.commandPool = submission.pool;
-  cmdInfo.commandBufferCount = 1;
-  vkCheck(vkAllocateCommandBuffers(gpu.device, &cmdInfo, &submission.cmd),
-          "vkAllocateCommandBuffers");
-  VkFenceCreateInfo fenceInfo{VK_STRUCTURE_TYPE_FENCE_CREATE_INFO};
-  vkCheck(vkCreateFence(gpu.device, &fenceInfo, nullptr, &submission.fence), "vkCreateFence");
-  return submission;
-}
-
-void beginRecording(const Submission& submission) {
-  VkCommandBufferBeginInfo begin{VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO};
-  begin.flags = VK_COMMAND_BUFFER_USAGE_ONE_TIME_SUBMIT_BIT;
-  vkCheck(vkBeginCommandBuffer(submission.cmd, &begin), "vkBeginCommandBuffer");
-}
-
-void submitAndWait(const Gpu& gpu, const Submission& submission) {
-  vkCheck(vkEndCommandBuffer(submission.cmd), "vkEndCommandBuffer");
-  VkSubmitInfo submit{VK_STRUCTURE_TYPE_SUBMIT_INFO};
-  submit.commandBufferCount = 1;
-  submit.pCommandBuffers = &submission.cmd;
-  vkCheck(vkQueueSubmit(gpu.queue, 1, &submit, submission.fence), "vkQueueSubmit");
-  vkCheck(vkWaitForFences(gpu.device, 1, &submission.fence, VK_TRUE, UINT64_MAX),
-          "vkWaitForFences");
-  vkCheck(vkResetFences(gpu.device, 1, &submission.fence), "vkResetFences");
-}
-
 // --- The clouds module -----------------------------------------------------------------------
 
 // The clouds module: created from the host's handles and entry points, then (in main())
@@ -756,26 +487,14 @@ bool renderFrame(Host& host, clouds::Context& clouds, const clouds::Settings& se
 // Everything main() made but the module, which goes first: the GPU is idle (fence waited).
 void destroyHost(Host& host) {
   const Gpu& gpu = host.gpu;
-  vkDestroyFence(gpu.device, host.submission.fence, nullptr);
-  vkDestroyCommandPool(gpu.device, host.submission.pool, nullptr);
+  destroySubmission(gpu, host.submission);
   HostImages& images = host.images;
   for (HostBuffer* b :
        {&images.depthUpload, &images.colourUpload, &images.readback, &host.shadowReadback.buffer}) {
-    vkDestroyBuffer(gpu.device, b->buffer, nullptr);
-    vkFreeMemory(gpu.device, b->memory, nullptr);
+    destroyHostBuffer(gpu, *b);
   }
-  for (Image* image : {&images.depth, &images.colour}) {
-    vkDestroyImageView(gpu.device, image->view, nullptr);
-    vkDestroyImage(gpu.device, image->image, nullptr);
-    vkFreeMemory(gpu.device, image->memory, nullptr);
-  }
-  vkDestroyDevice(gpu.device, nullptr);
-  if (gpu.messenger != VK_NULL_HANDLE) {
-    auto destroy = reinterpret_cast<PFN_vkDestroyDebugUtilsMessengerEXT>(
-        vkGetInstanceProcAddr(gpu.instance, "vkDestroyDebugUtilsMessengerEXT"));
-    destroy(gpu.instance, gpu.messenger, nullptr);
-  }
-  vkDestroyInstance(gpu.instance, nullptr);
+  for (Image* image : {&images.depth, &images.colour}) destroyImage(gpu, *image);
+  destroyGpu(host.gpu);
 }
 
 }  // namespace
@@ -813,5 +532,5 @@ int main(int argc, char** argv) {
     std::fprintf(stderr, "minimal_host: cannot write %s\n", outputPath.c_str());
     return 1;
   }
-  return gValidationMessages > 0 ? 3 : 0;
+  return validationMessages() > 0 ? 3 : 0;
 }

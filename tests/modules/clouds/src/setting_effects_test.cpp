@@ -4,17 +4,16 @@
 // exactly when its row says so.
 #include <gtest/gtest.h>
 
-#include <fstream>
 #include <map>
 #include <regex>
 #include <set>
-#include <sstream>
 #include <string>
 #include <vector>
 
 #include "clouds/clouds.h"
 #include "setting_effects.h"
 #include "setting_ranges.h"
+#include "settings_declaration.h"
 #include "temporal_state.h"
 
 namespace {
@@ -23,13 +22,7 @@ using namespace clouds::detail;
 
 // Every field clouds.h's Settings struct declares, in order.
 std::vector<std::string> declaredFields() {
-  std::ifstream header(CLOUDS_HEADER);
-  std::stringstream text;
-  text << header.rdbuf();
-  const std::string all = text.str();
-  const std::size_t begin = all.find("struct Settings {");
-  const std::size_t end = all.find("\n};", begin);
-  const std::string settings = all.substr(begin, end - begin);
+  const std::string settings = test::settingsDeclaration();
   // A declaration at the start of its line, with "= value" or "{value}" (a comment's "a = b"
   // is not one).
   const std::regex line(R"(\n\s*[\w:]+ (\w+)(?: = [^;\n]*|\{[^;\n]*\})?;)");

@@ -5,15 +5,14 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
-#include <fstream>
 #include <limits>
 #include <map>
 #include <regex>
-#include <sstream>
 #include <string>
 
 #include "clouds/clouds.h"
 #include "setting_ranges.h"
+#include "settings_declaration.h"
 
 namespace {
 
@@ -21,13 +20,7 @@ using clouds::detail::SettingRange;
 
 // "name = default;  // [lo, hi] ..." in clouds.h's Settings struct: name -> (lo, hi).
 std::map<std::string, std::pair<double, double>> documentedRanges() {
-  std::ifstream header(CLOUDS_HEADER);
-  std::stringstream text;
-  text << header.rdbuf();
-  const std::string all = text.str();
-  const std::size_t begin = all.find("struct Settings {");
-  const std::size_t end = all.find("\n};", begin);
-  const std::string settings = all.substr(begin, end - begin);
+  const std::string settings = test::settingsDeclaration();
   std::map<std::string, std::pair<double, double>> ranges;
   // A declaration at the start of its line (a comment's "a = b" is not one).
   const std::regex line(R"(\n\s*[\w:]+ (\w+) = [^;\n]*;[ \t]*// \[([-0-9.e]+), ([-0-9.e]+)\])");
