@@ -33,8 +33,8 @@ struct RenderDevice {
 // renderer published one) can be used; if not, says why in `reason`.
 bool usableRenderDevice(const RenderDevice* device, std::string& reason);
 
-// Fills the device fields every drop-in module's CreateInfo has: the
-// handles, the loader's proc-addr functions, and whether VK_EXT_debug_utils is enabled.
+// Fills the device fields every drop-in module's CreateInfo has: the handles, the loader's
+// proc-addr functions, and whether VK_EXT_debug_utils is enabled.
 template <typename ModuleCreateInfo>
 void describeDevice(const gfx::Device& device, ModuleCreateInfo& info) {
   info.instance = device.vkInstance();
