@@ -8,6 +8,7 @@ packages=(
   libvulkan-dev mesa-vulkan-drivers vulkan-validationlayers glslang-tools
   libglm-dev libglfw3-dev libtinygltf-dev libopenimageio-dev nlohmann-json3-dev libcli11-dev
   libgtest-dev libgmock-dev libbenchmark-dev libimgui-dev python3-matplotlib
+  libopenvdb-dev libopenvdb-tools
   xvfb xauth
 )
 

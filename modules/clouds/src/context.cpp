@@ -28,6 +28,8 @@ const char* errorCodeName(ErrorCode code) {
       return "InvalidInputs";
     case ErrorCode::NotPrepared:
       return "NotPrepared";
+    case ErrorCode::InvalidAsset:
+      return "InvalidAsset";
   }
   return "?";
 }

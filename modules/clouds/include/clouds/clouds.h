@@ -60,6 +60,7 @@ enum class ErrorCode : std::uint32_t {
   InvalidSettings,    // a Settings field is out of range (validateSettings())
   InvalidInputs,      // a FrameInputs field, or a composite() argument, is invalid
   NotPrepared,        // dispatch() needs prepare() with these settings or this extent first
+  InvalidAsset,       // a cloud asset (clouds/nvdf.h) is malformed: the message names the file
 };
 const char* errorCodeName(ErrorCode code);
 
