@@ -164,6 +164,7 @@ const Entry kEntries[] = {
     SHIM_COMMAND(vkCmdUpdateBuffer),
     SHIM_COMMAND(vkCmdFillBuffer),
     SHIM_COMMAND(vkCmdClearColorImage),
+    SHIM_COMMAND(vkCmdCopyBufferToImage),
     SHIM_COMMAND(vkCmdResetQueryPool),
     SHIM_COMMAND(vkCmdWriteTimestamp2),
 };

@@ -10,7 +10,8 @@
 // skipping); with the terrain's shadow, 10-11 the cloud shadow map and its parameters (its
 // terrain channel, fxcontracts/cloud_shadow.h). Outputs: 6 the marched samples (radiance,
 // transmittance, front and weighted depth in metres; packed, cloud_temporal.h); 9 work
-// counters. Feature toggles are specialization constants.
+// counters; with hero clouds (kSpecHeroClouds), 14-15 their atlas and instances (cloud_hero.h).
+// Feature toggles are specialization constants.
 // Edge rays (kSpecEdgeRays, while the frame's kFlagEdgeRays is set): the tiles on a silhouette
 // of last frame's reconstruction (12, trace history) are listed (13) by the tiles' march, and a
 // second dispatch of this shader marches u.edgeRaysPerTile more rays for each, through other
@@ -36,6 +37,7 @@ layout(constant_id = kSpecEmptySpace) const uint kEmptySpace = 1u;
 layout(constant_id = kSpecTerrainShadow) const uint kTerrainShadow = 0u;
 layout(constant_id = kSpecLightReuse) const uint kLightReuse = 1u;
 layout(constant_id = kSpecEdgeRays) const uint kEdgeRays = 0u;
+layout(constant_id = kSpecHeroClouds) const uint kHeroClouds = 0u;
 
 #include "frame_uniforms.glsl"
 layout(binding = kMarchShapeNoise, rgba8) uniform readonly image3D shapeNoise;
@@ -85,6 +87,19 @@ float terrainSunLight(vec3 flatOffset, float altitude) {
   }
   return light;
 }
+
+// Hero clouds: the atlas and this frame's instances (read only by the kSpecHeroClouds variant;
+// the block is indexed like frame_uniforms.glsl's, for the same reason).
+layout(binding = kMarchHeroAtlas, rgba8) uniform readonly image3D heroAtlas;
+layout(binding = kMarchHeroClouds, std140) uniform HeroClouds { HeroCloudUniforms heroClouds[1]; };
+
+uint heroCloudCount() {
+  return kHeroClouds != 0u ? heroClouds[CLOUDS_FRAME_UNIFORMS_INDEX].count.x : 0u;
+}
+HeroCloudInstance heroCloud(uint index) {
+  return heroClouds[CLOUDS_FRAME_UNIFORMS_INDEX].instance[index];
+}
+vec4 fetchHeroAtlas(ivec3 texel) { return imageLoad(heroAtlas, texel); }
 
 #include "cloud_march.h"
 #include "cloud_temporal.h"

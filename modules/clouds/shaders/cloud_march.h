@@ -22,19 +22,17 @@
 #define CLOUDS_CLOUD_MARCH_H
 
 #include "cloud_density.h"
+#include "cloud_hero.h"
 #include "cloud_lighting.h"
 #include "cloud_math.h"
 #include "cloud_noise.h"
 #include "cloud_sampling.h"
 
-// Runs the following statement or block only when `condition` holds, as a loop of 0 or 1 trips.
-#define CLOUDS_WHEN(condition) \
-  for (int whenOnce_ = 0; whenOnce_ < ((condition) ? 1 : 0); ++whenOnce_)
-
 FX_SHADER_BEGIN(clouds::shader)
 
 const float kInfiniteDistance = 1e30f;
-const int kMaxSkips = 96;  // empty weather cells a view ray may jump over
+const int kMaxSkips = 96;       // empty weather cells a view ray may jump over
+const int kMaxHeroSteps = 384;  // samples inside hero clouds' boxes, on top of the layer's
 
 // The includer's: the share of the sun [0, 1] a sample at a camera-relative (x, z) and an
 // altitude (m) gets past the host's terrain (1 where the includer knows no terrain).
@@ -152,10 +150,12 @@ FX_INLINE vec3 noisePosition(vec3 flatOffset, float altitude, float heightFracti
   return vec3(flatOffset.x + skew.x, altitude, flatOffset.z + skew.y);
 }
 
-// `distance` (m) from the camera sets the noise's level of detail (noiseLevel(): the pixel's
-// footprint there, u.noiseFootprintPerMetre x distance), `lodDither` in [0, 1) rounds it.
-FX_INLINE FieldSample sampleField(vec3 flatOffset, float altitude, float distance, float lodDither,
-                                  uint wantDetail, IN(CloudUniforms) u) {
+// The layer's field (the vertical-profile model, cloud_density.h) at a camera-relative (x, z)
+// and an altitude on the curved shell. `distance` (m) from the camera sets the noise's level of
+// detail (noiseLevel(): the pixel's footprint there, u.noiseFootprintPerMetre x distance),
+// `lodDither` in [0, 1) rounds it.
+FX_INLINE FieldSample layerField(vec3 flatOffset, float altitude, float distance, float lodDither,
+                                 uint wantDetail, IN(CloudUniforms) u) {
   FieldSample s;
   const float bottom = u.layerBottomMetres;
   const float top = u.layerTopMetres;
@@ -199,6 +199,28 @@ FX_INLINE FieldSample sampleField(vec3 flatOffset, float altitude, float distanc
                              u.detailErosion);
   }
   s.sigmaT = s.density * w.density * u.extinctionPerMetre;
+  return s;
+}
+
+// The density seam: every density source of the module at one point, as the march, its light
+// samples and the shadow map see it. `relative` is the camera-relative point on its straight
+// line from the camera (the layer reads its x and z), `altitude` its altitude on the layer's
+// curved shell. Sources: the layer (layerField()) and the hero clouds (cloud_hero.h); their
+// extinctions add, and the lighting reads the profile and height of the denser. A new model
+// adds its own term here (and its bounds to the march's span: marchClouds()).
+FX_INLINE FieldSample sampleField(vec3 relative, float altitude, float distance, float lodDither,
+                                  uint wantDetail, IN(CloudUniforms) u) {
+  FieldSample s = layerField(relative, altitude, distance, lodDither, wantDetail, u);
+  CLOUDS_WHEN(heroCloudCount() > 0u) {
+    const HeroSample hero = heroField(relative, u);
+    if (hero.sigmaT > s.sigmaT) {
+      s.profile = hero.profile;
+      s.heightFraction = hero.heightFraction;
+    }
+    s.base = max(s.base, hero.sigmaT > 0.0f ? hero.profile : 0.0f);
+    s.density = max(s.density, hero.sigmaT > 0.0f ? hero.profile : 0.0f);
+    s.sigmaT += hero.sigmaT;
+  }
   return s;
 }
 
@@ -293,8 +315,8 @@ FX_INLINE float lightOpticalDepth(vec3 flatOffset, float altitude, float distanc
     const float d = mix(d0, d1, jitter.x);
     const vec3 offset = sun * d + coneKernel(j, vec2(jitter.y, jitter.z)) * (d * spread);
     // Over a few kilometres the curvature drop (d^2 / 2R, ~0.2 m) is negligible.
-    const FieldSample s = sampleField(flatOffset + vec3(offset.x, 0.0f, offset.z),
-                                      altitude + offset.y, distance + d, lodDither, 0u, u);
+    const FieldSample s =
+        sampleField(flatOffset + offset, altitude + offset.y, distance + d, lodDither, 0u, u);
     tau += s.sigmaT * (d1 - d0);
     samples += 1.0f;
   }
@@ -367,8 +389,19 @@ FX_INLINE MarchResult marchClouds(vec3 rayDirection, float sceneDistance, float 
   const float altitude = u.cameraAltitudeMetres;
   const float cosZenith = rayDirection.y;
   const vec2 segment = layerSegment(altitude, cosZenith, u);
-  const float start = segment.x;
-  const float end = min(min(segment.y, sceneDistance), u.maxDistanceMetres);
+  // Hero clouds extend the march to their boxes, beyond the layer where they stand out of it.
+  vec3 heroSpan = vec3(kHeroFar, -kHeroFar, kHeroFar);
+  CLOUDS_WHEN(heroCloudCount() > 0u) {
+    heroSpan = heroRaySpan(rayDirection);
+  }
+  const bool layerHit = segment.y > segment.x;
+  const bool heroHit = heroSpan.y > heroSpan.x;
+  const float start = heroHit ? (layerHit ? min(segment.x, heroSpan.x) : heroSpan.x) : segment.x;
+  const float layerEnd = min(min(segment.y, sceneDistance), u.maxDistanceMetres);
+  const float end =
+      heroHit ? min(min(layerHit ? max(segment.y, heroSpan.y) : heroSpan.y, sceneDistance),
+                    u.maxDistanceMetres)
+              : layerEnd;
   const OctavePhases phases = octavePhases(dot(rayDirection, u.sunDirection), u);
   const float albedo = u.albedo;
   const float cutoff = u.transmittanceCutoff;
@@ -381,17 +414,38 @@ FX_INLINE MarchResult marchClouds(vec3 rayDirection, float sceneDistance, float 
   bool fine = o.cheapSampling == 0u;
   int emptyRun = 0;
   int samples = 0;
+  int heroSamples = 0;  // samples inside hero clouds' boxes: a budget of their own
   // The optical depth towards the sun of the last cloudy sample, while the ray is in cloud.
   float sunOpticalDepth = 0.0f;
   bool inCloud = false;
   // Jumps over empty cells do not spend the sample budget (a long ray over clear sky must
   // still reach the clouds behind it); kMaxSkips bounds them. Nor do the near steps.
-  for (int i = 0; i < maxSteps + kMaxSkips + kMaxNearSteps; ++i) {
+  const int iterations = maxSteps + kMaxSkips + kMaxNearSteps + (heroHit ? kMaxHeroSteps : 0);
+  for (int i = 0; i < iterations; ++i) {
     if (t >= end || r.transmittance < cutoff || samples >= maxSteps) break;
+    // Without hero clouds every step lies in the layer's segment.
+    const bool inLayer = !heroHit || (layerHit && t >= segment.x && t < segment.y);
+    const bool inHero = heroHit && t >= heroSpan.x && t < heroSpan.y;
+    if (!inLayer && !inHero) {
+      // Between the layer and the hero clouds' boxes there is nothing to sample.
+      t = min(layerHit && t < segment.x ? segment.x : kInfiniteDistance,
+              t < heroSpan.x ? heroSpan.x : kInfiniteDistance);
+      continue;
+    }
     if (o.emptySpace != 0u) {
-      const float skipTo =
-          emptySpaceSkip(vec2(0.0f), t, rayDirection,
-                         altitudeAlongRay(t, cosZenith, altitude, u.planetRadiusMetres), u);
+      float skipTo =
+          inLayer
+              ? emptySpaceSkip(vec2(0.0f), t, rayDirection,
+                               altitudeAlongRay(t, cosZenith, altitude, u.planetRadiusMetres), u)
+              : (layerHit && t < segment.x ? segment.x : kInfiniteDistance);
+      // Never past a hero cloud: up to its box, and inside the box no further than its signed
+      // distance says is clear (Nubis³'s SDF march); a jump shorter than half a voxel is not
+      // worth its lookup, and the ray steps instead.
+      CLOUDS_WHEN(heroHit && skipTo > t) {
+        float clear = t < heroSpan.x ? heroSpan.x - t : heroField(rayDirection * t, u).clearMetres;
+        clear = clear > 0.5f * heroSpan.z ? clear : 0.0f;
+        skipTo = min(skipTo, t + clear);
+      }
       if (skipTo > t) {
         t = skipTo;
         r.skippedCells += 1.0f;
@@ -399,8 +453,15 @@ FX_INLINE MarchResult marchClouds(vec3 rayDirection, float sceneDistance, float 
       }
     }
     const bool nearCamera = isNearStep(t, u);
-    const float stepLength =
-        marchStepLength(t, end, maxSteps - samples, fine ? 1.0f : coarseFactor, u);
+    float stepLength = marchStepLength(t, inLayer ? layerEnd : end, maxSteps - samples,
+                                       fine ? 1.0f : coarseFactor, u);
+    if (inHero) {
+      // A voxel of the finest cloud the ray meets, stretched only when its budget would not
+      // reach the last box's far side.
+      const float heroStep = max(heroSpan.z * kHeroStepVoxels,
+                                 (heroSpan.y - t) / float(max(kMaxHeroSteps - heroSamples, 1)));
+      stepLength = min(stepLength, min(heroStep, end - t));
+    }
     const float sampleDistance = t + jitter * stepLength;
     const vec3 flatOffset = rayDirection * sampleDistance;
     const float sampleAltitude =
@@ -408,7 +469,11 @@ FX_INLINE MarchResult marchClouds(vec3 rayDirection, float sceneDistance, float 
     const FieldSample field =
         sampleField(flatOffset, sampleAltitude, sampleDistance, jitter, fine ? o.detail : 0u, u);
     r.viewSamples += 1.0f;
-    if (!nearCamera) ++samples;
+    if (inHero) {
+      ++heroSamples;
+    } else if (!nearCamera) {
+      ++samples;
+    }
     if (!fine && field.base > 0.0f) {
       // A coarse sample found cloud: go back one coarse step and resample it finely.
       fine = true;

@@ -7,6 +7,11 @@
 
 #include "fxcontracts/shader_interop.h"
 
+// Runs the following statement or block only when `condition` holds, as a loop of 0 or 1 trips:
+// lavapipe executes the body of an `if` whenever it is reached, even when no lane takes it.
+#define CLOUDS_WHEN(condition) \
+  for (int whenOnce_ = 0; whenOnce_ < ((condition) ? 1 : 0); ++whenOnce_)
+
 FX_SHADER_BEGIN(clouds::shader)
 
 const float kPi = 3.14159265358979f;

@@ -42,6 +42,13 @@ vec4 fetchWeatherMaxCoarse(ivec2 texel) { return imageLoad(weatherMaxCoarse, tex
 vec4 fetchDetailNoise(ivec3 texel) { return vec4(0.0f); }
 vec4 fetchCurl(ivec2 texel) { return vec4(0.5f); }
 float terrainSunLight(vec3 flatOffset, float altitude) { return 1.0f; }
+// Hero clouds do not cast into the shadow map yet (the layer alone does).
+uint heroCloudCount() { return 0u; }
+HeroCloudInstance heroCloud(uint index) {
+  const vec4 zero = vec4(0.0f);
+  return HeroCloudInstance(vec4[3](zero, zero, zero), zero, zero);
+}
+vec4 fetchHeroAtlas(ivec3 texel) { return vec4(0.0f); }
 
 #include "cloud_shadow_march.h"
 

@@ -57,6 +57,11 @@ const uint kMarchCloudShadow = 10u;            // the shadow map (terrain channe
 const uint kMarchCloudShadowParameters = 11u;  // its CloudShadowParameters (uniform block)
 const uint kMarchTraceHistory = 12u;  // last frame's reconstruction (edge rays: kSpecEdgeRays)
 const uint kMarchEdgeRayList = 13u;   // the edge rays' tiles and dispatch (kSpecEdgeRays)
+// Hero clouds (kSpecHeroClouds): their atlas (RGBA8 3D, hero_clouds.h) and this frame's
+// instances (HeroCloudUniforms). Without hero clouds, stand-ins: the shape noise and the frame's
+// uniforms, which the march then never reads.
+const uint kMarchHeroAtlas = 14u;
+const uint kMarchHeroClouds = 15u;
 // reconstruct.comp
 const uint kReconstructFresh = 1u;
 const uint kReconstructHistory = 2u;
@@ -131,7 +136,8 @@ const uint kSpecEmptySpace = 6u;          // 0/1: skip empty weather cells
 const uint kSpecTerrainShadow = 7u;       // 0/1: the terrain's shadow takes the sun from clouds
 const uint kSpecLightReuse = 8u;          // 0/1: the sun's optical depth on every other step
 const uint kSpecEdgeRays = 9u;            // kEdgeRays*: more rays for tiles on silhouettes
-const uint kMarchSpecCount = 10u;
+const uint kSpecHeroClouds = 10u;         // 0/1: hero clouds (FrameInputs::heroClouds)
+const uint kMarchSpecCount = 11u;
 // The variants of kSpecEdgeRays: none; the tiles' march, which lists the edge tiles; the
 // edge rays' march, over that list (an indirect dispatch).
 const uint kEdgeRaysOff = 0u;
@@ -432,6 +438,22 @@ struct LightningUniforms {
   vec4 flash[2 * kMaxLightningFlashes];
 };
 
+// This frame's hero clouds (FrameInputs::heroClouds), a uniform block of the march. Each maps
+// camera-relative metres to index coordinates of its asset's voxels (voxel centres at integers)
+// by the rows of `toIndex`; its asset lies in the atlas at z offset `extent.w`.
+const uint kMaxHeroClouds = 8u;
+struct HeroCloudInstance {
+  vec4 toIndex[3];  // index coordinate a = dot(toIndex[a].xyz, relative) + toIndex[a].w
+  vec4 extent;      // xyz the asset's voxels per axis, w its first slice in the atlas
+  // x the density the fields' 1 stands for (NvdfVolume::densityMultiplier); y the world metres
+  // of the atlas's distance code 1 (its full scale); z the world metres of one voxel; w unused
+  vec4 scales;
+};
+struct HeroCloudUniforms {
+  uvec4 count;  // x the instances this frame
+  HeroCloudInstance instance[kMaxHeroClouds];
+};
+
 // lightning_bolts.comp's push constants: whether its workgroups are the 8 x 8 pixel blocks
 // listed in the buffer (the blocks of the tiles that hold pieces), or, when those are too many
 // to list, a grid over the bolts' bounds from `origin` (output pixels).
@@ -551,6 +573,9 @@ static_assert(sizeof(clouds::shader::LightningBoltsHeader) == 4 * 16);
 static_assert(sizeof(clouds::shader::LightningUniforms) <= sizeof(clouds::shader::CloudUniforms),
               "without lightning the frame's uniforms stand in for its block");
 static_assert(sizeof(clouds::shader::GodRayLightUniforms) == 64 + 6 * 16);
+static_assert(sizeof(clouds::shader::HeroCloudInstance) == 5 * 16);
+static_assert(sizeof(clouds::shader::HeroCloudUniforms) <= sizeof(clouds::shader::CloudUniforms),
+              "without hero clouds the frame's uniforms stand in for their block");
 static_assert(sizeof(clouds::shader::ShadowMapConstants) == 80);
 static_assert(sizeof(clouds::shader::TerrainShadowConstants) == 128);
 static_assert(sizeof(clouds::shader::MarchTerrainShadow) == 14 * 16);

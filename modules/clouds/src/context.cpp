@@ -3,6 +3,7 @@
 #include <cmath>
 #include <new>
 
+#include "clouds/nvdf.h"
 #include "context_impl.h"
 #include "vkfx/api_boundary.h"
 
@@ -134,6 +135,28 @@ std::string checkBolts(std::span<const LightningBoltSegment> bolts, const Settin
   return {};
 }
 
+// This frame's hero clouds: no more than kMaxHeroClouds, of loaded assets, placed finitely.
+std::string checkHeroClouds(std::span<const HeroCloud> clouds, std::size_t assets) {
+  if (clouds.size() > kMaxHeroClouds) {
+    return "FrameInputs.heroClouds: " + std::to_string(clouds.size()) + " clouds, more than the " +
+           std::to_string(kMaxHeroClouds) + " a frame draws";
+  }
+  for (std::size_t i = 0; i < clouds.size(); ++i) {
+    const HeroCloud& c = clouds[i];
+    const std::string field = "FrameInputs.heroClouds[" + std::to_string(i) + "]";
+    if (c.asset >= assets) {
+      return field + ".asset = " + std::to_string(c.asset) + ": only " + std::to_string(assets) +
+             " assets are loaded (Context::setHeroCloudAssets)";
+    }
+    if (!finitePosition(c.positionMetres)) return field + ".positionMetres: must be finite";
+    if (!(c.scale >= 0.01f && c.scale <= 100.0f)) {
+      return field + ".scale = " + std::to_string(c.scale) + ": must be in [0.01, 100]";
+    }
+    if (!std::isfinite(c.yawRadians)) return field + ".yawRadians: must be finite";
+  }
+  return {};
+}
+
 std::string checkInputs(const FrameInputs& in, const CreateInfo& info) {
   if (std::string problem = checkSharedInputs(in); !problem.empty()) return problem;
   if (std::string problem = checkExtent("FrameInputs.renderExtent", in.renderExtent, info);
@@ -227,6 +250,17 @@ bool Context::prepare(const Settings& settings, VkExtent2D renderExtent, Error* 
   return guarded(error, [&] { impl_->prepare(settings, renderExtent); });
 }
 
+bool Context::setHeroCloudAssets(std::span<const NvdfVolume* const> assets, Error* error) {
+  for (std::size_t i = 0; i < assets.size(); ++i) {
+    const std::string field = "setHeroCloudAssets: assets[" + std::to_string(i) + "]";
+    if (assets[i] == nullptr) return fail(error, ErrorCode::InvalidInputs, field + ": null");
+    if (std::string problem = validateNvdf(*assets[i]); !problem.empty()) {
+      return fail(error, ErrorCode::InvalidInputs, field + ": " + problem);
+    }
+  }
+  return guarded(error, [&] { impl_->setHeroCloudAssets(assets); });
+}
+
 bool Context::prepared(const Settings& settings, VkExtent2D renderExtent) const {
   return validateSettings(settings).empty() &&
          checkExtent("", renderExtent, impl_->createInfo()).empty() &&
@@ -244,6 +278,10 @@ bool Context::dispatch(const FrameInputs& inputs, const Settings& settings, Erro
     return fail(error, ErrorCode::InvalidInputs, problem);
   }
   if (std::string problem = checkBolts(inputs.lightningBolts, settings); !problem.empty()) {
+    return fail(error, ErrorCode::InvalidInputs, problem);
+  }
+  if (std::string problem = checkHeroClouds(inputs.heroClouds, impl_->heroCloudAssets());
+      !problem.empty()) {
     return fail(error, ErrorCode::InvalidInputs, problem);
   }
   if (std::string missing = impl_->unprepared(settings, inputs.renderExtent); !missing.empty()) {

@@ -181,7 +181,8 @@ detail::ShadowExtents shadowExtentFor(const Settings& settings) {
 }  // namespace
 
 void Context::Impl::prepare(const Settings& settings, VkExtent2D renderExtent) {
-  for (const auto& [program, key] : detail::variantsFor(settings, info_.workCounters)) {
+  for (const auto& [program, key] :
+       detail::variantsFor(settings, info_.workCounters, heroAtlas_ != nullptr)) {
     if (programs_.has(program)) programs_[program].prepare(key);  // composite: optional
   }
   const detail::ImageSizes sizes = imageSizesFor(settings, renderExtent);
@@ -230,7 +231,8 @@ void Context::Impl::prepare(const Settings& settings, VkExtent2D renderExtent) {
 }
 
 std::string Context::Impl::unprepared(const Settings& settings, VkExtent2D renderExtent) const {
-  for (const auto& [program, key] : detail::variantsFor(settings, info_.workCounters)) {
+  for (const auto& [program, key] :
+       detail::variantsFor(settings, info_.workCounters, heroAtlas_ != nullptr)) {
     if (programs_.has(program) && programs_[program].find(key) == VK_NULL_HANDLE) {
       std::string variant = programs_[program].name();
       for (std::uint32_t i = 0; i < key.count; ++i) variant += " " + std::to_string(key.values[i]);
@@ -302,6 +304,10 @@ void Context::Impl::startFrame(const FrameInputs& inputs, const Settings& settin
   if (lastFrameIndex_ == inputs.frameIndex) return;  // the frame's other call did it
   const VkCommandBuffer cmd = inputs.commandBuffer;
   images_.releaseRetired(inputs.frameIndex, info_.maxFramesInFlight);
+  if (heroAtlas_) {
+    heroAtlas_->releaseStaging(inputs.frameIndex, info_.maxFramesInFlight);
+    heroAtlas_->recordUpload(cmd, inputs.frameIndex);
+  }
   if (timer_) timer_->beginFrame(cmd, static_cast<std::uint32_t>(&slot - slots_.data()));
   images_.recordInitialLayouts(cmd);
   if (!noiseGenerated_) recordNoise(cmd);
@@ -342,7 +348,9 @@ void Context::Impl::dispatch(const FrameInputs& inputs, const Settings& settings
                                               traceExtent, inputs.renderExtent, temporal};
   lastUniforms_ = detail::buildUniforms(inputs, settings, uniformContext);
   lastUniforms_.flags |= debugFlags_;
-  if (skyIsClear(settings)) {
+  // Hero clouds stand wherever the host puts them, whatever the layer's coverage.
+  const bool heroClouds = heroAtlas_ != nullptr && !inputs.heroClouds.empty();
+  if (skyIsClear(settings) && !heroClouds) {
     // Nothing can be marched: the outputs are the empty sky, and the next frame starts afresh.
     recordClearSky(cmd, slot);
     outputsHoldClearSky_ = true;
@@ -364,11 +372,16 @@ void Context::Impl::dispatch(const FrameInputs& inputs, const Settings& settings
       std::memcpy(&shadow.map, &shadowParameters_, sizeof(shadowParameters_));
       shadow.terrainTopMetres = inputs.terrain.maxAltitudeMetres;
     }
-    recordUniforms(cmd, slot, lastUniforms_, terrainShadow ? &shadow : nullptr);
+    lastHeroClouds_ = heroClouds
+                          ? detail::heroCloudUniforms(heroAtlas_->assets(), inputs.heroClouds,
+                                                      inputs.cameraPosition)
+                          : shader::HeroCloudUniforms{};
+    recordUniforms(cmd, slot, lastUniforms_, terrainShadow ? &shadow : nullptr,
+                   heroClouds ? &lastHeroClouds_ : nullptr);
     if (inputs.skyView != VK_NULL_HANDLE || inputs.groundAlbedo) {
       recordSkyAmbient(cmd, inputs, settings, shadowMapMade, slot);
     }
-    recordTrace(cmd, inputs, settings, temporal, traceExtent, terrainShadow, slot);
+    recordTrace(cmd, inputs, settings, temporal, traceExtent, terrainShadow, heroClouds, slot);
     outputsHoldClearSky_ = false;
     temporal_.commit(temporal, inputs, settings, traceExtent);
     report_ = FrameReport{traceExtent,          temporal.tileSize,    temporal.useHistory,
@@ -428,8 +441,22 @@ MemoryUsage Context::Impl::memoryUsage() const {
                          slot.shadowUniforms.bytes() + slot.shadowParameters.bytes() +
                          slot.godRayLight.bytes() + slot.edgeRayList.bytes();
     usage.lightningBytes += slot.lightning.bytes() + slot.bolts.bytes();
+    usage.heroCloudBytes += slot.heroClouds.bytes();
   }
+  if (heroAtlas_) usage.heroCloudBytes += heroAtlas_->bytes();
   return usage;
+}
+
+void Context::Impl::setHeroCloudAssets(std::span<const NvdfVolume* const> assets) {
+  // The host waited for the GPU (the call's contract): the old atlas can go at once.
+  heroAtlas_.reset();
+  for (Slot& slot : slots_) slot.heroClouds = detail::OwnedBuffer();
+  if (assets.empty()) return;
+  heroAtlas_ = std::make_unique<detail::HeroCloudAtlas>(device_, detail::packHeroAtlas(assets));
+  for (std::size_t i = 0; i < slots_.size(); ++i) {
+    slots_[i].heroClouds = uniformBlock(device_, sizeof(shader::HeroCloudUniforms),
+                                        "hero clouds " + std::to_string(i));
+  }
 }
 
 WorkCounters Context::Impl::workCounters(std::uint64_t frameIndex) const {

@@ -24,6 +24,7 @@
 
 #include "cloud_types.h"
 #include "clouds/clouds.h"
+#include "hero_clouds.h"
 #include "kit.h"
 #include "module_images.h"
 #include "passes.h"
@@ -51,6 +52,9 @@ class Context::Impl {
   // Records the frame's shadow-map cascades (same preconditions).
   void dispatchShadowMap(const FrameInputs& inputs, const Settings& settings);
   void composite(VkCommandBuffer cmd, VkImageView color, VkExtent2D extent);
+  // Throws vkfx::Error (OutOfMemory, VulkanFailure); the assets are valid (context.cpp checks).
+  void setHeroCloudAssets(std::span<const NvdfVolume* const> assets);
+  std::size_t heroCloudAssets() const { return heroAtlas_ ? heroAtlas_->assets().size() : 0; }
 
   Outputs outputs() const;
   FrameReport lastFrameReport() const { return report_; }
@@ -65,6 +69,8 @@ class Context::Impl {
   // The weather map in use (the other one is being prepared for the next period).
   const detail::OwnedImage& weatherMap() const { return images_.weatherMaps[currentWeather_]; }
   const shader::CloudUniforms& lastUniforms() const { return lastUniforms_; }
+  // The hero clouds the last dispatch() drew (count 0: none).
+  const shader::HeroCloudUniforms& lastHeroClouds() const { return lastHeroClouds_; }
   // The uniforms and per-cascade constants of the last shadow-map cascades recorded.
   const shader::CloudUniforms& lastShadowUniforms() const { return lastShadowUniforms_; }
   const std::vector<shader::ShadowMapConstants>& lastShadowJobs() const { return lastShadowJobs_; }
@@ -100,6 +106,7 @@ class Context::Impl {
     detail::OwnedBuffer bolts;        // this frame's bolts on screen (lightningBoltSegments > 0)
     detail::OwnedBuffer edgeRayList;  // the march's edge tiles and their dispatch (edgeRays)
     VkDescriptorSet lightningBolts = VK_NULL_HANDLE;
+    detail::OwnedBuffer heroClouds;  // this frame's HeroCloudUniforms (with hero cloud assets)
   };
 
   VkDescriptorSet allocateSet(detail::Program program);
@@ -137,9 +144,11 @@ class Context::Impl {
                      const detail::OwnedImage& traceSamples, bool traced, Slot& slot);
 
   // record_trace.cpp
-  // `shadow`: the march's terrain-shadow block, when this frame's march reads it.
+  // `shadow`: the march's terrain-shadow block, when this frame's march reads it; `heroes`:
+  // its hero clouds, when it draws any.
   void recordUniforms(VkCommandBuffer cmd, Slot& slot, const shader::CloudUniforms& uniforms,
-                      const shader::MarchTerrainShadow* shadow);
+                      const shader::MarchTerrainShadow* shadow,
+                      const shader::HeroCloudUniforms* heroes);
   void recordSkyAmbient(VkCommandBuffer cmd, const FrameInputs& inputs, const Settings& settings,
                         bool shadowMapMade, Slot& slot);
   // Empties the edge rays' list before the march fills it (Settings::edgeRays).
@@ -152,14 +161,16 @@ class Context::Impl {
   // This frame's bolts drawn into the radiance output (its set written), which the upsample
   // left ready for compute reads and writes; then the outputs made visible to the host.
   void recordBolts(VkCommandBuffer cmd, const FrameInputs& inputs, bool hazed, Slot& slot);
+  // `heroClouds`: the march draws this frame's hero clouds (recordUniforms() wrote them).
   void recordTrace(VkCommandBuffer cmd, const FrameInputs& inputs, const Settings& settings,
                    const detail::TemporalFrame& temporal, VkExtent2D traceExtent,
-                   bool terrainShadow, Slot& slot);
+                   bool terrainShadow, bool heroClouds, Slot& slot);
   // recordTrace()'s passes, in their order, each over the set recordTrace() wrote for it.
   void recordSceneDistance(VkCommandBuffer cmd, VkExtent2D traceExtent, Slot& slot);
   // `edgeRays`: detail::marchesEdgeRays(), which adds the edge tiles' dispatch.
   void recordMarch(VkCommandBuffer cmd, const Settings& settings, std::uint32_t tileSize,
-                   VkExtent2D traceExtent, bool terrainShadow, bool edgeRays, Slot& slot);
+                   VkExtent2D traceExtent, bool terrainShadow, bool edgeRays, bool heroClouds,
+                   Slot& slot);
   // `lightning`: recordLightning() wrote flashes, whose glow is reconstructed too.
   void recordReconstruct(VkCommandBuffer cmd, const detail::TemporalFrame& temporal,
                          VkExtent2D traceExtent, bool lightning, Slot& slot);
@@ -202,6 +213,8 @@ class Context::Impl {
   // (each upsample, bolt and image replacement resets it): a clear sky that stays clear costs
   // no clears after its first frame.
   bool outputsHoldClearSky_ = false;
+  // The hero clouds' assets (setHeroCloudAssets()); none: no atlas, no hero march.
+  std::unique_ptr<detail::HeroCloudAtlas> heroAtlas_;
   detail::ShadowCascades shadowCascades_;
   ShadowMapParameters shadowParameters_{};
   std::optional<std::uint64_t> shadowFrame_;     // the frame of the last dispatchShadowMap()
@@ -209,6 +222,7 @@ class Context::Impl {
   shader::GodRayParameters godRayParameters_{};  // the last dispatch()'s (Outputs::godRay*)
   FrameReport report_{};
   shader::CloudUniforms lastUniforms_{};
+  shader::HeroCloudUniforms lastHeroClouds_{};
   shader::CloudUniforms lastShadowUniforms_{};
   // The field the shadow map is made with: this frame's, or for a cascade made in slices the
   // frame's of its first slice.

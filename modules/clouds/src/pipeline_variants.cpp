@@ -14,7 +14,7 @@ static_assert(shader::kMarchSpecCount <= kKeyCapacity && shader::kUpsampleSpecCo
 }  // namespace
 
 SpecializationKey marchKey(const Settings& settings, bool workCounters, bool terrainShadow,
-                           std::uint32_t edgeRays) {
+                           std::uint32_t edgeRays, bool heroClouds) {
   const MarchVariant v = marchVariant(settings);
   SpecializationKey key;
   key.values[shader::kSpecJitter] = v.jitter;
@@ -27,6 +27,7 @@ SpecializationKey marchKey(const Settings& settings, bool workCounters, bool ter
   key.values[shader::kSpecTerrainShadow] = terrainShadow ? 1u : 0u;
   key.values[shader::kSpecLightReuse] = v.lightReuse;
   key.values[shader::kSpecEdgeRays] = v.edgeRays != 0u ? edgeRays : shader::kEdgeRaysOff;
+  key.values[shader::kSpecHeroClouds] = heroClouds ? 1u : 0u;
   key.count = shader::kMarchSpecCount;
   return key;
 }
@@ -78,16 +79,21 @@ SpecializationKey shadowMapKey(const Settings& settings) {
 }
 
 std::vector<std::pair<Program, SpecializationKey>> variantsFor(const Settings& settings,
-                                                               bool workCounters) {
+                                                               bool workCounters, bool heroClouds) {
   const std::uint32_t histories[] = {shader::kHistoryNone, shader::kHistoryInPlace,
                                      shader::kHistoryReprojected};
   std::vector<std::pair<Program, SpecializationKey>> variants;
-  // The tiles' march, and with edge rays the edge rays' march.
+  // The tiles' march, and with edge rays the edge rays' march; with hero cloud assets, each
+  // with and without them.
   const auto addMarch = [&](bool terrainShadow) {
-    variants.emplace_back(Program::March, marchKey(settings, workCounters, terrainShadow));
-    if (marchVariant(settings).edgeRays == 0u) return;
-    variants.emplace_back(Program::March,
-                          marchKey(settings, workCounters, terrainShadow, shader::kEdgeRaysMarch));
+    for (bool heroes : {false, true}) {
+      if (heroes && !heroClouds) continue;
+      variants.emplace_back(Program::March, marchKey(settings, workCounters, terrainShadow,
+                                                     shader::kEdgeRaysFind, heroes));
+      if (marchVariant(settings).edgeRays == 0u) continue;
+      variants.emplace_back(Program::March, marchKey(settings, workCounters, terrainShadow,
+                                                     shader::kEdgeRaysMarch, heroes));
+    }
   };
   addMarch(false);
   // With lightning, frames without a flash write no glow.

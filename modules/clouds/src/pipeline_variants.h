@@ -15,9 +15,10 @@ namespace clouds::detail {
 
 // `terrainShadow`: the terrain's shadow takes the sun from the clouds (FrameInputs::terrain
 // with a shadow map). `edgeRays`: the tiles' march (shader::kEdgeRaysFind, which lists the edge
-// tiles when the settings have edge rays) or the edge rays' (kEdgeRaysMarch).
+// tiles when the settings have edge rays) or the edge rays' (kEdgeRaysMarch). `heroClouds`:
+// the frame draws hero clouds (FrameInputs::heroClouds).
 SpecializationKey marchKey(const Settings& settings, bool workCounters, bool terrainShadow,
-                           std::uint32_t edgeRays = shader::kEdgeRaysFind);
+                           std::uint32_t edgeRays = shader::kEdgeRaysFind, bool heroClouds = false);
 // `history`: kHistoryNone, kHistoryInPlace or kHistoryReprojected (cloud_types.h).
 // `lightning`: write the glow with this frame's flashes too.
 SpecializationKey reconstructKey(std::uint32_t history, bool lightning);
@@ -38,8 +39,10 @@ SpecializationKey godRaysKey(std::uint32_t light);
 SpecializationKey shadowMapKey(const Settings& settings);
 
 // Every variant `settings` can select in some frame (with or without history, still or moving,
-// with or without the host's aerial perspective or terrain).
+// with or without the host's aerial perspective or terrain; with hero cloud assets loaded,
+// with or without hero clouds).
 std::vector<std::pair<Program, SpecializationKey>> variantsFor(const Settings& settings,
-                                                               bool workCounters);
+                                                               bool workCounters,
+                                                               bool heroClouds = false);
 
 }  // namespace clouds::detail

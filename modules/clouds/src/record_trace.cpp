@@ -47,11 +47,18 @@ struct TraceFrame {
   VkImageView outputHistoryOut = VK_NULL_HANDLE;
   bool terrainShadow = false;  // the march reads the terrain's shadow from the shadow map
   bool edgeRays = false;       // detail::marchesEdgeRays()
+  // The march draws hero clouds: their atlas and block. Without them, stand-ins the march's
+  // variant never reads: the shape noise (RGBA8 3D) and the frame's uniforms.
+  bool heroClouds = false;
+  VkImageView heroAtlas = VK_NULL_HANDLE;
+  VkBuffer heroBlock = VK_NULL_HANDLE;
 };
 
+// `heroAtlas`, `heroBlock`: the hero clouds' (null without them this frame).
 TraceFrame traceFrame(const detail::ModuleImages& im, const TraceSamplers& samplers,
                       VkBuffer uniforms, const FrameInputs& inputs, const Settings& settings,
-                      const detail::TemporalFrame& temporal, bool terrainShadow) {
+                      const detail::TemporalFrame& temporal, bool terrainShadow,
+                      VkImageView heroAtlas, VkBuffer heroBlock) {
   const bool hasDepth = inputs.depthView != VK_NULL_HANDLE;
   const FrameInputs::AerialPerspective& haze = inputs.aerialPerspective;
   const bool hazed = haze.view != VK_NULL_HANDLE;
@@ -76,6 +83,9 @@ TraceFrame traceFrame(const detail::ModuleImages& im, const TraceSamplers& sampl
           upsampling ? im.outputHistory[temporal.writeHistory].view() : noOutputHistory,
       .terrainShadow = terrainShadow,
       .edgeRays = detail::marchesEdgeRays(settings, temporal),
+      .heroClouds = heroAtlas != VK_NULL_HANDLE,
+      .heroAtlas = heroAtlas != VK_NULL_HANDLE ? heroAtlas : im.shapeNoise.view(),
+      .heroBlock = heroAtlas != VK_NULL_HANDLE ? heroBlock : uniforms,
   };
 }
 
@@ -119,6 +129,8 @@ void writeMarchSet(const detail::DeviceContext& device, VkDescriptorSet set,
       .storageImage(kMarchTraceHistory, frame.historyIn.view())
       .storageBuffer(kMarchEdgeRayList, frame.edgeRays ? edgeRayList.buffer() : counters.buffer(),
                      frame.edgeRays ? edgeRayList.size() : counters.size())
+      .storageImage(kMarchHeroAtlas, frame.heroAtlas)
+      .uniformBuffer(kMarchHeroClouds, frame.heroBlock, sizeof(HeroCloudUniforms))
       .commit();
 }
 
@@ -224,7 +236,8 @@ void makeOutputsVisible(const detail::DeviceContext& device, VkCommandBuffer cmd
 
 void Context::Impl::recordUniforms(VkCommandBuffer cmd, Slot& slot,
                                    const shader::CloudUniforms& uniforms,
-                                   const shader::MarchTerrainShadow* shadow) {
+                                   const shader::MarchTerrainShadow* shadow,
+                                   const shader::HeroCloudUniforms* heroes) {
   // The previous frame of this slot has completed (host contract), but earlier commands in
   // this queue may still read it: order the update after them.
   detail::memoryBarrier(device_, cmd, kCompute, VK_ACCESS_2_UNIFORM_READ_BIT | kStorageRead,
@@ -233,6 +246,10 @@ void Context::Impl::recordUniforms(VkCommandBuffer cmd, Slot& slot,
   // Only the march's terrain variant reads it.
   if (shadow != nullptr) {
     device_.fn().vkCmdUpdateBuffer(cmd, slot.shadowParameters.buffer(), 0, sizeof(*shadow), shadow);
+  }
+  // Only the march's hero variant reads it.
+  if (heroes != nullptr) {
+    device_.fn().vkCmdUpdateBuffer(cmd, slot.heroClouds.buffer(), 0, sizeof(*heroes), heroes);
   }
   detail::memoryBarrier(device_, cmd, VK_PIPELINE_STAGE_2_TRANSFER_BIT,
                         VK_ACCESS_2_TRANSFER_WRITE_BIT, kCompute,
@@ -278,11 +295,13 @@ void Context::Impl::recordSkyAmbient(VkCommandBuffer cmd, const FrameInputs& inp
 
 void Context::Impl::recordTrace(VkCommandBuffer cmd, const FrameInputs& inputs,
                                 const Settings& settings, const detail::TemporalFrame& temporal,
-                                VkExtent2D traceExtent, bool terrainShadow, Slot& slot) {
+                                VkExtent2D traceExtent, bool terrainShadow, bool heroClouds,
+                                Slot& slot) {
   const TraceSamplers samplers{nearestSampler_.get(), linearSampler_.get(),
                                clampedLinearSampler_.get()};
-  const TraceFrame frame = traceFrame(images_, samplers, slot.uniforms.buffer(), inputs, settings,
-                                      temporal, terrainShadow);
+  const TraceFrame frame = traceFrame(
+      images_, samplers, slot.uniforms.buffer(), inputs, settings, temporal, terrainShadow,
+      heroClouds ? heroAtlas_->image().view() : VK_NULL_HANDLE, slot.heroClouds.buffer());
   writeSceneDistanceSet(device_, slot.sceneDistance, frame);
   writeMarchSet(device_, slot.march, frame, weatherMap(), slot.counters, slot.shadowParameters,
                 slot.edgeRayList);
@@ -296,7 +315,8 @@ void Context::Impl::recordTrace(VkCommandBuffer cmd, const FrameInputs& inputs,
   if (info_.workCounters) resetWorkCounters(device_, cmd, slot.counters);
 
   recordSceneDistance(cmd, traceExtent, slot);
-  recordMarch(cmd, settings, temporal.tileSize, traceExtent, terrainShadow, frame.edgeRays, slot);
+  recordMarch(cmd, settings, temporal.tileSize, traceExtent, terrainShadow, frame.edgeRays,
+              heroClouds, slot);
   const bool lightning = recordLightning(cmd, inputs, slot);
   recordReconstruct(cmd, temporal, traceExtent, lightning, slot);
   const bool godRays =
@@ -325,19 +345,20 @@ void Context::Impl::recordSceneDistance(VkCommandBuffer cmd, VkExtent2D traceExt
 
 void Context::Impl::recordMarch(VkCommandBuffer cmd, const Settings& settings,
                                 std::uint32_t tileSize, VkExtent2D traceExtent, bool terrainShadow,
-                                bool edgeRays, Slot& slot) {
+                                bool edgeRays, bool heroClouds, Slot& slot) {
   const std::uint32_t k = tileSize;
   if (edgeRays) recordEdgeRayListReset(cmd, slot);
   beginPass(cmd, detail::Pass::March, "clouds: march");
   // One invocation per tile: only the pixels marched this frame.
   const detail::ComputeProgram& march = programs_[Program::March];
   bindAndDispatch(cmd, Program::March,
-                  march.find(detail::marchKey(settings, info_.workCounters, terrainShadow)),
+                  march.find(detail::marchKey(settings, info_.workCounters, terrainShadow,
+                                              shader::kEdgeRaysFind, heroClouds)),
                   slot.march, (traceExtent.width + k - 1) / k, (traceExtent.height + k - 1) / k);
   if (edgeRays) {
     dispatchListedEdgeTiles(device_, cmd,
                             march.find(detail::marchKey(settings, info_.workCounters, terrainShadow,
-                                                        shader::kEdgeRaysMarch)),
+                                                        shader::kEdgeRaysMarch, heroClouds)),
                             slot.edgeRayList);
   }
   detail::memoryBarrier(device_, cmd, kCompute, kStorageWrite, kCompute, kStorageRead);

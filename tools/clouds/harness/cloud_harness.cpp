@@ -177,6 +177,7 @@ clouds::FrameInputs CloudHarness::makeInputs(const CloudView& view, VkExtent2D e
   in.aerialPerspective = view.aerialPerspective;
   in.terrain = view.terrain;
   in.lightningFlashes = view.lightningFlashes;
+  in.heroClouds = view.heroClouds;
   in.lightningBolts = view.lightningBolts;
   in.frameIndex = frameIndex_;
   in.reset = cutNext_;

@@ -59,6 +59,9 @@ struct CloudView {
   std::vector<clouds::LightningFlash> lightningFlashes;
   // This frame's lightning bolts (FrameInputs::lightningBolts).
   std::vector<clouds::LightningBoltSegment> lightningBolts;
+  // This frame's hero clouds (FrameInputs::heroClouds), of the assets given to the harness's
+  // context (Context::setHeroCloudAssets()).
+  std::vector<clouds::HeroCloud> heroClouds;
 };
 
 glm::vec3 sunDirection(const CloudView& view);

@@ -52,6 +52,17 @@ vec4 fetchWeatherMaxCoarse(ivec2 t) {
   return texel(gTextures->weatherMaxCoarse,
                std::size_t(t.y) * kWeatherMaxCoarseSize + std::size_t(t.x));
 }
+uint heroCloudCount() {
+  return gTextures != nullptr ? gTextures->heroes.uniforms.count.x : 0u;
+}
+HeroCloudInstance heroCloud(uint index) {
+  return gTextures->heroes.uniforms.instance[index];
+}
+vec4 fetchHeroAtlas(ivec3 t) {
+  const glm::uvec3 e = gTextures->heroes.extent;
+  return texel(gTextures->heroes.atlas,
+               (std::size_t(t.z) * e.y + std::size_t(t.y)) * e.x + std::size_t(t.x));
+}
 // The reference marches without the host's terrain.
 float terrainSunLight(vec3, float) {
   return 1.0f;

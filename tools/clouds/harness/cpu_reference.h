@@ -10,6 +10,14 @@
 
 namespace clouds::tools {
 
+// Hero clouds as the march saw them: the atlas's texels (detail::packHeroAtlas()) and the
+// frame's block (Context internals: lastHeroClouds()). Count 0: none.
+struct CpuHeroClouds {
+  std::vector<std::uint8_t> atlas;  // RGBA8, x fastest
+  glm::uvec3 extent{0u};
+  clouds::shader::HeroCloudUniforms uniforms{};
+};
+
 struct CpuTextures {
   std::vector<std::uint8_t> shape;    // 128 x 128 x 192 RGBA8: 128^3 and its mip chain
   std::vector<std::uint8_t> detail;   // 32 x 32 x 48 RGBA8: 32^3 and its mip chain
@@ -18,6 +26,7 @@ struct CpuTextures {
   // Empty-space-skipping maxima computed on the CPU from `weather` (see weatherMaxima).
   std::vector<std::uint8_t> weatherMaxFine;    // 64^2 RGBA8
   std::vector<std::uint8_t> weatherMaxCoarse;  // 8^2 RGBA8
+  CpuHeroClouds heroes;
 };
 
 CpuTextures readTextures(CloudHarness& harness);

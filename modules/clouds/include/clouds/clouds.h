@@ -152,12 +152,14 @@ struct MemoryUsage {
   std::uint64_t shadowBytes = 0;      // the cloud shadow map and its spare cascade
   std::uint64_t godRayBytes = 0;      // the god-ray occlusion image, mask and light
   std::uint64_t lightningBytes = 0;   // the glow image, the flashes' blocks, the bolts' buffers
+  std::uint64_t heroCloudBytes = 0;   // the hero clouds' atlas (setHeroCloudAssets()), its upload
+                                      //   buffer until a frame has copied it, their blocks
   std::uint64_t bufferBytes = 0;      // uniforms, work counters, placeholders
   std::uint64_t retiredBytes = 0;     // images a larger prepare() replaced, freed once the
                                       //   frames in flight that may use them have retired
   std::uint64_t totalBytes() const {
     return noiseBytes + weatherBytes + outputBytes + traceBytes + upsamplingBytes + shadowBytes +
-           godRayBytes + lightningBytes + bufferBytes + retiredBytes;
+           godRayBytes + lightningBytes + heroCloudBytes + bufferBytes + retiredBytes;
   }
 };
 
@@ -416,6 +418,19 @@ struct LightningBoltSegment {
   float widthMetres = 2.0f;    // > 0, finite: the glowing channel's width
 };
 
+struct NvdfVolume;  // clouds/nvdf.h
+
+// A hero cloud placed in the world this frame (Nubis³'s voxel clouds): one of the assets the
+// host gave Context::setHeroCloudAssets(), its frame's origin at `positionMetres`, scaled and
+// turned about the vertical. The march draws it with the layer, by depth, in the same image.
+struct HeroCloud {
+  std::uint32_t asset = 0;         // index into the last setHeroCloudAssets() list
+  glm::dvec3 positionMetres{0.0};  // world, finite
+  float scale = 1.0f;              // [0.01, 100]: world metres per metre of the asset
+  float yawRadians = 0.0f;         // finite: a turn about +y, taking +z towards +x
+};
+inline constexpr std::uint32_t kMaxHeroClouds = 8;  // FrameInputs::heroClouds per frame
+
 struct FrameInputs {
   VkCommandBuffer commandBuffer = VK_NULL_HANDLE;
   VkExtent2D renderExtent{0, 0};  // <= CreateInfo::maxRenderExtent; size of depth and outputs
@@ -504,6 +519,9 @@ struct FrameInputs {
   std::span<const LightningFlash> lightningFlashes;
   // This frame's lightning bolts, at most Settings::lightningBoltSegments pieces (likewise).
   std::span<const LightningBoltSegment> lightningBolts;
+  // This frame's hero clouds, at most kMaxHeroClouds, of the assets setHeroCloudAssets() gave
+  // (likewise). None: the march is the one without hero clouds, which reads nothing of them.
+  std::span<const HeroCloud> heroClouds;
 
   double timeSeconds = 0.0;  // >= 0; drives wind and weather evolution
   // The host's frame number, increasing by one per frame: picks the per-frame slot
@@ -594,6 +612,14 @@ class Context {
   bool prepare(const Settings& settings, VkExtent2D renderExtent, Error* error);
   // Whether dispatch() can run `settings` at `renderExtent` without a prepare().
   bool prepared(const Settings& settings, VkExtent2D renderExtent) const;
+
+  // The hero clouds' assets (clouds/nvdf.h; each valid, see validateNvdf()) that
+  // FrameInputs::heroClouds place, replacing any given before; an empty list frees them. Call
+  // it outside command recording, when the GPU no longer uses the module's objects (as for
+  // destruction): it allocates their atlas (memoryUsage().heroCloudBytes), and the next frame
+  // uploads it. The next prepare() makes the march that draws them. Returns false and fills
+  // `error` (InvalidInputs naming the asset, OutOfMemory, VulkanFailure).
+  bool setHeroCloudAssets(std::span<const NvdfVolume* const> assets, Error* error);
 
   // Records this frame's work (its first frame also records the noise generation). Creates
   // and allocates nothing. Returns false and fills `error` (InvalidInputs, InvalidSettings,

@@ -45,6 +45,7 @@ class OwnedBuffer {
   VkDeviceSize size() const { return size_; }
   VkDeviceSize bytes() const { return bytes_; }
   const void* mapped() const { return mapped_; }
+  void* mapped() { return mapped_; }
 
  private:
   UniqueMemory memory_;  // freeing the memory unmaps it

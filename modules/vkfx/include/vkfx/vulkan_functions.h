@@ -54,6 +54,7 @@ namespace vkfx {
   X(vkCmdFillBuffer)               \
   X(vkCmdClearColorImage)          \
   X(vkCmdCopyImage)                \
+  X(vkCmdCopyBufferToImage)        \
   X(vkMapMemory)                   \
   X(vkCreateQueryPool)             \
   X(vkDestroyQueryPool)            \

@@ -1,0 +1,129 @@
+// Hero clouds (Schneider 2023, "Nubis³" voxel clouds): NVDF assets (clouds/nvdf.h) placed in
+// the world, the march's second density source beside the layer (cloud_march.h's sampleField()
+// adds them). Shared by the march shader and the CPU reference.
+//
+// An asset's voxels lie in one RGBA8 atlas (hero_clouds.h): R the dimensional profile, G the
+// detail type, B the density scale, A the signed distance as a code rounded down (a conservative
+// bound: where it reads d > 0 no cloud lies within d). Between voxel centres the fields are
+// filtered trilinearly, fading to clear air over the voxel beyond the outermost centres.
+// Positions are camera-relative metres on straight lines from the camera: the host's flat map,
+// on which its terrain stands, not the layer's curved shell.
+#ifndef CLOUDS_CLOUD_HERO_H
+#define CLOUDS_CLOUD_HERO_H
+
+#include "cloud_math.h"
+#include "cloud_types.h"
+
+FX_SHADER_BEGIN(clouds::shader)
+
+// The includer's: this frame's hero clouds (0 where they are not compiled in) and the atlas.
+uint heroCloudCount();
+HeroCloudInstance heroCloud(uint index);
+vec4 fetchHeroAtlas(ivec3 texel);  // RGBA8 as [0, 1]
+
+const float kHeroFar = 1e30f;
+// The distance code: (A x 255 - 128) / 127 of the full scale (HeroCloudInstance::scales.y).
+const float kHeroDistanceZero = 128.0f;
+// Steps inside a hero cloud's box, in its voxels: the fields change linearly within a voxel.
+const float kHeroStepVoxels = 1.0f;
+
+// Index coordinates (voxel centres at integers) of a camera-relative point.
+FX_INLINE vec3 heroIndex(IN(HeroCloudInstance) h, vec3 relative) {
+  return vec3(dot(vec3(h.toIndex[0]), relative) + h.toIndex[0].w,
+              dot(vec3(h.toIndex[1]), relative) + h.toIndex[1].w,
+              dot(vec3(h.toIndex[2]), relative) + h.toIndex[2].w);
+}
+
+// The fields at index coordinate `c`: xyz the profile, detail type and density scale (clear air
+// beyond the outermost voxels), w the signed distance (world m; the edge voxels' beyond them).
+FX_INLINE vec4 heroFields(IN(HeroCloudInstance) h, vec3 c) {
+  const ivec3 last = ivec3(vec3(h.extent)) - 1;
+  const int slice = int(h.extent.w);
+  const vec3 base = floor(c);
+  const vec3 f = c - base;
+  const ivec3 i0 = ivec3(base);
+  vec3 fields = vec3(0.0f);
+  float code = 0.0f;
+  for (int corner = 0; corner < 8; ++corner) {
+    const ivec3 o = ivec3(corner & 1, (corner >> 1) & 1, corner >> 2);
+    const vec3 weights = mix(vec3(1.0f) - f, f, vec3(o));
+    const float w = weights.x * weights.y * weights.z;
+    const ivec3 at = i0 + o;
+    const ivec3 clamped = clamp(at, ivec3(0), last);
+    const vec4 texel = fetchHeroAtlas(ivec3(clamped.x, clamped.y, clamped.z + slice));
+    fields += all(equal(at, clamped)) ? vec3(texel) * w : vec3(0.0f);
+    code += texel.w * w;
+  }
+  return vec4(fields, (code * 255.0f - kHeroDistanceZero) / 127.0f * h.scales.y);
+}
+
+// What the hero clouds hold at a camera-relative point.
+struct HeroSample {
+  float sigmaT;          // extinction (1/m), summed over the clouds
+  float profile;         // the dimensional profile of the one that is densest there
+  float heightFraction;  // the height of the point in that one's box, [0, 1]
+  float clearMetres;     // no hero cloud lies within this distance (m); 0 in an envelope
+};
+
+FX_INLINE HeroSample heroField(vec3 relative, IN(CloudUniforms) u) {
+  HeroSample s;
+  s.sigmaT = 0.0f;
+  s.profile = 0.0f;
+  s.heightFraction = 0.0f;
+  s.clearMetres = kHeroFar;
+  float densest = 0.0f;
+  const uint count = heroCloudCount();
+  for (uint i = 0u; i < count; ++i) {
+    const HeroCloudInstance h = heroCloud(i);
+    const vec3 c = heroIndex(h, relative);
+    const vec3 size = vec3(h.extent);
+    // Beyond [-1, size] every voxel the filter reads is clear: the box's distance bounds it.
+    const vec3 beyond = max(max(vec3(-1.0f) - c, c - size), vec3(0.0f));
+    const float boxMetres = length(beyond) * h.scales.z;
+    s.clearMetres = min(s.clearMetres, boxMetres);
+    for (int inBox = 0; inBox < (boxMetres == 0.0f ? 1 : 0); ++inBox) {
+      const vec4 fields = heroFields(h, c);
+      s.clearMetres = min(s.clearMetres, max(fields.w, 0.0f));
+      const float sigma = fields.x * fields.z * h.scales.x * u.extinctionPerMetre;
+      s.sigmaT += sigma;
+      if (sigma > densest) {
+        densest = sigma;
+        s.profile = fields.x;
+        s.heightFraction = saturate((c.y + 1.0f) / (size.y + 1.0f));
+      }
+    }
+  }
+  return s;
+}
+
+// Where the ray from the camera along the unit `direction` crosses hero clouds' boxes: x the
+// first entry, y the last exit (m; x >= y when it meets none), z the smallest voxel (m) of the
+// clouds it meets.
+FX_INLINE vec3 heroRaySpan(vec3 direction) {
+  vec3 span = vec3(kHeroFar, -kHeroFar, kHeroFar);
+  const uint count = heroCloudCount();
+  for (uint i = 0u; i < count; ++i) {
+    const HeroCloudInstance h = heroCloud(i);
+    const vec3 origin = vec3(h.toIndex[0].w, h.toIndex[1].w, h.toIndex[2].w);
+    vec3 d = vec3(dot(vec3(h.toIndex[0]), direction), dot(vec3(h.toIndex[1]), direction),
+                  dot(vec3(h.toIndex[2]), direction));
+    // A ray parallel to a face: a tiny slope keeps the slab test finite (it then spans +-1e30).
+    d = mix(d, vec3(1e-30f), lessThan(abs(d), vec3(1e-30f)));
+    const vec3 a = (vec3(-1.0f) - origin) / d;
+    const vec3 b = (vec3(h.extent) - origin) / d;
+    const vec3 near = min(a, b);
+    const vec3 far = max(a, b);
+    const float enter = max(max(near.x, near.y), max(near.z, 0.0f));
+    const float exit = min(min(far.x, far.y), far.z);
+    if (enter < exit) {
+      span.x = min(span.x, enter);
+      span.y = max(span.y, exit);
+      span.z = min(span.z, h.scales.z);
+    }
+  }
+  return span;
+}
+
+FX_SHADER_END
+
+#endif

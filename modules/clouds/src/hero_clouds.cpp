@@ -1,0 +1,119 @@
+#include "hero_clouds.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+
+namespace clouds::detail {
+
+static_assert(kMaxHeroClouds == shader::kMaxHeroClouds, "the API's bound is the block's");
+
+std::uint8_t heroDistanceCode(float metres, float rangeMetres) {
+  const double code = std::floor(double(metres) / double(rangeMetres) * 127.0) + 128.0;
+  return static_cast<std::uint8_t>(std::clamp(code, 0.0, 255.0));
+}
+
+HeroAtlasLayout packHeroAtlas(std::span<const NvdfVolume* const> assets) {
+  HeroAtlasLayout layout;
+  std::uint32_t slices = 0;
+  for (const NvdfVolume* asset : assets) {
+    HeroAsset placed;
+    placed.size = asset->size;
+    placed.firstSlice = slices;
+    placed.voxelMetres = asset->voxelMetres;
+    placed.originMetres = asset->originMetres;
+    placed.densityMultiplier = asset->densityMultiplier;
+    layout.assets.push_back(placed);
+    layout.extent.width = std::max(layout.extent.width, asset->size.x);
+    layout.extent.height = std::max(layout.extent.height, asset->size.y);
+    slices += asset->size.z;
+  }
+  layout.extent.depth = slices;
+  const std::size_t row = layout.extent.width;
+  const std::size_t slice = row * layout.extent.height;
+  layout.texels.assign(4 * slice * slices, 0);
+  for (std::size_t a = 0; a < assets.size(); ++a) {
+    const NvdfVolume& v = *assets[a];
+    const float range = kHeroDistanceRangeVoxels * v.voxelMetres;
+    for (std::uint32_t z = 0; z < v.size.z; ++z) {
+      for (std::uint32_t y = 0; y < v.size.y; ++y) {
+        for (std::uint32_t x = 0; x < v.size.x; ++x) {
+          const glm::uvec3 voxel(x, y, z);
+          const std::uint8_t* fields = &v.fields[v.voxelIndex(voxel) * kNvdfChannels];
+          std::uint8_t* texel =
+              &layout.texels[4 * ((layout.assets[a].firstSlice + z) * slice + y * row + x)];
+          texel[0] = fields[kNvdfProfile];
+          texel[1] = fields[kNvdfDetailType];
+          texel[2] = fields[kNvdfDensityScale];
+          texel[3] = heroDistanceCode(v.distanceMetres(voxel), range);
+        }
+      }
+    }
+  }
+  return layout;
+}
+
+shader::HeroCloudUniforms heroCloudUniforms(const std::vector<HeroAsset>& assets,
+                                            std::span<const HeroCloud> clouds,
+                                            const glm::dvec3& cameraPosition) {
+  shader::HeroCloudUniforms block{};
+  block.count.x = static_cast<std::uint32_t>(clouds.size());
+  for (std::size_t i = 0; i < clouds.size(); ++i) {
+    const HeroCloud& cloud = clouds[i];
+    const HeroAsset& asset = assets[cloud.asset];
+    // world = R (local x scale) + position, R a turn about +y; so
+    // index = (R^T (world - position) / scale - origin) / voxel, made camera-relative.
+    const double c = std::cos(double(cloud.yawRadians));
+    const double s = std::sin(double(cloud.yawRadians));
+    const glm::dmat3 turn(glm::dvec3(c, 0.0, -s), glm::dvec3(0.0, 1.0, 0.0), glm::dvec3(s, 0.0, c));
+    const double perMetre = 1.0 / (double(cloud.scale) * double(asset.voxelMetres));
+    const glm::dmat3 toIndex = glm::transpose(turn) * perMetre;
+    const glm::dvec3 offset = -(toIndex * (cloud.positionMetres - cameraPosition)) -
+                              glm::dvec3(asset.originMetres) / double(asset.voxelMetres);
+    shader::HeroCloudInstance& h = block.instance[i];
+    for (int row = 0; row < 3; ++row) {
+      // glm is column-major: toIndex[column][row].
+      h.toIndex[row] = glm::vec4(float(toIndex[0][row]), float(toIndex[1][row]),
+                                 float(toIndex[2][row]), float(offset[row]));
+    }
+    h.extent = glm::vec4(glm::vec3(asset.size), float(asset.firstSlice));
+    const float voxelWorld = asset.voxelMetres * cloud.scale;
+    h.scales =
+        glm::vec4(asset.densityMultiplier, kHeroDistanceRangeVoxels * voxelWorld, voxelWorld, 0.0f);
+  }
+  return block;
+}
+
+HeroCloudAtlas::HeroCloudAtlas(const DeviceContext& device, HeroAtlasLayout layout)
+    : device_(&device),
+      assets_(std::move(layout.assets)),
+      image_(device, VK_IMAGE_TYPE_3D, VK_FORMAT_R8G8B8A8_UNORM, layout.extent,
+             VK_IMAGE_USAGE_STORAGE_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT, "hero cloud atlas"),
+      staging_(device, layout.texels.size(), VK_BUFFER_USAGE_TRANSFER_SRC_BIT,
+               "hero cloud atlas upload", /*hostVisible=*/true) {
+  std::memcpy(staging_.mapped(), layout.texels.data(), layout.texels.size());
+}
+
+void HeroCloudAtlas::recordUpload(VkCommandBuffer cmd, std::uint64_t frameIndex) {
+  if (uploadFrame_) return;
+  barrier(*device_, cmd, image_.image(), VK_IMAGE_LAYOUT_UNDEFINED,
+          VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, VK_PIPELINE_STAGE_2_NONE, VK_ACCESS_2_NONE,
+          VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT);
+  VkBufferImageCopy copy{};
+  copy.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
+  copy.imageExtent = image_.extent();
+  device_->fn().vkCmdCopyBufferToImage(cmd, staging_.buffer(), image_.image(),
+                                       VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1, &copy);
+  barrier(*device_, cmd, image_.image(), VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
+          VK_IMAGE_LAYOUT_GENERAL, VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT,
+          kComputeStage, kStorageRead);
+  uploadFrame_ = frameIndex;
+}
+
+void HeroCloudAtlas::releaseStaging(std::uint64_t frameIndex, std::uint32_t framesInFlight) {
+  if (uploadFrame_ && staging_.size() > 0 && frameIndex >= *uploadFrame_ + framesInFlight) {
+    staging_ = OwnedBuffer();
+  }
+}
+
+}  // namespace clouds::detail

@@ -1,0 +1,72 @@
+#pragma once
+// Hero clouds on the GPU: the assets a host gave (Context::setHeroCloudAssets) packed into one
+// RGBA8 3D atlas, uploaded by the next frame's commands, and each frame's instances as the
+// march's uniform block (shader::HeroCloudUniforms, cloud_hero.h).
+//
+// The atlas is as wide and high as the widest and highest asset; the assets lie one after the
+// other along z. Its texels: R profile, G detail type, B density scale (the NVDF's unorm8
+// fields as they are) and A the signed distance at 8 bits, rounded down from the file's 16 so
+// that it stays a bound the march may jump by.
+#include <cstdint>
+#include <optional>
+#include <span>
+#include <vector>
+
+#include "cloud_types.h"
+#include "clouds/clouds.h"
+#include "clouds/nvdf.h"
+#include "kit.h"
+
+namespace clouds::detail {
+
+// The A channel's full scale, in voxels of its asset: the longest jump one lookup allows.
+inline constexpr float kHeroDistanceRangeVoxels = 16.0f;
+
+struct HeroAsset {
+  glm::uvec3 size{0u};
+  std::uint32_t firstSlice = 0;  // in the atlas
+  float voxelMetres = 0.0f;
+  glm::vec3 originMetres{0.0f};
+  float densityMultiplier = 1.0f;
+};
+
+struct HeroAtlasLayout {
+  VkExtent3D extent{0, 0, 0};
+  std::vector<HeroAsset> assets;
+  std::vector<std::uint8_t> texels;  // RGBA8, x fastest, then y, then z
+};
+
+// The A channel's code of a signed distance (m) whose full scale is `rangeMetres`: rounded
+// down, so the decoded distance (code - 128) / 127 x range never exceeds it.
+std::uint8_t heroDistanceCode(float metres, float rangeMetres);
+// The atlas of `assets` (each valid: validateNvdf()).
+HeroAtlasLayout packHeroAtlas(std::span<const NvdfVolume* const> assets);
+
+// This frame's instances as the march reads them: camera-relative, in double precision.
+shader::HeroCloudUniforms heroCloudUniforms(const std::vector<HeroAsset>& assets,
+                                            std::span<const HeroCloud> clouds,
+                                            const glm::dvec3& cameraPosition);
+
+// The atlas image and its upload.
+class HeroCloudAtlas {
+ public:
+  // Creates the image and a staging buffer holding its texels (the next frame copies them).
+  HeroCloudAtlas(const DeviceContext& device, HeroAtlasLayout layout);
+
+  const std::vector<HeroAsset>& assets() const { return assets_; }
+  const OwnedImage& image() const { return image_; }
+  // Records the copy into the image and its transition to GENERAL for the march's reads, once.
+  void recordUpload(VkCommandBuffer cmd, std::uint64_t frameIndex);
+  // Frees the staging buffer once the frame that copied it cannot be in flight any more.
+  void releaseStaging(std::uint64_t frameIndex, std::uint32_t framesInFlight);
+  VkDeviceSize bytes() const { return image_.bytes() + staging_.bytes(); }
+
+ private:
+  const DeviceContext* device_;
+  std::vector<HeroAsset> assets_;
+  OwnedImage image_;
+  OwnedBuffer staging_;
+  std::optional<std::uint64_t> uploadFrame_;
+};
+
+}  // namespace clouds::detail
