@@ -42,6 +42,10 @@ ParseResult parseOptions(int argc, char** argv) {
   cli.add_option("--scene", scene, "Scene JSON (default: assets_src/scenes/default.json)");
   std::string terrain;
   cli.add_option("--terrain", terrain, "Fly over this .gltf/.glb instead of the scene's terrain");
+  std::string heroCloud;
+  cli.add_option("--cloud", heroCloud,
+                 "Place this hero cloud (OpenVDB .vdb, world units as metres, or .nvdf) in front "
+                 "of the camera's start");
   std::string script;
   cli.add_option("--script", script, "Frame-indexed input/events script (JSON) for headless runs");
   cli.add_flag("--describe", options.describe,
@@ -72,6 +76,7 @@ ParseResult parseOptions(int argc, char** argv) {
   if (!captureDir.empty()) options.captureDir = captureDir;
   if (!scene.empty()) options.scene = scene;
   if (!terrain.empty()) options.terrain = terrain;
+  if (!heroCloud.empty()) options.heroCloud = heroCloud;
   if (!script.empty()) options.script = script;
   if (!soakReport.empty()) options.soakReport = soakReport;
   if (!quality.empty()) {

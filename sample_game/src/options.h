@@ -23,9 +23,10 @@ struct Options {
   bool validation = false;    // Vulkan validation layers (also CLOUDSCAPE_VALIDATION=1)
   std::string device;         // "cpu", "gpu" or a device-name substring
   bool vsync = true;
-  std::filesystem::path scene;                   // scene JSON; empty: the default scene
-  std::optional<std::filesystem::path> terrain;  // fly over this glTF instead of the scene's
-  std::optional<std::filesystem::path> script;   // frame-indexed input and events (headless)
+  std::filesystem::path scene;                     // scene JSON; empty: the default scene
+  std::optional<std::filesystem::path> terrain;    // fly over this glTF instead of the scene's
+  std::optional<std::filesystem::path> heroCloud;  // a user's cloud (.vdb, .nvdf), ahead
+  std::optional<std::filesystem::path> script;     // frame-indexed input and events (headless)
   bool describe = false;  // print the frame graph's passes and pipelines, exit
   bool hud = true;        // on-screen help and fps in windowed runs
   std::optional<clouds::Quality> cloudQuality;      // overrides the scene camera's preset

@@ -39,6 +39,7 @@ struct RunPlan {
   SceneDescription scene;
   std::optional<InputScript> script;
   std::optional<LoadedTerrain> terrain;
+  LoadedHeroClouds heroClouds;
 };
 
 // The display the run presents to: a window's swapchain, or an offscreen image.
@@ -109,6 +110,12 @@ RunPlan planRun(Options options) {
   }
   if (options.describe) options.frames = 1;
   plan.terrain = loadTerrain(plan.scene, CLOUDSCAPE_DEFAULT_TERRAIN, options.terrain);
+  // A user's cloud in a scene without clouds: a layer with none of its own to hold it.
+  if (options.heroCloud && !plan.scene.clouds) {
+    plan.scene.clouds = CloudDescription{};
+    plan.scene.clouds->settings.coverage = 0.0f;
+  }
+  plan.heroClouds = loadHeroClouds(plan.scene, CLOUDSCAPE_HERO_CLOUD_DIR, options.heroCloud);
   plan.options = std::move(options);
   return plan;
 }
@@ -338,7 +345,7 @@ int run(Options commandLine) {
     app.world().ctx().emplace<render::RenderDevice>(
         render::RenderDevice{&device, Renderer::kHdrFormat, Renderer::kDepthFormat,
                              gfx::FrameRing::kFramesInFlight, rendererOptions.maxExtent});
-    populateScene(app, plan.scene, plan.terrain);
+    populateScene(app, plan.scene, plan.terrain, plan.heroClouds);
     Renderer renderer(device, *presentation.target, app.world(), rendererOptions);
     app.scheduler().add(ecs::Phase::Render, "render frame",
                         [&renderer](ecs::World& world) { renderer.renderFrame(world); });

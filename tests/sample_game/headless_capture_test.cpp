@@ -12,12 +12,14 @@
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
+#include <fstream>
 #include <memory>
 #include <string>
 #include <utility>
 #include <vector>
 
 #include "engine/assets/image_io.h"
+#include "vdb_test_files.h"
 
 namespace {
 
@@ -243,6 +245,12 @@ TEST(HeadlessCapture, EachSceneGetsOnlyThePassesAndPipelinesItNeeds) {
        R"x("terrain (cloud shadows)", "terrain (cloud shadows) (lightning)", "terrain sunlight", )x"
        R"x("atmosphere module", "clouds module (shadow map, terrain shadow, god rays, lightning, )x"
        R"x(lightning bolts)"])x",
+       R"("modules": ["atmosphere", "clouds"])"},
+      // Hero clouds: the clouds module's hero march (and their atlas), no pass of their own.
+      {SAMPLE_ASSET_DIR + std::string("/scenes/hero_clouds.json"),
+       R"("passes": ["cloud shadows", "terrain sunlight", "atmosphere", "scene", "clouds", )"
+       R"("clouds composite", "tonemap", "capture"])",
+       R"x("atmosphere module", "clouds module (shadow map, terrain shadow, hero clouds)"])x",
        R"("modules": ["atmosphere", "clouds"])"},
       // A layer that casts no shadows: no shadow pass, the plain terrain.
       {scene("unshadowed_clouds.json"),
@@ -595,6 +603,44 @@ TEST(HeadlessCapture, FliesOverAUserSuppliedTerrain) {
                       " --capture " + dir.string()),
             0);
   EXPECT_TRUE(fs::exists(dir / "frame_0000.png"));
+}
+
+// A user's OpenVDB cloud (--cloud) stands in front of the camera's start: the frame's middle
+// holds it, where the same scene without it shows the sky. A missing or broken file is refused
+// naming it.
+TEST(HeadlessCapture, ShowsAUserSuppliedVdbCloudAhead) {
+  const fs::path dir = freshDir("user_cloud");
+  fs::create_directories(dir);
+  const fs::path vdb = dir / "puff.vdb";
+  // A ball of smoke 400 m across, in 10 m voxels.
+  vdb_test::write(vdb, {vdb_test::floatGrid("density", 10.0, {0.0, 0.0, 0.0}, openvdb::Coord(0),
+                                            openvdb::Coord(39), [](openvdb::Coord c) {
+                                              const double r = glm::length(
+                                                  glm::dvec3(c.x(), c.y(), c.z()) - 19.5);
+                                              return float(std::clamp(1.0 - r / 18.0, 0.0, 1.0));
+                                            })});
+  const std::string common = "--headless --frames 3 --width 96 --height 54 --validation --scene " +
+                             scene("clouds_only.json") + " --capture ";
+  ASSERT_EQ(runSample(common + (dir / "sky").string()), 0);
+  ASSERT_EQ(runSample(common + (dir / "cloud").string() + " --cloud " + vdb.string()), 0);
+  const ImageRgba32f sky = engine::assets::readImage(dir / "sky" / "frame_0002.exr");
+  const ImageRgba32f cloud = engine::assets::readImage(dir / "cloud" / "frame_0002.exr");
+  ASSERT_EQ(sky.pixels.size(), cloud.pixels.size());
+  const float* a = sky.at(48, 27);
+  const float* b = cloud.at(48, 27);
+  const float skyMiddle = a[0] + a[1] + a[2];
+  const float cloudMiddle = b[0] + b[1] + b[2];
+  std::printf("the frame's middle: sky %.3g, cloud %.3g\n", skyMiddle, cloudMiddle);
+  EXPECT_GT(std::abs(cloudMiddle - skyMiddle), 0.2f * skyMiddle);
+
+  EXPECT_NE(runSampleErrors("--headless --frames 1 --cloud /no/such/cloud.vdb")
+                .find("/no/such/cloud.vdb: no such file"),
+            std::string::npos);
+  const fs::path broken = dir / "broken.vdb";
+  std::ofstream(broken) << "not a volume";
+  EXPECT_NE(runSampleErrors("--headless --frames 1 --cloud " + broken.string())
+                .find(broken.string() + ": not a readable OpenVDB file"),
+            std::string::npos);
 }
 
 TEST(HeadlessCapture, BadArgumentsAndScenesFailWithAMessage) {

@@ -147,6 +147,21 @@ TEST(Scenes, AStormsCellsComeFromTheWeatherOrTheScene) {
   EXPECT_EQ(given.lightning->storm.cells[0].positionMetres, glm::dvec3(1, 2000, 3));
 }
 
+TEST(Scenes, HeroCloudsArriveInTheDescription) {
+  const sample::SceneDescription s = loadSceneDescription(writeScene("hero.json", R"({
+    "name": "x", "camera": {"position": [0, 1, 0]},
+    "clouds": {"heroClouds": [
+      {"asset": "towering_cumulus", "positionMetres": [10, 20, 30], "scale": 2, "yawDegrees": 45}]}
+  })"));
+  ASSERT_TRUE(s.clouds);
+  ASSERT_EQ(s.clouds->heroClouds.size(), 1u);
+  const sample::HeroCloudDescription& h = s.clouds->heroClouds[0];
+  EXPECT_EQ(h.shipped, "towering_cumulus");
+  EXPECT_EQ(h.positionMetres, glm::dvec3(10, 20, 30));
+  EXPECT_EQ(h.scale, 2.0);
+  EXPECT_EQ(h.yawDegrees, 45.0);
+}
+
 TEST(Scenes, MalformedScenesNameFilePathAndReason) {
   struct Case {
     const char* file;
@@ -228,6 +243,23 @@ TEST(Scenes, MalformedScenesNameFilePathAndReason) {
        R"({"name": "x", "camera": {"position": [0, 1, 0]}, "clouds": {},
            "lightning": {"cells": [{"position": [0, 2000, 0]}], "groundAltitudeMetres": 1e6}})",
        "lightning.groundAltitudeMetres: must be in [-1000, 10000], got 1e+06"},
+      {"hero_unknown.json",
+       R"({"name": "x", "camera": {"position": [0, 1, 0]},
+           "clouds": {"heroClouds": [{"asset": "nowhere.vdb", "positionMetres": [0, 0, 0]}]}})",
+       "clouds.heroClouds[0].asset: file not found"},
+      {"hero_extension.json",
+       R"({"name": "x", "camera": {"position": [0, 1, 0]},
+           "clouds": {"heroClouds": [{"asset": "hero_extension.json", "positionMetres": [0, 0, 0]}]}})",
+       "clouds.heroClouds[0].asset: a shipped cloud (towering_cumulus, cumulonimbus, arch) or an "
+       ".nvdf or .vdb file"},
+      {"hero_scale.json",
+       R"({"name": "x", "camera": {"position": [0, 1, 0]},
+           "clouds": {"heroClouds": [{"asset": "arch", "positionMetres": [0, 0, 0], "scale": 0}]}})",
+       "clouds.heroClouds[0].scale: must be in [0.01, 100], got 0"},
+      {"hero_position.json",
+       R"({"name": "x", "camera": {"position": [0, 1, 0]},
+           "clouds": {"heroClouds": [{"asset": "arch"}]}})",
+       "clouds.heroClouds[0].positionMetres: is required"},
       {"atmospherequality.json",
        R"({"name": "x", "camera": {"position": [0, 1, 0], "atmosphereQuality": "ultra"}})",
        "camera.atmosphereQuality: must be one of low, medium, high, reference"},

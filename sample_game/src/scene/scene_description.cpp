@@ -60,6 +60,29 @@ TerrainDescription readTerrain(const JsonReader& r, const std::filesystem::path&
   return t;
 }
 
+HeroCloudDescription readHeroCloud(const JsonReader& r, const std::filesystem::path& sceneDir) {
+  HeroCloudDescription h;
+  const std::string asset = r.string("asset");
+  for (const char* name : kShippedHeroClouds) {
+    if (asset == name) h.shipped = asset;
+  }
+  if (h.shipped.empty()) {
+    h.file = resolveFile(r, "asset", sceneDir);
+    const std::string extension = h.file.extension().string();
+    if (extension != ".nvdf" && extension != ".vdb") {
+      r.fail("asset",
+             "a shipped cloud (towering_cumulus, cumulonimbus, arch) or an .nvdf or "
+             ".vdb file, got " +
+                 asset);
+    }
+  }
+  h.positionMetres = r.vec3("positionMetres", -1e7, 1e7);
+  h.scale = r.number("scale", 0.01, 100.0, h.scale);
+  h.yawDegrees = r.number("yawDegrees", -360.0, 360.0, h.yawDegrees);
+  r.finish();
+  return h;
+}
+
 CloudDescription readClouds(const JsonReader& r, const std::filesystem::path& sceneDir) {
   CloudDescription c;
   clouds::Settings& s = c.settings;
@@ -111,6 +134,12 @@ CloudDescription readClouds(const JsonReader& r, const std::filesystem::path& sc
   if (r.boolean("godRays", false)) s.godRaySamples = 16;
   c.noiseSeed = static_cast<std::uint32_t>(r.integer("noiseSeed", 0, 0xffffffffLL, c.noiseSeed));
   if (r.has("weatherMap")) c.weatherMap = resolveFile(r, "weatherMap", sceneDir);
+  if (r.has("heroClouds")) {
+    for (const JsonReader& hero : r.objects("heroClouds")) {
+      c.heroClouds.push_back(readHeroCloud(hero, sceneDir));
+    }
+    if (c.heroClouds.size() > 64) r.fail("heroClouds", "at most 64 hero clouds");
+  }
   r.finish();
   // Cross-field rules (layer top above bottom, ...) are the module's; report them here too.
   if (const std::string problem = clouds::validateSettings(s); !problem.empty()) {

@@ -4,6 +4,7 @@
 #include <filesystem>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include <glm/glm.hpp>
 
@@ -45,10 +46,23 @@ struct TerrainDescription {
   std::optional<double> snowlineMetres;
 };
 
+// A hero cloud (the clouds module's voxel clouds) the scene places.
+struct HeroCloudDescription {
+  // A shipped cloud by name (kShippedHeroClouds: baked by assets_src/hero_clouds), or else an
+  // .nvdf or OpenVDB (.vdb) file, relative to the scene file.
+  std::string shipped;
+  std::filesystem::path file;
+  glm::dvec3 positionMetres{0.0};  // world position of the cloud's own origin
+  double scale = 1.0;              // [0.01, 100]
+  double yawDegrees = 0.0;         // a turn about the vertical
+};
+inline constexpr const char* kShippedHeroClouds[] = {"towering_cumulus", "cumulonimbus", "arch"};
+
 struct CloudDescription {
   clouds::Settings settings;
   std::uint32_t noiseSeed = 1;
   std::optional<std::filesystem::path> weatherMap;  // painted map (PNG), relative to the scene
+  std::vector<HeroCloudDescription> heroClouds;     // at most 64
 };
 
 // The physical sky and haze (the atmosphere module): a named preset ("earth", "hazy") with

@@ -8,6 +8,8 @@
 #include "clouds/ecs/cloud_components.h"
 #include "clouds/ecs/clouds_module.h"
 #include "clouds/ecs/lightning.h"
+#include "clouds/vdb_import.h"
+#include "engine/core/error.h"
 #include "engine/core/log.h"
 #include "engine/ecs/frame_time.h"
 #include "engine/platform/input.h"
@@ -33,7 +35,74 @@ glm::dquat orientationFrom(double yawDegrees, double pitchDegrees) {
          glm::angleAxis(glm::radians(pitchDegrees), glm::dvec3(1, 0, 0));
 }
 
+// A hero cloud's asset: an OpenVDB file imported (its warnings logged), or an NVDF read.
+std::shared_ptr<const clouds::NvdfVolume> loadHeroAsset(const std::filesystem::path& path) {
+  clouds::Error error;
+  std::optional<clouds::NvdfVolume> volume;
+  if (path.extension() == ".vdb") {
+    clouds::VdbImportReport report;
+    volume = clouds::importVdb(path, {}, &report, &error);
+    for (const std::string& warning : report.warnings) engine::log::warning(warning);
+  } else {
+    volume = clouds::readNvdf(path, &error);
+  }
+  if (!volume) throw engine::Error(error.message);
+  char line[160];
+  std::snprintf(line, sizeof(line), ": %ux%ux%u voxels of %g m, %.1f MiB on the GPU",
+                volume->size.x, volume->size.y, volume->size.z, double(volume->voxelMetres),
+                double(volume->deviceBytes()) / (1024.0 * 1024.0));
+  engine::log::info("hero cloud " + path.string() + line);
+  return std::make_shared<const clouds::NvdfVolume>(std::move(*volume));
+}
+
+// Where a user's cloud goes: its middle on the camera's line of sight, far enough ahead that
+// the whole cloud is in front of the camera.
+clouds::HeroCloud inFrontOfTheCamera(const clouds::NvdfVolume& volume,
+                                     const CameraDescription& camera) {
+  const glm::dvec3 lo(volume.boundsMinMetres());
+  const glm::dvec3 hi(volume.boundsMaxMetres());
+  const double radius = 0.5 * glm::length(hi - lo);
+  const glm::dvec3 forward =
+      orientationFrom(camera.yawDegrees, camera.pitchDegrees) * glm::dvec3(0.0, 0.0, -1.0);
+  clouds::HeroCloud cloud;
+  cloud.positionMetres = camera.position + forward * (1.5 * radius + 100.0) - 0.5 * (lo + hi);
+  return cloud;
+}
+
 }  // namespace
+
+LoadedHeroClouds loadHeroClouds(const SceneDescription& scene,
+                                const std::filesystem::path& shippedDir,
+                                const std::optional<std::filesystem::path>& userCloud) {
+  LoadedHeroClouds loaded;
+  std::vector<std::filesystem::path> paths;  // of loaded.assets: one load per file
+  const auto assetIndex = [&](const std::filesystem::path& path) {
+    for (std::size_t i = 0; i < paths.size(); ++i) {
+      if (paths[i] == path) return static_cast<std::uint32_t>(i);
+    }
+    loaded.assets.push_back(loadHeroAsset(path));
+    paths.push_back(path);
+    return static_cast<std::uint32_t>(paths.size() - 1);
+  };
+  if (scene.clouds) {
+    for (const HeroCloudDescription& hero : scene.clouds->heroClouds) {
+      clouds::HeroCloud cloud;
+      cloud.asset =
+          assetIndex(hero.shipped.empty() ? hero.file : shippedDir / (hero.shipped + ".nvdf"));
+      cloud.positionMetres = hero.positionMetres;
+      cloud.scale = static_cast<float>(hero.scale);
+      cloud.yawRadians = static_cast<float>(glm::radians(hero.yawDegrees));
+      loaded.placements.push_back(cloud);
+    }
+  }
+  if (userCloud) {
+    const std::uint32_t asset = assetIndex(*userCloud);
+    clouds::HeroCloud cloud = inFrontOfTheCamera(*loaded.assets[asset], scene.camera);
+    cloud.asset = asset;
+    loaded.placements.push_back(cloud);
+  }
+  return loaded;
+}
 
 std::optional<LoadedTerrain> loadTerrain(
     const SceneDescription& scene, const std::filesystem::path& defaultTerrain,
@@ -52,7 +121,8 @@ std::optional<LoadedTerrain> loadTerrain(
 }
 
 void populateScene(ecs::App& app, const SceneDescription& scene,
-                   const std::optional<LoadedTerrain>& terrain) {
+                   const std::optional<LoadedTerrain>& terrain,
+                   const LoadedHeroClouds& heroClouds) {
   ecs::World& world = app.world();
   world.ctx().emplaceOrReplace<ecs::FrameTime>();
   world.ctx().emplaceOrReplace<platform::InputState>();
@@ -132,7 +202,11 @@ void populateScene(ecs::App& app, const SceneDescription& scene,
     const ecs::Entity layer = world.create();
     world.emplace<clouds::ecs::CloudLayer>(
         layer, clouds::ecs::CloudLayer{scene.clouds->settings, scene.clouds->noiseSeed,
-                                       scene.clouds->weatherMap});
+                                       scene.clouds->weatherMap, heroClouds.assets});
+    // Hero clouds, as data: each an entity placing one of the layer's assets.
+    for (const clouds::HeroCloud& cloud : heroClouds.placements) {
+      world.emplace<clouds::HeroCloud>(world.create(), cloud);
+    }
     // A storm, as data: the clouds module adds its lightning system only when this exists.
     if (scene.lightning) {
       world.emplace<clouds::ecs::LightningStorm>(world.create(), scene.lightning->storm);

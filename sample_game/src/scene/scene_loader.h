@@ -11,6 +11,8 @@
 #include <filesystem>
 #include <memory>
 
+#include "clouds/clouds.h"
+#include "clouds/nvdf.h"
 #include "engine/assets/gltf_loader.h"
 #include "engine/ecs/app.h"
 #include "scene/scene_description.h"
@@ -37,7 +39,21 @@ std::optional<LoadedTerrain> loadTerrain(
     const SceneDescription& scene, const std::filesystem::path& defaultTerrain,
     const std::optional<std::filesystem::path>& terrainOverride);
 
+// The hero clouds' assets, read and checked, and where the scene places them.
+struct LoadedHeroClouds {
+  std::vector<std::shared_ptr<const clouds::NvdfVolume>> assets;
+  std::vector<clouds::HeroCloud> placements;  // `asset` indexes `assets`
+};
+
+// The scene's hero clouds (shipped ones from `shippedDir`, the baked assets_src/hero_clouds)
+// and `userCloud` (the --cloud option: an .nvdf or OpenVDB file), placed in front of the
+// camera's start. Throws engine::Error naming the file and the problem.
+LoadedHeroClouds loadHeroClouds(const SceneDescription& scene,
+                                const std::filesystem::path& shippedDir,
+                                const std::optional<std::filesystem::path>& userCloud);
+
 void populateScene(engine::ecs::App& app, const SceneDescription& scene,
-                   const std::optional<LoadedTerrain>& terrain);
+                   const std::optional<LoadedTerrain>& terrain,
+                   const LoadedHeroClouds& heroClouds = {});
 
 }  // namespace sample

@@ -90,6 +90,14 @@ CloudFeature::CloudFeature(engine::ecs::World& world, const RenderDevice& device
     throw engine::ecs::ModuleUnsupported("the clouds module cannot run on this device: " +
                                          error.message + " (" + errorCodeName(error.code) + ")");
   }
+  // The scene checked its assets when it loaded: what fails here is the device (memory).
+  std::vector<const clouds::NvdfVolume*> heroAssets;
+  for (const auto& asset : layer.heroCloudAssets) heroAssets.push_back(asset.get());
+  hasHeroClouds_ = !heroAssets.empty();
+  if (hasHeroClouds_ && !context_->setHeroCloudAssets(heroAssets, &error)) {
+    throw engine::ecs::ModuleUnsupported("the clouds module cannot load the hero clouds: " +
+                                         error.message + " (" + errorCodeName(error.code) + ")");
+  }
 }
 
 CloudFeature::~CloudFeature() {
@@ -152,6 +160,10 @@ void CloudFeature::dispatch(const HostFrame& host) {
   inputs.lightningFlashes = flashes_;
   bolts_ = lightningBolts(world_, settings_.lightningBoltSegments);
   inputs.lightningBolts = bolts_;
+  if (hasHeroClouds_) {
+    heroClouds_ = heroClouds(world_, inputs.cameraPosition, clouds::kMaxHeroClouds);
+    inputs.heroClouds = heroClouds_;
+  }
   dispatched_ = context_->dispatch(inputs, settings_, &error);
   if (dispatched_) {
     world_.ctx().get<CloudStatus>().lastError.clear();
@@ -171,6 +183,7 @@ std::vector<std::string> CloudFeature::effects() const {
   if (settings_.godRaySamples > 0) names.emplace_back("god rays");
   if (settings_.lightningFlashes > 0) names.emplace_back("lightning");
   if (settings_.lightningBoltSegments > 0) names.emplace_back("lightning bolts");
+  if (hasHeroClouds_) names.emplace_back("hero clouds");
   return names;
 }
 

@@ -65,7 +65,9 @@ class CloudFeature final : public engine::render::RenderFeature {
   clouds::Settings settings_;                        // this frame's, decided in prepare()
   std::vector<clouds::LightningFlash> flashes_;      // this frame's (FrameInputs points at them)
   std::vector<clouds::LightningBoltSegment> bolts_;  // likewise
-  clouds::Outputs imported_;                         // the outputs the graph imported
+  std::vector<clouds::HeroCloud> heroClouds_;        // likewise
+  bool hasHeroClouds_ = false;  // the layer has hero cloud assets (loaded into the context)
+  clouds::Outputs imported_;    // the outputs the graph imported
   // The outputs the graph may import: none after a failed prepare(), whose outputs may be
   // missing or not yet in their layout.
   clouds::Outputs usableOutputs() const;

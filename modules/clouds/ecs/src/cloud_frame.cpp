@@ -54,6 +54,23 @@ std::vector<clouds::LightningFlash> lightningFlashes(engine::ecs::World& world,
   return flashes;
 }
 
+std::vector<clouds::HeroCloud> heroClouds(engine::ecs::World& world,
+                                          const glm::dvec3& cameraPosition,
+                                          std::uint32_t capacity) {
+  std::vector<clouds::HeroCloud> clouds;
+  world.view<const clouds::HeroCloud>().each(
+      [&](const clouds::HeroCloud& cloud) { clouds.push_back(cloud); });
+  const auto distance = [&](const clouds::HeroCloud& c) {
+    return glm::length(c.positionMetres - cameraPosition);
+  };
+  std::stable_sort(clouds.begin(), clouds.end(),
+                   [&](const clouds::HeroCloud& a, const clouds::HeroCloud& b) {
+                     return distance(a) < distance(b);
+                   });
+  if (clouds.size() > capacity) clouds.resize(capacity);
+  return clouds;
+}
+
 std::vector<clouds::LightningBoltSegment> lightningBolts(engine::ecs::World& world,
                                                          std::uint32_t capacity) {
   std::vector<clouds::LightningBoltSegment> pieces;

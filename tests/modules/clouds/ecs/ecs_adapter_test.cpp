@@ -37,6 +37,30 @@ clouds::ecs::HostFrame hostFrame() {
   return host;
 }
 
+// Each frame draws the hero clouds nearest the camera, as many as the module takes.
+TEST(CloudsEcsAdapter, TheNearestHeroCloudsAreDrawn) {
+  AdapterWorld w;
+  for (int i = 0; i < 12; ++i) {
+    clouds::HeroCloud cloud;
+    cloud.asset = static_cast<std::uint32_t>(i);
+    // Alternately far and near, so the order of creation is not the order of distance.
+    cloud.positionMetres = {(i % 2 == 0 ? 1000.0 : -100.0) * (i + 1), 2000.0, 0.0};
+    w.world.emplace<clouds::HeroCloud>(w.world.create(), cloud);
+  }
+  const glm::dvec3 camera(0.0, 2000.0, 0.0);
+  const std::vector<clouds::HeroCloud> drawn =
+      clouds::ecs::heroClouds(w.world, camera, clouds::kMaxHeroClouds);
+  ASSERT_EQ(drawn.size(), clouds::kMaxHeroClouds);
+  for (std::size_t i = 1; i < drawn.size(); ++i) {
+    EXPECT_LE(glm::length(drawn[i - 1].positionMetres - camera),
+              glm::length(drawn[i].positionMetres - camera));
+  }
+  // The six near ones (odd, 100-1200 m) and the two nearest far ones (1 and 3 km).
+  EXPECT_EQ(drawn.front().asset, 1u);
+  EXPECT_EQ(drawn.back().positionMetres.x, 3000.0);
+  EXPECT_TRUE(clouds::ecs::heroClouds(w.world, camera, 0).empty());
+}
+
 TEST(CloudsEcsAdapter, TheCamerasPresetDecidesTheSettings) {
   AdapterWorld w;
   clouds::Settings settings = clouds::ecs::cloudSettings(w.world);

@@ -3,11 +3,13 @@
 // pipelines and passes); a scene without one gets none of it.
 #include <cstdint>
 #include <filesystem>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
 
 #include "clouds/clouds.h"
+#include "clouds/nvdf.h"
 
 namespace clouds::ecs {
 
@@ -15,6 +17,10 @@ struct CloudLayer {
   clouds::Settings settings;
   std::uint32_t noiseSeed = 1;
   std::optional<std::filesystem::path> weatherMap;  // painted weather (PNG), else procedural
+  // The hero clouds' assets, read and validated when the scene loaded. Entities with a
+  // clouds::HeroCloud component place them (its `asset` indexes this list); each frame draws
+  // the kMaxHeroClouds nearest the camera. None: the module loads no atlas and runs no hero march.
+  std::vector<std::shared_ptr<const clouds::NvdfVolume>> heroCloudAssets;
 };
 
 // On a camera entity: the quality preset its clouds render with, settingsFor(preset) over the

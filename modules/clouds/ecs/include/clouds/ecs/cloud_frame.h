@@ -56,6 +56,11 @@ inline constexpr std::uint32_t kLightningBoltSegments = 128;
 std::vector<clouds::LightningBoltSegment> lightningBolts(engine::ecs::World& world,
                                                          std::uint32_t capacity);
 
+// The hero clouds this frame draws: the entities with a clouds::HeroCloud, the `capacity`
+// nearest to `cameraPosition` (world metres), nearest first.
+std::vector<clouds::HeroCloud> heroClouds(engine::ecs::World& world,
+                                          const glm::dvec3& cameraPosition, std::uint32_t capacity);
+
 // This frame's inputs. The module remembers the previous camera itself. The sun reaching the
 // clouds is the Sun through the world's SunTransmittance at the layer's middle altitude (the
 // atmosphere's, when the scene has one: sunset clouds are lit by the sun its air reddens); their
