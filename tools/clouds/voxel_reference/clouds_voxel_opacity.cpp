@@ -1,6 +1,8 @@
 // clouds_voxel_opacity: the opacity (1 - transmittance, absorption only) of a hero cloud from
-// an OpenVDB or NVDF file, as the CPU reference integrates it exactly, written as an EXR (the
-// opacity in R, G, B and A). Its camera and units follow OpenVDB's vdb_render, so that
+// an OpenVDB or NVDF file, written as an EXR (the opacity in R, G, B and A): as the CPU
+// reference integrates it exactly, or with --gpu as the clouds module's march draws it (a hero
+// cloud, one frame, every pixel marched, nothing scattered). Its camera and units follow
+// OpenVDB's vdb_render, so that
 //   vdb_render cloud.vdb out.exr -res WxH -fov F -translate X,Y,Z -lookat X,Y,Z
 //              -absorb K,K,K -scatter 0,0,0 -cutoff 0 -step 0.1
 // with K = PER_METRE x the voxel size (vdb_render's coefficients are per voxel length) gives the
@@ -9,9 +11,14 @@
 #include <engine/assets/image_io.h>
 #include <CLI/CLI.hpp>
 
+#include <cmath>
 #include <cstdio>
+#include <numbers>
 #include <optional>
 
+#include "cloud_harness.h"
+#include "engine/gfx/device.h"
+#include "engine/gfx/instance.h"
 #include "nvdf_sampler.h"
 #include "voxel_opacity.h"
 
@@ -33,6 +40,54 @@ bool parseSize(const std::string& text, glm::uvec2& out) {
   if (std::sscanf(text.c_str(), "%ux%u%c", &w, &h, &tail) != 2) return false;
   out = glm::uvec2(w, h);
   return w >= 1 && h >= 1 && w <= 8192 && h <= 8192;
+}
+
+// The module's march on the device: the hero cloud alone (a layer of no coverage) at the
+// camera, one frame of every pixel marched to its end (no early exit), absorption only; the
+// opacity is one less the transmittance output. Validation on: any message fails the run.
+// Returns the opacity per pixel, row 0 at the top; empty (and the reason on stderr) on failure.
+std::vector<float> gpuOpacity(const clouds::NvdfVolume& volume,
+                              const clouds::reference::PinholeCamera& camera,
+                              double extinctionPerMetre) {
+  engine::gfx::InstanceDesc instanceDesc;
+  instanceDesc.validation = true;
+  engine::gfx::Instance instance(instanceDesc);
+  engine::gfx::Device device(instance, engine::gfx::DeviceDesc{});
+  const VkExtent2D extent{camera.size.x, camera.size.y};
+  clouds::tools::CloudHarness harness(device, extent);
+  const clouds::NvdfVolume* assets[] = {&volume};
+  clouds::Error error;
+  if (!harness.context().setHeroCloudAssets(assets, &error)) {
+    std::fprintf(stderr, "clouds_voxel_opacity: %s\n", error.message.c_str());
+    return {};
+  }
+  // The harness's camera: yaw 0 looks along -z, counter-clockwise from above; its field of
+  // view is vertical.
+  const glm::dvec3 forward = glm::normalize(camera.lookAt - camera.position);
+  clouds::tools::CloudView view;
+  view.position = camera.position;
+  view.yawDegrees = glm::degrees(std::atan2(-forward.x, -forward.z));
+  view.pitchDegrees = glm::degrees(std::asin(forward.y));
+  const double halfWidth = std::tan(camera.fovDegrees * std::numbers::pi / 360.0);
+  view.verticalFovDegrees = float(
+      glm::degrees(2.0 * std::atan(halfWidth * double(camera.size.y) / double(camera.size.x))));
+  view.heroClouds.push_back(clouds::HeroCloud{});
+  clouds::Settings settings = clouds::tools::singleFrame(clouds::Settings{});
+  settings.coverage = 0.0f;
+  settings.albedo = 0.0f;
+  settings.extinctionPerMetre = float(extinctionPerMetre);
+  settings.densityMultiplier = 1.0f;
+  settings.transmittanceCutoff = 0.0f;
+  settings.maxDistanceMetres = 1e7f;
+  const clouds::tools::CloudFrame frame = harness.render(view, settings, extent);
+  if (instance.validationMessageCount() > 0) {
+    std::fprintf(stderr, "clouds_voxel_opacity: %u Vulkan validation message(s)\n",
+                 instance.validationMessageCount());
+    return {};
+  }
+  std::vector<float> opacity;
+  for (const glm::vec4& p : frame.radiance) opacity.push_back(1.0f - p.a);
+  return opacity;
 }
 
 }  // namespace
@@ -61,6 +116,10 @@ int main(int argc, char** argv) {
   cli.add_option("--extinction", extinctionPerMetre, "Extinction per metre per unit of density")
       ->check(CLI::Range(0.0, 1e6));
   cli.add_option("--opacity", output, "Output EXR")->required();
+  bool gpu = false;
+  cli.add_flag("--gpu", gpu,
+               "Draw it with the clouds module's march on the Vulkan device (lavapipe by "
+               "default), under validation, instead of the exact CPU integral");
   CLI11_PARSE(cli, argc, argv);
 
   clouds::reference::PinholeCamera camera;
@@ -91,9 +150,18 @@ int main(int argc, char** argv) {
     return 1;
   }
 
-  const clouds::reference::NvdfSampler cloud(*volume);
-  const std::vector<float> opacity =
-      clouds::reference::opacityImage(cloud, camera, extinctionPerMetre);
+  std::vector<float> opacity;
+  if (gpu) {
+    try {
+      opacity = gpuOpacity(*volume, camera, extinctionPerMetre);
+    } catch (const std::exception& e) {
+      std::fprintf(stderr, "clouds_voxel_opacity: %s\n", e.what());
+    }
+    if (opacity.empty()) return 1;
+  } else {
+    opacity = clouds::reference::opacityImage(clouds::reference::NvdfSampler(*volume), camera,
+                                              extinctionPerMetre);
+  }
   engine::assets::ImageRgba32f image;
   image.width = camera.size.x;
   image.height = camera.size.y;

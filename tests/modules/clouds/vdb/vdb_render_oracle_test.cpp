@@ -1,6 +1,7 @@
-// The outside oracle: OpenVDB's own renderer (vdb_render, absorption only) and the module's
-// import + CPU reference (clouds_voxel_opacity) draw the same cloud's opacity from the same
-// cameras; they must agree within 0.01 mean absolute difference. Both commands run as a user
+// The outside oracle: OpenVDB's own renderer (vdb_render, absorption only), the module's import
+// with the CPU reference (clouds_voxel_opacity) and with the module's march on the device
+// (clouds_voxel_opacity --gpu) draw the same cloud's opacity from the same cameras; they must
+// agree within 0.01 mean absolute difference. Both commands run as a user
 // would run them, and a wrong convention (extinction per voxel instead of per metre, the cloud
 // half a voxel off) shows as a larger difference.
 #include <gtest/gtest.h>
@@ -103,13 +104,25 @@ TEST_F(VdbRenderOracle, OpacityMatchesOpenVdbsRenderer) {
             view.position + " --look-at " + view.lookAt + " --fov-degrees " + fov + " --size " +
             kSize + " --extinction " + std::to_string(kExtinction) + " --opacity " + ours.string()),
         0);
+    // The module's own march, on the device.
+    const fs::path marched = folder_ / (std::string(view.name) + "_march.exr");
+    ASSERT_EQ(run(std::string(VOXEL_OPACITY) + " --gpu --vdb " + vdb.string() +
+                  " --camera-position " + view.position + " --look-at " + view.lookAt +
+                  " --fov-degrees " + fov + " --size " + kSize + " --extinction " +
+                  std::to_string(kExtinction) + " --opacity " + marched.string() + " 2>&1"),
+              0);
     const std::vector<float> reference = alphaOf(theirs);
     const std::vector<float> mine = alphaOf(ours);
+    const std::vector<float> march = alphaOf(marched);
     const double difference = meanAbsoluteDifference(mine, reference);
-    std::printf("%s: mean opacity %.3f (vdb_render %.3f), mean |difference| %.4f\n", view.name,
-                mean(mine), mean(reference), difference);
+    const double marchDifference = meanAbsoluteDifference(march, reference);
+    std::printf(
+        "%s: mean opacity %.3f (vdb_render %.3f), mean |difference| %.4f; the march's "
+        "%.4f\n",
+        view.name, mean(mine), mean(reference), difference, marchDifference);
     EXPECT_GT(mean(reference), 0.1);  // the cloud fills a good part of the picture
     EXPECT_LT(difference, 0.01);
+    EXPECT_LT(marchDifference, 0.01);
 
     // Negative controls, drawn in process with the same camera: each wrong convention is seen.
     clouds::reference::PinholeCamera camera;
