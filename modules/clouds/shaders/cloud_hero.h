@@ -96,15 +96,15 @@ FX_INLINE HeroSample heroField(vec3 relative, IN(CloudUniforms) u) {
   return s;
 }
 
-// Where the ray from the camera along the unit `direction` crosses hero clouds' boxes: x the
-// first entry, y the last exit (m; x >= y when it meets none), z the smallest voxel (m) of the
-// clouds it meets.
-FX_INLINE vec3 heroRaySpan(vec3 direction) {
+// Where the ray from the camera-relative point `from` along the unit `direction` crosses hero
+// clouds' boxes, at distances of at least `nearest` (m): x the first entry, y the last exit
+// (x >= y when it meets none), z the smallest voxel (m) of the clouds it meets.
+FX_INLINE vec3 heroRaySpan(vec3 from, vec3 direction, float nearest) {
   vec3 span = vec3(kHeroFar, -kHeroFar, kHeroFar);
   const uint count = heroCloudCount();
   for (uint i = 0u; i < count; ++i) {
     const HeroCloudInstance h = heroCloud(i);
-    const vec3 origin = vec3(h.toIndex[0].w, h.toIndex[1].w, h.toIndex[2].w);
+    const vec3 origin = heroIndex(h, from);
     vec3 d = vec3(dot(vec3(h.toIndex[0]), direction), dot(vec3(h.toIndex[1]), direction),
                   dot(vec3(h.toIndex[2]), direction));
     // A ray parallel to a face: a tiny slope keeps the slab test finite (it then spans +-1e30).
@@ -113,7 +113,7 @@ FX_INLINE vec3 heroRaySpan(vec3 direction) {
     const vec3 b = (vec3(h.extent) - origin) / d;
     const vec3 near = min(a, b);
     const vec3 far = max(a, b);
-    const float enter = max(max(near.x, near.y), max(near.z, 0.0f));
+    const float enter = max(max(near.x, near.y), max(near.z, nearest));
     const float exit = min(min(far.x, far.y), far.z);
     if (enter < exit) {
       span.x = min(span.x, enter);

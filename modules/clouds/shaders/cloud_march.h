@@ -392,7 +392,7 @@ FX_INLINE MarchResult marchClouds(vec3 rayDirection, float sceneDistance, float 
   // Hero clouds extend the march to their boxes, beyond the layer where they stand out of it.
   vec3 heroSpan = vec3(kHeroFar, -kHeroFar, kHeroFar);
   CLOUDS_WHEN(heroCloudCount() > 0u) {
-    heroSpan = heroRaySpan(rayDirection);
+    heroSpan = heroRaySpan(vec3(0.0f), rayDirection, 0.0f);
   }
   const bool layerHit = segment.y > segment.x;
   const bool heroHit = heroSpan.y > heroSpan.x;

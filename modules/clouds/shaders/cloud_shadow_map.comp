@@ -5,7 +5,8 @@
 // depth, highest and lowest cloud altitude; the terrain channel kept or emptied
 // (terrain_shadow_map.comp writes it).
 // Inputs: binding 0 CloudUniforms (this frame's field: camera-relative offsets, coverage,
-// extinction); 1 shape noise; 2 weather map; 3-4 weather maxima (empty-space skipping); push
+// extinction); 1 shape noise; 2 weather map; 3-4 weather maxima (empty-space skipping); with
+// hero clouds, 7-8 their atlas and instances (cloud_hero.h); push
 // constants ShadowMapConstants (the cascade's placement and the rows made). Output: 5 the
 // cascade atlas (its square for this cascade) or, for a cascade made over several frames, 6 the
 // spare cascade (copied into the atlas after its last rows are made).
@@ -18,6 +19,7 @@
 layout(local_size_x = kWorkgroupSize2D, local_size_y = kWorkgroupSize2D) in;
 
 layout(constant_id = kSpecShadowEmptySpace) const uint kEmptySpace = 1u;
+layout(constant_id = kSpecShadowHeroClouds) const uint kHeroClouds = 0u;
 
 // Its push constants (ShadowMapConstants, inside TerrainShadowConstants' 128 bytes) have no
 // spare word for frame_uniforms.glsl's index, so this pass keeps the lane-by-lane loads. Making
@@ -42,13 +44,16 @@ vec4 fetchWeatherMaxCoarse(ivec2 texel) { return imageLoad(weatherMaxCoarse, tex
 vec4 fetchDetailNoise(ivec3 texel) { return vec4(0.0f); }
 vec4 fetchCurl(ivec2 texel) { return vec4(0.5f); }
 float terrainSunLight(vec3 flatOffset, float altitude) { return 1.0f; }
-// Hero clouds do not cast into the shadow map yet (the layer alone does).
-uint heroCloudCount() { return 0u; }
-HeroCloudInstance heroCloud(uint index) {
-  const vec4 zero = vec4(0.0f);
-  return HeroCloudInstance(vec4[3](zero, zero, zero), zero, zero);
+// Hero clouds (read only by the kSpecShadowHeroClouds variant), indexed as the uniforms are.
+layout(binding = kShadowHeroAtlas, rgba8) uniform readonly image3D heroAtlas;
+layout(binding = kShadowHeroClouds, std140) uniform HeroClouds { HeroCloudUniforms heroClouds[1]; };
+uint heroCloudCount() {
+  return kHeroClouds != 0u ? heroClouds[CLOUDS_FRAME_UNIFORMS_INDEX].count.x : 0u;
 }
-vec4 fetchHeroAtlas(ivec3 texel) { return vec4(0.0f); }
+HeroCloudInstance heroCloud(uint index) {
+  return heroClouds[CLOUDS_FRAME_UNIFORMS_INDEX].instance[index];
+}
+vec4 fetchHeroAtlas(ivec3 texel) { return imageLoad(heroAtlas, texel); }
 
 #include "cloud_shadow_march.h"
 

@@ -25,6 +25,41 @@ struct ShadowColumn {
   float samples;        // density samples taken
 };
 
+// Most samples a shadow ray takes through hero clouds' boxes (at least a voxel apart).
+const int kMaxHeroShadowSteps = 96;
+
+// The hero clouds' share of a shadow column: the same ray through their boxes, in equal steps
+// of at least a voxel, its optical depth added to the layer's (the integrals add) and its
+// cloud's altitudes joined to the layer's span.
+FX_INLINE void addHeroClouds(INOUT(ShadowColumn) column, vec3 base, vec3 light, float jitter,
+                             IN(CloudUniforms) u) {
+  const vec3 span = heroRaySpan(base, light, -kHeroFar);
+  if (!(span.x < span.y)) return;
+  const int steps = int(min(ceil((span.y - span.x) / span.z), float(kMaxHeroShadowSteps)));
+  const float stepLength = (span.y - span.x) / float(steps);
+  float tau = 0.0f;
+  float lowest = kHeroFar;
+  float highest = -kHeroFar;
+  for (int k = 0; k < steps; ++k) {
+    const float t = span.x + (float(k) + jitter) * stepLength;
+    const HeroSample hero = heroField(base + light * t, u);
+    column.samples += 1.0f;
+    CLOUDS_WHEN(hero.sigmaT > 0.0f) {
+      tau += hero.sigmaT * stepLength;
+      lowest = min(lowest, span.x + float(k) * stepLength);
+      highest = max(highest, span.x + float(k + 1) * stepLength);
+    }
+  }
+  if (!(tau > 0.0f)) return;
+  const float baseAltitude = u.cameraAltitudeMetres + base.y;
+  const float front = baseAltitude + highest * light.y;
+  const float back = baseAltitude + lowest * light.y;
+  const bool layerHasCloud = column.opticalDepth > 0.0f;
+  column.frontAltitude = layerHasCloud ? max(column.frontAltitude, front) : front;
+  column.backAltitude = layerHasCloud ? min(column.backAltitude, back) : back;
+  column.opticalDepth += tau;
+}
+
 // The sun ray through the camera-relative point `base` along `light` (unit, light.y > 0),
 // sampled at `steps` equal steps from the layer's bottom to its top, each at `jitter` in
 // [0, 1) of its step.
@@ -60,7 +95,8 @@ FX_INLINE ShadowColumn marchShadowColumn(vec3 base, vec3 light, uint steps, floa
       }
     }
     const vec3 p = base + light * t;
-    const FieldSample field = sampleField(vec3(p.x, 0.0f, p.z), altitude, 0.0f, 0.0f, 0u, u);
+    // The layer alone: the hero clouds, which may stand beyond it, are marched after it.
+    const FieldSample field = layerField(vec3(p.x, 0.0f, p.z), altitude, 0.0f, 0.0f, 0u, u);
     column.samples += 1.0f;
     CLOUDS_WHEN(field.sigmaT > 0.0f) {
       column.opticalDepth += field.sigmaT * stepLength;
@@ -72,6 +108,9 @@ FX_INLINE ShadowColumn marchShadowColumn(vec3 base, vec3 light, uint steps, floa
   if (highest >= lowest) {
     column.frontAltitude = u.layerBottomMetres + float(highest + 1) * stepRise;
     column.backAltitude = u.layerBottomMetres + float(lowest) * stepRise;
+  }
+  CLOUDS_WHEN(heroCloudCount() > 0u) {
+    addHeroClouds(column, base, light, jitter, u);
   }
   return column;
 }

@@ -87,6 +87,9 @@ const uint kShadowWeatherMaxFine = 3u;
 const uint kShadowWeatherMaxCoarse = 4u;
 const uint kShadowMapOut = 5u;    // the cascade atlas (fxcontracts/cloud_shadow.h), RGBA16F
 const uint kShadowMapSpare = 6u;  // one cascade in the making (kShadowTexelToSpare), RGBA16F
+// Hero clouds (kSpecShadowHeroClouds), as the march's kMarchHeroAtlas and kMarchHeroClouds.
+const uint kShadowHeroAtlas = 7u;
+const uint kShadowHeroClouds = 8u;
 // terrain_shadow_map.comp
 const uint kTerrainShadowHeight = 0u;  // the host's heightfield, sampled
 const uint kTerrainShadowMap = 1u;     // the cascade atlas: its terrain channel is written
@@ -167,7 +170,8 @@ const uint kGodRaysMaskHaze = 1u;  // the haze's Mie in-scattering, masked
 const uint kGodRaysGlow = 2u;      // the fallback without a haze: a glow along the clear paths
 // cloud_shadow_map.comp
 const uint kSpecShadowEmptySpace = 0u;  // 0/1: skip empty weather cells
-const uint kShadowSpecCount = 1u;
+const uint kSpecShadowHeroClouds = 1u;  // 0/1: hero clouds cast into the map too
+const uint kShadowSpecCount = 2u;
 // The history variants of kSpecHistory and kSpecOutputHistory.
 const uint kHistoryNone = 0u;
 const uint kHistoryInPlace = 1u;

@@ -261,7 +261,10 @@ std::string Context::Impl::unprepared(const Settings& settings, VkExtent2D rende
 
 bool Context::Impl::shadowPrepared(const Settings& settings) const {
   if (settings.shadowCascades == 0) return true;
+  const bool heroes = heroAtlas_ != nullptr;
   return programs_[Program::ShadowMap].find(detail::shadowMapKey(settings)) != VK_NULL_HANDLE &&
+         (!heroes || programs_[Program::ShadowMap].find(detail::shadowMapKey(settings, true)) !=
+                         VK_NULL_HANDLE) &&
          images_.shadowFits(shadowExtentFor(settings));
 }
 
@@ -441,7 +444,7 @@ MemoryUsage Context::Impl::memoryUsage() const {
                          slot.shadowUniforms.bytes() + slot.shadowParameters.bytes() +
                          slot.godRayLight.bytes() + slot.edgeRayList.bytes();
     usage.lightningBytes += slot.lightning.bytes() + slot.bolts.bytes();
-    usage.heroCloudBytes += slot.heroClouds.bytes();
+    usage.heroCloudBytes += slot.heroClouds.bytes() + slot.shadowHeroClouds.bytes();
   }
   if (heroAtlas_) usage.heroCloudBytes += heroAtlas_->bytes();
   return usage;
@@ -450,12 +453,18 @@ MemoryUsage Context::Impl::memoryUsage() const {
 void Context::Impl::setHeroCloudAssets(std::span<const NvdfVolume* const> assets) {
   // The host waited for the GPU (the call's contract): the old atlas can go at once.
   heroAtlas_.reset();
-  for (Slot& slot : slots_) slot.heroClouds = detail::OwnedBuffer();
+  for (Slot& slot : slots_) {
+    slot.heroClouds = detail::OwnedBuffer();
+    slot.shadowHeroClouds = detail::OwnedBuffer();
+  }
+  sliceHeroClouds_ = shader::HeroCloudUniforms{};
   if (assets.empty()) return;
   heroAtlas_ = std::make_unique<detail::HeroCloudAtlas>(device_, detail::packHeroAtlas(assets));
   for (std::size_t i = 0; i < slots_.size(); ++i) {
     slots_[i].heroClouds = uniformBlock(device_, sizeof(shader::HeroCloudUniforms),
                                         "hero clouds " + std::to_string(i));
+    slots_[i].shadowHeroClouds = uniformBlock(device_, sizeof(shader::HeroCloudUniforms),
+                                              "shadow hero clouds " + std::to_string(i));
   }
 }
 

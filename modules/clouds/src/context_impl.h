@@ -74,6 +74,8 @@ class Context::Impl {
   // The uniforms and per-cascade constants of the last shadow-map cascades recorded.
   const shader::CloudUniforms& lastShadowUniforms() const { return lastShadowUniforms_; }
   const std::vector<shader::ShadowMapConstants>& lastShadowJobs() const { return lastShadowJobs_; }
+  // The hero clouds the last shadow-map cascades were made with (count 0: none).
+  const shader::HeroCloudUniforms& lastShadowHeroClouds() const { return sliceHeroClouds_; }
   // The terrain-shadow constants of the last cascades recorded with FrameInputs::terrain.
   const std::vector<shader::TerrainShadowConstants>& lastTerrainShadowJobs() const {
     return lastTerrainShadowJobs_;
@@ -107,6 +109,7 @@ class Context::Impl {
     detail::OwnedBuffer edgeRayList;  // the march's edge tiles and their dispatch (edgeRays)
     VkDescriptorSet lightningBolts = VK_NULL_HANDLE;
     detail::OwnedBuffer heroClouds;  // this frame's HeroCloudUniforms (with hero cloud assets)
+    detail::OwnedBuffer shadowHeroClouds;  // those the shadow map is made with (likewise)
   };
 
   VkDescriptorSet allocateSet(detail::Program program);
@@ -227,6 +230,7 @@ class Context::Impl {
   // The field the shadow map is made with: this frame's, or for a cascade made in slices the
   // frame's of its first slice.
   shader::CloudUniforms sliceUniforms_{};
+  shader::HeroCloudUniforms sliceHeroClouds_{};  // the hero clouds it is made with
   std::vector<shader::ShadowMapConstants> lastShadowJobs_;
   std::vector<shader::TerrainShadowConstants> lastTerrainShadowJobs_;
   std::uint32_t debugFlags_ = 0;

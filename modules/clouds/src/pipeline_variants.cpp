@@ -71,9 +71,10 @@ SpecializationKey godRaysKey(std::uint32_t light) {
   return key;
 }
 
-SpecializationKey shadowMapKey(const Settings& settings) {
+SpecializationKey shadowMapKey(const Settings& settings, bool heroClouds) {
   SpecializationKey key;
   key.values[shader::kSpecShadowEmptySpace] = settings.emptySpaceSkipping ? 1u : 0u;
+  key.values[shader::kSpecShadowHeroClouds] = heroClouds ? 1u : 0u;
   key.count = shader::kShadowSpecCount;
   return key;
 }
@@ -124,6 +125,7 @@ std::vector<std::pair<Program, SpecializationKey>> variantsFor(const Settings& s
   // No shadow map, no shadow pipelines (and no terrain shadow: it lives in the map).
   if (settings.shadowCascades > 0) {
     variants.emplace_back(Program::ShadowMap, shadowMapKey(settings));
+    if (heroClouds) variants.emplace_back(Program::ShadowMap, shadowMapKey(settings, true));
     variants.emplace_back(Program::TerrainShadow, SpecializationKey{});
     addMarch(true);
   }

@@ -35,8 +35,9 @@ SpecializationKey boltsKey(bool hazed);
 
 // The god-ray mask and light, `light` shader::kGodRaysMaskHaze or kGodRaysGlow.
 SpecializationKey godRaysKey(std::uint32_t light);
-// The shadow map's (its empty-space skipping follows Settings::emptySpaceSkipping).
-SpecializationKey shadowMapKey(const Settings& settings);
+// The shadow map's (its empty-space skipping follows Settings::emptySpaceSkipping); `heroClouds`:
+// hero clouds cast into it.
+SpecializationKey shadowMapKey(const Settings& settings, bool heroClouds = false);
 
 // Every variant `settings` can select in some frame (with or without history, still or moving,
 // with or without the host's aerial perspective or terrain; with hero cloud assets loaded,

@@ -35,7 +35,12 @@ void Context::Impl::recordShadowMap(VkCommandBuffer cmd, const FrameInputs& inpu
     sliceUniforms_ =
         detail::buildUniforms(inputs, settings, detail::UniformContext{info_.reversedZ});
     sliceUniforms_.flags |= debugFlags_;
+    sliceHeroClouds_ = heroAtlas_ && !inputs.heroClouds.empty()
+                           ? detail::heroCloudUniforms(heroAtlas_->assets(), inputs.heroClouds,
+                                                       inputs.cameraPosition)
+                           : shader::HeroCloudUniforms{};
   }
+  const bool heroes = sliceHeroClouds_.count.x > 0;
   const shader::CloudUniforms& uniforms = sliceUniforms_;
   lastShadowUniforms_ = uniforms;
   lastShadowJobs_.clear();
@@ -48,6 +53,10 @@ void Context::Impl::recordShadowMap(VkCommandBuffer cmd, const FrameInputs& inpu
       VK_PIPELINE_STAGE_2_TRANSFER_BIT | kCompute,
       VK_ACCESS_2_TRANSFER_WRITE_BIT | detail::kStorageRead | detail::kStorageWrite);
   fn.vkCmdUpdateBuffer(cmd, slot.shadowUniforms.buffer(), 0, sizeof(uniforms), &uniforms);
+  if (heroes) {
+    fn.vkCmdUpdateBuffer(cmd, slot.shadowHeroClouds.buffer(), 0, sizeof(sliceHeroClouds_),
+                         &sliceHeroClouds_);
+  }
   detail::memoryBarrier(device_, cmd, VK_PIPELINE_STAGE_2_TRANSFER_BIT,
                         VK_ACCESS_2_TRANSFER_WRITE_BIT, kCompute, VK_ACCESS_2_UNIFORM_READ_BIT);
 
@@ -62,11 +71,16 @@ void Context::Impl::recordShadowMap(VkCommandBuffer cmd, const FrameInputs& inpu
       .storageImage(kShadowWeatherMaxCoarse, im.weatherMaxCoarse.view())
       .storageImage(kShadowMapOut, im.shadowMap.view())
       .storageImage(kShadowMapSpare, spare)
+      // Without hero clouds, stand-ins the variant never reads.
+      .storageImage(kShadowHeroAtlas, heroes ? heroAtlas_->image().view() : im.shapeNoise.view())
+      .uniformBuffer(kShadowHeroClouds,
+                     heroes ? slot.shadowHeroClouds.buffer() : slot.shadowUniforms.buffer(),
+                     sizeof(HeroCloudUniforms))
       .commit();
 
   const detail::ComputeProgram& program = programs_[Program::ShadowMap];
   fn.vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE,
-                       program.find(detail::shadowMapKey(settings)));
+                       program.find(detail::shadowMapKey(settings, heroes)));
   fn.vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, program.layout(), 0, 1,
                              &slot.shadowMap, 0, nullptr);
   const auto dispatch = [&](const ShadowMapConstants& constants) {

@@ -55,8 +55,8 @@ std::shared_ptr<const clouds::NvdfVolume> loadHeroAsset(const std::filesystem::p
   return std::make_shared<const clouds::NvdfVolume>(std::move(*volume));
 }
 
-// Where a user's cloud goes: its middle on the camera's line of sight, far enough ahead that
-// the whole cloud is in front of the camera.
+// Where a user's cloud goes: ahead on the camera's line of sight, far enough that the whole
+// cloud is in front of the camera, its base level with the camera (not in the hills below it).
 clouds::HeroCloud inFrontOfTheCamera(const clouds::NvdfVolume& volume,
                                      const CameraDescription& camera) {
   const glm::dvec3 lo(volume.boundsMinMetres());
@@ -66,6 +66,7 @@ clouds::HeroCloud inFrontOfTheCamera(const clouds::NvdfVolume& volume,
       orientationFrom(camera.yawDegrees, camera.pitchDegrees) * glm::dvec3(0.0, 0.0, -1.0);
   clouds::HeroCloud cloud;
   cloud.positionMetres = camera.position + forward * (1.5 * radius + 100.0) - 0.5 * (lo + hi);
+  cloud.positionMetres.y = camera.position.y - lo.y;
   return cloud;
 }
 
@@ -99,6 +100,10 @@ LoadedHeroClouds loadHeroClouds(const SceneDescription& scene,
     const std::uint32_t asset = assetIndex(*userCloud);
     clouds::HeroCloud cloud = inFrontOfTheCamera(*loaded.assets[asset], scene.camera);
     cloud.asset = asset;
+    const glm::dvec3& p = cloud.positionMetres;
+    engine::log::info("hero cloud " + userCloud->string() + ": placed with its origin at (" +
+                      std::to_string(std::lround(p.x)) + ", " + std::to_string(std::lround(p.y)) +
+                      ", " + std::to_string(std::lround(p.z)) + ") m, ahead of the camera");
     loaded.placements.push_back(cloud);
   }
   return loaded;

@@ -196,7 +196,7 @@ double cpuSunOpticalDepth(const CpuTextures& textures, const CloudUniforms& u,
   for (double t = start + 0.5 * stepMetres; t < end; t += stepMetres) {
     const vec3 p = relative + light * float(t);
     const FieldSample s =
-        sampleField(vec3(p.x, 0.0f, p.z), float(altitude + t * light.y), 0.0f, 0.0f, 0u, u);
+        layerField(vec3(p.x, 0.0f, p.z), float(altitude + t * light.y), 0.0f, 0.0f, 0u, u);
     tau += double(s.sigmaT) * std::min(double(stepMetres), end - (t - 0.5 * stepMetres));
   }
   gTextures = nullptr;

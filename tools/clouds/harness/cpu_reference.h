@@ -53,7 +53,8 @@ glm::vec4 cpuShadowTexel(const CpuTextures& textures, const clouds::shader::Clou
 
 // The ground truth a shadow lookup approximates: the clouds' optical depth between a
 // camera-relative point and the sun along `light`, marched in steps of `stepMetres` with the
-// low-frequency shape (the model the shadow map and the light samples use), no skipping.
+// low-frequency shape (the model the shadow map and the light samples use), no skipping; the
+// layer's alone.
 double cpuSunOpticalDepth(const CpuTextures& textures,
                           const clouds::shader::CloudUniforms& uniforms, const glm::vec3& relative,
                           const glm::vec3& light, float stepMetres);

@@ -151,6 +151,12 @@ void CloudFeature::reportError(const clouds::Error& error) {
   errorLogged_ = true;
 }
 
+void CloudFeature::placeHeroClouds(clouds::FrameInputs& inputs) {
+  if (!hasHeroClouds_) return;
+  heroClouds_ = heroClouds(world_, inputs.cameraPosition, clouds::kMaxHeroClouds);
+  inputs.heroClouds = heroClouds_;
+}
+
 void CloudFeature::dispatch(const HostFrame& host) {
   HostFrame frame = host;
   frame.weatherView = weatherMap_ ? weatherMap_->view() : VK_NULL_HANDLE;
@@ -160,10 +166,7 @@ void CloudFeature::dispatch(const HostFrame& host) {
   inputs.lightningFlashes = flashes_;
   bolts_ = lightningBolts(world_, settings_.lightningBoltSegments);
   inputs.lightningBolts = bolts_;
-  if (hasHeroClouds_) {
-    heroClouds_ = heroClouds(world_, inputs.cameraPosition, clouds::kMaxHeroClouds);
-    inputs.heroClouds = heroClouds_;
-  }
+  placeHeroClouds(inputs);
   dispatched_ = context_->dispatch(inputs, settings_, &error);
   if (dispatched_) {
     world_.ctx().get<CloudStatus>().lastError.clear();
@@ -200,7 +203,9 @@ void CloudFeature::dispatchShadowMap(const HostFrame& host, fxcontracts::ecs::Cl
   HostFrame frame = host;
   frame.weatherView = weatherMap_ ? weatherMap_->view() : VK_NULL_HANDLE;
   clouds::Error error;
-  if (context_->dispatchShadowMap(cloudFrameInputs(world_, frame), settings_, &error)) {
+  clouds::FrameInputs inputs = cloudFrameInputs(world_, frame);
+  placeHeroClouds(inputs);
+  if (context_->dispatchShadowMap(inputs, settings_, &error)) {
     const clouds::ShadowMapParameters& p = context_->outputs().shadowParameters;
     static_assert(sizeof(p) == sizeof(shadow.parameters));
     std::copy(std::begin(p.cascade), std::end(p.cascade), shadow.parameters.begin());

@@ -51,6 +51,8 @@ class CloudFeature final : public engine::render::RenderFeature {
   bool readsEntry(std::type_index entry) const override;
 
  private:
+  // This frame's hero clouds into `inputs` (kept in heroClouds_, which the span points at).
+  void placeHeroClouds(clouds::FrameInputs& inputs);
   void dispatch(const HostFrame& host);
   // Fills `shadow`'s per-frame values.
   void dispatchShadowMap(const HostFrame& host, fxcontracts::ecs::CloudShadow& shadow);

@@ -258,6 +258,73 @@ TEST_F(HeroClouds, BadInputsAreRefusedByName) {
   EXPECT_NE(error.message.find("assets[1]: NvdfVolume.fields"), std::string::npos) << error.message;
 }
 
+// Hero clouds cast into the cloud shadow map: its texels are the CPU reference's column march
+// (layer and hero clouds along each sun ray), and the ground below the cloud, towards the sun,
+// is in its shadow where a sky without it is not.
+TEST_F(HeroClouds, CastIntoTheShadowMap) {
+  const Assets assets(harness().context());
+  clouds::Settings s = heroOnly();
+  s.coverage = 0.3f;  // a little layer too: the two share each column
+  CloudView view = heroViews()[0].view;
+  view.sunElevationDegrees = 50.0;
+  harness().cut();
+  const clouds::tools::ShadowMapImage map = harness().renderShadowMap(view, s);
+  ASSERT_EQ(impl().lastShadowHeroClouds().count.x, 1u);
+  const clouds::tools::CpuTextures textures =
+      withHeroes(clouds::tools::readTextures(harness()), impl());
+  clouds::tools::CpuTextures shadowTextures = textures;
+  shadowTextures.heroes.uniforms = impl().lastShadowHeroClouds();
+  clouds::tools::CpuTextures layerOnly = textures;
+  layerOnly.heroes.uniforms.count.x = 0;
+  double worstDepth = 0.0;
+  double worstAltitude = 0.0;
+  int heroTexels = 0;
+  for (const auto& job : impl().lastShadowJobs()) {
+    for (std::uint32_t y = 1; y < s.shadowMapResolution; y += 7) {
+      for (std::uint32_t x = 2; x < s.shadowMapResolution; x += 7) {
+        const glm::vec4 cpu = clouds::tools::cpuShadowTexel(
+            shadowTextures, impl().lastShadowUniforms(), job, {x, y}, true);
+        const glm::vec4 gpu =
+            map.texels[std::size_t{y} * map.width + job.cascade * s.shadowMapResolution + x];
+        worstDepth = std::max(worstDepth, std::abs(double(gpu.x - cpu.x)) / (1.0 + cpu.x));
+        if (cpu.x > 0.1f) {
+          worstAltitude = std::max(
+              {worstAltitude, std::abs(double(gpu.y - cpu.y)), std::abs(double(gpu.z - cpu.z))});
+        }
+        const glm::vec4 layer = clouds::tools::cpuShadowTexel(
+            layerOnly, impl().lastShadowUniforms(), job, {x, y}, true);
+        heroTexels += cpu.x > layer.x + 0.1f ? 1 : 0;
+      }
+    }
+  }
+  std::printf(
+      "hero shadow texels vs CPU: worst depth error %.2e, altitude %.2f m, %d darkened "
+      "by the hero cloud\n",
+      worstDepth, worstAltitude, heroTexels);
+  EXPECT_GT(heroTexels, 3) << "the hero cloud must shade some of the compared columns";
+  EXPECT_LT(worstDepth, 2e-3);
+  EXPECT_LT(worstAltitude, 4.0);
+
+  // The ground under the cloud, on the sun's side away from it: shaded with the hero cloud,
+  // not without it (a clear layer).
+  const glm::vec3 sun = clouds::tools::sunDirection(view);
+  const clouds::HeroCloud cloud = aheadOfTheCamera();
+  const glm::dvec3 core = cloud.positionMetres + glm::dvec3(0.0, 600.0, 0.0);
+  const glm::dvec3 ground = core - glm::dvec3(sun) * (core.y / double(sun.y));
+  const glm::vec3 relative(ground - view.position);
+  clouds::Settings clear = s;
+  clear.coverage = 0.0f;
+  harness().cut();
+  const float shaded = harness().renderShadowMap(view, clear).transmittance(relative);
+  CloudView none = view;
+  none.heroClouds.clear();
+  harness().cut();
+  const float lit = harness().renderShadowMap(none, clear).transmittance(relative);
+  std::printf("the sun on the ground behind the hero cloud: %.3f (without it %.3f)\n", shaded, lit);
+  EXPECT_LT(shaded, 0.2f);
+  EXPECT_GT(lit, 0.99f);
+}
+
 // Nubis³'s SDF march: the signed distance lets the march jump the clear air inside a hero
 // cloud's box (and the air between the layer and the box): far fewer samples, and no less
 // accurate than the dense march against the converged Reference (whose finer steps and
