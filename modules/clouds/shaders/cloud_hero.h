@@ -16,25 +16,16 @@
 
 FX_SHADER_BEGIN(clouds::shader)
 
-// The includer's: this frame's hero clouds (0 where they are not compiled in), the atlas and
-// the up-rez noise (cloud_noise.h's heroNoiseTexel(), kHeroNoiseSize^3, wrapped).
+// The includer's: this frame's hero clouds (0 where they are not compiled in) and the atlas.
 uint heroCloudCount();
 HeroCloudInstance heroCloud(uint index);
 vec4 fetchHeroAtlas(ivec3 texel);  // RGBA8 as [0, 1]
-vec4 fetchHeroNoise(ivec3 texel);  // RGBA8 as [0, 1]
 
 const float kHeroFar = 1e30f;
 // The distance code: (A x 255 - 128) / 127 of the full scale (HeroCloudInstance::scales.y).
 const float kHeroDistanceZero = 128.0f;
 // Steps inside a hero cloud's box, in its voxels: the fields change linearly within a voxel.
 const float kHeroStepVoxels = 1.0f;
-// The up-rez noise's tile in a cloud's own metres: 128 texels of 0.75 m, its low frequencies'
-// features 24 m across, its high ones' 6 m.
-const float kHeroNoiseTileMetres = 96.0f;
-// The pixel footprint (m) beyond which the noise's features are too small to see: its erosion
-// fades out from half of it (a level of detail without mips: nothing is sampled that would only
-// alias).
-const float kHeroNoiseFootprintMetres = 12.0f;
 
 // Index coordinates (voxel centres at integers) of a camera-relative point.
 FX_INLINE vec3 heroIndex(IN(HeroCloudInstance) h, vec3 relative) {
@@ -66,38 +57,6 @@ FX_INLINE vec4 heroFields(IN(HeroCloudInstance) h, vec3 c) {
   return vec4(fields, (code * 255.0f - kHeroDistanceZero) / 127.0f * h.scales.y);
 }
 
-// The up-rez noise at `uvw` (tile units, wrapping), filtered trilinearly by hand as the other
-// noises are (cloud_sampling.h): the same on the GPU and the CPU.
-FX_INLINE vec4 sampleHeroNoise(vec3 uvw) {
-  const int n = kHeroNoiseSize;
-  const vec3 p = uvw * float(n) - 0.5f;
-  const vec3 pFloor = floor(p);
-  const vec3 f = p - pFloor;
-  const ivec3 i0 = ivec3(pFloor) & (n - 1);
-  const ivec3 i1 = (i0 + 1) & (n - 1);
-  const vec4 x00 =
-      mix(fetchHeroNoise(ivec3(i0.x, i0.y, i0.z)), fetchHeroNoise(ivec3(i1.x, i0.y, i0.z)), f.x);
-  const vec4 x10 =
-      mix(fetchHeroNoise(ivec3(i0.x, i1.y, i0.z)), fetchHeroNoise(ivec3(i1.x, i1.y, i0.z)), f.x);
-  const vec4 x01 =
-      mix(fetchHeroNoise(ivec3(i0.x, i0.y, i1.z)), fetchHeroNoise(ivec3(i1.x, i0.y, i1.z)), f.x);
-  const vec4 x11 =
-      mix(fetchHeroNoise(ivec3(i0.x, i1.y, i1.z)), fetchHeroNoise(ivec3(i1.x, i1.y, i1.z)), f.x);
-  return mix(mix(x00, x10, f.y), mix(x01, x11, f.y), f.z);
-}
-
-// Nubis³'s up-rez of a voxel cloud (Schneider 2023, the voxel cloud density sampler): the
-// dimensional profile eroded by a composite of the noise. Wisps (curly alligator) blend from
-// low to high frequency as the profile deepens; billows (alligator, a third as strong) blend
-// likewise, sooner (profile^0.25); the detail type picks between them. `erosion` in [0, 1]
-// (Settings::detailErosion, faded with the pixel's footprint): 0 leaves the profile as it is.
-FX_INLINE float upRezzedProfile(float profile, float detailType, vec4 noise, float erosion) {
-  const float wispy = mix(noise.x, noise.y, profile);
-  const float billowy = mix(noise.z * 0.3f, noise.w * 0.3f, pow(profile, 0.25f));
-  const float composite = mix(wispy, billowy, saturate(detailType));
-  return saturate(remap(profile, composite * erosion, 1.0f, 0.0f, 1.0f));
-}
-
 // What the hero clouds hold at a camera-relative point.
 struct HeroSample {
   float sigmaT;          // extinction (1/m), summed over the clouds
@@ -106,10 +65,7 @@ struct HeroSample {
   float clearMetres;     // no hero cloud lies within this distance (m); 0 in an envelope
 };
 
-// `distance` (m) from the camera and `wantDetail` (0: the coarse field, as light samples and the
-// shadow map take it) decide the up-rez.
-FX_INLINE HeroSample heroField(vec3 relative, float distance, uint wantDetail,
-                               IN(CloudUniforms) u) {
+FX_INLINE HeroSample heroField(vec3 relative, IN(CloudUniforms) u) {
   HeroSample s;
   s.sigmaT = 0.0f;
   s.profile = 0.0f;
@@ -128,17 +84,7 @@ FX_INLINE HeroSample heroField(vec3 relative, float distance, uint wantDetail,
     for (int inBox = 0; inBox < (boxMetres == 0.0f ? 1 : 0); ++inBox) {
       const vec4 fields = heroFields(h, c);
       s.clearMetres = min(s.clearMetres, max(fields.w, 0.0f));
-      float density = fields.x;
-      const float footprint = distance * u.noiseFootprintPerMetre;
-      const float erosion =
-          u.detailErosion * saturate(2.0f - 2.0f * footprint / kHeroNoiseFootprintMetres);
-      CLOUDS_WHEN(wantDetail != 0u && fields.x > 0.0f && erosion > 0.0f &&
-                  distance < u.detailDistanceMetres) {
-        // The noise is fixed to the cloud: its own metres (index coordinates times its voxel).
-        const vec3 uvw = c * (h.scales.z / kHeroNoiseTileMetres);
-        density = upRezzedProfile(fields.x, fields.y, sampleHeroNoise(uvw), erosion);
-      }
-      const float sigma = density * fields.z * h.scales.x * u.extinctionPerMetre;
+      const float sigma = fields.x * fields.z * h.scales.x * u.extinctionPerMetre;
       s.sigmaT += sigma;
       if (sigma > densest) {
         densest = sigma;

@@ -10,8 +10,7 @@
 // skipping); with the terrain's shadow, 10-11 the cloud shadow map and its parameters (its
 // terrain channel, fxcontracts/cloud_shadow.h). Outputs: 6 the marched samples (radiance,
 // transmittance, front and weighted depth in metres; packed, cloud_temporal.h); 9 work
-// counters; with hero clouds (kSpecHeroClouds), 14-16 their atlas, instances and noise
-// (cloud_hero.h).
+// counters; with hero clouds (kSpecHeroClouds), 14-15 their atlas and instances (cloud_hero.h).
 // Feature toggles are specialization constants.
 // Edge rays (kSpecEdgeRays, while the frame's kFlagEdgeRays is set): the tiles on a silhouette
 // of last frame's reconstruction (12, trace history) are listed (13) by the tiles' march, and a
@@ -101,8 +100,6 @@ HeroCloudInstance heroCloud(uint index) {
   return heroClouds[CLOUDS_FRAME_UNIFORMS_INDEX].instance[index];
 }
 vec4 fetchHeroAtlas(ivec3 texel) { return imageLoad(heroAtlas, texel); }
-layout(binding = kMarchHeroNoise, rgba8) uniform readonly image3D heroNoise;
-vec4 fetchHeroNoise(ivec3 texel) { return imageLoad(heroNoise, texel); }
 
 #include "cloud_march.h"
 #include "cloud_temporal.h"

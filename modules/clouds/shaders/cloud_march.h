@@ -212,7 +212,7 @@ FX_INLINE FieldSample sampleField(vec3 relative, float altitude, float distance,
                                   uint wantDetail, IN(CloudUniforms) u) {
   FieldSample s = layerField(relative, altitude, distance, lodDither, wantDetail, u);
   CLOUDS_WHEN(heroCloudCount() > 0u) {
-    const HeroSample hero = heroField(relative, distance, wantDetail, u);
+    const HeroSample hero = heroField(relative, u);
     if (hero.sigmaT > s.sigmaT) {
       s.profile = hero.profile;
       s.heightFraction = hero.heightFraction;
@@ -442,8 +442,7 @@ FX_INLINE MarchResult marchClouds(vec3 rayDirection, float sceneDistance, float 
       // distance says is clear (Nubis³'s SDF march); a jump shorter than half a voxel is not
       // worth its lookup, and the ray steps instead.
       CLOUDS_WHEN(heroHit && skipTo > t) {
-        float clear =
-            t < heroSpan.x ? heroSpan.x - t : heroField(rayDirection * t, t, 0u, u).clearMetres;
+        float clear = t < heroSpan.x ? heroSpan.x - t : heroField(rayDirection * t, u).clearMetres;
         clear = clear > 0.5f * heroSpan.z ? clear : 0.0f;
         skipTo = min(skipTo, t + clear);
       }

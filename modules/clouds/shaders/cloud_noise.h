@@ -159,47 +159,6 @@ FX_INLINE vec2 curlNoiseTexel(vec2 uv, float texelSize, uint seed) {
   return clamp(curl, vec2(-1.0f), vec2(1.0f)) * 0.5f + 0.5f;
 }
 
-// Alligator noise (the cellular noise of SideFX's HDK sample that Nubis³'s voxel-cloud noise is
-// made of): every cell of a periodic lattice holds a feature point of random strength; a point
-// takes each feature's strength times a smooth bump of its distance (1 on the feature, 0 a cell
-// away), and the noise is the largest bump less the second largest: rounded plateaus creased
-// where two features meet. `uvw` in tile units, `cells` per tile; output in [0, 1].
-FX_INLINE float alligatorNoise(vec3 uvw, int cells, uint seed) {
-  const vec3 p = uvw * float(cells);
-  const ivec3 base = ivec3(floor(p));
-  float first = 0.0f;
-  float second = 0.0f;
-  for (int n = 0; n < 27; ++n) {
-    const ivec3 cell = base + ivec3(n % 3 - 1, (n / 3) % 3 - 1, n / 9 - 1);
-    const ivec3 wrapped = wrapCell(cell, cells);
-    const vec3 feature = vec3(cell) + hashCell(wrapped, seed);
-    const float strength = hashCell(wrapped, seed + 7919u).x;
-    const vec3 d = p - feature;
-    const float falloff = max(1.0f - dot(d, d), 0.0f);
-    const float bump = strength * falloff * falloff * falloff;
-    second = max(second, min(first, bump));
-    first = max(first, bump);
-  }
-  return saturate(first - second);
-}
-
-// Curly alligator noise: alligator noise over a domain swirled by periodic gradient noise (of
-// the same period, so it still tiles): its creases curl, as wisps do.
-FX_INLINE float curlyAlligatorNoise(vec3 uvw, int cells, uint seed) {
-  const vec3 p = uvw * float(cells);
-  const vec3 swirl = vec3(perlinNoise(p, cells, seed + 11u), perlinNoise(p, cells, seed + 12u),
-                          perlinNoise(p, cells, seed + 13u));
-  return alligatorNoise(uvw + swirl * (0.35f / float(cells)), cells, seed);
-}
-
-// Hero clouds' noise texel (kHeroNoiseSize^3, tiling; Schneider 2023's four channels): R low-
-// and G high-frequency curly alligator (the wisps), B low- and A high-frequency alligator (the
-// billows).
-FX_INLINE vec4 heroNoiseTexel(vec3 uvw, uint seed) {
-  return vec4(curlyAlligatorNoise(uvw, 4, seed + 100u), curlyAlligatorNoise(uvw, 16, seed + 200u),
-              alligatorNoise(uvw, 4, seed + 300u), alligatorNoise(uvw, 16, seed + 400u));
-}
-
 FX_SHADER_END
 
 #endif

@@ -54,8 +54,6 @@ HeroCloudInstance heroCloud(uint index) {
   return heroClouds[CLOUDS_FRAME_UNIFORMS_INDEX].instance[index];
 }
 vec4 fetchHeroAtlas(ivec3 texel) { return imageLoad(heroAtlas, texel); }
-// The shadow rays take the coarse field: never reached.
-vec4 fetchHeroNoise(ivec3 texel) { return vec4(0.0f); }
 
 #include "cloud_shadow_march.h"
 

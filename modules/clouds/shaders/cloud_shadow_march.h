@@ -42,7 +42,7 @@ FX_INLINE void addHeroClouds(INOUT(ShadowColumn) column, vec3 base, vec3 light, 
   float highest = -kHeroFar;
   for (int k = 0; k < steps; ++k) {
     const float t = span.x + (float(k) + jitter) * stepLength;
-    const HeroSample hero = heroField(base + light * t, 0.0f, 0u, u);
+    const HeroSample hero = heroField(base + light * t, u);
     column.samples += 1.0f;
     CLOUDS_WHEN(hero.sigmaT > 0.0f) {
       tau += hero.sigmaT * stepLength;

@@ -24,7 +24,6 @@ const int kDetailNoiseSize = 32;  // high-frequency 3D noise, RGBA8 packed (clou
 const int kShapeNoiseLevels = 8;   // 128^3 .. 1^3
 const int kDetailNoiseLevels = 6;  // 32^3 .. 1^3
 const int kCurlNoiseSize = 128;    // 2D curl noise, RGBA8 (RG used)
-const int kHeroNoiseSize = 128;    // hero clouds' 3D noise, RGBA8, four channels (cloud_hero.h)
 const int kWeatherMapSize = 512;   // 2D weather map, RGBA8: coverage, type, density
 // Empty-space skipping: the weather map's maximum coverage (R) and type (G) over cells, at two
 // levels (64 x 64 cells of 8 x 8 texels, 8 x 8 cells of 64 x 64 texels), each cell's maximum
@@ -63,7 +62,6 @@ const uint kMarchEdgeRayList = 13u;   // the edge rays' tiles and dispatch (kSpe
 // uniforms, which the march then never reads.
 const uint kMarchHeroAtlas = 14u;
 const uint kMarchHeroClouds = 15u;
-const uint kMarchHeroNoise = 16u;  // their up-rez noise (RGBA8 3D, kHeroNoiseSize^3)
 // reconstruct.comp
 const uint kReconstructFresh = 1u;
 const uint kReconstructHistory = 2u;

@@ -143,7 +143,6 @@ void Context::Impl::writeFixedSets() {
         .commit();
   }
   weatherMaxCoarseSet_ = allocateSet(Program::WeatherMaxima);
-  heroNoiseSet_ = allocateSet(Program::HeroNoise);
   SetWriter(device_, weatherMaxCoarseSet_)
       .storageImage(shader::kMaximaSource, im.weatherMaxFine.view())
       .storageImage(shader::kMaximaTarget, im.weatherMaxCoarse.view())
@@ -311,7 +310,6 @@ void Context::Impl::startFrame(const FrameInputs& inputs, const Settings& settin
   if (heroAtlas_) {
     heroAtlas_->releaseStaging(inputs.frameIndex, info_.maxFramesInFlight);
     heroAtlas_->recordUpload(cmd, inputs.frameIndex);
-    if (!heroAtlas_->noiseMade()) recordHeroNoise(cmd);
   }
   if (timer_) timer_->beginFrame(cmd, static_cast<std::uint32_t>(&slot - slots_.data()));
   images_.recordInitialLayouts(cmd);
@@ -462,10 +460,6 @@ void Context::Impl::setHeroCloudAssets(std::span<const NvdfVolume* const> assets
   sliceHeroClouds_ = shader::HeroCloudUniforms{};
   if (assets.empty()) return;
   heroAtlas_ = std::make_unique<detail::HeroCloudAtlas>(device_, detail::packHeroAtlas(assets));
-  programs_[Program::HeroNoise].prepare();
-  detail::SetWriter(device_, heroNoiseSet_)
-      .storageImage(shader::kGeneratorTarget, heroAtlas_->noise().view())
-      .commit();
   for (std::size_t i = 0; i < slots_.size(); ++i) {
     slots_[i].heroClouds = uniformBlock(device_, sizeof(shader::HeroCloudUniforms),
                                         "hero clouds " + std::to_string(i));

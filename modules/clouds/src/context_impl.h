@@ -55,7 +55,6 @@ class Context::Impl {
   // Throws vkfx::Error (OutOfMemory, VulkanFailure); the assets are valid (context.cpp checks).
   void setHeroCloudAssets(std::span<const NvdfVolume* const> assets);
   std::size_t heroCloudAssets() const { return heroAtlas_ ? heroAtlas_->assets().size() : 0; }
-  const detail::HeroCloudAtlas* heroAtlas() const { return heroAtlas_.get(); }
 
   Outputs outputs() const;
   FrameReport lastFrameReport() const { return report_; }
@@ -132,8 +131,6 @@ class Context::Impl {
   void recordWeatherRows(VkCommandBuffer cmd, const Settings& settings,
                          const detail::WeatherWork& work, double mapTimeSeconds);
   void recordWeatherMaxima(VkCommandBuffer cmd);
-  // The hero clouds' noise, once after setHeroCloudAssets() (their atlas's upload before it).
-  void recordHeroNoise(VkCommandBuffer cmd);
 
   // record_shadow.cpp
   void recordShadowMap(VkCommandBuffer cmd, const FrameInputs& inputs, const Settings& settings,
@@ -205,7 +202,6 @@ class Context::Impl {
   std::array<VkDescriptorSet, 2> weatherSets_{};         // generator, per map
   std::array<VkDescriptorSet, 2> weatherMaxFineSets_{};  // map -> fine maxima, per map
   VkDescriptorSet weatherMaxCoarseSet_ = VK_NULL_HANDLE;
-  VkDescriptorSet heroNoiseSet_ = VK_NULL_HANDLE;  // written by setHeroCloudAssets()
 
   bool noiseGenerated_ = false;
   detail::WeatherSchedule weatherSchedule_;

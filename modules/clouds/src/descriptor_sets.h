@@ -16,12 +16,10 @@ struct SetsOf {
 };
 
 // Made once (writeFixedSets): the noise generators and their mip chains, the two weather maps'
-// generators and maxima, the coarse maxima of the empty-space-skipping grid, and the hero
-// clouds' noise generator (written only with hero cloud assets).
+// generators and maxima, and the coarse maxima of the empty-space-skipping grid.
 inline constexpr SetsOf kFixedSets[] = {
     {Program::ShapeNoise, 1}, {Program::DetailNoise, 1}, {Program::CurlNoise, 1},
     {Program::NoiseMip, 2},   {Program::Weather, 2},     {Program::WeatherMaxima, 3},
-    {Program::HeroNoise, 1},
 };
 
 // One of each per frame slot (Context::Impl::Slot), each written when its pass records.

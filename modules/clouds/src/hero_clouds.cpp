@@ -89,11 +89,6 @@ HeroCloudAtlas::HeroCloudAtlas(const DeviceContext& device, HeroAtlasLayout layo
       assets_(std::move(layout.assets)),
       image_(device, VK_IMAGE_TYPE_3D, VK_FORMAT_R8G8B8A8_UNORM, layout.extent,
              VK_IMAGE_USAGE_STORAGE_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT, "hero cloud atlas"),
-      noise_(
-          device, VK_IMAGE_TYPE_3D, VK_FORMAT_R8G8B8A8_UNORM,
-          VkExtent3D{std::uint32_t(shader::kHeroNoiseSize), std::uint32_t(shader::kHeroNoiseSize),
-                     std::uint32_t(shader::kHeroNoiseSize)},
-          VK_IMAGE_USAGE_STORAGE_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT, "hero cloud noise"),
       staging_(device, layout.texels.size(), VK_BUFFER_USAGE_TRANSFER_SRC_BIT,
                "hero cloud atlas upload", /*hostVisible=*/true) {
   std::memcpy(staging_.mapped(), layout.texels.data(), layout.texels.size());
@@ -112,8 +107,6 @@ void HeroCloudAtlas::recordUpload(VkCommandBuffer cmd, std::uint64_t frameIndex)
   barrier(*device_, cmd, image_.image(), VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
           VK_IMAGE_LAYOUT_GENERAL, VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT,
           kComputeStage, kStorageRead);
-  barrier(*device_, cmd, noise_.image(), VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_GENERAL,
-          VK_PIPELINE_STAGE_2_NONE, VK_ACCESS_2_NONE, kComputeStage, kStorageWrite);
   uploadFrame_ = frameIndex;
 }
 

@@ -55,23 +55,16 @@ class HeroCloudAtlas {
 
   const std::vector<HeroAsset>& assets() const { return assets_; }
   const OwnedImage& image() const { return image_; }
-  // The up-rez noise (cloud_noise.h's heroNoiseTexel()), made on the GPU by the context.
-  const OwnedImage& noise() const { return noise_; }
-  bool noiseMade() const { return noiseMade_; }
-  void setNoiseMade() { noiseMade_ = true; }
-  // Records the copy into the image and its transition to GENERAL for the march's reads, and
-  // the noise's first transition (to GENERAL, for its generator), once.
+  // Records the copy into the image and its transition to GENERAL for the march's reads, once.
   void recordUpload(VkCommandBuffer cmd, std::uint64_t frameIndex);
   // Frees the staging buffer once the frame that copied it cannot be in flight any more.
   void releaseStaging(std::uint64_t frameIndex, std::uint32_t framesInFlight);
-  VkDeviceSize bytes() const { return image_.bytes() + noise_.bytes() + staging_.bytes(); }
+  VkDeviceSize bytes() const { return image_.bytes() + staging_.bytes(); }
 
  private:
   const DeviceContext* device_;
   std::vector<HeroAsset> assets_;
   OwnedImage image_;
-  OwnedImage noise_;
-  bool noiseMade_ = false;
   OwnedBuffer staging_;
   std::optional<std::uint64_t> uploadFrame_;
 };

@@ -13,7 +13,6 @@
 #include "clouds_shaders/lightning_bolts.comp.spv.h"
 #include "clouds_shaders/noise_curl.comp.spv.h"
 #include "clouds_shaders/noise_detail.comp.spv.h"
-#include "clouds_shaders/noise_hero.comp.spv.h"
 #include "clouds_shaders/noise_mip.comp.spv.h"
 #include "clouds_shaders/noise_shape.comp.spv.h"
 #include "clouds_shaders/reconstruct.comp.spv.h"
@@ -58,11 +57,6 @@ std::vector<ProgramDesc> programTable() {
        {{kGeneratorTarget, kImage}},
        sizeof(NoiseConstants),
        "curl noise generator"},
-      {Program::HeroNoise,
-       noise_hero_comp_spv,
-       {{kGeneratorTarget, kImage}},
-       sizeof(NoiseConstants),
-       "hero noise generator"},
       {Program::NoiseMip,
        noise_mip_comp_spv,
        {{kGeneratorTarget, kImage}},
@@ -114,8 +108,7 @@ std::vector<ProgramDesc> programTable() {
         {kMarchTraceHistory, kImage},
         {kMarchEdgeRayList, kBuffer},
         {kMarchHeroAtlas, kImage},
-        {kMarchHeroClouds, kUniforms},
-        {kMarchHeroNoise, kImage}},
+        {kMarchHeroClouds, kUniforms}},
        sizeof(FrameUniformsIndex),
        "march"},
       {Program::Reconstruct,
@@ -206,14 +199,12 @@ Programs::Programs(const DeviceContext& device, bool composite) {
     program = std::make_unique<ComputeProgram>(device, desc.spirv, desc.bindings,
                                                desc.pushConstantBytes, desc.name);
     // Programs without specialization constants have one variant: made now (the shadow map's
-    // and the god rays' programs by prepare(), only for settings that have them; the hero
-    // noise's by setHeroCloudAssets(), only with hero clouds).
+    // and the god rays' programs by prepare(), only for settings that have them).
     const bool specialised =
-        desc.program == Program::HeroNoise || desc.program == Program::March ||
-        desc.program == Program::Reconstruct || desc.program == Program::Upsample ||
-        desc.program == Program::ShadowMap || desc.program == Program::TerrainShadow ||
-        desc.program == Program::GodRayOcclusion || desc.program == Program::GodRays ||
-        desc.program == Program::LightningBolts;
+        desc.program == Program::March || desc.program == Program::Reconstruct ||
+        desc.program == Program::Upsample || desc.program == Program::ShadowMap ||
+        desc.program == Program::TerrainShadow || desc.program == Program::GodRayOcclusion ||
+        desc.program == Program::GodRays || desc.program == Program::LightningBolts;
     if (!specialised) program->prepare();
   }
 }

@@ -30,7 +30,6 @@ enum class Program : std::uint32_t {
   GodRayOcclusion,  // god_ray_occlusion.comp: what hides the sun, a quarter of the output
   GodRays,          // god_rays.comp: the god-ray mask (its radial blur)
   LightningBolts,   // lightning_bolts.comp: this frame's bolts into the radiance output
-  HeroNoise,        // noise_hero.comp: the hero clouds' 128^3 up-rez noise
   Count
 };
 

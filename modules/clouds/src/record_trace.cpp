@@ -52,14 +52,13 @@ struct TraceFrame {
   bool heroClouds = false;
   VkImageView heroAtlas = VK_NULL_HANDLE;
   VkBuffer heroBlock = VK_NULL_HANDLE;
-  VkImageView heroNoise = VK_NULL_HANDLE;
 };
 
-// `heroAtlas`, `heroBlock`, `heroNoise`: the hero clouds' (null without them this frame).
+// `heroAtlas`, `heroBlock`: the hero clouds' (null without them this frame).
 TraceFrame traceFrame(const detail::ModuleImages& im, const TraceSamplers& samplers,
                       VkBuffer uniforms, const FrameInputs& inputs, const Settings& settings,
                       const detail::TemporalFrame& temporal, bool terrainShadow,
-                      VkImageView heroAtlas, VkBuffer heroBlock, VkImageView heroNoise) {
+                      VkImageView heroAtlas, VkBuffer heroBlock) {
   const bool hasDepth = inputs.depthView != VK_NULL_HANDLE;
   const FrameInputs::AerialPerspective& haze = inputs.aerialPerspective;
   const bool hazed = haze.view != VK_NULL_HANDLE;
@@ -87,7 +86,6 @@ TraceFrame traceFrame(const detail::ModuleImages& im, const TraceSamplers& sampl
       .heroClouds = heroAtlas != VK_NULL_HANDLE,
       .heroAtlas = heroAtlas != VK_NULL_HANDLE ? heroAtlas : im.shapeNoise.view(),
       .heroBlock = heroAtlas != VK_NULL_HANDLE ? heroBlock : uniforms,
-      .heroNoise = heroAtlas != VK_NULL_HANDLE ? heroNoise : im.shapeNoise.view(),
   };
 }
 
@@ -133,7 +131,6 @@ void writeMarchSet(const detail::DeviceContext& device, VkDescriptorSet set,
                      frame.edgeRays ? edgeRayList.size() : counters.size())
       .storageImage(kMarchHeroAtlas, frame.heroAtlas)
       .uniformBuffer(kMarchHeroClouds, frame.heroBlock, sizeof(HeroCloudUniforms))
-      .storageImage(kMarchHeroNoise, frame.heroNoise)
       .commit();
 }
 
@@ -304,8 +301,7 @@ void Context::Impl::recordTrace(VkCommandBuffer cmd, const FrameInputs& inputs,
                                clampedLinearSampler_.get()};
   const TraceFrame frame = traceFrame(
       images_, samplers, slot.uniforms.buffer(), inputs, settings, temporal, terrainShadow,
-      heroClouds ? heroAtlas_->image().view() : VK_NULL_HANDLE, slot.heroClouds.buffer(),
-      heroClouds ? heroAtlas_->noise().view() : VK_NULL_HANDLE);
+      heroClouds ? heroAtlas_->image().view() : VK_NULL_HANDLE, slot.heroClouds.buffer());
   writeSceneDistanceSet(device_, slot.sceneDistance, frame);
   writeMarchSet(device_, slot.march, frame, weatherMap(), slot.counters, slot.shadowParameters,
                 slot.edgeRayList);

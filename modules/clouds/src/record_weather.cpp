@@ -57,26 +57,6 @@ void Context::Impl::recordNoise(VkCommandBuffer cmd) {
   noiseGenerated_ = true;
 }
 
-void Context::Impl::recordHeroNoise(VkCommandBuffer cmd) {
-  const auto& fn = device_.fn();
-  device_.beginLabel(cmd, "clouds: hero cloud noise");
-  const detail::ComputeProgram& program = programs_[Program::HeroNoise];
-  fn.vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, program.find());
-  fn.vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, program.layout(), 0, 1,
-                             &heroNoiseSet_, 0, nullptr);
-  shader::NoiseConstants constants{};
-  constants.seed = info_.noiseSeed;
-  constants.size = static_cast<std::uint32_t>(shader::kHeroNoiseSize);
-  fn.vkCmdPushConstants(cmd, program.layout(), VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof(constants),
-                        &constants);
-  const std::uint32_t n = detail::groupsFor(constants.size, shader::kWorkgroupSize3D);
-  fn.vkCmdDispatch(cmd, n, n, n);
-  detail::memoryBarrier(device_, cmd, detail::kComputeStage, detail::kStorageWrite,
-                        detail::kComputeStage, detail::kStorageRead);
-  heroAtlas_->setNoiseMade();
-  device_.endLabel(cmd);
-}
-
 void Context::Impl::recordNoiseMipChains(VkCommandBuffer cmd) {
   const auto& fn = device_.fn();
   const detail::ComputeProgram& program = programs_[Program::NoiseMip];

@@ -450,12 +450,6 @@ std::vector<clouds::PassTiming> CloudHarness::lastPassTimings() const {
                           : context_->passTimings(frameIndex_ - 1);
 }
 
-std::vector<std::uint8_t> CloudHarness::readHeroNoise() {
-  const auto* atlas = clouds::detail::ContextAccess::impl(*context_).heroAtlas();
-  if (atlas == nullptr) return {};
-  return readTexels(device_, atlas->noise().image(), atlas->noise().extent());
-}
-
 std::vector<std::uint8_t> CloudHarness::readWeatherMap() {
   const auto& image = clouds::detail::ContextAccess::impl(*context_).weatherMap();
   return readTexels(device_, image.image(), image.extent());

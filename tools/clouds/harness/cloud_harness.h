@@ -181,8 +181,6 @@ class CloudHarness {
   std::vector<std::uint8_t> readDetailNoise();
   std::vector<std::uint8_t> readCurlNoise();
   std::vector<std::uint8_t> readWeatherMap();
-  // The hero clouds' up-rez noise (empty without hero cloud assets).
-  std::vector<std::uint8_t> readHeroNoise();
   std::vector<std::uint8_t> readWeatherMaxFine();
 
  private:

@@ -63,11 +63,6 @@ vec4 fetchHeroAtlas(ivec3 t) {
   return texel(gTextures->heroes.atlas,
                (std::size_t(t.z) * e.y + std::size_t(t.y)) * e.x + std::size_t(t.x));
 }
-vec4 fetchHeroNoise(ivec3 t) {
-  const std::size_t n = kHeroNoiseSize;
-  return texel(gTextures->heroes.noise,
-               (std::size_t(t.z) * n + std::size_t(t.y)) * n + std::size_t(t.x));
-}
 // The reference marches without the host's terrain.
 float terrainSunLight(vec3, float) {
   return 1.0f;

@@ -15,7 +15,6 @@ namespace clouds::tools {
 struct CpuHeroClouds {
   std::vector<std::uint8_t> atlas;  // RGBA8, x fastest
   glm::uvec3 extent{0u};
-  std::vector<std::uint8_t> noise;  // kHeroNoiseSize^3 RGBA8 (CloudHarness::readHeroNoise())
   clouds::shader::HeroCloudUniforms uniforms{};
 };
 

@@ -43,8 +43,7 @@ bool parseSize(const std::string& text, glm::uvec2& out) {
 }
 
 // The module's march on the device: the hero cloud alone (a layer of no coverage) at the
-// camera, one frame of every pixel marched to its end (no early exit), absorption only, the
-// voxels without the up-rez noise's erosion; the
+// camera, one frame of every pixel marched to its end (no early exit), absorption only; the
 // opacity is one less the transmittance output. Validation on: any message fails the run.
 // Returns the opacity per pixel, row 0 at the top; empty (and the reason on stderr) on failure.
 std::vector<float> gpuOpacity(const clouds::NvdfVolume& volume,
@@ -76,7 +75,6 @@ std::vector<float> gpuOpacity(const clouds::NvdfVolume& volume,
   clouds::Settings settings = clouds::tools::singleFrame(clouds::Settings{});
   settings.coverage = 0.0f;
   settings.albedo = 0.0f;
-  settings.detailErosion = 0.0f;  // the voxels as they are: no up-rez noise
   settings.extinctionPerMetre = float(extinctionPerMetre);
   settings.densityMultiplier = 1.0f;
   settings.transmittanceCutoff = 0.0f;

@@ -8,8 +8,6 @@
 
 #include "cloud_harness.h"
 #include "cloud_noise.h"
-#include "cloud_types.h"
-#include "clouds/nvdf.h"
 #include "gpu_test.h"
 
 namespace {
@@ -113,59 +111,6 @@ TEST_F(NoiseTiling, ShapeDetailAndCurlTexturesTileOnEveryAxisAndChannel) {
       }
     }
   }
-}
-
-// The hero clouds' noise (four channels: curly alligator and alligator at two frequencies),
-// made on the GPU once a context has hero cloud assets.
-TEST_F(NoiseTiling, HeroCloudNoiseTilesOnEveryAxisAndChannel) {
-  clouds::tools::CloudHarness harness(device(), {16, 16});
-  clouds::NvdfVolume one;
-  one.size = glm::uvec3(1);
-  one.voxelMetres = 10.0f;
-  one.sdfRangeMetres = 10.0f;
-  one.fields = {255, 0, 255, 0};
-  one.signedDistance = {-100};
-  const clouds::NvdfVolume* assets[] = {&one};
-  clouds::Error error;
-  ASSERT_TRUE(harness.context().setHeroCloudAssets(assets, &error)) << error.message;
-  harness.render(clouds::tools::CloudView{}, clouds::Settings{}, {16, 16});
-  const auto noise = harness.readHeroNoise();
-  const std::size_t n = clouds::shader::kHeroNoiseSize;
-  ASSERT_EQ(noise.size(), 4 * n * n * n);
-  for (int channel = 0; channel < 4; ++channel) {
-    double mean = 0.0;
-    for (std::size_t i = std::size_t(channel); i < noise.size(); i += 4) mean += noise[i];
-    mean /= 255.0 * double(n * n * n);
-    EXPECT_GT(mean, 0.02) << "channel " << channel << " is empty";
-    for (int axis = 0; axis < 3; ++axis) {
-      expectTiles(
-          seamStatistics(
-              int(n), int(n), axis,
-              [&](int x, int y, int z) {
-                return noise[4 * ((std::size_t(z) * n + std::size_t(y)) * n + std::size_t(x)) +
-                             std::size_t(channel)] /
-                       255.0;
-              }),
-          "hero noise channel " + std::to_string(channel) + " axis " + std::to_string(axis));
-    }
-  }
-}
-
-// Alligator noise whose lattice period does not match the texture's span fails the statistic;
-// with the matching period it passes (the control for the test above).
-TEST(NoiseTilingControl, TheStatisticCatchesANonTilingAlligatorNoise) {
-  using namespace clouds::shader;
-  const int size = 64;
-  const auto slice = [](int period) {
-    return [period](int x, int y, int) {
-      const vec3 uvw = (vec3(float(x), float(y), 0.0f) + 0.5f) / float(size);
-      // 4 cells across the texture: period 4 wraps with it, period 5 does not.
-      return double(alligatorNoise(uvw * (4.0f / float(period)), period, 9u));
-    };
-  };
-  std::string why;
-  EXPECT_FALSE(tiles(seamStatistics(size, 1, 0, slice(5)), &why)) << "control tiles: " << why;
-  EXPECT_TRUE(tiles(seamStatistics(size, 1, 0, slice(4)), &why)) << why;
 }
 
 TEST(NoiseTilingControl, TheStatisticCatchesANonTilingTexture) {
