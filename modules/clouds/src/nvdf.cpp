@@ -152,7 +152,7 @@ float NvdfVolume::distanceMetres(glm::uvec3 voxel) const {
 }
 
 std::size_t NvdfVolume::deviceBytes() const {
-  return voxelCount() * (kNvdfChannels + kSignedDistanceBytes);
+  return voxelCount() * kNvdfChannels;
 }
 
 glm::vec3 NvdfVolume::boundsMinMetres() const {

@@ -59,7 +59,8 @@ struct NvdfVolume {
   std::size_t voxelIndex(glm::uvec3 voxel) const;
   float field(glm::uvec3 voxel, NvdfChannel channel) const;  // [0, 1]
   float distanceMetres(glm::uvec3 voxel) const;
-  // Bytes the module's GPU copy takes: RGBA8 fields and R16 signed distance, 6 per voxel.
+  // Bytes the module's GPU copy takes: 4 per voxel (its atlas keeps the three fields and the
+  // signed distance at 8 bits, rounded down so that it stays a bound: hero_clouds.h).
   std::size_t deviceBytes() const;
   // The cloud's bounds in its frame (metres): the voxel centres' box grown by one voxel, the
   // reach of trilinear filtering.
