@@ -47,9 +47,8 @@ struct TraceFrame {
   VkImageView outputHistoryOut = VK_NULL_HANDLE;
   bool terrainShadow = false;  // the march reads the terrain's shadow from the shadow map
   bool edgeRays = false;       // detail::marchesEdgeRays()
-  // The march draws hero clouds: their atlas and block. Without them, stand-ins the march's
-  // variant never reads: the shape noise (RGBA8 3D) and the frame's uniforms.
-  bool heroClouds = false;
+  // The hero clouds' atlas and block. Without them, stand-ins the march's variant never reads:
+  // the shape noise (RGBA8 3D) and the frame's uniforms.
   VkImageView heroAtlas = VK_NULL_HANDLE;
   VkBuffer heroBlock = VK_NULL_HANDLE;
 };
@@ -83,7 +82,6 @@ TraceFrame traceFrame(const detail::ModuleImages& im, const TraceSamplers& sampl
           upsampling ? im.outputHistory[temporal.writeHistory].view() : noOutputHistory,
       .terrainShadow = terrainShadow,
       .edgeRays = detail::marchesEdgeRays(settings, temporal),
-      .heroClouds = heroAtlas != VK_NULL_HANDLE,
       .heroAtlas = heroAtlas != VK_NULL_HANDLE ? heroAtlas : im.shapeNoise.view(),
       .heroBlock = heroAtlas != VK_NULL_HANDLE ? heroBlock : uniforms,
   };

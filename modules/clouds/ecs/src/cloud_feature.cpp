@@ -153,7 +153,11 @@ void CloudFeature::reportError(const clouds::Error& error) {
 
 void CloudFeature::placeHeroClouds(clouds::FrameInputs& inputs) {
   if (!hasHeroClouds_) return;
-  heroClouds_ = heroClouds(world_, inputs.cameraPosition, clouds::kMaxHeroClouds);
+  // The shadow pass and the clouds pass of a frame draw the same clouds: chosen once.
+  if (heroFrame_ != inputs.frameIndex) {
+    heroClouds_ = heroClouds(world_, inputs.cameraPosition, clouds::kMaxHeroClouds);
+    heroFrame_ = inputs.frameIndex;
+  }
   inputs.heroClouds = heroClouds_;
 }
 

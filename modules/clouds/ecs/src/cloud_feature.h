@@ -15,6 +15,7 @@
 //   "clouds composite"  applies the result over the scene colour (colour * T + radiance).
 // The module's outputs are imported into the graph so later passes can read them.
 #include <memory>
+#include <optional>
 #include <string>
 
 #include "clouds/clouds.h"
@@ -68,6 +69,7 @@ class CloudFeature final : public engine::render::RenderFeature {
   std::vector<clouds::LightningFlash> flashes_;      // this frame's (FrameInputs points at them)
   std::vector<clouds::LightningBoltSegment> bolts_;  // likewise
   std::vector<clouds::HeroCloud> heroClouds_;        // likewise
+  std::optional<std::uint64_t> heroFrame_;           // the frame heroClouds_ were chosen for
   bool hasHeroClouds_ = false;  // the layer has hero cloud assets (loaded into the context)
   clouds::Outputs imported_;    // the outputs the graph imported
   // The outputs the graph may import: none after a failed prepare(), whose outputs may be

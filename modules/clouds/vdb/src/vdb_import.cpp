@@ -124,9 +124,6 @@ std::optional<VoxelDensityGrid> readGrid(const openvdb::FloatGrid& grid, const s
     fail(error, at + "no active voxels (the grid is empty)");
     return std::nullopt;
   }
-  report.activeMin = glm::ivec3(active.min().x(), active.min().y(), active.min().z());
-  report.activeMax = glm::ivec3(active.max().x(), active.max().y(), active.max().z());
-  report.voxelMetres = float(voxelMetres);
   // One voxel of clear air on each side.
   const openvdb::Coord lowest = active.min() - openvdb::Coord(1);
   const openvdb::Coord extent = active.dim() + openvdb::Coord(2);

@@ -13,6 +13,7 @@
 #include "clouds/nvdf.h"
 #include "clouds/nvdf_build.h"
 #include "crc32.h"
+#include "nvdf_sampler.h"
 
 namespace {
 
@@ -217,46 +218,28 @@ TEST(NvdfBuild, DistanceTransformIsExact) {
   EXPECT_TRUE(std::isinf(clouds::distanceToNearest({false, false}, glm::uvec3(2, 1, 1))[1]));
 }
 
-// Trilinear lookups of the stored fields, as the GPU filters (corners outside the grid: 0 for
-// the profile, the nearest voxel for the distance).
-float filtered(const NvdfVolume& v, glm::vec3 p, bool distance) {
-  const glm::vec3 c = (p - v.originMetres) / v.voxelMetres;
-  const glm::vec3 base = glm::floor(c);
-  const glm::vec3 f = c - base;
-  float sum = 0.0f;
-  for (int corner = 0; corner < 8; ++corner) {
-    const glm::ivec3 o(corner & 1, (corner >> 1) & 1, corner >> 2);
-    const glm::ivec3 at = glm::ivec3(base) + o;
-    const float w = (o.x ? f.x : 1 - f.x) * (o.y ? f.y : 1 - f.y) * (o.z ? f.z : 1 - f.z);
-    const bool outside = glm::any(glm::lessThan(at, glm::ivec3(0))) ||
-                         glm::any(glm::greaterThanEqual(at, glm::ivec3(v.size)));
-    if (distance) {
-      sum +=
-          w * v.distanceMetres(glm::uvec3(glm::clamp(at, glm::ivec3(0), glm::ivec3(v.size) - 1)));
-    } else if (!outside) {
-      sum += w * v.field(glm::uvec3(at), clouds::kNvdfProfile);
-    }
-  }
-  return sum;
-}
-
 // The promise the march relies on: wherever the filtered distance reads d > 0, there is no
 // cloud (filtered profile 0) within d. Probed at random points and random directions.
 TEST(NvdfBuild, SignedDistanceNeverOverstepsCloud) {
   const NvdfVolume v = ball();
+  // The fields filtered as the GPU filters them (the CPU reference's sampler).
+  const clouds::reference::NvdfSampler sampler(v);
+  const auto filtered = [&](glm::vec3 p, bool distance) {
+    return distance ? float(sampler.signedDistanceMetres(p)) : float(sampler.profile(p));
+  };
   std::mt19937 random(3);
   std::uniform_real_distribution<float> unit(0.0f, 1.0f);
   int positive = 0;
   for (int probe = 0; probe < 4000; ++probe) {
     const glm::vec3 p = v.originMetres + glm::vec3(unit(random), unit(random), unit(random)) *
                                              (glm::vec3(v.size) - 1.0f) * v.voxelMetres;
-    const float d = filtered(v, p, true);
+    const float d = filtered(p, true);
     if (d <= 0.0f) continue;
     ++positive;
-    EXPECT_EQ(filtered(v, p, false), 0.0f) << "cloud at a point whose distance reads " << d;
+    EXPECT_EQ(filtered(p, false), 0.0f) << "cloud at a point whose distance reads " << d;
     const glm::vec3 direction =
         glm::normalize(glm::vec3(unit(random), unit(random), unit(random)) - 0.5f);
-    EXPECT_EQ(filtered(v, p + direction * (d * 0.999f * unit(random)), false), 0.0f);
+    EXPECT_EQ(filtered(p + direction * (d * 0.999f * unit(random)), false), 0.0f);
   }
   EXPECT_GT(positive, 200);  // the probes did reach clear air
 }

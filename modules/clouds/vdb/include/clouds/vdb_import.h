@@ -19,9 +19,6 @@ struct VdbImportOptions {
 // What an import found and did, for the tool to print.
 struct VdbImportReport {
   std::string gridName;
-  glm::ivec3 activeMin{0};  // the active voxels' index bounds in the file
-  glm::ivec3 activeMax{0};
-  float voxelMetres = 0.0f;
   std::size_t activeVoxels = 0;
   std::size_t nonFiniteVoxels = 0;    // NaN or infinite values, read as 0
   std::size_t negativeVoxels = 0;     // values below 0, read as 0
