@@ -151,15 +151,26 @@ TEST(Scenes, HeroCloudsArriveInTheDescription) {
   const sample::SceneDescription s = loadSceneDescription(writeScene("hero.json", R"({
     "name": "x", "camera": {"position": [0, 1, 0]},
     "clouds": {"heroClouds": [
-      {"asset": "towering_cumulus", "positionMetres": [10, 20, 30], "scale": 2, "yawDegrees": 45}]}
+      {"asset": "towering_cumulus", "positionMetres": [10, 20, 30], "scale": 2, "yawDegrees": 45,
+       "lifecycle": {"startSeconds": -5, "growSeconds": 90, "matureSeconds": 0,
+                     "dissipateSeconds": 45, "restSeconds": 12, "repeat": false}},
+      {"asset": "arch", "positionMetres": [0, 0, 0]}]}
   })"));
   ASSERT_TRUE(s.clouds);
-  ASSERT_EQ(s.clouds->heroClouds.size(), 1u);
+  ASSERT_EQ(s.clouds->heroClouds.size(), 2u);
   const sample::HeroCloudDescription& h = s.clouds->heroClouds[0];
   EXPECT_EQ(h.shipped, "towering_cumulus");
   EXPECT_EQ(h.positionMetres, glm::dvec3(10, 20, 30));
   EXPECT_EQ(h.scale, 2.0);
   EXPECT_EQ(h.yawDegrees, 45.0);
+  ASSERT_TRUE(h.lifecycle);
+  EXPECT_EQ(h.lifecycle->startSeconds, -5.0);
+  EXPECT_EQ(h.lifecycle->growSeconds, 90.0f);
+  EXPECT_EQ(h.lifecycle->matureSeconds, 0.0f);
+  EXPECT_EQ(h.lifecycle->dissipateSeconds, 45.0f);
+  EXPECT_EQ(h.lifecycle->restSeconds, 12.0f);
+  EXPECT_FALSE(h.lifecycle->repeat);
+  EXPECT_FALSE(s.clouds->heroClouds[1].lifecycle);  // always as authored
 }
 
 TEST(Scenes, MalformedScenesNameFilePathAndReason) {
@@ -260,6 +271,16 @@ TEST(Scenes, MalformedScenesNameFilePathAndReason) {
        R"({"name": "x", "camera": {"position": [0, 1, 0]},
            "clouds": {"heroClouds": [{"asset": "arch"}]}})",
        "clouds.heroClouds[0].positionMetres: is required"},
+      {"hero_life.json",
+       R"({"name": "x", "camera": {"position": [0, 1, 0]},
+           "clouds": {"heroClouds": [{"asset": "arch", "positionMetres": [0, 0, 0],
+                                      "lifecycle": {"growSeconds": 0}}]}})",
+       "clouds.heroClouds[0].lifecycle.growSeconds: must be in [0.1, 1e+06], got 0"},
+      {"hero_life_key.json",
+       R"({"name": "x", "camera": {"position": [0, 1, 0]},
+           "clouds": {"heroClouds": [{"asset": "arch", "positionMetres": [0, 0, 0],
+                                      "lifecycle": {"growthSeconds": 60}}]}})",
+       "clouds.heroClouds[0].lifecycle.growthSeconds"},
       {"atmospherequality.json",
        R"({"name": "x", "camera": {"position": [0, 1, 0], "atmosphereQuality": "ultra"}})",
        "camera.atmosphereQuality: must be one of low, medium, high, reference"},

@@ -8,6 +8,11 @@
 // filtered trilinearly, fading to clear air over the voxel beyond the outermost centres.
 // Positions are camera-relative metres on straight lines from the camera: the host's flat map,
 // on which its terrain stands, not the layer's curved shell.
+//
+// A cloud's life (HeroCloud::growth, ::dissipation; beyond Nubis³'s "pseudomotion") shapes
+// what its voxels hold without new data: a top that rises from its base as it grows, an edge
+// eaten inwards along the signed distance as it grows or dissipates, and a fading density.
+// All three only take cloud away, so the distance field stays a bound the march may jump by.
 #ifndef CLOUDS_CLOUD_HERO_H
 #define CLOUDS_CLOUD_HERO_H
 
@@ -22,7 +27,7 @@ HeroCloudInstance heroCloud(uint index);
 vec4 fetchHeroAtlas(ivec3 texel);  // RGBA8 as [0, 1]
 
 const float kHeroFar = 1e30f;
-// The distance code: (A x 255 - 128) / 127 of the full scale (HeroCloudInstance::scales.y).
+// The distance code: (A x 255 - 128) / 127 of the full scale (kHeroDistanceRangeVoxels).
 const float kHeroDistanceZero = 128.0f;
 // Steps inside a hero cloud's box, in its voxels: the fields change linearly within a voxel.
 const float kHeroStepVoxels = 1.0f;
@@ -54,7 +59,19 @@ FX_INLINE vec4 heroFields(IN(HeroCloudInstance) h, vec3 c) {
     fields += all(equal(at, clamped)) ? vec3(texel) * w : vec3(0.0f);
     code += texel.w * w;
   }
-  return vec4(fields, (code * 255.0f - kHeroDistanceZero) / 127.0f * h.scales.y);
+  const float fullScaleMetres = kHeroDistanceRangeVoxels * h.scales.z;
+  return vec4(fields, (code * 255.0f - kHeroDistanceZero) / 127.0f * fullScaleMetres);
+}
+
+// How much of its voxels' cloud a cloud's life leaves at index coordinate `c`, whose signed
+// distance is `distanceMetres`: in [0, 1], and exactly 1 for a grown cloud that does not
+// dissipate (its top above the box and no erosion: wherever a voxel's profile reaches, the
+// distance reads at least sqrt(3) voxels inside, so the one-voxel edge ramp is saturated).
+FX_INLINE float heroLifeWeight(IN(HeroCloudInstance) h, vec3 c, float distanceMetres) {
+  const float topFeather = max(kHeroTopFeather * float(h.extent.y), 1.0f);
+  const float belowTop = saturate((h.scales.w - c.y) / topFeather);
+  const float insideEdge = saturate((-distanceMetres - h.scales.y) / h.scales.z);
+  return belowTop * insideEdge;
 }
 
 // What the hero clouds hold at a camera-relative point.
@@ -84,11 +101,12 @@ FX_INLINE HeroSample heroField(vec3 relative, IN(CloudUniforms) u) {
     for (int inBox = 0; inBox < (boxMetres == 0.0f ? 1 : 0); ++inBox) {
       const vec4 fields = heroFields(h, c);
       s.clearMetres = min(s.clearMetres, max(fields.w, 0.0f));
-      const float sigma = fields.x * fields.z * h.scales.x * u.extinctionPerMetre;
+      const float profile = fields.x * heroLifeWeight(h, c, fields.w);
+      const float sigma = profile * fields.z * h.scales.x * u.extinctionPerMetre;
       s.sigmaT += sigma;
       if (sigma > densest) {
         densest = sigma;
-        s.profile = fields.x;
+        s.profile = profile;
         s.heightFraction = saturate((c.y + 1.0f) / (size.y + 1.0f));
       }
     }

@@ -449,10 +449,16 @@ const uint kMaxHeroClouds = 8u;
 struct HeroCloudInstance {
   vec4 toIndex[3];  // index coordinate a = dot(toIndex[a].xyz, relative) + toIndex[a].w
   vec4 extent;      // xyz the asset's voxels per axis, w its first slice in the atlas
-  // x the density the fields' 1 stands for (NvdfVolume::densityMultiplier); y the world metres
-  // of the atlas's distance code 1 (its full scale); z the world metres of one voxel; w unused
+  // x the density the fields' 1 stands for (NvdfVolume::densityMultiplier, faded as the cloud
+  // dissipates); y the world metres its life erodes from its edge inwards; z the world metres
+  // of one voxel; w its life's top, an index y (cloud_hero.h's heroLifeWeight())
   vec4 scales;
 };
+// The atlas's distance code's full scale, in voxels of its asset: the longest jump one lookup
+// allows (hero_clouds.h encodes, cloud_hero.h decodes).
+const float kHeroDistanceRangeVoxels = 16.0f;
+// A growing cloud's top fades over this fraction of its box's height (heroLifeWeight()).
+const float kHeroTopFeather = 0.2f;
 struct HeroCloudUniforms {
   uvec4 count;  // x the instances this frame
   HeroCloudInstance instance[kMaxHeroClouds];

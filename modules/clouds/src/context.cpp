@@ -153,6 +153,12 @@ std::string checkHeroClouds(std::span<const HeroCloud> clouds, std::size_t asset
       return field + ".scale = " + std::to_string(c.scale) + ": must be in [0.01, 100]";
     }
     if (!std::isfinite(c.yawRadians)) return field + ".yawRadians: must be finite";
+    if (!(c.growth >= 0.0f && c.growth <= 1.0f)) {
+      return field + ".growth = " + std::to_string(c.growth) + ": must be in [0, 1]";
+    }
+    if (!(c.dissipation >= 0.0f && c.dissipation <= 1.0f)) {
+      return field + ".dissipation = " + std::to_string(c.dissipation) + ": must be in [0, 1]";
+    }
   }
   return {};
 }

@@ -34,7 +34,7 @@ HeroAtlasLayout packHeroAtlas(std::span<const NvdfVolume* const> assets) {
   layout.texels.assign(4 * slice * slices, 0);
   for (std::size_t a = 0; a < assets.size(); ++a) {
     const NvdfVolume& v = *assets[a];
-    const float range = kHeroDistanceRangeVoxels * v.voxelMetres;
+    const float range = shader::kHeroDistanceRangeVoxels * v.voxelMetres;
     for (std::uint32_t z = 0; z < v.size.z; ++z) {
       for (std::uint32_t y = 0; y < v.size.y; ++y) {
         for (std::uint32_t x = 0; x < v.size.x; ++x) {
@@ -53,13 +53,29 @@ HeroAtlasLayout packHeroAtlas(std::span<const NvdfVolume* const> assets) {
   return layout;
 }
 
+HeroLifeShape heroLifeShape(const HeroCloud& cloud, float heightVoxels, float voxelMetres) {
+  const auto ease = [](float x) { return x * x * (3.0f - 2.0f * x); };
+  const float grown = ease(std::clamp(cloud.growth, 0.0f, 1.0f));
+  const float gone = ease(std::clamp(cloud.dissipation, 0.0f, 1.0f));
+  const float feather = std::max(shader::kHeroTopFeather * heightVoxels, 1.0f);
+  const float depthScale = shader::kHeroDistanceRangeVoxels * voxelMetres;
+  HeroLifeShape shape;
+  // The top rises from below the box (-1, where the filter's reach starts) to a feather above
+  // its last voxels, where heroLifeWeight() reads 1 throughout.
+  shape.topIndex = -1.0f + grown * (heightVoxels + feather + 1.0f);
+  shape.erosionMetres =
+      std::min((1.0f - grown) * kGrowthErosion + gone * kDissipationErosion, kMostErosion) *
+      depthScale;
+  shape.densityFactor = 1.0f - gone;
+  return shape;
+}
+
 shader::HeroCloudUniforms heroCloudUniforms(const std::vector<HeroAsset>& assets,
                                             std::span<const HeroCloud> clouds,
                                             const glm::dvec3& cameraPosition) {
   shader::HeroCloudUniforms block{};
-  block.count.x = static_cast<std::uint32_t>(clouds.size());
-  for (std::size_t i = 0; i < clouds.size(); ++i) {
-    const HeroCloud& cloud = clouds[i];
+  for (const HeroCloud& cloud : clouds) {
+    if (!(cloud.growth > 0.0f && cloud.dissipation < 1.0f)) continue;
     const HeroAsset& asset = assets[cloud.asset];
     // world = R (local x scale) + position, R a turn about +y; so
     // index = (R^T (world - position) / scale - origin) / voxel, made camera-relative.
@@ -70,7 +86,7 @@ shader::HeroCloudUniforms heroCloudUniforms(const std::vector<HeroAsset>& assets
     const glm::dmat3 toIndex = glm::transpose(turn) * perMetre;
     const glm::dvec3 offset = -(toIndex * (cloud.positionMetres - cameraPosition)) -
                               glm::dvec3(asset.originMetres) / double(asset.voxelMetres);
-    shader::HeroCloudInstance& h = block.instance[i];
+    shader::HeroCloudInstance& h = block.instance[block.count.x++];
     for (int row = 0; row < 3; ++row) {
       // glm is column-major: toIndex[column][row].
       h.toIndex[row] = glm::vec4(float(toIndex[0][row]), float(toIndex[1][row]),
@@ -78,8 +94,9 @@ shader::HeroCloudUniforms heroCloudUniforms(const std::vector<HeroAsset>& assets
     }
     h.extent = glm::vec4(glm::vec3(asset.size), float(asset.firstSlice));
     const float voxelWorld = asset.voxelMetres * cloud.scale;
-    h.scales =
-        glm::vec4(asset.densityMultiplier, kHeroDistanceRangeVoxels * voxelWorld, voxelWorld, 0.0f);
+    const HeroLifeShape life = heroLifeShape(cloud, float(asset.size.y), voxelWorld);
+    h.scales = glm::vec4(asset.densityMultiplier * life.densityFactor, life.erosionMetres,
+                         voxelWorld, life.topIndex);
   }
   return block;
 }

@@ -19,9 +19,6 @@
 
 namespace clouds::detail {
 
-// The A channel's full scale, in voxels of its asset: the longest jump one lookup allows.
-inline constexpr float kHeroDistanceRangeVoxels = 16.0f;
-
 struct HeroAsset {
   glm::uvec3 size{0u};
   std::uint32_t firstSlice = 0;  // in the atlas
@@ -42,7 +39,25 @@ std::uint8_t heroDistanceCode(float metres, float rangeMetres);
 // The atlas of `assets` (each valid: validateNvdf()).
 HeroAtlasLayout packHeroAtlas(std::span<const NvdfVolume* const> assets);
 
-// This frame's instances as the march reads them: camera-relative, in double precision.
+// What a cloud's life (HeroCloud::growth, ::dissipation) makes of its instance: the uniforms
+// cloud_hero.h's heroLifeWeight() reads. Both eased (smoothstep), so a life that changes at a
+// steady rate starts and stops gently.
+struct HeroLifeShape {
+  float topIndex = 0.0f;       // index y above which the cloud is not (yet) grown
+  float erosionMetres = 0.0f;  // world metres eaten from its edge inwards
+  float densityFactor = 1.0f;  // its density, faded as it dissipates
+};
+// Erosion, as fractions of the distance code's full scale (kHeroDistanceRangeVoxels): a newborn
+// cloud is its thickest cores; a dissipating one thins from its edge in. Kept below the full
+// scale: there every deep voxel reads the same distance, and the whole core would go within one
+// voxel of erosion instead of fading last.
+inline constexpr float kGrowthErosion = 0.5f;
+inline constexpr float kDissipationErosion = 0.75f;
+inline constexpr float kMostErosion = 0.9f;
+HeroLifeShape heroLifeShape(const HeroCloud& cloud, float heightVoxels, float voxelMetres);
+
+// This frame's instances as the march reads them: camera-relative, in double precision. A
+// cloud its life leaves empty (growth 0, or dissipation 1) is left out.
 shader::HeroCloudUniforms heroCloudUniforms(const std::vector<HeroAsset>& assets,
                                             std::span<const HeroCloud> clouds,
                                             const glm::dvec3& cameraPosition);

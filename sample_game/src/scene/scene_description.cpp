@@ -60,6 +60,18 @@ TerrainDescription readTerrain(const JsonReader& r, const std::filesystem::path&
   return t;
 }
 
+clouds::HeroCloudLifecycle readHeroCloudLifecycle(const JsonReader& r) {
+  clouds::HeroCloudLifecycle l;
+  l.startSeconds = r.number("startSeconds", -1e9, 1e9, l.startSeconds);
+  l.growSeconds = float(r.number("growSeconds", 0.1, 1e6, l.growSeconds));
+  l.matureSeconds = float(r.number("matureSeconds", 0.0, 1e6, l.matureSeconds));
+  l.dissipateSeconds = float(r.number("dissipateSeconds", 0.1, 1e6, l.dissipateSeconds));
+  l.restSeconds = float(r.number("restSeconds", 0.0, 1e6, l.restSeconds));
+  l.repeat = r.boolean("repeat", l.repeat);
+  r.finish();
+  return l;
+}
+
 HeroCloudDescription readHeroCloud(const JsonReader& r, const std::filesystem::path& sceneDir) {
   HeroCloudDescription h;
   const std::string asset = r.string("asset");
@@ -79,6 +91,7 @@ HeroCloudDescription readHeroCloud(const JsonReader& r, const std::filesystem::p
   h.positionMetres = r.vec3("positionMetres", -1e7, 1e7);
   h.scale = r.number("scale", 0.01, 100.0, h.scale);
   h.yawDegrees = r.number("yawDegrees", -360.0, 360.0, h.yawDegrees);
+  if (r.has("lifecycle")) h.lifecycle = readHeroCloudLifecycle(r.object("lifecycle"));
   r.finish();
   return h;
 }

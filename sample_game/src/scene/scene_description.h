@@ -11,6 +11,7 @@
 #include "atmosphere/atmosphere.h"
 #include "clouds/clouds.h"
 #include "clouds/ecs/lightning.h"
+#include "clouds/hero_cloud_life.h"
 
 namespace sample {
 
@@ -55,6 +56,8 @@ struct HeroCloudDescription {
   glm::dvec3 positionMetres{0.0};  // world position of the cloud's own origin
   double scale = 1.0;              // [0.01, 100]
   double yawDegrees = 0.0;         // a turn about the vertical
+  // Its life on the game clock: grows, stays, dissipates (and again, when it repeats).
+  std::optional<clouds::HeroCloudLifecycle> lifecycle;
 };
 inline constexpr const char* kShippedHeroClouds[] = {"towering_cumulus", "cumulonimbus", "arch"};
 

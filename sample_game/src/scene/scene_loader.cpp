@@ -93,7 +93,7 @@ LoadedHeroClouds loadHeroClouds(const SceneDescription& scene,
       cloud.positionMetres = hero.positionMetres;
       cloud.scale = static_cast<float>(hero.scale);
       cloud.yawRadians = static_cast<float>(glm::radians(hero.yawDegrees));
-      loaded.placements.push_back(cloud);
+      loaded.placements.push_back({cloud, hero.lifecycle});
     }
   }
   if (userCloud) {
@@ -104,7 +104,7 @@ LoadedHeroClouds loadHeroClouds(const SceneDescription& scene,
     engine::log::info("hero cloud " + userCloud->string() + ": placed with its origin at (" +
                       std::to_string(std::lround(p.x)) + ", " + std::to_string(std::lround(p.y)) +
                       ", " + std::to_string(std::lround(p.z)) + ") m, ahead of the camera");
-    loaded.placements.push_back(cloud);
+    loaded.placements.push_back({cloud, std::nullopt});
   }
   return loaded;
 }
@@ -209,8 +209,10 @@ void populateScene(ecs::App& app, const SceneDescription& scene,
         layer, clouds::ecs::CloudLayer{scene.clouds->settings, scene.clouds->noiseSeed,
                                        scene.clouds->weatherMap, heroClouds.assets});
     // Hero clouds, as data: each an entity placing one of the layer's assets.
-    for (const clouds::HeroCloud& cloud : heroClouds.placements) {
-      world.emplace<clouds::HeroCloud>(world.create(), cloud);
+    for (const PlacedHeroCloud& placed : heroClouds.placements) {
+      const ecs::Entity entity = world.create();
+      world.emplace<clouds::HeroCloud>(entity, placed.cloud);
+      if (placed.lifecycle) world.emplace<clouds::HeroCloudLifecycle>(entity, *placed.lifecycle);
     }
     // A storm, as data: the clouds module adds its lightning system only when this exists.
     if (scene.lightning) {

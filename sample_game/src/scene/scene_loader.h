@@ -40,9 +40,13 @@ std::optional<LoadedTerrain> loadTerrain(
     const std::optional<std::filesystem::path>& terrainOverride);
 
 // The hero clouds' assets, read and checked, and where the scene places them.
+struct PlacedHeroCloud {
+  clouds::HeroCloud cloud;                              // `asset` indexes LoadedHeroClouds::assets
+  std::optional<clouds::HeroCloudLifecycle> lifecycle;  // none: always as authored
+};
 struct LoadedHeroClouds {
   std::vector<std::shared_ptr<const clouds::NvdfVolume>> assets;
-  std::vector<clouds::HeroCloud> placements;  // `asset` indexes `assets`
+  std::vector<PlacedHeroCloud> placements;
 };
 
 // The scene's hero clouds (shipped ones from `shippedDir`, the baked assets_src/hero_clouds)

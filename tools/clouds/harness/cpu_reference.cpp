@@ -149,6 +149,13 @@ CloudFrame renderCpuReference(const CpuTextures& textures, const CloudUniforms& 
   return frame;
 }
 
+CpuHeroScope::CpuHeroScope(const CpuTextures& textures) {
+  gTextures = &textures;
+}
+CpuHeroScope::~CpuHeroScope() {
+  gTextures = nullptr;
+}
+
 glm::vec4 cpuShadowTexel(const CpuTextures& textures, const CloudUniforms& u,
                          const ShadowMapConstants& c, glm::uvec2 texel, bool emptySpaceSkipping) {
   gTextures = &textures;

@@ -59,6 +59,17 @@ double cpuSunOpticalDepth(const CpuTextures& textures,
                           const clouds::shader::CloudUniforms& uniforms, const glm::vec3& relative,
                           const glm::vec3& light, float stepMetres);
 
+// The shared model's hero-cloud functions (cloud_hero.h) read `textures` while one of these
+// lives, on the thread that made it: for tests of the voxel model itself. No other CPU
+// reference call may run meanwhile.
+class CpuHeroScope {
+ public:
+  explicit CpuHeroScope(const CpuTextures& textures);
+  ~CpuHeroScope();
+  CpuHeroScope(const CpuHeroScope&) = delete;
+  CpuHeroScope& operator=(const CpuHeroScope&) = delete;
+};
+
 // A terrain heightfield on the CPU: altitudes (m), row-major, row 0 at the image's v = 0
 // (world z = origin.y), read as a linear sampler clamped to the edge reads it.
 struct CpuHeightfield {

@@ -4,6 +4,7 @@
 
 #include "clouds/ecs/cloud_components.h"
 #include "clouds/ecs/lightning.h"
+#include "clouds/hero_cloud_life.h"
 #include "engine/ecs/frame_time.h"
 #include "engine/render/scene_components.h"
 
@@ -58,8 +59,18 @@ std::vector<clouds::HeroCloud> heroClouds(engine::ecs::World& world,
                                           const glm::dvec3& cameraPosition,
                                           std::uint32_t capacity) {
   std::vector<clouds::HeroCloud> clouds;
+  const double now = world.ctx().get<engine::ecs::FrameTime>().elapsedSeconds;
   world.view<const clouds::HeroCloud>().each(
-      [&](const clouds::HeroCloud& cloud) { clouds.push_back(cloud); });
+      [&](engine::ecs::Entity entity, const clouds::HeroCloud& cloud) {
+        clouds::HeroCloud placed = cloud;
+        if (const auto* lifecycle = world.tryGet<const clouds::HeroCloudLifecycle>(entity)) {
+          const clouds::HeroCloudLife life = clouds::heroCloudLife(*lifecycle, now);
+          placed.growth = life.growth;
+          placed.dissipation = life.dissipation;
+        }
+        // A cloud its life leaves empty takes no place among the nearest.
+        if (placed.growth > 0.0f && placed.dissipation < 1.0f) clouds.push_back(placed);
+      });
   const auto distance = [&](const clouds::HeroCloud& c) {
     return glm::length(c.positionMetres - cameraPosition);
   };

@@ -423,11 +423,17 @@ struct NvdfVolume;  // clouds/nvdf.h
 // A hero cloud placed in the world this frame (Nubis³'s voxel clouds): one of the assets the
 // host gave Context::setHeroCloudAssets(), its frame's origin at `positionMetres`, scaled and
 // turned about the vertical. The march draws it with the layer, by depth, in the same image.
+// Its life changes it over minutes with the same voxels (clouds/hero_cloud_life.h has a
+// timeline): growing, its top rises from its base and its edge swells from its cores out;
+// dissipating, it thins from its edge in and fades. Both change it continuously, so a host
+// that moves them a little each frame never makes it pop.
 struct HeroCloud {
   std::uint32_t asset = 0;         // index into the last setHeroCloudAssets() list
   glm::dvec3 positionMetres{0.0};  // world, finite
   float scale = 1.0f;              // [0.01, 100]: world metres per metre of the asset
   float yawRadians = 0.0f;         // finite: a turn about +y, taking +z towards +x
+  float growth = 1.0f;             // [0, 1]: 0 not yet there, 1 as authored
+  float dissipation = 0.0f;        // [0, 1]: 0 as authored, 1 gone
 };
 inline constexpr std::uint32_t kMaxHeroClouds = 8;  // FrameInputs::heroClouds per frame
 

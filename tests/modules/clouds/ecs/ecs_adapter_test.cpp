@@ -61,6 +61,46 @@ TEST(CloudsEcsAdapter, TheNearestHeroCloudsAreDrawn) {
   EXPECT_TRUE(clouds::ecs::heroClouds(w.world, camera, 0).empty());
 }
 
+// A hero cloud with a lifecycle lives it on the frame's clock; while it is not there (before
+// it grows, after it dissipates) it takes no place among the nearest.
+TEST(CloudsEcsAdapter, HeroCloudsLiveTheirLifecycles) {
+  AdapterWorld w;
+  clouds::HeroCloud near;
+  near.asset = 1;
+  near.positionMetres = {0.0, 2000.0, -500.0};
+  const engine::ecs::Entity living = w.world.create();
+  w.world.emplace<clouds::HeroCloud>(living, near);
+  clouds::HeroCloudLifecycle life;
+  life.startSeconds = 10.0;
+  life.growSeconds = 20.0f;
+  life.matureSeconds = 30.0f;
+  life.dissipateSeconds = 40.0f;
+  life.repeat = false;
+  w.world.emplace<clouds::HeroCloudLifecycle>(living, life);
+  clouds::HeroCloud far = near;
+  far.asset = 2;
+  far.positionMetres.z = -9000.0;
+  w.world.emplace<clouds::HeroCloud>(w.world.create(), far);
+
+  const glm::dvec3 camera(0.0, 2000.0, 0.0);
+  auto& time = w.world.ctx().get<engine::ecs::FrameTime>();
+  const auto drawnAt = [&](double seconds) {
+    time.elapsedSeconds = seconds;
+    return clouds::ecs::heroClouds(w.world, camera, 1);
+  };
+  EXPECT_EQ(drawnAt(5.0).front().asset, 2u);  // not yet there: the far one is the nearest
+  std::vector<clouds::HeroCloud> drawn = drawnAt(15.0);
+  EXPECT_EQ(drawn.front().asset, 1u);
+  EXPECT_FLOAT_EQ(drawn.front().growth, 0.25f);
+  drawn = drawnAt(80.0);
+  EXPECT_EQ(drawn.front().growth, 1.0f);
+  EXPECT_FLOAT_EQ(drawn.front().dissipation, 0.5f);
+  EXPECT_EQ(drawnAt(200.0).front().asset, 2u);  // dissipated
+  // One without a lifecycle is as authored.
+  EXPECT_EQ(drawnAt(200.0).front().growth, 1.0f);
+  EXPECT_EQ(drawnAt(200.0).front().dissipation, 0.0f);
+}
+
 TEST(CloudsEcsAdapter, TheCamerasPresetDecidesTheSettings) {
   AdapterWorld w;
   clouds::Settings settings = clouds::ecs::cloudSettings(w.world);

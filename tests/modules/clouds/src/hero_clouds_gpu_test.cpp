@@ -9,6 +9,7 @@
 
 #include "cloud_gpu_fixture.h"
 #include "cloud_harness.h"
+#include "cloud_hero.h"
 #include "clouds/nvdf_build.h"
 #include "context_access.h"
 #include "cpu_reference.h"
@@ -244,6 +245,12 @@ TEST_F(HeroClouds, BadInputsAreRefusedByName) {
   cloud = aheadOfTheCamera();
   cloud.yawRadians = INFINITY;
   refused(cloud, "FrameInputs.heroClouds[0].yawRadians");
+  cloud = aheadOfTheCamera();
+  cloud.growth = 1.5f;
+  refused(cloud, "FrameInputs.heroClouds[0].growth = 1.5");
+  cloud = aheadOfTheCamera();
+  cloud.dissipation = std::nan("");
+  refused(cloud, "FrameInputs.heroClouds[0].dissipation");
   CloudView many = heroViews()[0].view;
   many.heroClouds.assign(clouds::kMaxHeroClouds + 1, aheadOfTheCamera());
   EXPECT_NE(harness().tryRender(many, heroOnly(), kExtent).find("more than the 8"),
@@ -358,6 +365,191 @@ TEST_F(HeroCloudCost, TheSignedDistanceSavesSamplesNotAccuracy) {
       skippedDb, marchedDb, fraction);
   EXPECT_GE(skippedDb, marchedDb - 0.5);
   EXPECT_LT(fraction, 0.5);
+}
+
+// A cloud's life (HeroCloud::growth, ::dissipation) on the CPU, with the shared model's own
+// functions: the cumulus at the origin of a camera at the origin, so camera-relative points
+// are its frame's metres (its base at y = 0, its core about 400 m up, 500 m in radius).
+class HeroLife {
+ public:
+  explicit HeroLife(clouds::HeroCloud cloud) {
+    const clouds::NvdfVolume* list[] = {&cumulus()};
+    clouds::detail::HeroAtlasLayout layout = clouds::detail::packHeroAtlas(list);
+    textures_.heroes.atlas = std::move(layout.texels);
+    textures_.heroes.extent =
+        glm::uvec3(layout.extent.width, layout.extent.height, layout.extent.depth);
+    textures_.heroes.uniforms =
+        clouds::detail::heroCloudUniforms(layout.assets, {&cloud, 1}, glm::dvec3(0.0));
+    uniforms_.extinctionPerMetre = 0.004f;  // about 3 optical depths through the core
+  }
+  bool present() const { return textures_.heroes.uniforms.count.x == 1; }
+  // The profile its voxels hold at index coordinate `c`, and the weight its life gives it.
+  glm::vec2 profileAndWeight(glm::vec3 c) const {
+    const clouds::tools::CpuHeroScope scope(textures_);
+    const clouds::shader::HeroCloudInstance& h = textures_.heroes.uniforms.instance[0];
+    const glm::vec4 fields = clouds::shader::heroFields(h, c);
+    return {fields.x, clouds::shader::heroLifeWeight(h, c, fields.w)};
+  }
+  float extinction(glm::vec3 metres) const {
+    const clouds::tools::CpuHeroScope scope(textures_);
+    return clouds::shader::heroField(metres, uniforms_).sigmaT;
+  }
+  // Transmittance along x through the cloud at height y and depth z (m), in 5 m steps.
+  float transmittanceAlongX(float y, float z) const {
+    const clouds::tools::CpuHeroScope scope(textures_);
+    float tau = 0.0f;
+    for (float x = -700.0f; x <= 700.0f; x += 5.0f) {
+      tau += clouds::shader::heroField(glm::vec3(x, y, z), uniforms_).sigmaT * 5.0f;
+    }
+    return std::exp(-tau);
+  }
+  // How far in from x = -700 m the first cloud lies along that line (m).
+  float firstCloudAlongX(float y, float z) const {
+    for (float x = -700.0f; x <= 700.0f; x += 2.0f) {
+      if (extinction({x, y, z}) > 0.0f) return x + 700.0f;
+    }
+    return 1400.0f;
+  }
+
+ private:
+  clouds::tools::CpuTextures textures_;
+  clouds::shader::CloudUniforms uniforms_{};
+};
+
+clouds::HeroCloud living(float growth, float dissipation) {
+  clouds::HeroCloud cloud;
+  cloud.growth = growth;
+  cloud.dissipation = dissipation;
+  return cloud;
+}
+
+// Grown and not dissipating, a cloud is its voxels: wherever their profile reaches, its life
+// weighs exactly 1 (so the life costs a grown cloud's picture nothing, to the bit), at any
+// scale.
+TEST(HeroCloudLives, AGrownCloudIsItsVoxels) {
+  for (const float scale : {0.01f, 1.0f, 37.0f}) {
+    clouds::HeroCloud cloud = living(1.0f, 0.0f);
+    cloud.scale = scale;
+    const HeroLife life(cloud);
+    int reached = 0;
+    for (float z = -1.0f; z <= 48.0f; z += 0.61f) {
+      for (float y = -1.0f; y <= 40.0f; y += 0.53f) {
+        for (float x = -1.0f; x <= 48.0f; x += 0.67f) {
+          const glm::vec2 at = life.profileAndWeight({x, y, z});
+          if (at.x == 0.0f) continue;
+          ++reached;
+          ASSERT_EQ(at.y, 1.0f) << scale << " at (" << x << ", " << y << ", " << z << ")";
+        }
+      }
+    }
+    EXPECT_GT(reached, 10000);
+  }
+}
+
+// Growing, its top rises from its base: half grown, nothing in its upper part (where the grown
+// cloud is thick), and cloud near its base.
+TEST(HeroCloudLives, GrowingRisesFromTheBase) {
+  const HeroLife grown(living(1.0f, 0.0f));
+  const HeroLife growing(living(0.35f, 0.0f));
+  EXPECT_LT(grown.transmittanceAlongX(650.0f, 0.0f), 0.5f);
+  EXPECT_EQ(growing.transmittanceAlongX(650.0f, 0.0f), 1.0f);
+  EXPECT_LT(growing.transmittanceAlongX(120.0f, 0.0f), 0.9f);
+  const HeroLife newborn(living(0.0f, 0.0f));
+  EXPECT_FALSE(newborn.present());  // not drawn at all
+}
+
+// Growing, it also swells from its cores out (its edge lies further in than the grown
+// cloud's), and dissipating it thins from the edge in: at its edge nothing, in its core the
+// same cloud, faded, to the last.
+TEST(HeroCloudLives, ItsEdgeMovesAlongTheDistanceField) {
+  const HeroLife grown(living(1.0f, 0.0f));
+  const HeroLife growing(living(0.35f, 0.0f));
+  const float grownEdge = grown.firstCloudAlongX(150.0f, 0.0f);
+  EXPECT_GT(growing.firstCloudAlongX(150.0f, 0.0f), grownEdge + 50.0f);
+
+  const HeroLife dissipating(living(1.0f, 0.5f));
+  const glm::vec3 edge(grownEdge - 700.0f + 20.0f, 150.0f, 0.0f);
+  const glm::vec3 core(0.0f, 400.0f, 0.0f);
+  ASSERT_GT(grown.extinction(edge), 0.0f);
+  EXPECT_EQ(dissipating.extinction(edge), 0.0f);
+  // Half dissipated (eased: 0.5), the core keeps its shape at half its density.
+  EXPECT_NEAR(dissipating.extinction(core), 0.5f * grown.extinction(core),
+              1e-6f * grown.extinction(core));
+  // Nearly gone, the core is the last of it: thin, and still there.
+  const HeroLife fading(living(1.0f, 0.95f));
+  EXPECT_GT(fading.extinction(core), 0.0f);
+  EXPECT_LT(fading.extinction(core), 0.05f * grown.extinction(core));
+  const HeroLife gone(living(1.0f, 1.0f));
+  EXPECT_FALSE(gone.present());
+}
+
+// No pops: as growth runs 0 -> 1 and then dissipation 0 -> 1, the transmittance of each line
+// through the cloud changes step by step in proportion to the step. Halving the step halves
+// each line's largest change (a jump anywhere would not shrink); so the default life (300 s to
+// grow and to dissipate, HeroCloudLifecycle) at 30 frames a second changes no line by a
+// visible 1/255 from one frame to the next.
+TEST(HeroCloudLives, ALifeNeverPops) {
+  // Height and depth (m) of lines along x: base, flanks, core, cap.
+  const std::vector<glm::vec2> lines = {
+      {120.0f, 0.0f},   {300.0f, -200.0f}, {450.0f, 150.0f},  {600.0f, 0.0f}, {750.0f, 60.0f},
+      {300.0f, 380.0f}, {20.0f, -90.0f},   {500.0f, -330.0f}, {790.0f, 0.0f}, {400.0f, 0.0f}};
+  const auto largestChanges = [&](int steps) {
+    std::vector<float> largest(lines.size(), 0.0f);
+    std::vector<float> previous(lines.size(), 1.0f);  // growth 0: clear
+    for (int k = 1; k <= 2 * steps; ++k) {
+      const float growth = std::min(float(k) / float(steps), 1.0f);
+      const float dissipation = std::max(float(k - steps) / float(steps), 0.0f);
+      const HeroLife life(living(growth, dissipation));
+      for (std::size_t i = 0; i < lines.size(); ++i) {
+        const float t = life.present() ? life.transmittanceAlongX(lines[i].x, lines[i].y) : 1.0f;
+        largest[i] = std::max(largest[i], std::abs(t - previous[i]));
+        previous[i] = t;
+      }
+    }
+    return largest;
+  };
+  const std::vector<float> coarse = largestChanges(160);
+  const std::vector<float> fine = largestChanges(320);
+  float worst = 0.0f;
+  for (std::size_t i = 0; i < lines.size(); ++i) {
+    std::printf(
+        "line at %4.0f m up, %4.0f m deep: largest change a step %.4f (160 steps a "
+        "phase), %.4f (320)\n",
+        lines[i].x, lines[i].y, coarse[i], fine[i]);
+    ASSERT_GT(coarse[i], 1e-3f) << "every line must cross the cloud";
+    EXPECT_LT(fine[i], 0.6f * coarse[i]) << "a jump on the line at " << lines[i].x << " m";
+    worst = std::max(worst, fine[i]);
+  }
+  const float framesAPhase = 300.0f * 30.0f;
+  EXPECT_LT(worst * 320.0f / framesAPhase, 1.0f / 255.0f);
+}
+
+// The GPU lives a cloud's life as the CPU reference does: a growing and a dissipating cumulus,
+// outside at noon, at >= 40 dB, each less cloud than the grown one and more than none.
+TEST_F(HeroClouds, ALifeMatchesTheCpuReference) {
+  const Assets assets(harness().context());
+  HeroView c = heroViews()[0];
+  const clouds::Settings settings = clouds::tools::singleFrame(c.settings);
+  harness().cut();
+  const double grown = meanOpacity(harness().render(c.view, settings, kExtent));
+  for (const glm::vec2 life : {glm::vec2(0.45f, 0.0f), glm::vec2(1.0f, 0.6f)}) {
+    c.view.heroClouds[0].growth = life.x;
+    c.view.heroClouds[0].dissipation = life.y;
+    harness().cut();
+    const CloudFrame gpu = harness().render(c.view, settings, kExtent);
+    const clouds::tools::CpuTextures textures =
+        withHeroes(clouds::tools::readTextures(harness()), impl());
+    const CloudFrame cpu = clouds::tools::renderCpuReference(textures, impl().lastUniforms(),
+                                                             settings, harness().lastDepth());
+    float peak = 1.0f;
+    for (const glm::vec4& p : cpu.radiance) peak = std::max({peak, p.r, p.g, p.b});
+    const double psnr = clouds::tools::psnr(gpu.radiance, cpu.radiance, peak);
+    std::printf("growth %.2f, dissipation %.2f: %.1f dB, mean opacity %.3f (grown %.3f)\n", life.x,
+                life.y, psnr, meanOpacity(cpu), grown);
+    EXPECT_GE(psnr, 40.0);
+    EXPECT_GT(meanOpacity(gpu), 0.1 * grown);
+    EXPECT_LT(meanOpacity(gpu), 0.9 * grown);
+  }
 }
 
 }  // namespace

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "clouds/clouds.h"
+#include "clouds/hero_cloud_life.h"
 #include "clouds/nvdf.h"
 
 namespace clouds::ecs {
@@ -18,8 +19,9 @@ struct CloudLayer {
   std::uint32_t noiseSeed = 1;
   std::optional<std::filesystem::path> weatherMap;  // painted weather (PNG), else procedural
   // The hero clouds' assets, read and validated when the scene loaded. Entities with a
-  // clouds::HeroCloud component place them (its `asset` indexes this list); each frame draws
-  // the kMaxHeroClouds nearest the camera. None: the module loads no atlas and runs no hero march.
+  // clouds::HeroCloud component place them (its `asset` indexes this list), and a
+  // clouds::HeroCloudLifecycle beside it makes one come and go; each frame draws the
+  // kMaxHeroClouds nearest the camera. None: the module loads no atlas and runs no hero march.
   std::vector<std::shared_ptr<const clouds::NvdfVolume>> heroCloudAssets;
 };
 

@@ -57,7 +57,9 @@ std::vector<clouds::LightningBoltSegment> lightningBolts(engine::ecs::World& wor
                                                          std::uint32_t capacity);
 
 // The hero clouds this frame draws: the entities with a clouds::HeroCloud, the `capacity`
-// nearest to `cameraPosition` (world metres), nearest first.
+// nearest to `cameraPosition` (world metres), nearest first. An entity that also has a
+// clouds::HeroCloudLifecycle lives it on FrameTime's clock; while its life leaves it empty
+// (not yet grown, or dissipated) it is not drawn.
 std::vector<clouds::HeroCloud> heroClouds(engine::ecs::World& world,
                                           const glm::dvec3& cameraPosition, std::uint32_t capacity);
 
