@@ -25,6 +25,7 @@ FX_SHADER_BEGIN(clouds::shader)
 uint heroCloudCount();
 HeroCloudInstance heroCloud(uint index);
 vec4 fetchHeroAtlas(ivec3 texel);  // RGBA8 as [0, 1]
+bool heroLivesCompiled();          // the kHeroCloudsLiving variant (the CPU: always)
 
 const float kHeroFar = 1e30f;
 // The distance code: (A x 255 - 128) / 127 of the full scale (kHeroDistanceRangeVoxels).
@@ -101,7 +102,11 @@ FX_INLINE HeroSample heroField(vec3 relative, IN(CloudUniforms) u) {
     for (int inBox = 0; inBox < (boxMetres == 0.0f ? 1 : 0); ++inBox) {
       const vec4 fields = heroFields(h, c);
       s.clearMetres = min(s.clearMetres, max(fields.w, 0.0f));
-      const float profile = fields.x * heroLifeWeight(h, c, fields.w);
+      // A cloud without erosion is grown and not dissipating: its life weighs exactly 1 (see
+      // heroLifeWeight()), so it skips it; a frame without living clouds compiles it out.
+      const float life =
+          heroLivesCompiled() && h.scales.y > 0.0f ? heroLifeWeight(h, c, fields.w) : 1.0f;
+      const float profile = fields.x * life;
       const float sigma = profile * fields.z * h.scales.x * u.extinctionPerMetre;
       s.sigmaT += sigma;
       if (sigma > densest) {

@@ -50,6 +50,9 @@ layout(binding = kShadowHeroClouds, std140) uniform HeroClouds { HeroCloudUnifor
 uint heroCloudCount() {
   return kHeroClouds != 0u ? heroClouds[CLOUDS_FRAME_UNIFORMS_INDEX].count.x : 0u;
 }
+bool heroLivesCompiled() {
+  return kHeroClouds == kHeroCloudsLiving;
+}
 HeroCloudInstance heroCloud(uint index) {
   return heroClouds[CLOUDS_FRAME_UNIFORMS_INDEX].instance[index];
 }

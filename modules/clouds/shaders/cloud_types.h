@@ -139,7 +139,7 @@ const uint kSpecEmptySpace = 6u;          // 0/1: skip empty weather cells
 const uint kSpecTerrainShadow = 7u;       // 0/1: the terrain's shadow takes the sun from clouds
 const uint kSpecLightReuse = 8u;          // 0/1: the sun's optical depth on every other step
 const uint kSpecEdgeRays = 9u;            // kEdgeRays*: more rays for tiles on silhouettes
-const uint kSpecHeroClouds = 10u;         // 0/1: hero clouds (FrameInputs::heroClouds)
+const uint kSpecHeroClouds = 10u;         // kHeroClouds*: hero clouds (FrameInputs::heroClouds)
 const uint kMarchSpecCount = 11u;
 // The variants of kSpecEdgeRays: none; the tiles' march, which lists the edge tiles; the
 // edge rays' march, over that list (an indirect dispatch).
@@ -170,7 +170,7 @@ const uint kGodRaysMaskHaze = 1u;  // the haze's Mie in-scattering, masked
 const uint kGodRaysGlow = 2u;      // the fallback without a haze: a glow along the clear paths
 // cloud_shadow_map.comp
 const uint kSpecShadowEmptySpace = 0u;  // 0/1: skip empty weather cells
-const uint kSpecShadowHeroClouds = 1u;  // 0/1: hero clouds cast into the map too
+const uint kSpecShadowHeroClouds = 1u;  // kHeroClouds*: hero clouds cast into the map too
 const uint kShadowSpecCount = 2u;
 // The history variants of kSpecHistory and kSpecOutputHistory.
 const uint kHistoryNone = 0u;
@@ -454,6 +454,13 @@ struct HeroCloudInstance {
   // of one voxel; w its life's top, an index y (cloud_hero.h's heroLifeWeight())
   vec4 scales;
 };
+// The hero-cloud variants of the march and the shadow map (kSpecHeroClouds,
+// kSpecShadowHeroClouds): none; hero clouds as authored; and some living (growing or
+// dissipating), whose life the field then weighs (cloud_hero.h's heroLifeWeight()): a march
+// with that code in it is slower on lavapipe even where it skips it.
+const uint kHeroCloudsOff = 0u;
+const uint kHeroCloudsAuthored = 1u;
+const uint kHeroCloudsLiving = 2u;
 // The atlas's distance code's full scale, in voxels of its asset: the longest jump one lookup
 // allows (hero_clouds.h encodes, cloud_hero.h decodes).
 const float kHeroDistanceRangeVoxels = 16.0f;

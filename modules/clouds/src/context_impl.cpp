@@ -262,9 +262,13 @@ std::string Context::Impl::unprepared(const Settings& settings, VkExtent2D rende
 bool Context::Impl::shadowPrepared(const Settings& settings) const {
   if (settings.shadowCascades == 0) return true;
   const bool heroes = heroAtlas_ != nullptr;
-  return programs_[Program::ShadowMap].find(detail::shadowMapKey(settings)) != VK_NULL_HANDLE &&
-         (!heroes || programs_[Program::ShadowMap].find(detail::shadowMapKey(settings, true)) !=
-                         VK_NULL_HANDLE) &&
+  const auto prepared = [&](std::uint32_t heroVariant) {
+    return programs_[Program::ShadowMap].find(detail::shadowMapKey(settings, heroVariant)) !=
+           VK_NULL_HANDLE;
+  };
+  return prepared(shader::kHeroCloudsOff) &&
+         (!heroes ||
+          (prepared(shader::kHeroCloudsAuthored) && prepared(shader::kHeroCloudsLiving))) &&
          images_.shadowFits(shadowExtentFor(settings));
 }
 
@@ -345,14 +349,20 @@ void Context::Impl::dispatch(const FrameInputs& inputs, const Settings& settings
   device_.beginLabel(cmd, "clouds");
   startFrame(inputs, settings, slot);
 
+  // Hero clouds stand wherever the host puts them, whatever the layer's coverage.
+  const bool heroClouds = heroAtlas_ != nullptr && !inputs.heroClouds.empty();
+  lastHeroClouds_ = heroClouds ? detail::heroCloudUniforms(heroAtlas_->assets(), inputs.heroClouds,
+                                                           inputs.cameraPosition)
+                               : shader::HeroCloudUniforms{};
+  const bool inHeroCloud =
+      detail::cameraInHeroCloudBox(lastHeroClouds_, settings.insideLayerMarginMetres);
+
   const VkExtent2D traceExtent = detail::traceExtentFor(inputs.renderExtent, settings.traceScale);
-  const detail::TemporalFrame temporal = temporal_.plan(inputs, settings, traceExtent);
+  const detail::TemporalFrame temporal = temporal_.plan(inputs, settings, traceExtent, inHeroCloud);
   const detail::UniformContext uniformContext{info_.reversedZ, inputs.depthView != VK_NULL_HANDLE,
                                               traceExtent, inputs.renderExtent, temporal};
   lastUniforms_ = detail::buildUniforms(inputs, settings, uniformContext);
   lastUniforms_.flags |= debugFlags_;
-  // Hero clouds stand wherever the host puts them, whatever the layer's coverage.
-  const bool heroClouds = heroAtlas_ != nullptr && !inputs.heroClouds.empty();
   if (skyIsClear(settings) && !heroClouds) {
     // Nothing can be marched: the outputs are the empty sky, and the next frame starts afresh.
     recordClearSky(cmd, slot);
@@ -362,6 +372,7 @@ void Context::Impl::dispatch(const FrameInputs& inputs, const Settings& settings
     temporal_.forget("after a clear sky");
     report_ = FrameReport{
         {0, 0}, 0, false, temporal.insideLayer, "clear sky: nothing to march", shadowCascadesMade_};
+    report_.insideHeroCloud = temporal.insideHeroCloud;
   } else {
     // dispatchShadowMap() made (or kept) the shadow map before, this frame.
     const bool shadowMapMade =
@@ -375,20 +386,19 @@ void Context::Impl::dispatch(const FrameInputs& inputs, const Settings& settings
       std::memcpy(&shadow.map, &shadowParameters_, sizeof(shadowParameters_));
       shadow.terrainTopMetres = inputs.terrain.maxAltitudeMetres;
     }
-    lastHeroClouds_ = heroClouds
-                          ? detail::heroCloudUniforms(heroAtlas_->assets(), inputs.heroClouds,
-                                                      inputs.cameraPosition)
-                          : shader::HeroCloudUniforms{};
     recordUniforms(cmd, slot, lastUniforms_, terrainShadow ? &shadow : nullptr,
                    heroClouds ? &lastHeroClouds_ : nullptr);
     if (inputs.skyView != VK_NULL_HANDLE || inputs.groundAlbedo) {
       recordSkyAmbient(cmd, inputs, settings, shadowMapMade, slot);
     }
-    recordTrace(cmd, inputs, settings, temporal, traceExtent, terrainShadow, heroClouds, slot);
+    const std::uint32_t heroVariant =
+        heroClouds ? detail::heroCloudVariant(lastHeroClouds_) : shader::kHeroCloudsOff;
+    recordTrace(cmd, inputs, settings, temporal, traceExtent, terrainShadow, heroVariant, slot);
     outputsHoldClearSky_ = false;
     temporal_.commit(temporal, inputs, settings, traceExtent);
     report_ = FrameReport{traceExtent,          temporal.tileSize,    temporal.useHistory,
                           temporal.insideLayer, temporal.resetReason, shadowCascadesMade_};
+    report_.insideHeroCloud = temporal.insideHeroCloud;
   }
   device_.endLabel(cmd);
   lastSlot_ = slotIndex;

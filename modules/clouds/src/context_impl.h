@@ -164,16 +164,17 @@ class Context::Impl {
   // This frame's bolts drawn into the radiance output (its set written), which the upsample
   // left ready for compute reads and writes; then the outputs made visible to the host.
   void recordBolts(VkCommandBuffer cmd, const FrameInputs& inputs, bool hazed, Slot& slot);
-  // `heroClouds`: the march draws this frame's hero clouds (recordUniforms() wrote them).
+  // `heroClouds`: the variant (shader::kHeroClouds*) that draws this frame's hero clouds
+  // (recordUniforms() wrote them), kHeroCloudsOff for none.
   void recordTrace(VkCommandBuffer cmd, const FrameInputs& inputs, const Settings& settings,
                    const detail::TemporalFrame& temporal, VkExtent2D traceExtent,
-                   bool terrainShadow, bool heroClouds, Slot& slot);
+                   bool terrainShadow, std::uint32_t heroClouds, Slot& slot);
   // recordTrace()'s passes, in their order, each over the set recordTrace() wrote for it.
   void recordSceneDistance(VkCommandBuffer cmd, VkExtent2D traceExtent, Slot& slot);
   // `edgeRays`: detail::marchesEdgeRays(), which adds the edge tiles' dispatch.
   void recordMarch(VkCommandBuffer cmd, const Settings& settings, std::uint32_t tileSize,
-                   VkExtent2D traceExtent, bool terrainShadow, bool edgeRays, bool heroClouds,
-                   Slot& slot);
+                   VkExtent2D traceExtent, bool terrainShadow, bool edgeRays,
+                   std::uint32_t heroClouds, Slot& slot);
   // `lightning`: recordLightning() wrote flashes, whose glow is reconstructed too.
   void recordReconstruct(VkCommandBuffer cmd, const detail::TemporalFrame& temporal,
                          VkExtent2D traceExtent, bool lightning, Slot& slot);

@@ -101,6 +101,29 @@ shader::HeroCloudUniforms heroCloudUniforms(const std::vector<HeroAsset>& assets
   return block;
 }
 
+std::uint32_t heroCloudVariant(const shader::HeroCloudUniforms& block) {
+  for (std::uint32_t i = 0; i < block.count.x; ++i) {
+    if (block.instance[i].scales.y > 0.0f) return shader::kHeroCloudsLiving;
+  }
+  return shader::kHeroCloudsAuthored;
+}
+
+bool cameraInHeroCloudBox(const shader::HeroCloudUniforms& block, float marginMetres) {
+  for (std::uint32_t i = 0; i < block.count.x; ++i) {
+    const shader::HeroCloudInstance& h = block.instance[i];
+    // The camera is the origin of camera-relative space: its index coordinate is the offset.
+    const glm::vec3 camera(h.toIndex[0].w, h.toIndex[1].w, h.toIndex[2].w);
+    const float margin = marginMetres / h.scales.z;
+    const glm::vec3 low(-1.0f - margin);
+    const glm::vec3 high = glm::vec3(h.extent) + margin;
+    if (glm::all(glm::greaterThanEqual(camera, low)) &&
+        glm::all(glm::lessThanEqual(camera, high))) {
+      return true;
+    }
+  }
+  return false;
+}
+
 HeroCloudAtlas::HeroCloudAtlas(const DeviceContext& device, HeroAtlasLayout layout)
     : device_(&device),
       assets_(std::move(layout.assets)),

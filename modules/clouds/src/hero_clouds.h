@@ -62,6 +62,14 @@ shader::HeroCloudUniforms heroCloudUniforms(const std::vector<HeroAsset>& assets
                                             std::span<const HeroCloud> clouds,
                                             const glm::dvec3& cameraPosition);
 
+// The variant (shader::kHeroClouds*) that draws `block`: kHeroCloudsLiving when one of its
+// clouds grows or dissipates (its erosion is not 0), else kHeroCloudsAuthored.
+std::uint32_t heroCloudVariant(const shader::HeroCloudUniforms& block);
+
+// Whether the camera (the block's origin) lies in one of its instances' boxes, or within
+// `marginMetres` of one.
+bool cameraInHeroCloudBox(const shader::HeroCloudUniforms& block, float marginMetres);
+
 // The atlas image and its upload.
 class HeroCloudAtlas {
  public:

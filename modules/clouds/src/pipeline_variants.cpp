@@ -14,7 +14,7 @@ static_assert(shader::kMarchSpecCount <= kKeyCapacity && shader::kUpsampleSpecCo
 }  // namespace
 
 SpecializationKey marchKey(const Settings& settings, bool workCounters, bool terrainShadow,
-                           std::uint32_t edgeRays, bool heroClouds) {
+                           std::uint32_t edgeRays, std::uint32_t heroClouds) {
   const MarchVariant v = marchVariant(settings);
   SpecializationKey key;
   key.values[shader::kSpecJitter] = v.jitter;
@@ -27,7 +27,7 @@ SpecializationKey marchKey(const Settings& settings, bool workCounters, bool ter
   key.values[shader::kSpecTerrainShadow] = terrainShadow ? 1u : 0u;
   key.values[shader::kSpecLightReuse] = v.lightReuse;
   key.values[shader::kSpecEdgeRays] = v.edgeRays != 0u ? edgeRays : shader::kEdgeRaysOff;
-  key.values[shader::kSpecHeroClouds] = heroClouds ? 1u : 0u;
+  key.values[shader::kSpecHeroClouds] = heroClouds;
   key.count = shader::kMarchSpecCount;
   return key;
 }
@@ -71,10 +71,10 @@ SpecializationKey godRaysKey(std::uint32_t light) {
   return key;
 }
 
-SpecializationKey shadowMapKey(const Settings& settings, bool heroClouds) {
+SpecializationKey shadowMapKey(const Settings& settings, std::uint32_t heroClouds) {
   SpecializationKey key;
   key.values[shader::kSpecShadowEmptySpace] = settings.emptySpaceSkipping ? 1u : 0u;
-  key.values[shader::kSpecShadowHeroClouds] = heroClouds ? 1u : 0u;
+  key.values[shader::kSpecShadowHeroClouds] = heroClouds;
   key.count = shader::kShadowSpecCount;
   return key;
 }
@@ -85,10 +85,12 @@ std::vector<std::pair<Program, SpecializationKey>> variantsFor(const Settings& s
                                      shader::kHistoryReprojected};
   std::vector<std::pair<Program, SpecializationKey>> variants;
   // The tiles' march, and with edge rays the edge rays' march; with hero cloud assets, each
-  // with and without them.
+  // without them, with them as authored and with living ones.
+  const std::uint32_t heroVariants[] = {shader::kHeroCloudsOff, shader::kHeroCloudsAuthored,
+                                        shader::kHeroCloudsLiving};
   const auto addMarch = [&](bool terrainShadow) {
-    for (bool heroes : {false, true}) {
-      if (heroes && !heroClouds) continue;
+    for (std::uint32_t heroes : heroVariants) {
+      if (heroes != shader::kHeroCloudsOff && !heroClouds) continue;
       variants.emplace_back(Program::March, marchKey(settings, workCounters, terrainShadow,
                                                      shader::kEdgeRaysFind, heroes));
       if (marchVariant(settings).edgeRays == 0u) continue;
@@ -125,7 +127,11 @@ std::vector<std::pair<Program, SpecializationKey>> variantsFor(const Settings& s
   // No shadow map, no shadow pipelines (and no terrain shadow: it lives in the map).
   if (settings.shadowCascades > 0) {
     variants.emplace_back(Program::ShadowMap, shadowMapKey(settings));
-    if (heroClouds) variants.emplace_back(Program::ShadowMap, shadowMapKey(settings, true));
+    if (heroClouds) {
+      variants.emplace_back(Program::ShadowMap,
+                            shadowMapKey(settings, shader::kHeroCloudsAuthored));
+      variants.emplace_back(Program::ShadowMap, shadowMapKey(settings, shader::kHeroCloudsLiving));
+    }
     variants.emplace_back(Program::TerrainShadow, SpecializationKey{});
     addMarch(true);
   }

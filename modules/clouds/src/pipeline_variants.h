@@ -16,9 +16,10 @@ namespace clouds::detail {
 // `terrainShadow`: the terrain's shadow takes the sun from the clouds (FrameInputs::terrain
 // with a shadow map). `edgeRays`: the tiles' march (shader::kEdgeRaysFind, which lists the edge
 // tiles when the settings have edge rays) or the edge rays' (kEdgeRaysMarch). `heroClouds`:
-// the frame draws hero clouds (FrameInputs::heroClouds).
+// the variant for this frame's hero clouds (shader::kHeroClouds*, heroCloudVariant()).
 SpecializationKey marchKey(const Settings& settings, bool workCounters, bool terrainShadow,
-                           std::uint32_t edgeRays = shader::kEdgeRaysFind, bool heroClouds = false);
+                           std::uint32_t edgeRays = shader::kEdgeRaysFind,
+                           std::uint32_t heroClouds = shader::kHeroCloudsOff);
 // `history`: kHistoryNone, kHistoryInPlace or kHistoryReprojected (cloud_types.h).
 // `lightning`: write the glow with this frame's flashes too.
 SpecializationKey reconstructKey(std::uint32_t history, bool lightning);
@@ -36,12 +37,13 @@ SpecializationKey boltsKey(bool hazed);
 // The god-ray mask and light, `light` shader::kGodRaysMaskHaze or kGodRaysGlow.
 SpecializationKey godRaysKey(std::uint32_t light);
 // The shadow map's (its empty-space skipping follows Settings::emptySpaceSkipping); `heroClouds`:
-// hero clouds cast into it.
-SpecializationKey shadowMapKey(const Settings& settings, bool heroClouds = false);
+// the variant for the hero clouds that cast into it (shader::kHeroClouds*).
+SpecializationKey shadowMapKey(const Settings& settings,
+                               std::uint32_t heroClouds = shader::kHeroCloudsOff);
 
 // Every variant `settings` can select in some frame (with or without history, still or moving,
 // with or without the host's aerial perspective or terrain; with hero cloud assets loaded,
-// with or without hero clouds).
+// without hero clouds, with them as authored and with living ones).
 std::vector<std::pair<Program, SpecializationKey>> variantsFor(const Settings& settings,
                                                                bool workCounters,
                                                                bool heroClouds = false);

@@ -79,8 +79,10 @@ void Context::Impl::recordShadowMap(VkCommandBuffer cmd, const FrameInputs& inpu
       .commit();
 
   const detail::ComputeProgram& program = programs_[Program::ShadowMap];
-  fn.vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE,
-                       program.find(detail::shadowMapKey(settings, heroes)));
+  fn.vkCmdBindPipeline(
+      cmd, VK_PIPELINE_BIND_POINT_COMPUTE,
+      program.find(detail::shadowMapKey(
+          settings, heroes ? detail::heroCloudVariant(sliceHeroClouds_) : shader::kHeroCloudsOff)));
   fn.vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, program.layout(), 0, 1,
                              &slot.shadowMap, 0, nullptr);
   const auto dispatch = [&](const ShadowMapConstants& constants) {

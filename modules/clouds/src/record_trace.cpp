@@ -293,13 +293,14 @@ void Context::Impl::recordSkyAmbient(VkCommandBuffer cmd, const FrameInputs& inp
 
 void Context::Impl::recordTrace(VkCommandBuffer cmd, const FrameInputs& inputs,
                                 const Settings& settings, const detail::TemporalFrame& temporal,
-                                VkExtent2D traceExtent, bool terrainShadow, bool heroClouds,
-                                Slot& slot) {
+                                VkExtent2D traceExtent, bool terrainShadow,
+                                std::uint32_t heroClouds, Slot& slot) {
   const TraceSamplers samplers{nearestSampler_.get(), linearSampler_.get(),
                                clampedLinearSampler_.get()};
   const TraceFrame frame = traceFrame(
       images_, samplers, slot.uniforms.buffer(), inputs, settings, temporal, terrainShadow,
-      heroClouds ? heroAtlas_->image().view() : VK_NULL_HANDLE, slot.heroClouds.buffer());
+      heroClouds != shader::kHeroCloudsOff ? heroAtlas_->image().view() : VK_NULL_HANDLE,
+      slot.heroClouds.buffer());
   writeSceneDistanceSet(device_, slot.sceneDistance, frame);
   writeMarchSet(device_, slot.march, frame, weatherMap(), slot.counters, slot.shadowParameters,
                 slot.edgeRayList);
@@ -343,7 +344,7 @@ void Context::Impl::recordSceneDistance(VkCommandBuffer cmd, VkExtent2D traceExt
 
 void Context::Impl::recordMarch(VkCommandBuffer cmd, const Settings& settings,
                                 std::uint32_t tileSize, VkExtent2D traceExtent, bool terrainShadow,
-                                bool edgeRays, bool heroClouds, Slot& slot) {
+                                bool edgeRays, std::uint32_t heroClouds, Slot& slot) {
   const std::uint32_t k = tileSize;
   if (edgeRays) recordEdgeRayListReset(cmd, slot);
   beginPass(cmd, detail::Pass::March, "clouds: march");

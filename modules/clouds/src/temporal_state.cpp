@@ -45,9 +45,10 @@ bool cloudsLookDifferent(const Settings& a, const Settings& b) {
   return settingsDifferIn(kResetsHistory, a, b);
 }
 
-TemporalFrame TemporalState::plan(const FrameInputs& in, const Settings& s,
-                                  VkExtent2D traceExtent) {
+TemporalFrame TemporalState::plan(const FrameInputs& in, const Settings& s, VkExtent2D traceExtent,
+                                  bool inHeroCloud) {
   TemporalFrame frame;
+  frame.insideHeroCloud = inHeroCloud;
   const double altitude = in.cameraPosition.y;
   frame.insideLayer = altitude > s.layerBottomMetres - s.insideLayerMarginMetres &&
                       altitude < s.layerTopMetres + s.insideLayerMarginMetres;
@@ -88,13 +89,14 @@ TemporalFrame TemporalState::plan(const FrameInputs& in, const Settings& s,
   const std::uint32_t k = tileSizeFor(s.updateInterval);
   // Without history every pixel must come from this frame: at most 2 x 2 tiles, filled in
   // spatially (4x the march of a 1-in-16 frame, for the frames that need it only). A camera
-  // moving inside or near the layer reprojects its history, but the cloud all around it
-  // changes from frame to frame, and each ray's result depends much on where it starts: it
-  // refreshes 2 x 2 tiles too. (At High, 640x360, against the Reference: flying up into the
-  // base, 35.1 dB, where rebuilding each frame without history, as production engines do
-  // here, gave 30.0; clouds_bench's fly-through.)
-  const bool movingInsideLayer = frame.insideLayer && in.cameraPosition != cameraPosition_;
-  frame.tileSize = frame.useHistory && !movingInsideLayer ? k : std::min(k, 2u);
+  // moving inside or near the layer or a hero cloud reprojects its history, but the cloud all
+  // around it changes from frame to frame, and each ray's result depends much on where it
+  // starts: it refreshes 2 x 2 tiles too. (At High, 640x360, against the Reference: flying up
+  // into the base, 35.1 dB, where rebuilding each frame without history, as production
+  // engines do here, gave 30.0; clouds_bench's fly-through.)
+  const bool movingInsideCloud =
+      (frame.insideLayer || frame.insideHeroCloud) && in.cameraPosition != cameraPosition_;
+  frame.tileSize = frame.useHistory && !movingInsideCloud ? k : std::min(k, 2u);
   frame.phase = tilePhase(frame.tileSize, frame.temporalIndex);
   frame.upsampleTemporally = upsamplesTemporally(s);
   frame.useOutputHistory = frame.upsampleTemporally && frame.useHistory && wroteOutputHistory_;

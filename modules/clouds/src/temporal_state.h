@@ -17,6 +17,7 @@ struct TemporalFrame {
   bool useHistory = false;
   const char* resetReason = "first frame";
   bool insideLayer = false;
+  bool insideHeroCloud = false;     // in or near a hero cloud's box (cameraInHeroCloudBox())
   std::uint32_t tileSize = 1;       // k: one pixel per k x k tile is marched
   glm::uvec2 phase{0, 0};           // that pixel's offset in its tile
   std::uint32_t temporalIndex = 0;  // frames since the history was last reset
@@ -54,8 +55,10 @@ bool cloudsLookDifferent(const Settings& a, const Settings& b);
 
 class TemporalState {
  public:
-  // Decides this frame; call commit() once its commands are recorded.
-  TemporalFrame plan(const FrameInputs& inputs, const Settings& settings, VkExtent2D traceExtent);
+  // Decides this frame; call commit() once its commands are recorded. `inHeroCloud`: the
+  // camera is in or near a hero cloud's box (cameraInHeroCloudBox()).
+  TemporalFrame plan(const FrameInputs& inputs, const Settings& settings, VkExtent2D traceExtent,
+                     bool inHeroCloud = false);
   void commit(const TemporalFrame& frame, const FrameInputs& inputs, const Settings& settings,
               VkExtent2D traceExtent);
   // The history is gone (nothing was marched, or its images were replaced): the next frame

@@ -22,7 +22,8 @@ namespace {
 // or reuse off at an update interval of 1) each pixel is its own ray, and a tent would only
 // blur it.
 bool rebuiltInsideLayer(const TemporalFrame& temporal) {
-  return temporal.insideLayer && !temporal.useHistory && temporal.tileSize > 1;
+  return (temporal.insideLayer || temporal.insideHeroCloud) && !temporal.useHistory &&
+         temporal.tileSize > 1;
 }
 
 // World xz, unit: the noise scrolls along it, and so the history's clouds drift along it.

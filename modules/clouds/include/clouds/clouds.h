@@ -140,6 +140,9 @@ struct FrameReport {
   const char* resetReason = "";
   // The shadow-map cascades this frame's dispatchShadowMap() made (bit c: cascade c).
   std::uint32_t shadowCascadesMade = 0;
+  // The camera was in or near a hero cloud's box. Moving in it (or in the layer), the march
+  // refreshes more pixels a frame: the cloud all around changes from frame to frame.
+  bool insideHeroCloud = false;
 };
 
 // The GPU memory the module holds, by purpose (bytes of its VkDeviceMemory allocations).

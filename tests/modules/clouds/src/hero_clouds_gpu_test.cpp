@@ -423,6 +423,25 @@ clouds::HeroCloud living(float growth, float dissipation) {
   return cloud;
 }
 
+// The camera's place against the boxes: in one, near one (within the margin), or out.
+TEST(HeroCloudLives, TheCameraIsInABoxOrNot) {
+  const clouds::NvdfVolume* list[] = {&cumulus()};
+  const clouds::detail::HeroAtlasLayout layout = clouds::detail::packHeroAtlas(list);
+  const auto inBox = [&](glm::dvec3 camera, float margin) {
+    const clouds::HeroCloud cloud;  // its base's centre at the origin, 1200 x 1000 x 1200 m
+    const clouds::shader::HeroCloudUniforms block =
+        clouds::detail::heroCloudUniforms(layout.assets, {&cloud, 1}, camera);
+    return clouds::detail::cameraInHeroCloudBox(block, margin);
+  };
+  EXPECT_TRUE(inBox({0.0, 500.0, 0.0}, 0.0f));
+  EXPECT_TRUE(inBox({580.0, 990.0, -580.0}, 0.0f));
+  EXPECT_FALSE(inBox({0.0, 1100.0, 0.0}, 50.0f));
+  EXPECT_TRUE(inBox({0.0, 1100.0, 0.0}, 120.0f));
+  EXPECT_FALSE(inBox({0.0, 500.0, -700.0}, 0.0f));
+  const clouds::shader::HeroCloudUniforms none{};
+  EXPECT_FALSE(clouds::detail::cameraInHeroCloudBox(none, 1e9f));
+}
+
 // Grown and not dissipating, a cloud is its voxels: wherever their profile reaches, its life
 // weighs exactly 1 (so the life costs a grown cloud's picture nothing, to the bit), at any
 // scale.
@@ -550,6 +569,115 @@ TEST_F(HeroClouds, ALifeMatchesTheCpuReference) {
     EXPECT_GT(meanOpacity(gpu), 0.1 * grown);
     EXPECT_LT(meanOpacity(gpu), 0.9 * grown);
   }
+}
+
+// Settings whose layer holds no cloud and lies far above the flight below: the camera is in a
+// hero cloud, not in the layer.
+clouds::Settings aboveTheFlight() {
+  clouds::Settings s = heroOnly();
+  s.layerBottomMetres = 6000.0f;
+  s.layerTopMetres = 8000.0f;
+  return s;
+}
+
+// The camera in or near a hero cloud's box is told apart from one outside it (the temporal
+// reconstruction refreshes more while it moves there).
+TEST_F(HeroClouds, TheReportSaysWhenTheCameraIsInAHeroCloud) {
+  const Assets assets(harness().context());
+  const clouds::Settings settings = clouds::tools::singleFrame(aboveTheFlight());
+  for (const HeroView& c : heroViews()) {
+    if (std::string(c.name) == "with the layer") continue;
+    harness().cut();
+    harness().render(c.view, settings, kExtent);
+    const clouds::FrameReport report = harness().context().lastFrameReport();
+    EXPECT_EQ(report.insideHeroCloud, std::string(c.name) == "inside") << c.name;
+    EXPECT_FALSE(report.insideLayer) << c.name;
+  }
+}
+
+// The flight target, not met yet (so not run by default; run it with
+// --gtest_also_run_disabled_tests). A pilot's flight from clear air into the cumulus and out of
+// its far side at 300 m/s, at High (temporal reconstruction and upsampling): along the path
+// each frame should stay within 33 dB of the converged Reference of that frame, and two frames
+// after leaving the cloud no pixel should hold a ghost of it (the frame a history-free
+// render's, within 4/255). Measured (docs/measurements.md): 17 to 33 dB, most of the gap the
+// light samples (6 where the Reference takes 24; hero clouds want the voxel light volume).
+TEST_F(HeroCloudCost, DISABLED_AFlightThroughAHeroCloudStaysCloseAndLeavesNoGhost) {
+  auto flying = renderer();
+  auto fresh = renderer();
+  auto converged = renderer();
+  const clouds::NvdfVolume* list[] = {&cumulus()};
+  clouds::Error error;
+  for (auto* r : {flying.get(), fresh.get(), converged.get()}) {
+    ASSERT_TRUE(r->context().setHeroCloudAssets(list, &error)) << error.message;
+  }
+  const clouds::Settings high = clouds::settingsFor(clouds::Quality::High, aboveTheFlight());
+  const clouds::Settings reference = clouds::referenceSettings(aboveTheFlight());
+  CloudView view = heroViews()[0].view;
+  view.sunElevationDegrees = 50.0;
+  view.position = {100.0, 2000.0, -1200.0};
+  float brightest = 1.0f;  // the path's brightest cloud: the white the ghost is measured on
+  constexpr double kMetresPerFrame = 10.0;  // 300 m/s at 30 frames a second
+  constexpr int kReferenceEvery = 24;
+
+  const auto inCloud = [&](clouds::tools::CloudHarness& r) {
+    clouds::tools::CpuTextures textures;
+    const clouds::NvdfVolume* assets[] = {&cumulus()};
+    clouds::detail::HeroAtlasLayout layout = clouds::detail::packHeroAtlas(assets);
+    textures.heroes.atlas = std::move(layout.texels);
+    textures.heroes.extent =
+        glm::uvec3(layout.extent.width, layout.extent.height, layout.extent.depth);
+    textures.heroes.uniforms = clouds::detail::ContextAccess::impl(r.context()).lastHeroClouds();
+    clouds::shader::CloudUniforms u{};
+    u.extinctionPerMetre = 1.0f;
+    const clouds::tools::CpuHeroScope scope(textures);
+    return clouds::shader::heroField(glm::vec3(0.0f), u).sigmaT > 0.0f;
+  };
+
+  double worstDb = 1e9;
+  int entered = -1;
+  int left = -1;
+  int frame = 0;
+  for (; frame < 400; ++frame, view.position.z -= kMetresPerFrame) {
+    const CloudFrame flown = flying->render(view, high, test::kExtent);
+    ASSERT_TRUE(test::allValid(flown)) << "frame " << frame;
+    const bool inside = inCloud(*flying);
+    if (inside && entered < 0) entered = frame;
+    if (!inside && entered >= 0 && left < 0) left = frame;
+    if (frame % kReferenceEvery == kReferenceEvery - 1) {
+      converged->cut();
+      const CloudFrame truth = converged->renderAveraged(view, reference, test::kExtent, 8);
+      float peak = 1.0f;
+      for (const glm::vec4& p : truth.radiance) peak = std::max({peak, p.r, p.g, p.b});
+      brightest = std::max(brightest, peak);
+      const double db = clouds::tools::psnr(flown.radiance, truth.radiance, peak);
+      std::printf("frame %3d (z %6.0f m, %s): %.1f dB against the Reference\n", frame,
+                  view.position.z, inside ? "inside" : "outside", db);
+      worstDb = std::min(worstDb, db);
+    }
+    if (left >= 0 && frame == left + 2) {
+      fresh->cut();
+      const CloudFrame alone = fresh->render(view, high, test::kExtent);
+      float worstAlpha = 0.0f;
+      float worstRadiance = 0.0f;
+      for (std::size_t i = 0; i < flown.radiance.size(); ++i) {
+        worstAlpha = std::max(worstAlpha, std::abs(flown.radiance[i].a - alone.radiance[i].a));
+        const glm::vec3 d = glm::abs(glm::vec3(flown.radiance[i]) - glm::vec3(alone.radiance[i]));
+        worstRadiance = std::max(worstRadiance, std::max({d.r, d.g, d.b}) / brightest);
+      }
+      std::printf(
+          "two frames out (frame %d): worst transmittance difference %.4f, radiance %.4f "
+          "of the path's brightest\n",
+          frame, worstAlpha, worstRadiance);
+      EXPECT_LE(worstAlpha, 4.0f / 255.0f);
+      EXPECT_LE(worstRadiance, 4.0f / 255.0f);
+      break;
+    }
+  }
+  std::printf("entered at frame %d, left at %d; worst %.1f dB\n", entered, left, worstDb);
+  ASSERT_GT(entered, 10) << "the flight starts in clear air";
+  ASSERT_GT(left, entered + 20) << "and flies through the cloud";
+  EXPECT_GE(worstDb, 33.0);
 }
 
 }  // namespace

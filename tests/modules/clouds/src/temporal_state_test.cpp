@@ -238,6 +238,29 @@ TEST(TemporalState, InsideTheLayerTheHistoryIsKeptAndAMovingCameraRefreshesMore)
   EXPECT_EQ(left.tileSize, 4u);
 }
 
+// In a hero cloud's box, well away from the layer, the same: a moving camera refreshes more.
+TEST(TemporalState, MovingInAHeroCloudRefreshesMoreToo) {
+  const clouds::Settings s;
+  TemporalState state;
+  clouds::FrameInputs in = groundCamera();
+  const auto plan = [&](bool inHeroCloud) {
+    const TemporalFrame frame = state.plan(in, s, kTrace, inHeroCloud);
+    state.commit(frame, in, s, kTrace);
+    return frame;
+  };
+  plan(true);
+  const TemporalFrame held = plan(true);
+  EXPECT_TRUE(held.insideHeroCloud);
+  EXPECT_FALSE(held.insideLayer);
+  EXPECT_EQ(held.tileSize, 4u) << "held still: 1 in 16";
+  in.cameraPosition.z -= 20.0;
+  const TemporalFrame flying = plan(true);
+  EXPECT_TRUE(flying.useHistory) << flying.resetReason;
+  EXPECT_EQ(flying.tileSize, 2u) << "the cloud all around changes: 1 in 4";
+  in.cameraPosition.z -= 20.0;
+  EXPECT_EQ(plan(false).tileSize, 4u) << "out of it: 1 in 16 again";
+}
+
 TEST(TemporalState, AStillFrameWeighsItsFreshSamplesLess) {
   // Nothing moved: the history is exact, and averages the rays' noise over more refreshes.
   clouds::Settings s;
