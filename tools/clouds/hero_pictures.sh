@@ -4,6 +4,8 @@
 #   hero_clouds     assets_src/scenes/hero_clouds.json from its camera (the three shipped clouds)
 #   user_vdb_cloud  cumulus_noon.json with an OpenVDB cloud (clouds_example_vdb) put ahead by
 #                   the sample's --cloud
+#   hero_cloud_life the towering cumulus's life (HeroCloudLifecycle): growing, grown and
+#                   dissipating, each a scene whose clock reaches that age by the captured frame
 # into OUT_DIR (default modules/clouds/docs/images) as PNG.
 # Usage: tools/clouds/hero_pictures.sh [OUT_DIR]
 set -euo pipefail
@@ -25,3 +27,42 @@ picture() {  # name, then the sample's arguments
 picture hero_clouds --scene assets_src/scenes/hero_clouds.json
 build/bin/clouds_example_vdb "$scratch/example.vdb" >/dev/null
 picture user_vdb_cloud --scene assets_src/scenes/cumulus_noon.json --cloud "$scratch/example.vdb"
+
+# The life: grows 60 s, stays 60 s, dissipates 60 s; the captured frame is at 4.75 s, so a
+# scene that starts the life 4.75 - AGE seconds in shows it at AGE.
+life_scene() {  # age (s)
+  local start
+  start="$(awk -v age="$1" 'BEGIN { print 4.75 - age }')"
+  cat >"$scratch/life_$1.json" <<JSON
+{
+  "name": "A hero cloud's life",
+  "camera": {"position": [2830, 1800, 17600], "yawDegrees": 0, "pitchDegrees": 10},
+  "sun": {"timeOfDayHours": 15.5, "maxElevationDegrees": 60},
+  "terrain": {"gltf": "default"},
+  "clouds": {
+    "coverage": 0.2,
+    "cloudType": 0.8,
+    "heroClouds": [
+      {"asset": "towering_cumulus", "positionMetres": [2830, 1300, 14170], "yawDegrees": 20,
+       "lifecycle": {"startSeconds": $start, "growSeconds": 60, "matureSeconds": 60,
+                     "dissipateSeconds": 60, "restSeconds": 60}}
+    ]
+  },
+  "atmosphere": {"preset": "earth"},
+  "exposure": {"mode": "auto"}
+}
+JSON
+  echo "$scratch/life_$1.json"
+}
+stages=()
+for age in 21 42 90 150; do
+  picture "life_$age" --scene "$(life_scene "$age")" >/dev/null
+  stages+=("$scratch/life_$age.png")
+  cp "$out/life_$age.png" "$scratch/life_$age.png"
+  rm "$out/life_$age.png"
+done
+python="$(sed -n 's/^CLOUDSCAPE_PLOT_PYTHON:[A-Z]*=//p' build/CMakeCache.txt)"
+"${python:-python3}" tools/review/contact_sheet.py --columns 2 "$out/hero_cloud_life.png" \
+  "growing (growth 0.35)=${stages[0]}" "growing (growth 0.7)=${stages[1]}" \
+  "grown=${stages[2]}" "dissipating (dissipation 0.5)=${stages[3]}"
+echo "$out/hero_cloud_life.png"

@@ -68,9 +68,12 @@ FX_INLINE vec4 heroFields(IN(HeroCloudInstance) h, vec3 c) {
 // distance is `distanceMetres`: in [0, 1], and exactly 1 for a grown cloud that does not
 // dissipate (its top above the box and no erosion: wherever a voxel's profile reaches, the
 // distance reads at least sqrt(3) voxels inside, so the one-voxel edge ramp is saturated).
+// The top is domed: a point as many voxels deep as the code reaches (kHeroDistanceRangeVoxels)
+// may stand that much above it, so a growing cloud's cores rise first, rounded, not cut flat.
 FX_INLINE float heroLifeWeight(IN(HeroCloudInstance) h, vec3 c, float distanceMetres) {
   const float topFeather = max(kHeroTopFeather * float(h.extent.y), 1.0f);
-  const float belowTop = saturate((h.scales.w - c.y) / topFeather);
+  const float depthVoxels = max(-distanceMetres, 0.0f) / h.scales.z;
+  const float belowTop = saturate((h.scales.w - c.y + depthVoxels) / topFeather);
   const float insideEdge = saturate((-distanceMetres - h.scales.y) / h.scales.z);
   return belowTop * insideEdge;
 }

@@ -60,9 +60,11 @@ HeroLifeShape heroLifeShape(const HeroCloud& cloud, float heightVoxels, float vo
   const float feather = std::max(shader::kHeroTopFeather * heightVoxels, 1.0f);
   const float depthScale = shader::kHeroDistanceRangeVoxels * voxelMetres;
   HeroLifeShape shape;
-  // The top rises from below the box (-1, where the filter's reach starts) to a feather above
-  // its last voxels, where heroLifeWeight() reads 1 throughout.
-  shape.topIndex = -1.0f + grown * (heightVoxels + feather + 1.0f);
+  // The top rises from so far below the box (-1, where the filter's reach starts) that not even
+  // its deepest points (kHeroDistanceRangeVoxels) stand above it, to a feather above its last
+  // voxels, where heroLifeWeight() reads 1 throughout.
+  const float lowest = -1.0f - shader::kHeroDistanceRangeVoxels;
+  shape.topIndex = lowest + grown * (heightVoxels + feather - lowest);
   shape.erosionMetres =
       std::min((1.0f - grown) * kGrowthErosion + gone * kDissipationErosion, kMostErosion) *
       depthScale;

@@ -43,7 +43,7 @@ HeroAtlasLayout packHeroAtlas(std::span<const NvdfVolume* const> assets);
 // cloud_hero.h's heroLifeWeight() reads. Both eased (smoothstep), so a life that changes at a
 // steady rate starts and stops gently.
 struct HeroLifeShape {
-  float topIndex = 0.0f;       // index y above which the cloud is not (yet) grown
+  float topIndex = 0.0f;       // index y above which the cloud's edge is not (yet) grown
   float erosionMetres = 0.0f;  // world metres eaten from its edge inwards
   float densityFactor = 1.0f;  // its density, faded as it dissipates
 };

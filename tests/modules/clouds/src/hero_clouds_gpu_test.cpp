@@ -473,8 +473,13 @@ TEST(HeroCloudLives, GrowingRisesFromTheBase) {
   EXPECT_LT(grown.transmittanceAlongX(650.0f, 0.0f), 0.5f);
   EXPECT_EQ(growing.transmittanceAlongX(650.0f, 0.0f), 1.0f);
   EXPECT_LT(growing.transmittanceAlongX(120.0f, 0.0f), 0.9f);
+  // Just born it is next to nothing (no deep core pops in with it), and at 0 not drawn at all.
+  const HeroLife justBorn(living(0.02f, 0.0f));
+  for (const float y : {20.0f, 120.0f, 300.0f, 450.0f}) {
+    EXPECT_GT(justBorn.transmittanceAlongX(y, 0.0f), 0.99f) << y << " m up";
+  }
   const HeroLife newborn(living(0.0f, 0.0f));
-  EXPECT_FALSE(newborn.present());  // not drawn at all
+  EXPECT_FALSE(newborn.present());
 }
 
 // Growing, it also swells from its cores out (its edge lies further in than the grown
