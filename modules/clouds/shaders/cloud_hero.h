@@ -25,7 +25,7 @@ FX_SHADER_BEGIN(clouds::shader)
 uint heroCloudCount();
 HeroCloudInstance heroCloud(uint index);
 vec4 fetchHeroAtlas(ivec3 texel);  // RGBA8 as [0, 1]
-bool heroLivesCompiled();          // the kHeroCloudsLiving variant (the CPU: always)
+bool heroLifeCompiledIn();         // the kHeroCloudsLiving variant (the CPU: always)
 
 const float kHeroFar = 1e30f;
 // The distance code: (A x 255 - 128) / 127 of the full scale (kHeroDistanceRangeVoxels).
@@ -67,12 +67,13 @@ FX_INLINE vec4 heroFields(IN(HeroCloudInstance) h, vec3 c) {
 // How much of its voxels' cloud a cloud's life leaves at index coordinate `c`, whose signed
 // distance is `distanceMetres`: in [0, 1], and exactly 1 for a grown cloud that does not
 // dissipate (its top above the box and no erosion: wherever a voxel's profile reaches, the
-// distance reads at least sqrt(3) voxels inside, so the one-voxel edge ramp is saturated).
+// distance of an NVDF made by buildNvdf() reads at least sqrt(3) voxels inside, its margin for
+// the filter's reach, so the one-voxel edge ramp is saturated; see docs/nvdf-format.md).
 // The top is domed: a point as many voxels deep as the code reaches (kHeroDistanceRangeVoxels)
 // may stand that much above it, so a growing cloud's cores rise first, rounded, not cut flat.
 FX_INLINE float heroLifeWeight(IN(HeroCloudInstance) h, vec3 c, float distanceMetres) {
   const float topFeather = max(kHeroTopFeather * float(h.extent.y), 1.0f);
-  const float depthVoxels = max(-distanceMetres, 0.0f) / h.scales.z;
+  const float depthVoxels = clamp(-distanceMetres / h.scales.z, 0.0f, kHeroDistanceRangeVoxels);
   const float belowTop = saturate((h.scales.w - c.y + depthVoxels) / topFeather);
   const float insideEdge = saturate((-distanceMetres - h.scales.y) / h.scales.z);
   return belowTop * insideEdge;
@@ -108,7 +109,7 @@ FX_INLINE HeroSample heroField(vec3 relative, IN(CloudUniforms) u) {
       // A cloud without erosion is grown and not dissipating: its life weighs exactly 1 (see
       // heroLifeWeight()), so it skips it; a frame without living clouds compiles it out.
       const float life =
-          heroLivesCompiled() && h.scales.y > 0.0f ? heroLifeWeight(h, c, fields.w) : 1.0f;
+          heroLifeCompiledIn() && h.scales.y > 0.0f ? heroLifeWeight(h, c, fields.w) : 1.0f;
       const float profile = fields.x * life;
       const float sigma = profile * fields.z * h.scales.x * u.extinctionPerMetre;
       s.sigmaT += sigma;

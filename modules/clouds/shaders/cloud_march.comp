@@ -96,7 +96,7 @@ layout(binding = kMarchHeroClouds, std140) uniform HeroClouds { HeroCloudUniform
 uint heroCloudCount() {
   return kHeroClouds != 0u ? heroClouds[CLOUDS_FRAME_UNIFORMS_INDEX].count.x : 0u;
 }
-bool heroLivesCompiled() {
+bool heroLifeCompiledIn() {
   return kHeroClouds == kHeroCloudsLiving;
 }
 HeroCloudInstance heroCloud(uint index) {
@@ -141,7 +141,7 @@ void marchRay(uvec2 pixel, vec2 centre, float startOffset, uvec2 slot) {
   options.emptySpace = kEmptySpace;
   options.lightReuse = kLightReuse;
   const float jitter = rayJitter(pixel, startOffset, u.tileSize,
-                                 (u.flags & kFlagRebuiltInsideLayer) != 0u, kJitterMode);
+                                 (u.flags & kFlagRebuiltInsideCloud) != 0u, kJitterMode);
   const MarchResult result = marchClouds(
       direction, distance, jitter, lightJitter(u.lightRound, kJitterMode), u, options);
 

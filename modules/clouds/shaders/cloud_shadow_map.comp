@@ -50,7 +50,7 @@ layout(binding = kShadowHeroClouds, std140) uniform HeroClouds { HeroCloudUnifor
 uint heroCloudCount() {
   return kHeroClouds != 0u ? heroClouds[CLOUDS_FRAME_UNIFORMS_INDEX].count.x : 0u;
 }
-bool heroLivesCompiled() {
+bool heroLifeCompiledIn() {
   return kHeroClouds == kHeroCloudsLiving;
 }
 HeroCloudInstance heroCloud(uint index) {

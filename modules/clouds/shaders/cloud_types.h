@@ -181,9 +181,10 @@ const uint kHistoryReprojected = 2u;
 const uint kFlagReversedZ = 1u;    // host depth: near = 1, far/sky = 0
 const uint kFlagHasDepth = 2u;     // a depth buffer is bound (else: nothing occludes)
 const uint kFlagHomogeneous = 4u;  // tests: density 1 everywhere inside the layer
-// A frame without history, the camera in or near the layer: its rays spread their start
-// offsets over the tiles (rayJitter), and it is rebuilt from them by a tent (reconstruct.comp).
-const uint kFlagRebuiltInsideLayer = 8u;
+// A frame without history, the camera in or near the layer or a hero cloud: its rays spread their
+// start offsets over the tiles (rayJitter), and it is rebuilt from them by a tent
+// (reconstruct.comp).
+const uint kFlagRebuiltInsideCloud = 8u;
 // This frame marches edge rays (Settings::edgeRays, with an output history to keep them):
 // pixels of each tile hold its edge rays' samples, or kNoEdgeRay (edgeRaySlot()).
 const uint kFlagEdgeRays = 16u;

@@ -10,7 +10,7 @@
 //    from this frame's fresh samples too; but in or near the layer, where thin cloud all
 //    around makes each ray's result depend much on where it started, a tent over them that
 //    averages their jitter and keeps the edges of the scene behind the clouds
-//    (insideLayerEstimate).
+//    (insideCloudEstimate).
 // With lightning (kSpecReconstructLightning) it also writes the clouds' glow with this frame's
 // flashes per unit of cloud (cloud_lightning.glsl), which the upsample adds: made from the
 // result but kept out of it, so no flash enters a history.
@@ -108,7 +108,7 @@ float sceneSimilarity(float here, float there) {
 // edges seen through the clouds stay sharp. (Elsewhere the samples' errors are small and the
 // tent's blur costs more than it saves: 25.6 against 31.3 dB for a frame of cumulus seen from
 // the ground at 160x90, High.)
-void insideLayerEstimate(uvec2 pixel, out vec4 radiance, out vec2 depth) {
+void insideCloudEstimate(uvec2 pixel, out vec4 radiance, out vec2 depth) {
   ivec2 p00;
   vec2 f;
   freshNeighbours(pixel, u, p00, f);
@@ -148,10 +148,10 @@ void main() {
   if (any(greaterThanEqual(pixel, u.traceExtent))) return;
   const int k = int(u.tileSize);
 
-  if (kHistory == kHistoryNone && (u.flags & kFlagRebuiltInsideLayer) != 0u) {
+  if (kHistory == kHistoryNone && (u.flags & kFlagRebuiltInsideCloud) != 0u) {
     vec4 result;
     vec2 resultDepth;
-    insideLayerEstimate(pixel, result, resultDepth);
+    insideCloudEstimate(pixel, result, resultDepth);
     writeResult(pixel, result, resultDepth, true);
     return;
   }

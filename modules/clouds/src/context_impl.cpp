@@ -349,11 +349,13 @@ void Context::Impl::dispatch(const FrameInputs& inputs, const Settings& settings
   device_.beginLabel(cmd, "clouds");
   startFrame(inputs, settings, slot);
 
-  // Hero clouds stand wherever the host puts them, whatever the layer's coverage.
-  const bool heroClouds = heroAtlas_ != nullptr && !inputs.heroClouds.empty();
-  lastHeroClouds_ = heroClouds ? detail::heroCloudUniforms(heroAtlas_->assets(), inputs.heroClouds,
-                                                           inputs.cameraPosition)
-                               : shader::HeroCloudUniforms{};
+  // Hero clouds stand wherever the host puts them, whatever the layer's coverage (those their
+  // lives leave empty are left out: a frame of only those has none).
+  lastHeroClouds_ = heroAtlas_ != nullptr
+                        ? detail::heroCloudUniforms(heroAtlas_->assets(), inputs.heroClouds,
+                                                    inputs.cameraPosition)
+                        : shader::HeroCloudUniforms{};
+  const bool heroClouds = lastHeroClouds_.count.x > 0;
   const bool inHeroCloud =
       detail::cameraInHeroCloudBox(lastHeroClouds_, settings.insideLayerMarginMetres);
 

@@ -53,12 +53,12 @@ HeroAtlasLayout packHeroAtlas(std::span<const NvdfVolume* const> assets) {
   return layout;
 }
 
-HeroLifeShape heroLifeShape(const HeroCloud& cloud, float heightVoxels, float voxelMetres) {
+HeroLifeShape heroLifeShape(const HeroCloud& cloud, float heightVoxels, float voxelWorldMetres) {
   const auto ease = [](float x) { return x * x * (3.0f - 2.0f * x); };
   const float grown = ease(std::clamp(cloud.growth, 0.0f, 1.0f));
   const float gone = ease(std::clamp(cloud.dissipation, 0.0f, 1.0f));
   const float feather = std::max(shader::kHeroTopFeather * heightVoxels, 1.0f);
-  const float depthScale = shader::kHeroDistanceRangeVoxels * voxelMetres;
+  const float depthScale = shader::kHeroDistanceRangeVoxels * voxelWorldMetres;
   HeroLifeShape shape;
   // The top rises from so far below the box (-1, where the filter's reach starts) that not even
   // its deepest points (kHeroDistanceRangeVoxels) stand above it, to a feather above its last

@@ -54,7 +54,7 @@ struct HeroLifeShape {
 inline constexpr float kGrowthErosion = 0.5f;
 inline constexpr float kDissipationErosion = 0.75f;
 inline constexpr float kMostErosion = 0.9f;
-HeroLifeShape heroLifeShape(const HeroCloud& cloud, float heightVoxels, float voxelMetres);
+HeroLifeShape heroLifeShape(const HeroCloud& cloud, float heightVoxels, float voxelWorldMetres);
 
 // This frame's instances as the march reads them: camera-relative, in double precision. A
 // cloud its life leaves empty (growth 0, or dissipation 1) is left out.

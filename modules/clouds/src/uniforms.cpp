@@ -17,11 +17,11 @@ double wrapToTile(double x, double tile) {
 
 namespace {
 
-// A frame without history inside the layer, made from a sparse pattern of its own rays (the
-// tent of reconstruct.comp). When every trace pixel is marched (a tile of 1: the Reference,
-// or reuse off at an update interval of 1) each pixel is its own ray, and a tent would only
-// blur it.
-bool rebuiltInsideLayer(const TemporalFrame& temporal) {
+// A frame without history inside the layer or a hero cloud's box, made from a sparse pattern of its
+// own rays (the tent of reconstruct.comp). When every trace pixel is marched (a tile of 1: the
+// Reference, or reuse off at an update interval of 1) each pixel is its own ray, and a tent would
+// only blur it.
+bool rebuiltInsideCloud(const TemporalFrame& temporal) {
   return (temporal.insideLayer || temporal.insideHeroCloud) && !temporal.useHistory &&
          temporal.tileSize > 1;
 }
@@ -155,7 +155,7 @@ void setMarch(shader::CloudUniforms& u, const Settings& s, const UniformContext&
   u.maxViewSteps = s.maxViewSteps;
   u.flags = (context.reversedZ ? shader::kFlagReversedZ : 0u) |
             (context.hasDepth ? shader::kFlagHasDepth : 0u) |
-            (rebuiltInsideLayer(context.temporal) ? shader::kFlagRebuiltInsideLayer : 0u) |
+            (rebuiltInsideCloud(context.temporal) ? shader::kFlagRebuiltInsideCloud : 0u) |
             (marchesEdgeRays(s, context.temporal) ? shader::kFlagEdgeRays : 0u);
 }
 

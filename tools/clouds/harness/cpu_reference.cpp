@@ -55,7 +55,7 @@ vec4 fetchWeatherMaxCoarse(ivec2 t) {
 uint heroCloudCount() {
   return gTextures != nullptr ? gTextures->heroes.uniforms.count.x : 0u;
 }
-bool heroLivesCompiled() {
+bool heroLifeCompiledIn() {
   return true;  // the branch on each cloud's erosion gives the same result either way
 }
 HeroCloudInstance heroCloud(uint index) {
@@ -138,7 +138,7 @@ CloudFrame renderCpuReference(const CpuTextures& textures, const CloudUniforms& 
       const float sceneDistance =
           sceneDistanceFromDepth(depth.empty() ? 0.0f : depth[i], centre, extent, u);
       const float jitter = rayJitter(pixel, u.rayStartOffset, u.tileSize,
-                                     (u.flags & kFlagRebuiltInsideLayer) != 0u, variant.jitter);
+                                     (u.flags & kFlagRebuiltInsideCloud) != 0u, variant.jitter);
       const MarchResult r = marchClouds(direction, sceneDistance, jitter,
                                         lightJitter(u.lightRound, variant.jitter), u, options);
       frame.radiance[i] = vec4(r.radiance, r.transmittance);

@@ -155,7 +155,12 @@ void CloudFeature::placeHeroClouds(clouds::FrameInputs& inputs) {
   if (!hasHeroClouds_) return;
   // The shadow pass and the clouds pass of a frame draw the same clouds: chosen once.
   if (heroFrame_ != inputs.frameIndex) {
-    heroClouds_ = heroClouds(world_, inputs.cameraPosition, clouds::kMaxHeroClouds);
+    std::string problem;
+    heroClouds_ = heroClouds(world_, inputs.cameraPosition, clouds::kMaxHeroClouds, &problem);
+    if (!problem.empty() && !lifecycleProblemLogged_) {
+      engine::log::error("a hero cloud is not drawn: " + problem);
+      lifecycleProblemLogged_ = true;
+    }
     heroFrame_ = inputs.frameIndex;
   }
   inputs.heroClouds = heroClouds_;

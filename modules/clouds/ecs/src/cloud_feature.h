@@ -71,7 +71,8 @@ class CloudFeature final : public engine::render::RenderFeature {
   std::vector<clouds::HeroCloud> heroClouds_;        // likewise
   std::optional<std::uint64_t> heroFrame_;           // the frame heroClouds_ were chosen for
   bool hasHeroClouds_ = false;  // the layer has hero cloud assets (loaded into the context)
-  clouds::Outputs imported_;    // the outputs the graph imported
+  bool lifecycleProblemLogged_ = false;  // a bad HeroCloudLifecycle is worth seeing once
+  clouds::Outputs imported_;             // the outputs the graph imported
   // The outputs the graph may import: none after a failed prepare(), whose outputs may be
   // missing or not yet in their layout.
   clouds::Outputs usableOutputs() const;

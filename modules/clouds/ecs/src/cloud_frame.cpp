@@ -56,14 +56,19 @@ std::vector<clouds::LightningFlash> lightningFlashes(engine::ecs::World& world,
 }
 
 std::vector<clouds::HeroCloud> heroClouds(engine::ecs::World& world,
-                                          const glm::dvec3& cameraPosition,
-                                          std::uint32_t capacity) {
+                                          const glm::dvec3& cameraPosition, std::uint32_t capacity,
+                                          std::string* problem) {
   std::vector<clouds::HeroCloud> clouds;
-  const double now = world.ctx().get<engine::ecs::FrameTime>().elapsedSeconds;
+  const auto* time = world.ctx().tryGet<engine::ecs::FrameTime>();
+  const double now = time != nullptr ? time->elapsedSeconds : 0.0;
   world.view<const clouds::HeroCloud>().each(
       [&](engine::ecs::Entity entity, const clouds::HeroCloud& cloud) {
         clouds::HeroCloud placed = cloud;
         if (const auto* lifecycle = world.tryGet<const clouds::HeroCloudLifecycle>(entity)) {
+          if (std::string error = clouds::validateHeroCloudLifecycle(*lifecycle); !error.empty()) {
+            if (problem != nullptr && problem->empty()) *problem = std::move(error);
+            return;
+          }
           const clouds::HeroCloudLife life = clouds::heroCloudLife(*lifecycle, now);
           placed.growth = life.growth;
           placed.dissipation = life.dissipation;

@@ -303,7 +303,7 @@ struct Settings {
   // Inside the layer or this close to it, a moving camera refreshes 2 x 2 tiles of the trace
   // each frame whatever updateInterval says (the cloud all around it changes from frame to
   // frame), and a frame without history is rebuilt by a tent over its rays (reconstruct.comp).
-  float insideLayerMarginMetres = 50.0f;       // [0, 5000]
+  float insideLayerMarginMetres = 50.0f;       // [0, 5000]; a hero cloud's box's too
   float historyResetDistanceMetres = 2000.0f;  // [1, 1e6] camera move in one frame that resets
   float historyResetAngleDegrees = 30.0f;      // [0.1, 180] camera turn in one frame that resets
   float relightResetDegrees = 2.0f;            // [0.01, 180] sun turn in one frame that resets

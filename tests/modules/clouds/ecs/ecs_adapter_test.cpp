@@ -99,6 +99,14 @@ TEST(CloudsEcsAdapter, HeroCloudsLiveTheirLifecycles) {
   // One without a lifecycle is as authored.
   EXPECT_EQ(drawnAt(200.0).front().growth, 1.0f);
   EXPECT_EQ(drawnAt(200.0).front().dissipation, 0.0f);
+
+  // A lifecycle out of range: not drawn, and the problem named.
+  w.world.get<clouds::HeroCloudLifecycle>(living).growSeconds = 0.0f;
+  time.elapsedSeconds = 15.0;
+  std::string problem;
+  drawn = clouds::ecs::heroClouds(w.world, camera, 1, &problem);
+  EXPECT_EQ(drawn.front().asset, 2u);
+  EXPECT_NE(problem.find("HeroCloudLifecycle.growSeconds"), std::string::npos) << problem;
 }
 
 TEST(CloudsEcsAdapter, TheCamerasPresetDecidesTheSettings) {

@@ -332,6 +332,48 @@ TEST_F(HeroClouds, CastIntoTheShadowMap) {
   EXPECT_GT(lit, 0.99f);
 }
 
+// A living cloud casts what it holds: the shadow map's living variant against the CPU column,
+// and less shade than the grown cloud's.
+TEST_F(HeroClouds, ALivingCloudCastsWhatItHolds) {
+  const Assets assets(harness().context());
+  const clouds::Settings s = heroOnly();
+  CloudView view = heroViews()[0].view;
+  view.sunElevationDegrees = 50.0;
+  const auto shade = [&](float dissipation, double* worstDepth) {
+    view.heroClouds[0].dissipation = dissipation;
+    harness().cut();
+    const clouds::tools::ShadowMapImage map = harness().renderShadowMap(view, s);
+    clouds::tools::CpuTextures textures =
+        withHeroes(clouds::tools::readTextures(harness()), impl());
+    textures.heroes.uniforms = impl().lastShadowHeroClouds();
+    double total = 0.0;
+    for (const auto& job : impl().lastShadowJobs()) {
+      for (std::uint32_t y = 1; y < s.shadowMapResolution; y += 5) {
+        for (std::uint32_t x = 2; x < s.shadowMapResolution; x += 5) {
+          const glm::vec4 cpu = clouds::tools::cpuShadowTexel(textures, impl().lastShadowUniforms(),
+                                                              job, {x, y}, true);
+          const glm::vec4 gpu =
+              map.texels[std::size_t{y} * map.width + job.cascade * s.shadowMapResolution + x];
+          *worstDepth = std::max(*worstDepth, std::abs(double(gpu.x - cpu.x)) / (1.0 + cpu.x));
+          total += gpu.x;
+        }
+      }
+    }
+    return total;
+  };
+  double worstGrown = 0.0;
+  double worstLiving = 0.0;
+  const double grown = shade(0.0f, &worstGrown);
+  const double living = shade(0.5f, &worstLiving);
+  std::printf(
+      "shadow map optical depth, summed: grown %.1f, half dissipated %.1f; worst "
+      "relative error against the CPU %.2e, %.2e\n",
+      grown, living, worstGrown, worstLiving);
+  EXPECT_LT(worstLiving, 2e-3);
+  EXPECT_GT(living, 0.05 * grown);
+  EXPECT_LT(living, 0.8 * grown);
+}
+
 // Nubis³'s SDF march: the signed distance lets the march jump the clear air inside a hero
 // cloud's box (and the air between the layer and the box): far fewer samples, and no less
 // accurate than the dense march against the converged Reference (whose finer steps and

@@ -7,6 +7,7 @@
 #include <vulkan/vulkan.h>
 
 #include <cstdint>
+#include <string>
 #include <vector>
 
 #include "clouds/clouds.h"
@@ -59,9 +60,12 @@ std::vector<clouds::LightningBoltSegment> lightningBolts(engine::ecs::World& wor
 // The hero clouds this frame draws: the entities with a clouds::HeroCloud, the `capacity`
 // nearest to `cameraPosition` (world metres), nearest first. An entity that also has a
 // clouds::HeroCloudLifecycle lives it on FrameTime's clock; while its life leaves it empty
-// (not yet grown, or dissipated) it is not drawn.
+// (not yet grown, or dissipated) it is not drawn. One whose lifecycle is out of range
+// (validateHeroCloudLifecycle()) is not drawn either; `problem`, when given and empty, receives
+// the first such message.
 std::vector<clouds::HeroCloud> heroClouds(engine::ecs::World& world,
-                                          const glm::dvec3& cameraPosition, std::uint32_t capacity);
+                                          const glm::dvec3& cameraPosition, std::uint32_t capacity,
+                                          std::string* problem = nullptr);
 
 // This frame's inputs. The module remembers the previous camera itself. The sun reaching the
 // clouds is the Sun through the world's SunTransmittance at the layer's middle altitude (the
