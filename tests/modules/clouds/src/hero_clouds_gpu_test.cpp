@@ -119,15 +119,47 @@ class Assets {
   clouds::Context& context_;
 };
 
+// The cumulus's atlas, packed once.
+const clouds::detail::HeroAtlasLayout& cumulusAtlas() {
+  static const clouds::detail::HeroAtlasLayout layout = [] {
+    const clouds::NvdfVolume* list[] = {&cumulus()};
+    return clouds::detail::packHeroAtlas(list);
+  }();
+  return layout;
+}
+
+// The cumulus's atlas as the CPU reference reads it, with `uniforms` placing it.
+clouds::tools::CpuHeroClouds cumulusOnTheCpu(const clouds::shader::HeroCloudUniforms& uniforms) {
+  const clouds::detail::HeroAtlasLayout& layout = cumulusAtlas();
+  clouds::tools::CpuHeroClouds heroes;
+  heroes.atlas = layout.texels;
+  heroes.extent = glm::uvec3(layout.extent.width, layout.extent.height, layout.extent.depth);
+  heroes.uniforms = uniforms;
+  return heroes;
+}
+
 clouds::tools::CpuTextures withHeroes(clouds::tools::CpuTextures textures,
                                       const clouds::Context::Impl& impl) {
-  const clouds::NvdfVolume* list[] = {&cumulus()};
-  clouds::detail::HeroAtlasLayout layout = clouds::detail::packHeroAtlas(list);
-  textures.heroes.atlas = std::move(layout.texels);
-  textures.heroes.extent =
-      glm::uvec3(layout.extent.width, layout.extent.height, layout.extent.depth);
-  textures.heroes.uniforms = impl.lastHeroClouds();
+  textures.heroes = cumulusOnTheCpu(impl.lastHeroClouds());
   return textures;
+}
+
+// The CPU reference of the frame `harness` last rendered (`gpu`), and the PSNR between them.
+struct CpuComparison {
+  CloudFrame cpu;
+  double psnr = 0.0;
+};
+CpuComparison againstTheCpu(clouds::tools::CloudHarness& harness, const clouds::Context::Impl& impl,
+                            const CloudFrame& gpu, const clouds::Settings& settings) {
+  const clouds::tools::CpuTextures textures =
+      withHeroes(clouds::tools::readTextures(harness), impl);
+  CpuComparison c;
+  c.cpu = clouds::tools::renderCpuReference(textures, impl.lastUniforms(), settings,
+                                            harness.lastDepth());
+  float peak = 1.0f;
+  for (const glm::vec4& p : c.cpu.radiance) peak = std::max({peak, p.r, p.g, p.b});
+  c.psnr = clouds::tools::psnr(gpu.radiance, c.cpu.radiance, peak);
+  return c;
 }
 
 TEST_F(HeroClouds, MatchTheCpuReferenceOnCanonicalViews) {
@@ -137,16 +169,11 @@ TEST_F(HeroClouds, MatchTheCpuReferenceOnCanonicalViews) {
     harness().cut();
     const CloudFrame gpu = harness().render(c.view, settings, kExtent);
     ASSERT_EQ(impl().lastHeroClouds().count.x, 1u) << c.name;
-    const clouds::tools::CpuTextures textures =
-        withHeroes(clouds::tools::readTextures(harness()), impl());
-    const CloudFrame cpu = clouds::tools::renderCpuReference(textures, impl().lastUniforms(),
-                                                             settings, harness().lastDepth());
-    float peak = 1.0f;
-    for (const glm::vec4& p : cpu.radiance) peak = std::max({peak, p.r, p.g, p.b});
-    const double psnr = clouds::tools::psnr(gpu.radiance, cpu.radiance, peak);
-    std::printf("%s: %.1f dB, mean opacity %.3f\n", c.name, psnr, meanOpacity(cpu));
-    EXPECT_GE(psnr, 40.0) << c.name;
-    EXPECT_GT(meanOpacity(cpu), 0.03) << c.name << " shows no cloud";
+    const CpuComparison compared = againstTheCpu(harness(), impl(), gpu, settings);
+    std::printf("%s: %.1f dB, mean opacity %.3f\n", c.name, compared.psnr,
+                meanOpacity(compared.cpu));
+    EXPECT_GE(compared.psnr, 40.0) << c.name;
+    EXPECT_GT(meanOpacity(compared.cpu), 0.03) << c.name << " shows no cloud";
   }
 }
 
@@ -415,13 +442,8 @@ TEST_F(HeroCloudCost, TheSignedDistanceSavesSamplesNotAccuracy) {
 class HeroLife {
  public:
   explicit HeroLife(clouds::HeroCloud cloud) {
-    const clouds::NvdfVolume* list[] = {&cumulus()};
-    clouds::detail::HeroAtlasLayout layout = clouds::detail::packHeroAtlas(list);
-    textures_.heroes.atlas = std::move(layout.texels);
-    textures_.heroes.extent =
-        glm::uvec3(layout.extent.width, layout.extent.height, layout.extent.depth);
-    textures_.heroes.uniforms =
-        clouds::detail::heroCloudUniforms(layout.assets, {&cloud, 1}, glm::dvec3(0.0));
+    textures_.heroes = cumulusOnTheCpu(
+        clouds::detail::heroCloudUniforms(cumulusAtlas().assets, {&cloud, 1}, glm::dvec3(0.0)));
     uniforms_.extinctionPerMetre = 0.004f;  // about 3 optical depths through the core
   }
   bool present() const { return textures_.heroes.uniforms.count.x == 1; }
@@ -467,12 +489,10 @@ clouds::HeroCloud living(float growth, float dissipation) {
 
 // The camera's place against the boxes: in one, near one (within the margin), or out.
 TEST(HeroCloudLives, TheCameraIsInABoxOrNot) {
-  const clouds::NvdfVolume* list[] = {&cumulus()};
-  const clouds::detail::HeroAtlasLayout layout = clouds::detail::packHeroAtlas(list);
   const auto inBox = [&](glm::dvec3 camera, float margin) {
     const clouds::HeroCloud cloud;  // its base's centre at the origin, 1200 x 1000 x 1200 m
     const clouds::shader::HeroCloudUniforms block =
-        clouds::detail::heroCloudUniforms(layout.assets, {&cloud, 1}, camera);
+        clouds::detail::heroCloudUniforms(cumulusAtlas().assets, {&cloud, 1}, camera);
     return clouds::detail::cameraInHeroCloudBox(block, margin);
   };
   EXPECT_TRUE(inBox({0.0, 500.0, 0.0}, 0.0f));
@@ -603,16 +623,10 @@ TEST_F(HeroClouds, ALifeMatchesTheCpuReference) {
     c.view.heroClouds[0].dissipation = life.y;
     harness().cut();
     const CloudFrame gpu = harness().render(c.view, settings, kExtent);
-    const clouds::tools::CpuTextures textures =
-        withHeroes(clouds::tools::readTextures(harness()), impl());
-    const CloudFrame cpu = clouds::tools::renderCpuReference(textures, impl().lastUniforms(),
-                                                             settings, harness().lastDepth());
-    float peak = 1.0f;
-    for (const glm::vec4& p : cpu.radiance) peak = std::max({peak, p.r, p.g, p.b});
-    const double psnr = clouds::tools::psnr(gpu.radiance, cpu.radiance, peak);
+    const CpuComparison compared = againstTheCpu(harness(), impl(), gpu, settings);
     std::printf("growth %.2f, dissipation %.2f: %.1f dB, mean opacity %.3f (grown %.3f)\n", life.x,
-                life.y, psnr, meanOpacity(cpu), grown);
-    EXPECT_GE(psnr, 40.0);
+                life.y, compared.psnr, meanOpacity(compared.cpu), grown);
+    EXPECT_GE(compared.psnr, 40.0);
     EXPECT_GT(meanOpacity(gpu), 0.1 * grown);
     EXPECT_LT(meanOpacity(gpu), 0.9 * grown);
   }
@@ -667,13 +681,10 @@ TEST_F(HeroCloudCost, DISABLED_AFlightThroughAHeroCloudStaysCloseAndLeavesNoGhos
   constexpr double kMetresPerFrame = 10.0;  // 300 m/s at 30 frames a second
   constexpr int kReferenceEvery = 24;
 
+  // Whether the camera is in the cloud's density (the shared model on the CPU).
+  clouds::tools::CpuTextures textures;
+  textures.heroes = cumulusOnTheCpu({});
   const auto inCloud = [&](clouds::tools::CloudHarness& r) {
-    clouds::tools::CpuTextures textures;
-    const clouds::NvdfVolume* assets[] = {&cumulus()};
-    clouds::detail::HeroAtlasLayout layout = clouds::detail::packHeroAtlas(assets);
-    textures.heroes.atlas = std::move(layout.texels);
-    textures.heroes.extent =
-        glm::uvec3(layout.extent.width, layout.extent.height, layout.extent.depth);
     textures.heroes.uniforms = clouds::detail::ContextAccess::impl(r.context()).lastHeroClouds();
     clouds::shader::CloudUniforms u{};
     u.extinctionPerMetre = 1.0f;
