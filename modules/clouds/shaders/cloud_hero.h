@@ -87,7 +87,9 @@ struct HeroSample {
   float clearMetres;     // no hero cloud lies within this distance (m); 0 in an envelope
 };
 
-FX_INLINE HeroSample heroField(vec3 relative, IN(CloudUniforms) u) {
+// `excluded`: clouds left out (bit i: instance i), those whose own light a light sample has
+// (cloud_hero_light.h's heroSunward()).
+FX_INLINE HeroSample heroFieldExcept(vec3 relative, IN(CloudUniforms) u, uint excluded) {
   HeroSample s;
   s.sigmaT = 0.0f;
   s.profile = 0.0f;
@@ -96,6 +98,7 @@ FX_INLINE HeroSample heroField(vec3 relative, IN(CloudUniforms) u) {
   float densest = 0.0f;
   const uint count = heroCloudCount();
   for (uint i = 0u; i < count; ++i) {
+    if (((excluded >> i) & 1u) != 0u) continue;
     const HeroCloudInstance h = heroCloud(i);
     const vec3 c = heroIndex(h, relative);
     const vec3 size = vec3(h.extent);
@@ -121,6 +124,10 @@ FX_INLINE HeroSample heroField(vec3 relative, IN(CloudUniforms) u) {
     }
   }
   return s;
+}
+
+FX_INLINE HeroSample heroField(vec3 relative, IN(CloudUniforms) u) {
+  return heroFieldExcept(relative, u, 0u);
 }
 
 // Where the ray from the camera-relative point `from` along the unit `direction` crosses hero

@@ -10,7 +10,8 @@
 // skipping); with the terrain's shadow, 10-11 the cloud shadow map and its parameters (its
 // terrain channel, fxcontracts/cloud_shadow.h). Outputs: 6 the marched samples (radiance,
 // transmittance, front and weighted depth in metres; packed, cloud_temporal.h); 9 work
-// counters; with hero clouds (kSpecHeroClouds), 14-15 their atlas and instances (cloud_hero.h).
+// counters; with hero clouds (kSpecHeroClouds), 14-15 their atlas and instances (cloud_hero.h)
+// and 16 their light volume (cloud_hero_light.h).
 // Feature toggles are specialization constants.
 // Edge rays (kSpecEdgeRays, while the frame's kFlagEdgeRays is set): the tiles on a silhouette
 // of last frame's reconstruction (12, trace history) are listed (13) by the tiles' march, and a
@@ -38,6 +39,7 @@ layout(constant_id = kSpecTerrainShadow) const uint kTerrainShadow = 0u;
 layout(constant_id = kSpecLightReuse) const uint kLightReuse = 1u;
 layout(constant_id = kSpecEdgeRays) const uint kEdgeRays = 0u;
 layout(constant_id = kSpecHeroClouds) const uint kHeroClouds = 0u;
+layout(constant_id = kSpecHeroLight) const uint kHeroLight = kHeroLightVolume;
 
 #include "frame_uniforms.glsl"
 layout(binding = kMarchShapeNoise, rgba8) uniform readonly image3D shapeNoise;
@@ -103,6 +105,10 @@ HeroCloudInstance heroCloud(uint index) {
   return heroClouds[CLOUDS_FRAME_UNIFORMS_INDEX].instance[index];
 }
 vec4 fetchHeroAtlas(ivec3 texel) { return imageLoad(heroAtlas, texel); }
+uvec4 heroCloudHeader() { return heroClouds[CLOUDS_FRAME_UNIFORMS_INDEX].count; }
+// Their light volume (read only by the kHeroLightVolume variants with hero clouds).
+layout(binding = kMarchHeroLight, r32f) uniform readonly image3D heroLight;
+float fetchHeroLight(ivec3 texel) { return imageLoad(heroLight, texel).r; }
 
 #include "cloud_march.h"
 #include "cloud_temporal.h"
@@ -140,6 +146,7 @@ void marchRay(uvec2 pixel, vec2 centre, float startOffset, uvec2 slot) {
   options.lightSteps = kLightSteps;
   options.emptySpace = kEmptySpace;
   options.lightReuse = kLightReuse;
+  options.heroLight = kHeroLight;
   const float jitter = rayJitter(pixel, startOffset, u.tileSize,
                                  (u.flags & kFlagRebuiltInsideCloud) != 0u, kJitterMode);
   const MarchResult result = marchClouds(

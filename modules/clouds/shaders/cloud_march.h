@@ -23,6 +23,7 @@
 
 #include "cloud_density.h"
 #include "cloud_hero.h"
+#include "cloud_hero_light.h"
 #include "cloud_lighting.h"
 #include "cloud_math.h"
 #include "cloud_noise.h"
@@ -45,6 +46,7 @@ struct MarchOptions {
   uint lightSteps;          // samples towards the sun per cloudy view sample
   uint emptySpace;          // jump over weather cells without cloud
   uint lightReuse;          // the sun's optical depth on every other step (lightOpticalDepth())
+  uint heroLight;           // kHeroLight*: how hero clouds shadow themselves (heroSunward())
 };
 
 struct MarchResult {
@@ -207,12 +209,13 @@ FX_INLINE FieldSample layerField(vec3 flatOffset, float altitude, float distance
 // line from the camera (the layer reads its x and z), `altitude` its altitude on the layer's
 // curved shell. Sources: the layer (layerField()) and the hero clouds (cloud_hero.h); their
 // extinctions add, and the lighting reads the profile and height of the denser. A new model
-// adds its own term here (and its bounds to the march's span: marchClouds()).
+// adds its own term here (and its bounds to the march's span: marchClouds()). `heroExcluded`:
+// hero clouds left out (bit i: instance i; a light sample's own, heroSunward()).
 FX_INLINE FieldSample sampleField(vec3 relative, float altitude, float distance, float lodDither,
-                                  uint wantDetail, IN(CloudUniforms) u) {
+                                  uint wantDetail, uint heroExcluded, IN(CloudUniforms) u) {
   FieldSample s = layerField(relative, altitude, distance, lodDither, wantDetail, u);
   CLOUDS_WHEN(heroCloudCount() > 0u) {
-    const HeroSample hero = heroField(relative, u);
+    const HeroSample hero = heroFieldExcept(relative, u, heroExcluded);
     if (hero.sigmaT > s.sigmaT) {
       s.profile = hero.profile;
       s.heightFraction = hero.heightFraction;
@@ -300,8 +303,10 @@ FX_INLINE vec3 lightJitter(uint round, uint mode) {
 // the shadowing detail is, they are short), at the place `jitter.x` in its stretch and in the
 // direction coneKernel() gives it: a stratified estimate of one integral, so more steps are
 // the same integral with less noise, and a ray's samples averaged over frames converge on it.
+// Hero clouds in `heroExcluded` (bit i: instance i) are left out: the sample has their optical
+// depth from heroSunward().
 FX_INLINE float lightOpticalDepth(vec3 flatOffset, float altitude, float distance, float lodDither,
-                                  uint steps, vec3 jitter, IN(CloudUniforms) u,
+                                  uint steps, vec3 jitter, uint heroExcluded, IN(CloudUniforms) u,
                                   INOUT(float) samples) {
   const vec3 sun = u.sunDirection;
   const float coneLength = u.lightConeMetres;
@@ -315,12 +320,25 @@ FX_INLINE float lightOpticalDepth(vec3 flatOffset, float altitude, float distanc
     const float d = mix(d0, d1, jitter.x);
     const vec3 offset = sun * d + coneKernel(j, vec2(jitter.y, jitter.z)) * (d * spread);
     // Over a few kilometres the curvature drop (d^2 / 2R, ~0.2 m) is negligible.
-    const FieldSample s =
-        sampleField(flatOffset + offset, altitude + offset.y, distance + d, lodDither, 0u, u);
+    const FieldSample s = sampleField(flatOffset + offset, altitude + offset.y, distance + d,
+                                      lodDither, 0u, heroExcluded, u);
     tau += s.sigmaT * (d1 - d0);
     samples += 1.0f;
   }
   return tau;
+}
+
+// Whether the light cone (lightOpticalDepth()) from a sample at `altitude` can meet the layer:
+// the layer can hold cloud (coverage and extinction), and the cone's altitudes, from
+// min(0, sun.y - spread) to max(0, sun.y + spread) times its length about the sample's, reach
+// its band.
+FX_INLINE bool layerInLightCone(float altitude, IN(CloudUniforms) u) {
+  const float reach = u.lightConeMetres;
+  const float lowest = altitude + reach * min(u.sunDirection.y - u.lightConeSpread, 0.0f);
+  const float highest = altitude + reach * max(u.sunDirection.y + u.lightConeSpread, 0.0f);
+  const bool holdsCloud = (u.flags & kFlagHomogeneous) != 0u ||
+                          (layerCoverage(1.0f, u.coverage) > 0.0f && u.extinctionPerMetre > 0.0f);
+  return holdsCloud && highest >= u.layerBottomMetres && lowest <= u.layerTopMetres;
 }
 
 // View-space unit direction of the ray through a pixel centre (pixel units, y down).
@@ -439,10 +457,14 @@ FX_INLINE MarchResult marchClouds(vec3 rayDirection, float sceneDistance, float 
                                altitudeAlongRay(t, cosZenith, altitude, u.planetRadiusMetres), u)
               : (layerHit && t < segment.x ? segment.x : kInfiniteDistance);
       // Never past a hero cloud: up to its box, and inside the box no further than its signed
-      // distance says is clear (Nubis³'s SDF march); a jump shorter than half a voxel is not
-      // worth its lookup, and the ray steps instead.
+      // distance says is clear (Nubis³'s SDF march), which it asks only where the last sample
+      // was clear air (in cloud there is no jump to find); a jump shorter than half a voxel is
+      // not worth its lookup, and the ray steps instead.
       CLOUDS_WHEN(heroHit && skipTo > t) {
-        float clear = t < heroSpan.x ? heroSpan.x - t : heroField(rayDirection * t, u).clearMetres;
+        float clear = t < heroSpan.x ? heroSpan.x - t : 0.0f;
+        for (int sdf = 0; sdf < (t >= heroSpan.x && !inCloud ? 1 : 0); ++sdf) {
+          clear = heroField(rayDirection * t, u).clearMetres;
+        }
         clear = clear > 0.5f * heroSpan.z ? clear : 0.0f;
         skipTo = min(skipTo, t + clear);
       }
@@ -466,8 +488,8 @@ FX_INLINE MarchResult marchClouds(vec3 rayDirection, float sceneDistance, float 
     const vec3 flatOffset = rayDirection * sampleDistance;
     const float sampleAltitude =
         altitudeAlongRay(sampleDistance, cosZenith, altitude, u.planetRadiusMetres);
-    const FieldSample field =
-        sampleField(flatOffset, sampleAltitude, sampleDistance, jitter, fine ? o.detail : 0u, u);
+    const FieldSample field = sampleField(flatOffset, sampleAltitude, sampleDistance, jitter,
+                                          fine ? o.detail : 0u, 0u, u);
     r.viewSamples += 1.0f;
     if (inHero) {
       ++heroSamples;
@@ -487,8 +509,17 @@ FX_INLINE MarchResult marchClouds(vec3 rayDirection, float sceneDistance, float 
     // a group takes them when any of its lanes does.
     const bool reuse = o.lightReuse != 0u && inCloud && (i & 1) == 1;
     CLOUDS_WHEN(field.sigmaT > 0.0f && !reuse) {
-      sunOpticalDepth = lightOpticalDepth(flatOffset, sampleAltitude, sampleDistance, jitter,
-                                          o.lightSteps, lightRandom, u, r.lightSamples);
+      // The hero clouds whose boxes hold the sample give their own optical depth (the light
+      // volume, or its straight integral); the cone takes what else lies towards the sun, when
+      // anything else can (Nubis³'s saving: a sample in a lone hero cloud marches no light).
+      const HeroSunward hero = heroSunward(flatOffset, u, heroHit ? o.heroLight : kHeroLightCone);
+      const bool coneNeeded = hero.covered == 0u ||
+                              heroCloudCount() > uint(bitCount(hero.covered)) ||
+                              layerInLightCone(sampleAltitude, u);
+      sunOpticalDepth =
+          hero.opticalDepth + lightOpticalDepth(flatOffset, sampleAltitude, sampleDistance, jitter,
+                                                coneNeeded ? o.lightSteps : 0u, lightRandom,
+                                                hero.covered, u, r.lightSamples);
     }
     inCloud = field.sigmaT > 0.0f;
     CLOUDS_WHEN(field.sigmaT > 0.0f) {

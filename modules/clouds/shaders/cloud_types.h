@@ -62,6 +62,9 @@ const uint kMarchEdgeRayList = 13u;   // the edge rays' tiles and dispatch (kSpe
 // uniforms, which the march then never reads.
 const uint kMarchHeroAtlas = 14u;
 const uint kMarchHeroClouds = 15u;
+// Their light volume (R32F 3D, hero_light_volume.comp; kSpecHeroLight kHeroLightVolume); a
+// stand-in otherwise: the scene distance, which the march then never reads there.
+const uint kMarchHeroLight = 16u;
 // reconstruct.comp
 const uint kReconstructFresh = 1u;
 const uint kReconstructHistory = 2u;
@@ -90,6 +93,10 @@ const uint kShadowMapSpare = 6u;  // one cascade in the making (kShadowTexelToSp
 // Hero clouds (kSpecShadowHeroClouds), as the march's kMarchHeroAtlas and kMarchHeroClouds.
 const uint kShadowHeroAtlas = 7u;
 const uint kShadowHeroClouds = 8u;
+// hero_light_volume.comp: the hero atlas and this frame's instances in, the light volume out.
+const uint kLightSweepAtlas = 0u;
+const uint kLightSweepClouds = 1u;
+const uint kLightSweepVolume = 2u;
 // terrain_shadow_map.comp
 const uint kTerrainShadowHeight = 0u;  // the host's heightfield, sampled
 const uint kTerrainShadowMap = 1u;     // the cascade atlas: its terrain channel is written
@@ -140,7 +147,8 @@ const uint kSpecTerrainShadow = 7u;       // 0/1: the terrain's shadow takes the
 const uint kSpecLightReuse = 8u;          // 0/1: the sun's optical depth on every other step
 const uint kSpecEdgeRays = 9u;            // kEdgeRays*: more rays for tiles on silhouettes
 const uint kSpecHeroClouds = 10u;         // kHeroClouds*: hero clouds (FrameInputs::heroClouds)
-const uint kMarchSpecCount = 11u;
+const uint kSpecHeroLight = 11u;          // kHeroLight*: how hero clouds shadow themselves
+const uint kMarchSpecCount = 12u;
 // The variants of kSpecEdgeRays: none; the tiles' march, which lists the edge tiles; the
 // edge rays' march, over that list (an indirect dispatch).
 const uint kEdgeRaysOff = 0u;
@@ -468,8 +476,31 @@ const float kHeroDistanceRangeVoxels = 16.0f;
 // A growing cloud's top fades over this fraction of its box's height (heroLifeWeight()).
 const float kHeroTopFeather = 0.2f;
 struct HeroCloudUniforms {
-  uvec4 count;  // x the instances this frame
+  // x the instances this frame; y their slots in the light volume (Settings::heroLight
+  // Volume), kHeroLightSlotBits each, instance 0's lowest; z a slot's extent in texels,
+  // x | y << 10 | z << 20 (cloud_hero_light.h's heroLightSlotOrigin())
+  uvec4 count;
   HeroCloudInstance instance[kMaxHeroClouds];
+};
+
+// How a sample in a hero cloud's box learns the optical depth towards the sun through that
+// cloud (Settings::heroLight, cloud_hero_light.h): the light cone through every density
+// source, as the layer's samples (Nubis³'s "base"); the cloud's light volume, one lookup, with
+// the cone through everything else; or the straight integral marched at half a voxel, which
+// the volume approximates (the Reference).
+const uint kHeroLightCone = 0u;
+const uint kHeroLightVolume = 1u;
+const uint kHeroLightMarched = 2u;
+// Asset voxels per light-volume texel along each axis.
+const float kHeroLightTexelVoxels = 2.0f;
+const uint kHeroLightSlotBits = 3u;  // kMaxHeroClouds slots
+// hero_light_volume.comp's push constants: which of this frame's instances it sweeps.
+struct HeroLightConstants {
+  vec4 sunDirection;  // xyz world, unit, towards the sun
+  uint instances;     // bit i: sweep instance i into its slot
+  uint blockIndex;    // 0: the hero block is indexed by it (frame_uniforms.glsl says why)
+  uint pad0;
+  uint pad1;
 };
 
 // lightning_bolts.comp's push constants: whether its workgroups are the 8 x 8 pixel blocks
@@ -594,6 +625,9 @@ static_assert(sizeof(clouds::shader::GodRayLightUniforms) == 64 + 6 * 16);
 static_assert(sizeof(clouds::shader::HeroCloudInstance) == 5 * 16);
 static_assert(sizeof(clouds::shader::HeroCloudUniforms) <= sizeof(clouds::shader::CloudUniforms),
               "without hero clouds the frame's uniforms stand in for their block");
+static_assert(sizeof(clouds::shader::HeroLightConstants) == 32);
+static_assert(clouds::shader::kMaxHeroClouds <= 1u << clouds::shader::kHeroLightSlotBits &&
+              clouds::shader::kMaxHeroClouds * clouds::shader::kHeroLightSlotBits <= 32u);
 static_assert(sizeof(clouds::shader::ShadowMapConstants) == 80);
 static_assert(sizeof(clouds::shader::TerrainShadowConstants) == 128);
 static_assert(sizeof(clouds::shader::MarchTerrainShadow) == 14 * 16);

@@ -93,6 +93,7 @@ Context::Impl::Impl(const CreateInfo& info, const detail::VulkanFunctions& funct
     slot.godRayOcclusion = allocateSet(Program::GodRayOcclusion);
     slot.godRays = allocateSet(Program::GodRays);
     slot.lightningBolts = allocateSet(Program::LightningBolts);
+    slot.heroLight = allocateSet(Program::HeroLight);
     slot.godRayLight = uniformBlock(device_, sizeof(shader::GodRayLightUniforms),
                                     "god-ray light " + std::to_string(i));
   }
@@ -365,6 +366,10 @@ void Context::Impl::dispatch(const FrameInputs& inputs, const Settings& settings
                                               traceExtent, inputs.renderExtent, temporal};
   lastUniforms_ = detail::buildUniforms(inputs, settings, uniformContext);
   lastUniforms_.flags |= debugFlags_;
+  // Hero clouds lit by their light volume: each instance's slot, and those to sweep first.
+  const bool heroLightVolume = heroClouds && settings.heroLight == HeroLight::Volume;
+  const std::uint32_t heroSweep =
+      heroLightVolume ? heroLight_->assignSlots(lastHeroClouds_, lastUniforms_.sunDirection) : 0u;
   if (skyIsClear(settings) && !heroClouds) {
     // Nothing can be marched: the outputs are the empty sky, and the next frame starts afresh.
     recordClearSky(cmd, slot);
@@ -390,6 +395,7 @@ void Context::Impl::dispatch(const FrameInputs& inputs, const Settings& settings
     }
     recordUniforms(cmd, slot, lastUniforms_, terrainShadow ? &shadow : nullptr,
                    heroClouds ? &lastHeroClouds_ : nullptr);
+    if (heroLightVolume) recordHeroLight(cmd, heroSweep, slot);
     if (inputs.skyView != VK_NULL_HANDLE || inputs.groundAlbedo) {
       recordSkyAmbient(cmd, inputs, settings, shadowMapMade, slot);
     }
@@ -459,11 +465,13 @@ MemoryUsage Context::Impl::memoryUsage() const {
     usage.heroCloudBytes += slot.heroClouds.bytes() + slot.shadowHeroClouds.bytes();
   }
   if (heroAtlas_) usage.heroCloudBytes += heroAtlas_->bytes();
+  if (heroLight_) usage.heroCloudBytes += heroLight_->bytes();
   return usage;
 }
 
 void Context::Impl::setHeroCloudAssets(std::span<const NvdfVolume* const> assets) {
   // The host waited for the GPU (the call's contract): the old atlas can go at once.
+  heroLight_.reset();
   heroAtlas_.reset();
   for (Slot& slot : slots_) {
     slot.heroClouds = detail::OwnedBuffer();
@@ -472,6 +480,7 @@ void Context::Impl::setHeroCloudAssets(std::span<const NvdfVolume* const> assets
   sliceHeroClouds_ = shader::HeroCloudUniforms{};
   if (assets.empty()) return;
   heroAtlas_ = std::make_unique<detail::HeroCloudAtlas>(device_, detail::packHeroAtlas(assets));
+  heroLight_ = std::make_unique<detail::HeroLightVolume>(device_, heroAtlas_->assets());
   for (std::size_t i = 0; i < slots_.size(); ++i) {
     slots_[i].heroClouds = uniformBlock(device_, sizeof(shader::HeroCloudUniforms),
                                         "hero clouds " + std::to_string(i));

@@ -25,6 +25,7 @@
 #include "cloud_types.h"
 #include "clouds/clouds.h"
 #include "hero_clouds.h"
+#include "hero_light_volume.h"
 #include "kit.h"
 #include "module_images.h"
 #include "passes.h"
@@ -109,7 +110,8 @@ class Context::Impl {
     detail::OwnedBuffer edgeRayList;  // the march's edge tiles and their dispatch (edgeRays)
     VkDescriptorSet lightningBolts = VK_NULL_HANDLE;
     detail::OwnedBuffer heroClouds;  // this frame's HeroCloudUniforms (with hero cloud assets)
-    detail::OwnedBuffer shadowHeroClouds;  // those the shadow map is made with (likewise)
+    detail::OwnedBuffer shadowHeroClouds;        // those the shadow map is made with (likewise)
+    VkDescriptorSet heroLight = VK_NULL_HANDLE;  // the light volume's sweep
   };
 
   VkDescriptorSet allocateSet(detail::Program program);
@@ -164,6 +166,9 @@ class Context::Impl {
   // This frame's bolts drawn into the radiance output (its set written), which the upsample
   // left ready for compute reads and writes; then the outputs made visible to the host.
   void recordBolts(VkCommandBuffer cmd, const FrameInputs& inputs, bool hazed, Slot& slot);
+  // The hero light volume's sweep of `instances` (bits; none: only its first layout) from the
+  // block recordUniforms() wrote.
+  void recordHeroLight(VkCommandBuffer cmd, std::uint32_t instances, Slot& slot);
   // `heroClouds`: the variant (shader::kHeroClouds*) that draws this frame's hero clouds
   // (recordUniforms() wrote them), kHeroCloudsOff for none.
   void recordTrace(VkCommandBuffer cmd, const FrameInputs& inputs, const Settings& settings,
@@ -219,6 +224,7 @@ class Context::Impl {
   bool outputsHoldClearSky_ = false;
   // The hero clouds' assets (setHeroCloudAssets()); none: no atlas, no hero march.
   std::unique_ptr<detail::HeroCloudAtlas> heroAtlas_;
+  std::unique_ptr<detail::HeroLightVolume> heroLight_;  // with the atlas (Settings::heroLight)
   detail::ShadowCascades shadowCascades_;
   ShadowMapParameters shadowParameters_{};
   std::optional<std::uint64_t> shadowFrame_;     // the frame of the last dispatchShadowMap()

@@ -74,6 +74,8 @@ ModuleImages::ModuleImages(const DeviceContext& device) : device_(device) {
       make(VK_IMAGE_TYPE_2D, kSampleFormat, {1, 1, 1}, kStorage, "no output history");
   hazePlaceholder = make(VK_IMAGE_TYPE_3D, kRadianceFormat, {1, 1, 1}, VK_IMAGE_USAGE_SAMPLED_BIT,
                          "no aerial perspective", VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL);
+  noHeroLight =
+      make(VK_IMAGE_TYPE_3D, VK_FORMAT_R32_SFLOAT, {1, 1, 1}, kStorage, "no hero light volume");
   noDepthOutput = make(VK_IMAGE_TYPE_2D, kDepthOutputFormat, {1, 1, 1}, VK_IMAGE_USAGE_STORAGE_BIT,
                        "no cloud depth output");
 }
@@ -223,7 +225,7 @@ MemoryUsage ModuleImages::memoryUsage() const {
   m.godRayBytes = godRayOcclusion.bytes() + godRayMask.bytes() + godRayLight.bytes();
   m.lightningBytes = lightningGlow.bytes();
   m.bufferBytes = depthPlaceholder.bytes() + samplesPlaceholder.bytes() + hazePlaceholder.bytes() +
-                  noDepthOutput.bytes();
+                  noHeroLight.bytes() + noDepthOutput.bytes();
   for (const Retired& r : retired_) m.retiredBytes += r.image.bytes();
   return m;
 }

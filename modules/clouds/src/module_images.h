@@ -74,6 +74,7 @@ class ModuleImages {
   OwnedImage depthPlaceholder;    // 1 x 1 sampled R32F: no host depth
   OwnedImage samplesPlaceholder;  // 1 x 1 storage RGBA32UI: no output history
   OwnedImage hazePlaceholder;     // 1 x 1 x 1 sampled RGBA16F: no aerial perspective
+  OwnedImage noHeroLight;         // 1 x 1 x 1 storage R32F: no hero clouds' light volume
   OwnedImage noDepthOutput;       // 1 x 1 storage RG32F: no cloud depth output
   // Sized by grow().
   OwnedImage radiance;                      // outputs, output resolution

@@ -28,6 +28,9 @@ SpecializationKey marchKey(const Settings& settings, bool workCounters, bool ter
   key.values[shader::kSpecLightReuse] = v.lightReuse;
   key.values[shader::kSpecEdgeRays] = v.edgeRays != 0u ? edgeRays : shader::kEdgeRaysOff;
   key.values[shader::kSpecHeroClouds] = heroClouds;
+  // Only a march that draws hero clouds has a use for their lighting's variants.
+  key.values[shader::kSpecHeroLight] =
+      heroClouds != shader::kHeroCloudsOff ? v.heroLight : shader::kHeroLightCone;
   key.count = shader::kMarchSpecCount;
   return key;
 }
@@ -123,6 +126,10 @@ std::vector<std::pair<Program, SpecializationKey>> variantsFor(const Settings& s
         }
       }
     }
+  }
+  // The light volume's sweep, only for hero clouds lit by it.
+  if (heroClouds && settings.heroLight == HeroLight::Volume) {
+    variants.emplace_back(Program::HeroLight, SpecializationKey{});
   }
   // No shadow map, no shadow pipelines (and no terrain shadow: it lives in the map).
   if (settings.shadowCascades > 0) {

@@ -10,6 +10,7 @@
 #include "clouds_shaders/depth_downsample.comp.spv.h"
 #include "clouds_shaders/god_ray_occlusion.comp.spv.h"
 #include "clouds_shaders/god_rays.comp.spv.h"
+#include "clouds_shaders/hero_light_volume.comp.spv.h"
 #include "clouds_shaders/lightning_bolts.comp.spv.h"
 #include "clouds_shaders/noise_curl.comp.spv.h"
 #include "clouds_shaders/noise_detail.comp.spv.h"
@@ -108,9 +109,15 @@ std::vector<ProgramDesc> programTable() {
         {kMarchTraceHistory, kImage},
         {kMarchEdgeRayList, kBuffer},
         {kMarchHeroAtlas, kImage},
-        {kMarchHeroClouds, kUniforms}},
+        {kMarchHeroClouds, kUniforms},
+        {kMarchHeroLight, kImage}},
        sizeof(FrameUniformsIndex),
        "march"},
+      {Program::HeroLight,
+       hero_light_volume_comp_spv,
+       {{kLightSweepAtlas, kImage}, {kLightSweepClouds, kUniforms}, {kLightSweepVolume, kImage}},
+       sizeof(HeroLightConstants),
+       "hero light volume"},
       {Program::Reconstruct,
        reconstruct_comp_spv,
        {{kBindingUniforms, kUniforms},
@@ -198,13 +205,15 @@ Programs::Programs(const DeviceContext& device, bool composite) {
     auto& program = programs_[index(desc.program)];
     program = std::make_unique<ComputeProgram>(device, desc.spirv, desc.bindings,
                                                desc.pushConstantBytes, desc.name);
-    // Programs without specialization constants have one variant: made now (the shadow map's
-    // and the god rays' programs by prepare(), only for settings that have them).
+    // Programs without specialization constants have one variant: made now (the shadow map's,
+    // the god rays' and the hero light volume's by prepare(), only for settings and assets
+    // that have them).
     const bool specialised =
         desc.program == Program::March || desc.program == Program::Reconstruct ||
         desc.program == Program::Upsample || desc.program == Program::ShadowMap ||
         desc.program == Program::TerrainShadow || desc.program == Program::GodRayOcclusion ||
-        desc.program == Program::GodRays || desc.program == Program::LightningBolts;
+        desc.program == Program::GodRays || desc.program == Program::LightningBolts ||
+        desc.program == Program::HeroLight;
     if (!specialised) program->prepare();
   }
 }

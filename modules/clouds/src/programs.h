@@ -30,6 +30,7 @@ enum class Program : std::uint32_t {
   GodRayOcclusion,  // god_ray_occlusion.comp: what hides the sun, a quarter of the output
   GodRays,          // god_rays.comp: the god-ray mask (its radial blur)
   LightningBolts,   // lightning_bolts.comp: this frame's bolts into the radiance output
+  HeroLight,        // hero_light_volume.comp: hero clouds' light volume, swept when due
   Count
 };
 

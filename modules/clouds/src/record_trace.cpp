@@ -51,13 +51,14 @@ struct TraceFrame {
   // the shape noise (RGBA8 3D) and the frame's uniforms.
   VkImageView heroAtlas = VK_NULL_HANDLE;
   VkBuffer heroBlock = VK_NULL_HANDLE;
+  VkImageView heroLight = VK_NULL_HANDLE;  // their light volume, or a 1-texel stand-in
 };
 
-// `heroAtlas`, `heroBlock`: the hero clouds' (null without them this frame).
+// `heroAtlas`, `heroBlock`, `heroLight`: the hero clouds' (null without them this frame).
 TraceFrame traceFrame(const detail::ModuleImages& im, const TraceSamplers& samplers,
                       VkBuffer uniforms, const FrameInputs& inputs, const Settings& settings,
                       const detail::TemporalFrame& temporal, bool terrainShadow,
-                      VkImageView heroAtlas, VkBuffer heroBlock) {
+                      VkImageView heroAtlas, VkBuffer heroBlock, VkImageView heroLight) {
   const bool hasDepth = inputs.depthView != VK_NULL_HANDLE;
   const FrameInputs::AerialPerspective& haze = inputs.aerialPerspective;
   const bool hazed = haze.view != VK_NULL_HANDLE;
@@ -84,6 +85,7 @@ TraceFrame traceFrame(const detail::ModuleImages& im, const TraceSamplers& sampl
       .edgeRays = detail::marchesEdgeRays(settings, temporal),
       .heroAtlas = heroAtlas != VK_NULL_HANDLE ? heroAtlas : im.shapeNoise.view(),
       .heroBlock = heroAtlas != VK_NULL_HANDLE ? heroBlock : uniforms,
+      .heroLight = heroLight != VK_NULL_HANDLE ? heroLight : im.noHeroLight.view(),
   };
 }
 
@@ -129,6 +131,7 @@ void writeMarchSet(const detail::DeviceContext& device, VkDescriptorSet set,
                      frame.edgeRays ? edgeRayList.size() : counters.size())
       .storageImage(kMarchHeroAtlas, frame.heroAtlas)
       .uniformBuffer(kMarchHeroClouds, frame.heroBlock, sizeof(HeroCloudUniforms))
+      .storageImage(kMarchHeroLight, frame.heroLight)
       .commit();
 }
 
@@ -297,10 +300,12 @@ void Context::Impl::recordTrace(VkCommandBuffer cmd, const FrameInputs& inputs,
                                 std::uint32_t heroClouds, Slot& slot) {
   const TraceSamplers samplers{nearestSampler_.get(), linearSampler_.get(),
                                clampedLinearSampler_.get()};
+  const bool heroes = heroClouds != shader::kHeroCloudsOff;
   const TraceFrame frame = traceFrame(
       images_, samplers, slot.uniforms.buffer(), inputs, settings, temporal, terrainShadow,
-      heroClouds != shader::kHeroCloudsOff ? heroAtlas_->image().view() : VK_NULL_HANDLE,
-      slot.heroClouds.buffer());
+      heroes ? heroAtlas_->image().view() : VK_NULL_HANDLE, slot.heroClouds.buffer(),
+      heroes && settings.heroLight == HeroLight::Volume ? heroLight_->image().view()
+                                                        : VK_NULL_HANDLE);
   writeSceneDistanceSet(device_, slot.sceneDistance, frame);
   writeMarchSet(device_, slot.march, frame, weatherMap(), slot.counters, slot.shadowParameters,
                 slot.edgeRayList);
@@ -330,6 +335,16 @@ void Context::Impl::recordTrace(VkCommandBuffer cmd, const FrameInputs& inputs,
   if (!bolts) return;
   writeBoltsSet(device_, slot.lightningBolts, frame, slot.bolts);
   recordBolts(cmd, inputs, frame.hazed, slot);
+}
+
+void Context::Impl::recordHeroLight(VkCommandBuffer cmd, std::uint32_t instances, Slot& slot) {
+  heroLight_->recordFirstUse(cmd);
+  if (instances == 0) return;
+  beginPass(cmd, detail::Pass::HeroLight, "clouds: hero light volume");
+  heroLight_->recordSweep(cmd, programs_[Program::HeroLight], slot.heroLight,
+                          heroAtlas_->image().view(), slot.heroClouds.buffer(), instances,
+                          lastUniforms_.sunDirection);
+  endPass(cmd, detail::Pass::HeroLight);
 }
 
 void Context::Impl::recordSceneDistance(VkCommandBuffer cmd, VkExtent2D traceExtent, Slot& slot) {

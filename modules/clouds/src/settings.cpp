@@ -150,6 +150,10 @@ std::string validateSettings(const Settings& s) {
   c.require(s.jitter == Jitter::None || s.jitter == Jitter::BayerHalton ||
                 s.jitter == Jitter::BayerHaltonSubpixel,
             "Settings.jitter: unknown mode " + std::to_string(static_cast<unsigned>(s.jitter)));
+  c.require(
+      s.heroLight == HeroLight::Cone || s.heroLight == HeroLight::Volume ||
+          s.heroLight == HeroLight::Marched,
+      "Settings.heroLight: unknown mode " + std::to_string(static_cast<unsigned>(s.heroLight)));
   return c.error;
 }
 
@@ -173,6 +177,7 @@ Settings referenceSettings(const Settings& base) {
   s.transmittanceCutoff = 1e-4f;
   s.detailDistanceMetres = std::max(base.detailDistanceMetres, base.maxDistanceMetres);
   s.jitter = Jitter::BayerHaltonSubpixel;
+  s.heroLight = HeroLight::Marched;
   // The shadow map, fine and fresh (whether there is one at all is the base's).
   s.shadowMapResolution = 512;
   s.shadowSteps = 64;

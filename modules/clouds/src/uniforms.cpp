@@ -307,6 +307,10 @@ bool marchesEdgeRays(const Settings& s, const TemporalFrame& temporal) {
   return s.edgeRays > 0 && temporal.useOutputHistory && temporal.tileSize > 1;
 }
 
+static_assert(static_cast<std::uint32_t>(HeroLight::Cone) == shader::kHeroLightCone &&
+              static_cast<std::uint32_t>(HeroLight::Volume) == shader::kHeroLightVolume &&
+              static_cast<std::uint32_t>(HeroLight::Marched) == shader::kHeroLightMarched);
+
 MarchVariant marchVariant(const Settings& s) {
   // Temporal upsampling moves the rays inside their pixels (u.subpixel; zero while it does
   // not accumulate), which is jitter mode 2.
@@ -318,7 +322,8 @@ MarchVariant marchVariant(const Settings& s) {
                       s.lightSteps,
                       s.emptySpaceSkipping ? 1u : 0u,
                       s.lightEveryOtherStep ? 1u : 0u,
-                      s.edgeRays > 0 && upsamplesTemporally(s) ? 1u : 0u};
+                      s.edgeRays > 0 && upsamplesTemporally(s) ? 1u : 0u,
+                      static_cast<std::uint32_t>(s.heroLight)};
 }
 
 VkDeviceSize edgeRayListBytes(VkExtent2D traceExtent) {

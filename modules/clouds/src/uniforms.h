@@ -29,7 +29,8 @@ struct MarchVariant {
   std::uint32_t lightSteps;
   std::uint32_t emptySpace;
   std::uint32_t lightReuse;
-  std::uint32_t edgeRays;  // 0/1: the settings have edge rays (and temporal upsampling)
+  std::uint32_t edgeRays;   // 0/1: the settings have edge rays (and temporal upsampling)
+  std::uint32_t heroLight;  // shader::kHeroLight* (Settings::heroLight)
 };
 MarchVariant marchVariant(const Settings& settings);
 

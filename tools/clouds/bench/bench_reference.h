@@ -7,10 +7,25 @@
 // bench marches the Reference at pixel centres and moves its rays through the projection to
 // points of its own.
 #include <cstdint>
+#include <vector>
 
 #include <glm/vec2.hpp>
 
+#include "cloud_harness.h"
+
 namespace bench {
+
+// The Reference of a view: `frames` frames of the Reference mode over `look` averaged, its rays
+// moved through the pixels by referenceSubpixelOffset(), plus the first one alone (what a single
+// Reference frame is worth) and each frame's GPU time.
+struct Reference {
+  std::vector<glm::vec3> pixels;       // averaged, tonemapped
+  std::vector<glm::vec3> firstPixels;  // the first frame alone, tonemapped
+  std::vector<double> milliseconds;
+};
+Reference renderReference(clouds::tools::CloudHarness& harness,
+                          const clouds::tools::CloudView& view, const clouds::Settings& look,
+                          VkExtent2D extent, std::uint32_t frames);
 
 // Frame `i`'s offset from the pixel centre (pixels, in (-0.5, 0.5)): the centres of a 4 x 4
 // grid over the pixel, in the order of a 4 x 4 Bayer matrix (every 4 frames in a row spread

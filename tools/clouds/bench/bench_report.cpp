@@ -168,6 +168,7 @@ void writeCsv(const std::filesystem::path& file, const BenchResults& results) {
         << ',' << m.memoryMiB << '\n';
   }
   writeShadowCsv(out, results.shadows);
+  writeVoxelCsv(out, results.voxels);
   // The Reference mode itself: one frame's time, and one frame against the averaged Reference.
   for (const ReferenceMeasurement& r : results.references) {
     // No error for the fly-through's Reference (it is not compared with itself).
@@ -375,6 +376,7 @@ void writeMarkdown(const std::filesystem::path& file, const BenchResults& result
     out << ' ' << format("%.0f", referenceMs(results, view)) << " |";
   out << "\n\nPSNR 200 means identical images (the clear sky has no clouds to get wrong).\n";
   writeShadowMarkdown(out, results.shadows);
+  writeVoxelMarkdown(out, results.voxels);
 }
 
 void writePlotData(const std::filesystem::path& file, const BenchResults& results) {

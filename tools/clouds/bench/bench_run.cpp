@@ -77,13 +77,7 @@ void renderOrThrow(clouds::tools::CloudHarness& harness, const clouds::tools::Cl
   if (!error.empty()) throw engine::Error("clouds_bench: " + error);
 }
 
-// The Reference of a view: `frames` frames of the Reference mode averaged, plus the first one
-// alone (what a single Reference frame is worth) and each frame's GPU time.
-struct Reference {
-  std::vector<glm::vec3> pixels;       // averaged, tonemapped
-  std::vector<glm::vec3> firstPixels;  // the first frame alone, tonemapped
-  std::vector<double> milliseconds;
-};
+}  // namespace
 
 Reference renderReference(clouds::tools::CloudHarness& harness,
                           const clouds::tools::CloudView& view, const clouds::Settings& look,
@@ -110,8 +104,6 @@ Reference renderReference(clouds::tools::CloudHarness& harness,
   reference.pixels = clouds::tools::tonemappedPixels(sum, view);
   return reference;
 }
-
-}  // namespace
 
 std::vector<std::string> implausibleMeasurements(const BenchResults& results) {
   std::vector<std::string> problems;
@@ -250,6 +242,10 @@ BenchResults runBenchmark(engine::gfx::Device& device, const RunOptions& options
 
   // --- The cloud shadow map's knobs (its own views and error; none with --view elsewhere). ----
   results.shadows = runShadowBenchmark(device, options.onlyViews, progress);
+
+  // --- Hero clouds: seed 002's optimisation ladder (its own views and Reference). ------------
+  results.voxels = runVoxelLadder(device, options.extent, options.timedFrames,
+                                  options.referenceFrames, options.onlyViews, progress);
 
   // --- The fly-through: every frame timed, the error at regular frames. ----------------------
   const std::string flyName = "fly-through";

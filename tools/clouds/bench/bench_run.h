@@ -11,6 +11,7 @@
 
 #include "bench_setup.h"
 #include "bench_shadow.h"
+#include "bench_voxel.h"
 #include "engine/gfx/device.h"
 
 namespace bench {
@@ -71,6 +72,7 @@ struct BenchResults {
   std::vector<ReferenceMeasurement> references;
   std::map<std::string, std::vector<ConvergencePoint>> highConvergence;  // per static view
   ShadowResults shadows;  // the cloud shadow map's part (bench_shadow.h)
+  VoxelResults voxels;    // hero clouds' optimisation ladder (bench_voxel.h)
   std::string device;
   double seconds = 0.0;  // wall time of the whole run
 

@@ -16,6 +16,9 @@ namespace clouds::shader {
 namespace {
 // Read-only while rendering; every worker thread samples the same texels.
 const clouds::tools::CpuTextures* gTextures = nullptr;
+// The hero clouds' light volume (cloud_hero_light.h) the reference swept for them, its extent.
+std::vector<float>* gHeroLight = nullptr;
+glm::uvec3 gHeroLightExtent{0u};
 // The level weatherMaxima() reads (one thread).
 const std::vector<std::uint8_t>* gMaximaSource = nullptr;
 int gMaximaSourceSize = 0;
@@ -66,6 +69,46 @@ vec4 fetchHeroAtlas(ivec3 t) {
   return texel(gTextures->heroes.atlas,
                (std::size_t(t.z) * e.y + std::size_t(t.y)) * e.x + std::size_t(t.x));
 }
+uvec4 heroCloudHeader() {
+  return gTextures->heroes.uniforms.count;
+}
+float fetchHeroLight(ivec3 t) {
+  const glm::uvec3 e = gHeroLightExtent;
+  return (*gHeroLight)[(std::size_t(t.z) * e.y + std::size_t(t.y)) * e.x + std::size_t(t.x)];
+}
+void storeHeroLight(ivec3 t, float value) {
+  const glm::uvec3 e = gHeroLightExtent;
+  (*gHeroLight)[(std::size_t(t.z) * e.y + std::size_t(t.y)) * e.x + std::size_t(t.x)] = value;
+}
+
+// hero_light_volume.comp's sweep on the CPU: each instance's slot, slice by slice from the sun's
+// side, with the shared function.
+void sweepHeroLight(vec3 sunDirection) {
+  const uvec4 header = heroCloudHeader();
+  const glm::uvec3 slotExtent(header.z & 1023u, (header.z >> 10u) & 1023u, header.z >> 20u);
+  gHeroLightExtent = 2u * slotExtent;
+  gHeroLight->assign(std::size_t(gHeroLightExtent.x) * gHeroLightExtent.y * gHeroLightExtent.z,
+                     0.0f);
+  for (uint index = 0u; index < header.x; ++index) {
+    const HeroCloudInstance h = heroCloud(index);
+    const ivec3 size = heroLightSize(h);
+    const ivec3 slotOrigin = heroLightSlotOrigin(index);
+    const vec3 sun = heroSunIndexDirection(h, sunDirection);
+    const int axis = heroLightAxis(sun);
+    const int across = (axis + 1) % 3;
+    const int up = (axis + 2) % 3;
+    for (int s = 0; s < size[axis]; ++s) {
+      ivec3 j;
+      j[axis] = sun[axis] > 0.0f ? size[axis] - 1 - s : s;
+      for (int t = 0; t < size[across] * size[up]; ++t) {
+        j[across] = t % size[across];
+        j[up] = t / size[across];
+        storeHeroLight(j + slotOrigin, heroLightSweepTexel(h, j, sun, axis, size, slotOrigin));
+      }
+    }
+  }
+}
+
 // The reference marches without the host's terrain.
 float terrainSunLight(vec3, float) {
   return 1.0f;
@@ -121,7 +164,13 @@ CloudFrame renderCpuReference(const CpuTextures& textures, const CloudUniforms& 
   gTextures = &textures;
   const clouds::detail::MarchVariant variant = clouds::detail::marchVariant(settings);
   MarchOptions options{variant.detail,     variant.cheapSampling, variant.multipleScattering,
-                       variant.lightSteps, variant.emptySpace,    variant.lightReuse};
+                       variant.lightSteps, variant.emptySpace,    variant.lightReuse,
+                       variant.heroLight};
+  // The light volume the GPU swept for these clouds, swept again here (its slots: the block's).
+  std::vector<float> heroLight;
+  gHeroLight = &heroLight;
+  if (variant.heroLight == kHeroLightVolume && heroCloudCount() > 0u)
+    sweepHeroLight(u.sunDirection);
   CloudFrame frame;
   frame.extent = {u.traceExtent.x, u.traceExtent.y};
   const std::size_t pixels = std::size_t{u.traceExtent.x} * u.traceExtent.y;
@@ -149,14 +198,18 @@ CloudFrame renderCpuReference(const CpuTextures& textures, const CloudUniforms& 
   for (unsigned t = 0; t < threads; ++t) workers.emplace_back(work, t);
   for (auto& w : workers) w.join();
   gTextures = nullptr;
+  gHeroLight = nullptr;
   return frame;
 }
 
-CpuHeroScope::CpuHeroScope(const CpuTextures& textures) {
+CpuHeroScope::CpuHeroScope(const CpuTextures& textures, std::optional<glm::vec3> lightSun) {
   gTextures = &textures;
+  gHeroLight = &light_;
+  if (lightSun && heroCloudCount() > 0u) sweepHeroLight(*lightSun);
 }
 CpuHeroScope::~CpuHeroScope() {
   gTextures = nullptr;
+  gHeroLight = nullptr;
 }
 
 glm::vec4 cpuShadowTexel(const CpuTextures& textures, const CloudUniforms& u,

@@ -3,6 +3,7 @@
 // headers it includes) compiled as C++, sampling CPU copies of the very texels the GPU used.
 // Given the same uniforms it computes what the march shader should have written.
 #include <cstdint>
+#include <optional>
 #include <vector>
 
 #include "cloud_harness.h"
@@ -59,15 +60,21 @@ double cpuSunOpticalDepth(const CpuTextures& textures,
                           const clouds::shader::CloudUniforms& uniforms, const glm::vec3& relative,
                           const glm::vec3& light, float stepMetres);
 
-// The shared model's hero-cloud functions (cloud_hero.h) read `textures` while one of these
-// lives, on the thread that made it: for tests of the voxel model itself. No other CPU
-// reference call may run meanwhile.
+// The shared model's hero-cloud functions (cloud_hero.h, cloud_hero_light.h) read `textures`
+// while one of these lives, on the thread that made it: for tests of the voxel model itself.
+// With `lightSun` (world, unit, towards the sun), the light volume of the clouds in
+// textures.heroes (their slots as the block's header gives them) is swept for that sun first,
+// as hero_light_volume.comp sweeps it. No other CPU reference call may run meanwhile.
 class CpuHeroScope {
  public:
-  explicit CpuHeroScope(const CpuTextures& textures);
+  explicit CpuHeroScope(const CpuTextures& textures,
+                        std::optional<glm::vec3> lightSun = std::nullopt);
   ~CpuHeroScope();
   CpuHeroScope(const CpuHeroScope&) = delete;
   CpuHeroScope& operator=(const CpuHeroScope&) = delete;
+
+ private:
+  std::vector<float> light_;
 };
 
 // A terrain heightfield on the CPU: altitudes (m), row-major, row 0 at the image's v = 0

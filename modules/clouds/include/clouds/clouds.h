@@ -174,6 +174,21 @@ enum class Jitter : std::uint32_t {
   BayerHaltonSubpixel = 2,
 };
 
+// How a hero cloud shadows itself: the optical depth towards the sun of a sample in its box
+// through its own voxels (Schneider 2023, Nubis³'s voxel-based lighting).
+enum class HeroLight : std::uint32_t {
+  // The light cone through every density source, as the layer's samples take it (lightSteps
+  // samples): Nubis³'s "base". With few steps, hero clouds come out too bright.
+  Cone = 0,
+  // The light volume: the optical depth swept through each instance's voxels towards the sun at
+  // 2-voxel spacing, refreshed when its sun, asset or life changes; a sample takes one lookup,
+  // and the cone the rest (the layer, other hero clouds).
+  Volume = 1,
+  // The straight integral the volume approximates, marched per sample at half a voxel: the
+  // Reference's.
+  Marched = 2,
+};
+
 // Plain settings with defaults; ranges are checked by validateSettings() and dispatch().
 struct Settings {
   // --- Cloud layer -----------------------------------------------------------------------
@@ -259,7 +274,8 @@ struct Settings {
   // sample's own.
   bool lightEveryOtherStep = true;
   Jitter jitter = Jitter::BayerHalton;
-  bool emptySpaceSkipping = true;  // jump over weather cells without cloud (exact)
+  bool emptySpaceSkipping = true;           // jump over weather cells without cloud (exact)
+  HeroLight heroLight = HeroLight::Volume;  // hero clouds' self-shadowing (HeroLight)
 
   // --- Resolution and temporal reconstruction ----------------------------------------------
   // The march runs at traceScale x the output resolution (per axis); each frame it refreshes

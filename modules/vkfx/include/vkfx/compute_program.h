@@ -76,7 +76,7 @@ class SetWriter {
   Entry& add(std::uint32_t binding, VkDescriptorType type);
 
   // Fixed capacity: descriptor updates happen every frame and must not allocate.
-  static constexpr std::size_t kMaxEntries = 16;
+  static constexpr std::size_t kMaxEntries = 20;
   const DeviceContext& context_;
   VkDescriptorSet set_;
   std::array<Entry, kMaxEntries> entries_{};
