@@ -429,7 +429,9 @@ FX_INLINE MarchResult marchClouds(vec3 rayDirection, float sceneDistance, float 
 
   float weightedDepthSum = 0.0f;
   float t = start;  // boundary of the current step; the sample sits at t + jitter * step
-  bool fine = o.cheapSampling == 0u;
+  // A ray that starts in a hero cloud's box starts with fine steps: its first coarse sample
+  // would most likely find cloud and be taken again.
+  bool fine = o.cheapSampling == 0u || (heroHit && heroSpan.x <= start);
   int emptyRun = 0;
   int samples = 0;
   int heroSamples = 0;  // samples inside hero clouds' boxes: a budget of their own
@@ -450,7 +452,9 @@ FX_INLINE MarchResult marchClouds(vec3 rayDirection, float sceneDistance, float 
               t < heroSpan.x ? heroSpan.x : kInfiniteDistance);
       continue;
     }
-    if (o.emptySpace != 0u) {
+    // In a hero cloud's box with the last sample in cloud no jump is possible (its signed
+    // distance bounds every jump there): the lookups are skipped.
+    if (o.emptySpace != 0u && !(inHero && inCloud)) {
       float skipTo =
           inLayer
               ? emptySpaceSkip(vec2(0.0f), t, rayDirection,

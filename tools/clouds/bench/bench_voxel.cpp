@@ -33,6 +33,7 @@ struct Rung {
   bool jumps;  // SDF jumps and coarse steps
 };
 constexpr Rung kRungs[] = {
+    {"dense march, straight light march per sample", clouds::HeroLight::Marched, false},
     {"dense march, light cone per sample", clouds::HeroLight::Cone, false},
     {"+ voxel light volume", clouds::HeroLight::Volume, false},
     {"+ SDF and adaptive steps", clouds::HeroLight::Volume, true},

@@ -3,10 +3,13 @@
 // "Optimizations": base 10 ms, + voxel-based lighting 6.1, + adaptive & SDF ray-march 2.2) on
 // views of the shipped towering cumulus alone (the layer empty), each rung against the voxel
 // Reference (Settings::heroLight Marched, the straight integral towards the sun):
-//   1. dense march, light cone per sample: every step a voxel, the light cone through the cloud
-//      (HeroLight::Cone), no jumps, no coarse steps;
-//   2. + voxel light volume (HeroLight::Volume);
-//   3. + SDF and adaptive steps (empty-space skipping's signed-distance jumps, coarse steps).
+//   1. dense march, straight light march per sample: every step a voxel, and from each cloudy
+//      sample the sun's optical depth marched at half a voxel to the box (HeroLight::Marched,
+//      the Reference's light), no jumps, no coarse steps;
+//   2. the same with High's light cone (HeroLight::Cone, 6 samples) instead: the base with the
+//      layer's own cheap light march;
+//   3. + voxel light volume (HeroLight::Volume);
+//   4. + SDF and adaptive steps (empty-space skipping's signed-distance jumps, coarse steps).
 // Every rung marches every pixel of a half-resolution trace each frame (no temporal reuse), so
 // its time is the march's; frames are interleaved across rungs. The light volume's sweep,
 // which runs only when its sun, cloud or life changes, is timed apart.
