@@ -106,6 +106,7 @@ HeroCloudInstance heroCloud(uint index) {
 }
 vec4 fetchHeroAtlas(ivec3 texel) { return imageLoad(heroAtlas, texel); }
 uvec4 heroCloudHeader() { return heroClouds[CLOUDS_FRAME_UNIFORMS_INDEX].count; }
+uint heroLightMode() { return kHeroClouds != 0u ? kHeroLight : kHeroLightCone; }
 // Their light volume (read only by the kHeroLightVolume variants with hero clouds).
 layout(binding = kMarchHeroLight, r32f) uniform readonly image3D heroLight;
 float fetchHeroLight(ivec3 texel) { return imageLoad(heroLight, texel).r; }
@@ -146,7 +147,6 @@ void marchRay(uvec2 pixel, vec2 centre, float startOffset, uvec2 slot) {
   options.lightSteps = kLightSteps;
   options.emptySpace = kEmptySpace;
   options.lightReuse = kLightReuse;
-  options.heroLight = kHeroLight;
   const float jitter = rayJitter(pixel, startOffset, u.tileSize,
                                  (u.flags & kFlagRebuiltInsideCloud) != 0u, kJitterMode);
   const MarchResult result = marchClouds(

@@ -18,6 +18,11 @@
 // lavapipe executes the body of an `if` whenever it is reached, even when no lane takes it, so
 // data-dependent work sits in loops whose trip count is 0 when there is nothing to do
 // (CLOUDS_WHEN below), and feature toggles arrive as compile-time constants (MarchOptions).
+// kHeroCompiledOut: code only hero clouds need sits under a plain `if` on a specialization
+// constant (heroCloudCount() > 0u, heroLightMode()), never in a CLOUDS_WHEN loop: the compiler
+// removes an `if` whose condition is constant false, but keeps a loop of 0 trips that holds
+// other loops, and that dead code slowed the march without hero clouds by 15%. (Where the
+// variant has hero clouds, its frames have some: the `if` is always taken.)
 #ifndef CLOUDS_CLOUD_MARCH_H
 #define CLOUDS_CLOUD_MARCH_H
 
@@ -38,6 +43,11 @@ const int kMaxHeroSteps = 384;  // samples inside hero clouds' boxes, on top of 
 // The includer's: the share of the sun [0, 1] a sample at a camera-relative (x, z) and an
 // altitude (m) gets past the host's terrain (1 where the includer knows no terrain).
 float terrainSunLight(vec3 flatOffset, float altitude);
+// The includer's: how hero clouds shadow themselves (kHeroLight*; heroSunward()), a
+// specialization constant in the march (kHeroLightCone in variants without hero clouds: a
+// condition on a MarchOptions member did not fold away there, and the dead code cost the
+// variant's march 15% on lavapipe).
+uint heroLightMode();
 
 struct MarchOptions {
   uint detail;              // high-frequency erosion
@@ -46,7 +56,6 @@ struct MarchOptions {
   uint lightSteps;          // samples towards the sun per cloudy view sample
   uint emptySpace;          // jump over weather cells without cloud
   uint lightReuse;          // the sun's optical depth on every other step (lightOpticalDepth())
-  uint heroLight;           // kHeroLight*: how hero clouds shadow themselves (heroSunward())
 };
 
 struct MarchResult {
@@ -214,7 +223,7 @@ FX_INLINE FieldSample layerField(vec3 flatOffset, float altitude, float distance
 FX_INLINE FieldSample sampleField(vec3 relative, float altitude, float distance, float lodDither,
                                   uint wantDetail, uint heroExcluded, IN(CloudUniforms) u) {
   FieldSample s = layerField(relative, altitude, distance, lodDither, wantDetail, u);
-  CLOUDS_WHEN(heroCloudCount() > 0u) {
+  if (heroCloudCount() > 0u) {  // a plain if: kHeroCompiledOut
     const HeroSample hero = heroFieldExcept(relative, u, heroExcluded);
     if (hero.sigmaT > s.sigmaT) {
       s.profile = hero.profile;
@@ -388,6 +397,27 @@ FX_INLINE float rayJitter(uvec2 pixel, float startOffset, uint tileSize, bool sp
   return fract(bayer4x4(pixel) + startOffset + tiles);
 }
 
+// The optical depth towards the sun of a cloudy sample on a ray through hero clouds lit by
+// their light volume (heroLightMode() kHeroLightVolume or kHeroLightMarched): the clouds whose
+// boxes hold the sample give their own (heroSunward()); the cone takes what else lies sunwards,
+// when anything else can (Nubis³'s saving: a sample in a lone hero cloud above the layer marches no
+// light).
+FX_INLINE float heroLitSun(vec3 flatOffset, float altitude, float distance, float lodDither,
+                           vec3 lightRandom, IN(CloudUniforms) u, IN(MarchOptions) o,
+                           INOUT(float) samples) {
+  const HeroSunward hero = heroSunward(flatOffset, u, heroLightMode());
+  const bool coneNeeded = hero.covered == 0u || heroCloudCount() > uint(bitCount(hero.covered)) ||
+                          layerInLightCone(altitude, u);
+  float tau = hero.opticalDepth;
+  // A loop of 0 or 1 trips around the cone, whose own trip count stays the constant
+  // o.lightSteps (a count chosen per sample would keep the compiler from unrolling it).
+  for (int cone = 0; cone < (coneNeeded ? 1 : 0); ++cone) {
+    tau += lightOpticalDepth(flatOffset, altitude, distance, lodDither, o.lightSteps, lightRandom,
+                             hero.covered, u, samples);
+  }
+  return tau;
+}
+
 // Marches one view ray. `rayDirection` is a unit world-space vector (y up), `sceneDistance`
 // the distance to the host's geometry along it (kInfiniteDistance for sky), `jitter` in [0, 1)
 // places each step's sample in its step and rounds the noise's level of detail, `lightRandom`
@@ -409,7 +439,7 @@ FX_INLINE MarchResult marchClouds(vec3 rayDirection, float sceneDistance, float 
   const vec2 segment = layerSegment(altitude, cosZenith, u);
   // Hero clouds extend the march to their boxes, beyond the layer where they stand out of it.
   vec3 heroSpan = vec3(kHeroFar, -kHeroFar, kHeroFar);
-  CLOUDS_WHEN(heroCloudCount() > 0u) {
+  if (heroCloudCount() > 0u) {  // kHeroCompiledOut
     heroSpan = heroRaySpan(vec3(0.0f), rayDirection, 0.0f);
   }
   const bool layerHit = segment.y > segment.x;
@@ -464,13 +494,15 @@ FX_INLINE MarchResult marchClouds(vec3 rayDirection, float sceneDistance, float 
       // distance says is clear (Nubis³'s SDF march), which it asks only where the last sample
       // was clear air (in cloud there is no jump to find); a jump shorter than half a voxel is
       // not worth its lookup, and the ray steps instead.
-      CLOUDS_WHEN(heroHit && skipTo > t) {
-        float clear = t < heroSpan.x ? heroSpan.x - t : 0.0f;
-        for (int sdf = 0; sdf < (t >= heroSpan.x && !inCloud ? 1 : 0); ++sdf) {
-          clear = heroField(rayDirection * t, u).clearMetres;
+      if (heroCloudCount() > 0u) {  // kHeroCompiledOut
+        CLOUDS_WHEN(heroHit && skipTo > t) {
+          float clear = t < heroSpan.x ? heroSpan.x - t : 0.0f;
+          for (int sdf = 0; sdf < (t >= heroSpan.x && !inCloud ? 1 : 0); ++sdf) {
+            clear = heroField(rayDirection * t, u).clearMetres;
+          }
+          clear = clear > 0.5f * heroSpan.z ? clear : 0.0f;
+          skipTo = min(skipTo, t + clear);
         }
-        clear = clear > 0.5f * heroSpan.z ? clear : 0.0f;
-        skipTo = min(skipTo, t + clear);
       }
       if (skipTo > t) {
         t = skipTo;
@@ -512,18 +544,19 @@ FX_INLINE MarchResult marchClouds(vec3 rayDirection, float sceneDistance, float 
     // samples) decides, so the lanes of a group skip the light samples together: on lavapipe
     // a group takes them when any of its lanes does.
     const bool reuse = o.lightReuse != 0u && inCloud && (i & 1) == 1;
-    CLOUDS_WHEN(field.sigmaT > 0.0f && !reuse) {
-      // The hero clouds whose boxes hold the sample give their own optical depth (the light
-      // volume, or its straight integral); the cone takes what else lies towards the sun, when
-      // anything else can (Nubis³'s saving: a sample in a lone hero cloud marches no light).
-      const HeroSunward hero = heroSunward(flatOffset, u, heroHit ? o.heroLight : kHeroLightCone);
-      const bool coneNeeded = hero.covered == 0u ||
-                              heroCloudCount() > uint(bitCount(hero.covered)) ||
-                              layerInLightCone(sampleAltitude, u);
-      sunOpticalDepth =
-          hero.opticalDepth + lightOpticalDepth(flatOffset, sampleAltitude, sampleDistance, jitter,
-                                                coneNeeded ? o.lightSteps : 0u, lightRandom,
-                                                hero.covered, u, r.lightSamples);
+    // A ray through hero clouds lit by their light volume (or its straight integral) takes their
+    // own optical depth from it where a sample lies in their boxes (heroLitSun()); every other
+    // ray marches the cone as it always did (a variant without hero clouds compiles only that).
+    const bool heroLit = heroLightMode() != kHeroLightCone && heroHit;
+    CLOUDS_WHEN(field.sigmaT > 0.0f && !reuse && !heroLit) {
+      sunOpticalDepth = lightOpticalDepth(flatOffset, sampleAltitude, sampleDistance, jitter,
+                                          o.lightSteps, lightRandom, 0u, u, r.lightSamples);
+    }
+    if (heroLightMode() != kHeroLightCone) {  // kHeroCompiledOut
+      CLOUDS_WHEN(field.sigmaT > 0.0f && !reuse && heroLit) {
+        sunOpticalDepth = heroLitSun(flatOffset, sampleAltitude, sampleDistance, jitter,
+                                     lightRandom, u, o, r.lightSamples);
+      }
     }
     inCloud = field.sigmaT > 0.0f;
     CLOUDS_WHEN(field.sigmaT > 0.0f) {

@@ -109,7 +109,7 @@ FX_INLINE ShadowColumn marchShadowColumn(vec3 base, vec3 light, uint steps, floa
     column.frontAltitude = u.layerBottomMetres + float(highest + 1) * stepRise;
     column.backAltitude = u.layerBottomMetres + float(lowest) * stepRise;
   }
-  CLOUDS_WHEN(heroCloudCount() > 0u) {
+  if (heroCloudCount() > 0u) {  // a plain if (cloud_march.h's kHeroCompiledOut)
     addHeroClouds(column, base, light, jitter, u);
   }
   return column;

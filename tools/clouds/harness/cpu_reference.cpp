@@ -18,6 +18,7 @@ namespace {
 const clouds::tools::CpuTextures* gTextures = nullptr;
 // The hero clouds' light volume (cloud_hero_light.h) the reference swept for them, its extent.
 std::vector<float>* gHeroLight = nullptr;
+uint gHeroLightMode = kHeroLightCone;  // the render's Settings::heroLight
 glm::uvec3 gHeroLightExtent{0u};
 // The level weatherMaxima() reads (one thread).
 const std::vector<std::uint8_t>* gMaximaSource = nullptr;
@@ -68,6 +69,9 @@ vec4 fetchHeroAtlas(ivec3 t) {
   const glm::uvec3 e = gTextures->heroes.extent;
   return texel(gTextures->heroes.atlas,
                (std::size_t(t.z) * e.y + std::size_t(t.y)) * e.x + std::size_t(t.x));
+}
+uint heroLightMode() {
+  return gHeroLightMode;
 }
 uvec4 heroCloudHeader() {
   return gTextures->heroes.uniforms.count;
@@ -164,8 +168,8 @@ CloudFrame renderCpuReference(const CpuTextures& textures, const CloudUniforms& 
   gTextures = &textures;
   const clouds::detail::MarchVariant variant = clouds::detail::marchVariant(settings);
   MarchOptions options{variant.detail,     variant.cheapSampling, variant.multipleScattering,
-                       variant.lightSteps, variant.emptySpace,    variant.lightReuse,
-                       variant.heroLight};
+                       variant.lightSteps, variant.emptySpace,    variant.lightReuse};
+  gHeroLightMode = variant.heroLight;
   // The light volume the GPU swept for these clouds, swept again here (its slots: the block's).
   std::vector<float> heroLight;
   gHeroLight = &heroLight;
