@@ -227,7 +227,9 @@ struct CloudUniforms {
 
   // Light, in the host's units: illuminance for the sun, radiance for the ambient sky.
   vec3 sunDirection;  // unit vector towards the sun (world)
-  float padding0;
+  // How far the camera moved through the air (m) since the frame the history was made in
+  // (reconstruct.comp: history of air it flew through is not reprojected as is).
+  float cameraMovedMetres;
   vec3 sunIlluminance;
   float sunStrength;  // scales the direct sun term
   vec3 ambientTop;    // sky radiance reaching cloud tops (sky_ambient.comp may overwrite it)

@@ -73,6 +73,10 @@ vec4 historyAt(vec2 position, out vec2 depth) {
   return vec4(max(radiance.rgb, vec3(0.0f)), saturate(radiance.a));
 }
 
+// reconstruct.comp's reprojection: history whose cloud front lay within this many camera moves
+// of the camera is of air the camera flew through.
+const float kFlownThroughMoves = 2.0f;
+
 // The pixel's result, and with lightning its glow. Read in place (nothing moved: the history
 // and the output are one image, TemporalState), a result that did not `change` is already
 // there, bit for bit: only the others (fresh pixels, and any whose history was unusable) are
@@ -201,7 +205,15 @@ void main() {
     const vec4 lo = min(min(r00, r10), min(r01, r11));
     const vec4 hi = max(max(r00, r10), max(r01, r11));
     const vec4 halfRange = (hi - lo) * (0.5f + u.historyClampMargin) + vec4(0.002f);
-    const float clampStrength = saturate(reprojected.spread / u.historyClampSpreadPixels);
+    // History whose cloud began within kFlownThroughMoves camera moves of last frame's camera
+    // is of the air the camera has since flown through (leaving a cloud, every pixel's): its
+    // front now lies beside or behind the camera, so it is clamped fully. (Left to the
+    // spread, which this frame's depths give, a flight out of a cloud kept the cloud's grey
+    // in pixels not yet refreshed: 0.017 of transmittance two frames out.)
+    const bool flownThrough =
+        historyDepth.x > 0.0f && historyDepth.x < kFlownThroughMoves * u.cameraMovedMetres;
+    const float clampStrength =
+        flownThrough ? 1.0f : saturate(reprojected.spread / u.historyClampSpreadPixels);
     previous =
         mix(previous, clamp(previous, current - halfRange, current + halfRange), clampStrength);
   }

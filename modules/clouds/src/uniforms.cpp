@@ -187,6 +187,7 @@ void setReprojection(shader::CloudUniforms& u, const Settings& s, const Temporal
                                                  temporal.deltaSeconds);
   const glm::dvec3 moved = temporal.cameraDelta - glm::dvec3(drift.x, 0.0, drift.y);
   u.previousClipOrigin = previousViewProjection * glm::vec4(glm::vec3(moved), 1.0f);
+  u.cameraMovedMetres = static_cast<float>(glm::length(moved));
 }
 
 // How fresh samples blend with the history, and how far the history is clamped.

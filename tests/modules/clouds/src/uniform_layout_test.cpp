@@ -29,7 +29,7 @@ const std::map<std::string, std::size_t> kCppOffsets = {FIELD(inverseProjection)
                                                         FIELD(layerBottomMetres),
                                                         FIELD(layerTopMetres),
                                                         FIELD(sunDirection),
-                                                        FIELD(padding0),
+                                                        FIELD(cameraMovedMetres),
                                                         FIELD(sunIlluminance),
                                                         FIELD(sunStrength),
                                                         FIELD(ambientTop),
