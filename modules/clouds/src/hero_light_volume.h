@@ -27,10 +27,12 @@ struct HeroLightKey {
 };
 
 // How far the sun may turn, and the life move, before an instance's slot is swept again: half a
-// degree moves a shadow 9 m over a kilometre of cloud, under a voxel of the shipped clouds.
+// degree moves a shadow 9 m over a kilometre of cloud, under a voxel of the shipped clouds; a
+// quarter voxel of a growing top steps the light towards the sun by 0.0035 on average at the
+// sweep (a whole voxel: 0.012, a flicker at the top; HeroLightVolume.AGrowingClouds...).
 inline constexpr float kHeroLightSunDegrees = 0.5f;
-inline constexpr float kHeroLightTopVoxels = 1.0f;
-inline constexpr float kHeroLightErosionVoxels = 0.25f;
+inline constexpr float kHeroLightTopVoxels = 0.25f;
+inline constexpr float kHeroLightErosionVoxels = 0.1f;
 
 HeroLightKey heroLightKey(const shader::HeroCloudInstance& instance, const glm::vec3& sunDirection);
 // Whether a slot swept for `held` serves an instance that wants `wanted`.
