@@ -176,12 +176,18 @@ FX_INLINE HeroSunward heroSunward(vec3 relative, IN(CloudUniforms) u, uint mode)
     const bool inBox =
         all(greaterThanEqual(c, vec3(-1.0f))) && all(lessThanEqual(c, vec3(h.extent)));
     float voxels = 0.0f;
-    CLOUDS_WHEN(inBox && mode == kHeroLightVolume) {
-      voxels =
-          heroLightLookup(h, c, heroSunIndexDirection(h, u.sunDirection), heroLightSlotOrigin(i));
+    // The mode is a specialization constant in the march: plain ifs, so that each variant
+    // compiles only its own (cloud_march.h's kHeroCompiledOut).
+    if (mode == kHeroLightVolume) {
+      CLOUDS_WHEN(inBox) {
+        voxels =
+            heroLightLookup(h, c, heroSunIndexDirection(h, u.sunDirection), heroLightSlotOrigin(i));
+      }
     }
-    CLOUDS_WHEN(inBox && mode == kHeroLightMarched) {
-      voxels = heroLightMarched(h, c, heroSunIndexDirection(h, u.sunDirection));
+    if (mode == kHeroLightMarched) {
+      CLOUDS_WHEN(inBox) {
+        voxels = heroLightMarched(h, c, heroSunIndexDirection(h, u.sunDirection));
+      }
     }
     r.opticalDepth += voxels * h.scales.x * u.extinctionPerMetre * h.scales.z;
     r.covered |= inBox ? 1u << i : 0u;
