@@ -533,6 +533,35 @@ TEST_F(HeroClouds, TheReportSaysWhenTheCameraIsInAHeroCloud) {
   }
 }
 
+// Whether the camera of the frame `r` last rendered stands in the test cumulus's density (the
+// shared model on the CPU).
+bool cameraInTheCumulus(clouds::tools::CloudHarness& r) {
+  clouds::tools::CpuTextures textures;
+  textures.heroes =
+      cumulusOnTheCpu(clouds::detail::ContextAccess::impl(r.context()).lastHeroClouds());
+  clouds::shader::CloudUniforms u{};
+  u.extinctionPerMetre = 1.0f;
+  const clouds::tools::CpuHeroScope scope(textures);
+  return clouds::shader::heroField(glm::vec3(0.0f), u).sigmaT > 0.0f;
+}
+
+// How far a flown frame differs from a history-free frame of the same view: the worst
+// transmittance difference, and the worst radiance difference over `brightest`.
+struct Ghost {
+  float transmittance = 0.0f;
+  float radiance = 0.0f;
+};
+Ghost ghostOf(const CloudFrame& flown, const CloudFrame& alone, float brightest) {
+  Ghost g;
+  for (std::size_t i = 0; i < flown.radiance.size(); ++i) {
+    g.transmittance =
+        std::max(g.transmittance, std::abs(flown.radiance[i].a - alone.radiance[i].a));
+    const glm::vec3 d = glm::abs(glm::vec3(flown.radiance[i]) - glm::vec3(alone.radiance[i]));
+    g.radiance = std::max(g.radiance, std::max({d.r, d.g, d.b}) / brightest);
+  }
+  return g;
+}
+
 // Leaving a cloud leaves no ghost: flown at 300 m/s at High out of the cumulus's far side, two
 // frames after the camera left its density no pixel of the frame differs from a history-free
 // frame's by more than 4/255 (transmittance, and radiance of the path's brightest cloud). The
@@ -551,37 +580,22 @@ TEST_F(HeroCloudCost, LeavingACloudLeavesNoGhost) {
   CloudView view = heroViews()[0].view;
   view.sunElevationDegrees = 50.0;
   view.position = {100.0, 2000.0, -2900.0};  // inside, 250 m before the far side's edge
-  clouds::tools::CpuTextures textures;
-  textures.heroes = cumulusOnTheCpu({});
-  const auto inCloud = [&](clouds::tools::CloudHarness& r) {
-    textures.heroes.uniforms = clouds::detail::ContextAccess::impl(r.context()).lastHeroClouds();
-    clouds::shader::CloudUniforms u{};
-    u.extinctionPerMetre = 1.0f;
-    const clouds::tools::CpuHeroScope scope(textures);
-    return clouds::shader::heroField(glm::vec3(0.0f), u).sigmaT > 0.0f;
-  };
   int left = -1;
   float brightest = 1.0f;
   for (int frame = 0; frame < 80; ++frame, view.position.z -= 10.0) {
     const CloudFrame flown = flying->render(view, high, test::kExtent);
     for (const glm::vec4& p : flown.radiance) brightest = std::max({brightest, p.r, p.g, p.b});
-    const bool inside = inCloud(*flying);
+    const bool inside = cameraInTheCumulus(*flying);
     ASSERT_TRUE(frame > 0 || inside) << "the flight starts in the cloud";
     if (!inside && left < 0) left = frame;
     if (left < 0 || frame < left + 2) continue;
     fresh->cut();
     const CloudFrame alone = fresh->render(view, high, test::kExtent);
-    float worstAlpha = 0.0f;
-    float worstRadiance = 0.0f;
-    for (std::size_t i = 0; i < flown.radiance.size(); ++i) {
-      worstAlpha = std::max(worstAlpha, std::abs(flown.radiance[i].a - alone.radiance[i].a));
-      const glm::vec3 d = glm::abs(glm::vec3(flown.radiance[i]) - glm::vec3(alone.radiance[i]));
-      worstRadiance = std::max(worstRadiance, std::max({d.r, d.g, d.b}) / brightest);
-    }
+    const Ghost ghost = ghostOf(flown, alone, brightest);
     std::printf("left at frame %d; two frames out: transmittance off by %.4f, radiance %.4f\n",
-                left, worstAlpha, worstRadiance);
-    EXPECT_LE(worstAlpha, 4.0f / 255.0f);
-    EXPECT_LE(worstRadiance, 4.0f / 255.0f);
+                left, ghost.transmittance, ghost.radiance);
+    EXPECT_LE(ghost.transmittance, 4.0f / 255.0f);
+    EXPECT_LE(ghost.radiance, 4.0f / 255.0f);
     EXPECT_GT(left, 5) << "flown in the cloud for a while";
     return;
   }
@@ -615,17 +629,6 @@ TEST_F(HeroCloudCost, DISABLED_AFlightThroughAHeroCloudStaysCloseAndLeavesNoGhos
   constexpr double kMetresPerFrame = 10.0;  // 300 m/s at 30 frames a second
   constexpr int kReferenceEvery = 24;
 
-  // Whether the camera is in the cloud's density (the shared model on the CPU).
-  clouds::tools::CpuTextures textures;
-  textures.heroes = cumulusOnTheCpu({});
-  const auto inCloud = [&](clouds::tools::CloudHarness& r) {
-    textures.heroes.uniforms = clouds::detail::ContextAccess::impl(r.context()).lastHeroClouds();
-    clouds::shader::CloudUniforms u{};
-    u.extinctionPerMetre = 1.0f;
-    const clouds::tools::CpuHeroScope scope(textures);
-    return clouds::shader::heroField(glm::vec3(0.0f), u).sigmaT > 0.0f;
-  };
-
   double worstDb = 1e9;
   int entered = -1;
   int left = -1;
@@ -633,7 +636,7 @@ TEST_F(HeroCloudCost, DISABLED_AFlightThroughAHeroCloudStaysCloseAndLeavesNoGhos
   for (; frame < 400; ++frame, view.position.z -= kMetresPerFrame) {
     const CloudFrame flown = flying->render(view, high, test::kExtent);
     ASSERT_TRUE(test::allValid(flown)) << "frame " << frame;
-    const bool inside = inCloud(*flying);
+    const bool inside = cameraInTheCumulus(*flying);
     if (inside && entered < 0) entered = frame;
     if (!inside && entered >= 0 && left < 0) left = frame;
     if (frame % kReferenceEvery == kReferenceEvery - 1) {
@@ -650,19 +653,13 @@ TEST_F(HeroCloudCost, DISABLED_AFlightThroughAHeroCloudStaysCloseAndLeavesNoGhos
     if (left >= 0 && frame == left + 2) {
       fresh->cut();
       const CloudFrame alone = fresh->render(view, high, test::kExtent);
-      float worstAlpha = 0.0f;
-      float worstRadiance = 0.0f;
-      for (std::size_t i = 0; i < flown.radiance.size(); ++i) {
-        worstAlpha = std::max(worstAlpha, std::abs(flown.radiance[i].a - alone.radiance[i].a));
-        const glm::vec3 d = glm::abs(glm::vec3(flown.radiance[i]) - glm::vec3(alone.radiance[i]));
-        worstRadiance = std::max(worstRadiance, std::max({d.r, d.g, d.b}) / brightest);
-      }
+      const Ghost ghost = ghostOf(flown, alone, brightest);
       std::printf(
           "two frames out (frame %d): worst transmittance difference %.4f, radiance %.4f "
           "of the path's brightest\n",
-          frame, worstAlpha, worstRadiance);
-      EXPECT_LE(worstAlpha, 4.0f / 255.0f);
-      EXPECT_LE(worstRadiance, 4.0f / 255.0f);
+          frame, ghost.transmittance, ghost.radiance);
+      EXPECT_LE(ghost.transmittance, 4.0f / 255.0f);
+      EXPECT_LE(ghost.radiance, 4.0f / 255.0f);
       break;
     }
   }
