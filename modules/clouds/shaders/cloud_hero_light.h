@@ -122,6 +122,18 @@ FX_INLINE float heroLightFromSlice(IN(HeroCloudInstance) h, vec3 c, vec3 sunInde
   return before + (simpson ? (ends + 4.0f * middle) / 6.0f : middle) * along;
 }
 
+// The light texel `t` (x fastest across the slice) of the sweep's `s`-th slice, counted from
+// the sun's side along `axis` of a grid of `size`, for the unit sun direction `sunIndex`.
+FX_INLINE ivec3 heroLightSweepTexelAt(ivec3 size, vec3 sunIndex, int axis, int s, int t) {
+  const int across = (axis + 1) % 3;
+  const int up = (axis + 2) % 3;
+  ivec3 j;
+  j[axis] = sunIndex[axis] > 0.0f ? size[axis] - 1 - s : s;
+  j[across] = t % size[across];
+  j[up] = t / size[across];
+  return j;
+}
+
 // The sweep's value of light texel `j`: from the slice one step towards the sun, which must hold
 // its values already.
 FX_INLINE float heroLightSweepTexel(IN(HeroCloudInstance) h, ivec3 j, vec3 sunIndex, int axis,

@@ -51,16 +51,11 @@ void main() {
   const ivec3 slotOrigin = heroLightSlotOrigin(index);
   const vec3 sun = heroSunIndexDirection(h, c.sunDirection.xyz);
   const int axis = heroLightAxis(sun);
-  const int across = (axis + 1) % 3;
-  const int up = (axis + 2) % 3;
   const int slices = size[axis];
-  const int perSlice = size[across] * size[up];
+  const int perSlice = size[(axis + 1) % 3] * size[(axis + 2) % 3];
   for (int s = 0; s < slices; ++s) {
-    ivec3 j;
-    j[axis] = sun[axis] > 0.0f ? slices - 1 - s : s;  // from the sun's side
     for (int t = int(gl_LocalInvocationIndex); t < perSlice; t += int(kLanes)) {
-      j[across] = t % size[across];
-      j[up] = t / size[across];
+      const ivec3 j = heroLightSweepTexelAt(size, sun, axis, s, t);
       const float opticalDepth = heroLightSweepTexel(h, j, sun, axis, size, slotOrigin);
       imageStore(lightVolume, j + slotOrigin, vec4(opticalDepth));
     }

@@ -1,5 +1,7 @@
 #include "hero_light_volume.h"
 
+#include "cloud_hero_light.h"
+
 #include <algorithm>
 #include <bit>
 #include <cmath>
@@ -8,12 +10,8 @@ namespace clouds::detail {
 
 HeroLightKey heroLightKey(const shader::HeroCloudInstance& instance,
                           const glm::vec3& sunDirection) {
-  glm::vec3 sun(glm::dot(glm::vec3(instance.toIndex[0]), sunDirection),
-                glm::dot(glm::vec3(instance.toIndex[1]), sunDirection),
-                glm::dot(glm::vec3(instance.toIndex[2]), sunDirection));
-  sun /= std::max(glm::length(sun), 1e-30f);
-  return HeroLightKey{instance.extent.w, sun, instance.scales.w,
-                      instance.scales.y / instance.scales.z};
+  return HeroLightKey{instance.extent.w, shader::heroSunIndexDirection(instance, sunDirection),
+                      instance.scales.w, instance.scales.y / instance.scales.z};
 }
 
 bool heroLightServes(const HeroLightKey& held, const HeroLightKey& wanted) {

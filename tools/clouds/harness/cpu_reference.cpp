@@ -99,14 +99,10 @@ void sweepHeroLight(vec3 sunDirection) {
     const ivec3 slotOrigin = heroLightSlotOrigin(index);
     const vec3 sun = heroSunIndexDirection(h, sunDirection);
     const int axis = heroLightAxis(sun);
-    const int across = (axis + 1) % 3;
-    const int up = (axis + 2) % 3;
+    const int perSlice = size[(axis + 1) % 3] * size[(axis + 2) % 3];
     for (int s = 0; s < size[axis]; ++s) {
-      ivec3 j;
-      j[axis] = sun[axis] > 0.0f ? size[axis] - 1 - s : s;
-      for (int t = 0; t < size[across] * size[up]; ++t) {
-        j[across] = t % size[across];
-        j[up] = t / size[across];
+      for (int t = 0; t < perSlice; ++t) {
+        const ivec3 j = heroLightSweepTexelAt(size, sun, axis, s, t);
         storeHeroLight(j + slotOrigin, heroLightSweepTexel(h, j, sun, axis, size, slotOrigin));
       }
     }
