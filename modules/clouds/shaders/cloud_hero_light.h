@@ -10,7 +10,7 @@
 // sunwards, at the point where the texel's sun ray crosses it (bilinearly), and adds the
 // integral of the fields between (Simpson's rule). So a refresh costs a few lookups per texel,
 // not a march per texel; and a sample does the same from wherever it lies. Stored in voxel units
-// (the integral of profile x density scale x life along voxel lengths), so that the instance's
+// (the integral of heroLightIntegrand() along voxel lengths), so that the instance's
 // size, density, fade and the extinction scale it at the lookup and do not call for a new sweep;
 // the sun, the asset and the cloud's life do.
 #ifndef CLOUDS_CLOUD_HERO_LIGHT_H
@@ -20,10 +20,9 @@
 
 FX_SHADER_BEGIN(clouds::shader)
 
-// The includer's: the frame's hero block's header (HeroCloudUniforms::count) and a texel of the
-// light volume (R32F: optical depth in voxel units), absolute in the volume (its slots lie in a
-// 2 x 2 x 2 grid, each as large as the largest asset's light grid).
-uvec4 heroCloudHeader();
+// The includer's: a texel of the light volume (R16F: optical depth in voxel units), absolute in
+// the volume (its slots lie in a 2 x 2 x 2 grid, each as large as the largest asset's light
+// grid).
 float fetchHeroLight(ivec3 texel);
 
 // The straight integral's step (kHeroLightMarched), in voxels: the fields are trilinear within a
@@ -54,13 +53,14 @@ FX_INLINE vec3 heroSunIndexDirection(IN(HeroCloudInstance) h, vec3 sunDirection)
   return d / max(length(d), 1e-30f);
 }
 
-// What the light integrates at index coordinate `c`: profile x density scale x life, the
+// What the light integrates at index coordinate `c`: the cloud's density at its coarse
+// resolution (cloud_hero.h's heroCoarseDensity(): eroded by the detail noise's mean), the
 // extinction in units of the instance's scales.x x extinctionPerMetre (0 beyond the box).
 FX_INLINE float heroLightIntegrand(IN(HeroCloudInstance) h, vec3 c) {
   const vec4 fields = heroFields(h, c);
   const float life =
       heroLifeCompiledIn() && h.scales.y > 0.0f ? heroLifeWeight(h, c, fields.w) : 1.0f;
-  return fields.x * life * fields.z;
+  return heroCoarseDensity(fields, fields.x * life).x;
 }
 
 // The light volume on one of its slices along `axis` (g[axis], an integer) at light-grid

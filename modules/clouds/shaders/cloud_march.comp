@@ -10,8 +10,8 @@
 // skipping); with the terrain's shadow, 10-11 the cloud shadow map and its parameters (its
 // terrain channel, fxcontracts/cloud_shadow.h). Outputs: 6 the marched samples (radiance,
 // transmittance, front and weighted depth in metres; packed, cloud_temporal.h); 9 work
-// counters; with hero clouds (kSpecHeroClouds), 14-15 their atlas and instances (cloud_hero.h)
-// and 16 their light volume (cloud_hero_light.h).
+// counters; with hero clouds (kSpecHeroClouds), 14-15 their atlas and instances (cloud_hero.h),
+// 16 their light volume (cloud_hero_light.h) and 17 their detail noise.
 // Feature toggles are specialization constants.
 // Edge rays (kSpecEdgeRays, while the frame's kFlagEdgeRays is set): the tiles on a silhouette
 // of last frame's reconstruction (12, trace history) are listed (13) by the tiles' march, and a
@@ -108,8 +108,14 @@ vec4 fetchHeroAtlas(ivec3 texel) { return imageLoad(heroAtlas, texel); }
 uvec4 heroCloudHeader() { return heroClouds[CLOUDS_FRAME_UNIFORMS_INDEX].count; }
 uint heroLightMode() { return kHeroClouds != 0u ? kHeroLight : kHeroLightCone; }
 // Their light volume (read only by the kHeroLightVolume variants with hero clouds).
-layout(binding = kMarchHeroLight, r32f) uniform readonly image3D heroLight;
+layout(binding = kMarchHeroLight, r16f) uniform readonly image3D heroLight;
 float fetchHeroLight(ivec3 texel) { return imageLoad(heroLight, texel).r; }
+// Their detail noise (read only by the kSpecHeroClouds variant).
+layout(binding = kMarchHeroNoise, rgba8) uniform readonly image3D heroNoise;
+vec4 fetchHeroNoise(ivec3 texel) { return imageLoad(heroNoise, texel); }
+// Its mean, read once by main() (the loops that ask for it fetch nothing).
+vec4 gHeroNoiseMean = vec4(0.0f);
+vec4 heroNoiseMean() { return gHeroNoiseMean; }
 
 #include "cloud_march.h"
 #include "cloud_temporal.h"
@@ -183,6 +189,8 @@ void marchListedEdgeRay() {
 
 void main() {
   loadFrameUniforms();
+  if (heroCloudCount() > 0u)
+    gHeroNoiseMean = fetchHeroNoise(heroNoiseTexelAddress(kHeroNoiseLevels - 1, ivec3(0)));
   if (kEdgeRays == kEdgeRaysMarch) {
     marchListedEdgeRay();
     return;

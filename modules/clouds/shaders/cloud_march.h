@@ -224,12 +224,15 @@ FX_INLINE FieldSample sampleField(vec3 relative, float altitude, float distance,
                                   uint wantDetail, uint heroExcluded, IN(CloudUniforms) u) {
   FieldSample s = layerField(relative, altitude, distance, lodDither, wantDetail, u);
   if (heroCloudCount() > 0u) {  // a plain if: kHeroCompiledOut
-    const HeroSample hero = heroFieldExcept(relative, u, heroExcluded);
+    HeroSample hero = heroFieldExcept(relative, u, heroExcluded);
+    // Their detail where the layer's would be (wantDetail); light samples and coarse samples,
+    // which only ask whether cloud can lie here (base), see them coarse.
+    if (wantDetail != 0u) heroAddDetail(hero, distance * u.noiseFootprintPerMetre, lodDither);
     if (hero.sigmaT > s.sigmaT) {
       s.profile = hero.profile;
       s.heightFraction = hero.heightFraction;
     }
-    s.base = max(s.base, hero.sigmaT > 0.0f ? hero.profile : 0.0f);
+    s.base = max(s.base, hero.reach);
     s.density = max(s.density, hero.sigmaT > 0.0f ? hero.profile : 0.0f);
     s.sigmaT += hero.sigmaT;
   }

@@ -146,6 +146,75 @@ FX_INLINE float detailNoiseValue(vec4 channels) {
   return dot(vec3(channels.x, channels.y, channels.z), vec3(0.625f, 0.25f, 0.125f));
 }
 
+// Periodic alligator noise (the cellular noise of SideFX's HDK example, Nubis³'s billows): each
+// cell holds one feature point and a random weight; a point takes smoothstep(1 - d) x weight of
+// every feature within one cell of it and returns the largest take minus the second largest.
+// So cell interiors swell into round lobes and the lobes' shared borders crack to 0: Worley's
+// puffs with creases between them. p in cell units (>= 0), period `period` cells; in [0, 1].
+FX_INLINE float alligatorNoise(vec3 p, int period, uint seed) {
+  const vec3 cellFloor = floor(p);
+  const ivec3 base = ivec3(cellFloor);
+  const vec3 f = p - cellFloor;
+  float largest = 0.0f;
+  float second = 0.0f;
+  for (int z = -1; z <= 1; ++z) {
+    for (int y = -1; y <= 1; ++y) {
+      for (int x = -1; x <= 1; ++x) {
+        const ivec3 offset = ivec3(x, y, z);
+        const ivec3 cell = wrapCell(base + offset, period);
+        const vec3 feature = vec3(offset) + hashCell(cell, seed);
+        const float d = length(feature - f);
+        const float take = smoothstep(0.0f, 1.0f, 1.0f - d) * hashCell(cell, seed + 1u).x;
+        second = max(second, min(largest, take));
+        largest = max(largest, take);
+      }
+    }
+  }
+  return largest - second;
+}
+
+// Fractal sum of `octaves` alligator octaves from `period` cells over the tile, each twice the
+// frequency and half the amplitude of the one before; `uvw` in tile units. In [0, 1].
+FX_INLINE float alligatorFbm(vec3 uvw, int period, int octaves, uint seed) {
+  float sum = 0.0f;
+  float amplitude = 1.0f;
+  float total = 0.0f;
+  int p = period;
+  for (int o = 0; o < octaves; ++o) {
+    sum += amplitude * alligatorNoise(uvw * float(p), p, seed + uint(o) * 37u);
+    total += amplitude;
+    amplitude *= 0.5f;
+    p *= 2;
+  }
+  return sum / total;
+}
+
+// The curls of the curly alligator: a periodic displacement (tile units) of up to about
+// `amplitude`, three independent gradient-noise fields of `period` cells. A displaced periodic
+// noise is still periodic, so the texture keeps tiling.
+FX_INLINE vec3 curlyDisplacement(vec3 uvw, int period, float amplitude, uint seed) {
+  return vec3(perlinFbm(uvw, period, 2, seed), perlinFbm(uvw, period, 2, seed + 101u),
+              perlinFbm(uvw, period, 2, seed + 211u)) *
+             (2.0f * amplitude) -
+         amplitude;
+}
+
+// A texel of the hero clouds' detail noise (Schneider 2023, Nubis³'s "voxel cloud noise", 128^3
+// and four channels over kHeroNoiseTileMetres): R and G the curly alligator at a low and a high
+// frequency (the wisps: alligator noise through curled space, stretched into layered strands),
+// B and A the alligator at a low and a high frequency (the billows). cloud_hero.h's
+// heroUprezzedDensity() blends them by the voxel's dimensional profile and detail type.
+// Each channel is stretched by kAlligatorContrast: two octaves of alligator noise rarely reach
+// past 0.6, and the erosion wants the whole range.
+const float kAlligatorContrast = 1.6f;
+FX_INLINE vec4 heroNoiseTexel(vec3 uvw, uint seed) {
+  const vec3 curled = uvw + curlyDisplacement(uvw, 2, 0.12f, seed + 60u);
+  const vec4 channels =
+      vec4(alligatorFbm(curled, 2, 2, seed + 61u), alligatorFbm(curled, 8, 2, seed + 62u),
+           alligatorFbm(uvw, 2, 2, seed + 63u), alligatorFbm(uvw, 8, 2, seed + 64u));
+  return clamp(channels * kAlligatorContrast, vec4(0.0f), vec4(1.0f));
+}
+
 // Curl of a periodic 2D potential (Perlin fBm), by central differences; unit-range output
 // encoded as 0.5 + 0.5 * curl in RG. Used to swirl the detail noise.
 FX_INLINE vec2 curlNoiseTexel(vec2 uv, float texelSize, uint seed) {

@@ -6,7 +6,7 @@
 // (terrain_shadow_map.comp writes it).
 // Inputs: binding 0 CloudUniforms (this frame's field: camera-relative offsets, coverage,
 // extinction); 1 shape noise; 2 weather map; 3-4 weather maxima (empty-space skipping); with
-// hero clouds, 7-8 their atlas and instances (cloud_hero.h); push
+// hero clouds, 7-8 their atlas and instances (cloud_hero.h) and 9 their detail noise; push
 // constants ShadowMapConstants (the cascade's placement and the rows made). Output: 5 the
 // cascade atlas (its square for this cascade) or, for a cascade made over several frames, 6 the
 // spare cascade (copied into the atlas after its last rows are made).
@@ -57,11 +57,19 @@ HeroCloudInstance heroCloud(uint index) {
   return heroClouds[CLOUDS_FRAME_UNIFORMS_INDEX].instance[index];
 }
 vec4 fetchHeroAtlas(ivec3 texel) { return imageLoad(heroAtlas, texel); }
+uvec4 heroCloudHeader() { return heroClouds[CLOUDS_FRAME_UNIFORMS_INDEX].count; }
+layout(binding = kShadowHeroNoise, rgba8) uniform readonly image3D heroNoise;
+vec4 fetchHeroNoise(ivec3 texel) { return imageLoad(heroNoise, texel); }
+// Its mean, read once by main() (the loops that ask for it fetch nothing).
+vec4 gHeroNoiseMean = vec4(0.0f);
+vec4 heroNoiseMean() { return gHeroNoiseMean; }
 
 #include "cloud_shadow_march.h"
 
 void main() {
   loadFrameUniforms();
+  if (heroCloudCount() > 0u)
+    gHeroNoiseMean = fetchHeroNoise(heroNoiseTexelAddress(kHeroNoiseLevels - 1, ivec3(0)));
   const uvec2 texel = uvec2(gl_GlobalInvocationID.x, c.firstRow + gl_GlobalInvocationID.y);
   if (texel.x >= c.resolution || gl_GlobalInvocationID.y >= c.rowCount) return;
   const ShadowColumn column = marchShadowTexel(c, texel, kEmptySpace, u);

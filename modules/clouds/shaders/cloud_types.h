@@ -23,8 +23,14 @@ const int kDetailNoiseSize = 32;  // high-frequency 3D noise, RGBA8 packed (clou
 // of n x n x 3n/2 texels (noiseLevelOrigin() in cloud_sampling.h says where each level lies).
 const int kShapeNoiseLevels = 8;   // 128^3 .. 1^3
 const int kDetailNoiseLevels = 6;  // 32^3 .. 1^3
-const int kCurlNoiseSize = 128;    // 2D curl noise, RGBA8 (RG used)
-const int kWeatherMapSize = 512;   // 2D weather map, RGBA8: coverage, type, density
+// The hero clouds' detail noise (cloud_noise.h's heroNoiseTexel()): four channels, not packed
+// (cloud_hero.h blends them per sample), its whole chain in one n x n x 5n/4 image
+// (cloud_hero.h's heroNoiseTexelAddress()).
+const int kHeroNoiseSize = 128;
+const int kHeroNoiseLevels = 8;  // 128^3 .. 1^3
+const int kHeroNoiseDepth = kHeroNoiseSize + kHeroNoiseSize / 4;
+const int kCurlNoiseSize = 128;   // 2D curl noise, RGBA8 (RG used)
+const int kWeatherMapSize = 512;  // 2D weather map, RGBA8: coverage, type, density
 // Empty-space skipping: the weather map's maximum coverage (R) and type (G) over cells, at two
 // levels (64 x 64 cells of 8 x 8 texels, 8 x 8 cells of 64 x 64 texels), each cell's maximum
 // including a one-texel apron because the march filters the weather map bilinearly.
@@ -62,9 +68,11 @@ const uint kMarchEdgeRayList = 13u;   // the edge rays' tiles and dispatch (kSpe
 // uniforms, which the march then never reads.
 const uint kMarchHeroAtlas = 14u;
 const uint kMarchHeroClouds = 15u;
-// Their light volume (R32F 3D, hero_light_volume.comp; kSpecHeroLight kHeroLightVolume); a
+// Their light volume (R16F 3D, hero_light_volume.comp; kSpecHeroLight kHeroLightVolume); a
 // stand-in otherwise: the scene distance, which the march then never reads there.
 const uint kMarchHeroLight = 16u;
+// Their detail noise (kHeroNoiseSize chain, RGBA8); the shape noise stands in without them.
+const uint kMarchHeroNoise = 17u;
 // reconstruct.comp
 const uint kReconstructFresh = 1u;
 const uint kReconstructHistory = 2u;
@@ -93,10 +101,12 @@ const uint kShadowMapSpare = 6u;  // one cascade in the making (kShadowTexelToSp
 // Hero clouds (kSpecShadowHeroClouds), as the march's kMarchHeroAtlas and kMarchHeroClouds.
 const uint kShadowHeroAtlas = 7u;
 const uint kShadowHeroClouds = 8u;
+const uint kShadowHeroNoise = 9u;
 // hero_light_volume.comp: the hero atlas and this frame's instances in, the light volume out.
 const uint kLightSweepAtlas = 0u;
 const uint kLightSweepClouds = 1u;
 const uint kLightSweepVolume = 2u;
+const uint kLightSweepNoise = 3u;
 // terrain_shadow_map.comp
 const uint kTerrainShadowHeight = 0u;  // the host's heightfield, sampled
 const uint kTerrainShadowMap = 1u;     // the cascade atlas: its terrain channel is written
@@ -123,8 +133,8 @@ const uint kGodRayLightOut = 4u;   // RGBA16F: what the composite adds to a sky 
 const uint kSkyAmbientUniforms = 0u;
 const uint kSkyAmbientSky = 1u;        // the host's sky image (a placeholder without one)
 const uint kSkyAmbientShadowMap = 2u;  // the cloud shadow map (a placeholder without one)
-// noise_*.comp and weather_procedural.comp: the texture they generate (noise_mip.comp: the
-// 3D noise whose mip chain it completes)
+// noise_*.comp, hero_noise*.comp and weather_procedural.comp: the texture they generate
+// (noise_mip.comp, hero_noise_mip.comp: the 3D noise whose mip chain they complete)
 const uint kGeneratorTarget = 0u;
 // weather_resample.comp: the module's weather map from the host's painted one
 const uint kResampleTarget = 0u;
@@ -455,11 +465,16 @@ struct LightningUniforms {
 
 // This frame's hero clouds (FrameInputs::heroClouds), a uniform block of the march. Each maps
 // camera-relative metres to index coordinates of its asset's voxels (voxel centres at integers)
-// by the rows of `toIndex`; its asset lies in the atlas at z offset `extent.w`.
+// by the rows of `toIndex`; its asset lies in the atlas from the texel `extent.w` codes.
 const uint kMaxHeroClouds = 8u;
+// An atlas origin's code: x x stride + z, exact in a float for atlases up to 4096 texels a side.
+const uint kHeroAtlasOriginBits = 12u;
+const uint kHeroAtlasOriginStride = 1u << kHeroAtlasOriginBits;
 struct HeroCloudInstance {
   vec4 toIndex[3];  // index coordinate a = dot(toIndex[a].xyz, relative) + toIndex[a].w
-  vec4 extent;      // xyz the asset's voxels per axis, w its first slice in the atlas
+  // xyz the asset's voxels per axis, w its first texel in the atlas: x x kHeroAtlasOriginStride
+  // + z (cloud_hero.h's heroAtlasOrigin())
+  vec4 extent;
   // x the density the fields' 1 stands for (NvdfVolume::densityMultiplier, faded as the cloud
   // dissipates); y the world metres its life erodes from its edge inwards; z the world metres
   // of one voxel; w its life's top, an index y (cloud_hero.h's heroLifeWeight())
@@ -480,7 +495,8 @@ const float kHeroTopFeather = 0.2f;
 struct HeroCloudUniforms {
   // x the instances this frame; y their slots in the light volume (Settings::heroLight
   // Volume), kHeroLightSlotBits each, instance 0's lowest; z a slot's extent in texels,
-  // x | y << 10 | z << 20 (cloud_hero_light.h's heroLightSlotOrigin())
+  // x | y << 10 | z << 20 (cloud_hero_light.h's heroLightSlotOrigin()); w the detail
+  // (Settings::heroDetail: kHeroDetail*)
   uvec4 count;
   HeroCloudInstance instance[kMaxHeroClouds];
 };
@@ -493,6 +509,15 @@ struct HeroCloudUniforms {
 const uint kHeroLightCone = 0u;
 const uint kHeroLightVolume = 1u;
 const uint kHeroLightMarched = 2u;
+// What a hero cloud's voxels become between their centres (Settings::heroDetail): the
+// dimensional profile as filtered, density linear in it (what OpenVDB's renderer shows of the
+// same grid); or up-rezzed by the detail noise to half a metre (Nubis³'s density sampler,
+// cloud_hero.h's heroUprezzedDensity()).
+const uint kHeroDetailOff = 0u;
+const uint kHeroDetailUprezzed = 1u;
+// The detail noise's tile along each of a cloud's axes (world m): kHeroNoiseSize texels of half
+// a metre.
+const float kHeroNoiseTileMetres = 64.0f;
 // Asset voxels per light-volume texel along each axis.
 const float kHeroLightTexelVoxels = 2.0f;
 const uint kHeroLightSlotBits = 3u;  // kMaxHeroClouds slots

@@ -6,7 +6,8 @@
 // sun, or life moved on from what its slot holds (hero_light_volume.h), so most frames record
 // none.
 // Inputs: 0 the hero atlas (RGBA8 3D), 1 this frame's instances (HeroCloudUniforms, their
-// slots in count.y and z). Output: 2 the light volume (R32F 3D, slots in a 2 x 2 x 2 grid).
+// slots in count.y and z), 3 the detail noise (its mean). Output: 2 the light volume (R16F 3D,
+// slots in a 2 x 2 x 2 grid).
 #extension GL_GOOGLE_include_directive : require
 
 #include "cloud_types.h"
@@ -20,7 +21,7 @@ layout(binding = kLightSweepAtlas, rgba8) uniform readonly image3D heroAtlas;
 layout(binding = kLightSweepClouds, std140) uniform HeroClouds {
   HeroCloudUniforms heroClouds[1];
 };
-layout(binding = kLightSweepVolume, r32f) uniform coherent image3D lightVolume;
+layout(binding = kLightSweepVolume, r16f) uniform coherent image3D lightVolume;
 layout(push_constant) uniform Constants { HeroLightConstants c; };
 
 uint heroCloudCount() { return heroClouds[c.blockIndex].count.x; }
@@ -28,6 +29,11 @@ uvec4 heroCloudHeader() { return heroClouds[c.blockIndex].count; }
 HeroCloudInstance heroCloud(uint index) { return heroClouds[c.blockIndex].instance[index]; }
 bool heroLifeCompiledIn() { return true; }  // one variant: the sweep is rare
 vec4 fetchHeroAtlas(ivec3 texel) { return imageLoad(heroAtlas, texel); }
+layout(binding = kLightSweepNoise, rgba8) uniform readonly image3D heroNoise;
+vec4 fetchHeroNoise(ivec3 texel) { return imageLoad(heroNoise, texel); }
+// Its mean, read once by main() (the loops that ask for it fetch nothing).
+vec4 gHeroNoiseMean = vec4(0.0f);
+vec4 heroNoiseMean() { return gHeroNoiseMean; }
 float fetchHeroLight(ivec3 texel) { return imageLoad(lightVolume, texel).r; }
 
 #include "cloud_hero_light.h"
@@ -45,6 +51,7 @@ uint sweptInstance() {
 }
 
 void main() {
+  gHeroNoiseMean = fetchHeroNoise(heroNoiseTexelAddress(kHeroNoiseLevels - 1, ivec3(0)));
   const uint index = sweptInstance();
   const HeroCloudInstance h = heroCloud(index);
   const ivec3 size = heroLightSize(h);

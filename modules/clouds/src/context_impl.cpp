@@ -126,6 +126,8 @@ void Context::Impl::writeFixedSets() {
   SetWriter(device_, curlSet_).storageImage(shader::kGeneratorTarget, im.curlNoise.view()).commit();
   shapeMipSet_ = allocateSet(Program::NoiseMip);
   detailMipSet_ = allocateSet(Program::NoiseMip);
+  heroNoiseSet_ = allocateSet(Program::HeroNoise);
+  heroNoiseMipSet_ = allocateSet(Program::HeroNoiseMip);
   SetWriter(device_, shapeMipSet_)
       .storageImage(shader::kGeneratorTarget, im.shapeNoise.view())
       .commit();
@@ -197,6 +199,10 @@ void Context::Impl::prepare(const Settings& settings, VkExtent2D renderExtent) {
     outputsHoldClearSky_ = false;
   }
   if (images_.fitShadow(shadowExtentFor(settings), lastFrameIndex_)) shadowCascades_.forget();
+  if (heroAtlas_ && settings.heroDetail == HeroDetail::Uprezzed && !heroNoise_) {
+    heroNoise_ = std::make_unique<detail::HeroNoise>(device_);
+    heroNoiseGenerated_ = false;
+  }
   // The flashes' block, only for settings that can have flashes.
   if (settings.lightningFlashes > 0) {
     for (std::size_t i = 0; i < slots_.size(); ++i) {
@@ -246,6 +252,9 @@ std::string Context::Impl::unprepared(const Settings& settings, VkExtent2D rende
   }
   if (!images_.shadowFits(shadowExtentFor(settings))) {
     return "the shadow map for these shadow settings";
+  }
+  if (heroAtlas_ && settings.heroDetail == HeroDetail::Uprezzed && !heroNoise_) {
+    return "the hero clouds' detail noise";
   }
   for (const Slot& slot : slots_) {
     if ((settings.lightningFlashes > 0 && slot.lightning.buffer() == VK_NULL_HANDLE) ||
@@ -319,6 +328,14 @@ void Context::Impl::startFrame(const FrameInputs& inputs, const Settings& settin
   if (timer_) timer_->beginFrame(cmd, static_cast<std::uint32_t>(&slot - slots_.data()));
   images_.recordInitialLayouts(cmd);
   if (!noiseGenerated_) recordNoise(cmd);
+  if (heroNoise_ && !heroNoiseGenerated_) {
+    beginPass(cmd, detail::Pass::HeroNoise, "clouds: hero detail noise");
+    heroNoise_->recordGeneration(cmd, programs_[Program::HeroNoise], heroNoiseSet_,
+                                 programs_[Program::HeroNoiseMip], heroNoiseMipSet_,
+                                 info_.noiseSeed);
+    endPass(cmd, detail::Pass::HeroNoise);
+    heroNoiseGenerated_ = true;
+  }
   recordWeather(cmd, inputs, settings, slot);
   lastFrameIndex_ = inputs.frameIndex;
   shadowCascadesMade_ = 0;
@@ -352,10 +369,7 @@ void Context::Impl::dispatch(const FrameInputs& inputs, const Settings& settings
 
   // Hero clouds stand wherever the host puts them, whatever the layer's coverage (those their
   // lives leave empty are left out: a frame of only those has none).
-  lastHeroClouds_ = heroAtlas_ != nullptr
-                        ? detail::heroCloudUniforms(heroAtlas_->assets(), inputs.heroClouds,
-                                                    inputs.cameraPosition)
-                        : shader::HeroCloudUniforms{};
+  lastHeroClouds_ = heroBlock(inputs, settings);
   const bool heroClouds = lastHeroClouds_.count.x > 0;
   const bool inHeroCloud =
       detail::cameraInHeroCloudBox(lastHeroClouds_, settings.insideLayerMarginMetres);
@@ -466,7 +480,23 @@ MemoryUsage Context::Impl::memoryUsage() const {
   }
   if (heroAtlas_) usage.heroCloudBytes += heroAtlas_->bytes();
   if (heroLight_) usage.heroCloudBytes += heroLight_->bytes();
+  if (heroNoise_) usage.heroCloudBytes += heroNoise_->bytes();
   return usage;
+}
+
+shader::HeroCloudUniforms Context::Impl::heroBlock(const FrameInputs& inputs,
+                                                   const Settings& settings) const {
+  if (heroAtlas_ == nullptr) return {};
+  shader::HeroCloudUniforms block =
+      detail::heroCloudUniforms(heroAtlas_->assets(), inputs.heroClouds, inputs.cameraPosition);
+  block.count.w = settings.heroDetail == HeroDetail::Uprezzed && heroNoise_
+                      ? shader::kHeroDetailUprezzed
+                      : shader::kHeroDetailOff;
+  return block;
+}
+
+VkImageView Context::Impl::heroNoiseView() const {
+  return heroNoise_ ? heroNoise_->image().view() : images_.shapeNoise.view();
 }
 
 void Context::Impl::setHeroCloudAssets(std::span<const NvdfVolume* const> assets) {
@@ -478,7 +508,11 @@ void Context::Impl::setHeroCloudAssets(std::span<const NvdfVolume* const> assets
     slot.shadowHeroClouds = detail::OwnedBuffer();
   }
   sliceHeroClouds_ = shader::HeroCloudUniforms{};
-  if (assets.empty()) return;
+  if (assets.empty()) {
+    heroNoise_.reset();
+    heroNoiseGenerated_ = false;
+    return;
+  }
   heroAtlas_ = std::make_unique<detail::HeroCloudAtlas>(device_, detail::packHeroAtlas(assets));
   heroLight_ = std::make_unique<detail::HeroLightVolume>(device_, heroAtlas_->assets());
   for (std::size_t i = 0; i < slots_.size(); ++i) {

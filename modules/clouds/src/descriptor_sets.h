@@ -16,10 +16,12 @@ struct SetsOf {
 };
 
 // Made once (writeFixedSets): the noise generators and their mip chains, the two weather maps'
-// generators and maxima, and the coarse maxima of the empty-space-skipping grid.
+// generators and maxima, and the coarse maxima of the empty-space-skipping grid; the hero
+// clouds' detail noise and its chain (written when it is made).
 inline constexpr SetsOf kFixedSets[] = {
-    {Program::ShapeNoise, 1}, {Program::DetailNoise, 1}, {Program::CurlNoise, 1},
-    {Program::NoiseMip, 2},   {Program::Weather, 2},     {Program::WeatherMaxima, 3},
+    {Program::ShapeNoise, 1}, {Program::DetailNoise, 1},  {Program::CurlNoise, 1},
+    {Program::NoiseMip, 2},   {Program::Weather, 2},      {Program::WeatherMaxima, 3},
+    {Program::HeroNoise, 1},  {Program::HeroNoiseMip, 1},
 };
 
 // One of each per frame slot (Context::Impl::Slot), each written when its pass records.

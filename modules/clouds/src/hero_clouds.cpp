@@ -14,34 +14,44 @@ std::uint8_t heroDistanceCode(float metres, float rangeMetres) {
 }
 
 HeroAtlasLayout packHeroAtlas(std::span<const NvdfVolume* const> assets) {
+  // The two stackings' extents: along z and along x.
+  glm::uvec3 alongZ(0u), alongX(0u);
+  for (const NvdfVolume* asset : assets) {
+    alongZ = glm::uvec3(std::max(alongZ.x, asset->size.x), std::max(alongZ.y, asset->size.y),
+                        alongZ.z + asset->size.z);
+    alongX = glm::uvec3(alongX.x + asset->size.x, std::max(alongX.y, asset->size.y),
+                        std::max(alongX.z, asset->size.z));
+  }
+  const auto texels = [](const glm::uvec3& e) { return std::uint64_t{e.x} * e.y * e.z; };
+  const bool stackAlongX = texels(alongX) < texels(alongZ);
+  const glm::uvec3 extent = stackAlongX ? alongX : alongZ;
   HeroAtlasLayout layout;
-  std::uint32_t slices = 0;
+  layout.extent = {extent.x, extent.y, extent.z};
+  std::uint32_t next = 0;
   for (const NvdfVolume* asset : assets) {
     HeroAsset placed;
     placed.size = asset->size;
-    placed.firstSlice = slices;
+    placed.atlasOrigin = stackAlongX ? glm::uvec3(next, 0u, 0u) : glm::uvec3(0u, 0u, next);
     placed.voxelMetres = asset->voxelMetres;
     placed.originMetres = asset->originMetres;
     placed.densityMultiplier = asset->densityMultiplier;
     layout.assets.push_back(placed);
-    layout.extent.width = std::max(layout.extent.width, asset->size.x);
-    layout.extent.height = std::max(layout.extent.height, asset->size.y);
-    slices += asset->size.z;
+    next += stackAlongX ? asset->size.x : asset->size.z;
   }
-  layout.extent.depth = slices;
   const std::size_t row = layout.extent.width;
   const std::size_t slice = row * layout.extent.height;
-  layout.texels.assign(4 * slice * slices, 0);
+  layout.texels.assign(4 * slice * layout.extent.depth, 0);
   for (std::size_t a = 0; a < assets.size(); ++a) {
     const NvdfVolume& v = *assets[a];
     const float range = shader::kHeroDistanceRangeVoxels * v.voxelMetres;
+    const glm::uvec3 origin = layout.assets[a].atlasOrigin;
     for (std::uint32_t z = 0; z < v.size.z; ++z) {
       for (std::uint32_t y = 0; y < v.size.y; ++y) {
         for (std::uint32_t x = 0; x < v.size.x; ++x) {
           const glm::uvec3 voxel(x, y, z);
           const std::uint8_t* fields = &v.fields[v.voxelIndex(voxel) * kNvdfChannels];
           std::uint8_t* texel =
-              &layout.texels[4 * ((layout.assets[a].firstSlice + z) * slice + y * row + x)];
+              &layout.texels[4 * ((origin.z + z) * slice + y * row + origin.x + x)];
           texel[0] = fields[kNvdfProfile];
           texel[1] = fields[kNvdfDetailType];
           texel[2] = fields[kNvdfDensityScale];
@@ -94,7 +104,9 @@ shader::HeroCloudUniforms heroCloudUniforms(const std::vector<HeroAsset>& assets
       h.toIndex[row] = glm::vec4(float(toIndex[0][row]), float(toIndex[1][row]),
                                  float(toIndex[2][row]), float(offset[row]));
     }
-    h.extent = glm::vec4(glm::vec3(asset.size), float(asset.firstSlice));
+    h.extent = glm::vec4(
+        glm::vec3(asset.size),
+        float(asset.atlasOrigin.x * shader::kHeroAtlasOriginStride + asset.atlasOrigin.z));
     const float voxelWorld = asset.voxelMetres * cloud.scale;
     const HeroLifeShape life = heroLifeShape(cloud, float(asset.size.y), voxelWorld);
     h.scales = glm::vec4(asset.densityMultiplier * life.densityFactor, life.erosionMetres,

@@ -3,8 +3,9 @@
 // RGBA8 3D atlas, uploaded by the next frame's commands, and each frame's instances as the
 // march's uniform block (shader::HeroCloudUniforms, cloud_hero.h).
 //
-// The atlas is as wide and high as the widest and highest asset; the assets lie one after the
-// other along z. Its texels: R profile, G detail type, B density scale (the NVDF's unorm8
+// The assets lie one after the other along z (the atlas as wide and high as the widest and
+// highest asset) or along x (as high and deep as the highest and deepest), whichever takes fewer
+// texels. Its texels: R profile, G detail type, B density scale (the NVDF's unorm8
 // fields as they are) and A the signed distance at 8 bits, rounded down from the file's 16 so
 // that it stays a bound the march may jump by.
 #include <cstdint>
@@ -21,7 +22,7 @@ namespace clouds::detail {
 
 struct HeroAsset {
   glm::uvec3 size{0u};
-  std::uint32_t firstSlice = 0;  // in the atlas
+  glm::uvec3 atlasOrigin{0u};  // its first texel in the atlas (y is 0)
   float voxelMetres = 0.0f;
   glm::vec3 originMetres{0.0f};
   float densityMultiplier = 1.0f;

@@ -8,15 +8,15 @@
 
 namespace clouds::detail {
 
-HeroLightKey heroLightKey(const shader::HeroCloudInstance& instance,
-                          const glm::vec3& sunDirection) {
+HeroLightKey heroLightKey(const shader::HeroCloudInstance& instance, const glm::vec3& sunDirection,
+                          std::uint32_t detail) {
   return HeroLightKey{instance.extent.w, shader::heroSunIndexDirection(instance, sunDirection),
-                      instance.scales.w, instance.scales.y / instance.scales.z};
+                      instance.scales.w, instance.scales.y / instance.scales.z, detail};
 }
 
 bool heroLightServes(const HeroLightKey& held, const HeroLightKey& wanted) {
   static const float kCosSun = std::cos(glm::radians(kHeroLightSunDegrees));
-  return held.assetSlice == wanted.assetSlice &&
+  return held.assetSlice == wanted.assetSlice && held.detail == wanted.detail &&
          glm::dot(held.sunIndex, wanted.sunIndex) >= kCosSun &&
          std::abs(held.topIndex - wanted.topIndex) <= kHeroLightTopVoxels &&
          std::abs(held.erosionVoxels - wanted.erosionVoxels) <= kHeroLightErosionVoxels;
@@ -36,7 +36,7 @@ std::uint32_t HeroLightSlots::assign(shader::HeroCloudUniforms& block,
   std::array<std::optional<std::uint32_t>, kSlots> slotOf{};
   // First, every instance a slot still serves keeps it.
   for (std::uint32_t i = 0; i < block.count.x; ++i) {
-    const HeroLightKey wanted = heroLightKey(block.instance[i], sunDirection);
+    const HeroLightKey wanted = heroLightKey(block.instance[i], sunDirection, block.count.w);
     for (std::uint32_t s = 0; s < kSlots; ++s) {
       if (taken[s] || !held_[s] || !heroLightServes(*held_[s], wanted)) continue;
       taken[s] = true;
@@ -60,7 +60,7 @@ std::uint32_t HeroLightSlots::assign(shader::HeroCloudUniforms& block,
     const std::uint32_t s = *best;
     taken[s] = true;
     slotOf[i] = s;
-    held_[s] = heroLightKey(block.instance[i], sunDirection);
+    held_[s] = heroLightKey(block.instance[i], sunDirection, block.count.w);
     sweep |= 1u << i;
   }
   block.count.y = 0;
@@ -90,7 +90,7 @@ HeroLightVolume::HeroLightVolume(const DeviceContext& device, const std::vector<
     : device_(&device),
       slotExtent_(largestGrid(assets)),
       slotExtentCode_(heroLightSlotExtentCode(assets)),
-      image_(device, VK_IMAGE_TYPE_3D, VK_FORMAT_R32_SFLOAT,
+      image_(device, VK_IMAGE_TYPE_3D, VK_FORMAT_R16_SFLOAT,
              VkExtent3D{2 * slotExtent_.x, 2 * slotExtent_.y, 2 * slotExtent_.z},
              VK_IMAGE_USAGE_STORAGE_BIT, "hero cloud light volume") {
   static_assert(shader::kMaxHeroClouds <= 8, "the slots lie in a 2 x 2 x 2 grid");
@@ -110,13 +110,15 @@ void HeroLightVolume::recordFirstUse(VkCommandBuffer cmd) {
 }
 
 void HeroLightVolume::recordSweep(VkCommandBuffer cmd, const ComputeProgram& program,
-                                  VkDescriptorSet set, VkImageView heroAtlas, VkBuffer heroBlock,
-                                  std::uint32_t instances, const glm::vec3& sunDirection) {
+                                  VkDescriptorSet set, VkImageView heroAtlas, VkImageView heroNoise,
+                                  VkBuffer heroBlock, std::uint32_t instances,
+                                  const glm::vec3& sunDirection) {
   const auto& fn = device_->fn();
   SetWriter(*device_, set)
       .storageImage(shader::kLightSweepAtlas, heroAtlas)
       .uniformBuffer(shader::kLightSweepClouds, heroBlock, sizeof(shader::HeroCloudUniforms))
       .storageImage(shader::kLightSweepVolume, image_.view())
+      .storageImage(shader::kLightSweepNoise, heroNoise)
       .commit();
   // Earlier frames' marches may still read the slots this sweep rewrites.
   memoryBarrier(*device_, cmd, kComputeStage, kStorageRead, kComputeStage,

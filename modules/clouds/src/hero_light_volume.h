@@ -1,5 +1,5 @@
 #pragma once
-// Hero clouds' light volume (Settings::heroLight Volume; cloud_hero_light.h): an R32F 3D image
+// Hero clouds' light volume (Settings::heroLight Volume; cloud_hero_light.h): an R16F 3D image
 // of kMaxHeroClouds slots, each the light grid of one of this frame's instances, and the
 // bookkeeping that sweeps a slot only when what it holds no longer serves its instance (the
 // sun turned, or the cloud's asset or life changed), so a still scene sweeps once.
@@ -20,10 +20,11 @@ namespace clouds::detail {
 // What a slot was swept for: what the sweep reads besides the atlas (the instance's size,
 // density and fade scale the lookup, and the extinction the march).
 struct HeroLightKey {
-  float assetSlice = 0.0f;     // the asset: its first slice in the atlas
+  float assetSlice = 0.0f;     // the asset: its origin in the atlas (HeroCloudInstance::extent.w)
   glm::vec3 sunIndex{0.0f};    // the sun in its index space, unit
   float topIndex = 0.0f;       // its life: the top (index y)
   float erosionVoxels = 0.0f;  // and the erosion (voxels)
+  std::uint32_t detail = 0;    // the block's detail (count.w): the density the sweep integrates
 };
 
 // How far the sun may turn, and the life move, before an instance's slot is swept again: half a
@@ -34,7 +35,9 @@ inline constexpr float kHeroLightSunDegrees = 0.5f;
 inline constexpr float kHeroLightTopVoxels = 0.25f;
 inline constexpr float kHeroLightErosionVoxels = 0.1f;
 
-HeroLightKey heroLightKey(const shader::HeroCloudInstance& instance, const glm::vec3& sunDirection);
+// `detail`: the block's (HeroCloudUniforms::count.w).
+HeroLightKey heroLightKey(const shader::HeroCloudInstance& instance, const glm::vec3& sunDirection,
+                          std::uint32_t detail);
 // Whether a slot swept for `held` serves an instance that wants `wanted`.
 bool heroLightServes(const HeroLightKey& held, const HeroLightKey& wanted);
 // An asset's light grid (cloud_hero_light.h's heroLightSize()).
@@ -64,11 +67,12 @@ class HeroLightVolume {
   // Slots for `block`'s instances (its count.y and z); returns the instances to sweep.
   std::uint32_t assignSlots(shader::HeroCloudUniforms& block, const glm::vec3& sunDirection);
   // Records the sweep of `instances` (assignSlots()'s, not 0) of the block in `heroBlock` over
-  // `heroAtlas` with `program` (hero_light_volume.comp) and its descriptor set `set`; the march
-  // that follows reads the result.
+  // `heroAtlas` and `heroNoise` (the detail noise, or a stand-in when the block's header says
+  // none) with `program` (hero_light_volume.comp) and its descriptor set `set`; the march that
+  // follows reads the result.
   void recordSweep(VkCommandBuffer cmd, const ComputeProgram& program, VkDescriptorSet set,
-                   VkImageView heroAtlas, VkBuffer heroBlock, std::uint32_t instances,
-                   const glm::vec3& sunDirection);
+                   VkImageView heroAtlas, VkImageView heroNoise, VkBuffer heroBlock,
+                   std::uint32_t instances, const glm::vec3& sunDirection);
   // Readies the image for the march's reads on its first frame (a frame that sweeps nothing
   // still binds it).
   void recordFirstUse(VkCommandBuffer cmd);

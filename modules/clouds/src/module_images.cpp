@@ -75,7 +75,7 @@ ModuleImages::ModuleImages(const DeviceContext& device) : device_(device) {
   hazePlaceholder = make(VK_IMAGE_TYPE_3D, kRadianceFormat, {1, 1, 1}, VK_IMAGE_USAGE_SAMPLED_BIT,
                          "no aerial perspective", VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL);
   noHeroLight =
-      make(VK_IMAGE_TYPE_3D, VK_FORMAT_R32_SFLOAT, {1, 1, 1}, kStorage, "no hero light volume");
+      make(VK_IMAGE_TYPE_3D, VK_FORMAT_R16_SFLOAT, {1, 1, 1}, kStorage, "no hero light volume");
   noDepthOutput = make(VK_IMAGE_TYPE_2D, kDepthOutputFormat, {1, 1, 1}, VK_IMAGE_USAGE_STORAGE_BIT,
                        "no cloud depth output");
 }

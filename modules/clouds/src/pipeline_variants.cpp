@@ -131,6 +131,11 @@ std::vector<std::pair<Program, SpecializationKey>> variantsFor(const Settings& s
   if (heroClouds && settings.heroLight == HeroLight::Volume) {
     variants.emplace_back(Program::HeroLight, SpecializationKey{});
   }
+  // The detail noise's generators, only for hero clouds that are up-rezzed.
+  if (heroClouds && settings.heroDetail == HeroDetail::Uprezzed) {
+    variants.emplace_back(Program::HeroNoise, SpecializationKey{});
+    variants.emplace_back(Program::HeroNoiseMip, SpecializationKey{});
+  }
   // No shadow map, no shadow pipelines (and no terrain shadow: it lives in the map).
   if (settings.shadowCascades > 0) {
     variants.emplace_back(Program::ShadowMap, shadowMapKey(settings));

@@ -11,6 +11,8 @@
 #include "clouds_shaders/god_ray_occlusion.comp.spv.h"
 #include "clouds_shaders/god_rays.comp.spv.h"
 #include "clouds_shaders/hero_light_volume.comp.spv.h"
+#include "clouds_shaders/hero_noise.comp.spv.h"
+#include "clouds_shaders/hero_noise_mip.comp.spv.h"
 #include "clouds_shaders/lightning_bolts.comp.spv.h"
 #include "clouds_shaders/noise_curl.comp.spv.h"
 #include "clouds_shaders/noise_detail.comp.spv.h"
@@ -110,14 +112,28 @@ std::vector<ProgramDesc> programTable() {
         {kMarchEdgeRayList, kBuffer},
         {kMarchHeroAtlas, kImage},
         {kMarchHeroClouds, kUniforms},
-        {kMarchHeroLight, kImage}},
+        {kMarchHeroLight, kImage},
+        {kMarchHeroNoise, kImage}},
        sizeof(FrameUniformsIndex),
        "march"},
       {Program::HeroLight,
        hero_light_volume_comp_spv,
-       {{kLightSweepAtlas, kImage}, {kLightSweepClouds, kUniforms}, {kLightSweepVolume, kImage}},
+       {{kLightSweepAtlas, kImage},
+        {kLightSweepClouds, kUniforms},
+        {kLightSweepVolume, kImage},
+        {kLightSweepNoise, kImage}},
        sizeof(HeroLightConstants),
        "hero light volume"},
+      {Program::HeroNoise,
+       hero_noise_comp_spv,
+       {{kGeneratorTarget, kImage}},
+       sizeof(NoiseConstants),
+       "hero detail noise generator"},
+      {Program::HeroNoiseMip,
+       hero_noise_mip_comp_spv,
+       {{kGeneratorTarget, kImage}},
+       sizeof(NoiseMipConstants),
+       "hero detail noise mip chain"},
       {Program::Reconstruct,
        reconstruct_comp_spv,
        {{kBindingUniforms, kUniforms},
@@ -154,7 +170,8 @@ std::vector<ProgramDesc> programTable() {
         {kShadowMapOut, kImage},
         {kShadowMapSpare, kImage},
         {kShadowHeroAtlas, kImage},
-        {kShadowHeroClouds, kUniforms}},
+        {kShadowHeroClouds, kUniforms},
+        {kShadowHeroNoise, kImage}},
        sizeof(ShadowMapConstants),
        "shadow map"},
       {Program::TerrainShadow,
@@ -206,14 +223,15 @@ Programs::Programs(const DeviceContext& device, bool composite) {
     program = std::make_unique<ComputeProgram>(device, desc.spirv, desc.bindings,
                                                desc.pushConstantBytes, desc.name);
     // Programs without specialization constants have one variant: made now (the shadow map's,
-    // the god rays' and the hero light volume's by prepare(), only for settings and assets
-    // that have them).
+    // the god rays' and the hero clouds' light volume and detail noise by prepare(), only for
+    // settings and assets that have them).
     const bool specialised =
         desc.program == Program::March || desc.program == Program::Reconstruct ||
         desc.program == Program::Upsample || desc.program == Program::ShadowMap ||
         desc.program == Program::TerrainShadow || desc.program == Program::GodRayOcclusion ||
         desc.program == Program::GodRays || desc.program == Program::LightningBolts ||
-        desc.program == Program::HeroLight;
+        desc.program == Program::HeroLight || desc.program == Program::HeroNoise ||
+        desc.program == Program::HeroNoiseMip;
     if (!specialised) program->prepare();
   }
 }

@@ -31,6 +31,8 @@ enum class Program : std::uint32_t {
   GodRays,          // god_rays.comp: the god-ray mask (its radial blur)
   LightningBolts,   // lightning_bolts.comp: this frame's bolts into the radiance output
   HeroLight,        // hero_light_volume.comp: hero clouds' light volume, swept when due
+  HeroNoise,        // hero_noise.comp: level 0 of the hero clouds' 128^3 detail noise
+  HeroNoiseMip,     // hero_noise_mip.comp: one level of its mip chain
   Count
 };
 

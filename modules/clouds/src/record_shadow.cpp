@@ -35,10 +35,7 @@ void Context::Impl::recordShadowMap(VkCommandBuffer cmd, const FrameInputs& inpu
     sliceUniforms_ =
         detail::buildUniforms(inputs, settings, detail::UniformContext{info_.reversedZ});
     sliceUniforms_.flags |= debugFlags_;
-    sliceHeroClouds_ = heroAtlas_ && !inputs.heroClouds.empty()
-                           ? detail::heroCloudUniforms(heroAtlas_->assets(), inputs.heroClouds,
-                                                       inputs.cameraPosition)
-                           : shader::HeroCloudUniforms{};
+    sliceHeroClouds_ = heroBlock(inputs, settings);
   }
   const bool heroes = sliceHeroClouds_.count.x > 0;
   const shader::CloudUniforms& uniforms = sliceUniforms_;
@@ -76,6 +73,7 @@ void Context::Impl::recordShadowMap(VkCommandBuffer cmd, const FrameInputs& inpu
       .uniformBuffer(kShadowHeroClouds,
                      heroes ? slot.shadowHeroClouds.buffer() : slot.shadowUniforms.buffer(),
                      sizeof(HeroCloudUniforms))
+      .storageImage(kShadowHeroNoise, heroNoiseView())
       .commit();
 
   const detail::ComputeProgram& program = programs_[Program::ShadowMap];

@@ -52,13 +52,21 @@ struct TraceFrame {
   VkImageView heroAtlas = VK_NULL_HANDLE;
   VkBuffer heroBlock = VK_NULL_HANDLE;
   VkImageView heroLight = VK_NULL_HANDLE;  // their light volume, or a 1-texel stand-in
+  VkImageView heroNoise = VK_NULL_HANDLE;  // their detail noise, or a stand-in
 };
 
-// `heroAtlas`, `heroBlock`, `heroLight`: the hero clouds' (null without them this frame).
+// The hero clouds' images and block (views null without them this frame).
+struct HeroBindings {
+  VkImageView atlas = VK_NULL_HANDLE;
+  VkBuffer block = VK_NULL_HANDLE;
+  VkImageView light = VK_NULL_HANDLE;
+  VkImageView noise = VK_NULL_HANDLE;
+};
+
 TraceFrame traceFrame(const detail::ModuleImages& im, const TraceSamplers& samplers,
                       VkBuffer uniforms, const FrameInputs& inputs, const Settings& settings,
                       const detail::TemporalFrame& temporal, bool terrainShadow,
-                      VkImageView heroAtlas, VkBuffer heroBlock, VkImageView heroLight) {
+                      const HeroBindings& heroes) {
   const bool hasDepth = inputs.depthView != VK_NULL_HANDLE;
   const FrameInputs::AerialPerspective& haze = inputs.aerialPerspective;
   const bool hazed = haze.view != VK_NULL_HANDLE;
@@ -83,9 +91,10 @@ TraceFrame traceFrame(const detail::ModuleImages& im, const TraceSamplers& sampl
           upsampling ? im.outputHistory[temporal.writeHistory].view() : noOutputHistory,
       .terrainShadow = terrainShadow,
       .edgeRays = detail::marchesEdgeRays(settings, temporal),
-      .heroAtlas = heroAtlas != VK_NULL_HANDLE ? heroAtlas : im.shapeNoise.view(),
-      .heroBlock = heroAtlas != VK_NULL_HANDLE ? heroBlock : uniforms,
-      .heroLight = heroLight != VK_NULL_HANDLE ? heroLight : im.noHeroLight.view(),
+      .heroAtlas = heroes.atlas != VK_NULL_HANDLE ? heroes.atlas : im.shapeNoise.view(),
+      .heroBlock = heroes.atlas != VK_NULL_HANDLE ? heroes.block : uniforms,
+      .heroLight = heroes.light != VK_NULL_HANDLE ? heroes.light : im.noHeroLight.view(),
+      .heroNoise = heroes.noise != VK_NULL_HANDLE ? heroes.noise : im.shapeNoise.view(),
   };
 }
 
@@ -132,6 +141,7 @@ void writeMarchSet(const detail::DeviceContext& device, VkDescriptorSet set,
       .storageImage(kMarchHeroAtlas, frame.heroAtlas)
       .uniformBuffer(kMarchHeroClouds, frame.heroBlock, sizeof(HeroCloudUniforms))
       .storageImage(kMarchHeroLight, frame.heroLight)
+      .storageImage(kMarchHeroNoise, frame.heroNoise)
       .commit();
 }
 
@@ -301,11 +311,15 @@ void Context::Impl::recordTrace(VkCommandBuffer cmd, const FrameInputs& inputs,
   const TraceSamplers samplers{nearestSampler_.get(), linearSampler_.get(),
                                clampedLinearSampler_.get()};
   const bool heroes = heroClouds != shader::kHeroCloudsOff;
-  const TraceFrame frame = traceFrame(
-      images_, samplers, slot.uniforms.buffer(), inputs, settings, temporal, terrainShadow,
-      heroes ? heroAtlas_->image().view() : VK_NULL_HANDLE, slot.heroClouds.buffer(),
-      heroes && settings.heroLight == HeroLight::Volume ? heroLight_->image().view()
-                                                        : VK_NULL_HANDLE);
+  HeroBindings heroBindings;
+  if (heroes) {
+    heroBindings = {
+        heroAtlas_->image().view(), slot.heroClouds.buffer(),
+        settings.heroLight == HeroLight::Volume ? heroLight_->image().view() : VK_NULL_HANDLE,
+        heroNoiseView()};
+  }
+  const TraceFrame frame = traceFrame(images_, samplers, slot.uniforms.buffer(), inputs, settings,
+                                      temporal, terrainShadow, heroBindings);
   writeSceneDistanceSet(device_, slot.sceneDistance, frame);
   writeMarchSet(device_, slot.march, frame, weatherMap(), slot.counters, slot.shadowParameters,
                 slot.edgeRayList);
@@ -342,8 +356,8 @@ void Context::Impl::recordHeroLight(VkCommandBuffer cmd, std::uint32_t instances
   if (instances == 0) return;
   beginPass(cmd, detail::Pass::HeroLight, "clouds: hero light volume");
   heroLight_->recordSweep(cmd, programs_[Program::HeroLight], slot.heroLight,
-                          heroAtlas_->image().view(), slot.heroClouds.buffer(), instances,
-                          lastUniforms_.sunDirection);
+                          heroAtlas_->image().view(), heroNoiseView(), slot.heroClouds.buffer(),
+                          instances, lastUniforms_.sunDirection);
   endPass(cmd, detail::Pass::HeroLight);
 }
 

@@ -103,6 +103,7 @@ constexpr SettingEffect kEffects[] = {
     CLOUDS_SETTING(jitter, kLook, kNoReason),
     CLOUDS_SETTING(emptySpaceSkipping, kLook, kNoReason),
     CLOUDS_SETTING(heroLight, kLook, kNoReason),
+    CLOUDS_SETTING(heroDetail, kLook, kNoReason),
     // Temporal reconstruction: its own knobs apply to the next blend.
     CLOUDS_SETTING(traceScale, kKeepsState, "a new trace extent resets the history as a resize"),
     CLOUDS_SETTING(updateInterval, kKeepsState,

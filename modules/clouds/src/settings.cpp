@@ -154,6 +154,9 @@ std::string validateSettings(const Settings& s) {
       s.heroLight == HeroLight::Cone || s.heroLight == HeroLight::Volume ||
           s.heroLight == HeroLight::Marched,
       "Settings.heroLight: unknown mode " + std::to_string(static_cast<unsigned>(s.heroLight)));
+  c.require(
+      s.heroDetail == HeroDetail::Off || s.heroDetail == HeroDetail::Uprezzed,
+      "Settings.heroDetail: unknown mode " + std::to_string(static_cast<unsigned>(s.heroDetail)));
   return c.error;
 }
 

@@ -406,6 +406,12 @@ std::vector<std::uint8_t> CloudHarness::readShapeNoise() {
   const auto& image = moduleImages().shapeNoise;
   return readTexels(device_, image.image(), image.extent());
 }
+std::vector<std::uint8_t> CloudHarness::readHeroNoise() {
+  const clouds::detail::HeroNoise* noise =
+      clouds::detail::ContextAccess::impl(*context_).heroNoise();
+  if (noise == nullptr) return {};
+  return readTexels(device_, noise->image().image(), noise->image().extent());
+}
 std::vector<std::uint8_t> CloudHarness::readDetailNoise() {
   const auto& image = moduleImages().detailNoise;
   return readTexels(device_, image.image(), image.extent());

@@ -178,6 +178,9 @@ class CloudHarness {
 
   // Read-backs of the module's textures as RGBA8 texels (valid after a render).
   std::vector<std::uint8_t> readShapeNoise();
+  // The hero clouds' detail noise chain (kHeroNoiseSize x kHeroNoiseSize x kHeroNoiseDepth
+  // RGBA8); empty when the context has not made it.
+  std::vector<std::uint8_t> readHeroNoise();
   std::vector<std::uint8_t> readDetailNoise();
   std::vector<std::uint8_t> readCurlNoise();
   std::vector<std::uint8_t> readWeatherMap();

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <stdexcept>
 #include <thread>
 
 #include "clamped_sampling.h"
@@ -69,6 +70,16 @@ vec4 fetchHeroAtlas(ivec3 t) {
   const glm::uvec3 e = gTextures->heroes.extent;
   return texel(gTextures->heroes.atlas,
                (std::size_t(t.z) * e.y + std::size_t(t.y)) * e.x + std::size_t(t.x));
+}
+vec4 fetchHeroNoise(ivec3 t) {
+  if (gTextures->heroes.noise.empty())
+    throw std::logic_error("the CPU reference needs the hero clouds' detail noise (CpuHeroClouds)");
+  const std::size_t n = kHeroNoiseSize;
+  return texel(gTextures->heroes.noise,
+               (std::size_t(t.z) * n + std::size_t(t.y)) * n + std::size_t(t.x));
+}
+vec4 heroNoiseMean() {
+  return fetchHeroNoise(heroNoiseTexelAddress(kHeroNoiseLevels - 1, ivec3(0)));
 }
 uint heroLightMode() {
   return gHeroLightMode;
@@ -152,6 +163,7 @@ CpuTextures readTextures(CloudHarness& harness) {
                        harness.readWeatherMap(),
                        {},
                        {}};
+  textures.heroes.noise = harness.readHeroNoise();
   textures.weatherMaxFine = weatherMaxima(textures.weather, kWeatherMapSize, kWeatherMaxFineSize);
   textures.weatherMaxCoarse =
       weatherMaxima(textures.weatherMaxFine, kWeatherMaxFineSize, kWeatherMaxCoarseSize);

@@ -16,6 +16,9 @@ namespace clouds::tools {
 struct CpuHeroClouds {
   std::vector<std::uint8_t> atlas;  // RGBA8, x fastest
   glm::uvec3 extent{0u};
+  // The detail noise's chain (CloudHarness::readHeroNoise()); needed when the block's header
+  // asks for detail (count.w).
+  std::vector<std::uint8_t> noise;
   clouds::shader::HeroCloudUniforms uniforms{};
 };
 

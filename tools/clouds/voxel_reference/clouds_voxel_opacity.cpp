@@ -79,6 +79,8 @@ std::vector<float> gpuOpacity(const clouds::NvdfVolume& volume,
   settings.densityMultiplier = 1.0f;
   settings.transmittanceCutoff = 0.0f;
   settings.maxDistanceMetres = 1e7f;
+  // The grid's density as it is, linear in its values: what vdb_render integrates.
+  settings.heroDetail = clouds::HeroDetail::Off;
   const clouds::tools::CloudFrame frame = harness.render(view, settings, extent);
   if (instance.validationMessageCount() > 0) {
     std::fprintf(stderr, "clouds_voxel_opacity: %u Vulkan validation message(s)\n",

@@ -189,6 +189,18 @@ enum class HeroLight : std::uint32_t {
   Marched = 2,
 };
 
+// What a hero cloud is between its voxels (Schneider 2023, Nubis³'s voxel cloud density).
+enum class HeroDetail : std::uint32_t {
+  // Its voxels as filtered: density linear in the dimensional profile, smooth over a voxel
+  // (what OpenVDB's own renderer shows of the same grid).
+  Off = 0,
+  // Up-rezzed to half a metre: the profile eroded by a 128^3 noise of wisps (curly alligator)
+  // and billows (alligator) as each voxel's detail type asks, read at the level one pixel covers
+  // (generated on the GPU, 10 MiB, the first frame that wants it). Follows `detail`: without
+  // it, and in the light, the shadow map and the distance queries, the noise's mean erodes.
+  Uprezzed = 1,
+};
+
 // Plain settings with defaults; ranges are checked by validateSettings() and dispatch().
 struct Settings {
   // --- Cloud layer -----------------------------------------------------------------------
@@ -274,8 +286,9 @@ struct Settings {
   // sample's own.
   bool lightEveryOtherStep = true;
   Jitter jitter = Jitter::BayerHalton;
-  bool emptySpaceSkipping = true;           // jump over weather cells without cloud (exact)
-  HeroLight heroLight = HeroLight::Volume;  // hero clouds' self-shadowing (HeroLight)
+  bool emptySpaceSkipping = true;                // jump over weather cells without cloud (exact)
+  HeroLight heroLight = HeroLight::Volume;       // hero clouds' self-shadowing (HeroLight)
+  HeroDetail heroDetail = HeroDetail::Uprezzed;  // hero clouds' detail (HeroDetail)
 
   // --- Resolution and temporal reconstruction ----------------------------------------------
   // The march runs at traceScale x the output resolution (per axis); each frame it refreshes

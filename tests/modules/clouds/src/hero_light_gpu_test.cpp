@@ -153,6 +153,57 @@ TEST(HeroLightVolume, IsTheStraightIntegralTowardsTheSun) {
   EXPECT_GT(stale.medianRelative, 0.2);
 }
 
+// The light sees the cloud the view sees, at its coarse resolution: with the detail on, the
+// straight integral towards the sun is the integral of the field's density eroded by the detail
+// noise's mean (cloud_hero.h's heroField()). Only the mean is read, so a chain that holds it in
+// every texel stands in for the GPU's noise here. With the smooth voxels' integrand it misses
+// the same bar (the control: 4.3% against 0.07%).
+TEST(HeroLightVolume, TheLightSeesTheDetailedCloudAtItsMean) {
+  const clouds::HeroCloud cloud = test::aheadOfTheCamera();
+  const glm::vec3 sun = sunAt(40.0f, 20.0f);
+  clouds::tools::CpuTextures textures = cumulusPlaced(cloud);
+  textures.heroes.noise.assign(std::size_t(4) * clouds::shader::kHeroNoiseSize *
+                                   clouds::shader::kHeroNoiseSize * clouds::shader::kHeroNoiseDepth,
+                               std::uint8_t{64});
+  const clouds::shader::CloudUniforms u = lightUniforms(sun);
+  const auto medianError = [&](std::uint32_t fieldDetail, std::uint32_t lightDetail) {
+    std::vector<double> relative;
+    textures.heroes.uniforms.count.w = fieldDetail;
+    std::vector<glm::vec3> points;
+    {
+      const clouds::tools::CpuHeroScope scope(textures);
+      points = pointsInTheCloud(cloud, u, 5);
+    }
+    points.resize(std::min<std::size_t>(points.size(), 200));
+    for (const glm::vec3& p : points) {
+      textures.heroes.uniforms.count.w = lightDetail;
+      float marched = 0.0f;
+      {
+        const clouds::tools::CpuHeroScope scope(textures);
+        marched = clouds::shader::heroSunward(p, u, clouds::shader::kHeroLightMarched).opticalDepth;
+      }
+      textures.heroes.uniforms.count.w = fieldDetail;
+      const clouds::tools::CpuHeroScope scope(textures);
+      double integral = 0.0;
+      for (float t = 0.5f; t < 4000.0f; t += 1.0f)
+        integral += clouds::shader::heroField(p + sun * t, u).sigmaT;
+      if (integral > 0.1) relative.push_back(std::abs(double(marched) - integral) / integral);
+    }
+    std::sort(relative.begin(), relative.end());
+    EXPECT_GT(relative.size(), 50u);
+    return relative.empty() ? 1.0 : relative[relative.size() / 2];
+  };
+  const std::uint32_t detailed = clouds::shader::kHeroDetailUprezzed;
+  const double same = medianError(detailed, detailed);
+  const double smooth = medianError(detailed, clouds::shader::kHeroDetailOff);
+  std::printf(
+      "straight light against the detailed field's integral: %.2f%% (median), %.1f%% with "
+      "the smooth voxels' light\n",
+      100.0 * same, 100.0 * smooth);
+  EXPECT_LT(same, 0.02);
+  EXPECT_GT(smooth, 0.02);
+}
+
 // What a growing cloud's lighting does when its slot is swept again: the slot is kept while the
 // cloud's top moves less than kHeroLightTopVoxels, so at a sweep the transmittance towards the
 // sun steps from the stale volume's to the fresh one's. At the largest step the tolerance allows
@@ -277,10 +328,14 @@ TEST_F(HeroLight, TheMarchMatchesTheCpuReferenceAlsoAfterTheSunTurns) {
 }
 
 // Seed 002's second rung: High with the light volume is nearer the Reference (the straight
-// integral, converged) than High with the light cone through the hero cloud, on each view.
+// integral, converged) than High with the light cone through the hero cloud, on each view. The
+// clouds' voxels are kept smooth (HeroDetail::Off): every light mode sees the detail noise's
+// mean (cloud_hero.h), so the detail only adds its own sampling error to the views, which on the
+// grazing view is larger than the light's (there the modes differ by 0.6 dB with it on).
 TEST_F(HeroLight, BringsHighNearerTheReferenceThanTheCone) {
   const test::Assets assets(harness().context());
-  for (const test::HeroView& c : test::heroViews()) {
+  for (test::HeroView c : test::heroViews()) {
+    c.settings.heroDetail = clouds::HeroDetail::Off;
     clouds::Settings high = clouds::settingsFor(clouds::Quality::High, c.settings);
     const clouds::Settings reference =
         clouds::tools::singleFrame(clouds::referenceSettings(c.settings));

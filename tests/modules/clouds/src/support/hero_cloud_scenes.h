@@ -136,7 +136,9 @@ inline clouds::tools::CpuHeroClouds cumulusOnTheCpu(
 
 inline clouds::tools::CpuTextures withHeroes(clouds::tools::CpuTextures textures,
                                              const clouds::Context::Impl& impl) {
+  std::vector<std::uint8_t> noise = std::move(textures.heroes.noise);
   textures.heroes = cumulusOnTheCpu(impl.lastHeroClouds());
+  textures.heroes.noise = std::move(noise);
   return textures;
 }
 
