@@ -154,9 +154,10 @@ TEST(Scenes, HeroCloudsArriveInTheDescription) {
       {"asset": "towering_cumulus", "positionMetres": [10, 20, 30], "scale": 2, "yawDegrees": 45,
        "lifecycle": {"startSeconds": -5, "growSeconds": 90, "matureSeconds": 0,
                      "dissipateSeconds": 45, "restSeconds": 12, "repeat": false}},
-      {"asset": "arch", "positionMetres": [0, 0, 0]}]}
+      {"asset": "arch", "positionMetres": [0, 0, 0]}], "heroDetail": "off"}
   })"));
   ASSERT_TRUE(s.clouds);
+  EXPECT_EQ(s.clouds->settings.heroDetail, clouds::HeroDetail::Off);
   ASSERT_EQ(s.clouds->heroClouds.size(), 2u);
   const sample::HeroCloudDescription& h = s.clouds->heroClouds[0];
   EXPECT_EQ(h.shipped, "towering_cumulus");
@@ -171,6 +172,9 @@ TEST(Scenes, HeroCloudsArriveInTheDescription) {
   EXPECT_EQ(h.lifecycle->restSeconds, 12.0f);
   EXPECT_FALSE(h.lifecycle->repeat);
   EXPECT_FALSE(s.clouds->heroClouds[1].lifecycle);  // always as authored
+  const sample::SceneDescription byDefault = loadSceneDescription(writeScene("detail.json", R"({
+    "name": "x", "camera": {"position": [0, 1, 0]}, "clouds": {"coverage": 0.5}})"));
+  EXPECT_EQ(byDefault.clouds->settings.heroDetail, clouds::HeroDetail::Uprezzed);
 }
 
 TEST(Scenes, MalformedScenesNameFilePathAndReason) {
@@ -204,6 +208,9 @@ TEST(Scenes, MalformedScenesNameFilePathAndReason) {
       {"root.json", R"([1, 2, 3])", "(root): must be an object"},
       {"altitude.json", R"({"name": "x", "camera": {"position": [0, -5, 0]}})",
        "camera.position: altitude (y) must be in [0, 50000] m"},
+      {"detail.json",
+       R"({"name": "x", "camera": {"position": [0, 1, 0]}, "clouds": {"heroDetail": "max"}})",
+       "clouds.heroDetail: must be one of uprezzed, off"},
       {"quality.json",
        R"({"name": "x", "camera": {"position": [0, 1, 0], "cloudQuality": "extreme"}})",
        "camera.cloudQuality: must be one of low, medium, high, ultra, reference"},

@@ -6,6 +6,8 @@
 #                   the sample's --cloud
 #   hero_cloud_life the towering cumulus's life (HeroCloudLifecycle): growing, grown and
 #                   dissipating, each a scene whose clock reaches that age by the captured frame
+#   hero_cloud_detail the towering cumulus from 700 m, its half-metre detail (Settings::
+#                   heroDetail) beside its voxels smooth
 # into OUT_DIR (default modules/clouds/docs/images) as PNG.
 # Usage: tools/clouds/hero_pictures.sh [OUT_DIR]
 set -euo pipefail
@@ -66,3 +68,34 @@ python="$(sed -n 's/^CLOUDSCAPE_PLOT_PYTHON:[A-Z]*=//p' build/CMakeCache.txt)"
   "growing (growth 0.35)=${stages[0]}" "growing (growth 0.7)=${stages[1]}" \
   "grown=${stages[2]}" "dissipating (dissipation 0.5)=${stages[3]}"
 echo "$out/hero_cloud_life.png"
+
+# The detail: the towering cumulus from its sunlit side, about 700 m off, up-rezzed and smooth.
+detail_scene() {  # heroDetail
+  cat >"$scratch/detail_$1.json" <<JSON
+{
+  "name": "A hero cloud up close",
+  "camera": {"position": [2830, 2300, 15400], "yawDegrees": 0, "pitchDegrees": 10},
+  "sun": {"timeOfDayHours": 15.5, "maxElevationDegrees": 60},
+  "terrain": {"gltf": "default"},
+  "clouds": {
+    "coverage": 0.0,
+    "heroClouds": [
+      {"asset": "towering_cumulus", "positionMetres": [2830, 1300, 14170], "yawDegrees": 20}
+    ],
+    "heroDetail": "$1"
+  },
+  "atmosphere": {"preset": "earth"},
+  "exposure": {"mode": "auto"}
+}
+JSON
+  echo "$scratch/detail_$1.json"
+}
+for detail in uprezzed off; do
+  picture "detail_$detail" --scene "$(detail_scene "$detail")" >/dev/null
+  cp "$out/detail_$detail.png" "$scratch/detail_$detail.png"
+  rm "$out/detail_$detail.png"
+done
+"${python:-python3}" tools/review/contact_sheet.py --columns 2 "$out/hero_cloud_detail.png" \
+  "half-metre detail (heroDetail Uprezzed)=$scratch/detail_uprezzed.png" \
+  "its voxels smooth (heroDetail Off)=$scratch/detail_off.png"
+echo "$out/hero_cloud_detail.png"

@@ -153,6 +153,10 @@ CloudDescription readClouds(const JsonReader& r, const std::filesystem::path& sc
     }
     if (c.heroClouds.size() > 64) r.fail("heroClouds", "at most 64 hero clouds");
   }
+  // Whether the hero clouds carry their half-metre detail or show their voxels smooth.
+  s.heroDetail = r.choice("heroDetail", {"uprezzed", "off"}, "uprezzed") == "off"
+                     ? clouds::HeroDetail::Off
+                     : clouds::HeroDetail::Uprezzed;
   r.finish();
   // Cross-field rules (layer top above bottom, ...) are the module's; report them here too.
   if (const std::string problem = clouds::validateSettings(s); !problem.empty()) {
