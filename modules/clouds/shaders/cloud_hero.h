@@ -157,11 +157,11 @@ FX_INLINE bool heroDetailed() {
 }
 
 // The density (x, in units of the instance's scales.x x extinctionPerMetre) and the profile the
-// lighting reads (y) of voxel fields `fields` (heroFields()) whose profile its life leaves at
-// `profile`, at the cloud's coarse resolution: eroded by the detail noise's mean.
-FX_INLINE vec2 heroCoarseDensity(vec4 fields, float profile) {
-  if (!heroDetailed()) return vec2(profile * fields.z, profile);
-  return heroUprezzed(profile, fields.y, fields.z, heroNoiseMean());
+// lighting reads (y) of voxel fields `fields` (heroFields(), x the profile as the cloud's life
+// leaves it), at the cloud's coarse resolution: eroded by the detail noise's mean.
+FX_INLINE vec2 heroCoarseDensity(vec4 fields) {
+  if (!heroDetailed()) return vec2(fields.x * fields.z, fields.x);
+  return heroUprezzed(fields.x, fields.y, fields.z, heroNoiseMean());
 }
 
 // What the hero clouds hold at a camera-relative point, at their coarse resolution, and what
@@ -210,7 +210,7 @@ FX_INLINE HeroSample heroFieldExcept(vec3 relative, IN(CloudUniforms) u, uint ex
       const float life =
           heroLifeCompiledIn() && h.scales.y > 0.0f ? heroLifeWeight(h, c, fields.w) : 1.0f;
       fields.x *= life;
-      const vec2 density = heroCoarseDensity(fields, fields.x);
+      const vec2 density = heroCoarseDensity(fields);
       const float extinction = h.scales.x * u.extinctionPerMetre;
       const float sigma = density.x * extinction;
       s.sigmaT += sigma;

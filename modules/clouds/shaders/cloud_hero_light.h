@@ -57,10 +57,9 @@ FX_INLINE vec3 heroSunIndexDirection(IN(HeroCloudInstance) h, vec3 sunDirection)
 // resolution (cloud_hero.h's heroCoarseDensity(): eroded by the detail noise's mean), the
 // extinction in units of the instance's scales.x x extinctionPerMetre (0 beyond the box).
 FX_INLINE float heroLightIntegrand(IN(HeroCloudInstance) h, vec3 c) {
-  const vec4 fields = heroFields(h, c);
-  const float life =
-      heroLifeCompiledIn() && h.scales.y > 0.0f ? heroLifeWeight(h, c, fields.w) : 1.0f;
-  return heroCoarseDensity(fields, fields.x * life).x;
+  vec4 fields = heroFields(h, c);
+  fields.x *= heroLifeCompiledIn() && h.scales.y > 0.0f ? heroLifeWeight(h, c, fields.w) : 1.0f;
+  return heroCoarseDensity(fields).x;
 }
 
 // The light volume on one of its slices along `axis` (g[axis], an integer) at light-grid
