@@ -21,6 +21,9 @@
 // invocations would cost, on lavapipe, as much as marching every tile again: a branch costs
 // its lanes' whole group of 8 wherever one lane takes it. Gathered in each workgroup behind a
 // barrier, the barrier alone cost the march 7 to 11%.)
+// The near field (kSpecNearField; Settings::nearFieldMetres, Nubis³'s near/far split): a third
+// dispatch marches every trace pixel up to CloudUniforms.nearFieldMetres into its own image (18),
+// while the tiles march from there on; upsample.comp lays the one over the other.
 // References: Schneider & Vos 2017 (Nubis); Schneider 2022 (Nubis Evolved); Hillaire 2016.
 #extension GL_GOOGLE_include_directive : require
 
@@ -40,6 +43,7 @@ layout(constant_id = kSpecLightReuse) const uint kLightReuse = 1u;
 layout(constant_id = kSpecEdgeRays) const uint kEdgeRays = 0u;
 layout(constant_id = kSpecHeroClouds) const uint kHeroClouds = 0u;
 layout(constant_id = kSpecHeroLight) const uint kHeroLight = kHeroLightVolume;
+layout(constant_id = kSpecNearField) const uint kNearField = 0u;
 
 #include "frame_uniforms.glsl"
 layout(binding = kMarchShapeNoise, rgba8) uniform readonly image3D shapeNoise;
@@ -48,6 +52,7 @@ layout(binding = kMarchWeatherMap, rgba8) uniform readonly image2D weatherMap;
 layout(binding = kMarchCurlNoise, rgba8) uniform readonly image2D curlNoise;
 layout(binding = kMarchSceneDistance, r32f) uniform readonly image2D sceneDistance;
 layout(binding = kMarchSamplesOut, rgba32ui) uniform writeonly uimage2D outSamples;
+layout(binding = kMarchNearFieldOut, rgba32ui) uniform writeonly uimage2D nearFieldOut;
 layout(binding = kMarchWeatherMaxFine, rgba8) uniform readonly image2D weatherMaxFine;
 layout(binding = kMarchWeatherMaxCoarse, rgba8) uniform readonly image2D weatherMaxCoarse;
 layout(binding = kMarchCounters, std430) buffer Counters { uint counters[]; };
@@ -140,12 +145,7 @@ bool onSilhouette(uvec2 pixel) {
   return hi - lo > kEdgeContrast;
 }
 
-// Marches the ray through `centre` (trace pixels) of `pixel`, whose steps start at
-// `startOffset` (rayJitter()), and stores its sample at `slot`.
-void marchRay(uvec2 pixel, vec2 centre, float startOffset, uvec2 slot) {
-  const vec3 direction = pixelRayDirection(centre, vec2(u.traceExtent), u);
-  const float distance = imageLoad(sceneDistance, ivec2(pixel)).r;
-
+MarchOptions marchOptions() {
   MarchOptions options;
   options.detail = kDetailEnabled;
   options.cheapSampling = kCheapSampling;
@@ -153,21 +153,55 @@ void marchRay(uvec2 pixel, vec2 centre, float startOffset, uvec2 slot) {
   options.lightSteps = kLightSteps;
   options.emptySpace = kEmptySpace;
   options.lightReuse = kLightReuse;
+  options.nearField = kNearField;
+  return options;
+}
+
+void countWork(MarchResult result, uint ray) {
+  if (kCounters == 0u) return;
+  atomicAdd(counters[kCounterViewSamples], uint(result.viewSamples));
+  atomicAdd(counters[kCounterLightSamples], uint(result.lightSamples));
+  atomicAdd(counters[ray], 1u);
+  atomicAdd(counters[kCounterEarlyExits], result.earlyExit);
+  atomicAdd(counters[kCounterSkippedCells], uint(result.skippedCells));
+}
+
+// Marches the ray through `centre` (trace pixels) of `pixel`, whose steps start at
+// `startOffset` (rayJitter()), and stores its sample at `slot`.
+void marchRay(uvec2 pixel, vec2 centre, float startOffset, uvec2 slot) {
+  const vec3 direction = pixelRayDirection(centre, vec2(u.traceExtent), u);
+  const float distance = imageLoad(sceneDistance, ivec2(pixel)).r;
   const float jitter = rayJitter(pixel, startOffset, u.tileSize,
                                  (u.flags & kFlagRebuiltInsideCloud) != 0u, kJitterMode);
   const MarchResult result = marchClouds(
-      direction, distance, jitter, lightJitter(u.lightRound, kJitterMode), u, options);
-
+      direction, distance, jitter, lightJitter(u.lightRound, kJitterMode), u, marchOptions());
   imageStore(outSamples, ivec2(slot),
              packCloudSample(vec4(result.radiance, result.transmittance),
                              vec2(result.frontDepth, result.weightedDepth)));
-  if (kCounters != 0u) {
-    atomicAdd(counters[kCounterViewSamples], uint(result.viewSamples));
-    atomicAdd(counters[kCounterLightSamples], uint(result.lightSamples));
-    atomicAdd(counters[kCounterTracedPixels], 1u);
-    atomicAdd(counters[kCounterEarlyExits], result.earlyExit);
-    atomicAdd(counters[kCounterSkippedCells], uint(result.skippedCells));
-  }
+  countWork(result, kCounterTracedPixels);
+}
+
+// The near field's pass: every trace pixel's ray through its centre, up to the split (and the
+// scene). Each frame stands alone (no history to smear or clamp into blocks), so where its
+// steps start must not repeat across the screen: interleaved gradient noise (Jimenez 2014)
+// gives neighbours different starts without the short period a Bayer pattern would show, and
+// the golden ratio moves them from frame to frame.
+void marchNearField() {
+  const uvec2 pixel = gl_GlobalInvocationID.xy;
+  if (any(greaterThanEqual(pixel, u.traceExtent))) return;
+  const vec3 direction = pixelRayDirection(vec2(pixel) + 0.5f, vec2(u.traceExtent), u);
+  const float distance = imageLoad(sceneDistance, ivec2(pixel)).r;
+  const float gradientNoise =
+      fract(52.9829189f * fract(dot(vec2(pixel), vec2(0.06711056f, 0.00583715f))));
+  const float jitter =
+      kJitterMode == 0u ? 0.5f
+                        : fract(gradientNoise + 0.6180340f * float(u.temporalIndex & 0xffffu));
+  const MarchResult result = marchClouds(
+      direction, distance, jitter, lightJitter(u.lightRound, kJitterMode), u, marchOptions());
+  imageStore(nearFieldOut, ivec2(pixel),
+             packCloudSample(vec4(result.radiance, result.transmittance),
+                             vec2(result.frontDepth, result.weightedDepth)));
+  countWork(result, kCounterNearFieldRays);
 }
 
 // Invocations in a workgroup: the second dispatch's groups are counted in these.
@@ -191,6 +225,10 @@ void main() {
   loadFrameUniforms();
   if (heroCloudCount() > 0u)
     gHeroNoiseMean = fetchHeroNoise(heroNoiseTexelAddress(kHeroNoiseLevels - 1, ivec3(0)));
+  if (kNearField != 0u) {
+    marchNearField();
+    return;
+  }
   if (kEdgeRays == kEdgeRaysMarch) {
     marchListedEdgeRay();
     return;

@@ -56,6 +56,9 @@ struct MarchOptions {
   uint lightSteps;          // samples towards the sun per cloudy view sample
   uint emptySpace;          // jump over weather cells without cloud
   uint lightReuse;          // the sun's optical depth on every other step (lightOpticalDepth())
+  // The near/far split (u.nearFieldMetres; 0 there: none): 1 marches the ray up to it (the near
+  // field's pass), 0 from it on (the tiles' march, and the CPU reference's whole rays).
+  uint nearField;
 };
 
 struct MarchResult {
@@ -447,11 +450,16 @@ FX_INLINE MarchResult marchClouds(vec3 rayDirection, float sceneDistance, float 
   }
   const bool layerHit = segment.y > segment.x;
   const bool heroHit = heroSpan.y > heroSpan.x;
-  const float start = heroHit ? (layerHit ? min(segment.x, heroSpan.x) : heroSpan.x) : segment.x;
-  const float layerEnd = min(min(segment.y, sceneDistance), u.maxDistanceMetres);
+  // The part of the ray this march takes (MarchOptions::nearField): the two parts meet at
+  // u.nearFieldMetres, and laid one over the other they are the whole ray.
+  const float from = o.nearField != 0u ? 0.0f : u.nearFieldMetres;
+  const float to =
+      min(u.maxDistanceMetres, o.nearField != 0u ? u.nearFieldMetres : kInfiniteDistance);
+  const float start =
+      max(heroHit ? (layerHit ? min(segment.x, heroSpan.x) : heroSpan.x) : segment.x, from);
+  const float layerEnd = min(min(segment.y, sceneDistance), to);
   const float end =
-      heroHit ? min(min(layerHit ? max(segment.y, heroSpan.y) : heroSpan.y, sceneDistance),
-                    u.maxDistanceMetres)
+      heroHit ? min(min(layerHit ? max(segment.y, heroSpan.y) : heroSpan.y, sceneDistance), to)
               : layerEnd;
   const OctavePhases phases = octavePhases(dot(rayDirection, u.sunDirection), u);
   const float albedo = u.albedo;

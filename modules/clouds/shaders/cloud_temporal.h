@@ -74,6 +74,18 @@ FX_INLINE vec2 depthBlendResult(DepthBlend b) {
   return vec2(b.front, b.opacitySum > 1e-6f ? b.weightedSum / b.opacitySum : 0.0f);
 }
 
+// The near field's clouds (Settings::nearFieldMetres: the ray up to the split) laid over the far
+// part's (from the split on): radiance `near` + its transmittance x `far`, the transmittances
+// multiplied; the depths blended by the opacity each part shows (the near front, where there is
+// one, is the nearer).
+FX_INLINE void layNearOverFar(vec4 near, vec2 nearDepth, INOUT(vec4) far, INOUT(vec2) farDepth) {
+  DepthBlend blend = depthBlendStart();
+  depthBlendAdd(blend, 1.0f, near.a, nearDepth);
+  depthBlendAdd(blend, near.a, far.a, farDepth);
+  far = vec4(vec3(near.r, near.g, near.b) + vec3(far.r, far.g, far.b) * near.a, near.a * far.a);
+  farDepth = depthBlendResult(blend);
+}
+
 // A marched or reconstructed pixel in one RGBA32UI texel, so the passes that read several
 // neighbours (reconstruction, upsample) take one image load per neighbour instead of two:
 // x = half2(r, g), y = half2(b, transmittance), z = front depth, w = weighted depth (float).

@@ -73,6 +73,8 @@ const uint kMarchHeroClouds = 15u;
 const uint kMarchHeroLight = 16u;
 // Their detail noise (kHeroNoiseSize chain, RGBA8); the shape noise stands in without them.
 const uint kMarchHeroNoise = 17u;
+// The near field's samples (kSpecNearField's near pass writes them; RGBA32UI, trace res).
+const uint kMarchNearFieldOut = 18u;
 // reconstruct.comp
 const uint kReconstructFresh = 1u;
 const uint kReconstructHistory = 2u;
@@ -80,6 +82,10 @@ const uint kReconstructOut = 3u;
 const uint kReconstructFlashes = 4u;        // LightningUniforms (a stand-in without lightning)
 const uint kReconstructGlow = 5u;           // RGBA16F glow per unit of cloud (lightningFlashes > 0)
 const uint kReconstructSceneDistance = 6u;  // the scene distance image (R32F, trace res)
+// near_field_resolve.comp (after the near field's march; packed samples, trace res).
+const uint kNearResolveFresh = 1u;    // this frame's near field
+const uint kNearResolveHistory = 2u;  // last frame's resolved near field
+const uint kNearResolveOut = 3u;      // this frame's resolved near field
 // upsample.comp
 const uint kUpsampleTraceSamples = 1u;
 const uint kUpsampleHostDepth = 2u;
@@ -91,6 +97,7 @@ const uint kUpsampleHistoryOut = 7u;
 const uint kUpsampleAerialPerspective = 8u;  // the host's haze (FrameInputs::aerialPerspective)
 const uint kUpsampleLightningGlow = 10u;     // reconstruct.comp's glow (lightningFlashes > 0)
 const uint kUpsampleGodRayLight = 9u;        // god_rays.comp's light (Settings::godRaySamples > 0)
+const uint kUpsampleNearField = 11u;         // the near field's samples (kSpecUpsampleNearField)
 // cloud_shadow_map.comp (binding 0: the CloudUniforms of the frame the map is made in)
 const uint kShadowShapeNoise = 1u;
 const uint kShadowWeatherMap = 2u;
@@ -158,7 +165,9 @@ const uint kSpecLightReuse = 8u;          // 0/1: the sun's optical depth on eve
 const uint kSpecEdgeRays = 9u;            // kEdgeRays*: more rays for tiles on silhouettes
 const uint kSpecHeroClouds = 10u;         // kHeroClouds*: hero clouds (FrameInputs::heroClouds)
 const uint kSpecHeroLight = 11u;          // kHeroLight*: how hero clouds shadow themselves
-const uint kMarchSpecCount = 12u;
+const uint kSpecNearField = 12u;          // 0/1: the near field's pass (every trace pixel, the
+                                          //   ray up to CloudUniforms.nearFieldMetres)
+const uint kMarchSpecCount = 13u;
 // The variants of kSpecEdgeRays: none; the tiles' march, which lists the edge tiles; the
 // edge rays' march, over that list (an indirect dispatch).
 const uint kEdgeRaysOff = 0u;
@@ -170,6 +179,9 @@ const uint kMaxEdgeRaysPerTile = 2u;       // Settings::edgeRays; slots in a til
 const uint kSpecHistory = 0u;  // 0 none, 1 read in place (nothing moved), 2 reprojected
 const uint kSpecReconstructLightning = 1u;  // 0/1: write the glow with this frame's flashes
 const uint kReconstructSpecCount = 2u;
+// near_field_resolve.comp:
+const uint kSpecNearHistory = 0u;  // 0/1: last frame's resolved near field is usable
+const uint kNearResolveSpecCount = 1u;
 // upsample.comp
 const uint kSpecTemporalUpsampling = 0u;   // 0/1: accumulate the output-resolution history
 const uint kSpecOutputHistory = 1u;        // 0 none, 1 read in place (nothing moved), 2 reprojected
@@ -177,7 +189,8 @@ const uint kSpecAerialPerspective = 2u;    // 0/1: haze the output (FrameInputs:
 const uint kSpecUpsampleGodRays = 3u;      // 0/1: add god_rays.comp's light to the sky's pixels
 const uint kSpecUpsampleLightning = 4u;    // 0/1: the clouds glow with LightningUniforms' flashes
 const uint kSpecUpsampleDepthOutput = 5u;  // 0/1: store the cloud depth output
-const uint kUpsampleSpecCount = 6u;
+const uint kSpecUpsampleNearField = 6u;    // 0/1: lay the near field's samples over the far part
+const uint kUpsampleSpecCount = 7u;
 // lightning_bolts.comp
 const uint kSpecBoltsAerialPerspective = 0u;  // 0/1: haze them (FrameInputs::aerialPerspective)
 const uint kBoltsSpecCount = 1u;
@@ -208,12 +221,13 @@ const uint kFlagRebuiltInsideCloud = 8u;
 const uint kFlagEdgeRays = 16u;
 
 // --- Work counters (a storage buffer of uints, reset every frame) ----------------------------
-const uint kCounterViewSamples = 0u;   // density samples along view rays
-const uint kCounterLightSamples = 1u;  // density samples towards the sun
-const uint kCounterTracedPixels = 2u;  // rays marched
-const uint kCounterEarlyExits = 3u;    // rays stopped by the transmittance cutoff
-const uint kCounterSkippedCells = 4u;  // empty weather cells jumped over
-const uint kCounterEdgeRays = 5u;      // edge rays marched (also counted as rays marched)
+const uint kCounterViewSamples = 0u;    // density samples along view rays
+const uint kCounterLightSamples = 1u;   // density samples towards the sun
+const uint kCounterTracedPixels = 2u;   // rays marched
+const uint kCounterEarlyExits = 3u;     // rays stopped by the transmittance cutoff
+const uint kCounterSkippedCells = 4u;   // empty weather cells jumped over
+const uint kCounterEdgeRays = 5u;       // edge rays marched (also counted as rays marched)
+const uint kCounterNearFieldRays = 6u;  // the near field's rays (not counted as rays marched)
 const uint kCounterCount = 8u;
 
 // --- The per-frame uniform block --------------------------------------------------------------
@@ -261,7 +275,9 @@ struct CloudUniforms {
   float curlStrengthMetres;  // swirl of the detail noise at the cloud base
   vec2 windDirection;        // unit, world xz
   float skewMetres;          // downwind lean across the layer
-  float padding2;
+  // The near/far split this frame (Settings::nearFieldMetres; 0: none): the march's tiles
+  // start their rays here, the near field's pass ends its rays here (MarchOptions::nearField).
+  float nearFieldMetres;
   float fineCellMetres;    // empty-space skipping: side of a fine weather-maxima cell
   float coarseCellMetres;  //   and of a coarse one
   float padding3;

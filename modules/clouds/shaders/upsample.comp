@@ -15,6 +15,11 @@
 // moving past near cloud sees what the trace resolution gives. Whether there is history, and
 // whether anything moved, are per-frame variants (kSpecOutputHistory).
 //
+// With the near field (kSpecUpsampleNearField: Settings::nearFieldMetres, this frame), the clouds
+// nearer than the split, marched apart every frame, are laid over all of that (layNearOverFar()),
+// bilinear from the trace pixels around like the spatial estimate; the histories keep the far
+// part only.
+//
 // With the host's aerial perspective (kSpecAerialPerspective) the output is hazed: hazed().
 // With god rays (kSpecUpsampleGodRays), the sky's pixels then get god_rays.comp's light, as
 // much as the clouds let the sky through (fxcontracts/god_rays.h): the screen-space mask says
@@ -24,7 +29,7 @@
 // Inputs: 0 CloudUniforms; 1 reconstructed samples (trace res, packed: cloud_temporal.h);
 // 2 host depth; 5 this frame's marched samples (trace res); 6 last frame's output history;
 // 8 the host's aerial perspective (3D); 9 the god rays' light (a quarter of the output res);
-// 10 the clouds' lightning glow (trace res).
+// 10 the clouds' lightning glow (trace res); 11 the near field's samples (trace res).
 // Outputs: 3 RGBA16F radiance + transmittance, 4 RG32F depths (output res; only with
 // kSpecUpsampleDepthOutput: Settings::depthOutput, or the bolts' pass reads them); 7 this
 // frame's output history (output res, RG32UI: packOutputHistory()).
@@ -48,6 +53,8 @@ layout(constant_id = kSpecUpsampleLightning) const uint kLightning = 0u;
 // saves its store, about a quarter of the pass on lavapipe (an image store there is a loop
 // over the lanes for each 32-bit word, and the depths are two).
 layout(constant_id = kSpecUpsampleDepthOutput) const uint kDepthOutput = 1u;
+// 1: the near field was marched apart this frame (kSpecUpsampleNearField).
+layout(constant_id = kSpecUpsampleNearField) const uint kNearField = 0u;
 #include "frame_uniforms.glsl"
 layout(binding = kUpsampleTraceSamples, rgba32ui) uniform readonly uimage2D traceSamples;
 layout(binding = kUpsampleHostDepth) uniform sampler2D hostDepth;
@@ -59,6 +66,7 @@ layout(binding = kUpsampleHistoryOut, rg32ui) uniform writeonly uimage2D outputH
 layout(binding = kUpsampleAerialPerspective) uniform sampler3D aerialPerspective;
 layout(binding = kUpsampleGodRayLight) uniform sampler2D godRayLight;
 layout(binding = kUpsampleLightningGlow) uniform sampler2D lightningGlow;
+layout(binding = kUpsampleNearField, rgba32ui) uniform readonly uimage2D nearField;
 
 #include "fxcontracts/aerial_perspective.glsl"
 
@@ -145,20 +153,26 @@ bool hitsPixel(vec2 trace, vec2 scale, uvec2 pixel) {
   return all(equal(uvec2(floor(trace / scale)), pixel));
 }
 
+// Tap `tap` (0-3) of the bilinear filter over the trace pixels around output pixel `pixel`:
+// its trace pixel, and its weight.
+ivec2 bilinearTap(uvec2 pixel, vec2 scale, int tap, out float weight) {
+  const vec2 p = (vec2(pixel) + 0.5f) * scale - 0.5f;
+  const vec2 f = p - floor(p);
+  const ivec2 offset = ivec2(tap & 1, tap >> 1);
+  weight = (offset.x == 1 ? f.x : 1.0f - f.x) * (offset.y == 1 ? f.y : 1.0f - f.y);
+  return clamp(ivec2(floor(p)) + offset, ivec2(0), ivec2(u.traceExtent) - 1);
+}
+
 // The depth-aware bilinear estimate from the four trace pixels around this one.
 void spatialEstimate(uvec2 pixel, float scene, vec2 scale, out vec4 radiance, out vec2 depth,
                      out vec4 lo, out vec4 hi) {
-  const vec2 p = (vec2(pixel) + 0.5f) * scale - 0.5f;
-  const ivec2 i = ivec2(floor(p));
-  const vec2 f = p - floor(p);
   radiance = vec4(0.0f);
   lo = vec4(1e30f);
   hi = vec4(-1e30f);
   DepthBlend blend = depthBlendStart();
   for (int tap = 0; tap < 4; ++tap) {
-    const ivec2 offset = ivec2(tap & 1, tap >> 1);
-    const ivec2 q = clamp(i + offset, ivec2(0), ivec2(u.traceExtent) - 1);
-    const float w = (offset.x == 1 ? f.x : 1.0f - f.x) * (offset.y == 1 ? f.y : 1.0f - f.y);
+    float w;
+    const ivec2 q = bilinearTap(pixel, scale, tap, w);
     const uvec4 packed = imageLoad(traceSamples, q);
     vec4 r = unpackCloudRadiance(packed);
     vec2 d = unpackCloudDepth(packed);
@@ -169,6 +183,25 @@ void spatialEstimate(uvec2 pixel, float scene, vec2 scale, out vec4 radiance, ou
     depthBlendAdd(blend, w, r.a, d);
   }
   depth = depthBlendResult(blend);
+}
+
+// The near field's clouds in front of this frame's far part (`radiance`, `depth`), the same
+// depth-aware bilinear estimate from its trace pixels; nothing without a near field.
+void layNearField(uvec2 pixel, float scene, vec2 scale, inout vec4 radiance, inout vec2 depth) {
+  if (kNearField == 0u) return;
+  vec4 near = vec4(0.0f);
+  DepthBlend blend = depthBlendStart();
+  for (int tap = 0; tap < 4; ++tap) {
+    float w;
+    const ivec2 q = bilinearTap(pixel, scale, tap, w);
+    const uvec4 packed = imageLoad(nearField, q);
+    vec4 r = unpackCloudRadiance(packed);
+    vec2 d = unpackCloudDepth(packed);
+    occlude(scene, r, d);
+    near += r * w;
+    depthBlendAdd(blend, w, r.a, d);
+  }
+  layNearOverFar(near, depthBlendResult(blend), radiance, depth);
 }
 
 void main() {
@@ -184,6 +217,7 @@ void main() {
   vec2 spatialDepth;
   spatialEstimate(pixel, scene, scale, spatial, spatialDepth, lo, hi);
   if (kTemporalUpsampling == 0u) {
+    layNearField(pixel, scene, scale, spatial, spatialDepth);
     imageStore(outRadiance, ivec2(pixel), outputRadiance(pixel, spatial, spatialDepth, scene));
     if (kDepthOutput != 0u) imageStore(outDepth, ivec2(pixel), vec4(spatialDepth, 0.0f, 0.0f));
     return;
@@ -283,12 +317,13 @@ void main() {
   const float n = float(ownSamples);
   const float settled = n >= u.upsamplingMaxSamples ? 1.0f : n / (n + 1.0f);
   const float trust = mix(settled, min(n * 0.5f, 1.0f), silhouette);
-  const vec4 radiance = mix(spatial, own, trust);
+  vec4 radiance = mix(spatial, own, trust);
   DepthBlend blend = depthBlendStart();
   depthBlendAdd(blend, 1.0f - trust, spatial.a, spatialDepth);
   const float ownWeighted = spatialDepth.y > 0.0f ? spatialDepth.y : ownFront;
   depthBlendAdd(blend, trust, own.a, vec2(ownFront, ownWeighted));
-  const vec2 depth = depthBlendResult(blend);
+  vec2 depth = depthBlendResult(blend);
+  layNearField(pixel, scene, scale, radiance, depth);
   // Nothing moved (kOutputHistory 1): the history is updated in place (TemporalState), and
   // only pixels with a fresh sample (1 in 64 at High) pack and store, in a loop that rows of 8
   // without one skip (7 in 8). The others would store the bits they read, or, where this

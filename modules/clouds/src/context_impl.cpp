@@ -80,6 +80,7 @@ Context::Impl::Impl(const CreateInfo& info, const detail::VulkanFunctions& funct
     slot.sceneDistance = allocateSet(Program::SceneDistance);
     slot.march = allocateSet(Program::March);
     slot.reconstruct = allocateSet(Program::Reconstruct);
+    slot.nearResolve = allocateSet(Program::NearResolve);
     slot.upsample = allocateSet(Program::Upsample);
     if (programs_.has(Program::Composite)) slot.composite = allocateSet(Program::Composite);
     slot.skyAmbient = allocateSet(Program::SkyAmbient);
@@ -166,7 +167,8 @@ detail::ImageSizes imageSizesFor(const Settings& settings, VkExtent2D renderExte
           upsamplesTemporally(settings),
           godRays,
           settings.lightningFlashes > 0 ? trace : VkExtent2D{0, 0},
-          detail::writesCloudDepth(settings) ? renderExtent : VkExtent2D{0, 0}};
+          detail::writesCloudDepth(settings) ? renderExtent : VkExtent2D{0, 0},
+          settings.nearFieldMetres > 0.0f ? trace : VkExtent2D{0, 0}};
 }
 
 VkDeviceSize edgeRayListBytesFor(const Settings& settings, VkExtent2D renderExtent) {
@@ -373,9 +375,13 @@ void Context::Impl::dispatch(const FrameInputs& inputs, const Settings& settings
   const bool heroClouds = lastHeroClouds_.count.x > 0;
   const bool inHeroCloud =
       detail::cameraInHeroCloudBox(lastHeroClouds_, settings.insideLayerMarginMetres);
+  const bool nearHeroCloud =
+      settings.nearFieldMetres > 0.0f &&
+      detail::cameraInHeroCloudBox(lastHeroClouds_, settings.nearFieldMetres);
 
   const VkExtent2D traceExtent = detail::traceExtentFor(inputs.renderExtent, settings.traceScale);
-  const detail::TemporalFrame temporal = temporal_.plan(inputs, settings, traceExtent, inHeroCloud);
+  const detail::TemporalFrame temporal =
+      temporal_.plan(inputs, settings, traceExtent, inHeroCloud, nearHeroCloud);
   const detail::UniformContext uniformContext{info_.reversedZ, inputs.depthView != VK_NULL_HANDLE,
                                               traceExtent, inputs.renderExtent, temporal};
   lastUniforms_ = detail::buildUniforms(inputs, settings, uniformContext);
@@ -421,6 +427,7 @@ void Context::Impl::dispatch(const FrameInputs& inputs, const Settings& settings
     report_ = FrameReport{traceExtent,          temporal.tileSize,    temporal.useHistory,
                           temporal.insideLayer, temporal.resetReason, shadowCascadesMade_};
     report_.insideHeroCloud = temporal.insideHeroCloud;
+    report_.nearField = temporal.nearField;
   }
   device_.endLabel(cmd);
   lastSlot_ = slotIndex;
@@ -532,6 +539,7 @@ WorkCounters Context::Impl::workCounters(std::uint64_t frameIndex) const {
   counters.lightSamples = values[shader::kCounterLightSamples];
   counters.tracedPixels = values[shader::kCounterTracedPixels];
   counters.edgeRays = values[shader::kCounterEdgeRays];
+  counters.nearFieldRays = values[shader::kCounterNearFieldRays];
   counters.earlyExits = values[shader::kCounterEarlyExits];
   counters.skippedCells = values[shader::kCounterSkippedCells];
   return counters;

@@ -97,6 +97,7 @@ class Context::Impl {
     VkDescriptorSet sceneDistance = VK_NULL_HANDLE;
     VkDescriptorSet march = VK_NULL_HANDLE;
     VkDescriptorSet reconstruct = VK_NULL_HANDLE;
+    VkDescriptorSet nearResolve = VK_NULL_HANDLE;
     VkDescriptorSet upsample = VK_NULL_HANDLE;
     VkDescriptorSet composite = VK_NULL_HANDLE;
     VkDescriptorSet skyAmbient = VK_NULL_HANDLE;
@@ -187,6 +188,10 @@ class Context::Impl {
   void recordMarch(VkCommandBuffer cmd, const Settings& settings, std::uint32_t tileSize,
                    VkExtent2D traceExtent, bool terrainShadow, bool edgeRays,
                    std::uint32_t heroClouds, Slot& slot);
+  // The near field's pass (TemporalFrame::nearField): every trace pixel's ray up to the split,
+  // and their resolve with last frame's (`history`: it is usable).
+  void recordNearField(VkCommandBuffer cmd, const Settings& settings, VkExtent2D traceExtent,
+                       bool terrainShadow, std::uint32_t heroClouds, bool history, Slot& slot);
   // `lightning`: recordLightning() wrote flashes, whose glow is reconstructed too.
   void recordReconstruct(VkCommandBuffer cmd, const detail::TemporalFrame& temporal,
                          VkExtent2D traceExtent, bool lightning, Slot& slot);

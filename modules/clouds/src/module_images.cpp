@@ -108,6 +108,9 @@ bool ModuleImages::fit(const ImageSizes& sizes) const {
          (!sizes.upsampling ||
           (holds(outputHistory[0], sizes.output) && holds(outputHistory[1], sizes.output))) &&
          (sizes.lightning.width == 0 || holds(lightningGlow, sizes.lightning)) &&
+         (sizes.nearField.width == 0 ||
+          (holds(nearSamples, sizes.nearField) && holds(nearHistory[0], sizes.nearField) &&
+           holds(nearHistory[1], sizes.nearField))) &&
          (sizes.godRays.width == 0 ||
           (fitsExactly(godRayOcclusion, sizes.godRays) && fitsExactly(godRayMask, sizes.godRays) &&
            fitsExactly(godRayLight, sizes.godRays)));
@@ -160,6 +163,21 @@ bool ModuleImages::grow(const ImageSizes& sizes, std::optional<std::uint64_t> la
   }
   // Exactly the size wanted (read with samplers, whose uv spans the whole image); small, so
   // remade with the render extent.
+  const bool nearFieldFits = holds(nearSamples, sizes.nearField) &&
+                             holds(nearHistory[0], sizes.nearField) &&
+                             holds(nearHistory[1], sizes.nearField);
+  if (sizes.nearField.width > 0 && !nearFieldFits) {
+    const VkExtent3D e = extent3(grown(nearSamples, sizes.nearField));
+    replace(nearSamples, make(VK_IMAGE_TYPE_2D, kSampleFormat, e, kStorage, "near field (trace)"),
+            lastUse);
+    for (std::uint32_t i = 0; i < 2; ++i) {
+      replace(nearHistory[i],
+              make(VK_IMAGE_TYPE_2D, kSampleFormat, e, kHistory,
+                   "near field history " + std::to_string(i)),
+              lastUse);
+    }
+    historyLost = true;
+  }
   const bool godRaysFit = fitsExactly(godRayOcclusion, sizes.godRays) &&
                           fitsExactly(godRayMask, sizes.godRays) &&
                           fitsExactly(godRayLight, sizes.godRays);
@@ -218,8 +236,9 @@ MemoryUsage ModuleImages::memoryUsage() const {
   m.weatherBytes = weatherMaps[0].bytes() + weatherMaps[1].bytes() + weatherMaxFine.bytes() +
                    weatherMaxCoarse.bytes();
   m.outputBytes = radiance.bytes() + depth.bytes();
-  m.traceBytes =
-      sceneDistance.bytes() + traceSamples.bytes() + history[0].bytes() + history[1].bytes();
+  m.traceBytes = sceneDistance.bytes() + traceSamples.bytes() + history[0].bytes() +
+                 history[1].bytes() + nearSamples.bytes() + nearHistory[0].bytes() +
+                 nearHistory[1].bytes();
   m.upsamplingBytes = outputHistory[0].bytes() + outputHistory[1].bytes();
   m.shadowBytes = shadowMap.bytes() + shadowSpare.bytes();
   m.godRayBytes = godRayOcclusion.bytes() + godRayMask.bytes() + godRayLight.bytes();

@@ -34,6 +34,7 @@ struct ImageSizes {
   VkExtent2D godRays{0, 0};    // the god-ray occlusion image and mask ({0, 0}: none)
   VkExtent2D lightning{0, 0};  // the clouds' lightning glow, the trace's ({0, 0}: none)
   VkExtent2D depth{0, 0};      // the cloud depth output, the output's ({0, 0}: none)
+  VkExtent2D nearField{0, 0};  // the near field's samples, the trace's ({0, 0}: none)
 };
 
 class ModuleImages {
@@ -90,6 +91,8 @@ class ModuleImages {
   OwnedImage godRayMask;     // its radial blur (Outputs::godRayMask)
   OwnedImage godRayLight;    // what the upsample adds to the sky's pixels
   OwnedImage lightningGlow;  // the clouds' glow per unit of cloud, trace res
+  OwnedImage nearSamples;    // the near field marched apart (packed samples), trace res
+  std::array<OwnedImage, 2> nearHistory;  // the near field resolved, ping-pong, trace res
 
  private:
   struct Retired {

@@ -21,13 +21,14 @@ enum class Pass : std::uint32_t {
   LightningBolts,
   HeroLight,
   HeroNoise,
+  NearField,
   Count
 };
 
 inline constexpr std::array<const char*, static_cast<std::size_t>(Pass::Count)> kPassNames = {
-    "noise",    "weather",     "sky ambient",     "clear sky",  "scene distance",
-    "march",    "reconstruct", "upsample",        "shadow map", "terrain shadow",
-    "god rays", "lightning",   "lightning bolts", "hero light", "hero noise"};
+    "noise",           "weather",    "sky ambient", "clear sky",      "scene distance", "march",
+    "reconstruct",     "upsample",   "shadow map",  "terrain shadow", "god rays",       "lightning",
+    "lightning bolts", "hero light", "hero noise",  "near field"};
 
 constexpr std::uint32_t index(Pass pass) {
   return static_cast<std::uint32_t>(pass);

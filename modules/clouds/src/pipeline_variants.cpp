@@ -14,7 +14,7 @@ static_assert(shader::kMarchSpecCount <= kKeyCapacity && shader::kUpsampleSpecCo
 }  // namespace
 
 SpecializationKey marchKey(const Settings& settings, bool workCounters, bool terrainShadow,
-                           std::uint32_t edgeRays, std::uint32_t heroClouds) {
+                           std::uint32_t edgeRays, std::uint32_t heroClouds, bool nearField) {
   const MarchVariant v = marchVariant(settings);
   SpecializationKey key;
   key.values[shader::kSpecJitter] = v.jitter;
@@ -26,11 +26,13 @@ SpecializationKey marchKey(const Settings& settings, bool workCounters, bool ter
   key.values[shader::kSpecEmptySpace] = v.emptySpace;
   key.values[shader::kSpecTerrainShadow] = terrainShadow ? 1u : 0u;
   key.values[shader::kSpecLightReuse] = v.lightReuse;
-  key.values[shader::kSpecEdgeRays] = v.edgeRays != 0u ? edgeRays : shader::kEdgeRaysOff;
+  key.values[shader::kSpecEdgeRays] =
+      v.edgeRays != 0u && !nearField ? edgeRays : shader::kEdgeRaysOff;
   key.values[shader::kSpecHeroClouds] = heroClouds;
   // Only a march that draws hero clouds has a use for their lighting's variants.
   key.values[shader::kSpecHeroLight] =
       heroClouds != shader::kHeroCloudsOff ? v.heroLight : shader::kHeroLightCone;
+  key.values[shader::kSpecNearField] = nearField ? 1u : 0u;
   key.count = shader::kMarchSpecCount;
   return key;
 }
@@ -43,8 +45,15 @@ SpecializationKey reconstructKey(std::uint32_t history, bool lightning) {
   return key;
 }
 
+SpecializationKey nearResolveKey(bool history) {
+  SpecializationKey key;
+  key.values[shader::kSpecNearHistory] = history ? 1u : 0u;
+  key.count = shader::kNearResolveSpecCount;
+  return key;
+}
+
 SpecializationKey upsampleKey(bool temporalUpsampling, std::uint32_t outputHistory, bool hazed,
-                              bool godRays, bool lightning, bool depthOutput) {
+                              bool godRays, bool lightning, bool depthOutput, bool nearField) {
   SpecializationKey key;
   key.values[shader::kSpecTemporalUpsampling] = temporalUpsampling ? 1u : 0u;
   key.values[shader::kSpecOutputHistory] = outputHistory;
@@ -52,6 +61,7 @@ SpecializationKey upsampleKey(bool temporalUpsampling, std::uint32_t outputHisto
   key.values[shader::kSpecUpsampleGodRays] = godRays ? 1u : 0u;
   key.values[shader::kSpecUpsampleLightning] = lightning ? 1u : 0u;
   key.values[shader::kSpecUpsampleDepthOutput] = depthOutput ? 1u : 0u;
+  key.values[shader::kSpecUpsampleNearField] = nearField ? 1u : 0u;
   key.count = shader::kUpsampleSpecCount;
   return key;
 }
@@ -96,6 +106,10 @@ std::vector<std::pair<Program, SpecializationKey>> variantsFor(const Settings& s
       if (heroes != shader::kHeroCloudsOff && !heroClouds) continue;
       variants.emplace_back(Program::March, marchKey(settings, workCounters, terrainShadow,
                                                      shader::kEdgeRaysFind, heroes));
+      if (settings.nearFieldMetres > 0.0f) {
+        variants.emplace_back(Program::March, marchKey(settings, workCounters, terrainShadow,
+                                                       shader::kEdgeRaysFind, heroes, true));
+      }
       if (marchVariant(settings).edgeRays == 0u) continue;
       variants.emplace_back(Program::March, marchKey(settings, workCounters, terrainShadow,
                                                      shader::kEdgeRaysMarch, heroes));
@@ -109,6 +123,10 @@ std::vector<std::pair<Program, SpecializationKey>> variantsFor(const Settings& s
       variants.emplace_back(Program::Reconstruct, reconstructKey(history, lightning));
     }
   }
+  if (settings.nearFieldMetres > 0.0f) {
+    for (bool history : {false, true})
+      variants.emplace_back(Program::NearResolve, nearResolveKey(history));
+  }
   // Without temporal upsampling there is never an output history to read.
   const bool upsampling = upsamplesTemporally(settings);
   for (std::uint32_t history : histories) {
@@ -120,9 +138,13 @@ std::vector<std::pair<Program, SpecializationKey>> variantsFor(const Settings& s
         if (godRays && settings.godRaySamples == 0) continue;
         for (bool lightning : {false, true}) {
           if (lightning && settings.lightningFlashes == 0) continue;
-          variants.emplace_back(Program::Upsample,
-                                upsampleKey(upsampling, history, hazed, godRays, lightning,
-                                            writesCloudDepth(settings)));
+          // With a near field, frames away from the clouds have none.
+          for (bool nearField : {false, true}) {
+            if (nearField && settings.nearFieldMetres == 0.0f) continue;
+            variants.emplace_back(Program::Upsample,
+                                  upsampleKey(upsampling, history, hazed, godRays, lightning,
+                                              writesCloudDepth(settings), nearField));
+          }
         }
       }
     }

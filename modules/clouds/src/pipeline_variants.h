@@ -17,17 +17,21 @@ namespace clouds::detail {
 // with a shadow map). `edgeRays`: the tiles' march (shader::kEdgeRaysFind, which lists the edge
 // tiles when the settings have edge rays) or the edge rays' (kEdgeRaysMarch). `heroClouds`:
 // the variant for this frame's hero clouds (shader::kHeroClouds*, heroCloudVariant()).
+// `nearField`: the near field's pass (Settings::nearFieldMetres; it marches no edge rays).
 SpecializationKey marchKey(const Settings& settings, bool workCounters, bool terrainShadow,
                            std::uint32_t edgeRays = shader::kEdgeRaysFind,
-                           std::uint32_t heroClouds = shader::kHeroCloudsOff);
+                           std::uint32_t heroClouds = shader::kHeroCloudsOff,
+                           bool nearField = false);
 // `history`: kHistoryNone, kHistoryInPlace or kHistoryReprojected (cloud_types.h).
 // `lightning`: write the glow with this frame's flashes too.
 SpecializationKey reconstructKey(std::uint32_t history, bool lightning);
+// `history`: last frame's resolved near field is usable.
+SpecializationKey nearResolveKey(bool history);
 // `hazed`: the host gave an aerial perspective this frame; `godRays`: add the god rays' light;
 // `lightning`: the clouds glow with this frame's flashes; `depthOutput`: store the cloud depth
-// output (writesCloudDepth()).
+// output (writesCloudDepth()); `nearField`: lay the near field over the rest.
 SpecializationKey upsampleKey(bool temporalUpsampling, std::uint32_t outputHistory, bool hazed,
-                              bool godRays, bool lightning, bool depthOutput);
+                              bool godRays, bool lightning, bool depthOutput, bool nearField);
 // Whether the module writes the cloud depth output: the host reads it (Settings::depthOutput),
 // or the bolts' pass does (lightningBoltSegments > 0).
 bool writesCloudDepth(const Settings& settings);

@@ -14,6 +14,7 @@
 #include "clouds_shaders/hero_noise.comp.spv.h"
 #include "clouds_shaders/hero_noise_mip.comp.spv.h"
 #include "clouds_shaders/lightning_bolts.comp.spv.h"
+#include "clouds_shaders/near_field_resolve.comp.spv.h"
 #include "clouds_shaders/noise_curl.comp.spv.h"
 #include "clouds_shaders/noise_detail.comp.spv.h"
 #include "clouds_shaders/noise_mip.comp.spv.h"
@@ -113,7 +114,8 @@ std::vector<ProgramDesc> programTable() {
         {kMarchHeroAtlas, kImage},
         {kMarchHeroClouds, kUniforms},
         {kMarchHeroLight, kImage},
-        {kMarchHeroNoise, kImage}},
+        {kMarchHeroNoise, kImage},
+        {kMarchNearFieldOut, kImage}},
        sizeof(FrameUniformsIndex),
        "march"},
       {Program::HeroLight,
@@ -145,6 +147,14 @@ std::vector<ProgramDesc> programTable() {
         {kReconstructSceneDistance, kImage}},
        sizeof(FrameUniformsIndex),
        "reconstruct"},
+      {Program::NearResolve,
+       near_field_resolve_comp_spv,
+       {{kBindingUniforms, kUniforms},
+        {kNearResolveFresh, kImage},
+        {kNearResolveHistory, kImage},
+        {kNearResolveOut, kImage}},
+       sizeof(FrameUniformsIndex),
+       "near field resolve"},
       {Program::Upsample,
        upsample_comp_spv,
        {{kBindingUniforms, kUniforms},
@@ -157,7 +167,8 @@ std::vector<ProgramDesc> programTable() {
         {kUpsampleHistoryOut, kImage},
         {kUpsampleAerialPerspective, kTexture},
         {kUpsampleGodRayLight, kTexture},
-        {kUpsampleLightningGlow, kTexture}},
+        {kUpsampleLightningGlow, kTexture},
+        {kUpsampleNearField, kImage}},
        sizeof(FrameUniformsIndex),
        "upsample"},
       {Program::ShadowMap,

@@ -23,6 +23,7 @@ enum class Program : std::uint32_t {
   SceneDistance,    // depth_downsample.comp: conservative scene distance at trace resolution
   March,            // cloud_march.comp: the ray-march, one pixel per tile
   Reconstruct,      // reconstruct.comp: temporal reconstruction at trace resolution
+  NearResolve,      // near_field_resolve.comp: the near field's temporal resolve
   Upsample,         // upsample.comp: depth-aware (and temporal) upsampling to the output
   Composite,        // composite.comp: the clouds over the host's colour
   ShadowMap,        // cloud_shadow_map.comp: one cascade of the cloud shadow map

@@ -53,6 +53,14 @@ struct TraceFrame {
   VkBuffer heroBlock = VK_NULL_HANDLE;
   VkImageView heroLight = VK_NULL_HANDLE;  // their light volume, or a 1-texel stand-in
   VkImageView heroNoise = VK_NULL_HANDLE;  // their detail noise, or a stand-in
+  // The near field (TemporalFrame::nearField): this frame's samples, and last frame's and this
+  // frame's resolved near field; without one, stand-ins of their format (the marched samples)
+  // that the variants without it never touch.
+  bool nearField = false;
+  bool nearHistoryUsable = false;
+  VkImageView nearSamples = VK_NULL_HANDLE;
+  VkImageView nearHistoryIn = VK_NULL_HANDLE;
+  VkImageView nearResolved = VK_NULL_HANDLE;
 };
 
 // The hero clouds' images and block (views null without them this frame).
@@ -95,6 +103,14 @@ TraceFrame traceFrame(const detail::ModuleImages& im, const TraceSamplers& sampl
       .heroBlock = heroes.atlas != VK_NULL_HANDLE ? heroes.block : uniforms,
       .heroLight = heroes.light != VK_NULL_HANDLE ? heroes.light : im.noHeroLight.view(),
       .heroNoise = heroes.noise != VK_NULL_HANDLE ? heroes.noise : im.shapeNoise.view(),
+      .nearField = temporal.nearField,
+      .nearHistoryUsable = temporal.useHistory,
+      .nearSamples = temporal.nearField ? im.nearSamples.view() : im.traceSamples.view(),
+      // Ping-pong by the frame's place in the sequence, which alternates while there is history.
+      .nearHistoryIn = temporal.nearField ? im.nearHistory[1 - temporal.temporalIndex % 2].view()
+                                          : im.traceSamples.view(),
+      .nearResolved = temporal.nearField ? im.nearHistory[temporal.temporalIndex % 2].view()
+                                         : im.traceSamples.view(),
   };
 }
 
@@ -142,6 +158,7 @@ void writeMarchSet(const detail::DeviceContext& device, VkDescriptorSet set,
       .uniformBuffer(kMarchHeroClouds, frame.heroBlock, sizeof(HeroCloudUniforms))
       .storageImage(kMarchHeroLight, frame.heroLight)
       .storageImage(kMarchHeroNoise, frame.heroNoise)
+      .storageImage(kMarchNearFieldOut, frame.nearSamples)
       .commit();
 }
 
@@ -190,6 +207,18 @@ void writeUpsampleSet(const detail::DeviceContext& device, VkDescriptorSet set,
           kUpsampleGodRayLight, im.godRayLight ? im.godRayLight.view() : im.depthPlaceholder.view(),
           frame.samplers.clampedLinear,
           im.godRayLight ? VK_IMAGE_LAYOUT_GENERAL : VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL)
+      .storageImage(kUpsampleNearField, frame.nearResolved)
+      .commit();
+}
+
+void writeNearResolveSet(const detail::DeviceContext& device, VkDescriptorSet set,
+                         const TraceFrame& frame) {
+  using namespace shader;
+  detail::SetWriter(device, set)
+      .uniformBuffer(kBindingUniforms, frame.uniforms, kUniformBytes)
+      .storageImage(kNearResolveFresh, frame.nearSamples)
+      .storageImage(kNearResolveHistory, frame.nearHistoryIn)
+      .storageImage(kNearResolveOut, frame.nearResolved)
       .commit();
 }
 
@@ -335,6 +364,11 @@ void Context::Impl::recordTrace(VkCommandBuffer cmd, const FrameInputs& inputs,
   recordSceneDistance(cmd, traceExtent, slot);
   recordMarch(cmd, settings, temporal.tileSize, traceExtent, terrainShadow, frame.edgeRays,
               heroClouds, slot);
+  if (frame.nearField) {
+    writeNearResolveSet(device_, slot.nearResolve, frame);
+    recordNearField(cmd, settings, traceExtent, terrainShadow, heroClouds, frame.nearHistoryUsable,
+                    slot);
+  }
   const bool lightning = recordLightning(cmd, inputs, slot);
   recordReconstruct(cmd, temporal, traceExtent, lightning, slot);
   const bool godRays =
@@ -343,7 +377,7 @@ void Context::Impl::recordTrace(VkCommandBuffer cmd, const FrameInputs& inputs,
   const std::uint32_t outputHistory = historyVariant(temporal.useOutputHistory, temporal.still);
   const VkPipeline upsample = programs_[Program::Upsample].find(
       detail::upsampleKey(temporal.upsampleTemporally, outputHistory, frame.hazed, godRays,
-                          lightning, detail::writesCloudDepth(settings)));
+                          lightning, detail::writesCloudDepth(settings), frame.nearField));
   const bool bolts = !inputs.lightningBolts.empty() && slot.bolts.buffer() != VK_NULL_HANDLE;
   recordUpsample(cmd, upsample, inputs.renderExtent, bolts, slot);
   if (!bolts) return;
@@ -391,6 +425,24 @@ void Context::Impl::recordMarch(VkCommandBuffer cmd, const Settings& settings,
   }
   detail::memoryBarrier(device_, cmd, kCompute, kStorageWrite, kCompute, kStorageRead);
   endPass(cmd, detail::Pass::March);
+  if (info_.workCounters) makeWorkCountersReadable(device_, cmd);
+}
+
+void Context::Impl::recordNearField(VkCommandBuffer cmd, const Settings& settings,
+                                    VkExtent2D traceExtent, bool terrainShadow,
+                                    std::uint32_t heroClouds, bool history, Slot& slot) {
+  beginPass(cmd, detail::Pass::NearField, "clouds: near field");
+  // One invocation per trace pixel, every frame; then their resolve with the history.
+  const VkPipeline nearField = programs_[Program::March].find(detail::marchKey(
+      settings, info_.workCounters, terrainShadow, shader::kEdgeRaysFind, heroClouds, true));
+  bindAndDispatch(cmd, Program::March, nearField, slot.march, traceExtent.width,
+                  traceExtent.height);
+  detail::memoryBarrier(device_, cmd, kCompute, kStorageWrite, kCompute, kStorageRead);
+  bindAndDispatch(cmd, Program::NearResolve,
+                  programs_[Program::NearResolve].find(detail::nearResolveKey(history)),
+                  slot.nearResolve, traceExtent.width, traceExtent.height);
+  detail::memoryBarrier(device_, cmd, kCompute, kStorageWrite, kCompute, kStorageRead);
+  endPass(cmd, detail::Pass::NearField);
   if (info_.workCounters) makeWorkCountersReadable(device_, cmd);
 }
 

@@ -120,6 +120,8 @@ constexpr SettingEffect kEffects[] = {
     CLOUDS_SETTING(historyClampSpreadPixels, kKeepsState,
                    "a blend limit: applies to the next blend"),
     CLOUDS_SETTING(insideLayerMarginMetres, kKeepsState, "a rule of the reset decision itself"),
+    // What the far history holds: the clouds beyond it.
+    CLOUDS_SETTING(nearFieldMetres, kLook, kNoReason),
     CLOUDS_SETTING(historyResetDistanceMetres, kKeepsState, "a rule of the reset decision itself"),
     CLOUDS_SETTING(historyResetAngleDegrees, kKeepsState, "a rule of the reset decision itself"),
     CLOUDS_SETTING(relightResetDegrees, kKeepsState, "a rule of the reset decision itself"),

@@ -46,12 +46,16 @@ bool cloudsLookDifferent(const Settings& a, const Settings& b) {
 }
 
 TemporalFrame TemporalState::plan(const FrameInputs& in, const Settings& s, VkExtent2D traceExtent,
-                                  bool inHeroCloud) {
+                                  bool inHeroCloud, bool nearHeroCloud) {
   TemporalFrame frame;
   frame.insideHeroCloud = inHeroCloud;
   const double altitude = in.cameraPosition.y;
   frame.insideLayer = altitude > s.layerBottomMetres - s.insideLayerMarginMetres &&
                       altitude < s.layerTopMetres + s.insideLayerMarginMetres;
+  const double nearField = s.nearFieldMetres;
+  frame.nearField =
+      nearField > 0.0 && (nearHeroCloud || (altitude > s.layerBottomMetres - nearField &&
+                                            altitude < s.layerTopMetres + nearField));
   if (!havePrevious_) {
     frame.resetReason = forgotten_;
   } else if (in.reset) {
@@ -74,6 +78,9 @@ TemporalFrame TemporalState::plan(const FrameInputs& in, const Settings& s, VkEx
     // A different painted map (or back to the procedural one). A host repainting the same
     // image in place should set FrameInputs::reset.
     frame.resetReason = "weather map changed";
+  } else if (frame.nearField != nearField_) {
+    // The history held the whole ray and now must hold the far part only, or the reverse.
+    frame.resetReason = frame.nearField ? "near field on" : "near field off";
   } else if (!s.temporalReuse) {
     frame.resetReason = kReuseOff;
   } else {
@@ -123,6 +130,7 @@ void TemporalState::commit(const TemporalFrame& frame, const FrameInputs& in,
   traceExtent_ = traceExtent;
   outputExtent_ = in.renderExtent;
   wroteOutputHistory_ = frame.upsampleTemporally;
+  nearField_ = frame.nearField;
   cameraPosition_ = in.cameraPosition;
   view_ = in.view;
   projection_ = in.projection;

@@ -17,7 +17,10 @@ struct TemporalFrame {
   bool useHistory = false;
   const char* resetReason = "first frame";
   bool insideLayer = false;
-  bool insideHeroCloud = false;     // in or near a hero cloud's box (cameraInHeroCloudBox())
+  bool insideHeroCloud = false;  // in or near a hero cloud's box (cameraInHeroCloudBox())
+  // The near field is marched apart (Settings::nearFieldMetres > 0, the camera within that of
+  // the layer or of a hero cloud's box); the history holds only the far part then.
+  bool nearField = false;
   std::uint32_t tileSize = 1;       // k: one pixel per k x k tile is marched
   glm::uvec2 phase{0, 0};           // that pixel's offset in its tile
   std::uint32_t temporalIndex = 0;  // frames since the history was last reset
@@ -56,9 +59,10 @@ bool cloudsLookDifferent(const Settings& a, const Settings& b);
 class TemporalState {
  public:
   // Decides this frame; call commit() once its commands are recorded. `inHeroCloud`: the
-  // camera is in or near a hero cloud's box (cameraInHeroCloudBox()).
+  // camera is in or near a hero cloud's box (cameraInHeroCloudBox()); `nearHeroCloud`: within
+  // Settings::nearFieldMetres of one.
   TemporalFrame plan(const FrameInputs& inputs, const Settings& settings, VkExtent2D traceExtent,
-                     bool inHeroCloud = false);
+                     bool inHeroCloud = false, bool nearHeroCloud = false);
   void commit(const TemporalFrame& frame, const FrameInputs& inputs, const Settings& settings,
               VkExtent2D traceExtent);
   // The history is gone (nothing was marched, or its images were replaced): the next frame
@@ -76,6 +80,7 @@ class TemporalState {
   VkExtent2D traceExtent_{0, 0};
   VkExtent2D outputExtent_{0, 0};
   bool wroteOutputHistory_ = false;
+  bool nearField_ = false;  // the history holds the far part only
   glm::dvec3 cameraPosition_{0.0};
   glm::mat4 view_{1.0f};
   glm::mat4 projection_{1.0f};

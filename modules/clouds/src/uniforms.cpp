@@ -295,6 +295,7 @@ shader::CloudUniforms buildUniforms(const FrameInputs& in, const Settings& s,
   setScattering(u, s);
   setMarch(u, s, context);
   setTiles(u, context);
+  u.nearFieldMetres = context.temporal.nearField ? s.nearFieldMetres : 0.0f;
   setReprojection(u, s, context.temporal);
   setHistoryBlend(u, s, context.temporal);
   const RefreshRound round = refreshRound(s, context.temporal);

@@ -120,12 +120,13 @@ struct PassTiming {
 
 // What the march did in one frame (CreateInfo::workCounters).
 struct WorkCounters {
-  std::uint64_t viewSamples = 0;   // density samples along view rays
-  std::uint64_t lightSamples = 0;  // density samples towards the sun
-  std::uint64_t tracedPixels = 0;  // rays marched (edge rays included)
-  std::uint64_t edgeRays = 0;      // of which edge rays (Settings::edgeRays)
-  std::uint64_t earlyExits = 0;    // rays ended by the transmittance cutoff
-  std::uint64_t skippedCells = 0;  // empty weather cells jumped over
+  std::uint64_t viewSamples = 0;    // density samples along view rays (the near field's too)
+  std::uint64_t lightSamples = 0;   // density samples towards the sun (the near field's too)
+  std::uint64_t tracedPixels = 0;   // rays the tiles marched (edge rays included)
+  std::uint64_t edgeRays = 0;       // of which edge rays (Settings::edgeRays)
+  std::uint64_t nearFieldRays = 0;  // rays of the near field (Settings::nearFieldMetres)
+  std::uint64_t earlyExits = 0;     // rays ended by the transmittance cutoff
+  std::uint64_t skippedCells = 0;   // empty weather cells jumped over
 };
 
 // How the last dispatch reconstructed the frame.
@@ -143,6 +144,9 @@ struct FrameReport {
   // The camera was in or near a hero cloud's box. Moving in it (or in the layer), the march
   // refreshes more pixels a frame: the cloud all around changes from frame to frame.
   bool insideHeroCloud = false;
+  // The near field was marched apart this frame (Settings::nearFieldMetres: the camera was
+  // within that distance of the layer or of a hero cloud's box).
+  bool nearField = false;
 };
 
 // The GPU memory the module holds, by purpose (bytes of its VkDeviceMemory allocations).
@@ -150,7 +154,8 @@ struct MemoryUsage {
   std::uint64_t noiseBytes = 0;       // shape, detail and curl noise
   std::uint64_t weatherBytes = 0;     // two weather maps (current, next) and their maxima
   std::uint64_t outputBytes = 0;      // radiance and depth at the prepared render extent
-  std::uint64_t traceBytes = 0;       // scene distance, samples and two histories (trace extent)
+  std::uint64_t traceBytes = 0;       // scene distance, samples, two histories and the near
+                                      //   field's samples and two histories (trace extent)
   std::uint64_t upsamplingBytes = 0;  // two output-resolution histories (temporal upsampling)
   std::uint64_t shadowBytes = 0;      // the cloud shadow map and its spare cascade
   std::uint64_t godRayBytes = 0;      // the god-ray occlusion image, mask and light
@@ -332,7 +337,14 @@ struct Settings {
   // Inside the layer or this close to it, a moving camera refreshes 2 x 2 tiles of the trace
   // each frame whatever updateInterval says (the cloud all around it changes from frame to
   // frame), and a frame without history is rebuilt by a tent over its rays (reconstruct.comp).
-  float insideLayerMarginMetres = 50.0f;       // [0, 5000]; a hero cloud's box's too
+  float insideLayerMarginMetres = 50.0f;  // [0, 5000]; a hero cloud's box's too
+  // Near/far split (Nubis³): while the camera is within this distance of the layer or of a
+  // hero cloud's box, the clouds nearer than it are marched apart, every trace pixel every
+  // frame, and laid over the far part, which keeps the sparse refresh and its history. The
+  // near part moves most from frame to frame (parallax, flying through it), where reprojected
+  // history smears and its clamp leaves blocks; the far part, beyond it, reprojects well.
+  // 0: no split, no pass, no image. Turning on or off resets the history.
+  float nearFieldMetres = 0.0f;                // [0, 2000]
   float historyResetDistanceMetres = 2000.0f;  // [1, 1e6] camera move in one frame that resets
   float historyResetAngleDegrees = 30.0f;      // [0.1, 180] camera turn in one frame that resets
   float relightResetDegrees = 2.0f;            // [0.01, 180] sun turn in one frame that resets

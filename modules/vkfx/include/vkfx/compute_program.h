@@ -18,7 +18,7 @@ namespace vkfx {
 // Specialization constant values (constant ids 0..count-1); fixed size so looking up a
 // variant every frame allocates nothing.
 struct SpecializationKey {
-  std::array<std::uint32_t, 12> values{};
+  std::array<std::uint32_t, 16> values{};
   std::uint32_t count = 0;
   auto operator<=>(const SpecializationKey&) const = default;
 };

@@ -7,6 +7,7 @@
 #include <glm/gtc/constants.hpp>
 
 #include "cloud_march.h"
+#include "cloud_temporal.h"
 #include "cpu_reference.h"
 #include "uniforms.h"
 
@@ -151,6 +152,51 @@ TEST(CloudModelCpu, NearTheCameraStepsComeOnTopOfTheBudget) {
     EXPECT_EQ(r.viewSamples, inside ? 8.0f + 9.0f : 8.0f) << "altitude " << altitude;
     EXPECT_NEAR(r.transmittance, std::exp(-1.0), 1e-4) << "altitude " << altitude;
   }
+}
+
+// The near/far split (Settings::nearFieldMetres): the near field's pass marches the ray up to
+// the split, the tiles' march from it on, and the one laid over the other (layNearOverFar(), as
+// upsample.comp does) is the whole ray: inside a homogeneous slab, Beer-Lambert over each part
+// and over the whole, and the whole march's radiance.
+TEST(CloudModelCpu, TheNearFieldLaidOverTheFarPartIsTheWholeRay) {
+  const VkExtent2D extent{1, 1};
+  const double altitude = 2500.0;
+  clouds::Settings s = slabSettings(1.0f, 20.0f);
+  CloudUniforms u = uniformsFor(s, altitude, 30.0, extent);
+  const vec3 dir = pixelRayDirection(vec2(0.5f, 0.5f), vec2(1.0f, 1.0f), u);
+  const vec2 segment = layerSegment(float(altitude), dir.y, u);
+  const double path = double(segment.y) - double(segment.x);
+  ASSERT_GT(path, 1000.0);
+  s.extinctionPerMetre = static_cast<float>(2.0 / path);  // optical depth 2 along the ray
+  u = uniformsFor(s, altitude, 30.0, extent);
+  u.flags |= kFlagHomogeneous;
+  MarchOptions options{};
+  options.lightSteps = 4;
+  const MarchResult whole = marchClouds(dir, kInfiniteDistance, 0.5f, vec3(0.5f), u, options);
+
+  const float split = 200.0f;
+  u.nearFieldMetres = split;
+  const MarchResult far = marchClouds(dir, kInfiniteDistance, 0.5f, vec3(0.5f), u, options);
+  options.nearField = 1u;
+  const MarchResult near = marchClouds(dir, kInfiniteDistance, 0.5f, vec3(0.5f), u, options);
+  const double sigma = s.extinctionPerMetre;
+  EXPECT_NEAR(near.transmittance, std::exp(-sigma * split), 1e-4);
+  EXPECT_NEAR(far.transmittance, std::exp(-sigma * (path - split)), 1e-4);
+  EXPECT_GE(far.frontDepth, split);
+  EXPECT_LE(near.weightedDepth, split);
+
+  vec4 laid(far.radiance, far.transmittance);
+  vec2 laidDepth(far.frontDepth, far.weightedDepth);
+  layNearOverFar(vec4(near.radiance, near.transmittance), vec2(near.frontDepth, near.weightedDepth),
+                 laid, laidDepth);
+  EXPECT_NEAR(laid.a, std::exp(-2.0), 1e-4);
+  EXPECT_NEAR(laid.a, whole.transmittance, 1e-4);
+  ASSERT_GT(whole.radiance.g, 0.0f);
+  for (int c = 0; c < 3; ++c) {
+    EXPECT_NEAR(laid[c], whole.radiance[c], 0.01 * whole.radiance[c]) << "channel " << c;
+  }
+  EXPECT_FLOAT_EQ(laidDepth.x, near.frontDepth);
+  EXPECT_NEAR(laidDepth.y, whole.weightedDepth, 0.01 * whole.weightedDepth);
 }
 
 // Single scattering from a homogeneous slab seen straight up with the sun at elevation e:

@@ -408,6 +408,54 @@ TEST_F(CloudTemporal, MovingInsideTheLayerTheHistoryIsReprojected) {
   EXPECT_GT(reprojected, alone + 2.0);
 }
 
+// The near field (Settings::nearFieldMetres 200 at High) flying through the layer where it is
+// dense (coverage 0.7): every trace pixel marches the first 200 m of its ray each frame and the
+// tiles march the rest, laid over it. Against the same flight with one march, the clouds cover
+// as much of the screen (the near part is laid over the far one: left out, the cloud within
+// 200 m goes missing), and the frames are more accurate: measured 42.9 dB against 41.6. (Where
+// the layer is sparse, coverage 0.5, with little cloud within 200 m, 33.2 against 33.9: the one
+// march's output-resolution history keeps detail that the near field's trace-resolution
+// resolve does not.)
+TEST_F(CloudTemporal, FlyingThroughTheLayerTheNearFieldIsMarchedApart) {
+  clouds::Settings dense;
+  dense.coverage = 0.7f;
+  clouds::Settings oneMarch = clouds::settingsFor(clouds::Quality::High, dense);
+  ASSERT_EQ(oneMarch.nearFieldMetres, 0.0f) << "no preset splits";
+  clouds::Settings high = oneMarch;
+  high.nearFieldMetres = 200.0f;
+  CloudView view = insideTheLayerView();
+  auto split = renderer();
+  auto whole = renderer();
+  clouds::tools::CloudFrame withNearField, withoutNearField;
+  for (int frame = 0; frame < 24; ++frame) {
+    view.position.z -= 5.0;
+    withNearField = split->render(view, high, kExtent);
+    const clouds::FrameReport report = split->context().lastFrameReport();
+    ASSERT_TRUE(report.nearField) << "frame " << frame;
+    ASSERT_EQ(report.historyUsed, frame > 0) << "frame " << frame << ": " << report.resetReason;
+    const clouds::WorkCounters work = split->lastWorkCounters();
+    ASSERT_EQ(work.nearFieldRays,
+              std::uint64_t(report.traceExtent.width) * report.traceExtent.height)
+        << "every trace pixel, every frame";
+    ASSERT_TRUE(allValid(withNearField)) << "frame " << frame;
+    withoutNearField = whole->render(view, oneMarch, kExtent);
+    ASSERT_FALSE(whole->context().lastFrameReport().nearField);
+    ASSERT_EQ(whole->lastWorkCounters().nearFieldRays, 0u);
+  }
+  const clouds::tools::CloudFrame reference = renderer()->renderAveraged(
+      view, clouds::settingsFor(clouds::Quality::Reference, dense), kExtent, 16);
+  const double splitPsnr = psnrAgainst(withNearField, reference, view);
+  const double wholePsnr = psnrAgainst(withoutNearField, reference, view);
+  const double splitCover = meanOpacity(withNearField);
+  const double wholeCover = meanOpacity(withoutNearField);
+  std::printf(
+      "flying through the layer: %.2f dB with the near field, %.2f with one march; "
+      "cover %.3f against %.3f\n",
+      splitPsnr, wholePsnr, splitCover, wholeCover);
+  EXPECT_NEAR(splitCover, wholeCover, 0.05 * wholeCover);
+  EXPECT_GT(splitPsnr, wholePsnr + 0.5);
+}
+
 // A turning camera (0.13 degrees a frame, a sixth of a trace pixel at 160x90) reads its history
 // a fraction of a pixel off at every frame, up to 16 times between refreshes: it loses some
 // accuracy against a camera held still (whose history averages more rays), but resampled

@@ -238,6 +238,51 @@ TEST(TemporalState, InsideTheLayerTheHistoryIsKeptAndAMovingCameraRefreshesMore)
   EXPECT_EQ(left.tileSize, 4u);
 }
 
+// The near field (Settings::nearFieldMetres) is marched apart while the camera is within that
+// distance of the layer or of a hero cloud's box, and not elsewhere; its uniform says where the
+// split lies (0: none). The history holds the far part only while it is on, so turning it on or
+// off drops the history.
+TEST(TemporalState, TheNearFieldIsSplitOffOnlyNearTheClouds) {
+  clouds::Settings s;
+  s.nearFieldMetres = 200.0f;
+  TemporalState state;
+  clouds::FrameInputs in = projectedGroundCamera();  // 300 m below the layer
+  const auto plan = [&](double altitude, bool nearHeroCloud) {
+    in.cameraPosition.y = altitude;
+    const TemporalFrame frame = state.plan(in, s, kTrace, false, nearHeroCloud);
+    state.commit(frame, in, s, kTrace);
+    return frame;
+  };
+  const auto splitAt = [&](const TemporalFrame& frame) {
+    clouds::detail::UniformContext context;
+    context.traceExtent = kTrace;
+    context.fullExtent = kTrace;
+    context.temporal = frame;
+    return clouds::detail::buildUniforms(in, s, context).nearFieldMetres;
+  };
+  plan(1200.0, false);
+  const TemporalFrame away = plan(1200.0, false);
+  EXPECT_FALSE(away.nearField);
+  EXPECT_TRUE(away.useHistory) << away.resetReason;
+  EXPECT_EQ(splitAt(away), 0.0f);
+  const TemporalFrame approaching = plan(1350.0, false);  // 150 m below the base
+  EXPECT_TRUE(approaching.nearField);
+  EXPECT_EQ(std::string(approaching.resetReason), "near field on");
+  EXPECT_EQ(splitAt(approaching), 200.0f);
+  const TemporalFrame inside = plan(2500.0, false);
+  EXPECT_TRUE(inside.nearField);
+  EXPECT_TRUE(inside.useHistory) << inside.resetReason;
+  const TemporalFrame byAHeroCloud = plan(1200.0, true);
+  EXPECT_TRUE(byAHeroCloud.nearField);
+  EXPECT_TRUE(byAHeroCloud.useHistory) << byAHeroCloud.resetReason;
+  const TemporalFrame leaving = plan(1200.0, false);
+  EXPECT_FALSE(leaving.nearField);
+  EXPECT_EQ(std::string(leaving.resetReason), "near field off");
+  s.nearFieldMetres = 0.0f;  // no split at all, even inside the layer
+  plan(2500.0, false);
+  EXPECT_FALSE(plan(2500.0, true).nearField);
+}
+
 // In a hero cloud's box, well away from the layer, the same: a moving camera refreshes more.
 TEST(TemporalState, MovingInAHeroCloudRefreshesMoreToo) {
   const clouds::Settings s;

@@ -48,7 +48,7 @@ const std::map<std::string, std::size_t> kCppOffsets = {FIELD(inverseProjection)
                                                         FIELD(curlStrengthMetres),
                                                         FIELD(windDirection),
                                                         FIELD(skewMetres),
-                                                        FIELD(padding2),
+                                                        FIELD(nearFieldMetres),
                                                         FIELD(fineCellMetres),
                                                         FIELD(coarseCellMetres),
                                                         FIELD(padding3),
