@@ -597,11 +597,11 @@ TEST(HeadlessCapture, HeldInsideACloudTheGroundShowsNoTiles) {
 }
 
 // The same with the near/far split (clouds.nearFieldMetres 200): the cloud within 200 m is
-// marched at every trace pixel every frame and resolved with its own 3 x 3 box, so the tiles'
-// clamp no longer shows in it. Measured 1.24 against the one march's 1.54 (where 1 is none);
-// 1.31 without the resolve's history (each frame's near field alone), 1.38 without the near
-// field laid over the far part. What is left is mostly a pattern of every other pixel along x
-// (the bilinear upsample of the near field's per-pixel noise) and the far part's tiles.
+// marched at every pixel of its own half-trace-resolution image every frame and resolved with
+// its own 3 x 3 box, so the tiles' clamp no longer shows in it. Measured 1.30 against the one
+// march's 1.54 (where 1 is none; 1.38 with the near field marched but not laid over the far
+// part). What is left is the far part's tiles and the pattern of the near field's bilinear
+// upsample of its per-pixel noise.
 TEST(HeadlessCapture, HeldInsideACloudTheNearFieldShowsFewerTiles) {
   const fs::path dir = freshDir("inside_a_cloud_held_near_field");
   ASSERT_EQ(
@@ -612,7 +612,7 @@ TEST(HeadlessCapture, HeldInsideACloudTheNearFieldShowsFewerTiles) {
       0);
   const double blocks = blockiness(engine::assets::readImage(dir / "inside_a_cloud.png"), 8);
   std::printf("held inside a cloud with the near field: blockiness %.2f\n", blocks);
-  EXPECT_LT(blocks, 1.28);
+  EXPECT_LT(blocks, 1.34);
 }
 
 TEST(HeadlessCapture, FliesOverAUserSuppliedTerrain) {

@@ -188,9 +188,15 @@ void marchRay(uvec2 pixel, vec2 centre, float startOffset, uvec2 slot) {
 // the golden ratio moves them from frame to frame.
 void marchNearField() {
   const uvec2 pixel = gl_GlobalInvocationID.xy;
-  if (any(greaterThanEqual(pixel, u.traceExtent))) return;
-  const vec3 direction = pixelRayDirection(vec2(pixel) + 0.5f, vec2(u.traceExtent), u);
-  const float distance = imageLoad(sceneDistance, ivec2(pixel)).r;
+  if (any(greaterThanEqual(pixel, u.nearFieldExtent))) return;
+  const vec3 direction = pixelRayDirection(vec2(pixel) + 0.5f, vec2(u.nearFieldExtent), u);
+  // The nearest geometry of the 2 x 2 trace pixels it covers (the upsample hides what lies
+  // behind each output pixel's own).
+  float distance = kInfiniteDistance;
+  for (int t = 0; t < 4; ++t) {
+    const ivec2 trace = min(ivec2(pixel * 2u) + ivec2(t & 1, t >> 1), ivec2(u.traceExtent) - 1);
+    distance = min(distance, imageLoad(sceneDistance, trace).r);
+  }
   const float gradientNoise =
       fract(52.9829189f * fract(dot(vec2(pixel), vec2(0.06711056f, 0.00583715f))));
   const float jitter =

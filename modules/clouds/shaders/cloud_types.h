@@ -280,8 +280,7 @@ struct CloudUniforms {
   float nearFieldMetres;
   float fineCellMetres;    // empty-space skipping: side of a fine weather-maxima cell
   float coarseCellMetres;  //   and of a coarse one
-  float padding3;
-  float padding4;
+  uvec2 nearFieldExtent;   // px: the near field's images (nearFieldExtentFor())
 
   // Density model.
   float extinctionPerMetre;  // at density 1, times Settings::densityMultiplier

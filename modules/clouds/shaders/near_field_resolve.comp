@@ -30,7 +30,7 @@ layout(binding = kNearResolveOut, rgba32ui) uniform writeonly uimage2D resolved;
 // the last four frames (the clamp, not the weight, bounds the lag).
 const float kNearFreshWeight = 0.25f;
 
-ivec2 clampPixel(ivec2 p) { return clamp(p, ivec2(0), ivec2(u.traceExtent) - 1); }
+ivec2 clampPixel(ivec2 p) { return clamp(p, ivec2(0), ivec2(u.nearFieldExtent) - 1); }
 
 // Last frame's resolved near field at `position` (trace pixels), bilinear; its depths at the
 // nearest texel (a blend of two clouds' depths is neither's).
@@ -53,7 +53,7 @@ vec4 historyAt(vec2 position, out vec2 depth) {
 void main() {
   loadFrameUniforms();
   const uvec2 pixel = gl_GlobalInvocationID.xy;
-  if (any(greaterThanEqual(pixel, u.traceExtent))) return;
+  if (any(greaterThanEqual(pixel, u.nearFieldExtent))) return;
   const uvec4 own = imageLoad(fresh, ivec2(pixel));
   const vec4 current = unpackCloudRadiance(own);
   const vec2 currentDepth = unpackCloudDepth(own);
@@ -73,8 +73,8 @@ void main() {
     // the split's distance stands in for the depth.
     const vec2 depth = currentDepth.y > 0.0f ? currentDepth : vec2(u.nearFieldMetres);
     const Reprojection reprojected =
-        reprojectPixel(viewRayDirection(vec2(pixel) + 0.5f, vec2(u.traceExtent), u), depth,
-                       vec2(u.traceExtent), u);
+        reprojectPixel(viewRayDirection(vec2(pixel) + 0.5f, vec2(u.nearFieldExtent), u), depth,
+                       vec2(u.nearFieldExtent), u);
     vec2 historyDepth;
     const vec4 previous = historyAt(reprojected.position, historyDepth);
     if (reprojected.onScreen && finiteVec4(previous) && !any(isnan(historyDepth))) {

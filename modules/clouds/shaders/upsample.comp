@@ -155,24 +155,24 @@ bool hitsPixel(vec2 trace, vec2 scale, uvec2 pixel) {
 
 // Tap `tap` (0-3) of the bilinear filter over the trace pixels around output pixel `pixel`:
 // its trace pixel, and its weight.
-ivec2 bilinearTap(uvec2 pixel, vec2 scale, int tap, out float weight) {
-  const vec2 p = (vec2(pixel) + 0.5f) * scale - 0.5f;
+ivec2 bilinearTap(uvec2 pixel, uvec2 extent, int tap, out float weight) {
+  const vec2 p = (vec2(pixel) + 0.5f) * vec2(extent) / vec2(u.outputExtent) - 0.5f;
   const vec2 f = p - floor(p);
   const ivec2 offset = ivec2(tap & 1, tap >> 1);
   weight = (offset.x == 1 ? f.x : 1.0f - f.x) * (offset.y == 1 ? f.y : 1.0f - f.y);
-  return clamp(ivec2(floor(p)) + offset, ivec2(0), ivec2(u.traceExtent) - 1);
+  return clamp(ivec2(floor(p)) + offset, ivec2(0), ivec2(extent) - 1);
 }
 
 // The depth-aware bilinear estimate from the four trace pixels around this one.
-void spatialEstimate(uvec2 pixel, float scene, vec2 scale, out vec4 radiance, out vec2 depth,
-                     out vec4 lo, out vec4 hi) {
+void spatialEstimate(uvec2 pixel, float scene, out vec4 radiance, out vec2 depth, out vec4 lo,
+                     out vec4 hi) {
   radiance = vec4(0.0f);
   lo = vec4(1e30f);
   hi = vec4(-1e30f);
   DepthBlend blend = depthBlendStart();
   for (int tap = 0; tap < 4; ++tap) {
     float w;
-    const ivec2 q = bilinearTap(pixel, scale, tap, w);
+    const ivec2 q = bilinearTap(pixel, u.traceExtent, tap, w);
     const uvec4 packed = imageLoad(traceSamples, q);
     vec4 r = unpackCloudRadiance(packed);
     vec2 d = unpackCloudDepth(packed);
@@ -187,13 +187,13 @@ void spatialEstimate(uvec2 pixel, float scene, vec2 scale, out vec4 radiance, ou
 
 // The near field's clouds in front of this frame's far part (`radiance`, `depth`), the same
 // depth-aware bilinear estimate from its trace pixels; nothing without a near field.
-void layNearField(uvec2 pixel, float scene, vec2 scale, inout vec4 radiance, inout vec2 depth) {
+void layNearField(uvec2 pixel, float scene, inout vec4 radiance, inout vec2 depth) {
   if (kNearField == 0u) return;
   vec4 near = vec4(0.0f);
   DepthBlend blend = depthBlendStart();
   for (int tap = 0; tap < 4; ++tap) {
     float w;
-    const ivec2 q = bilinearTap(pixel, scale, tap, w);
+    const ivec2 q = bilinearTap(pixel, u.nearFieldExtent, tap, w);
     const uvec4 packed = imageLoad(nearField, q);
     vec4 r = unpackCloudRadiance(packed);
     vec2 d = unpackCloudDepth(packed);
@@ -215,9 +215,9 @@ void main() {
   // The spatial estimate, and the range of the trace pixels it comes from.
   vec4 spatial, lo, hi;
   vec2 spatialDepth;
-  spatialEstimate(pixel, scene, scale, spatial, spatialDepth, lo, hi);
+  spatialEstimate(pixel, scene, spatial, spatialDepth, lo, hi);
   if (kTemporalUpsampling == 0u) {
-    layNearField(pixel, scene, scale, spatial, spatialDepth);
+    layNearField(pixel, scene, spatial, spatialDepth);
     imageStore(outRadiance, ivec2(pixel), outputRadiance(pixel, spatial, spatialDepth, scene));
     if (kDepthOutput != 0u) imageStore(outDepth, ivec2(pixel), vec4(spatialDepth, 0.0f, 0.0f));
     return;
@@ -323,7 +323,7 @@ void main() {
   const float ownWeighted = spatialDepth.y > 0.0f ? spatialDepth.y : ownFront;
   depthBlendAdd(blend, trust, own.a, vec2(ownFront, ownWeighted));
   vec2 depth = depthBlendResult(blend);
-  layNearField(pixel, scene, scale, radiance, depth);
+  layNearField(pixel, scene, radiance, depth);
   // Nothing moved (kOutputHistory 1): the history is updated in place (TemporalState), and
   // only pixels with a fresh sample (1 in 64 at High) pack and store, in a loop that rows of 8
   // without one skip (7 in 8). The others would store the bits they read, or, where this

@@ -168,7 +168,7 @@ detail::ImageSizes imageSizesFor(const Settings& settings, VkExtent2D renderExte
           godRays,
           settings.lightningFlashes > 0 ? trace : VkExtent2D{0, 0},
           detail::writesCloudDepth(settings) ? renderExtent : VkExtent2D{0, 0},
-          settings.nearFieldMetres > 0.0f ? trace : VkExtent2D{0, 0}};
+          settings.nearFieldMetres > 0.0f ? detail::nearFieldExtentFor(trace) : VkExtent2D{0, 0}};
 }
 
 VkDeviceSize edgeRayListBytesFor(const Settings& settings, VkExtent2D renderExtent) {

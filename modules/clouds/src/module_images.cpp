@@ -128,6 +128,14 @@ bool ModuleImages::grow(const ImageSizes& sizes, std::optional<std::uint64_t> la
     const VkExtent3D e = extent3(grown(depth, sizes.depth));
     replace(depth, make(VK_IMAGE_TYPE_2D, kDepthOutputFormat, e, kOutput, "cloud depth"), lastUse);
   }
+  // A ping-pong pair of histories, remade together.
+  const auto replacePair = [&](std::array<OwnedImage, 2>& pair, VkFormat format, VkExtent3D e,
+                               const std::string& name) {
+    for (std::uint32_t i = 0; i < 2; ++i) {
+      replace(pair[i], make(VK_IMAGE_TYPE_2D, format, e, kHistory, name + std::to_string(i)),
+              lastUse);
+    }
+  };
   const bool traceFits = holds(sceneDistance, sizes.trace) && holds(traceSamples, sizes.trace) &&
                          holds(history[0], sizes.trace) && holds(history[1], sizes.trace);
   if (!traceFits) {
@@ -137,23 +145,23 @@ bool ModuleImages::grow(const ImageSizes& sizes, std::optional<std::uint64_t> la
             lastUse);
     replace(traceSamples,
             make(VK_IMAGE_TYPE_2D, kSampleFormat, e, kStorage, "marched samples (trace)"), lastUse);
-    for (std::uint32_t i = 0; i < 2; ++i) {
-      replace(history[i],
-              make(VK_IMAGE_TYPE_2D, kSampleFormat, e, kHistory, "history " + std::to_string(i)),
-              lastUse);
-    }
+    replacePair(history, kSampleFormat, e, "history ");
     historyLost = true;
   }
   const bool upsamplingFits =
       holds(outputHistory[0], sizes.output) && holds(outputHistory[1], sizes.output);
   if (sizes.upsampling && !upsamplingFits) {
-    const VkExtent3D e = extent3(grown(outputHistory[0], sizes.output));
-    for (std::uint32_t i = 0; i < 2; ++i) {
-      replace(outputHistory[i],
-              make(VK_IMAGE_TYPE_2D, kOutputHistoryFormat, e, kHistory,
-                   "output history " + std::to_string(i)),
-              lastUse);
-    }
+    replacePair(outputHistory, kOutputHistoryFormat, extent3(grown(outputHistory[0], sizes.output)),
+                "output history ");
+    historyLost = true;
+  }
+  const bool nearFieldFits = holds(nearSamples, sizes.nearField) &&
+                             holds(nearHistory[0], sizes.nearField) &&
+                             holds(nearHistory[1], sizes.nearField);
+  if (sizes.nearField.width > 0 && !nearFieldFits) {
+    const VkExtent3D e = extent3(grown(nearSamples, sizes.nearField));
+    replace(nearSamples, make(VK_IMAGE_TYPE_2D, kSampleFormat, e, kStorage, "near field"), lastUse);
+    replacePair(nearHistory, kSampleFormat, e, "near field history ");
     historyLost = true;
   }
   if (sizes.lightning.width > 0 && !holds(lightningGlow, sizes.lightning)) {
@@ -163,21 +171,6 @@ bool ModuleImages::grow(const ImageSizes& sizes, std::optional<std::uint64_t> la
   }
   // Exactly the size wanted (read with samplers, whose uv spans the whole image); small, so
   // remade with the render extent.
-  const bool nearFieldFits = holds(nearSamples, sizes.nearField) &&
-                             holds(nearHistory[0], sizes.nearField) &&
-                             holds(nearHistory[1], sizes.nearField);
-  if (sizes.nearField.width > 0 && !nearFieldFits) {
-    const VkExtent3D e = extent3(grown(nearSamples, sizes.nearField));
-    replace(nearSamples, make(VK_IMAGE_TYPE_2D, kSampleFormat, e, kStorage, "near field (trace)"),
-            lastUse);
-    for (std::uint32_t i = 0; i < 2; ++i) {
-      replace(nearHistory[i],
-              make(VK_IMAGE_TYPE_2D, kSampleFormat, e, kHistory,
-                   "near field history " + std::to_string(i)),
-              lastUse);
-    }
-    historyLost = true;
-  }
   const bool godRaysFit = fitsExactly(godRayOcclusion, sizes.godRays) &&
                           fitsExactly(godRayMask, sizes.godRays) &&
                           fitsExactly(godRayLight, sizes.godRays);

@@ -435,12 +435,12 @@ void Context::Impl::recordNearField(VkCommandBuffer cmd, const Settings& setting
   // One invocation per trace pixel, every frame; then their resolve with the history.
   const VkPipeline nearField = programs_[Program::March].find(detail::marchKey(
       settings, info_.workCounters, terrainShadow, shader::kEdgeRaysFind, heroClouds, true));
-  bindAndDispatch(cmd, Program::March, nearField, slot.march, traceExtent.width,
-                  traceExtent.height);
+  const VkExtent2D extent = detail::nearFieldExtentFor(traceExtent);
+  bindAndDispatch(cmd, Program::March, nearField, slot.march, extent.width, extent.height);
   detail::memoryBarrier(device_, cmd, kCompute, kStorageWrite, kCompute, kStorageRead);
   bindAndDispatch(cmd, Program::NearResolve,
                   programs_[Program::NearResolve].find(detail::nearResolveKey(history)),
-                  slot.nearResolve, traceExtent.width, traceExtent.height);
+                  slot.nearResolve, extent.width, extent.height);
   detail::memoryBarrier(device_, cmd, kCompute, kStorageWrite, kCompute, kStorageRead);
   endPass(cmd, detail::Pass::NearField);
   if (info_.workCounters) makeWorkCountersReadable(device_, cmd);

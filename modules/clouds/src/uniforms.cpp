@@ -296,6 +296,8 @@ shader::CloudUniforms buildUniforms(const FrameInputs& in, const Settings& s,
   setMarch(u, s, context);
   setTiles(u, context);
   u.nearFieldMetres = context.temporal.nearField ? s.nearFieldMetres : 0.0f;
+  const VkExtent2D nearField = nearFieldExtentFor(context.traceExtent);
+  u.nearFieldExtent = glm::uvec2(nearField.width, nearField.height);
   setReprojection(u, s, context.temporal);
   setHistoryBlend(u, s, context.temporal);
   const RefreshRound round = refreshRound(s, context.temporal);
@@ -339,6 +341,10 @@ VkExtent2D traceExtentFor(VkExtent2D full, float traceScale) {
     return std::max(1u, static_cast<std::uint32_t>(std::ceil(double(v) * double(traceScale))));
   };
   return {scaled(full.width), scaled(full.height)};
+}
+
+VkExtent2D nearFieldExtentFor(VkExtent2D trace) {
+  return {(trace.width + 1) / 2, (trace.height + 1) / 2};
 }
 
 }  // namespace clouds::detail

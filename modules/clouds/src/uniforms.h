@@ -44,6 +44,10 @@ VkDeviceSize edgeRayListBytes(VkExtent2D traceExtent);
 
 // The trace resolution for an output extent: ceil(extent x scale), at least 1.
 VkExtent2D traceExtentFor(VkExtent2D full, float traceScale);
+// The near field's resolution (Settings::nearFieldMetres): half the trace's per axis, rounded
+// up (Nubis³ marches the near part at half the far part's resolution: close by, a cloud's
+// features cover many pixels).
+VkExtent2D nearFieldExtentFor(VkExtent2D trace);
 
 // x modulo tile into [0, tile).
 double wrapToTile(double x, double tile);

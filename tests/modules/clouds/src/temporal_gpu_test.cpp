@@ -409,13 +409,15 @@ TEST_F(CloudTemporal, MovingInsideTheLayerTheHistoryIsReprojected) {
 }
 
 // The near field (Settings::nearFieldMetres 200 at High) flying through the layer where it is
-// dense (coverage 0.7): every trace pixel marches the first 200 m of its ray each frame and the
-// tiles march the rest, laid over it. Against the same flight with one march, the clouds cover
-// as much of the screen (the near part is laid over the far one: left out, the cloud within
-// 200 m goes missing), and the frames are more accurate: measured 42.9 dB against 41.6. (Where
-// the layer is sparse, coverage 0.5, with little cloud within 200 m, 33.2 against 33.9: the one
-// march's output-resolution history keeps detail that the near field's trace-resolution
-// resolve does not.)
+// dense (coverage 0.7): every pixel of the near field's image (half the trace's resolution)
+// marches the first 200 m of its ray each frame and the tiles march the rest, laid over it.
+// Against the same flight with one march, the clouds cover as much of the screen (the near
+// part is laid over the far one: left out, the cloud within 200 m goes missing), and the
+// frames are more accurate: measured 42.9 dB against 41.6 (42.6 without the resolve's history,
+// each frame's near field alone; 39.6 with the near field marched but not laid over). Where the
+// layer is sparse (coverage 0.5), with next to no cloud within 200 m, 33.2 against 33.9, the
+// same with the near field not laid over: the far part's reconstruction loses it, not yet
+// understood.
 TEST_F(CloudTemporal, FlyingThroughTheLayerTheNearFieldIsMarchedApart) {
   clouds::Settings dense;
   dense.coverage = 0.7f;
@@ -434,9 +436,9 @@ TEST_F(CloudTemporal, FlyingThroughTheLayerTheNearFieldIsMarchedApart) {
     ASSERT_TRUE(report.nearField) << "frame " << frame;
     ASSERT_EQ(report.historyUsed, frame > 0) << "frame " << frame << ": " << report.resetReason;
     const clouds::WorkCounters work = split->lastWorkCounters();
-    ASSERT_EQ(work.nearFieldRays,
-              std::uint64_t(report.traceExtent.width) * report.traceExtent.height)
-        << "every trace pixel, every frame";
+    const std::uint64_t nearPixels =
+        std::uint64_t(report.traceExtent.width + 1) / 2 * ((report.traceExtent.height + 1) / 2);
+    ASSERT_EQ(work.nearFieldRays, nearPixels) << "every pixel at half the trace's, every frame";
     ASSERT_TRUE(allValid(withNearField)) << "frame " << frame;
     withoutNearField = whole->render(view, oneMarch, kExtent);
     ASSERT_FALSE(whole->context().lastFrameReport().nearField);
@@ -453,7 +455,7 @@ TEST_F(CloudTemporal, FlyingThroughTheLayerTheNearFieldIsMarchedApart) {
       "cover %.3f against %.3f\n",
       splitPsnr, wholePsnr, splitCover, wholeCover);
   EXPECT_NEAR(splitCover, wholeCover, 0.05 * wholeCover);
-  EXPECT_GT(splitPsnr, wholePsnr + 0.5);
+  EXPECT_GT(splitPsnr, wholePsnr + 1.15);
 }
 
 // A turning camera (0.13 degrees a frame, a sixth of a trace pixel at 160x90) reads its history
