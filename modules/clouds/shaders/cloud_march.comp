@@ -22,8 +22,9 @@
 // its lanes' whole group of 8 wherever one lane takes it. Gathered in each workgroup behind a
 // barrier, the barrier alone cost the march 7 to 11%.)
 // The near field (kSpecNearField; Settings::nearFieldMetres, Nubis³'s near/far split): a third
-// dispatch marches every trace pixel up to CloudUniforms.nearFieldMetres into its own image (18),
-// while the tiles march from there on; upsample.comp lays the one over the other.
+// dispatch marches every pixel of the near field's image (CloudUniforms.nearFieldExtent, half
+// the trace's resolution) up to CloudUniforms.nearFieldMetres (18), while the tiles march from
+// there on; near_field_resolve.comp and upsample.comp lay the one over the other.
 // References: Schneider & Vos 2017 (Nubis); Schneider 2022 (Nubis Evolved); Hillaire 2016.
 #extension GL_GOOGLE_include_directive : require
 
@@ -181,11 +182,11 @@ void marchRay(uvec2 pixel, vec2 centre, float startOffset, uvec2 slot) {
   countWork(result, kCounterTracedPixels);
 }
 
-// The near field's pass: every trace pixel's ray through its centre, up to the split (and the
-// scene). Each frame stands alone (no history to smear or clamp into blocks), so where its
-// steps start must not repeat across the screen: interleaved gradient noise (Jimenez 2014)
-// gives neighbours different starts without the short period a Bayer pattern would show, and
-// the golden ratio moves them from frame to frame.
+// The near field's pass: every near-field pixel's ray through its centre, up to the split
+// (and the scene). Every pixel is marched every frame and resolved with its own neighbourhood
+// (near_field_resolve.comp), so where its steps start must not repeat across the screen:
+// interleaved gradient noise (Jimenez 2014) gives neighbours different starts without the short
+// period a Bayer pattern would show, and the golden ratio moves them from frame to frame.
 void marchNearField() {
   const uvec2 pixel = gl_GlobalInvocationID.xy;
   if (any(greaterThanEqual(pixel, u.nearFieldExtent))) return;

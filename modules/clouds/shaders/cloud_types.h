@@ -73,7 +73,7 @@ const uint kMarchHeroClouds = 15u;
 const uint kMarchHeroLight = 16u;
 // Their detail noise (kHeroNoiseSize chain, RGBA8); the shape noise stands in without them.
 const uint kMarchHeroNoise = 17u;
-// The near field's samples (kSpecNearField's near pass writes them; RGBA32UI, trace res).
+// The near field's samples (kSpecNearField's pass writes them; RGBA32UI, nearFieldExtent).
 const uint kMarchNearFieldOut = 18u;
 // reconstruct.comp
 const uint kReconstructFresh = 1u;
@@ -82,7 +82,7 @@ const uint kReconstructOut = 3u;
 const uint kReconstructFlashes = 4u;        // LightningUniforms (a stand-in without lightning)
 const uint kReconstructGlow = 5u;           // RGBA16F glow per unit of cloud (lightningFlashes > 0)
 const uint kReconstructSceneDistance = 6u;  // the scene distance image (R32F, trace res)
-// near_field_resolve.comp (after the near field's march; packed samples, trace res).
+// near_field_resolve.comp (after the near field's march; packed samples, nearFieldExtent).
 const uint kNearResolveFresh = 1u;    // this frame's near field
 const uint kNearResolveHistory = 2u;  // last frame's resolved near field
 const uint kNearResolveOut = 3u;      // this frame's resolved near field
@@ -165,8 +165,8 @@ const uint kSpecLightReuse = 8u;          // 0/1: the sun's optical depth on eve
 const uint kSpecEdgeRays = 9u;            // kEdgeRays*: more rays for tiles on silhouettes
 const uint kSpecHeroClouds = 10u;         // kHeroClouds*: hero clouds (FrameInputs::heroClouds)
 const uint kSpecHeroLight = 11u;          // kHeroLight*: how hero clouds shadow themselves
-const uint kSpecNearField = 12u;          // 0/1: the near field's pass (every trace pixel, the
-                                          //   ray up to CloudUniforms.nearFieldMetres)
+const uint kSpecNearField = 12u;          // 0/1: the near field's pass (every pixel of its
+                                          //   image, the ray up to the split)
 const uint kMarchSpecCount = 13u;
 // The variants of kSpecEdgeRays: none; the tiles' march, which lists the edge tiles; the
 // edge rays' march, over that list (an indirect dispatch).

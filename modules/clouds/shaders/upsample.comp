@@ -17,8 +17,8 @@
 //
 // With the near field (kSpecUpsampleNearField: Settings::nearFieldMetres, this frame), the clouds
 // nearer than the split, marched apart every frame, are laid over all of that (layNearOverFar()),
-// bilinear from the trace pixels around like the spatial estimate; the histories keep the far
-// part only.
+// bilinear from the near field's pixels around like the spatial estimate; the histories keep the
+// far part only.
 //
 // With the host's aerial perspective (kSpecAerialPerspective) the output is hazed: hazed().
 // With god rays (kSpecUpsampleGodRays), the sky's pixels then get god_rays.comp's light, as
@@ -29,7 +29,7 @@
 // Inputs: 0 CloudUniforms; 1 reconstructed samples (trace res, packed: cloud_temporal.h);
 // 2 host depth; 5 this frame's marched samples (trace res); 6 last frame's output history;
 // 8 the host's aerial perspective (3D); 9 the god rays' light (a quarter of the output res);
-// 10 the clouds' lightning glow (trace res); 11 the near field's samples (trace res).
+// 10 the clouds' lightning glow (trace res); 11 the resolved near field (nearFieldExtent).
 // Outputs: 3 RGBA16F radiance + transmittance, 4 RG32F depths (output res; only with
 // kSpecUpsampleDepthOutput: Settings::depthOutput, or the bolts' pass reads them); 7 this
 // frame's output history (output res, RG32UI: packOutputHistory()).

@@ -188,7 +188,7 @@ class Context::Impl {
   void recordMarch(VkCommandBuffer cmd, const Settings& settings, std::uint32_t tileSize,
                    VkExtent2D traceExtent, bool terrainShadow, bool edgeRays,
                    std::uint32_t heroClouds, Slot& slot);
-  // The near field's pass (TemporalFrame::nearField): every trace pixel's ray up to the split,
+  // The near field's pass (TemporalFrame::nearField): every near-field pixel's ray to the split,
   // and their resolve with last frame's (`history`: it is usable).
   void recordNearField(VkCommandBuffer cmd, const Settings& settings, VkExtent2D traceExtent,
                        bool terrainShadow, std::uint32_t heroClouds, bool history, Slot& slot);

@@ -91,8 +91,8 @@ class ModuleImages {
   OwnedImage godRayMask;     // its radial blur (Outputs::godRayMask)
   OwnedImage godRayLight;    // what the upsample adds to the sky's pixels
   OwnedImage lightningGlow;  // the clouds' glow per unit of cloud, trace res
-  OwnedImage nearSamples;    // the near field marched apart (packed samples), trace res
-  std::array<OwnedImage, 2> nearHistory;  // the near field resolved, ping-pong, trace res
+  OwnedImage nearSamples;    // the near field marched apart (packed samples), half trace res
+  std::array<OwnedImage, 2> nearHistory;  // the near field resolved, ping-pong, half trace res
 
  private:
   struct Retired {

@@ -339,11 +339,11 @@ struct Settings {
   // frame), and a frame without history is rebuilt by a tent over its rays (reconstruct.comp).
   float insideLayerMarginMetres = 50.0f;  // [0, 5000]; a hero cloud's box's too
   // Near/far split (Nubis³): while the camera is within this distance of the layer or of a
-  // hero cloud's box, the clouds nearer than it are marched apart, every trace pixel every
-  // frame, and laid over the far part, which keeps the sparse refresh and its history. The
-  // near part moves most from frame to frame (parallax, flying through it), where reprojected
-  // history smears and its clamp leaves blocks; the far part, beyond it, reprojects well.
-  // 0: no split, no pass, no image. Turning on or off resets the history.
+  // hero cloud's box, the clouds nearer than it are marched apart, every pixel of an image at
+  // half the trace's resolution every frame, and laid over the far part, which keeps the sparse
+  // refresh and its history. The near part moves most from frame to frame (parallax, flying through
+  // it), where reprojected history smears and its clamp leaves blocks; the far part, beyond it,
+  // reprojects well. 0: no split, no pass, no image. Turning on or off resets the history.
   float nearFieldMetres = 0.0f;                // [0, 2000]
   float historyResetDistanceMetres = 2000.0f;  // [1, 1e6] camera move in one frame that resets
   float historyResetAngleDegrees = 30.0f;      // [0.1, 180] camera turn in one frame that resets
