@@ -584,6 +584,11 @@ double blockiness(const ImageRgba32f& image, std::uint32_t period) {
 // clamped to a box around each pixel's own estimate. Clamped to the range of the fresh
 // samples around it, the same for every pixel of a 4 x 4 tile of the trace, the ground
 // turned into blocks of 8 x 8 pixels of one value each: 2.00 by this measure, against 1.51.
+// High's near/far split (Settings::nearFieldMetres) marches the cloud within 200 m at every
+// pixel of its own image every frame, resolved with each pixel's own 3 x 3 box: 1.30 with it,
+// 1.54 with one march, 1.38 with the near field marched but not laid over the far part. What
+// is left is the far part's tiles and the pattern of the near field's bilinear upsample of its
+// per-pixel noise (the target, 1.1, is not reached).
 TEST(HeadlessCapture, HeldInsideACloudTheGroundShowsNoTiles) {
   const fs::path dir = freshDir("inside_a_cloud_held");
   ASSERT_EQ(runSample("--headless --fixed-dt 0.05 --width 640 --height 360 --quality high "
@@ -593,25 +598,6 @@ TEST(HeadlessCapture, HeldInsideACloudTheGroundShowsNoTiles) {
             0);
   const double blocks = blockiness(engine::assets::readImage(dir / "inside_a_cloud.png"), 8);
   std::printf("held inside a cloud: blockiness %.2f\n", blocks);
-  EXPECT_LT(blocks, 1.75);
-}
-
-// The same with the near/far split (clouds.nearFieldMetres 200): the cloud within 200 m is
-// marched at every pixel of its own half-trace-resolution image every frame and resolved with
-// its own 3 x 3 box, so the tiles' clamp no longer shows in it. Measured 1.30 against the one
-// march's 1.54 (where 1 is none; 1.38 with the near field marched but not laid over the far
-// part). What is left is the far part's tiles and the pattern of the near field's bilinear
-// upsample of its per-pixel noise.
-TEST(HeadlessCapture, HeldInsideACloudTheNearFieldShowsFewerTiles) {
-  const fs::path dir = freshDir("inside_a_cloud_held_near_field");
-  ASSERT_EQ(
-      runSample("--headless --fixed-dt 0.05 --width 640 --height 360 --quality high "
-                "--validation --scene " +
-                scene("default_near_field.json") + " --script " + std::string(SAMPLE_TEST_DIR) +
-                "/scripts/inside_a_cloud_held.json" + " --capture " + dir.string()),
-      0);
-  const double blocks = blockiness(engine::assets::readImage(dir / "inside_a_cloud.png"), 8);
-  std::printf("held inside a cloud with the near field: blockiness %.2f\n", blocks);
   EXPECT_LT(blocks, 1.34);
 }
 

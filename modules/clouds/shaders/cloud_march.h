@@ -471,8 +471,11 @@ FX_INLINE MarchResult marchClouds(vec3 rayDirection, float sceneDistance, float 
   float weightedDepthSum = 0.0f;
   float t = start;  // boundary of the current step; the sample sits at t + jitter * step
   // A ray that starts in a hero cloud's box starts with fine steps: its first coarse sample
-  // would most likely find cloud and be taken again.
-  bool fine = o.cheapSampling == 0u || (heroHit && heroSpan.x <= start);
+  // would most likely find cloud and be taken again. So does the far part of a split ray: one
+  // coarse step (3.3 fine ones at High) from the split would skip thin cloud that the whole
+  // ray, short-stepped near the camera, reached the split finding (flying through sparse layer
+  // at High, 160x90: 33.2 dB starting coarse, 33.9 fine, as one march).
+  bool fine = o.cheapSampling == 0u || (heroHit && heroSpan.x <= start) || from > 0.0f;
   int emptyRun = 0;
   int samples = 0;
   int heroSamples = 0;  // samples inside hero clouds' boxes: a budget of their own

@@ -145,9 +145,6 @@ CloudDescription readClouds(const JsonReader& r, const std::filesystem::path& sc
   // Whether the layer makes god rays (its mask, and the composite's shafts in the haze): off,
   // no pass, mask or pipeline. The quality preset picks the samples.
   if (r.boolean("godRays", false)) s.godRaySamples = 16;
-  // The near/far split (clouds::Settings::nearFieldMetres): the clouds nearer than this marched
-  // apart every frame; 0 (the default) is one march.
-  s.nearFieldMetres = float(r.number("nearFieldMetres", 0.0, 2000.0, s.nearFieldMetres));
   c.noiseSeed = static_cast<std::uint32_t>(r.integer("noiseSeed", 0, 0xffffffffLL, c.noiseSeed));
   if (r.has("weatherMap")) c.weatherMap = resolveFile(r, "weatherMap", sceneDir);
   if (r.has("heroClouds")) {
