@@ -432,7 +432,7 @@ void Context::Impl::recordNearField(VkCommandBuffer cmd, const Settings& setting
                                     VkExtent2D traceExtent, bool terrainShadow,
                                     std::uint32_t heroClouds, bool history, Slot& slot) {
   beginPass(cmd, detail::Pass::NearField, "clouds: near field");
-  // One invocation per trace pixel, every frame; then their resolve with the history.
+  // One invocation per near-field pixel, every frame; then their resolve with the history.
   const VkPipeline nearField = programs_[Program::March].find(detail::marchKey(
       settings, info_.workCounters, terrainShadow, shader::kEdgeRaysFind, heroClouds, true));
   const VkExtent2D extent = detail::nearFieldExtentFor(traceExtent);

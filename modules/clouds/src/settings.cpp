@@ -236,7 +236,7 @@ Settings settingsFor(Quality quality, const Settings& base) {
   s.transmittanceCutoff = 0.01f;
   // The near/far split (nearFieldMetres) is High's and Ultra's, at Nubis³'s 200 m: flying
   // through dense layer at High it is 1.2 dB more accurate than one march, as accurate through
-  // sparse layer, for 7% more frame time inside the layer (docs/how-a-frame-is-made.md). Low and
+  // sparse layer, for 3% more frame time inside the layer (docs/how-a-frame-is-made.md). Low and
   // Medium, whose quarter-resolution trace would leave the near field an eighth of the output's,
   // keep one march.
   constexpr float kNearFieldMetres = 200.0f;
