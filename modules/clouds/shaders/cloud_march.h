@@ -533,6 +533,12 @@ FX_INLINE MarchResult marchClouds(vec3 rayDirection, float sceneDistance, float 
       const float heroStep = max(heroSpan.z * kHeroStepVoxels,
                                  (heroSpan.y - t) / float(max(kMaxHeroSteps - heroSamples, 1)));
       stepLength = min(stepLength, min(heroStep, end - t));
+    } else if (heroHit && t < heroSpan.x) {
+      // A layer step ends at the hero clouds' box: one that ran on into it took a sample of
+      // hero cloud with the layer's step length (a coarse step is 200 m at High), which made
+      // the rays whose jump over an empty cell ended just short of the box opaque too soon:
+      // dark lines down a hero cloud where a cell's edge meets the box's face.
+      stepLength = min(stepLength, heroSpan.x - t);
     }
     const float sampleDistance = t + jitter * stepLength;
     const vec3 flatOffset = rayDirection * sampleDistance;

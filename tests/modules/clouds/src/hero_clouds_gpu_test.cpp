@@ -10,11 +10,14 @@
 #include "cloud_gpu_fixture.h"
 #include "cloud_harness.h"
 #include "cloud_hero.h"
+#include "cloud_march.h"
 #include "clouds/nvdf_build.h"
 #include "context_access.h"
 #include "cpu_reference.h"
 #include "hero_cloud_scenes.h"
 #include "hero_clouds.h"
+#include "synthetic_textures.h"
+#include "uniforms.h"
 
 namespace {
 
@@ -311,6 +314,73 @@ TEST_F(HeroCloudCost, TheSignedDistanceSavesSamplesNotAccuracy) {
       skippedDb, marchedDb, fraction);
   EXPECT_GE(skippedDb, marchedDb - 0.5);
   EXPECT_LT(fraction, 0.5);
+}
+
+// A layer step ends at the hero clouds' box. Rays that cross an empty layer (coverage 0,
+// stepped, not skipped) in its coarse steps reach the cumulus as the rays do that start at its
+// box (the layer put out of their way): the march inside the box is the same, so the cloud is
+// too. (A coarse layer step that ran on into the box took its first sample of hero cloud with
+// the layer's 200 m step: dark lines down a hero cloud, where a jump over an empty cell ended
+// just short of the box.)
+TEST(HeroCloudMarch, ALayerStepEndsAtTheHeroBox) {
+  CloudView view = heroViews()[0].view;  // the cumulus 2.5 km ahead, the camera 2.1 km up
+  view.verticalFovDegrees = 25.0f;       // the rays on the cloud
+  const clouds::HeroCloud cloud = view.heroClouds[0];
+  clouds::tools::CpuTextures textures = test::syntheticTextures();
+  textures.heroes = test::cumulusPlaced(cloud, view.position).heroes;
+  const VkExtent2D extent{48, 27};
+  const auto transmittances = [&](const clouds::Settings& s) {
+    clouds::FrameInputs in;
+    in.view = clouds::tools::viewMatrix(view);
+    in.projection = clouds::tools::projectionMatrix(view, extent);
+    in.cameraPosition = view.position;
+    in.sunDirection = clouds::tools::sunDirection(view);
+    clouds::detail::UniformContext context;
+    context.traceExtent = extent;
+    context.fullExtent = extent;
+    const clouds::shader::CloudUniforms u = clouds::detail::buildUniforms(in, s, context);
+    clouds::shader::MarchOptions options{};
+    options.cheapSampling = 1u;
+    options.lightSteps = 1u;
+    const clouds::tools::CpuHeroScope scope(textures, in.sunDirection);
+    std::vector<float> t;
+    for (unsigned y = 0; y < extent.height; ++y) {
+      for (unsigned x = 0; x < extent.width; ++x) {
+        const glm::vec3 ray = clouds::shader::pixelRayDirection(
+            glm::vec2(x, y) + 0.5f, glm::vec2(extent.width, extent.height), u);
+        for (const float jitter : {0.1f, 0.4f, 0.7f}) {
+          t.push_back(clouds::shader::marchClouds(ray, clouds::shader::kInfiniteDistance, jitter,
+                                                  glm::vec3(0.5f), u, options)
+                          .transmittance);
+        }
+      }
+    }
+    return t;
+  };
+  clouds::Settings crossed = heroOnly();
+  crossed.emptySpaceSkipping = false;
+  crossed.heroDetail = clouds::HeroDetail::Off;
+  crossed.coarseStepFactor = 3.3f;  // High's: 200 m coarse steps
+  ASSERT_LT(crossed.layerBottomMetres, view.position.y);
+  ASSERT_GT(crossed.layerTopMetres, view.position.y + 1000.0);
+  clouds::Settings clear = crossed;
+  clear.layerBottomMetres = 20000.0f;
+  clear.layerTopMetres = 25000.0f;
+  const std::vector<float> through = transmittances(crossed);
+  const std::vector<float> fromTheBox = transmittances(clear);
+  double difference = 0.0;
+  double largest = 0.0;
+  int cloudy = 0;
+  for (std::size_t i = 0; i < through.size(); ++i) {
+    difference += std::abs(through[i] - fromTheBox[i]);
+    largest = std::max(largest, double(std::abs(through[i] - fromTheBox[i])));
+    cloudy += fromTheBox[i] < 0.9f ? 1 : 0;
+  }
+  difference /= double(through.size());
+  std::printf("%d of %zu rays in cloud; transmittance apart %.5f on average, %.4f at most\n",
+              cloudy, through.size(), difference, largest);
+  ASSERT_GT(cloudy, int(through.size() / 10));
+  EXPECT_LT(largest, 1e-3);  // the same march, but for rounding (0.012 stepping into the box)
 }
 
 // A cloud's life (HeroCloud::growth, ::dissipation) on the CPU, with the shared model's own

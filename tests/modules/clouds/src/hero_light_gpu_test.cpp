@@ -27,20 +27,7 @@ glm::vec3 sunAt(float elevationDegrees, float azimuthDegrees) {
   return {std::cos(e) * std::sin(a), std::sin(e), -std::cos(e) * std::cos(a)};
 }
 
-// The test cumulus placed ahead of a camera at the origin (with `cloud`'s life), its light slot
-// assigned, on the CPU.
-clouds::tools::CpuTextures cumulusPlaced(const clouds::HeroCloud& cloud) {
-  const clouds::detail::HeroAtlasLayout& layout = test::cumulusAtlas();
-  const clouds::HeroCloud clouds[] = {cloud};
-  clouds::shader::HeroCloudUniforms block =
-      clouds::detail::heroCloudUniforms(layout.assets, clouds, glm::dvec3(0.0));
-  clouds::detail::HeroLightSlots slots;
-  slots.assign(block, glm::vec3(0.0f, 1.0f, 0.0f));
-  block.count.z = clouds::detail::heroLightSlotExtentCode(layout.assets);
-  clouds::tools::CpuTextures textures;
-  textures.heroes = test::cumulusOnTheCpu(block);
-  return textures;
-}
+using test::cumulusPlaced;
 
 struct LightError {
   double meanTransmittance = 0.0;  // mean |exp(-volume) - exp(-marched)|

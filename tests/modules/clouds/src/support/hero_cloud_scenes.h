@@ -16,6 +16,7 @@
 #include "context_access.h"
 #include "cpu_reference.h"
 #include "hero_clouds.h"
+#include "hero_light_volume.h"
 
 namespace test {
 
@@ -132,6 +133,22 @@ inline clouds::tools::CpuHeroClouds cumulusOnTheCpu(
   heroes.extent = glm::uvec3(layout.extent.width, layout.extent.height, layout.extent.depth);
   heroes.uniforms = uniforms;
   return heroes;
+}
+
+// `cloud` (the cumulus) placed for a camera at `camera`, its light volume's slot assigned, as
+// the CPU reference's textures (no layer's: add them for a march).
+inline clouds::tools::CpuTextures cumulusPlaced(const clouds::HeroCloud& cloud,
+                                                const glm::dvec3& camera = glm::dvec3(0.0)) {
+  const clouds::detail::HeroAtlasLayout& layout = cumulusAtlas();
+  const clouds::HeroCloud clouds[] = {cloud};
+  clouds::shader::HeroCloudUniforms block =
+      clouds::detail::heroCloudUniforms(layout.assets, clouds, camera);
+  clouds::detail::HeroLightSlots slots;
+  slots.assign(block, glm::vec3(0.0f, 1.0f, 0.0f));
+  block.count.z = clouds::detail::heroLightSlotExtentCode(layout.assets);
+  clouds::tools::CpuTextures textures;
+  textures.heroes = cumulusOnTheCpu(block);
+  return textures;
 }
 
 inline clouds::tools::CpuTextures withHeroes(clouds::tools::CpuTextures textures,
