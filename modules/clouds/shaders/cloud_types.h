@@ -130,6 +130,7 @@ const uint kBoltsPieces = 5u;             // LightningBoltsHeader and its words
 const uint kGodRayTraceSamples = 1u;   // the reconstructed trace image (packed)
 const uint kGodRaySceneDistance = 2u;  // the conservative scene distance (trace res)
 const uint kGodRayOcclusionOut = 3u;   // the occlusion image, R32F
+const uint kGodRayNearField = 4u;      // the near field resolved (kSpecGodRayNearField)
 // god_rays.comp
 const uint kGodRayOcclusion = 0u;  // the occlusion image, sampled (linear, clamped)
 const uint kGodRayMaskOut = 1u;    // the mask, R32F
@@ -194,6 +195,9 @@ const uint kUpsampleSpecCount = 7u;
 // lightning_bolts.comp
 const uint kSpecBoltsAerialPerspective = 0u;  // 0/1: haze them (FrameInputs::aerialPerspective)
 const uint kBoltsSpecCount = 1u;
+// god_ray_occlusion.comp
+const uint kSpecGodRayNearField = 0u;  // 0/1: the near field's transmittance hides the sun too
+const uint kGodRayOcclusionSpecCount = 1u;
 // god_rays.comp
 const uint kSpecGodRayLight = 0u;  // kGodRaysMaskHaze or kGodRaysGlow
 const uint kGodRaySpecCount = 1u;

@@ -6,19 +6,24 @@
 // the air towards each pixel shows of the sun's light, before the radial blur. The scene
 // distance is conservative (a trace pixel on a horizon counts as sky), so occluders' edges
 // thin by up to a trace pixel.
+// With the near/far split (kSpecGodRayNearField) the trace image holds the far part of each
+// ray: the transmittance is its times the near field's at the trace pixel (nearest texel), as
+// the upsample lays one over the other.
 // Inputs: 0 CloudUniforms, 1 the reconstructed trace image (packed: cloud_temporal.h), 2 the
-// scene distance (R32F, trace res); push constants GodRayOcclusionConstants. Output: 3 the
-// occlusion image (R32F).
+// scene distance (R32F, trace res), 4 the near field resolved (packed, half trace res); push
+// constants GodRayOcclusionConstants. Output: 3 the occlusion image (R32F).
 #extension GL_GOOGLE_include_directive : require
 #include "cloud_temporal.h"
 
 layout(local_size_x = kWorkgroupSize2D, local_size_y = kWorkgroupSize2D) in;
+layout(constant_id = kSpecGodRayNearField) const uint kNearField = 0u;
 layout(push_constant) uniform Constants { GodRayOcclusionConstants c; };
 #define CLOUDS_FRAME_UNIFORMS_INDEX c.frameUniformsIndex
 #include "frame_uniforms.glsl"
 layout(binding = kGodRayTraceSamples, rgba32ui) uniform readonly uimage2D traceSamples;
 layout(binding = kGodRaySceneDistance, r32f) uniform readonly image2D sceneDistance;
 layout(binding = kGodRayOcclusionOut, r32f) uniform writeonly image2D occlusion;
+layout(binding = kGodRayNearField, rgba32ui) uniform readonly uimage2D nearField;
 
 #include "cloud_march.h"
 
@@ -37,7 +42,13 @@ void main() {
   for (uint y = first.y; y <= last.y; ++y) {
     for (uint x = first.x; x <= last.x; ++x) {
       const bool sky = imageLoad(sceneDistance, ivec2(x, y)).r >= kInfiniteDistance;
-      const float transmittance = unpackCloudRadiance(imageLoad(traceSamples, ivec2(x, y))).a;
+      float transmittance = unpackCloudRadiance(imageLoad(traceSamples, ivec2(x, y))).a;
+      if (kNearField != 0u) {
+        const uvec2 near = min(uvec2((vec2(x, y) + 0.5f) * vec2(u.nearFieldExtent) /
+                                     vec2(u.traceExtent)),
+                               u.nearFieldExtent - 1u);
+        transmittance *= unpackCloudRadiance(imageLoad(nearField, ivec2(near))).a;
+      }
       clear += sky ? transmittance : 0.0f;
       pixels += 1.0f;
     }

@@ -395,7 +395,7 @@ void Context::Impl::dispatch(const FrameInputs& inputs, const Settings& settings
     recordClearSky(cmd, slot);
     outputsHoldClearSky_ = true;
     if (settings.godRaySamples > 0)
-      recordGodRays(cmd, inputs, settings, images_.history[0], false, slot);
+      recordGodRays(cmd, inputs, settings, images_.history[0], VK_NULL_HANDLE, false, slot);
     temporal_.forget("after a clear sky");
     report_ = FrameReport{
         {0, 0}, 0, false, temporal.insideLayer, "clear sky: nothing to march", shadowCascadesMade_};

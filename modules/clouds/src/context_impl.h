@@ -149,8 +149,10 @@ class Context::Impl {
   // record_god_rays.cpp: between the reconstruction and the upsample, which adds their light;
   // with `made` false (nothing marched) only the mask's clear. Returns whether the light was
   // made (the upsample then adds it).
+  // `nearField`: the near field resolved, when the frame has one (VK_NULL_HANDLE: none).
   bool recordGodRays(VkCommandBuffer cmd, const FrameInputs& inputs, const Settings& settings,
-                     const detail::OwnedImage& traceSamples, bool traced, Slot& slot);
+                     const detail::OwnedImage& traceSamples, VkImageView nearField, bool traced,
+                     Slot& slot);
 
   // record_trace.cpp
   // `shadow`: the march's terrain-shadow block, when this frame's march reads it; `heroes`:

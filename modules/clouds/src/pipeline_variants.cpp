@@ -77,6 +77,13 @@ SpecializationKey boltsKey(bool hazed) {
   return key;
 }
 
+SpecializationKey godRayOcclusionKey(bool nearField) {
+  SpecializationKey key;
+  key.values[shader::kSpecGodRayNearField] = nearField ? 1u : 0u;
+  key.count = shader::kGodRayOcclusionSpecCount;
+  return key;
+}
+
 SpecializationKey godRaysKey(std::uint32_t light) {
   SpecializationKey key;
   key.values[shader::kSpecGodRayLight] = light;
@@ -176,7 +183,11 @@ std::vector<std::pair<Program, SpecializationKey>> variantsFor(const Settings& s
   }
   // No god rays, no god-ray pipelines (and the upsample without their light, above).
   if (settings.godRaySamples > 0) {
-    variants.emplace_back(Program::GodRayOcclusion, SpecializationKey{});
+    // With a near field, frames away from the clouds have none.
+    for (bool nearField : {false, true}) {
+      if (nearField && settings.nearFieldMetres == 0.0f) continue;
+      variants.emplace_back(Program::GodRayOcclusion, godRayOcclusionKey(nearField));
+    }
     for (std::uint32_t light : {shader::kGodRaysMaskHaze, shader::kGodRaysGlow}) {
       variants.emplace_back(Program::GodRays, godRaysKey(light));
     }

@@ -38,6 +38,8 @@ bool writesCloudDepth(const Settings& settings);
 // The bolts' pass; `hazed`: the host gave an aerial perspective this frame.
 SpecializationKey boltsKey(bool hazed);
 
+// The god-ray occlusion; `nearField`: the frame has one (TemporalFrame::nearField).
+SpecializationKey godRayOcclusionKey(bool nearField);
 // The god-ray mask and light, `light` shader::kGodRaysMaskHaze or kGodRaysGlow.
 SpecializationKey godRaysKey(std::uint32_t light);
 // The shadow map's (its empty-space skipping follows Settings::emptySpaceSkipping); `heroClouds`:

@@ -1,6 +1,6 @@
 // Recording the god-ray mask (fxcontracts/god_rays.h) between the reconstruction and the upsample:
 // the occlusion image (the reconstructed clouds' transmittance where the scene distance is the
-// sky), then its radial blur towards the sun with the light the upsample adds to the sky's
+// sky, the near field's laid over it when the frame has one), then its radial blur towards the sun with the light the upsample adds to the sky's
 // pixels (a quarter of the resolution holds it: it is smooth but for the mask). With the sun
 // far off screen, behind the camera or set, or nothing marched, only a clear of the mask to 1.
 #include "context_impl.h"
@@ -28,7 +28,7 @@ std::uint32_t groups(std::uint32_t n) {
 
 bool Context::Impl::recordGodRays(VkCommandBuffer cmd, const FrameInputs& inputs,
                                   const Settings& settings, const detail::OwnedImage& traceSamples,
-                                  bool traced, Slot& slot) {
+                                  VkImageView nearField, bool traced, Slot& slot) {
   const auto& fn = device_.fn();
   const detail::ModuleImages& im = images_;
   const VkExtent3D mask = im.godRayMask.extent();
@@ -86,6 +86,9 @@ bool Context::Impl::recordGodRays(VkCommandBuffer cmd, const FrameInputs& inputs
       .storageImage(shader::kGodRayTraceSamples, traceSamples.view())
       .storageImage(shader::kGodRaySceneDistance, im.sceneDistance.view())
       .storageImage(shader::kGodRayOcclusionOut, im.godRayOcclusion.view())
+      // Without a near field the variant reads none: the trace image stands in for it.
+      .storageImage(shader::kGodRayNearField,
+                    nearField != VK_NULL_HANDLE ? nearField : traceSamples.view())
       .commit();
   detail::SetWriter(device_, slot.godRays)
       .sampledImage(shader::kGodRayOcclusion, im.godRayOcclusion.view(),
@@ -102,7 +105,9 @@ bool Context::Impl::recordGodRays(VkCommandBuffer cmd, const FrameInputs& inputs
   shader::GodRayOcclusionConstants occlusion{};
   occlusion.maskExtent = glm::uvec2(mask.width, mask.height);
   const detail::ComputeProgram& occlusionProgram = programs_[Program::GodRayOcclusion];
-  fn.vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, occlusionProgram.find());
+  fn.vkCmdBindPipeline(
+      cmd, VK_PIPELINE_BIND_POINT_COMPUTE,
+      occlusionProgram.find(detail::godRayOcclusionKey(nearField != VK_NULL_HANDLE)));
   fn.vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, occlusionProgram.layout(), 0, 1,
                              &slot.godRayOcclusion, 0, nullptr);
   fn.vkCmdPushConstants(cmd, occlusionProgram.layout(), VK_SHADER_STAGE_COMPUTE_BIT, 0,

@@ -373,7 +373,8 @@ void Context::Impl::recordTrace(VkCommandBuffer cmd, const FrameInputs& inputs,
   recordReconstruct(cmd, temporal, traceExtent, lightning, slot);
   const bool godRays =
       settings.godRaySamples > 0 &&
-      recordGodRays(cmd, inputs, settings, frame.historyOut, /*traced=*/true, slot);
+      recordGodRays(cmd, inputs, settings, frame.historyOut,
+                    frame.nearField ? frame.nearResolved : VK_NULL_HANDLE, /*traced=*/true, slot);
   const std::uint32_t outputHistory = historyVariant(temporal.useOutputHistory, temporal.still);
   const VkPipeline upsample = programs_[Program::Upsample].find(
       detail::upsampleKey(temporal.upsampleTemporally, outputHistory, frame.hazed, godRays,
