@@ -1,8 +1,9 @@
 // Recording the god-ray mask (fxcontracts/god_rays.h) between the reconstruction and the upsample:
 // the occlusion image (the reconstructed clouds' transmittance where the scene distance is the
-// sky, the near field's laid over it when the frame has one), then its radial blur towards the sun with the light the upsample adds to the sky's
-// pixels (a quarter of the resolution holds it: it is smooth but for the mask). With the sun
-// far off screen, behind the camera or set, or nothing marched, only a clear of the mask to 1.
+// sky, the near field's laid over it when the frame has one), then its radial blur towards the sun
+// with the light the upsample adds to the sky's pixels (a quarter of the resolution holds it: it is
+// smooth but for the mask). With the sun far off screen, behind the camera or set, or nothing
+// marched, only a clear of the mask to 1.
 #include "context_impl.h"
 #include "god_rays.h"
 #include "kit.h"
