@@ -4,6 +4,8 @@
 // term off does to it, to the clouds' luminance and to the cloud around the sun in the view
 // towards it. Optionally writes the previews as PNG.
 // Usage: clouds_look [OUT_DIR] [--width W --height H]
+#include <CLI/CLI.hpp>
+
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
@@ -94,18 +96,13 @@ const std::vector<GroundVariant>& groundVariants() {
 }  // namespace
 
 int main(int argc, char** argv) {
+  CLI::App cli{"clouds_look: the look of the clouds in figures (and, given a folder, pictures)"};
   std::filesystem::path outDir;
   VkExtent2D extent{320, 180};
-  for (int i = 1; i < argc; ++i) {
-    const std::string arg = argv[i];
-    if (arg == "--width" && i + 1 < argc) {
-      extent.width = std::uint32_t(std::stoul(argv[++i]));
-    } else if (arg == "--height" && i + 1 < argc) {
-      extent.height = std::uint32_t(std::stoul(argv[++i]));
-    } else {
-      outDir = arg;
-    }
-  }
+  cli.add_option("out_dir", outDir, "Folder for the previews (PNG); none: figures only");
+  cli.add_option("--width", extent.width, "Render width")->check(CLI::Range(16u, 4096u));
+  cli.add_option("--height", extent.height, "Render height")->check(CLI::Range(16u, 4096u));
+  CLI11_PARSE(cli, argc, argv);
   try {
     engine::gfx::Instance instance(engine::gfx::InstanceDesc{});
     engine::gfx::Device device(instance, engine::gfx::DeviceDesc{});
