@@ -21,21 +21,21 @@ ParseResult parseOptions(int argc, char** argv) {
   cli.add_option("--height", options.height, "Render height in pixels")
       ->check(CLI::Range(16u, 4320u));
   // CLI::Range lets NaN through (every comparison with it is false).
-  const auto finiteSeconds = [](const std::string& value) {
+  const auto finiteNumber = [](const std::string& value) {
     return std::isfinite(std::strtod(value.c_str(), nullptr))
                ? std::string()
-               : "must be a finite number of seconds, got " + value;
+               : "must be a finite number, got " + value;
   };
   double fixedDt = 0.0;
   CLI::Option* fixedDtOption =
       cli.add_option("--fixed-dt", fixedDt,
                      "Fixed simulation step in seconds (deterministic runs; 0 pauses the clock)")
           ->check(CLI::Range(0.0, 3600.0))
-          ->check(finiteSeconds);
+          ->check(finiteNumber);
   cli.add_option("--start-time", options.startSeconds,
                  "Simulation clock at the first frame in seconds (1e6: as after 11.6 days)")
       ->check(CLI::Range(0.0, 1e9))
-      ->check(finiteSeconds);
+      ->check(finiteNumber);
   cli.add_flag("--validation", options.validation, "Enable Vulkan validation layers");
   cli.add_option("--device", options.device, "Vulkan device: cpu, gpu or a name substring");
   std::string scene;
@@ -60,9 +60,20 @@ ParseResult parseOptions(int argc, char** argv) {
                    ? std::string()
                    : "unknown quality '" + name + "' (low, medium, high, ultra, reference)";
       });
+  double frameTarget = 0.0;
+  CLI::Option* frameTargetOption =
+      cli.add_option("--frame-target-ms", frameTarget,
+                     "GPU milliseconds a frame: a governor picks the cloud preset that holds it "
+                     "(0: none; default 33.3 in a window, none headless; --quality fixes the "
+                     "preset instead)")
+          ->check(CLI::Range(0.0, 1e5))
+          ->check(finiteNumber);
   std::string soakReport;
   cli.add_option("--soak-report", soakReport,
                  "Write host and GPU memory, pipelines and frame time every 250 frames (CSV)");
+  std::string frameSeries;
+  cli.add_option("--frame-series", frameSeries,
+                 "Write every frame's wall and GPU time and cloud preset (CSV)");
   bool noHud = false;
   cli.add_flag("--no-hud", noHud, "Hide the on-screen help and frame rate");
   bool noVsync = false;
@@ -73,12 +84,14 @@ ParseResult parseOptions(int argc, char** argv) {
     return ParseResult{std::nullopt, cli.exit(e)};
   }
   if (fixedDtOption->count() > 0) options.fixedDtSeconds = fixedDt;
+  if (frameTargetOption->count() > 0) options.frameTargetMilliseconds = frameTarget;
   if (!captureDir.empty()) options.captureDir = captureDir;
   if (!scene.empty()) options.scene = scene;
   if (!terrain.empty()) options.terrain = terrain;
   if (!heroCloud.empty()) options.heroCloud = heroCloud;
   if (!script.empty()) options.script = script;
   if (!soakReport.empty()) options.soakReport = soakReport;
+  if (!frameSeries.empty()) options.frameSeries = frameSeries;
   if (!quality.empty()) {
     clouds::Quality parsed{};
     clouds::parseQuality(quality, &parsed);

@@ -29,8 +29,10 @@ struct Options {
   std::optional<std::filesystem::path> script;     // frame-indexed input and events (headless)
   bool describe = false;  // print the frame graph's passes and pipelines, exit
   bool hud = true;        // on-screen help and fps in windowed runs
-  std::optional<clouds::Quality> cloudQuality;      // overrides the scene camera's preset
-  std::optional<std::filesystem::path> soakReport;  // resource series of a long run (CSV)
+  std::optional<clouds::Quality> cloudQuality;       // overrides the scene camera's preset
+  std::optional<double> frameTargetMilliseconds;     // the governor's target; 0: no governor
+  std::optional<std::filesystem::path> soakReport;   // resource series of a long run (CSV)
+  std::optional<std::filesystem::path> frameSeries;  // every frame's times and preset (CSV)
 };
 
 // Parses argv. Returns the options, or an exit code when parsing ended the run (--help, or an

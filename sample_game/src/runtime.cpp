@@ -10,6 +10,7 @@
 #include <thread>
 
 #include "clouds/ecs/cloud_components.h"
+#include "clouds/ecs/frame_budget.h"
 #include "engine/core/error.h"
 #include "engine/core/log.h"
 #include "engine/ecs/app.h"
@@ -20,6 +21,7 @@
 #include "engine/platform/window.h"
 #include "engine/render/present_target.h"
 #include "engine/render/render_feature.h"
+#include "frame_series.h"
 #include "game/game_components.h"
 #include "game/input_script.h"
 #include "render/renderer.h"
@@ -86,6 +88,34 @@ constexpr std::uint64_t kWarmUpFrames = 3;  // noise generation and shader JIT h
 // traced three times and the picture has converged (the 5th was soft and blotchy).
 constexpr std::uint64_t kHeadlessPreviewFrames = 48;
 
+// A window's runs are governed to 30 fps unless the scene or the command line says otherwise;
+// headless runs (captures, tests) keep their preset, for deterministic frames.
+constexpr double kDefaultFrameTargetMilliseconds = 1000.0 / 30.0;
+
+// The frame target the governor holds, none for a fixed preset (--quality, or a target of 0).
+std::optional<double> frameTargetFor(const Options& options, const SceneDescription& scene,
+                                     bool windowed) {
+  std::optional<double> target =
+      windowed && !options.describe ? std::optional(kDefaultFrameTargetMilliseconds) : std::nullopt;
+  if (scene.camera.frameTargetMilliseconds) target = scene.camera.frameTargetMilliseconds;
+  if (options.frameTargetMilliseconds) target = options.frameTargetMilliseconds;
+  if (options.cloudQuality || (target && *target <= 0.0)) return std::nullopt;
+  return target;
+}
+
+void logFrameBudget(ecs::World& world) {
+  const auto* governor = world.ctx().tryGet<clouds::ecs::CloudGovernorStatus>();
+  if (governor == nullptr || !governor->active) return;
+  char line[192];
+  std::snprintf(line, sizeof(line),
+                "cloud frame budget: %.1f ms, the governor chose %s (%llu changes; its last "
+                "median %.1f ms, %s)",
+                governor->targetMilliseconds, ::clouds::qualityName(governor->preset),
+                static_cast<unsigned long long>(governor->changes), governor->medianMilliseconds,
+                governor->reason);
+  log::info(line);
+}
+
 RunPlan planRun(Options options) {
   RunPlan plan;
   plan.windowed = !options.headless && platform::Window::displayAvailable();
@@ -104,6 +134,7 @@ RunPlan planRun(Options options) {
   }
   plan.scene = loadSceneDescription(options.scene);
   if (options.cloudQuality) plan.scene.camera.cloudQuality = *options.cloudQuality;
+  plan.scene.camera.frameTargetMilliseconds = frameTargetFor(options, plan.scene, plan.windowed);
   if (options.script) plan.script = InputScript::load(*options.script);
   if (!plan.windowed && options.frames == 0) {
     options.frames = plan.script ? static_cast<std::uint32_t>(plan.script->lastFrame() + 1) : 1;
@@ -179,6 +210,8 @@ LoopStats runFrames(ecs::App& app, const Renderer& renderer, platform::Window* w
   LoopStats stats;
   std::optional<SoakReport> soak;
   if (options.soakReport) soak.emplace(*options.soakReport);
+  std::optional<FrameSeries> series;
+  if (options.frameSeries) series.emplace(*options.frameSeries);
   for (std::uint64_t frame = 0; options.frames == 0 || frame < options.frames; ++frame) {
     if (!gatherInput(world, window, swapchain, plan, frame, scriptInput, screenshots)) break;
     const auto now = std::chrono::steady_clock::now();
@@ -193,6 +226,7 @@ LoopStats runFrames(ecs::App& app, const Renderer& renderer, platform::Window* w
     }
     app.runFrame();
     if (soak) soak->afterFrame(frame, renderer);
+    if (series) series->afterFrame(frame, measured * 1000.0, world);
     if (frame + 1 == kWarmUpFrames) measureStart = std::chrono::steady_clock::now();
     if (frame + 1 > kWarmUpFrames) {
       ++stats.measuredFrames;
@@ -285,6 +319,7 @@ void logRun(ecs::World& world, const Renderer& renderer, const LoopStats& stats)
     std::snprintf(sum, sizeof(sum), " (sum %.2f ms)", total);
     log::info("GPU time per pass, median of the measured frames: " + timingList(medians) + sum);
   }
+  logFrameBudget(world);
   const auto* clouds = world.ctx().tryGet<clouds::ecs::CloudStatus>();
   if (clouds == nullptr) return;
   const ::clouds::FrameReport& r = clouds->report;

@@ -8,6 +8,7 @@
 #include <glm/gtc/constants.hpp>
 
 #include "clouds/ecs/cloud_components.h"
+#include "clouds/ecs/frame_budget.h"
 #include "engine/ecs/app.h"
 #include "engine/ecs/frame_time.h"
 #include "engine/platform/input.h"
@@ -148,21 +149,31 @@ TEST(Flight, TeleportsSetThePoseAndMarkACameraCut) {
   EXPECT_FALSE(w.camera().cut);
 }
 
-TEST(CloudQuality, NumberKeysPickTheCameraPreset) {
+TEST(CloudQuality, NumberKeysFixTheCameraPresetAndGTogglesTheGovernor) {
   FlightWorld w({0, 500, 0});
   auto& world = w.app.world();
   world.emplace<clouds::ecs::CloudQuality>(w.player, clouds::ecs::CloudQuality{});
-  sample::installCloudQualityControls(w.app.scheduler());
-  const std::pair<Key, clouds::Quality> presses[] = {{Key::Num4, clouds::Quality::Ultra},
-                                                     {Key::Num1, clouds::Quality::Low},
-                                                     {Key::Num5, clouds::Quality::Reference}};
-  for (const auto& [key, preset] : presses) {
+  world.emplace<clouds::ecs::CloudFrameBudget>(w.player, clouds::ecs::CloudFrameBudget{16.7});
+  sample::installCloudQualityControls(w.app.scheduler(), 25.0);
+  const auto press = [&](Key key) {
     w.input().beginFrame();
     w.input().press(key);
     w.step(0.016, 1);
     w.input().release(key);
+  };
+  const std::pair<Key, clouds::Quality> presses[] = {{Key::Num4, clouds::Quality::Ultra},
+                                                     {Key::Num1, clouds::Quality::Low},
+                                                     {Key::Num5, clouds::Quality::Reference}};
+  for (const auto& [key, preset] : presses) {
+    press(key);
     EXPECT_EQ(world.get<clouds::ecs::CloudQuality>(w.player).preset, preset);
+    EXPECT_FALSE(world.has<clouds::ecs::CloudFrameBudget>(w.player)) << "a fixed preset";
   }
+  press(Key::G);
+  ASSERT_TRUE(world.has<clouds::ecs::CloudFrameBudget>(w.player));
+  EXPECT_EQ(world.get<clouds::ecs::CloudFrameBudget>(w.player).targetMilliseconds, 25.0);
+  press(Key::G);
+  EXPECT_FALSE(world.has<clouds::ecs::CloudFrameBudget>(w.player));
 }
 
 TEST(TimeOfDay, TheSunFollowsADailyArc) {

@@ -601,6 +601,27 @@ TEST(HeadlessCapture, HeldInsideACloudTheGroundShowsNoTiles) {
   EXPECT_LT(blocks, 1.34);
 }
 
+// A frame budget in the sample: the governor takes the camera's preset from Medium down to
+// Low for an impossible 1 ms a frame and up to Ultra for an easy 10 s, judging the frames'
+// GPU timestamps; a number key fixes the preset and ends the governing.
+TEST(HeadlessCapture, AFrameBudgetChoosesTheCloudPreset) {
+  const std::string common =
+      "--headless --validation --width 96 --height 54 --fixed-dt 0.05 --frame-target-ms ";
+  const std::string low = runSampleCapturing(common + "1 --frames 100", "2>&1");
+  EXPECT_NE(low.find("the governor chose Low (1 changes"), std::string::npos) << low;
+  const std::string high = runSampleCapturing(common + "10000 --frames 200", "2>&1");
+  EXPECT_NE(high.find("the governor chose Ultra (2 changes"), std::string::npos) << high;
+
+  const fs::path dir = freshDir("frame_budget");
+  fs::create_directories(dir);
+  const fs::path script = dir / "press_3.json";
+  std::ofstream(script) << R"({"events": [{"frame": 5, "press": ["3"]},
+                                           {"frame": 100, "exit": true}]})";
+  const std::string fixed = runSampleCapturing(common + "1 --script " + script.string(), "2>&1");
+  EXPECT_EQ(fixed.find("cloud frame budget"), std::string::npos) << fixed;
+  EXPECT_NE(fixed.find("frame rate:"), std::string::npos) << fixed;  // it ran
+}
+
 TEST(HeadlessCapture, FliesOverAUserSuppliedTerrain) {
   const fs::path dir = freshDir("user_terrain");
   ASSERT_EQ(runSample("--headless --frames 1 --width 96 --height 54 --validation --terrain " +

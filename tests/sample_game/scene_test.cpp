@@ -66,6 +66,10 @@ TEST(Scenes, ValuesArriveInTheDescription) {
   const sample::SceneDescription ultra = loadSceneDescription(writeScene("quality.json", R"({
     "name": "q", "camera": {"position": [0, 10, 0], "cloudQuality": "ultra"}})"));
   EXPECT_EQ(ultra.camera.cloudQuality, clouds::Quality::Ultra);
+  EXPECT_FALSE(s.camera.frameTargetMilliseconds.has_value()) << "the sample's default";
+  const sample::SceneDescription governed = loadSceneDescription(writeScene("target.json", R"({
+    "name": "q", "camera": {"position": [0, 10, 0], "frameTargetMilliseconds": 16.7}})"));
+  EXPECT_EQ(governed.camera.frameTargetMilliseconds, 16.7);
   EXPECT_FALSE(s.atmosphere.has_value()) << "no atmosphere unless the scene asks";
   EXPECT_FALSE(s.fog.has_value());
 }
@@ -214,6 +218,9 @@ TEST(Scenes, MalformedScenesNameFilePathAndReason) {
       {"quality.json",
        R"({"name": "x", "camera": {"position": [0, 1, 0], "cloudQuality": "extreme"}})",
        "camera.cloudQuality: must be one of low, medium, high, ultra, reference"},
+      {"target.json",
+       R"({"name": "x", "camera": {"position": [0, 1, 0], "frameTargetMilliseconds": -5}})",
+       "camera.frameTargetMilliseconds"},
       {"both.json",
        R"({"name": "x", "camera": {"position": [0, 1, 0]}, "atmosphere": {},
            "fog": {"densityPerMetre": 1e-5}})",

@@ -7,13 +7,11 @@
 #include <cstring>
 
 #include "bindings.h"
-#include "clouds/ecs/cloud_components.h"
 #include "engine/ecs/frame_time.h"
 #include "engine/gfx/descriptors.h"
 #include "engine/gfx/upload.h"
 #include "engine/platform/input.h"
-#include "engine/render/scene_components.h"
-#include "game/game_components.h"
+#include "render/hud_layout.h"
 #include "sample_shaders/hud.frag.spv.h"
 #include "sample_shaders/hud.vert.spv.h"
 
@@ -92,7 +90,7 @@ void Hud::prepare(ecs::World& world, VkExtent2D extent, std::span<const gfx::Tim
                   const gfx::FrameRing::Frame& frame) {
   ImGui::SetCurrentContext(context_);
   const auto& input = world.ctx().get<platform::InputState>();
-  if (input.wasPressed(platform::Key::F1)) visible_ = !visible_;
+  if (input.wasPressed(platform::Key::F1)) full_ = !full_;
   slot_ = frame.slot;
   extent_ = extent;
   const auto& time = world.ctx().get<ecs::FrameTime>();
@@ -105,47 +103,7 @@ void Hud::prepare(ecs::World& world, VkExtent2D extent, std::span<const gfx::Tim
   io.DisplaySize = ImVec2(float(extent.width), float(extent.height));
   io.DeltaTime = time.deltaSeconds > 0.0 ? float(time.deltaSeconds) : 1.0f / 60.0f;
   ImGui::NewFrame();
-  ImGui::SetNextWindowPos(ImVec2(6, 6));
-  ImGui::SetNextWindowBgAlpha(0.45f);
-  ImGui::Begin("hud", nullptr,
-               ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_AlwaysAutoResize |
-                   ImGuiWindowFlags_NoInputs | ImGuiWindowFlags_NoSavedSettings);
-  const double fps = smoothedFrameSeconds_ > 0.0 ? 1.0 / smoothedFrameSeconds_ : 0.0;
-  ImGui::Text("%.1f fps (%.1f ms)", fps, smoothedFrameSeconds_ * 1000.0);
-  if (visible_) {
-    double gpuTotal = 0.0;
-    for (const auto& scope : gpuTimings) gpuTotal += scope.milliseconds;
-    ImGui::Text("GPU %.1f ms", gpuTotal);
-    for (const auto& scope : gpuTimings)
-      ImGui::Text("  %-16s %6.2f ms", scope.name, scope.milliseconds);
-    world.view<const render::Camera, const Aircraft>().each(
-        [&](const render::Camera& camera, const Aircraft& aircraft) {
-          ImGui::Text("speed %.0f m/s  altitude %.0f m", aircraft.speedMetresPerSecond,
-                      camera.position.y);
-        });
-    world.view<const clouds::ecs::CloudQuality>().each([&](const clouds::ecs::CloudQuality& q) {
-      const auto* status = world.ctx().tryGet<clouds::ecs::CloudStatus>();
-      if (status == nullptr) return;
-      const clouds::FrameReport& report = status->report;
-      ImGui::Text("clouds %s: trace %ux%u, 1 in %u px/frame, %s", clouds::qualityName(q.preset),
-                  report.traceExtent.width, report.traceExtent.height,
-                  report.tileSize * report.tileSize,
-                  report.historyUsed ? "reprojected" : report.resetReason);
-      ImGui::Text("clouds GPU memory %.1f MiB%s", double(status->memory.totalBytes()) / 1048576.0,
-                  status->lastError.empty() ? "" : "  (error: see the log)");
-    });
-    world.view<const TimeOfDay>().each([&](const TimeOfDay& t) {
-      const int minutes = int(std::fmod(t.hours, 24.0) * 60.0);
-      ImGui::Text("time of day %02d:%02d%s", minutes / 60, minutes % 60,
-                  t.hoursPerSecond > 0.0 ? " (running)" : "");
-    });
-    ImGui::Separator();
-    ImGui::TextUnformatted("W/S throttle   Shift boost   Up/Down pitch   Left/Right roll");
-    ImGui::TextUnformatted("A/D yaw   M mouse look   [ ] time of day   T run time");
-    ImGui::TextUnformatted("1-5 cloud quality (Low .. Reference)   F12 screenshot");
-    ImGui::TextUnformatted("F1 hide help   Esc quit");
-  }
-  ImGui::End();
+  layOutHud(world, gpuTimings, smoothedFrameSeconds_, full_);
   ImGui::Render();
 
   const ImDrawData* draw = ImGui::GetDrawData();

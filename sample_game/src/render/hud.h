@@ -1,7 +1,7 @@
 #pragma once
-// On-screen help and frame rate for windowed runs: Dear ImGui (Debian's libimgui) lays out the
-// text; this draws its vertices with one small pipeline of our own in a graphics pass after
-// tonemapping (ImGui's own Vulkan backend in that version needs a render pass object).
+// On-screen frame rate and help for windowed runs: Dear ImGui (Debian's libimgui) lays out the
+// text (hud_layout.h); this draws its vertices with one small pipeline of our own in a graphics
+// pass after tonemapping (ImGui's own Vulkan backend in that version needs a render pass object).
 #include <array>
 #include <memory>
 #include <span>
@@ -29,7 +29,8 @@ class Hud {
                const engine::gfx::FrameRing::Frame& frame);
   void record(VkCommandBuffer cmd, engine::gfx::DescriptorArena& descriptors,
               const engine::gfx::Device& device) const;
-  bool visible() const { return visible_; }
+  // F1: the help and every pass's time besides the one line (hud_layout.h).
+  bool full() const { return full_; }
 
  private:
   engine::gfx::Device& device_;
@@ -44,7 +45,7 @@ class Hud {
   std::array<SlotBuffers, engine::gfx::FrameRing::kFramesInFlight> buffers_;
   std::uint32_t slot_ = 0;
   VkExtent2D extent_{0, 0};
-  bool visible_ = true;
+  bool full_ = false;
   double smoothedFrameSeconds_ = 0.0;
 };
 

@@ -17,6 +17,7 @@
 #include "engine/gfx/upload.h"
 #include "engine/render/camera_math.h"
 #include "engine/render/exposure.h"
+#include "engine/render/gpu_frame_time.h"
 #include "engine/render/scene_components.h"
 #include "render/hud.h"
 #include "render/terrain_renderer.h"
@@ -244,6 +245,16 @@ std::optional<std::filesystem::path> Renderer::takeCaptureRequest(ecs::World& wo
   return stem;
 }
 
+void Renderer::publishGpuFrameTime(ecs::World& world, std::uint64_t frameIndex) const {
+  // begin() retired the frame that used this slot: the latest completed one.
+  if (frameIndex < gfx::FrameRing::kFramesInFlight) return;
+  render::GpuFrameTime time;
+  for (const gfx::TimedScope& scope : ring_.lastTimings()) time.milliseconds += scope.milliseconds;
+  time.frameIndex = frameIndex - gfx::FrameRing::kFramesInFlight;
+  time.measured = true;
+  world.ctx().emplaceOrReplace<render::GpuFrameTime>(time);
+}
+
 void Renderer::renderFrame(ecs::World& world) {
   gfx::FrameRing::Frame& frame = ring_.begin();
   const std::optional<std::filesystem::path> captureStem = takeCaptureRequest(world);
@@ -259,6 +270,7 @@ void Renderer::renderFrame(ecs::World& world) {
   graph_->updateImportedTexture(targetHandle_, target_.image(), target_.view());
   updateFrameConstants(world, extent);
   sceneFrame_.slice = frame.constants->push(sceneFrame_.data);
+  publishGpuFrameTime(world, frame.index);
   if (hud_) hud_->prepare(world, extent, ring_.lastTimings(), frame);
   if (captureStem) capture_.arm(*captureStem);
   graph_->execute(frame);

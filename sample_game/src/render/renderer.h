@@ -71,6 +71,8 @@ class Renderer {
   void rebuildGraph(VkExtent2D extent);
   void updateFrameConstants(engine::ecs::World& world, VkExtent2D extent);
   std::optional<std::filesystem::path> takeCaptureRequest(engine::ecs::World& world);
+  // The latest completed frame's GPU time into the world (engine::render::GpuFrameTime).
+  void publishGpuFrameTime(engine::ecs::World& world, std::uint64_t frameIndex) const;
   template <typename Predicate>
   bool anyFeature(Predicate predicate) const {
     return std::any_of(features_.begin(), features_.end(), predicate);

@@ -23,6 +23,9 @@ CameraDescription readCamera(const JsonReader& r) {
   const std::string quality =
       r.choice("cloudQuality", {"low", "medium", "high", "ultra", "reference"}, "medium");
   clouds::parseQuality(quality, &c.cloudQuality);
+  if (r.has("frameTargetMilliseconds")) {
+    c.frameTargetMilliseconds = r.number("frameTargetMilliseconds", 0.0, 1e5);
+  }
   const std::string sky =
       r.choice("atmosphereQuality", {"low", "medium", "high", "reference"}, "medium");
   atmosphere::parseQuality(sky, &c.atmosphereQuality);

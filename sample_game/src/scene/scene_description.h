@@ -24,6 +24,10 @@ struct CameraDescription {
   // Cost/accuracy preset of this camera's clouds ("low", "medium", "high", "ultra",
   // "reference"); --quality and the number keys 1-5 override it.
   clouds::Quality cloudQuality = clouds::Quality::Medium;
+  // GPU milliseconds a frame that a governor holds by choosing the cloud preset (from
+  // cloudQuality on); 0: none, the preset stays. Unset: the sample's default (a window's runs
+  // are governed, headless ones not); --frame-target-ms and --quality override it.
+  std::optional<double> frameTargetMilliseconds;
   // Cost/accuracy preset of this camera's atmosphere ("low", "medium", "high", "reference").
   atmosphere::Quality atmosphereQuality = atmosphere::Quality::Medium;
 };

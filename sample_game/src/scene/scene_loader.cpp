@@ -7,6 +7,7 @@
 #include "atmosphere/ecs/atmosphere_module.h"
 #include "clouds/ecs/cloud_components.h"
 #include "clouds/ecs/clouds_module.h"
+#include "clouds/ecs/frame_budget.h"
 #include "clouds/ecs/lightning.h"
 #include "clouds/vdb_import.h"
 #include "engine/core/error.h"
@@ -156,6 +157,10 @@ void populateScene(ecs::App& app, const SceneDescription& scene,
   world.emplace<Aircraft>(player, aircraft);
   world.emplace<clouds::ecs::CloudQuality>(player,
                                            clouds::ecs::CloudQuality{scene.camera.cloudQuality});
+  if (scene.camera.frameTargetMilliseconds) {
+    world.emplace<clouds::ecs::CloudFrameBudget>(
+        player, clouds::ecs::CloudFrameBudget{*scene.camera.frameTargetMilliseconds});
+  }
   world.emplace<atmosphere::ecs::AtmosphereQuality>(
       player, atmosphere::ecs::AtmosphereQuality{scene.camera.atmosphereQuality});
 
@@ -237,7 +242,9 @@ void populateScene(ecs::App& app, const SceneDescription& scene,
   }
   installTimeOfDay(app.scheduler());
   installFlight(app.scheduler());
-  installCloudQualityControls(app.scheduler());
+  installCloudQualityControls(app.scheduler(),
+                              scene.camera.frameTargetMilliseconds.value_or(
+                                  clouds::ecs::CloudFrameBudget{}.targetMilliseconds));
   // The atmosphere first: its passes draw the sky the clouds' passes read. It installs only
   // with an Atmosphere and a device that can run it; otherwise the analytic sky stands in.
   if (!app.addModule<atmosphere::ecs::AtmosphereModule>()) {

@@ -4,6 +4,7 @@
 
 #include "clouds/ecs/cloud_components.h"
 #include "clouds/ecs/cloud_frame.h"
+#include "clouds/ecs/frame_budget.h"
 #include "engine/assets/image_io.h"
 #include "engine/core/error.h"
 #include "engine/core/log.h"
@@ -118,16 +119,38 @@ bool CloudFeature::prepare(VkExtent2D extent, std::uint64_t frameIndex) {
     // The slot about to be reused holds the latest completed frame's timestamps.
     status.passTimings = context_->passTimings(frameIndex - framesInFlight_);
   }
-  settings_ = cloudSettings(world_);
-  // The engine's passes read the clouds' radiance only (addPasses() hands on no depth): the
-  // module need not store its depth output (a quarter of its upsample on lavapipe).
-  settings_.depthOutput = false;
+  settings_ = forTheEngine(cloudSettings(world_));
   clouds::Error error;
+  prepareGovernedPresets(extent);
   prepared_ = context_->prepare(settings_, extent, &error);
   if (!prepared_) reportError(error);
   // A change rebuilds the graph: with the clouds' passes, or without them until prepare()
   // succeeds again.
   return !sameImages(usableOutputs(), imported_);
+}
+
+clouds::Settings CloudFeature::forTheEngine(clouds::Settings settings) {
+  // The engine's passes read the clouds' radiance only (addPasses() hands on no depth): the
+  // module need not store its depth output (a quarter of its upsample on lavapipe).
+  settings.depthOutput = false;
+  return settings;
+}
+
+void CloudFeature::prepareGovernedPresets(VkExtent2D extent) {
+  const std::vector<clouds::Quality> presets = governedPresets(world_);
+  if (presets == preparedAhead_ && extent.width == preparedAheadExtent_.width &&
+      extent.height == preparedAheadExtent_.height) {
+    return;
+  }
+  preparedAhead_ = presets;
+  preparedAheadExtent_ = extent;
+  // Dearest first: its images are the largest, and the others then fit in them.
+  for (auto it = presets.rbegin(); it != presets.rend(); ++it) {
+    clouds::Error error;
+    if (!context_->prepare(forTheEngine(cloudSettingsFor(world_, *it)), extent, &error)) {
+      reportError(error);
+    }
+  }
 }
 
 clouds::Outputs CloudFeature::usableOutputs() const {

@@ -17,6 +17,7 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "clouds/clouds.h"
 #include "engine/ecs/world.h"
@@ -59,6 +60,11 @@ class CloudFeature final : public engine::render::RenderFeature {
   void dispatchShadowMap(const HostFrame& host, fxcontracts::ecs::CloudShadow& shadow);
   void composite(VkCommandBuffer cmd, VkImageView color, VkExtent2D extent);
   void reportError(const clouds::Error& error);
+  // `settings` as the engine uses them (no depth output).
+  static clouds::Settings forTheEngine(clouds::Settings settings);
+  // Prepares every preset a budgeted camera may switch to (frame_budget.h), once per set and
+  // extent, so that a switch builds nothing mid-flight.
+  void prepareGovernedPresets(VkExtent2D extent);
 
   engine::ecs::World& world_;
   engine::gfx::Device& device_;
@@ -66,6 +72,8 @@ class CloudFeature final : public engine::render::RenderFeature {
   std::unique_ptr<engine::gfx::Image> weatherMap_;  // the layer's painted map, if any
   std::unique_ptr<clouds::Context> context_;
   clouds::Settings settings_;                        // this frame's, decided in prepare()
+  std::vector<clouds::Quality> preparedAhead_;       // the governed presets prepared
+  VkExtent2D preparedAheadExtent_{0, 0};             // at this extent
   std::vector<clouds::LightningFlash> flashes_;      // this frame's (FrameInputs points at them)
   std::vector<clouds::LightningBoltSegment> bolts_;  // likewise
   std::vector<clouds::HeroCloud> heroClouds_;        // likewise

@@ -12,22 +12,34 @@ namespace clouds::ecs {
 
 using namespace engine;
 
-clouds::Settings cloudSettings(engine::ecs::World& world) {
-  clouds::Settings layerSettings;
-  world.view<const CloudLayer>().each(
-      [&](const CloudLayer& layer) { layerSettings = layer.settings; });
-  // A scene with a storm makes room for its flashes (and so for the glow's code).
+namespace {
+
+// The layer's settings as they are, with room for a storm's flashes (and so the glow's code).
+clouds::Settings layerSettings(engine::ecs::World& world) {
+  clouds::Settings settings;
+  world.view<const CloudLayer>().each([&](const CloudLayer& layer) { settings = layer.settings; });
   world.view<const LightningStorm>().each([&](const LightningStorm&) {
-    layerSettings.lightningFlashes = kLightningFlashes;
-    layerSettings.lightningBoltSegments = kLightningBoltSegments;
+    settings.lightningFlashes = kLightningFlashes;
+    settings.lightningBoltSegments = kLightningBoltSegments;
   });
-  clouds::Settings settings = layerSettings;
+  return settings;
+}
+
+}  // namespace
+
+clouds::Settings cloudSettings(engine::ecs::World& world) {
+  const clouds::Settings layer = layerSettings(world);
+  clouds::Settings settings = layer;
   world.view<const render::Camera>().each([&](engine::ecs::Entity entity, const render::Camera&) {
     if (const auto* quality = world.tryGet<const CloudQuality>(entity)) {
-      settings = clouds::settingsFor(quality->preset, layerSettings);
+      settings = clouds::settingsFor(quality->preset, layer);
     }
   });
   return settings;
+}
+
+clouds::Settings cloudSettingsFor(engine::ecs::World& world, clouds::Quality preset) {
+  return clouds::settingsFor(preset, layerSettings(world));
 }
 
 std::vector<clouds::LightningFlash> lightningFlashes(engine::ecs::World& world,

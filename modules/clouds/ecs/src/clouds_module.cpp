@@ -2,6 +2,7 @@
 
 #include "cloud_feature.h"
 #include "clouds/ecs/cloud_components.h"
+#include "clouds/ecs/frame_budget.h"
 #include "clouds/ecs/lightning.h"
 #include "engine/ecs/world.h"
 #include "engine/render/render_feature.h"
@@ -34,6 +35,8 @@ void CloudsModule::install(engine::ecs::World& world, engine::ecs::Scheduler& sc
   world.ctx().get<engine::render::RenderFeatures>().features.push_back(feature_.get());
   // Only a scene with a storm gets the lightning system.
   installLightning(world, scheduler);
+  // A camera may be given a frame budget at any time (the sample's key G): a view a frame.
+  installFrameBudget(world, scheduler);
 }
 
 }  // namespace clouds::ecs

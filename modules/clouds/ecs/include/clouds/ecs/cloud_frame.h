@@ -38,6 +38,9 @@ struct HostFrame {
 // The settings the camera renders the layer with: the layer's look under the camera's
 // CloudQuality preset, or the layer's settings as they are without one.
 clouds::Settings cloudSettings(engine::ecs::World& world);
+// The settings the layer's look takes under `preset` (what cloudSettings() gives a camera
+// with that CloudQuality): for preparing a preset before a camera switches to it.
+clouds::Settings cloudSettingsFor(engine::ecs::World& world, clouds::Quality preset);
 
 // Flashes that may glow at once in a scene with a storm (Settings::lightningFlashes).
 inline constexpr std::uint32_t kLightningFlashes = 8;

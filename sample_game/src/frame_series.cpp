@@ -1,0 +1,34 @@
+#include "frame_series.h"
+
+#include <cstdio>
+
+#include "clouds/ecs/cloud_components.h"
+#include "clouds/ecs/frame_budget.h"
+#include "engine/core/error.h"
+#include "engine/ecs/frame_time.h"
+#include "engine/render/gpu_frame_time.h"
+
+namespace sample {
+
+FrameSeries::FrameSeries(const std::filesystem::path& file) : out_(file) {
+  if (!out_) throw engine::Error(file.string() + ": cannot write the frame series");
+  out_ << "frame,seconds,wall_ms,gpu_ms,cloud_preset,governor\n";
+}
+
+void FrameSeries::afterFrame(std::uint64_t frame, double wallMilliseconds,
+                             engine::ecs::World& world) {
+  const auto* gpu = world.ctx().tryGet<engine::render::GpuFrameTime>();
+  const char* preset = "";
+  world.view<const clouds::ecs::CloudQuality>().each(
+      [&](const clouds::ecs::CloudQuality& q) { preset = clouds::qualityName(q.preset); });
+  const auto* governor = world.ctx().tryGet<clouds::ecs::CloudGovernorStatus>();
+  char row[160];
+  std::snprintf(row, sizeof(row), "%llu,%.4f,%.3f,%.3f,%s,%s\n",
+                static_cast<unsigned long long>(frame),
+                world.ctx().get<engine::ecs::FrameTime>().elapsedSeconds, wallMilliseconds,
+                gpu != nullptr && gpu->measured ? gpu->milliseconds : 0.0, preset,
+                governor != nullptr && governor->active ? governor->reason : "off");
+  out_ << row;
+}
+
+}  // namespace sample

@@ -1,0 +1,120 @@
+// A camera's frame budget without a GPU: the "cloud frame budget" system fed with a synthetic
+// GPU frame time (each preset a known cost) sets the camera's preset, stops when the budget
+// goes, and refuses a budget outside the ladder by name.
+#include "clouds/ecs/frame_budget.h"
+
+#include <gtest/gtest.h>
+
+#include <map>
+#include <vector>
+
+#include "clouds/ecs/cloud_components.h"
+#include "clouds/ecs/cloud_frame.h"
+#include "engine/ecs/scheduler.h"
+#include "engine/ecs/world.h"
+#include "engine/render/gpu_frame_time.h"
+#include "engine/render/scene_components.h"
+
+namespace {
+
+using clouds::Quality;
+
+struct BudgetWorld {
+  engine::ecs::World world;
+  engine::ecs::Scheduler scheduler;
+  engine::ecs::Entity camera;
+  // What each preset's frame costs on the GPU, milliseconds.
+  std::map<Quality, double> cost = {
+      {Quality::Low, 9.0}, {Quality::Medium, 12.0}, {Quality::High, 28.0}, {Quality::Ultra, 70.0}};
+  std::uint64_t frame = 0;
+  std::vector<Quality> rendered;  // the preset of each frame so far
+
+  BudgetWorld() {
+    world.emplace<clouds::ecs::CloudLayer>(world.create(), clouds::ecs::CloudLayer{});
+    camera = world.create();
+    world.emplace<engine::render::Camera>(camera, engine::render::Camera{});
+    world.emplace<clouds::ecs::CloudQuality>(camera, clouds::ecs::CloudQuality{Quality::Medium});
+    clouds::ecs::installFrameBudget(world, scheduler);
+  }
+  Quality preset() { return world.get<clouds::ecs::CloudQuality>(camera).preset; }
+  // Frames whose GPU time is what the camera's preset costs (measured as the renderer does,
+  // two frames late).
+  void run(int frames) {
+    for (int i = 0; i < frames; ++i, ++frame) {
+      if (frame >= 2) {
+        engine::render::GpuFrameTime time;
+        time.milliseconds = cost.at(rendered[frame - 2]);
+        time.frameIndex = frame - 2;
+        time.measured = true;
+        world.ctx().emplaceOrReplace<engine::render::GpuFrameTime>(time);
+      }
+      scheduler.runFrame(world);
+      rendered.push_back(preset());
+    }
+  }
+  const clouds::ecs::CloudGovernorStatus& status() {
+    return world.ctx().get<clouds::ecs::CloudGovernorStatus>();
+  }
+};
+
+TEST(CloudFrameBudget, ChoosesTheDearestPresetThatHoldsTheTarget) {
+  BudgetWorld w;
+  w.world.emplace<clouds::ecs::CloudFrameBudget>(w.camera, clouds::ecs::CloudFrameBudget{33.3});
+  w.run(600);
+  EXPECT_EQ(w.preset(), Quality::High);
+  EXPECT_TRUE(w.status().active);
+  EXPECT_EQ(w.status().preset, Quality::High);
+  EXPECT_EQ(w.status().changes, 1u);
+  EXPECT_NEAR(w.status().medianMilliseconds, 28.0, 1e-9);
+  EXPECT_STREQ(w.status().reason, "holding");
+  // The feature prepares every preset between the floor and the ceiling ahead.
+  EXPECT_EQ(clouds::ecs::governedPresets(w.world),
+            (std::vector<Quality>{Quality::Low, Quality::Medium, Quality::High, Quality::Ultra}));
+
+  // A heavier scene: down to what fits.
+  w.cost[Quality::High] = 40.0;
+  w.run(200);
+  EXPECT_EQ(w.preset(), Quality::Medium);
+}
+
+TEST(CloudFrameBudget, KeepsWithinItsFloorAndCeiling) {
+  BudgetWorld w;
+  w.world.emplace<clouds::ecs::CloudFrameBudget>(
+      w.camera, clouds::ecs::CloudFrameBudget{1000.0, Quality::Low, Quality::Medium});
+  w.run(600);
+  EXPECT_EQ(w.preset(), Quality::Medium);
+  EXPECT_EQ(clouds::ecs::governedPresets(w.world),
+            (std::vector<Quality>{Quality::Low, Quality::Medium}));
+}
+
+TEST(CloudFrameBudget, WithoutABudgetThePresetIsLeftAlone) {
+  BudgetWorld w;
+  w.world.emplace<clouds::ecs::CloudFrameBudget>(w.camera, clouds::ecs::CloudFrameBudget{1000.0});
+  w.run(100);
+  ASSERT_EQ(w.preset(), Quality::High);
+  w.world.remove<clouds::ecs::CloudFrameBudget>(w.camera);
+  w.world.get<clouds::ecs::CloudQuality>(w.camera).preset = Quality::Low;  // a number key
+  w.run(600);
+  EXPECT_EQ(w.preset(), Quality::Low);
+  EXPECT_FALSE(w.status().active);
+  EXPECT_TRUE(clouds::ecs::governedPresets(w.world).empty());
+}
+
+TEST(CloudFrameBudget, ABudgetOffTheLadderIsRefusedByName) {
+  BudgetWorld w;
+  w.world.emplace<clouds::ecs::CloudFrameBudget>(
+      w.camera, clouds::ecs::CloudFrameBudget{33.3, Quality::Low, Quality::Reference});
+  w.run(100);
+  EXPECT_EQ(w.preset(), Quality::Medium);
+  EXPECT_FALSE(w.status().active);
+  EXPECT_NE(w.status().error.find("CloudFrameBudget.ceiling"), std::string::npos)
+      << w.status().error;
+  EXPECT_TRUE(clouds::ecs::governedPresets(w.world).empty());
+
+  w.world.get<clouds::ecs::CloudFrameBudget>(w.camera) =
+      clouds::ecs::CloudFrameBudget{-1.0, Quality::Low, Quality::Ultra};
+  w.run(10);
+  EXPECT_NE(w.status().error.find("targetMilliseconds"), std::string::npos) << w.status().error;
+}
+
+}  // namespace
