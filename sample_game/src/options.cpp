@@ -74,8 +74,14 @@ ParseResult parseOptions(int argc, char** argv) {
   std::string frameSeries;
   cli.add_option("--frame-series", frameSeries,
                  "Write every frame's wall and GPU time and cloud preset (CSV)");
+  std::string saveScene;
+  cli.add_option("--save-scene", saveScene,
+                 "Where the settings panel (F2) saves the scene; given, the scene as it is at "
+                 "the end of the run is saved there too (default: edited_scene.json)");
   bool noHud = false;
   cli.add_flag("--no-hud", noHud, "Hide the on-screen help and frame rate");
+  cli.add_flag("--hud-headless", options.hudHeadless,
+               "Draw the HUD in headless runs too (scripts can press F1 and F2; for captures)");
   bool noVsync = false;
   cli.add_flag("--no-vsync", noVsync, "Present without waiting for vertical blank");
   try {
@@ -92,6 +98,7 @@ ParseResult parseOptions(int argc, char** argv) {
   if (!script.empty()) options.script = script;
   if (!soakReport.empty()) options.soakReport = soakReport;
   if (!frameSeries.empty()) options.frameSeries = frameSeries;
+  if (!saveScene.empty()) options.saveScene = saveScene;
   if (!quality.empty()) {
     clouds::Quality parsed{};
     clouds::parseQuality(quality, &parsed);

@@ -27,12 +27,15 @@ struct Options {
   std::optional<std::filesystem::path> terrain;    // fly over this glTF instead of the scene's
   std::optional<std::filesystem::path> heroCloud;  // a user's cloud (.vdb, .nvdf), ahead
   std::optional<std::filesystem::path> script;     // frame-indexed input and events (headless)
-  bool describe = false;  // print the frame graph's passes and pipelines, exit
-  bool hud = true;        // on-screen help and fps in windowed runs
+  bool describe = false;     // print the frame graph's passes and pipelines, exit
+  bool hud = true;           // on-screen help and fps in windowed runs
+  bool hudHeadless = false;  // the HUD (and its panel, F2) in headless runs' frames too
   std::optional<clouds::Quality> cloudQuality;       // overrides the scene camera's preset
   std::optional<double> frameTargetMilliseconds;     // the governor's target; 0: no governor
   std::optional<std::filesystem::path> soakReport;   // resource series of a long run (CSV)
   std::optional<std::filesystem::path> frameSeries;  // every frame's times and preset (CSV)
+  // Where the settings panel saves the scene; given, the run also saves it when it ends.
+  std::optional<std::filesystem::path> saveScene;
 };
 
 // Parses argv. Returns the options, or an exit code when parsing ended the run (--help, or an

@@ -24,6 +24,7 @@
 #include "frame_series.h"
 #include "game/game_components.h"
 #include "game/input_script.h"
+#include "game/live_settings.h"
 #include "render/renderer.h"
 #include "scene/scene_description.h"
 #include "scene/scene_loader.h"
@@ -374,19 +375,22 @@ int run(Options commandLine) {
     RendererOptions rendererOptions;
     rendererOptions.maxExtent = {std::max(options.width, 3840u), std::max(options.height, 2160u)};
     rendererOptions.captureDirectory = options.captureDir.value_or("out");
-    rendererOptions.hud = plan.windowed && options.hud;
+    rendererOptions.hud = (plan.windowed && options.hud) || options.hudHeadless;
     // Declared after the device: the modules' GPU objects go before it does.
     ecs::App app;
     app.world().ctx().emplace<render::RenderDevice>(
         render::RenderDevice{&device, Renderer::kHdrFormat, Renderer::kDepthFormat,
                              gfx::FrameRing::kFramesInFlight, rendererOptions.maxExtent});
     populateScene(app, plan.scene, plan.terrain, plan.heroClouds);
+    app.world().ctx().emplace<LiveScene>(
+        LiveScene{plan.scene, options.saveScene.value_or("edited_scene.json"), {}});
     Renderer renderer(device, *presentation.target, app.world(), rendererOptions);
     app.scheduler().add(ecs::Phase::Render, "render frame",
                         [&renderer](ecs::World& world) { renderer.renderFrame(world); });
 
     const LoopStats stats = runFrames(app, renderer, window.get(), presentation.swapchain, plan);
     renderer.finish();
+    if (options.saveScene && !saveLiveScene(app.world())) return 4;
     if (options.describe) {
       printDescription(app, renderer, plan);
     } else {

@@ -622,6 +622,87 @@ TEST(HeadlessCapture, AFrameBudgetChoosesTheCloudPreset) {
   EXPECT_NE(fixed.find("frame rate:"), std::string::npos) << fixed;  // it ran
 }
 
+// The scene as the player made it (live_settings.h, the settings panel's path; a script's "set"
+// here) saves (--save-scene) to a file that renders the very frames the player saw: changed at
+// the first frame, captured once the change has settled (a time of day changed in flight takes
+// a few frames to reach every cached input), saved, loaded back and captured again: the same
+// pixels, where the unchanged scene differs.
+TEST(HeadlessCapture, TheSceneAsThePlayerMadeItSavesAndLoadsBackToTheSameFrames) {
+  const fs::path dir = freshDir("saved_scene");
+  fs::create_directories(dir);
+  const auto script = [&](const char* name, const std::string& firstEvents) {
+    const fs::path path = dir / name;
+    std::ofstream(path)
+        << R"({"events": [)" + firstEvents +
+               R"({"frame": 60, "capture": "frame"}, {"frame": 60, "exit": true}]})";
+    return path.string();
+  };
+  const std::string changed = script(
+      "changed.json", R"({"frame": 0, "set": {"clouds.coverage": 0.62, "sun.timeOfDayHours": 15.25,
+                          "clouds.wind.directionDegrees": 33, "exposure.compensationEv": 0.5}},)");
+  const std::string plain = script("plain.json", "");
+  const std::string common = "--headless --validation --width 96 --height 54 --fixed-dt 0.05 ";
+  const fs::path saved = dir / "saved.json";
+  ASSERT_EQ(runSample(common + "--script " + changed + " --save-scene " + saved.string() +
+                      " --capture " + (dir / "played").string()),
+            0);
+  ASSERT_EQ(runSample(common + "--script " + plain + " --scene " + saved.string() + " --capture " +
+                      (dir / "loaded").string()),
+            0);
+  ASSERT_EQ(runSample(common + "--script " + plain + " --capture " + (dir / "unchanged").string()),
+            0);
+  const auto differing = [](const ImageRgba32f& a, const ImageRgba32f& b) {
+    std::size_t count = 0;
+    for (std::size_t i = 0; i < std::min(a.pixels.size(), b.pixels.size()); ++i)
+      count += a.pixels[i] != b.pixels[i] ? 1u : 0u;
+    return count + (a.pixels.size() != b.pixels.size() ? 1u : 0u);
+  };
+  // What the player saw (tonemapped, with its exposure) and the linear radiance.
+  for (const char* file : {"frame.png", "frame.exr"}) {
+    SCOPED_TRACE(file);
+    const ImageRgba32f played = engine::assets::readImage(dir / "played" / file);
+    const ImageRgba32f loaded = engine::assets::readImage(dir / "loaded" / file);
+    const ImageRgba32f unchanged = engine::assets::readImage(dir / "unchanged" / file);
+    EXPECT_EQ(differing(played, loaded), 0u);
+    EXPECT_GT(differing(played, unchanged), 1000u);
+  }
+}
+
+// The HUD in a headless run (--hud-headless): F2 opens the settings panel along the right edge
+// below the HUD's line, and changes no other pixel.
+TEST(HeadlessCapture, F2OpensTheSettingsPanelAndTouchesNothingElse) {
+  const fs::path dir = freshDir("settings_panel");
+  fs::create_directories(dir);
+  const auto run = [&](const char* name, const char* keys) {
+    const fs::path script = dir / (std::string(name) + ".json");
+    std::ofstream(script)
+        << std::string(R"({"events": [)") + keys +
+               R"({"frame": 4, "capture": "frame"}, {"frame": 4, "exit": true}]})";
+    EXPECT_EQ(runSample("--headless --validation --hud-headless --width 320 --height 180 "
+                        "--fixed-dt 0.05 --script " +
+                        script.string() + " --capture " + (dir / name).string()),
+              0);
+    return engine::assets::readImage(dir / name / "frame.png");
+  };
+  const ImageRgba32f closed = run("closed", "");
+  const ImageRgba32f open = run("open", R"({"frame": 1, "press": ["F2"]}, )");
+  ASSERT_EQ(closed.pixels.size(), open.pixels.size());
+  double panelChange = 0.0;
+  std::size_t elsewhere = 0;
+  for (std::uint32_t y = 0; y < closed.height; ++y) {
+    for (std::uint32_t x = 0; x < closed.width; ++x) {
+      const bool inPanel = x >= closed.width - 306 && y >= 44;
+      for (int c = 0; c < 3; ++c) {
+        const float d = std::abs(closed.at(x, y)[c] - open.at(x, y)[c]);
+        if (inPanel) panelChange += d;
+        if (!inPanel && d != 0.0f) ++elsewhere;
+      }
+    }
+  }
+  EXPECT_EQ(elsewhere, 0u);
+  EXPECT_GT(panelChange / (306.0 * (closed.height - 44) * 3.0), 0.05);  // the panel is there
+}
+
 TEST(HeadlessCapture, FliesOverAUserSuppliedTerrain) {
   const fs::path dir = freshDir("user_terrain");
   ASSERT_EQ(runSample("--headless --frames 1 --width 96 --height 54 --validation --terrain " +

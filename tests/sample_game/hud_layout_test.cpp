@@ -10,6 +10,8 @@
 #include "clouds/ecs/frame_budget.h"
 #include "engine/render/scene_components.h"
 #include "game/game_components.h"
+#include "game/live_settings.h"
+#include "render/settings_panel.h"
 
 namespace {
 
@@ -27,6 +29,9 @@ struct HudWorld {
     governor.reason = "holding";
     world.ctx().emplace<clouds::ecs::CloudGovernorStatus>(governor);
     world.ctx().emplace<clouds::ecs::CloudStatus>();
+    sample::SceneDescription scene;
+    scene.clouds = sample::CloudDescription{};
+    world.ctx().emplace<sample::LiveScene>(sample::LiveScene{scene, "edited.json", {}});
     // The default scene's passes.
     for (const char* name : {"cloud shadows", "atmosphere luts", "terrain sunlight", "scene", "sky",
                              "clouds", "clouds composite", "god rays", "haze", "tonemap", "hud"}) {
@@ -49,6 +54,19 @@ TEST(Hud, ByDefaultItIsOneLineUnderATenthOfTheWindow) {
   // F1: the help and every pass's time.
   const glm::vec2 full = sample::measureHud(w.world, w.timings, window, true);
   EXPECT_GT(full.y, line.y + 14.0f * float(w.timings.size()));
+}
+
+// The settings panel (F2) fits a 640x360 window below the HUD's line: it scrolls rather than
+// run off the bottom.
+TEST(Hud, TheSettingsPanelFitsTheWindow) {
+  HudWorld w;
+  const glm::vec2 panel = sample::measureHud(w.world, w.timings, VkExtent2D{640, 360}, false, true);
+  std::printf("the settings panel: %.0f x %.0f px\n", double(panel.x), double(panel.y));
+  const glm::vec2 line = sample::measureHud(w.world, w.timings, VkExtent2D{640, 360}, false);
+  EXPECT_GE(sample::kSettingsPanelTop, 6.0f + line.y);  // below the HUD's line
+  EXPECT_LE(sample::kSettingsPanelTop + panel.y, 360.0f - 6.0f);
+  EXPECT_GT(panel.y, 200.0f);  // it has its sliders
+  EXPECT_LE(panel.x, 640.0f - 12.0f);
 }
 
 }  // namespace

@@ -10,6 +10,7 @@
 #include "engine/ecs/app.h"
 #include "scene/scene_description.h"
 #include "scene/scene_loader.h"
+#include "scene/scene_writer.h"
 
 namespace {
 
@@ -72,6 +73,48 @@ TEST(Scenes, ValuesArriveInTheDescription) {
   EXPECT_EQ(governed.camera.frameTargetMilliseconds, 16.7);
   EXPECT_FALSE(s.atmosphere.has_value()) << "no atmosphere unless the scene asks";
   EXPECT_FALSE(s.fog.has_value());
+}
+
+// Every shipped scene written back (scene_writer.h, what the settings panel saves) loads to
+// the same description: written again, the very same JSON, and the fields the writer derives
+// (the wind's direction, an atmosphere preset's parameters, a storm's cells found in the
+// weather) equal to the bit.
+TEST(Scenes, EveryShippedSceneWrittenBackLoadsTheSame) {
+  int count = 0;
+  for (const auto& entry :
+       fs::directory_iterator(fs::path(CLOUDSCAPE_ASSET_SOURCE_DIR) / "scenes")) {
+    if (entry.path().extension() != ".json") continue;
+    SCOPED_TRACE(entry.path().string());
+    const sample::SceneDescription original = loadSceneDescription(entry.path());
+    const std::string written = sample::sceneJson(original);
+    const fs::path copy = writeScene("written_" + entry.path().filename().string(), written);
+    const sample::SceneDescription loaded = loadSceneDescription(copy);
+    EXPECT_EQ(sample::sceneJson(loaded), written);
+    if (original.clouds) {
+      ASSERT_TRUE(loaded.clouds);
+      EXPECT_EQ(loaded.clouds->settings.windDirection, original.clouds->settings.windDirection);
+      EXPECT_EQ(loaded.clouds->settings.shadowCascades, original.clouds->settings.shadowCascades);
+      EXPECT_EQ(loaded.clouds->settings.godRaySamples, original.clouds->settings.godRaySamples);
+      EXPECT_EQ(loaded.clouds->heroClouds.size(), original.clouds->heroClouds.size());
+    }
+    if (original.atmosphere) {
+      ASSERT_TRUE(loaded.atmosphere);
+      EXPECT_EQ(loaded.atmosphere->parameters.mieScatteringPerMetre,
+                original.atmosphere->parameters.mieScatteringPerMetre);
+      EXPECT_EQ(loaded.atmosphere->parameters.mieScaleHeightMetres,
+                original.atmosphere->parameters.mieScaleHeightMetres);
+    }
+    if (original.lightning) {
+      ASSERT_TRUE(loaded.lightning);
+      ASSERT_EQ(loaded.lightning->storm.cells.size(), original.lightning->storm.cells.size());
+      for (std::size_t i = 0; i < original.lightning->storm.cells.size(); ++i) {
+        EXPECT_EQ(loaded.lightning->storm.cells[i].positionMetres,
+                  original.lightning->storm.cells[i].positionMetres);
+      }
+    }
+    ++count;
+  }
+  EXPECT_GE(count, 6);
 }
 
 // A scene that does not give its ground's albedo takes its terrain's (meanTerrainAlbedo()),

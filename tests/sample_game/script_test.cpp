@@ -83,6 +83,10 @@ TEST(InputScript, MalformedScriptsAreRejectedWithThePath) {
   };
   const Case cases[] = {
       {R"({"events": [{"frame": 0, "press": ["Warp"]}]})", "events[0].press: unknown key \"Warp\""},
+      {R"({"events": [{"frame": 0, "set": {"clouds.colour": 1}}]})",
+       "events[0].set.clouds.colour: no such live setting"},
+      {R"({"events": [{"frame": 0, "set": {"clouds.coverage": 2}}]})",
+       "events[0].set.clouds.coverage"},
       {R"({"events": [{"frame": 0}]})", "events[0]: needs exactly one action"},
       {R"({"events": [{"frame": 0, "press": ["W"], "exit": true}]})", "needs exactly one action"},
       {R"({"events": [{"frame": -1, "exit": true}]})", "events[0].frame: must be in"},

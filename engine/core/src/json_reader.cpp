@@ -63,6 +63,12 @@ void JsonReader::fail(const std::string& key, const std::string& reason) const {
   throw Error(file_ + ": " + (key.empty() ? path_ : pathOf(key)) + ": " + reason);
 }
 
+std::vector<std::string> JsonReader::keys() const {
+  std::vector<std::string> names;
+  for (const auto& item : value_->items()) names.push_back(item.key());
+  return names;
+}
+
 bool JsonReader::has(const std::string& key) const {
   return value_->contains(key);
 }

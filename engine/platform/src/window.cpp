@@ -184,6 +184,9 @@ void Window::pollEvents() {
   lastMouseX_ = x;
   lastMouseY_ = y;
   haveMouse_ = true;
+  input_.cursorX = input_.mouseCaptured ? -1.0 : x;
+  input_.cursorY = input_.mouseCaptured ? -1.0 : y;
+  input_.leftButtonDown = glfwGetMouseButton(window_, GLFW_MOUSE_BUTTON_LEFT) == GLFW_PRESS;
 }
 
 bool Window::shouldClose() const {

@@ -4,6 +4,7 @@
 
 #include "engine/core/error.h"
 #include "engine/core/json_reader.h"
+#include "game/live_settings.h"
 
 namespace sample {
 
@@ -73,6 +74,16 @@ InputScript InputScript::load(const std::filesystem::path& file) {
       event.lightning = strike;
       ++actions;
     }
+    if (e.has("set")) {
+      const JsonReader values = e.object("set");
+      for (const std::string& name : values.keys()) {
+        const LiveSetting* setting = findLiveSetting(name);
+        if (setting == nullptr) values.fail(name, "no such live setting (live_settings.h)");
+        event.set.emplace_back(name, values.number(name, setting->min, setting->max));
+      }
+      values.finish();
+      ++actions;
+    }
     if (e.has("capture")) {
       event.capture = e.string("capture");
       const std::string& name = *event.capture;
@@ -112,6 +123,7 @@ void InputScript::apply(std::uint64_t frame, engine::platform::InputState& input
     if (e.timeOfDayHours) world.events<SetTimeOfDay>().send(SetTimeOfDay{*e.timeOfDayHours});
     if (e.capture) world.events<CaptureFrame>().send(CaptureFrame{*e.capture});
     if (e.lightning) world.events<clouds::ecs::TriggerLightning>().send(*e.lightning);
+    for (const auto& [name, value] : e.set) applyLiveSetting(world, name, value);
     if (e.exit) world.ctx().get<ExitRequest>().requested = true;
   }
 }

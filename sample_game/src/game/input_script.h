@@ -10,6 +10,7 @@
 //     {"frame": 4, "mouse": [12, -3, 0]},  ([dx, dy, scroll] in pixels; scroll is not used yet)
 //     {"frame": 12, "capture": "ground_view"},
 //     {"frame": 10, "lightning": {"energy": 1.0, "kind": "ground"}},  (a storm's scene only)
+//     {"frame": 0, "set": {"clouds.coverage": 0.7, "sun.timeOfDayHours": 9}},  (live_settings.h)
 //     {"frame": 13, "exit": true}]}
 // Every event has "frame" and exactly one action.
 #include <filesystem>
@@ -33,6 +34,7 @@ struct ScriptEvent {
   std::optional<glm::dvec2> mouse;
   std::optional<std::string> capture;
   std::optional<clouds::ecs::TriggerLightning> lightning;
+  std::vector<std::pair<std::string, double>> set;  // live settings (live_settings.h), by name
   bool exit = false;
 };
 

@@ -2,6 +2,7 @@
 
 #include <imgui.h>
 
+#include <cfloat>
 #include <cmath>
 #include <cstdio>
 #include <cstring>
@@ -12,6 +13,7 @@
 #include "engine/gfx/upload.h"
 #include "engine/platform/input.h"
 #include "render/hud_layout.h"
+#include "render/settings_panel.h"
 #include "sample_shaders/hud.frag.spv.h"
 #include "sample_shaders/hud.vert.spv.h"
 
@@ -91,6 +93,7 @@ void Hud::prepare(ecs::World& world, VkExtent2D extent, std::span<const gfx::Tim
   ImGui::SetCurrentContext(context_);
   const auto& input = world.ctx().get<platform::InputState>();
   if (input.wasPressed(platform::Key::F1)) full_ = !full_;
+  if (input.wasPressed(platform::Key::F2)) panelOpen_ = !panelOpen_;
   slot_ = frame.slot;
   extent_ = extent;
   const auto& time = world.ctx().get<ecs::FrameTime>();
@@ -102,8 +105,13 @@ void Hud::prepare(ecs::World& world, VkExtent2D extent, std::span<const gfx::Tim
   ImGuiIO& io = ImGui::GetIO();
   io.DisplaySize = ImVec2(float(extent.width), float(extent.height));
   io.DeltaTime = time.deltaSeconds > 0.0 ? float(time.deltaSeconds) : 1.0f / 60.0f;
+  // The free cursor drives the panel (a captured one flies the aircraft).
+  io.MousePos = input.cursorX >= 0.0 ? ImVec2(float(input.cursorX), float(input.cursorY))
+                                     : ImVec2(-FLT_MAX, -FLT_MAX);
+  io.MouseDown[0] = input.leftButtonDown && input.cursorX >= 0.0;
   ImGui::NewFrame();
   layOutHud(world, gpuTimings, smoothedFrameSeconds_, full_);
+  if (panelOpen_) layOutSettingsPanel(world, extent);
   ImGui::Render();
 
   const ImDrawData* draw = ImGui::GetDrawData();

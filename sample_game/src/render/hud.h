@@ -31,6 +31,7 @@ class Hud {
               const engine::gfx::Device& device) const;
   // F1: the help and every pass's time besides the one line (hud_layout.h).
   bool full() const { return full_; }
+  bool panelOpen() const { return panelOpen_; }
 
  private:
   engine::gfx::Device& device_;
@@ -46,6 +47,7 @@ class Hud {
   std::uint32_t slot_ = 0;
   VkExtent2D extent_{0, 0};
   bool full_ = false;
+  bool panelOpen_ = false;  // F2: the settings panel
   double smoothedFrameSeconds_ = 0.0;
 };
 

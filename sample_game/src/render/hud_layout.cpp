@@ -8,6 +8,7 @@
 #include "clouds/ecs/frame_budget.h"
 #include "engine/render/scene_components.h"
 #include "game/game_components.h"
+#include "render/settings_panel.h"
 
 namespace sample {
 
@@ -61,7 +62,7 @@ void fullText(ecs::World& world, std::span<const gfx::TimedScope> gpuTimings) {
   ImGui::TextUnformatted("W/S throttle   Shift boost   Up/Down pitch   Left/Right roll");
   ImGui::TextUnformatted("A/D yaw   M mouse look   [ ] time of day   T run time");
   ImGui::TextUnformatted("1-5 cloud quality (Low .. Reference)   G governor on/off");
-  ImGui::TextUnformatted("F12 screenshot   F1 less   Esc quit");
+  ImGui::TextUnformatted("F2 settings panel   F12 screenshot   F1 less   Esc quit");
 }
 
 }  // namespace
@@ -87,7 +88,7 @@ glm::vec2 layOutHud(ecs::World& world, std::span<const gfx::TimedScope> gpuTimin
 }
 
 glm::vec2 measureHud(ecs::World& world, std::span<const gfx::TimedScope> gpuTimings,
-                     VkExtent2D extent, bool full) {
+                     VkExtent2D extent, bool full, bool panel) {
   ImGuiContext* previous = ImGui::GetCurrentContext();
   ImGuiContext* context = ImGui::CreateContext();
   ImGui::SetCurrentContext(context);
@@ -104,6 +105,7 @@ glm::vec2 measureHud(ecs::World& world, std::span<const gfx::TimedScope> gpuTimi
   for (int frame = 0; frame < 2; ++frame) {
     ImGui::NewFrame();
     size = layOutHud(world, gpuTimings, 1.0 / 30.0, full);
+    if (panel) size = layOutSettingsPanel(world, extent);
     ImGui::Render();
   }
   ImGui::DestroyContext(context);

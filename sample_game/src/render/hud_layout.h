@@ -18,8 +18,8 @@ glm::vec2 layOutHud(engine::ecs::World& world, std::span<const engine::gfx::Time
                     double frameSeconds, bool full);
 
 // The size the HUD takes in a window of `extent`, laid out in an ImGui context of its own
-// (for tests; no GPU).
+// (for tests; no GPU). `panel`: the settings panel's size instead.
 glm::vec2 measureHud(engine::ecs::World& world, std::span<const engine::gfx::TimedScope> gpuTimings,
-                     VkExtent2D extent, bool full);
+                     VkExtent2D extent, bool full, bool panel = false);
 
 }  // namespace sample

@@ -119,7 +119,8 @@ CloudDescription readClouds(const JsonReader& r, const std::filesystem::path& sc
   s.detailTileMetres = float(r.number("detailTileMetres", 10.0, 1e6, s.detailTileMetres));
   if (r.has("wind")) {
     const JsonReader wind = r.object("wind");
-    const double direction = glm::radians(wind.number("directionDegrees", -360.0, 360.0, 0.0));
+    c.windDirectionDegrees = wind.number("directionDegrees", -360.0, 360.0, 0.0);
+    const double direction = glm::radians(c.windDirectionDegrees);
     s.windDirection = glm::vec2(float(std::cos(direction)), float(-std::sin(direction)));
     s.windSpeedMetresPerSecond =
         float(wind.number("speedMetresPerSecond", 0.0, 500.0, s.windSpeedMetresPerSecond));

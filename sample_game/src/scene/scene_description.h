@@ -67,6 +67,9 @@ inline constexpr const char* kShippedHeroClouds[] = {"towering_cumulus", "cumulo
 
 struct CloudDescription {
   clouds::Settings settings;
+  // The wind's heading as the scene gives it (settings.windDirection is made from it), so a
+  // scene written back says the very same angle.
+  double windDirectionDegrees = 0.0;
   std::uint32_t noiseSeed = 1;
   std::optional<std::filesystem::path> weatherMap;  // painted map (PNG), relative to the scene
   std::vector<HeroCloudDescription> heroClouds;     // at most 64

@@ -27,6 +27,8 @@ class JsonReader {
   JsonReader(const nlohmann::json& value, std::string file, std::string path = {});
 
   bool has(const std::string& key) const;
+  // The object's keys, sorted (for objects whose keys are names, not fields).
+  std::vector<std::string> keys() const;
   // Child object reader; required unless has() was checked.
   JsonReader object(const std::string& key) const;
   // Array of objects.

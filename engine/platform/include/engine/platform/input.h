@@ -70,6 +70,10 @@ struct InputState {
   double mouseDeltaY = 0.0;
   double scrollY = 0.0;
   bool mouseCaptured = false;
+  // The free cursor (not captured), in window pixels from the top left; -1 when unknown.
+  double cursorX = -1.0;
+  double cursorY = -1.0;
+  bool leftButtonDown = false;
 
   bool isDown(Key key) const { return down[static_cast<std::size_t>(key)]; }
   bool wasPressed(Key key) const { return pressed[static_cast<std::size_t>(key)]; }

@@ -1,0 +1,48 @@
+#pragma once
+// The scene's values a player tunes while flying: the settings panel's sliders and a script's
+// "set" events go through this one table. Each entry names its scene JSON path and range and
+// writes both the live world and the scene as it will be saved (LiveScene), so that a saved
+// scene loads back to the very frames the player saw.
+#include <filesystem>
+#include <span>
+#include <string_view>
+
+#include "engine/ecs/world.h"
+#include "scene/scene_description.h"
+
+namespace sample {
+
+struct LiveSetting {
+  const char* name;   // its scene JSON path, e.g. "clouds.coverage"
+  const char* label;  // the panel's
+  double min;         // the slider's range (within what the scene file accepts)
+  double max;
+  bool (*available)(const SceneDescription& scene);  // the scene has what it tunes
+  double (*get)(const SceneDescription& scene);
+  // Writes `value` (within [min, max]) into the world's components and into `scene`.
+  void (*set)(engine::ecs::World& world, SceneDescription& scene, double value);
+};
+
+std::span<const LiveSetting> liveSettings();
+const LiveSetting* findLiveSetting(std::string_view name);
+
+// Context singleton: the scene as loaded with the player's changes, what a save writes, and
+// where (--save-scene, else "edited_scene.json").
+struct LiveScene {
+  SceneDescription scene;
+  std::filesystem::path saveTo;
+  std::string lastSave;  // what the last save said (the path written, or why it failed)
+};
+
+// Applies `value` to the setting named `name`. Throws engine::Error naming it when there is no
+// such setting, the scene has nothing it tunes, or the value is out of its range.
+void applyLiveSetting(engine::ecs::World& world, std::string_view name, double value);
+
+// The scene to save: LiveScene's, with the world's clock, the camera's cloud preset and its
+// frame budget (none when it has none) folded in.
+SceneDescription sceneToSave(engine::ecs::World& world);
+// Writes sceneToSave() to LiveScene::saveTo and records the outcome in LiveScene::lastSave.
+// Returns false (nothing thrown) when it cannot be written.
+bool saveLiveScene(engine::ecs::World& world);
+
+}  // namespace sample

@@ -1,0 +1,100 @@
+#include "render/settings_panel.h"
+
+#include <imgui.h>
+
+#include <array>
+#include <string>
+
+#include "clouds/ecs/cloud_components.h"
+#include "clouds/ecs/frame_budget.h"
+#include "engine/core/error.h"
+#include "game/live_settings.h"
+
+namespace sample {
+namespace {
+
+using engine::ecs::World;
+
+constexpr float kPanelWidth = 300.0f;  // px
+
+void liveSliders(World& world, std::string& problem) {
+  auto& live = world.ctx().get<LiveScene>();
+  for (const LiveSetting& setting : liveSettings()) {
+    if (!setting.available(live.scene)) continue;
+    float value = float(setting.get(live.scene));
+    if (ImGui::SliderFloat(setting.label, &value, float(setting.min), float(setting.max))) {
+      try {
+        applyLiveSetting(world, setting.name, double(value));
+      } catch (const engine::Error& error) {
+        problem = error.what();
+      }
+    }
+  }
+}
+
+void qualityControls(World& world) {
+  static constexpr std::array<clouds::Quality, 5> kPresets = {
+      clouds::Quality::Low, clouds::Quality::Medium, clouds::Quality::High, clouds::Quality::Ultra,
+      clouds::Quality::Reference};
+  world.view<clouds::ecs::CloudQuality>().each(
+      [&](engine::ecs::Entity camera, clouds::ecs::CloudQuality& quality) {
+        auto* budget = world.tryGet<clouds::ecs::CloudFrameBudget>(camera);
+        bool governed = budget != nullptr;
+        if (ImGui::Checkbox("governor", &governed)) {
+          if (governed) {
+            world.emplace<clouds::ecs::CloudFrameBudget>(camera, clouds::ecs::CloudFrameBudget{});
+          } else {
+            world.remove<clouds::ecs::CloudFrameBudget>(camera);
+          }
+          return;  // the budget changed under `budget`: the next frame shows it
+        }
+        if (budget != nullptr) {
+          float target = float(budget->targetMilliseconds);
+          if (ImGui::SliderFloat("target (ms)", &target, 5.0f, 200.0f)) {
+            budget->targetMilliseconds = double(target);
+          }
+        }
+        if (ImGui::BeginCombo("clouds", clouds::qualityName(quality.preset))) {
+          for (clouds::Quality preset : kPresets) {
+            if (ImGui::Selectable(clouds::qualityName(preset), preset == quality.preset)) {
+              quality.preset = preset;
+              world.remove<clouds::ecs::CloudFrameBudget>(camera);  // a fixed preset
+            }
+          }
+          ImGui::EndCombo();
+        }
+      });
+}
+
+}  // namespace
+
+glm::vec2 layOutSettingsPanel(World& world, VkExtent2D extent) {
+  static std::string problem;      // the last refused value, shown until the next one is taken
+  constexpr float kMargin = 6.0f;  // px
+  ImGui::SetNextWindowPos(ImVec2(float(extent.width) - kPanelWidth - kMargin, kSettingsPanelTop),
+                          ImGuiCond_Always);
+  ImGui::SetNextWindowSizeConstraints(
+      ImVec2(kPanelWidth, 0.0f),
+      ImVec2(kPanelWidth, float(extent.height) - kSettingsPanelTop - kMargin));
+  ImGui::SetNextWindowBgAlpha(0.7f);
+  ImGui::Begin("settings (F2)", nullptr,
+               ImGuiWindowFlags_NoMove | ImGuiWindowFlags_AlwaysAutoResize |
+                   ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoCollapse);
+  ImGui::PushItemWidth(kPanelWidth * 0.5f);
+  qualityControls(world);
+  ImGui::Separator();
+  liveSliders(world, problem);
+  ImGui::Separator();
+  auto& live = world.ctx().get<LiveScene>();
+  if (ImGui::Button("save scene")) saveLiveScene(world);
+  ImGui::SameLine();
+  ImGui::TextUnformatted(live.saveTo.filename().string().c_str());
+  if (!live.lastSave.empty()) ImGui::TextWrapped("%s", live.lastSave.c_str());
+  if (!problem.empty()) ImGui::TextWrapped("%s", problem.c_str());
+  ImGui::PopItemWidth();
+  const ImVec2 size = ImGui::GetWindowSize();
+  ImGui::End();
+  return {size.x, size.y};
+}
+
+}  // namespace sample
