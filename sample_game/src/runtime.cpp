@@ -25,6 +25,7 @@
 #include "game/game_components.h"
 #include "game/input_script.h"
 #include "game/live_settings.h"
+#include "game/scene_hot_reload.h"
 #include "render/renderer.h"
 #include "scene/scene_description.h"
 #include "scene/scene_loader.h"
@@ -383,7 +384,8 @@ int run(Options commandLine) {
                              gfx::FrameRing::kFramesInFlight, rendererOptions.maxExtent});
     populateScene(app, plan.scene, plan.terrain, plan.heroClouds);
     app.world().ctx().emplace<LiveScene>(
-        LiveScene{plan.scene, options.saveScene.value_or("edited_scene.json"), {}});
+        LiveScene{plan.scene, options.saveScene.value_or("edited_scene.json"), {}, {}});
+    installSceneHotReload(app.scheduler(), plan.scene);
     Renderer renderer(device, *presentation.target, app.world(), rendererOptions);
     app.scheduler().add(ecs::Phase::Render, "render frame",
                         [&renderer](ecs::World& world) { renderer.renderFrame(world); });

@@ -703,6 +703,79 @@ TEST(HeadlessCapture, F2OpensTheSettingsPanelAndTouchesNothingElse) {
   EXPECT_GT(panelChange / (306.0 * (closed.height - 44) * 3.0), 0.05);  // the panel is there
 }
 
+// Editing the scene file while the sample runs: a file that does not load is reported and the
+// running scene kept; one that loads is applied where it can be live (a thinner cover, here),
+// and what needs a restart (the terrain's shadows) is said to. Each edit is written (whole,
+// by a rename) once the sample has logged what the one before did.
+TEST(HeadlessCapture, EditingTheSceneFileWhileItRunsAppliesIt) {
+  const fs::path dir = freshDir("hot_reload");
+  fs::create_directories(dir);
+  const fs::path scene = dir / "scene.json";
+  std::string text;
+  {
+    std::ifstream in(fs::path(SAMPLE_ASSET_DIR) / "scenes" / "default.json");
+    text.assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+  }
+  std::ofstream(scene) << text;
+  const auto rewrite = [&](const std::string& content) {
+    std::ofstream(dir / "next.json") << content;
+    fs::rename(dir / "next.json", scene);
+  };
+  // `text` with `from` replaced by `to`, kept as the text the next edit starts from.
+  const auto replaced = [&](const std::string& from, const std::string& to) {
+    std::string& edited = text;
+    const std::size_t at = edited.find(from);
+    EXPECT_NE(at, std::string::npos) << from;
+    if (at != std::string::npos) edited.replace(at, from.size(), to);
+    return edited;
+  };
+  const std::string common = "--headless --validation --width 96 --height 54 --fixed-dt 0.05 ";
+  const std::string command = std::string(SAMPLE_GAME_EXE) + " " + common +
+                              "--frames 900 --scene " + scene.string() + " --capture " +
+                              (dir / "edited").string() + " 2>&1";
+  std::unique_ptr<FILE, int (*)(FILE*)> pipe(popen(command.c_str(), "r"), pclose);
+  ASSERT_TRUE(pipe);
+  std::string log;
+  int step = 0;
+  std::array<char, 1024> line{};
+  while (std::fgets(line.data(), line.size(), pipe.get()) != nullptr) {
+    const std::string l = line.data();
+    log += l;
+    if (step == 0 && l.find("pipelines warmed up") != std::string::npos) {
+      rewrite("{ \"name\": ");  // not JSON
+      step = 1;
+    } else if (step == 1 && l.find("scene not reloaded") != std::string::npos) {
+      rewrite(replaced("\"coverage\": 0.6", "\"coverage\": 0.25"));
+      step = 2;
+    } else if (step == 2 && l.find("scene reloaded") != std::string::npos) {
+      rewrite(replaced("\"gltf\": \"default\"", "\"gltf\": \"default\", \"castsShadows\": false"));
+      step = 3;
+    }
+  }
+  pipe.reset();
+  EXPECT_NE(log.find("scene not reloaded: " + scene.string()), std::string::npos) << log;
+  EXPECT_NE(log.find("(the running scene is kept)"), std::string::npos) << log;
+  EXPECT_NE(log.find("scene reloaded: scene.json: applied\n"), std::string::npos) << log;
+  EXPECT_NE(log.find("scene reloaded: scene.json: applied; other changes"), std::string::npos)
+      << log;
+
+  ASSERT_EQ(runSample(common + "--frames 900 --scene " +
+                      (fs::path(SAMPLE_ASSET_DIR) / "scenes" / "default.json").string() +
+                      " --capture " + (dir / "unedited").string()),
+            0);
+  const ImageRgba32f edited = engine::assets::readImage(dir / "edited" / "frame_0899.exr");
+  const ImageRgba32f unedited = engine::assets::readImage(dir / "unedited" / "frame_0899.exr");
+  // The thinner cover lets more of the sky and the ground through: the clouds' transmittance
+  // is folded into the picture, so compare the sky's part above the horizon, the top third.
+  double change = 0.0;
+  for (std::uint32_t y = 0; y < edited.height / 3; ++y)
+    for (std::uint32_t x = 0; x < edited.width; ++x)
+      change += std::abs(edited.at(x, y)[1] - unedited.at(x, y)[1]);
+  std::printf("the sky after the edit: %.4f mean change\n",
+              change / (edited.width * (edited.height / 3)));
+  EXPECT_GT(change / (edited.width * (edited.height / 3)), 1.0);  // 0.000 without the edit
+}
+
 TEST(HeadlessCapture, FliesOverAUserSuppliedTerrain) {
   const fs::path dir = freshDir("user_terrain");
   ASSERT_EQ(runSample("--headless --frames 1 --width 96 --height 54 --validation --terrain " +

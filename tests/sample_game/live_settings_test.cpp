@@ -2,6 +2,7 @@
 // world and the scene that a save writes alike, refuses what is out of range or absent by name,
 // and the scene to save folds in the camera's preset and budget.
 #include "game/live_settings.h"
+#include "game/scene_hot_reload.h"
 
 #include <gtest/gtest.h>
 
@@ -92,6 +93,33 @@ TEST(LiveSettings, TheSceneToSaveHasTheCamerasPresetAndBudget) {
   EXPECT_EQ(sample::sceneToSave(w.world).camera.frameTargetMilliseconds, 0.0) << "fixed";
   w.world.emplace<clouds::ecs::CloudFrameBudget>(w.camera, clouds::ecs::CloudFrameBudget{20.0});
   EXPECT_EQ(sample::sceneToSave(w.world).camera.frameTargetMilliseconds, 20.0);
+}
+
+// A reloaded scene file (scene_hot_reload.h) applies what the file changed and nothing else:
+// a clock the player set running keeps its time where the file left the time of day alone,
+// and a change only a restart makes is said to.
+TEST(SceneHotReload, AppliesWhatTheFileChangedAndSaysWhatWaitsForARestart) {
+  LiveWorld w;
+  w.world.view<sample::TimeOfDay>().each([](sample::TimeOfDay& t) { t.hours = 17.5; });
+  sample::SceneDescription before = w.scene();
+  sample::SceneDescription next = before;
+  next.clouds->settings.coverage = 0.3f;
+  next.exposure.compensationEv = 1.0;
+  EXPECT_EQ(sample::applyReloadedScene(w.world, before, next), "applied");
+  EXPECT_EQ(w.layer().coverage, 0.3f);
+  EXPECT_EQ(w.world.ctx().get<engine::render::Exposure>().compensationEv, 1.0f);
+  w.world.view<const sample::TimeOfDay>().each(
+      [](const sample::TimeOfDay& t) { EXPECT_EQ(t.hours, 17.5); });
+  EXPECT_EQ(w.scene().clouds->settings.coverage, 0.3f) << "what a save writes";
+
+  before = next;
+  next.terrain = sample::TerrainDescription{"default", false, std::nullopt};
+  next.sun.timeOfDayHours = 8.0;
+  EXPECT_NE(sample::applyReloadedScene(w.world, before, next).find("at restart"),
+            std::string::npos);
+  w.world.view<const sample::TimeOfDay>().each(
+      [](const sample::TimeOfDay& t) { EXPECT_EQ(t.hours, 8.0); });
+  EXPECT_FALSE(w.scene().terrain.has_value()) << "the running scene has no terrain yet";
 }
 
 }  // namespace

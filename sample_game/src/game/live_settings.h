@@ -31,7 +31,8 @@ const LiveSetting* findLiveSetting(std::string_view name);
 struct LiveScene {
   SceneDescription scene;
   std::filesystem::path saveTo;
-  std::string lastSave;  // what the last save said (the path written, or why it failed)
+  std::string lastSave;      // what the last save said (the path written, or why it failed)
+  std::string reloadStatus;  // what the last hot reload did, or why the file did not load
 };
 
 // Applies `value` to the setting named `name`. Throws engine::Error naming it when there is no

@@ -91,6 +91,7 @@ glm::vec2 layOutSettingsPanel(World& world, VkExtent2D extent) {
   ImGui::TextUnformatted(live.saveTo.filename().string().c_str());
   if (!live.lastSave.empty()) ImGui::TextWrapped("%s", live.lastSave.c_str());
   if (!problem.empty()) ImGui::TextWrapped("%s", problem.c_str());
+  if (!live.reloadStatus.empty()) ImGui::TextWrapped("%s", live.reloadStatus.c_str());
   ImGui::PopItemWidth();
   const ImVec2 size = ImGui::GetWindowSize();
   ImGui::End();
