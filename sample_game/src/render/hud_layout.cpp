@@ -105,7 +105,7 @@ glm::vec2 measureHud(ecs::World& world, std::span<const gfx::TimedScope> gpuTimi
   for (int frame = 0; frame < 2; ++frame) {
     ImGui::NewFrame();
     size = layOutHud(world, gpuTimings, 1.0 / 30.0, full);
-    if (panel) size = layOutSettingsPanel(world, extent);
+    if (panel) size = layOutSettingsPanel(world, extent, true);
     ImGui::Render();
   }
   ImGui::DestroyContext(context);

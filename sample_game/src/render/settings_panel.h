@@ -15,7 +15,8 @@ namespace sample {
 inline constexpr float kSettingsPanelTop = 44.0f;
 
 // Lays the panel out along the right edge of a window of `extent`, from kSettingsPanelTop down
-// (scrolling when it is taller than the window); returns its size in pixels.
-glm::vec2 layOutSettingsPanel(engine::ecs::World& world, VkExtent2D extent);
+// (scrolling when it is taller than the window); returns its size in pixels. Its sections
+// start closed, or open with `allOpen`.
+glm::vec2 layOutSettingsPanel(engine::ecs::World& world, VkExtent2D extent, bool allOpen = false);
 
 }  // namespace sample
