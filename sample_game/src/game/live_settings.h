@@ -33,6 +33,7 @@ struct LiveScene {
   std::filesystem::path saveTo;
   std::string lastSave;      // what the last save said (the path written, or why it failed)
   std::string reloadStatus;  // what the last hot reload did, or why the file did not load
+  std::string lastRefusal;   // the last value the panel could not take, and why
 };
 
 // Applies `value` to the setting named `name`. Throws engine::Error naming it when there is no

@@ -20,7 +20,7 @@ constexpr float kPanelWidth = 250.0f;  // px
 
 // The live settings under a header per scene section ("clouds", "sun", "exposure"), closed
 // until opened: a smaller panel costs less to draw (on a CPU device, per pixel).
-void liveSliders(World& world, std::string& problem, bool allOpen) {
+void liveSliders(World& world, bool allOpen) {
   auto& live = world.ctx().get<LiveScene>();
   std::string_view section;
   bool open = false;
@@ -38,8 +38,9 @@ void liveSliders(World& world, std::string& problem, bool allOpen) {
     if (ImGui::SliderFloat(setting.label, &value, float(setting.min), float(setting.max))) {
       try {
         applyLiveSetting(world, setting.name, double(value));
+        live.lastRefusal.clear();
       } catch (const engine::Error& error) {
-        problem = error.what();
+        live.lastRefusal = error.what();
       }
     }
   }
@@ -82,7 +83,6 @@ void qualityControls(World& world) {
 }  // namespace
 
 glm::vec2 layOutSettingsPanel(World& world, VkExtent2D extent, bool allOpen) {
-  static std::string problem;      // the last refused value, shown until the next one is taken
   constexpr float kMargin = 6.0f;  // px
   ImGui::SetNextWindowPos(ImVec2(float(extent.width) - kPanelWidth - kMargin, kSettingsPanelTop),
                           ImGuiCond_Always);
@@ -96,14 +96,14 @@ glm::vec2 layOutSettingsPanel(World& world, VkExtent2D extent, bool allOpen) {
   ImGui::PushItemWidth(kPanelWidth * 0.5f);
   qualityControls(world);
   ImGui::Separator();
-  liveSliders(world, problem, allOpen);
+  liveSliders(world, allOpen);
   ImGui::Separator();
   auto& live = world.ctx().get<LiveScene>();
   if (ImGui::Button("save scene")) saveLiveScene(world);
   ImGui::SameLine();
   ImGui::TextUnformatted(live.saveTo.filename().string().c_str());
   if (!live.lastSave.empty()) ImGui::TextWrapped("%s", live.lastSave.c_str());
-  if (!problem.empty()) ImGui::TextWrapped("%s", problem.c_str());
+  if (!live.lastRefusal.empty()) ImGui::TextWrapped("%s", live.lastRefusal.c_str());
   if (!live.reloadStatus.empty()) ImGui::TextWrapped("%s", live.reloadStatus.c_str());
   ImGui::PopItemWidth();
   const ImVec2 size = ImGui::GetWindowSize();
