@@ -191,10 +191,11 @@ const char* governorReasonName(FrameTimeGovernor::Reason reason) {
   return "unknown";
 }
 
-PresetLadder presetLadder() {
+const PresetLadder& presetLadder() {
   // Low and Medium measure alike today (issue 53's ladder separates them).
-  return PresetLadder{{Quality::Low, Quality::Medium, Quality::High, Quality::Ultra},
-                      {5.1, 5.2, 12.8, 31.3}};
+  static const PresetLadder kLadder{{Quality::Low, Quality::Medium, Quality::High, Quality::Ultra},
+                                    {5.1, 5.2, 12.8, 31.3}};
+  return kLadder;
 }
 
 }  // namespace clouds

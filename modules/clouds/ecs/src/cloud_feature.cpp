@@ -137,12 +137,12 @@ clouds::Settings CloudFeature::forTheEngine(clouds::Settings settings) {
 }
 
 void CloudFeature::prepareGovernedPresets(VkExtent2D extent) {
-  const std::vector<clouds::Quality> presets = governedPresets(world_);
-  if (presets == preparedAhead_ && extent.width == preparedAheadExtent_.width &&
-      extent.height == preparedAheadExtent_.height) {
+  const std::span<const clouds::Quality> presets = governedPresets(world_);
+  if (std::equal(presets.begin(), presets.end(), preparedAhead_.begin(), preparedAhead_.end()) &&
+      extent.width == preparedAheadExtent_.width && extent.height == preparedAheadExtent_.height) {
     return;
   }
-  preparedAhead_ = presets;
+  preparedAhead_.assign(presets.begin(), presets.end());
   preparedAheadExtent_ = extent;
   // Dearest first: its images are the largest, and the others then fit in them.
   for (auto it = presets.rbegin(); it != presets.rend(); ++it) {

@@ -58,7 +58,7 @@ Budgeted budgetedCamera(engine::ecs::World& world) {
 
 // What the system keeps between frames: the governor, and what it was made for.
 struct GovernorState {
-  clouds::PresetLadder ladder = clouds::presetLadder();
+  const clouds::PresetLadder& ladder = clouds::presetLadder();
   std::optional<clouds::FrameTimeGovernor> governor;
   clouds::Quality floor{};
   clouds::Quality ceiling{};
@@ -142,14 +142,13 @@ void installFrameBudget(engine::ecs::World& world, engine::ecs::Scheduler& sched
       [state = std::make_shared<GovernorState>()](engine::ecs::World& w) { state->govern(w); });
 }
 
-std::vector<clouds::Quality> governedPresets(engine::ecs::World& world) {
+std::span<const clouds::Quality> governedPresets(engine::ecs::World& world) {
   const Budgeted camera = budgetedCamera(world);
   if (camera.budget == nullptr) return {};
-  const clouds::PresetLadder ladder = clouds::presetLadder();
+  const clouds::PresetLadder& ladder = clouds::presetLadder();
   const BudgetRungs rungs = rungsOf(*camera.budget, ladder);
   if (!rungs.error.empty() || rungs.floor > rungs.ceiling) return {};
-  return {ladder.presets.begin() + std::ptrdiff_t(rungs.floor),
-          ladder.presets.begin() + std::ptrdiff_t(rungs.ceiling) + 1};
+  return std::span(ladder.presets).subspan(rungs.floor, rungs.ceiling - rungs.floor + 1);
 }
 
 }  // namespace clouds::ecs

@@ -121,6 +121,6 @@ struct PresetLadder {
   std::vector<Quality> presets;
   std::vector<double> nominalMilliseconds;
 };
-PresetLadder presetLadder();
+const PresetLadder& presetLadder();  // made once
 
 }  // namespace clouds

@@ -7,8 +7,8 @@
 // whoever sets it (the sample's number keys); adding it again starts a new governor from the
 // camera's preset.
 #include <cstdint>
+#include <span>
 #include <string>
-#include <vector>
 
 #include "clouds/clouds.h"
 #include "engine/ecs/scheduler.h"
@@ -37,8 +37,9 @@ struct CloudGovernorStatus {
 // time to the governor of the camera with a CloudFrameBudget and sets its CloudQuality.
 void installFrameBudget(engine::ecs::World& world, engine::ecs::Scheduler& scheduler);
 
-// The presets the budgeted camera may switch between, cheapest first; empty without a budget
-// (or with one the governor refuses).
-std::vector<clouds::Quality> governedPresets(engine::ecs::World& world);
+// The presets the budgeted camera may switch between, cheapest first (a view of
+// clouds::presetLadder(): nothing is allocated, as it is asked every frame); empty without a
+// budget (or with one the governor refuses).
+std::span<const clouds::Quality> governedPresets(engine::ecs::World& world);
 
 }  // namespace clouds::ecs
