@@ -1,5 +1,6 @@
 #include "bench_report.h"
 
+#include "bench_ladder.h"
 #include "bench_shadow_report.h"
 
 #include <algorithm>
@@ -178,6 +179,49 @@ void writeCsv(const std::filesystem::path& file, const BenchResults& results) {
   }
 }
 
+namespace {
+
+// The ladder's rows of the targets table: each preset a real step above the one below,
+// Medium's worst view, and the governed flight when the run was given one.
+void writeLadderTargets(std::ostream& out, const BenchResults& results) {
+  const auto verdict = [](bool met) { return met ? "met" : "**not met**"; };
+  for (const LadderStep& step : ladderSteps(results)) {
+    out << "| " << step.lower << " at most " << format("%.1f", kLadderCostRatio) << "x "
+        << step.upper << "'s time, " << step.upper << " at least " << format("%.0f", kLadderGainDb)
+        << " dB more accurate (pooled) | " << format("%.2f", step.costRatio) << "x, +"
+        << format("%.1f", step.gainDb) << " dB | "
+        << verdict(step.cheapEnough() && step.gainsEnough()) << " |\n";
+  }
+  const Aggregate medium = aggregateStatic(results, "Medium");
+  if (medium.milliseconds > 0.0) {
+    out << "| Medium PSNR >= 33 dB on every static view | " << format("%.1f", medium.minPsnr)
+        << " dB worst, " << format("%.1f", medium.psnr) << " dB pooled | "
+        << verdict(medium.minPsnr >= 33.0) << " |\n";
+  }
+  if (results.options.governorSeries.empty()) return;
+  const GovernedFlight flight = readGovernedFlight(results.options.governorSeries);
+  std::string medians, presets;
+  for (double m : flight.tenSecondMedians)
+    medians += (medians.empty() ? "" : ", ") + format("%.1f", m);
+  for (const auto& [name, frames] : flight.framesPerPreset) {
+    presets += (presets.empty() ? "" : ", ") + name + " " +
+               format("%.0f%%", 100.0 * double(frames) / double(flight.frames));
+  }
+  out << "| The governor holds the sample's frame within 10% of its "
+      << format("%.1f", flight.targetMs) << " ms target ("
+      << results.options.governorSeries.filename().string() << ": " << flight.frames << " frames, "
+      << format("%.0f", flight.seconds) << " s; at least 95% of frames) | "
+      << format("%.1f%%", 100.0 * flight.fractionOverTenPercent)
+      << " of frames more than 10% over; wall time a frame median "
+      << format("%.1f", flight.medianWallMs) << " ms, by 10 s " << medians << "; presets "
+      << presets << "; " << flight.presetChanges << " changes";
+  if (flight.shortestGapFrames > 0)
+    out << ", at least " << flight.shortestGapFrames << " frames apart";
+  out << " | " << verdict(flight.fractionOverTenPercent <= 0.05) << " |\n";
+}
+
+}  // namespace
+
 void writeMarkdown(const std::filesystem::path& file, const BenchResults& results) {
   std::ofstream out = openOrThrow(file);
   const RunOptions& o = results.options;
@@ -260,6 +304,7 @@ void writeMarkdown(const std::filesystem::path& file, const BenchResults& result
         << "% of High's time; within it, so not counted: " << joined(front.withinNoise);
   }
   out << " | " << verdict(front.beaten.empty()) << " |\n";
+  writeLadderTargets(out, results);
   for (const BenchConfig& c : results.configs) {
     if (!c.preset) continue;
     const Measurement* clear = results.find(c.name, "clear sky");
@@ -421,7 +466,30 @@ void writePlotData(const std::filesystem::path& file, const BenchResults& result
                         : "PSNR against the Reference (dB, pooled over views)"},
         {"series", series}};
   };
-  nlohmann::json plots = {plot(false, "plot_static.png"), plot(true, "plot_fly_through.png")};
+  // The ladder alone: each preset's cost against its pooled and its worst static view.
+  const auto ladder = [&]() {
+    nlohmann::json pooled = nlohmann::json::array(), worst = nlohmann::json::array();
+    for (const BenchConfig& c : results.configs) {
+      if (!c.preset) continue;
+      const Aggregate a = aggregateStatic(results, c.name);
+      pooled.push_back({{"gpu_ms", a.milliseconds}, {"psnr_db", a.psnr}, {"label", c.name}});
+      worst.push_back({{"gpu_ms", a.milliseconds}, {"psnr_db", a.minPsnr}, {"label", ""}});
+    }
+    return nlohmann::json{
+        {"file", "plot_ladder.png"},
+        {"title", "The preset ladder, static views, " +
+                      std::to_string(results.options.extent.width) + "x" +
+                      std::to_string(results.options.extent.height) + " (each rung at most " +
+                      format("%.1f", kLadderCostRatio) + "x the next one's time, " +
+                      format("%.0f", kLadderGainDb) + " dB below it)"},
+        {"x_label", "GPU time per frame (ms, mean over the static views, log scale)"},
+        {"y_label", "PSNR against the Reference (dB)"},
+        {"series",
+         {{{"name", "worst static view"}, {"presets", false}, {"points", worst}},
+          {{"name", "pooled over the static views"}, {"presets", true}, {"points", pooled}}}}};
+  };
+  nlohmann::json plots = {plot(false, "plot_static.png"), plot(true, "plot_fly_through.png"),
+                          ladder()};
   if (!results.shadows.views.empty())
     plots.push_back(shadowPlot(results.shadows, "plot_shadow.png"));
   const nlohmann::json data = {{"plots", plots}};

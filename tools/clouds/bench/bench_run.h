@@ -5,6 +5,7 @@
 // frame from timestamp queries; errors are against the Reference mode of the same view,
 // averaged over frames whose rays move inside their pixels (converged and supersampled).
 #include <cstdint>
+#include <filesystem>
 #include <map>
 #include <string>
 #include <vector>
@@ -31,6 +32,9 @@ struct RunOptions {
   // in the tables) run: for looking into one case without the whole quarter hour.
   std::vector<std::string> onlyViews;
   std::vector<std::string> onlyConfigs;
+  // A governed flight's frame series (sample_game --frame-series), summarised in the targets
+  // table when given.
+  std::filesystem::path governorSeries;
 };
 
 // One configuration on one view (or on the fly-through, view "fly-through").

@@ -110,14 +110,22 @@ clouds::Settings BenchConfig::settingsFor(const clouds::Settings& look) const {
 
 namespace {
 
-// High's value of each knob: where High sits in each sweep.
+// High's value of each knob: where High sits in each sweep (a feature: 1 on, 0 off).
 const std::map<std::string, double>& highKnobs() {
-  static const std::map<std::string, double> knobs = {
-      {"view step", 1.0},           {"light steps", 6.0},
-      {"trace scale", 0.5},         {"update interval", 16.0},
-      {"temporal reuse", 1.0},      {"empty-space skipping", 1.0},
-      {"temporal upsampling", 1.0}, {"noise level of detail", 1.0},
-      {"light reuse", 1.0},         {"edge rays", 2.0}};
+  static const std::map<std::string, double> knobs = [] {
+    const clouds::Settings high = clouds::settingsFor(clouds::Quality::High);
+    const auto on = [](bool feature) { return feature ? 1.0 : 0.0; };
+    return std::map<std::string, double>{{"view step", 1.0},
+                                         {"light steps", double(high.lightSteps)},
+                                         {"trace scale", double(high.traceScale)},
+                                         {"update interval", double(high.updateInterval)},
+                                         {"temporal reuse", on(high.temporalReuse)},
+                                         {"empty-space skipping", on(high.emptySpaceSkipping)},
+                                         {"temporal upsampling", on(high.temporalUpsampling)},
+                                         {"noise level of detail", on(high.noiseLevelOfDetail)},
+                                         {"light reuse", on(high.lightEveryOtherStep)},
+                                         {"edge rays", double(high.edgeRays)}};
+  }();
   return knobs;
 }
 
@@ -169,25 +177,29 @@ std::vector<BenchConfig> benchConfigs() {
         [](clouds::Settings& s, double scale) { s.traceScale = float(scale); });
   sweep("update interval", {4.0, 1.0}, "",
         [](clouds::Settings& s, double n) { s.updateInterval = std::uint32_t(n); });
-  // A feature switched off: one point, named "<feature> off".
-  const auto switchedOff = [&](const char* feature, void (*adjust)(clouds::Settings&, double)) {
-    sweep(feature, {0.0}, "", adjust);
-    configs.back().value = "off";
-    configs.back().name = std::string(feature) + " off";
+  // A feature switched the other way from High's: one point, named "<feature> off" or
+  // "<feature> on".
+  const auto toggled = [&](const char* feature, void (*set)(clouds::Settings&, double)) {
+    const bool highHasIt = highKnobs().at(feature) != 0.0;
+    sweep(feature, {highHasIt ? 0.0 : 1.0}, "", set);
+    configs.back().value = highHasIt ? "off" : "on";
+    configs.back().name = std::string(feature) + " " + configs.back().value;
   };
   // Off: every pixel marched every frame with no history (what reuse saves).
-  switchedOff("temporal reuse", [](clouds::Settings& s, double) {
-    s.temporalReuse = false;
-    s.updateInterval = 1;
+  toggled("temporal reuse", [](clouds::Settings& s, double on) {
+    s.temporalReuse = on != 0.0;
+    if (!s.temporalReuse) s.updateInterval = 1;
   });
-  switchedOff("empty-space skipping",
-              [](clouds::Settings& s, double) { s.emptySpaceSkipping = false; });
-  switchedOff("temporal upsampling",
-              [](clouds::Settings& s, double) { s.temporalUpsampling = false; });
-  switchedOff("noise level of detail",
-              [](clouds::Settings& s, double) { s.noiseLevelOfDetail = false; });
-  switchedOff("light reuse", [](clouds::Settings& s, double) { s.lightEveryOtherStep = false; });
-  switchedOff("edge rays", [](clouds::Settings& s, double) { s.edgeRays = 0; });
+  toggled("empty-space skipping",
+          [](clouds::Settings& s, double on) { s.emptySpaceSkipping = on != 0.0; });
+  toggled("temporal upsampling",
+          [](clouds::Settings& s, double on) { s.temporalUpsampling = on != 0.0; });
+  toggled("noise level of detail",
+          [](clouds::Settings& s, double on) { s.noiseLevelOfDetail = on != 0.0; });
+  toggled("light reuse", [](clouds::Settings& s, double on) { s.lightEveryOtherStep = on != 0.0; });
+  toggled("edge rays", [](clouds::Settings& s, double on) {
+    s.edgeRays = on != 0.0 ? std::max(s.edgeRays, 2u) : 0u;
+  });
   sweep("edge rays", {1.0}, "",
         [](clouds::Settings& s, double n) { s.edgeRays = std::uint32_t(n); });
   BenchConfig again;

@@ -44,6 +44,10 @@ int main(int argc, char** argv) {
       "\"fly-through\")");
   cli.add_option("--config", options.onlyConfigs,
                  "Run only this configuration (repeatable; e.g. High, \"light steps 10\")");
+  cli.add_option("--governor-series", options.governorSeries,
+                 "A governed flight's frame series (sample_game --frame-series FILE): its summary "
+                 "joins the targets")
+      ->check(CLI::ExistingFile);
   bool quick = false;
   cli.add_flag("--quick", quick, "320x180, fewer frames: a few minutes instead of a quarter hour");
   bool validation = false;
