@@ -39,6 +39,8 @@ constexpr SettingEffect row(const char* name, std::uint8_t effects, const char* 
 constexpr std::uint8_t kLook = kResetsHistory;
 constexpr std::uint8_t kShadow = kRemakesShadows;
 constexpr const char* kNoReason = "";  // rows that reset something need no reason
+constexpr const char* kSamePrecisionKnob =
+    "a march precision knob: the history estimates the same clouds; the refresh replaces it";
 
 constexpr SettingEffect kEffects[] = {
     // The layer and its weather.
@@ -84,24 +86,28 @@ constexpr SettingEffect kEffects[] = {
     CLOUDS_SETTING(ambientOcclusionStrength, kLook, kNoReason),
     CLOUDS_SETTING(ambientStrength, kLook, kNoReason),
     CLOUDS_SETTING(sunStrength, kLook, kNoReason),
-    // The march: what a sample of the history was made with.
-    CLOUDS_SETTING(maxViewSteps, kLook, kNoReason),
-    CLOUDS_SETTING(viewStepMetres, kLook, kNoReason),
-    CLOUDS_SETTING(viewStepGrowth, kLook, kNoReason),
-    CLOUDS_SETTING(lightSteps, kLook, kNoReason),
+    // The march: what a sample of the history was made with. Its precision knobs (the
+    // presets' rungs) keep the history: the old samples estimate the same clouds a little
+    // more or less closely, and the refresh cycle replaces them within updateInterval frames,
+    // so a governor moving between presets causes no rebuild (a rebuild marches 4 to 16 times
+    // a frame's rays: a hitch). What changes the clouds themselves resets it.
+    CLOUDS_SETTING(maxViewSteps, kKeepsState, kSamePrecisionKnob),
+    CLOUDS_SETTING(viewStepMetres, kKeepsState, kSamePrecisionKnob),
+    CLOUDS_SETTING(viewStepGrowth, kKeepsState, kSamePrecisionKnob),
+    CLOUDS_SETTING(lightSteps, kKeepsState, kSamePrecisionKnob),
     CLOUDS_SETTING(lightConeMetres, kLook, kNoReason),
     CLOUDS_SETTING(lightConeSpread, kLook, kNoReason),
     CLOUDS_SETTING(maxDistanceMetres, kLook, kNoReason),
-    CLOUDS_SETTING(transmittanceCutoff, kLook, kNoReason),
-    CLOUDS_SETTING(cheapSampling, kLook, kNoReason),
-    CLOUDS_SETTING(coarseStepFactor, kLook, kNoReason),
-    CLOUDS_SETTING(emptySamplesToCoarse, kLook, kNoReason),
+    CLOUDS_SETTING(transmittanceCutoff, kKeepsState, kSamePrecisionKnob),
+    CLOUDS_SETTING(cheapSampling, kKeepsState, kSamePrecisionKnob),
+    CLOUDS_SETTING(coarseStepFactor, kKeepsState, kSamePrecisionKnob),
+    CLOUDS_SETTING(emptySamplesToCoarse, kKeepsState, kSamePrecisionKnob),
     CLOUDS_SETTING(detail, kLook, kNoReason),
-    CLOUDS_SETTING(noiseLevelOfDetail, kLook, kNoReason),
-    CLOUDS_SETTING(noiseTexelsPerPixel, kLook, kNoReason),
-    CLOUDS_SETTING(lightEveryOtherStep, kLook, kNoReason),
+    CLOUDS_SETTING(noiseLevelOfDetail, kKeepsState, kSamePrecisionKnob),
+    CLOUDS_SETTING(noiseTexelsPerPixel, kKeepsState, kSamePrecisionKnob),
+    CLOUDS_SETTING(lightEveryOtherStep, kKeepsState, kSamePrecisionKnob),
     CLOUDS_SETTING(jitter, kLook, kNoReason),
-    CLOUDS_SETTING(emptySpaceSkipping, kLook, kNoReason),
+    CLOUDS_SETTING(emptySpaceSkipping, kKeepsState, kSamePrecisionKnob),
     CLOUDS_SETTING(heroLight, kLook, kNoReason),
     CLOUDS_SETTING(heroDetail, kLook, kNoReason),
     // Temporal reconstruction: its own knobs apply to the next blend.
@@ -120,8 +126,12 @@ constexpr SettingEffect kEffects[] = {
     CLOUDS_SETTING(historyClampSpreadPixels, kKeepsState,
                    "a blend limit: applies to the next blend"),
     CLOUDS_SETTING(insideLayerMarginMetres, kKeepsState, "a rule of the reset decision itself"),
-    // What the far history holds: the clouds beyond it.
-    CLOUDS_SETTING(nearFieldMetres, kLook, kNoReason),
+    CLOUDS_SETTING(movingInsideUpdateInterval, kKeepsState,
+                   "the tile size and refresh order follow it from the next frame"),
+    // What the far history holds while the split is on: the clouds beyond it. Away from the
+    // clouds it is off whatever the distance, so a preset with another split keeps the history.
+    CLOUDS_SETTING(nearFieldMetres, kKeepsState,
+                   "the temporal plan resets when the split comes, goes or moves while on"),
     CLOUDS_SETTING(historyResetDistanceMetres, kKeepsState, "a rule of the reset decision itself"),
     CLOUDS_SETTING(historyResetAngleDegrees, kKeepsState, "a rule of the reset decision itself"),
     CLOUDS_SETTING(relightResetDegrees, kKeepsState, "a rule of the reset decision itself"),
@@ -132,12 +142,16 @@ constexpr SettingEffect kEffects[] = {
     CLOUDS_SETTING(shadowMapResolution, kShadow, kNoReason),
     CLOUDS_SETTING(shadowNearSideMetres, kShadow, kNoReason),
     CLOUDS_SETTING(shadowCascadeRatio, kShadow, kNoReason),
-    CLOUDS_SETTING(shadowSteps, kShadow, kNoReason),
+    CLOUDS_SETTING(shadowSteps, kKeepsState,
+                   "a precision knob: each cascade's next turn marches with it (a remake of all "
+                   "at once is a hitch)"),
     CLOUDS_SETTING(shadowCascadesPerFrame, kKeepsState,
                    "the cascades' refresh schedule: the next turn follows it"),
     CLOUDS_SETTING(shadowFramesPerCascade, kKeepsState,
                    "the cascades' refresh schedule: the next turn follows it"),
-    CLOUDS_SETTING(terrainShadowSteps, kShadow, kNoReason),
+    CLOUDS_SETTING(terrainShadowSteps, kKeepsState,
+                   "a precision knob: each cascade's next turn marches with it (a remake of all "
+                   "at once is a hitch)"),
     // God rays and lightning: made anew every frame.
     CLOUDS_SETTING(godRaySamples, kKeepsState, "the god-ray mask is made anew every frame"),
     CLOUDS_SETTING(godRayLength, kKeepsState, "the god-ray mask is made anew every frame"),

@@ -148,6 +148,10 @@ std::string validateSettings(const Settings& s) {
       s.updateInterval == 1 || s.updateInterval == 4 || s.updateInterval == 16 ||
           s.updateInterval == 64,
       "Settings.updateInterval = " + std::to_string(s.updateInterval) + ": must be 1, 4, 16 or 64");
+  c.require(s.movingInsideUpdateInterval == 1 || s.movingInsideUpdateInterval == 4 ||
+                s.movingInsideUpdateInterval == 16 || s.movingInsideUpdateInterval == 64,
+            "Settings.movingInsideUpdateInterval = " +
+                std::to_string(s.movingInsideUpdateInterval) + ": must be 1, 4, 16 or 64");
   c.require(s.jitter == Jitter::None || s.jitter == Jitter::BayerHalton ||
                 s.jitter == Jitter::BayerHaltonSubpixel,
             "Settings.jitter: unknown mode " + std::to_string(static_cast<unsigned>(s.jitter)));
@@ -230,27 +234,29 @@ Settings settingsFor(Quality quality, const Settings& base) {
   if (quality == Quality::Reference) return referenceSettings(base);
   Settings s = base;
   s.temporalReuse = true;
-  s.emptySpaceSkipping = true;
   s.cheapSampling = true;
   s.jitter = Jitter::BayerHalton;
   s.transmittanceCutoff = 0.01f;
+  // Empty-space skipping and the noise's level of detail do not pay on lavapipe, where the
+  // presets are measured (around High: 2% faster without either, as accurate;
+  // docs/benchmark/results.md, "Cost knobs"), so no preset has them; a host on a GPU whose
+  // benchmark says otherwise turns them on.
+  s.emptySpaceSkipping = false;
+  s.noiseLevelOfDetail = false;
+  // Detail erosion reaches as far as the clouds are drawn in every preset: it costs only where
+  // cloud is, and far clouds seen from above are visibly fatter without it.
+  s.detailDistanceMetres = 60000.0f;
   // The near/far split (nearFieldMetres) is High's and Ultra's, at Nubis³'s 200 m: flying
-  // through dense layer at High it is 1.2 dB more accurate than one march, as accurate through
-  // sparse layer, for 3% more frame time inside the layer (docs/how-a-frame-is-made.md). Low and
-  // Medium, whose quarter-resolution trace would leave the near field an eighth of the output's,
-  // keep one march.
+  // through dense layer it is 1.2 dB more accurate than one march (docs/how-a-frame-is-made.md).
+  // Medium keeps one march: inside a cloud the near field's every-pixel march doubles its time.
   constexpr float kNearFieldMetres = 200.0f;
   s.nearFieldMetres = 0.0f;
+  // The ladder (issue 53): each rung at most 0.6x the next one's time and at least 2 dB less
+  // accurate, every one on the benchmark's front. Low traces a quarter of the resolution per
+  // axis; Medium, High and Ultra trace half of it and accumulate each output pixel's own rays
+  // (temporal upsampling), which is what a quarter-resolution trace cannot show: seen from
+  // above the layer, 24.9 dB at a quarter, 32.9 at half with Medium's march.
   switch (quality) {
-    // Low and Medium are High at a quarter-resolution trace (the benchmark's best saving per
-    // dB lost: half the time for 3.5 dB); Low also takes longer steps and fewer light
-    // samples. Detail erosion goes as far as High's: it costs only where cloud is, and
-    // cutting it short cost Medium 14 dB seen from above the layer for 1 ms. Their steps grow
-    // four times as fast with distance as Medium's used to (0.016 against 0.004 of it): far
-    // away, a quarter-resolution trace's pixel hides what finer steps find (seen from above
-    // the layer, every growth tried gave 24.4 to 24.8 dB, High's half-resolution 36), so the
-    // longer steps halve Medium's march there for 0.3 dB more, and close by (overcast, near
-    // cumulus) Medium is within 0.2 dB of what it was.
     case Quality::Low:
       s.traceScale = 0.25f;
       s.updateInterval = 16;
@@ -258,48 +264,50 @@ Settings settingsFor(Quality quality, const Settings& base) {
       s.viewStepMetres = 120.0f;
       s.viewStepGrowth = 0.016f;
       s.lightSteps = 3;
-      s.detailDistanceMetres = 60000.0f;
       break;
+    // Medium is High's design with a march of half the samples: 90 m steps growing 0.8% of
+    // the distance, four light samples, and High's two edge rays per silhouette tile (+1.2 dB
+    // above the layer against one).
     case Quality::Medium:
-      s.traceScale = 0.25f;
+      s.traceScale = 0.5f;
       s.updateInterval = 16;
-      s.maxViewSteps = 96;
-      s.viewStepMetres = 60.0f;
-      s.viewStepGrowth = 0.016f;
-      s.lightSteps = 6;
-      s.detailDistanceMetres = 60000.0f;
+      s.maxViewSteps = 64;
+      s.viewStepMetres = 90.0f;
+      s.viewStepGrowth = 0.008f;
+      s.coarseStepFactor = 3.3f;
+      s.lightSteps = 4;
+      s.temporalUpsampling = true;
+      s.edgeRays = 2;
+      // Flying inside the layer it keeps its 4 x 4 refresh: High's 2 x 2 there marches four
+      // times the rays, and took the default scene's first 150 frames to 34 ms a frame.
+      s.movingInsideUpdateInterval = 16;
       break;
+    // High: short steps (35 m, growing 0.15% of the distance as the Reference's) that show the rims
+    // of clouds tens of kilometres away seen from above the layer, and the near field.
     case Quality::High:
       s.traceScale = 0.5f;
       s.updateInterval = 16;
-      s.maxViewSteps = 96;
-      // A slow growth of the step with distance (half the 0.004 it had): seen from above the
-      // layer, High's half-resolution trace shows the rims of clouds tens of kilometres away,
-      // where the steps grew longest (+1 dB there for 2.5% more time, which light reuse pays
-      // back). Coarse steps stay about as long, so crossing empty space costs what it did.
-      s.viewStepMetres = 60.0f;
-      s.viewStepGrowth = 0.002f;
+      s.maxViewSteps = 168;
+      s.viewStepMetres = 35.0f;
+      s.viewStepGrowth = 0.0015f;  // the Reference's
       s.coarseStepFactor = 3.3f;
       s.lightSteps = 6;
-      s.detailDistanceMetres = 60000.0f;  // to the max distance: far clouds seen from above
-                                          // are visibly fatter without their erosion
       s.transmittanceCutoff = 0.005f;
       s.temporalUpsampling = true;
       s.edgeRays = 2;
       s.nearFieldMetres = kNearFieldMetres;
       break;
-    // Ultra is High refreshed 4x as often, with finer view steps and more light samples: the
+    // Ultra is High refreshed 4x as often, with finer steps still and more light samples: the
     // benchmark's knobs that bought the most accuracy for their time around High. (A full-
     // resolution trace refreshed every 4th frame cost 8x High for less accuracy than either.)
     case Quality::Ultra:
       s.traceScale = 0.5f;
       s.updateInterval = 4;
-      s.maxViewSteps = 160;
-      s.viewStepMetres = 40.0f;
-      s.viewStepGrowth = 0.002f;  // High's, with High's coarse steps
+      s.maxViewSteps = 224;
+      s.viewStepMetres = 30.0f;
+      s.viewStepGrowth = 0.0015f;  // the Reference's
       s.coarseStepFactor = 3.3f;
       s.lightSteps = 10;
-      s.detailDistanceMetres = 60000.0f;
       s.transmittanceCutoff = 0.002f;
       s.temporalUpsampling = true;
       s.nearFieldMetres = kNearFieldMetres;

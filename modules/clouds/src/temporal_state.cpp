@@ -81,6 +81,8 @@ TemporalFrame TemporalState::plan(const FrameInputs& in, const Settings& s, VkEx
   } else if (frame.nearField != nearField_) {
     // The history held the whole ray and now must hold the far part only, or the reverse.
     frame.resetReason = frame.nearField ? "near field on" : "near field off";
+  } else if (frame.nearField && s.nearFieldMetres != settings_.nearFieldMetres) {
+    frame.resetReason = "near field moved";
   } else if (!s.temporalReuse) {
     frame.resetReason = kReuseOff;
   } else {
@@ -98,12 +100,15 @@ TemporalFrame TemporalState::plan(const FrameInputs& in, const Settings& s, VkEx
   // spatially (4x the march of a 1-in-16 frame, for the frames that need it only). A camera
   // moving inside or near the layer or a hero cloud reprojects its history, but the cloud all
   // around it changes from frame to frame, and each ray's result depends much on where it
-  // starts: it refreshes 2 x 2 tiles too. (At High, 640x360, against the Reference: flying up
-  // into the base, 35.1 dB, where rebuilding each frame without history, as production
-  // engines do here, gave 30.0; clouds_bench's fly-through.)
+  // starts: it refreshes at Settings::movingInsideUpdateInterval (2 x 2 tiles by default). (At
+  // High, 640x360, against the Reference: flying up into the base, 35.1 dB, where rebuilding
+  // each frame without history, as production engines do here, gave 30.0; clouds_bench's
+  // fly-through.)
   const bool movingInsideCloud =
       (frame.insideLayer || frame.insideHeroCloud) && in.cameraPosition != cameraPosition_;
-  frame.tileSize = frame.useHistory && !movingInsideCloud ? k : std::min(k, 2u);
+  const std::uint32_t inside =
+      tileSizeFor(std::min(s.updateInterval, s.movingInsideUpdateInterval));
+  frame.tileSize = !frame.useHistory ? std::min(k, 2u) : movingInsideCloud ? inside : k;
   frame.phase = tilePhase(frame.tileSize, frame.temporalIndex);
   frame.upsampleTemporally = upsamplesTemporally(s);
   frame.useOutputHistory = frame.upsampleTemporally && frame.useHistory && wroteOutputHistory_;

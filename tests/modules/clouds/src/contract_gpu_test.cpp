@@ -196,14 +196,14 @@ TEST_F(Contract, MemoryIsSizedToWhatIsUsedAndReported) {
 
   constexpr std::uint64_t kMiB = 1024 * 1024;
   const VkExtent2D hd{640, 360};
-  const clouds::Settings medium = clouds::settingsFor(clouds::Quality::Medium);
-  ASSERT_TRUE(context->prepare(medium, hd, &error)) << error.message;
+  const clouds::Settings low = clouds::settingsFor(clouds::Quality::Low);
+  ASSERT_TRUE(context->prepare(low, hd, &error)) << error.message;
   clouds::MemoryUsage m = context->memoryUsage();
-  EXPECT_LT(m.totalBytes(), 64 * kMiB) << "640x360 Medium, noise included";
+  EXPECT_LT(m.totalBytes(), 64 * kMiB) << "640x360 Low, noise included";
   EXPECT_GT(m.noiseBytes, 8 * kMiB) << "the 128^3 RGBA8 shape noise alone is 8 MiB";
   EXPECT_GE(m.outputBytes, 640u * 360u * (8 + 8)) << "radiance RGBA16F + depth RG32F";
   EXPECT_LT(m.outputBytes, 2 * 640u * 360u * (8 + 8));
-  EXPECT_EQ(m.upsamplingBytes, 0u) << "Medium does not upsample temporally";
+  EXPECT_EQ(m.upsamplingBytes, 0u) << "Low does not upsample temporally";
   EXPECT_GT(m.totalBytes(), created);
 
   // High upsamples temporally: its output-resolution histories appear, the rest stays.
@@ -215,22 +215,22 @@ TEST_F(Contract, MemoryIsSizedToWhatIsUsedAndReported) {
   // A larger extent grows the images; the replaced ones wait for the frames in flight.
   std::uint64_t frameIndex = 0;
   device.immediateSubmit([&](VkCommandBuffer cmd) {
-    ASSERT_TRUE(context->dispatch(frame(cmd, hd, frameIndex++), medium, &error)) << error.message;
+    ASSERT_TRUE(context->dispatch(frame(cmd, hd, frameIndex++), low, &error)) << error.message;
   });
-  ASSERT_TRUE(context->prepare(medium, {1280, 720}, &error));
+  ASSERT_TRUE(context->prepare(low, {1280, 720}, &error));
   m = context->memoryUsage();
   EXPECT_GT(m.retiredBytes, 0u) << "images a frame may still use are kept";
   EXPECT_GE(m.outputBytes, 1280u * 720u * 16u);
   for (int i = 0; i < 3; ++i) {
     device.immediateSubmit([&](VkCommandBuffer cmd) {
-      ASSERT_TRUE(context->dispatch(frame(cmd, {1280, 720}, frameIndex++), medium, &error))
+      ASSERT_TRUE(context->dispatch(frame(cmd, {1280, 720}, frameIndex++), low, &error))
           << error.message;
     });
   }
   EXPECT_EQ(context->memoryUsage().retiredBytes, 0u) << "freed once no frame can use them";
   // Smaller extents reuse the larger images.
   const std::uint64_t grown = context->memoryUsage().totalBytes();
-  ASSERT_TRUE(context->prepare(medium, hd, &error));
+  ASSERT_TRUE(context->prepare(low, hd, &error));
   EXPECT_EQ(context->memoryUsage().totalBytes(), grown);
   device.waitIdle();
 }

@@ -81,10 +81,10 @@ TEST(CloudPresets, TheFunctionsOutputs) {
     bool temporalReuse, emptySpaceSkipping, cheapSampling, upsamplesTemporally;
   };
   const Row rows[] = {
-      {Quality::Low, 0.25f, 16, 64, 120.0f, 3, true, true, true, false},
-      {Quality::Medium, 0.25f, 16, 96, 60.0f, 6, true, true, true, false},
-      {Quality::High, 0.5f, 16, 96, 60.0f, 6, true, true, true, true},
-      {Quality::Ultra, 0.5f, 4, 160, 40.0f, 10, true, true, true, true},
+      {Quality::Low, 0.25f, 16, 64, 120.0f, 3, true, false, true, false},
+      {Quality::Medium, 0.5f, 16, 64, 90.0f, 4, true, false, true, true},
+      {Quality::High, 0.5f, 16, 168, 35.0f, 6, true, false, true, true},
+      {Quality::Ultra, 0.5f, 4, 224, 30.0f, 10, true, false, true, true},
       {Quality::Reference, 1.0f, 1, 8192, 12.0f, 24, false, false, false, false},
   };
   for (const Row& r : rows) {

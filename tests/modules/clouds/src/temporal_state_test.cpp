@@ -236,6 +236,37 @@ TEST(TemporalState, InsideTheLayerTheHistoryIsKeptAndAMovingCameraRefreshesMore)
   const TemporalFrame left = run(state, below, s);
   EXPECT_TRUE(left.useHistory) << left.resetReason;
   EXPECT_EQ(left.tileSize, 4u);
+
+  // A host that would rather not march 4 times the rays there (Medium) keeps its interval.
+  clouds::Settings steady = s;
+  steady.movingInsideUpdateInterval = 16;
+  moved.cameraPosition.z -= 20.0;
+  run(state, moved, steady);
+  moved.cameraPosition.z -= 20.0;
+  EXPECT_EQ(run(state, moved, steady).tileSize, 4u);
+  EXPECT_EQ(clouds::settingsFor(clouds::Quality::Medium).movingInsideUpdateInterval, 16u);
+  steady.movingInsideUpdateInterval = 5;
+  EXPECT_NE(clouds::validateSettings(steady).find("Settings.movingInsideUpdateInterval"),
+            std::string::npos);
+}
+
+// A governor moving between Medium, High and Ultra (all at half the resolution) changes the
+// march's precision knobs only: away from the layer the history is kept, so the change is no
+// rebuild (4 to 16 times a frame's march); Low's quarter-resolution trace is a resize.
+TEST(TemporalState, APresetChangeKeepsTheHistoryWhereTheTraceAllows) {
+  const clouds::Quality ladder[] = {clouds::Quality::Medium, clouds::Quality::High,
+                                    clouds::Quality::Ultra, clouds::Quality::High,
+                                    clouds::Quality::Medium};
+  TemporalState state;
+  run(state, groundCamera(), clouds::settingsFor(ladder[0]), 3);
+  for (const clouds::Quality q : ladder) {
+    const TemporalFrame frame = run(state, groundCamera(), clouds::settingsFor(q));
+    EXPECT_TRUE(frame.useHistory) << clouds::qualityName(q) << ": " << frame.resetReason;
+  }
+  const VkExtent2D quarter{kTrace.width / 2, kTrace.height / 2};
+  const TemporalFrame low =
+      run(state, groundCamera(), clouds::settingsFor(clouds::Quality::Low), 1, quarter);
+  EXPECT_EQ(std::string(low.resetReason), "resize");
 }
 
 // The near field (Settings::nearFieldMetres) is marched apart while the camera is within that
@@ -272,6 +303,10 @@ TEST(TemporalState, TheNearFieldIsSplitOffOnlyNearTheClouds) {
   const TemporalFrame inside = plan(2500.0, false);
   EXPECT_TRUE(inside.nearField);
   EXPECT_TRUE(inside.useHistory) << inside.resetReason;
+  s.nearFieldMetres = 300.0f;  // the far history held the clouds beyond 200 m
+  EXPECT_EQ(std::string(plan(2500.0, false).resetReason), "near field moved");
+  s.nearFieldMetres = 200.0f;
+  plan(2500.0, false);
   const TemporalFrame byAHeroCloud = plan(1200.0, true);
   EXPECT_TRUE(byAHeroCloud.nearField);
   EXPECT_TRUE(byAHeroCloud.useHistory) << byAHeroCloud.resetReason;
@@ -436,9 +471,13 @@ TEST(TemporalState, NewSettingsOrANewWeatherMapDropTheHistory) {
     clouds::Settings nudged = s;
     nudged.coverage *= 1.001f;  // an animated slider's step: keep reprojecting
     EXPECT_TRUE(state.plan(groundCamera(), nudged, kTrace).useHistory);
-    clouds::Settings fewerSteps = s;
+    clouds::Settings fewerSteps = s;  // a march precision knob: a preset's rung
     fewerSteps.lightSteps -= 1;
-    EXPECT_FALSE(state.plan(groundCamera(), fewerSteps, kTrace).useHistory);
+    fewerSteps.viewStepMetres *= 2.0f;
+    EXPECT_TRUE(state.plan(groundCamera(), fewerSteps, kTrace).useHistory);
+    clouds::Settings noDetail = s;  // other clouds
+    noDetail.detail = !s.detail;
+    EXPECT_FALSE(state.plan(groundCamera(), noDetail, kTrace).useHistory);
     clouds::Settings otherBlend = s;
     otherBlend.temporalFreshWeight = 0.3f;  // temporal knobs are not the look
     EXPECT_TRUE(state.plan(groundCamera(), otherBlend, kTrace).useHistory);
