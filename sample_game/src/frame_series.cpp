@@ -12,7 +12,7 @@ namespace sample {
 
 FrameSeries::FrameSeries(const std::filesystem::path& file) : out_(file) {
   if (!out_) throw engine::Error(file.string() + ": cannot write the frame series");
-  out_ << "frame,seconds,wall_ms,gpu_ms,cloud_preset,governor\n";
+  out_ << "frame,seconds,wall_ms,gpu_ms,cloud_preset,governor,target_ms\n";
 }
 
 void FrameSeries::afterFrame(std::uint64_t frame, double wallMilliseconds,
@@ -22,12 +22,13 @@ void FrameSeries::afterFrame(std::uint64_t frame, double wallMilliseconds,
   world.view<const clouds::ecs::CloudQuality>().each(
       [&](const clouds::ecs::CloudQuality& q) { preset = clouds::qualityName(q.preset); });
   const auto* governor = world.ctx().tryGet<clouds::ecs::CloudGovernorStatus>();
-  char row[160];
-  std::snprintf(row, sizeof(row), "%llu,%.4f,%.3f,%.3f,%s,%s\n",
+  const bool governed = governor != nullptr && governor->active;
+  char row[192];
+  std::snprintf(row, sizeof(row), "%llu,%.4f,%.3f,%.3f,%s,%s,%.3f\n",
                 static_cast<unsigned long long>(frame),
                 world.ctx().get<engine::ecs::FrameTime>().elapsedSeconds, wallMilliseconds,
                 gpu != nullptr && gpu->measured ? gpu->milliseconds : 0.0, preset,
-                governor != nullptr && governor->active ? governor->reason : "off");
+                governed ? governor->reason : "off", governed ? governor->targetMilliseconds : 0.0);
   out_ << row;
 }
 
