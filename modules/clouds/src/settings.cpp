@@ -252,10 +252,11 @@ Settings settingsFor(Quality quality, const Settings& base) {
   constexpr float kNearFieldMetres = 200.0f;
   s.nearFieldMetres = 0.0f;
   // The ladder (issue 53): each rung at most 0.6x the next one's time and at least 2 dB less
-  // accurate, every one on the benchmark's front. Low traces a quarter of the resolution per
-  // axis; Medium, High and Ultra trace half of it and accumulate each output pixel's own rays
-  // (temporal upsampling), which is what a quarter-resolution trace cannot show: seen from
-  // above the layer, 24.9 dB at a quarter, 32.9 at half with Medium's march.
+  // accurate (docs/benchmark/results.md, "Targets"). Low traces a quarter of the resolution
+  // per axis; Medium, High and Ultra trace half of it and accumulate each output pixel's own
+  // rays (temporal upsampling), which a quarter-resolution trace cannot show: seen from above
+  // the layer, 24.9 dB at a quarter, 32.9 at half with Medium's march and one edge ray, 34.1
+  // with its two.
   switch (quality) {
     case Quality::Low:
       s.traceScale = 0.25f;
