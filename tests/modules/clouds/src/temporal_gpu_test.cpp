@@ -416,7 +416,10 @@ TEST_F(CloudTemporal, MovingInsideTheLayerTheHistoryIsReprojected) {
 // through dense layer (coverage 0.7) 42.9 dB against 41.6 (42.6 without the resolve's history,
 // each frame's near field alone; 39.6 with the near field marched but not laid over); through
 // sparse layer (0.5), next to no cloud within 200 m, 33.9 against 33.9 (33.2 with the far part
-// starting at the split with a coarse step).
+// starting at the split with a coarse step). The march is pinned to High's when this was
+// measured (60 m steps growing 0.2% of the distance, 96 of them): with the ladder's finer High
+// (35 m, 0.15%, 168) one march is more accurate and the near field gains 0.96 dB (42.66
+// against 41.70).
 TEST_F(CloudTemporal, FlyingThroughTheLayerTheNearFieldIsMarchedApart) {
   struct Flight {
     double splitPsnr, wholePsnr, splitCover, wholeCover;
@@ -424,8 +427,11 @@ TEST_F(CloudTemporal, FlyingThroughTheLayerTheNearFieldIsMarchedApart) {
   const auto fly = [&](float coverage) {
     clouds::Settings look;
     look.coverage = coverage;
-    const clouds::Settings high = clouds::settingsFor(clouds::Quality::High, look);
+    clouds::Settings high = clouds::settingsFor(clouds::Quality::High, look);
     EXPECT_EQ(high.nearFieldMetres, 200.0f) << "High splits at Nubis³'s 200 m";
+    high.viewStepMetres = 60.0f;
+    high.viewStepGrowth = 0.002f;
+    high.maxViewSteps = 96;
     clouds::Settings oneMarch = high;
     oneMarch.nearFieldMetres = 0.0f;
     CloudView view = insideTheLayerView();
