@@ -119,25 +119,35 @@ void applyCamera(World& world, SceneDescription& running, const SceneDescription
   if (target) running.camera.frameTargetMilliseconds = next.camera.frameTargetMilliseconds;
 }
 
+// A version of the file: its time and its size. An editor's save caught mid-write (the file
+// truncated, then written) has another size once done, though the file's clock, as coarse as
+// the kernel's (milliseconds), may not have ticked between the two.
+struct FileVersion {
+  std::filesystem::file_time_type time{};
+  std::uintmax_t bytes = 0;
+  bool operator==(const FileVersion&) const = default;
+};
+
 // What the hot-reload system keeps between frames.
 struct Watch {
   std::filesystem::path file;
   SceneDescription lastRead;  // the file as last read
-  std::filesystem::file_time_type seen{};
+  FileVersion seen{};
   std::uint64_t frame = 0;
 
-  std::optional<std::filesystem::file_time_type> modified() const {
-    std::error_code error;
-    const auto time = std::filesystem::last_write_time(file, error);
-    if (error) return std::nullopt;
-    return time;
+  std::optional<FileVersion> version() const {
+    std::error_code timeError, sizeError;
+    const auto time = std::filesystem::last_write_time(file, timeError);
+    const auto bytes = std::filesystem::file_size(file, sizeError);
+    if (timeError || sizeError) return std::nullopt;
+    return FileVersion{time, bytes};
   }
 
   void check(World& world) {
     if (frame++ % kHotReloadCheckFrames != 0) return;
-    const auto time = modified();
-    if (!time || *time == seen) return;
-    seen = *time;
+    const auto now = version();
+    if (!now || *now == seen) return;
+    seen = *now;
     auto& live = world.ctx().get<LiveScene>();
     try {
       const SceneDescription next = loadSceneDescription(file);
@@ -176,7 +186,7 @@ std::string applyReloadedScene(World& world, const SceneDescription& before,
 
 void installSceneHotReload(engine::ecs::Scheduler& scheduler, const SceneDescription& scene) {
   Watch watch{scene.file, loadSceneDescription(scene.file), {}, 0};
-  if (const auto time = watch.modified()) watch.seen = *time;
+  if (const auto now = watch.version()) watch.seen = *now;
   scheduler.add(engine::ecs::Phase::Input, "scene hot reload",
                 [watch](World& world) mutable { watch.check(world); });
 }
