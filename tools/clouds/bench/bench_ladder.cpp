@@ -72,7 +72,6 @@ GovernedFlight readGovernedFlight(const std::filesystem::path& file) {
   double firstSeconds = -1.0, lastSeconds = 0.0, stretchStart = 0.0;
   std::string preset;
   std::size_t lastChange = 0;
-  bool changed = false;
   for (std::size_t lineNumber = 2; std::getline(in, line); ++lineNumber) {
     const std::vector<std::string> f = splitCsv(line);
     if (f.size() != 7) {
@@ -91,13 +90,12 @@ GovernedFlight readGovernedFlight(const std::filesystem::path& file) {
     if (f[4] != preset) {
       if (!preset.empty()) {
         const std::size_t gap = flight.frames - lastChange;
-        if (changed) {
+        if (flight.presetChanges > 0) {
           flight.shortestGapFrames =
               flight.shortestGapFrames == 0 ? gap : std::min(flight.shortestGapFrames, gap);
         }
         ++flight.presetChanges;
         lastChange = flight.frames;
-        changed = true;
       }
       preset = f[4];
       const auto known = std::find_if(flight.framesPerPreset.begin(), flight.framesPerPreset.end(),
