@@ -171,7 +171,7 @@ std::vector<BenchConfig> benchConfigs() {
     s.viewStepGrowth = float(s.viewStepGrowth * f);
     s.maxViewSteps = std::uint32_t(std::lround(s.maxViewSteps / f));
   });
-  sweep("light steps", {1.0, 2.0, 4.0, 10.0, 16.0}, "",
+  sweep("light steps", {1.0, 2.0, 6.0, 10.0, 16.0}, "",
         [](clouds::Settings& s, double n) { s.lightSteps = std::uint32_t(n); });
   sweep("trace scale", {0.25, 1.0}, "",
         [](clouds::Settings& s, double scale) { s.traceScale = float(scale); });
