@@ -63,7 +63,8 @@ ParseResult parseOptions(int argc, char** argv) {
   double frameTarget = 0.0;
   CLI::Option* frameTargetOption =
       cli.add_option("--frame-target-ms", frameTarget,
-                     "GPU milliseconds a frame: a governor picks the cloud preset that holds it "
+                     "Milliseconds a frame (wall clock, nine frames in ten): a governor picks the "
+                     "cloud preset that holds it "
                      "(0: none; default 33.3 in a window, none headless; --quality fixes the "
                      "preset instead)")
           ->check(CLI::Range(0.0, 1e5))

@@ -97,8 +97,10 @@ constexpr double kDefaultFrameTargetMilliseconds = 1000.0 / 30.0;
 // The frame target the governor holds, none for a fixed preset (--quality, or a target of 0).
 std::optional<double> frameTargetFor(const Options& options, const SceneDescription& scene,
                                      bool windowed) {
-  std::optional<double> target =
-      windowed && !options.describe ? std::optional(kDefaultFrameTargetMilliseconds) : std::nullopt;
+  // A scene with hand-tuned knobs keeps its preset unless it asks for a governor itself.
+  std::optional<double> target = windowed && !options.describe && !scene.camera.cloudKnobs.any()
+                                     ? std::optional(kDefaultFrameTargetMilliseconds)
+                                     : std::nullopt;
   if (scene.camera.frameTargetMilliseconds) target = scene.camera.frameTargetMilliseconds;
   if (options.frameTargetMilliseconds) target = options.frameTargetMilliseconds;
   if (options.cloudQuality || (target && *target <= 0.0)) return std::nullopt;
@@ -111,9 +113,9 @@ void logFrameBudget(ecs::World& world) {
   char line[192];
   std::snprintf(line, sizeof(line),
                 "cloud frame budget: %.1f ms, the governor chose %s (%llu changes; its last "
-                "median %.1f ms, %s)",
+                "judgement %.1f ms, %s)",
                 governor->targetMilliseconds, ::clouds::qualityName(governor->preset),
-                static_cast<unsigned long long>(governor->changes), governor->medianMilliseconds,
+                static_cast<unsigned long long>(governor->changes), governor->judgedMilliseconds,
                 governor->reason);
   log::info(line);
 }
@@ -135,7 +137,10 @@ RunPlan planRun(Options options) {
     options.scene = std::filesystem::path(CLOUDSCAPE_ASSET_SOURCE_DIR) / "scenes/default.json";
   }
   plan.scene = loadSceneDescription(options.scene);
-  if (options.cloudQuality) plan.scene.camera.cloudQuality = *options.cloudQuality;
+  if (options.cloudQuality) {
+    plan.scene.camera.cloudQuality = *options.cloudQuality;
+    plan.scene.camera.cloudKnobs = {};  // the preset as it is
+  }
   plan.scene.camera.frameTargetMilliseconds = frameTargetFor(options, plan.scene, plan.windowed);
   if (options.script) plan.script = InputScript::load(*options.script);
   if (!plan.windowed && options.frames == 0) {
@@ -222,6 +227,8 @@ LoopStats runFrames(ecs::App& app, const Renderer& renderer, platform::Window* w
     const double dt = options.fixedDtSeconds ? *options.fixedDtSeconds
                                              : (frame == 0 ? 0.0 : std::min(measured, 0.25));
     time = frame == 0 ? ecs::FrameTime{dt, options.startSeconds, 0} : time.next(dt);
+    if (frame > 0)
+      world.ctx().emplaceOrReplace<ecs::WallFrameTime>(measured * 1000.0, frame - 1, true);
     const bool lastFrame = options.frames != 0 && frame + 1 == options.frames;
     if (options.captureDir && (options.captureEveryFrame || (lastFrame && !plan.script))) {
       world.ctx().get<CaptureRequest>().stem = frameStem(*options.captureDir, "frame", frame);
@@ -383,8 +390,8 @@ int run(Options commandLine) {
         render::RenderDevice{&device, Renderer::kHdrFormat, Renderer::kDepthFormat,
                              gfx::FrameRing::kFramesInFlight, rendererOptions.maxExtent});
     populateScene(app, plan.scene, plan.terrain, plan.heroClouds);
-    app.world().ctx().emplace<LiveScene>(
-        LiveScene{plan.scene, options.saveScene.value_or("edited_scene.json"), {}, {}});
+    app.world().ctx().emplace<LiveScene>(LiveScene{
+        plan.scene, options.saveScene.value_or("edited_scene.json"), {}, {}, {}, plan.scene});
     installSceneHotReload(app.scheduler(), plan.scene);
     Renderer renderer(device, *presentation.target, app.world(), rendererOptions);
     app.scheduler().add(ecs::Phase::Render, "render frame",

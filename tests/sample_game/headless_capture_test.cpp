@@ -19,6 +19,7 @@
 #include <vector>
 
 #include "engine/assets/image_io.h"
+#include "engine/core/json_reader.h"
 #include "vdb_test_files.h"
 
 namespace {
@@ -642,7 +643,7 @@ TEST(HeadlessCapture, MediumShowsNoBlocksAtTheStormsSilhouettes) {
 
 // A frame budget in the sample: the governor takes the camera's preset from Medium down to
 // Low for an impossible 1 ms a frame and up to Ultra for an easy 10 s, judging the frames'
-// GPU timestamps; a number key fixes the preset and ends the governing.
+// wall-clock times; a number key fixes the preset and ends the governing.
 TEST(HeadlessCapture, AFrameBudgetChoosesTheCloudPreset) {
   const std::string common =
       "--headless --validation --width 96 --height 54 --fixed-dt 0.05 --frame-target-ms ";
@@ -678,7 +679,8 @@ TEST(HeadlessCapture, TheSceneAsThePlayerMadeItSavesAndLoadsBackToTheSameFrames)
   };
   const std::string changed = script(
       "changed.json", R"({"frame": 0, "set": {"clouds.coverage": 0.62, "sun.timeOfDayHours": 15.25,
-                          "clouds.wind.directionDegrees": 33, "exposure.compensationEv": 0.5}},)");
+                          "clouds.wind.directionDegrees": 33, "exposure.compensationEv": 0.5,
+                          "camera.cloudKnobs.lightSteps": 1}},)");
   const std::string plain = script("plain.json", "");
   const std::string common = "--headless --validation --width 96 --height 54 --fixed-dt 0.05 ";
   const fs::path saved = dir / "saved.json";
@@ -740,6 +742,45 @@ TEST(HeadlessCapture, F2OpensTheSettingsPanelAndTouchesNothingElse) {
   }
   EXPECT_EQ(elsewhere, 0u);
   EXPECT_GT(panelChange / (306.0 * (closed.height - 44) * 3.0), 0.05);  // the panel is there
+}
+
+// The panel driven by the mouse, as a player does (the script's "cursor": the free cursor and
+// its button): F2, a click on the "cloud preset's knobs" header, a click at the left end of
+// the "light samples" slider. The clouds lose their self-shadowing (0 light samples: the sky
+// left of the panel changes) and the saved scene says so. The positions are the panel's at
+// 640x360 (tools/panel_picture.sh shows it); a layout change that moves them fails here.
+TEST(HeadlessCapture, TheMouseDrivesThePanelsSliders) {
+  const fs::path dir = freshDir("panel_mouse");
+  fs::create_directories(dir);
+  const auto run = [&](const char* name, const char* clicks) {
+    const fs::path script = dir / (std::string(name) + ".json");
+    std::ofstream(script)
+        << std::string(R"({"events": [{"frame": 1, "press": ["F2"]}, )") + clicks +
+               R"({"frame": 12, "capture": "frame"}, {"frame": 12, "exit": true}]})";
+    EXPECT_EQ(runSample("--headless --validation --hud-headless --width 640 --height 360 "
+                        "--fixed-dt 0.05 --script " +
+                        script.string() + " --capture " + (dir / name).string() + " --save-scene " +
+                        (dir / name / "saved.json").string()),
+              0);
+    return engine::assets::readImage(dir / name / "frame.exr");
+  };
+  const ImageRgba32f still = run("still", "");
+  const ImageRgba32f clicked = run("clicked", R"({"frame": 3, "cursor": [500, 199, 1]},
+    {"frame": 4, "cursor": [500, 199, 0]}, {"frame": 6, "cursor": [394, 268, 1]},
+    {"frame": 7, "cursor": [394, 268, 0]}, )");
+  ASSERT_EQ(still.pixels.size(), clicked.pixels.size());
+  std::size_t changed = 0;  // pixels left of the panel
+  for (std::uint32_t y = 0; y < still.height; ++y) {
+    for (std::uint32_t x = 0; x < 380; ++x) {
+      if (std::abs(still.at(x, y)[0] - clicked.at(x, y)[0]) > 0.01f * still.at(x, y)[0]) ++changed;
+    }
+  }
+  std::printf("left of the panel, %zu pixels changed by the click\n", changed);
+  EXPECT_GT(changed, 2000u);
+  const nlohmann::json saved = engine::JsonReader::parseFile(dir / "clicked" / "saved.json");
+  EXPECT_EQ(saved["camera"]["cloudKnobs"].dump(), R"({"lightSteps":0})");
+  EXPECT_FALSE(
+      engine::JsonReader::parseFile(dir / "still" / "saved.json")["camera"].contains("cloudKnobs"));
 }
 
 // Editing the scene file while the sample runs: a file that does not load is reported and the
@@ -825,8 +866,8 @@ TEST(HeadlessCapture, FliesOverAUserSuppliedTerrain) {
 }
 
 // A user's OpenVDB cloud (--cloud) stands in front of the camera's start: the frame's middle
-// holds it, where the same scene without it shows the sky. A missing or broken file is refused
-// naming it.
+// holds it, where the same scene without it shows the sky; a scene saved from that run keeps it
+// where it stood (the same frames loaded back). A missing or broken file is refused naming it.
 TEST(HeadlessCapture, ShowsAUserSuppliedVdbCloudAhead) {
   const fs::path dir = freshDir("user_cloud");
   fs::create_directories(dir);
@@ -838,12 +879,22 @@ TEST(HeadlessCapture, ShowsAUserSuppliedVdbCloudAhead) {
                                                   glm::dvec3(c.x(), c.y(), c.z()) - 19.5);
                                               return float(std::clamp(1.0 - r / 18.0, 0.0, 1.0));
                                             })});
-  const std::string common = "--headless --frames 3 --width 96 --height 54 --validation --scene " +
-                             scene("clouds_only.json") + " --capture ";
+  const std::string common =
+      "--headless --frames 3 --width 96 --height 54 --validation --fixed-dt 0.05 --scene " +
+      scene("clouds_only.json") + " --capture ";
   ASSERT_EQ(runSample(common + (dir / "sky").string()), 0);
-  ASSERT_EQ(runSample(common + (dir / "cloud").string() + " --cloud " + vdb.string()), 0);
+  const fs::path saved = dir / "saved.json";
+  ASSERT_EQ(runSample(common + (dir / "cloud").string() + " --cloud " + vdb.string() +
+                      " --save-scene " + saved.string()),
+            0);
   const ImageRgba32f sky = engine::assets::readImage(dir / "sky" / "frame_0002.exr");
   const ImageRgba32f cloud = engine::assets::readImage(dir / "cloud" / "frame_0002.exr");
+  ASSERT_EQ(runSample("--headless --frames 3 --width 96 --height 54 --validation --fixed-dt 0.05 "
+                      "--scene " +
+                      saved.string() + " --capture " + (dir / "saved").string()),
+            0);
+  EXPECT_TRUE(engine::assets::readImage(dir / "saved" / "frame_0002.exr").pixels == cloud.pixels)
+      << "the saved scene lost the user's cloud or moved it";
   ASSERT_EQ(sky.pixels.size(), cloud.pixels.size());
   const float* a = sky.at(48, 27);
   const float* b = cloud.at(48, 27);

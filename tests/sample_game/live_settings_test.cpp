@@ -7,7 +7,9 @@
 #include <gtest/gtest.h>
 
 #include "clouds/ecs/cloud_components.h"
+#include "clouds/ecs/cloud_frame.h"
 #include "clouds/ecs/frame_budget.h"
+#include "clouds/ecs/lightning.h"
 #include "engine/core/error.h"
 #include "engine/render/exposure.h"
 #include "engine/render/scene_components.h"
@@ -21,17 +23,24 @@ struct LiveWorld {
   explicit LiveWorld(bool withClouds = true) {
     sample::SceneDescription scene;
     if (withClouds) {
+      // A storm's layer with god rays: every live setting has what it tunes.
       scene.clouds = sample::CloudDescription{};
-      world.emplace<clouds::ecs::CloudLayer>(world.create(), clouds::ecs::CloudLayer{});
+      scene.clouds->settings.godRaySamples = sample::kSceneGodRaySamples;
+      scene.lightning = sample::LightningDescription{};
+      world.emplace<clouds::ecs::CloudLayer>(world.create(),
+                                             clouds::ecs::CloudLayer{scene.clouds->settings});
+      world.emplace<clouds::ecs::LightningStorm>(world.create(), scene.lightning->storm);
     }
     world.emplace<sample::TimeOfDay>(world.create(), sample::TimeOfDay{});
     world.ctx().emplace<engine::render::Exposure>();
     camera = world.create();
     world.emplace<engine::render::Camera>(camera, engine::render::Camera{});
     world.emplace<clouds::ecs::CloudQuality>(camera, clouds::ecs::CloudQuality{});
-    world.ctx().emplace<sample::LiveScene>(sample::LiveScene{scene, "unused.json", {}});
+    world.ctx().emplace<sample::LiveScene>(
+        sample::LiveScene{scene, "unused.json", {}, {}, {}, scene});
   }
-  const sample::SceneDescription& scene() { return world.ctx().get<sample::LiveScene>().scene; }
+  const sample::LiveScene& live() { return world.ctx().get<sample::LiveScene>(); }
+  const sample::SceneDescription& scene() { return live().scene; }
   clouds::Settings layer() {
     clouds::Settings settings;
     world.view<const clouds::ecs::CloudLayer>().each(
@@ -53,8 +62,9 @@ TEST(LiveSettings, EachWritesTheWorldAndTheSceneToSave) {
   for (const sample::LiveSetting& setting : sample::liveSettings()) {
     LiveWorld w;
     SCOPED_TRACE(setting.name);
-    const double value = setting.min + 0.375 * (setting.max - setting.min);
-    ASSERT_TRUE(setting.available(w.scene()));
+    // A switch goes off (the scene has it on); a slider to 3/8 of its range.
+    const double value = setting.isSwitch ? 0.0 : setting.min + 0.375 * (setting.max - setting.min);
+    ASSERT_TRUE(setting.available(w.live()));
     sample::applyLiveSetting(w.world, setting.name, value);
     EXPECT_NEAR(setting.get(w.scene()), value, 1e-5 * (1.0 + std::abs(value)));
   }
@@ -69,6 +79,35 @@ TEST(LiveSettings, EachWritesTheWorldAndTheSceneToSave) {
       [](const sample::TimeOfDay& t) { EXPECT_EQ(t.hours, 9.5); });
   sample::applyLiveSetting(w.world, "exposure.compensationEv", -1.5);
   EXPECT_EQ(w.world.ctx().get<engine::render::Exposure>().compensationEv, -1.5f);
+}
+
+// The panel's effect switches: god rays off and on again reach the layer (and the preset's
+// own sample count while on), lightning's rate 0 stops the storm's strikes; a scene loaded
+// without an effect has no switch for it (turning it on would build its passes mid-flight).
+TEST(LiveSettings, EffectsSwitchWhereTheSceneWasLoadedWithThem) {
+  LiveWorld w;
+  sample::applyLiveSetting(w.world, "clouds.godRays", 0.0);
+  EXPECT_EQ(w.layer().godRaySamples, 0u);
+  EXPECT_EQ(clouds::ecs::cloudSettings(w.world).godRaySamples, 0u);
+  sample::applyLiveSetting(w.world, "clouds.godRays", 1.0);
+  EXPECT_EQ(w.layer().godRaySamples, sample::kSceneGodRaySamples);
+  EXPECT_GT(clouds::ecs::cloudSettings(w.world).godRaySamples, 0u);
+  EXPECT_TRUE(sample::sceneToSave(w.world).clouds->settings.godRaySamples > 0);
+
+  sample::applyLiveSetting(w.world, "lightning.strikesPerMinute", 0.0);
+  w.world.view<const clouds::ecs::LightningStorm>().each(
+      [](const clouds::ecs::LightningStorm& storm) { EXPECT_EQ(storm.strikesPerMinute, 0.0); });
+  EXPECT_EQ(sample::sceneToSave(w.world).lightning->storm.strikesPerMinute, 0.0);
+
+  LiveWorld without;
+  auto& live = without.world.ctx().get<sample::LiveScene>();
+  live.loaded.clouds->settings.godRaySamples = 0;
+  live.loaded.lightning.reset();
+  EXPECT_NE(refusal(without.world, "clouds.godRays", 1.0).find("the scene has nothing it tunes"),
+            std::string::npos);
+  EXPECT_NE(refusal(without.world, "lightning.strikesPerMinute", 3.0)
+                .find("the scene has nothing it tunes"),
+            std::string::npos);
 }
 
 TEST(LiveSettings, RefusesWhatIsOutOfRangeUnknownOrAbsentByName) {
@@ -93,6 +132,35 @@ TEST(LiveSettings, TheSceneToSaveHasTheCamerasPresetAndBudget) {
   EXPECT_EQ(sample::sceneToSave(w.world).camera.frameTargetMilliseconds, 0.0) << "fixed";
   w.world.emplace<clouds::ecs::CloudFrameBudget>(w.camera, clouds::ecs::CloudFrameBudget{20.0});
   EXPECT_EQ(sample::sceneToSave(w.world).camera.frameTargetMilliseconds, 20.0);
+}
+
+// A knob of the cloud preset (the panel's "cloud preset's knobs"): shows the preset's value
+// until set; set, it reaches the clouds' settings, fixes the preset (the governor's budget
+// goes) and is saved; the preset's other values stay.
+TEST(LiveSettings, AKnobTunesTheCameraPresetAndFixesIt) {
+  LiveWorld w;
+  w.world.get<clouds::ecs::CloudQuality>(w.camera).preset = clouds::Quality::High;
+  w.world.emplace<clouds::ecs::CloudFrameBudget>(w.camera, clouds::ecs::CloudFrameBudget{20.0});
+  sample::syncLiveScene(w.world);
+  const clouds::Settings high = clouds::settingsFor(clouds::Quality::High);
+  const sample::LiveSetting* light = sample::findLiveSetting("camera.cloudKnobs.lightSteps");
+  ASSERT_NE(light, nullptr);
+  EXPECT_EQ(light->get(w.scene()), double(high.lightSteps));
+
+  sample::applyLiveSetting(w.world, "camera.cloudKnobs.lightSteps", 2.0);
+  const clouds::Settings tuned = clouds::ecs::cloudSettings(w.world);
+  EXPECT_EQ(tuned.lightSteps, 2u);
+  EXPECT_EQ(tuned.maxViewSteps, high.maxViewSteps);
+  EXPECT_EQ(tuned.viewStepMetres, high.viewStepMetres);
+  EXPECT_EQ(w.world.tryGet<clouds::ecs::CloudFrameBudget>(w.camera), nullptr);
+  const sample::SceneDescription saved = sample::sceneToSave(w.world);
+  EXPECT_EQ(saved.camera.cloudQuality, clouds::Quality::High);
+  EXPECT_EQ(saved.camera.cloudKnobs.lightSteps, std::optional<std::uint32_t>(2u));
+  EXPECT_FALSE(saved.camera.cloudKnobs.maxViewSteps.has_value());
+  EXPECT_EQ(saved.camera.frameTargetMilliseconds, 0.0);
+  EXPECT_NE(refusal(w.world, "camera.cloudKnobs.lightSteps", 99.0)
+                .find("camera.cloudKnobs.lightSteps: must be in"),
+            std::string::npos);
 }
 
 // A reloaded scene file (scene_hot_reload.h) applies what the file changed and nothing else:

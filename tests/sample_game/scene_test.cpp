@@ -71,6 +71,17 @@ TEST(Scenes, ValuesArriveInTheDescription) {
   const sample::SceneDescription governed = loadSceneDescription(writeScene("target.json", R"({
     "name": "q", "camera": {"position": [0, 10, 0], "frameTargetMilliseconds": 16.7}})"));
   EXPECT_EQ(governed.camera.frameTargetMilliseconds, 16.7);
+  EXPECT_FALSE(s.camera.cloudKnobs.any()) << "the preset as it is";
+  const fs::path knobbed = writeScene("knobs.json", R"({
+    "name": "k", "camera": {"position": [0, 10, 0], "cloudQuality": "high",
+                            "cloudKnobs": {"lightSteps": 2, "viewStepMetres": 50}}})");
+  const sample::SceneDescription k = loadSceneDescription(knobbed);
+  EXPECT_EQ(k.camera.cloudKnobs.lightSteps, std::optional<std::uint32_t>(2u));
+  EXPECT_EQ(k.camera.cloudKnobs.viewStepMetres, std::optional<float>(50.0f));
+  EXPECT_FALSE(k.camera.cloudKnobs.maxViewSteps.has_value());
+  const std::string written = sample::sceneJson(k);
+  EXPECT_EQ(sample::sceneJson(loadSceneDescription(writeScene("knobs_again.json", written))),
+            written);
   EXPECT_FALSE(s.atmosphere.has_value()) << "no atmosphere unless the scene asks";
   EXPECT_FALSE(s.fog.has_value());
 }
@@ -261,6 +272,12 @@ TEST(Scenes, MalformedScenesNameFilePathAndReason) {
       {"quality.json",
        R"({"name": "x", "camera": {"position": [0, 1, 0], "cloudQuality": "extreme"}})",
        "camera.cloudQuality: must be one of low, medium, high, ultra, reference"},
+      {"knob.json",
+       R"({"name": "x", "camera": {"position": [0, 1, 0], "cloudKnobs": {"lightSteps": 99}}})",
+       "camera.cloudKnobs.lightSteps: must be in"},
+      {"knob_name.json",
+       R"({"name": "x", "camera": {"position": [0, 1, 0], "cloudKnobs": {"coverage": 1}}})",
+       "camera.cloudKnobs.coverage: unknown key"},
       {"target.json",
        R"({"name": "x", "camera": {"position": [0, 1, 0], "frameTargetMilliseconds": -5}})",
        "camera.frameTargetMilliseconds"},

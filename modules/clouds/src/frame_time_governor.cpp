@@ -11,10 +11,12 @@ constexpr double kMaxTargetMilliseconds = 1e5;
 // Backoff doubles with each failed climb in a row, up to 2^4 = 16 times the first wait.
 constexpr std::uint32_t kMaxBackoffDoublings = 4;
 
-double median(std::vector<double> values) {
-  const auto middle = values.begin() + std::ptrdiff_t(values.size() / 2);
-  std::nth_element(values.begin(), middle, values.end());
-  return *middle;
+// The value below which a fraction `q` of `values` lies (nearest rank; q = 0.5: the median).
+double quantile(std::vector<double> values, double q) {
+  const auto rank = std::min(values.size() - 1, std::size_t(q * double(values.size())));
+  const auto at = values.begin() + std::ptrdiff_t(rank);
+  std::nth_element(values.begin(), at, values.end());
+  return *at;
 }
 
 bool validTarget(double milliseconds) {
@@ -59,6 +61,8 @@ std::string validateFrameTimeGovernorConfig(const FrameTimeGovernorConfig& c) {
   if (!(c.climbMargin >= 0.0 && c.climbMargin <= 0.9))
     return field("climbMargin", "must be in [0, 0.9]");
   if (c.backoffFrames > 1000000) return field("backoffFrames", "must be in [0, 1e6]");
+  if (!(c.judgedQuantile >= 0.5 && c.judgedQuantile <= 0.99))
+    return field("judgedQuantile", "must be in [0.5, 0.99]");
   return {};
 }
 
@@ -113,22 +117,22 @@ double FrameTimeGovernor::costRatioAbove(std::size_t r) const {
   return config_.nominalRungCosts[r + 1] / config_.nominalRungCosts[r];
 }
 
-void FrameTimeGovernor::learnRatio(double median) {
-  // Only from the rung just left, judged just before the move: medians further apart in time
+void FrameTimeGovernor::learnRatio(double judged) {
+  // Only from the rung just left, judged just before the move: judgements further apart in time
   // may have seen different scenes.
-  if (!arrivedFrom_ || rungs_[*arrivedFrom_].medianMilliseconds <= 0.0) return;
+  if (!arrivedFrom_ || rungs_[*arrivedFrom_].judgedMilliseconds <= 0.0) return;
   const std::size_t from = *arrivedFrom_;
-  if (from + 1 == rung_) learnedRatios_[from] = median / rungs_[from].medianMilliseconds;
-  if (rung_ + 1 == from) learnedRatios_[rung_] = rungs_[from].medianMilliseconds / median;
+  if (from + 1 == rung_) learnedRatios_[from] = judged / rungs_[from].judgedMilliseconds;
+  if (rung_ + 1 == from) learnedRatios_[rung_] = rungs_[from].judgedMilliseconds / judged;
 }
 
 void FrameTimeGovernor::judge() {
-  const double m = median(window_);
-  lastMedian_ = m;
+  const double m = quantile(window_, config_.judgedQuantile);
+  lastJudged_ = m;
   if (arrivedFrom_) learnRatio(m);
   arrivedFrom_.reset();
   RungRecord& here = rungs_[rung_];
-  here.medianMilliseconds = m;
+  here.judgedMilliseconds = m;
   const double target = config_.targetMilliseconds;
 
   if (m > target * (1.0 + config_.descendMargin) && rung_ > config_.floorRung) {
@@ -194,7 +198,7 @@ const char* governorReasonName(FrameTimeGovernor::Reason reason) {
 const PresetLadder& presetLadder() {
   // modules/clouds/docs/benchmark/results.md, "Presets": the static views' mean at 640x360.
   static const PresetLadder kLadder{{Quality::Low, Quality::Medium, Quality::High, Quality::Ultra},
-                                    {3.1, 7.9, 14.0, 34.0}};
+                                    {4.9, 12.5, 21.0, 50.5}};
   return kLadder;
 }
 

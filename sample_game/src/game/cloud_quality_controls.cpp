@@ -12,6 +12,14 @@ namespace sample {
 
 using engine::platform::Key;
 
+clouds::ecs::CloudFrameBudget playerFrameBudget(double targetMilliseconds) {
+  clouds::ecs::CloudFrameBudget budget;
+  budget.targetMilliseconds = targetMilliseconds;
+  budget.source = clouds::ecs::FrameTimeSource::WallFrame;
+  budget.judgedQuantile = 0.9;
+  return budget;
+}
+
 void installCloudQualityControls(engine::ecs::Scheduler& scheduler,
                                  double frameTargetMilliseconds) {
   scheduler.add(engine::ecs::Phase::Input, "cloud quality keys",
@@ -32,7 +40,9 @@ void installCloudQualityControls(engine::ecs::Scheduler& scheduler,
                   for (const auto& [key, preset] : kKeys) {
                     if (!input.wasPressed(key)) continue;
                     for (engine::ecs::Entity camera : cameras) {
-                      world.get<clouds::ecs::CloudQuality>(camera).preset = preset;
+                      // The preset as it is: no knobs tuned.
+                      world.get<clouds::ecs::CloudQuality>(camera) =
+                          clouds::ecs::CloudQuality{preset};
                       world.remove<clouds::ecs::CloudFrameBudget>(camera);  // a fixed preset
                     }
                   }
@@ -40,7 +50,7 @@ void installCloudQualityControls(engine::ecs::Scheduler& scheduler,
                     for (engine::ecs::Entity camera : cameras) {
                       if (!world.remove<clouds::ecs::CloudFrameBudget>(camera)) {
                         world.emplace<clouds::ecs::CloudFrameBudget>(
-                            camera, clouds::ecs::CloudFrameBudget{frameTargetMilliseconds});
+                            camera, playerFrameBudget(frameTargetMilliseconds));
                       }
                     }
                   }

@@ -63,6 +63,13 @@ InputScript InputScript::load(const std::filesystem::path& file) {
       event.mouse = glm::dvec2(m.x, m.y);
       ++actions;
     }
+    if (e.has("cursor")) {
+      // [x, y, left button down (0 or 1)]: the free cursor, as a player drives the panel.
+      const glm::dvec3 c = e.vec3("cursor", -1.0, 1e5);
+      if (c.z != 0.0 && c.z != 1.0) e.fail("cursor", "the button (third value) must be 0 or 1");
+      event.cursor = c;
+      ++actions;
+    }
     if (e.has("lightning")) {
       const JsonReader l = e.object("lightning");
       clouds::ecs::TriggerLightning strike;
@@ -118,6 +125,12 @@ void InputScript::apply(std::uint64_t frame, engine::platform::InputState& input
       input.mouseDeltaX += e.mouse->x;
       input.mouseDeltaY += e.mouse->y;
       input.mouseCaptured = true;
+    }
+    if (e.cursor) {
+      input.cursorX = e.cursor->x;
+      input.cursorY = e.cursor->y;
+      input.leftButtonDown = e.cursor->z != 0.0;
+      input.mouseCaptured = false;
     }
     if (e.camera) world.events<SetCameraPose>().send(*e.camera);
     if (e.timeOfDayHours) world.events<SetTimeOfDay>().send(SetTimeOfDay{*e.timeOfDayHours});

@@ -8,6 +8,7 @@
 //     {"frame": 0, "timeOfDayHours": 15.5},
 //     {"frame": 1, "press": ["W", "Up"]},  {"frame": 9, "release": ["Up"]},
 //     {"frame": 4, "mouse": [12, -3, 0]},  ([dx, dy, scroll] in pixels; scroll is not used yet)
+//     {"frame": 5, "cursor": [420, 80, 1]},  (the free cursor [x, y] in pixels, button down 1/0)
 //     {"frame": 12, "capture": "ground_view"},
 //     {"frame": 10, "lightning": {"energy": 1.0, "kind": "ground"}},  (a storm's scene only)
 //     {"frame": 0, "set": {"clouds.coverage": 0.7, "sun.timeOfDayHours": 9}},  (live_settings.h)
@@ -32,6 +33,7 @@ struct ScriptEvent {
   std::vector<engine::platform::Key> press;
   std::vector<engine::platform::Key> release;
   std::optional<glm::dvec2> mouse;
+  std::optional<glm::dvec3> cursor;  // x, y (pixels), left button down (1) or up (0)
   std::optional<std::string> capture;
   std::optional<clouds::ecs::TriggerLightning> lightning;
   std::vector<std::pair<std::string, double>> set;  // live settings (live_settings.h), by name

@@ -3,9 +3,11 @@
 #include <array>
 #include <cmath>
 #include <string>
+#include <type_traits>
 
 #include "clouds/ecs/cloud_components.h"
 #include "clouds/ecs/frame_budget.h"
+#include "clouds/ecs/lightning.h"
 #include "engine/core/error.h"
 #include "engine/core/log.h"
 #include "engine/render/exposure.h"
@@ -17,11 +19,33 @@ namespace {
 
 using engine::ecs::World;
 
-bool hasClouds(const SceneDescription& s) {
-  return s.clouds.has_value();
+bool hasClouds(const LiveScene& live) {
+  return live.scene.clouds.has_value();
 }
-bool always(const SceneDescription&) {
+bool always(const LiveScene&) {
   return true;
+}
+bool loadedWithGodRays(const LiveScene& live) {
+  return live.scene.clouds && live.loaded.clouds && live.loaded.clouds->settings.godRaySamples > 0;
+}
+bool loadedWithLightning(const LiveScene& live) {
+  return live.scene.lightning && live.loaded.lightning;
+}
+
+// God rays on or off: the layer's samples (a preset picks its own count while on). Only in a
+// scene loaded with them, whose pipelines include the frames without (the sun off screen).
+void setGodRays(World& world, SceneDescription& s, double on) {
+  const std::uint32_t samples = on >= 0.5 ? kSceneGodRaySamples : 0u;
+  s.clouds->settings.godRaySamples = samples;
+  world.view<clouds::ecs::CloudLayer>().each(
+      [&](clouds::ecs::CloudLayer& layer) { layer.settings.godRaySamples = samples; });
+}
+
+// The storm's strike rate; 0 turns lightning off (strikes under way fade out as they would).
+void setStrikesPerMinute(World& world, SceneDescription& s, double rate) {
+  s.lightning->storm.strikesPerMinute = rate;
+  world.view<clouds::ecs::LightningStorm>().each(
+      [&](clouds::ecs::LightningStorm& storm) { storm.strikesPerMinute = rate; });
 }
 
 // A field of the cloud layer's settings, in the world's CloudLayer and the scene alike.
@@ -38,6 +62,35 @@ LiveSetting cloudSetting(const char* name, const char* label, double min, double
         s.clouds->settings.*Field = float(value);
         world.view<clouds::ecs::CloudLayer>().each(
             [&](clouds::ecs::CloudLayer& layer) { layer.settings.*Field = float(value); });
+      }};
+}
+
+// A march precision knob of the camera's cloud preset (CloudQualityKnobs): shows the preset's
+// value until set; setting it fixes the preset (a governor's rungs are the presets as they
+// are), the world's camera and the scene alike.
+template <typename T, std::optional<T> clouds::ecs::CloudQualityKnobs::*Knob,
+          T clouds::Settings::*Field>
+LiveSetting cloudKnob(const char* name, const char* label, double min, double max) {
+  return LiveSetting{
+      name,
+      label,
+      min,
+      max,
+      hasClouds,
+      [](const SceneDescription& s) {
+        const std::optional<T>& knob = s.camera.cloudKnobs.*Knob;
+        return double(knob ? *knob : clouds::settingsFor(s.camera.cloudQuality).*Field);
+      },
+      [](World& world, SceneDescription& s, double value) {
+        const T v = std::is_integral_v<T> ? T(std::lround(value)) : T(value);
+        world.view<clouds::ecs::CloudQuality>().each(
+            [&](engine::ecs::Entity camera, clouds::ecs::CloudQuality& quality) {
+              quality.knobs.*Knob = v;
+              world.remove<clouds::ecs::CloudFrameBudget>(camera);
+              s.camera.cloudQuality = quality.preset;
+            });
+        s.camera.cloudKnobs.*Knob = v;
+        s.camera.frameTargetMilliseconds = 0.0;
       }};
 }
 
@@ -66,9 +119,10 @@ void setCompensation(World& world, SceneDescription& s, double ev) {
   world.ctx().get<engine::render::Exposure>().compensationEv = float(ev);
 }
 
-const std::array<LiveSetting, 14>& table() {
+const std::array<LiveSetting, 20>& table() {
   using S = clouds::Settings;
-  static const std::array<LiveSetting, 14> kSettings = {
+  using K = clouds::ecs::CloudQualityKnobs;
+  static const std::array<LiveSetting, 20> kSettings = {
       cloudSetting<&S::coverage>("clouds.coverage", "coverage", 0.0, 1.0),
       cloudSetting<&S::cloudType>("clouds.cloudType", "cloud type", 0.0, 1.0),
       cloudSetting<&S::densityMultiplier>("clouds.densityMultiplier", "density", 0.0, 5.0),
@@ -84,6 +138,15 @@ const std::array<LiveSetting, 14>& table() {
       cloudSetting<&S::ambientStrength>("clouds.lighting.ambientStrength", "sky light", 0.0, 5.0),
       cloudSetting<&S::silverIntensity>("clouds.lighting.silverIntensity", "silver lining", 0.0,
                                         5.0),
+      LiveSetting{"clouds.godRays", "god rays", 0.0, 1.0, loadedWithGodRays,
+                  [](const SceneDescription& s) {
+                    return s.clouds->settings.godRaySamples > 0 ? 1.0 : 0.0;
+                  },
+                  setGodRays, true},
+      LiveSetting{"lightning.strikesPerMinute", "strikes/min (0: off)", 0.0, 60.0,
+                  loadedWithLightning,
+                  [](const SceneDescription& s) { return s.lightning->storm.strikesPerMinute; },
+                  setStrikesPerMinute},
       LiveSetting{"sun.timeOfDayHours", "time of day (h)", 0.0, 23.99, always,
                   [](const SceneDescription& s) { return s.sun.timeOfDayHours; }, setTimeOfDay},
       LiveSetting{"sun.hoursPerSecond", "clock (h/s)", 0.0, 1.0, always,
@@ -92,6 +155,14 @@ const std::array<LiveSetting, 14>& table() {
       LiveSetting{"exposure.compensationEv", "exposure (EV)", -5.0, 5.0, always,
                   [](const SceneDescription& s) { return s.exposure.compensationEv; },
                   setCompensation},
+      cloudKnob<std::uint32_t, &K::maxViewSteps, &S::maxViewSteps>("camera.cloudKnobs.maxViewSteps",
+                                                                   "view samples", 8.0, 512.0),
+      cloudKnob<float, &K::viewStepMetres, &S::viewStepMetres>("camera.cloudKnobs.viewStepMetres",
+                                                               "view step (m)", 5.0, 300.0),
+      cloudKnob<std::uint32_t, &K::lightSteps, &S::lightSteps>("camera.cloudKnobs.lightSteps",
+                                                               "light samples", 0.0, 24.0),
+      cloudKnob<float, &K::transmittanceCutoff, &S::transmittanceCutoff>(
+          "camera.cloudKnobs.transmittanceCutoff", "ray cutoff", 0.0, 0.05),
   };
   return kSettings;
 }
@@ -113,7 +184,7 @@ void applyLiveSetting(World& world, std::string_view name, double value) {
   const LiveSetting* setting = findLiveSetting(name);
   if (setting == nullptr) throw engine::Error("set: no live setting \"" + std::string(name) + "\"");
   auto& live = world.ctx().get<LiveScene>();
-  if (!setting->available(live.scene)) {
+  if (!setting->available(live)) {
     throw engine::Error("set: " + std::string(name) + ": the scene has nothing it tunes");
   }
   if (!(value >= setting->min && value <= setting->max)) {
@@ -124,17 +195,22 @@ void applyLiveSetting(World& world, std::string_view name, double value) {
   setting->set(world, live.scene, value);
 }
 
-SceneDescription sceneToSave(World& world) {
-  SceneDescription scene = world.ctx().get<LiveScene>().scene;
+void syncLiveScene(World& world) {
+  SceneDescription& scene = world.ctx().get<LiveScene>().scene;
   world.view<const TimeOfDay>().each(
       [&](const TimeOfDay& t) { scene.sun.timeOfDayHours = t.hours; });
   world.view<const clouds::ecs::CloudQuality>().each(
       [&](engine::ecs::Entity camera, const clouds::ecs::CloudQuality& quality) {
         scene.camera.cloudQuality = quality.preset;
+        scene.camera.cloudKnobs = quality.knobs;
         const auto* budget = world.tryGet<const clouds::ecs::CloudFrameBudget>(camera);
         scene.camera.frameTargetMilliseconds = budget != nullptr ? budget->targetMilliseconds : 0.0;
       });
-  return scene;
+}
+
+SceneDescription sceneToSave(World& world) {
+  syncLiveScene(world);
+  return world.ctx().get<LiveScene>().scene;
 }
 
 bool saveLiveScene(World& world) {

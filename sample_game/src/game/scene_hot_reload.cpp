@@ -8,6 +8,7 @@
 #include "engine/core/log.h"
 #include "engine/render/exposure.h"
 #include "engine/render/scene_components.h"
+#include "game/cloud_quality_controls.h"
 #include "game/game_components.h"
 #include "game/live_settings.h"
 #include "scene/scene_writer.h"
@@ -101,21 +102,24 @@ void applyExposureAndFog(World& world, SceneDescription& running, const SceneDes
 void applyCamera(World& world, SceneDescription& running, const SceneDescription& before,
                  const SceneDescription& next) {
   const bool preset = next.camera.cloudQuality != before.camera.cloudQuality;
+  const bool knobs = next.camera.cloudKnobs != before.camera.cloudKnobs;
   // A target the file no longer gives leaves the running one (the sample's default) alone.
   const bool target = next.camera.frameTargetMilliseconds &&
                       next.camera.frameTargetMilliseconds != before.camera.frameTargetMilliseconds;
   world.view<clouds::ecs::CloudQuality>().each(
       [&](engine::ecs::Entity camera, clouds::ecs::CloudQuality& quality) {
         if (preset) quality.preset = next.camera.cloudQuality;
+        if (knobs) quality.knobs = next.camera.cloudKnobs;
         if (!target) return;
         if (*next.camera.frameTargetMilliseconds > 0.0) {
           world.emplaceOrReplace<clouds::ecs::CloudFrameBudget>(
-              camera, clouds::ecs::CloudFrameBudget{*next.camera.frameTargetMilliseconds});
+              camera, playerFrameBudget(*next.camera.frameTargetMilliseconds));
         } else {
           world.remove<clouds::ecs::CloudFrameBudget>(camera);
         }
       });
   if (preset) running.camera.cloudQuality = next.camera.cloudQuality;
+  if (knobs) running.camera.cloudKnobs = next.camera.cloudKnobs;
   if (target) running.camera.frameTargetMilliseconds = next.camera.frameTargetMilliseconds;
 }
 
@@ -178,6 +182,7 @@ std::string applyReloadedScene(World& world, const SceneDescription& before,
   rest.exposure = before.exposure;
   if (before.fog && next.fog) rest.fog = before.fog;
   rest.camera.cloudQuality = before.camera.cloudQuality;
+  rest.camera.cloudKnobs = before.camera.cloudKnobs;
   rest.camera.frameTargetMilliseconds = before.camera.frameTargetMilliseconds;
   if (sceneJson(rest) == sceneJson(before)) return "applied";
   return "applied; other changes (terrain, atmosphere, storm, hero clouds, the camera's start, "

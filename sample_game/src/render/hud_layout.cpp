@@ -50,8 +50,8 @@ void fullText(ecs::World& world, std::span<const gfx::TimedScope> gpuTimings) {
   }
   if (const auto* governor = world.ctx().tryGet<clouds::ecs::CloudGovernorStatus>();
       governor != nullptr && governor->active) {
-    ImGui::Text("governor: %s, median %.1f ms, %llu changes", governor->reason,
-                governor->medianMilliseconds, static_cast<unsigned long long>(governor->changes));
+    ImGui::Text("governor: %s, judged %.1f ms, %llu changes", governor->reason,
+                governor->judgedMilliseconds, static_cast<unsigned long long>(governor->changes));
   }
   world.view<const TimeOfDay>().each([&](const TimeOfDay& t) {
     const int minutes = int(std::fmod(t.hours, 24.0) * 60.0);

@@ -9,6 +9,7 @@
 #include "clouds/ecs/cloud_components.h"
 #include "clouds/ecs/frame_budget.h"
 #include "engine/core/error.h"
+#include "game/cloud_quality_controls.h"
 #include "game/live_settings.h"
 
 namespace sample {
@@ -18,24 +19,34 @@ using engine::ecs::World;
 
 constexpr float kPanelWidth = 250.0f;  // px
 
-// The live settings under a header per scene section ("clouds", "sun", "exposure"), closed
-// until opened: a smaller panel costs less to draw (on a CPU device, per pixel).
+// The live settings under a header per scene section ("clouds", "lightning", "sun",
+// "exposure", the cloud preset's knobs), effects as switches, closed until opened: a smaller panel
+// costs less to draw (on a CPU device, per pixel).
 void liveSliders(World& world, bool allOpen) {
   auto& live = world.ctx().get<LiveScene>();
   std::string_view section;
   bool open = false;
   for (const LiveSetting& setting : liveSettings()) {
-    if (!setting.available(live.scene)) continue;
+    if (!setting.available(live)) continue;
     const std::string_view name = setting.name;
     const std::string_view group = name.substr(0, name.find('.'));
     if (group != section) {
       section = group;
-      const std::string header(group);
+      // The camera's entries are its cloud preset's knobs (live_settings.cpp).
+      const std::string header = group == "camera" ? "cloud preset's knobs" : std::string(group);
       open = ImGui::CollapsingHeader(header.c_str(), allOpen ? ImGuiTreeNodeFlags_DefaultOpen : 0);
     }
     if (!open) continue;
     float value = float(setting.get(live.scene));
-    if (ImGui::SliderFloat(setting.label, &value, float(setting.min), float(setting.max))) {
+    bool changed = false;
+    if (setting.isSwitch) {
+      bool on = value >= 0.5f;
+      changed = ImGui::Checkbox(setting.label, &on);
+      value = on ? 1.0f : 0.0f;
+    } else {
+      changed = ImGui::SliderFloat(setting.label, &value, float(setting.min), float(setting.max));
+    }
+    if (changed) {
       try {
         applyLiveSetting(world, setting.name, double(value));
         live.lastRefusal.clear();
@@ -56,7 +67,8 @@ void qualityControls(World& world) {
         bool governed = budget != nullptr;
         if (ImGui::Checkbox("governor", &governed)) {
           if (governed) {
-            world.emplace<clouds::ecs::CloudFrameBudget>(camera, clouds::ecs::CloudFrameBudget{});
+            world.emplace<clouds::ecs::CloudFrameBudget>(
+                camera, playerFrameBudget(clouds::ecs::CloudFrameBudget{}.targetMilliseconds));
           } else {
             world.remove<clouds::ecs::CloudFrameBudget>(camera);
           }
@@ -71,7 +83,7 @@ void qualityControls(World& world) {
         if (ImGui::BeginCombo("clouds", clouds::qualityName(quality.preset))) {
           for (clouds::Quality preset : kPresets) {
             if (ImGui::Selectable(clouds::qualityName(preset), preset == quality.preset)) {
-              quality.preset = preset;
+              quality = clouds::ecs::CloudQuality{preset};          // as it is, no knobs tuned
               world.remove<clouds::ecs::CloudFrameBudget>(camera);  // a fixed preset
             }
           }
@@ -94,6 +106,7 @@ glm::vec2 layOutSettingsPanel(World& world, VkExtent2D extent, bool allOpen) {
                ImGuiWindowFlags_NoMove | ImGuiWindowFlags_AlwaysAutoResize |
                    ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoCollapse);
   ImGui::PushItemWidth(kPanelWidth * 0.5f);
+  syncLiveScene(world);  // the sliders show what the governor and the keys changed too
   qualityControls(world);
   ImGui::Separator();
   liveSliders(world, allOpen);

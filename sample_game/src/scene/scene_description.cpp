@@ -10,6 +10,18 @@ namespace {
 
 using engine::JsonReader;
 
+// Ranges as clouds::Settings documents them (validateSettings() holds the module to them).
+clouds::ecs::CloudQualityKnobs readCloudKnobs(const JsonReader& r) {
+  clouds::ecs::CloudQualityKnobs k;
+  if (r.has("maxViewSteps")) k.maxViewSteps = std::uint32_t(r.integer("maxViewSteps", 1, 16384));
+  if (r.has("viewStepMetres")) k.viewStepMetres = float(r.number("viewStepMetres", 0.5, 1e4));
+  if (r.has("lightSteps")) k.lightSteps = std::uint32_t(r.integer("lightSteps", 0, 64));
+  if (r.has("transmittanceCutoff"))
+    k.transmittanceCutoff = float(r.number("transmittanceCutoff", 0.0, 0.5));
+  r.finish();
+  return k;
+}
+
 CameraDescription readCamera(const JsonReader& r) {
   CameraDescription c;
   c.position = r.vec3("position", -1e7, 1e7);
@@ -26,6 +38,7 @@ CameraDescription readCamera(const JsonReader& r) {
   if (r.has("frameTargetMilliseconds")) {
     c.frameTargetMilliseconds = r.number("frameTargetMilliseconds", 0.0, 1e5);
   }
+  if (r.has("cloudKnobs")) c.cloudKnobs = readCloudKnobs(r.object("cloudKnobs"));
   const std::string sky =
       r.choice("atmosphereQuality", {"low", "medium", "high", "reference"}, "medium");
   atmosphere::parseQuality(sky, &c.atmosphereQuality);
@@ -148,7 +161,7 @@ CloudDescription readClouds(const JsonReader& r, const std::filesystem::path& sc
   if (!r.boolean("shadows", true)) s.shadowCascades = 0;
   // Whether the layer makes god rays (its mask, and the composite's shafts in the haze): off,
   // no pass, mask or pipeline. The quality preset picks the samples.
-  if (r.boolean("godRays", false)) s.godRaySamples = 16;
+  if (r.boolean("godRays", false)) s.godRaySamples = kSceneGodRaySamples;
   c.noiseSeed = static_cast<std::uint32_t>(r.integer("noiseSeed", 0, 0xffffffffLL, c.noiseSeed));
   if (r.has("weatherMap")) c.weatherMap = resolveFile(r, "weatherMap", sceneDir);
   if (r.has("heroClouds")) {

@@ -10,6 +10,7 @@
 
 #include "atmosphere/atmosphere.h"
 #include "clouds/clouds.h"
+#include "clouds/ecs/cloud_components.h"
 #include "clouds/ecs/lightning.h"
 #include "clouds/hero_cloud_life.h"
 
@@ -24,9 +25,14 @@ struct CameraDescription {
   // Cost/accuracy preset of this camera's clouds ("low", "medium", "high", "ultra",
   // "reference"); --quality and the number keys 1-5 override it.
   clouds::Quality cloudQuality = clouds::Quality::Medium;
-  // GPU milliseconds a frame that a governor holds by choosing the cloud preset (from
-  // cloudQuality on); 0: none, the preset stays. Unset: the sample's default (a window's runs
-  // are governed, headless ones not); --frame-target-ms and --quality override it.
+  // The preset's march knobs tuned by hand ("cloudKnobs": maxViewSteps, viewStepMetres,
+  // lightSteps, transmittanceCutoff; each absent keeps the preset's). A scene with any is not
+  // governed: the governor's rungs are the presets as they are.
+  clouds::ecs::CloudQualityKnobs cloudKnobs;
+  // Milliseconds a frame (wall clock, nine frames in ten: playerFrameBudget()) that a governor
+  // holds by choosing the cloud preset (from cloudQuality on); 0: none, the preset stays.
+  // Unset: the sample's default (a window's runs are governed, headless ones not);
+  // --frame-target-ms and --quality override it.
   std::optional<double> frameTargetMilliseconds;
   // Cost/accuracy preset of this camera's atmosphere ("low", "medium", "high", "reference").
   atmosphere::Quality atmosphereQuality = atmosphere::Quality::Medium;
@@ -64,6 +70,10 @@ struct HeroCloudDescription {
   std::optional<clouds::HeroCloudLifecycle> lifecycle;
 };
 inline constexpr const char* kShippedHeroClouds[] = {"towering_cumulus", "cumulonimbus", "arch"};
+
+// The god-ray samples a scene's "godRays": true gives the layer (a quality preset then picks
+// its own count; 0 is off).
+inline constexpr std::uint32_t kSceneGodRaySamples = 16;
 
 struct CloudDescription {
   clouds::Settings settings;

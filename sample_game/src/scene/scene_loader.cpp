@@ -73,8 +73,7 @@ clouds::HeroCloud inFrontOfTheCamera(const clouds::NvdfVolume& volume,
 
 }  // namespace
 
-LoadedHeroClouds loadHeroClouds(const SceneDescription& scene,
-                                const std::filesystem::path& shippedDir,
+LoadedHeroClouds loadHeroClouds(SceneDescription& scene, const std::filesystem::path& shippedDir,
                                 const std::optional<std::filesystem::path>& userCloud) {
   LoadedHeroClouds loaded;
   std::vector<std::filesystem::path> paths;  // of loaded.assets: one load per file
@@ -106,6 +105,11 @@ LoadedHeroClouds loadHeroClouds(const SceneDescription& scene,
                       std::to_string(std::lround(p.x)) + ", " + std::to_string(std::lround(p.y)) +
                       ", " + std::to_string(std::lround(p.z)) + ") m, ahead of the camera");
     loaded.placements.push_back({cloud, std::nullopt});
+    HeroCloudDescription described;
+    described.file = *userCloud;
+    described.positionMetres = cloud.positionMetres;
+    if (!scene.clouds) scene.clouds = CloudDescription{};
+    scene.clouds->heroClouds.push_back(described);
   }
   return loaded;
 }
@@ -155,11 +159,11 @@ void populateScene(ecs::App& app, const SceneDescription& scene,
   Aircraft aircraft;
   aircraft.speedMetresPerSecond = scene.camera.speedMetresPerSecond;
   world.emplace<Aircraft>(player, aircraft);
-  world.emplace<clouds::ecs::CloudQuality>(player,
-                                           clouds::ecs::CloudQuality{scene.camera.cloudQuality});
+  world.emplace<clouds::ecs::CloudQuality>(
+      player, clouds::ecs::CloudQuality{scene.camera.cloudQuality, scene.camera.cloudKnobs});
   if (scene.camera.frameTargetMilliseconds) {
     world.emplace<clouds::ecs::CloudFrameBudget>(
-        player, clouds::ecs::CloudFrameBudget{*scene.camera.frameTargetMilliseconds});
+        player, playerFrameBudget(*scene.camera.frameTargetMilliseconds));
   }
   world.emplace<atmosphere::ecs::AtmosphereQuality>(
       player, atmosphere::ecs::AtmosphereQuality{scene.camera.atmosphereQuality});

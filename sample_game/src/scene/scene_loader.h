@@ -51,9 +51,9 @@ struct LoadedHeroClouds {
 
 // The scene's hero clouds (shipped ones from `shippedDir`, the baked assets_src/hero_clouds)
 // and `userCloud` (the --cloud option: an .nvdf or OpenVDB file), placed in front of the
-// camera's start. Throws engine::Error naming the file and the problem.
-LoadedHeroClouds loadHeroClouds(const SceneDescription& scene,
-                                const std::filesystem::path& shippedDir,
+// camera's start and added to `scene`'s hero clouds where it was placed (so a saved scene
+// keeps it). Throws engine::Error naming the file and the problem.
+LoadedHeroClouds loadHeroClouds(SceneDescription& scene, const std::filesystem::path& shippedDir,
                                 const std::optional<std::filesystem::path>& userCloud);
 
 void populateScene(engine::ecs::App& app, const SceneDescription& scene,

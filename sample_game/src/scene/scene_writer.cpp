@@ -38,6 +38,15 @@ json cameraJson(const CameraDescription& c) {
             {"cloudQuality", lowercase(clouds::qualityName(c.cloudQuality))},
             {"atmosphereQuality", lowercase(atmosphere::qualityName(c.atmosphereQuality))}};
   if (c.frameTargetMilliseconds) j["frameTargetMilliseconds"] = *c.frameTargetMilliseconds;
+  const clouds::ecs::CloudQualityKnobs& k = c.cloudKnobs;
+  if (k.any()) {
+    json knobs = json::object();
+    if (k.maxViewSteps) knobs["maxViewSteps"] = *k.maxViewSteps;
+    if (k.viewStepMetres) knobs["viewStepMetres"] = double(*k.viewStepMetres);
+    if (k.lightSteps) knobs["lightSteps"] = *k.lightSteps;
+    if (k.transmittanceCutoff) knobs["transmittanceCutoff"] = double(*k.transmittanceCutoff);
+    j["cloudKnobs"] = knobs;
+  }
   return j;
 }
 

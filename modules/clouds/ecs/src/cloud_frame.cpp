@@ -27,12 +27,20 @@ clouds::Settings layerSettings(engine::ecs::World& world) {
 
 }  // namespace
 
+clouds::Settings CloudQualityKnobs::appliedTo(clouds::Settings settings) const {
+  if (maxViewSteps) settings.maxViewSteps = *maxViewSteps;
+  if (viewStepMetres) settings.viewStepMetres = *viewStepMetres;
+  if (lightSteps) settings.lightSteps = *lightSteps;
+  if (transmittanceCutoff) settings.transmittanceCutoff = *transmittanceCutoff;
+  return settings;
+}
+
 clouds::Settings cloudSettings(engine::ecs::World& world) {
   const clouds::Settings layer = layerSettings(world);
   clouds::Settings settings = layer;
   world.view<const render::Camera>().each([&](engine::ecs::Entity entity, const render::Camera&) {
     if (const auto* quality = world.tryGet<const CloudQuality>(entity)) {
-      settings = clouds::settingsFor(quality->preset, layer);
+      settings = quality->knobs.appliedTo(clouds::settingsFor(quality->preset, layer));
     }
   });
   return settings;

@@ -7,6 +7,7 @@
 #include "clouds/ecs/cloud_components.h"
 #include "clouds/frame_time_governor.h"
 #include "engine/core/log.h"
+#include "engine/ecs/frame_time.h"
 #include "engine/render/gpu_frame_time.h"
 #include "engine/render/scene_components.h"
 
@@ -56,12 +57,30 @@ Budgeted budgetedCamera(engine::ecs::World& world) {
   return found;
 }
 
+// The newest measured frame of a budget's source, if one has been measured.
+struct MeasuredFrame {
+  double milliseconds = 0.0;
+  std::uint64_t index = 0;
+};
+
+std::optional<MeasuredFrame> latestFrame(engine::ecs::World& world, FrameTimeSource source) {
+  if (source == FrameTimeSource::WallFrame) {
+    const auto* wall = world.ctx().tryGet<engine::ecs::WallFrameTime>();
+    if (wall == nullptr || !wall->measured) return std::nullopt;
+    return MeasuredFrame{wall->milliseconds, wall->frameIndex};
+  }
+  const auto* gpu = world.ctx().tryGet<engine::render::GpuFrameTime>();
+  if (gpu == nullptr || !gpu->measured) return std::nullopt;
+  return MeasuredFrame{gpu->milliseconds, gpu->frameIndex};
+}
+
 // What the system keeps between frames: the governor, and what it was made for.
 struct GovernorState {
   const clouds::PresetLadder& ladder = clouds::presetLadder();
   std::optional<clouds::FrameTimeGovernor> governor;
   clouds::Quality floor{};
   clouds::Quality ceiling{};
+  double judgedQuantile = 0.5;
   std::optional<std::uint64_t> lastMeasuredFrame;
   std::string refused;  // the budget last refused (logged once)
 
@@ -74,7 +93,8 @@ struct GovernorState {
       return;
     }
     const CloudFrameBudget& budget = *camera.budget;
-    if (!governor || budget.floor != floor || budget.ceiling != ceiling) {
+    if (!governor || budget.floor != floor || budget.ceiling != ceiling ||
+        budget.judgedQuantile != judgedQuantile) {
       if (!start(budget, camera.quality->preset, status)) return;
     }
     if (budget.targetMilliseconds != governor->config().targetMilliseconds &&
@@ -82,16 +102,18 @@ struct GovernorState {
       refuse("CloudFrameBudget.targetMilliseconds: must be in (0, 1e5] ms", status);
       return;
     }
-    const auto* time = world.ctx().tryGet<engine::render::GpuFrameTime>();
-    if (time != nullptr && time->measured && lastMeasuredFrame != time->frameIndex) {
+    if (const std::optional<MeasuredFrame> time = latestFrame(world, budget.source);
+        time && lastMeasuredFrame != time->index) {
       governor->observe(time->milliseconds);
-      lastMeasuredFrame = time->frameIndex;
+      lastMeasuredFrame = time->index;
     }
+    // The ladder's rungs are the presets as they are: hand-tuned knobs are a fixed preset's.
     camera.quality->preset = ladder.presets[governor->rung()];
+    camera.quality->knobs = {};
     status.active = true;
     status.preset = camera.quality->preset;
     status.targetMilliseconds = governor->config().targetMilliseconds;
-    status.medianMilliseconds = governor->lastMedianMilliseconds();
+    status.judgedMilliseconds = governor->lastJudgedMilliseconds();
     status.reason = clouds::governorReasonName(governor->reason());
     status.changes = governor->changes();
     status.error.clear();
@@ -109,6 +131,7 @@ struct GovernorState {
     config.nominalRungCosts = ladder.nominalMilliseconds;
     config.floorRung = rungs.floor;
     config.ceilingRung = rungs.ceiling;
+    config.judgedQuantile = budget.judgedQuantile;
     // From the camera's preset (the Reference, no rung, from the top).
     const auto it = std::find(ladder.presets.begin(), ladder.presets.end(), current);
     config.startRung = it != ladder.presets.end() ? std::size_t(it - ladder.presets.begin())
@@ -121,6 +144,7 @@ struct GovernorState {
     }
     floor = budget.floor;
     ceiling = budget.ceiling;
+    judgedQuantile = budget.judgedQuantile;
     return true;
   }
 

@@ -7,11 +7,12 @@
 //   governor->observe(milliseconds);   // each frame, with what the rung it rendered took
 //   settingsFor(ladder[governor->rung()], look);                  // the next frame's settings
 //
-// How it decides, from the median of the last `windowFrames` frames at the current rung:
+// How it decides, from a quantile of the last `windowFrames` frames at the current rung (the
+// median by default; a higher `judgedQuantile` holds the slow frames to the target too):
 //   - over the target by more than `descendMargin`: down, as many rungs as the known cost
 //     ratios say it takes to fit (a scene that suddenly costs twice as much steps down at once);
 //   - the rung above predicted under the target by `climbMargin` or more: up one rung. The
-//     prediction is this median times the two rungs' cost ratio as last measured across a
+//     prediction is this quantile times the two rungs' cost ratio as last measured across a
 //     change between them (the ladder's nominal ratio until then), so it follows the scene;
 //   - a climb that has to come back down at its first judgement is not tried again for
 //     `backoffFrames`, doubled with each failure in a row (up to 16 times);
@@ -37,11 +38,15 @@ struct FrameTimeGovernorConfig {
   std::size_t floorRung = 0;                       // the lowest rung it may choose
   std::optional<std::size_t> ceilingRung;          // the highest (none: the ladder's top)
   std::size_t startRung = 0;                       // clamped to [floor, ceiling]
-  std::uint32_t windowFrames = 24;                 // [3, 1000]: frames whose median is judged
+  std::uint32_t windowFrames = 24;                 // [3, 1000]: frames judged together
   std::uint32_t settleFrames = 4;                  // [0, 1000]: frames after a change not judged
   std::uint32_t minimumFramesBetweenChanges = 60;  // [1, 1e6], >= windowFrames + settleFrames
-  double descendMargin = 0.05;        // [0, 1]: down when the median > target * (1 + margin)
-  double climbMargin = 0.1;           // [0, 0.9]: up when predicted <= target * (1 - margin)
+  double descendMargin = 0.05;  // [0, 1]: down when judged > target * (1 + margin)
+  double climbMargin = 0.1;     // [0, 0.9]: up when predicted <= target * (1 - margin)
+  // [0.5, 0.99]: the quantile of the window that is judged. 0.5 (the median) holds the typical
+  // frame; 0.9 holds nine frames in ten, for a timing source as noisy as a CPU rasteriser's
+  // wall clock, whose median can sit under the target while one frame in five runs over it.
+  double judgedQuantile = 0.5;
   std::uint32_t backoffFrames = 240;  // [0, 1e6]: the first wait after a failed climb
 };
 
@@ -69,8 +74,8 @@ class FrameTimeGovernor {
 
   std::size_t rung() const { return rung_; }
   Reason reason() const { return reason_; }
-  // The median the last judgement saw (0 before the first).
-  double lastMedianMilliseconds() const { return lastMedian_; }
+  // The window's judgedQuantile the last judgement saw (0 before the first).
+  double lastJudgedMilliseconds() const { return lastJudged_; }
   std::uint64_t framesObserved() const { return frame_; }
   std::uint64_t changes() const { return changes_; }
   std::uint64_t ignoredSamples() const { return ignored_; }
@@ -87,12 +92,12 @@ class FrameTimeGovernor {
   std::size_t ceiling() const;
   // Cost of rung r + 1 over rung r: as last measured, else nominal.
   double costRatioAbove(std::size_t r) const;
-  // Learns the cost ratio between the current rung, whose first median is `median`, and the
-  // neighbour it came from.
-  void learnRatio(double median);
+  // Learns the cost ratio between the current rung, whose first judged time is `judged`, and
+  // the neighbour it came from.
+  void learnRatio(double judged);
 
   struct RungRecord {
-    double medianMilliseconds = 0.0;        // its last judgement's (0: never judged)
+    double judgedMilliseconds = 0.0;        // its last judgement's (0: never judged)
     std::uint32_t failedClimbs = 0;         // failed climbs to this rung in a row
     std::uint64_t climbAllowedAtFrame = 0;  // backoff: no climb to this rung before it
   };
@@ -106,7 +111,7 @@ class FrameTimeGovernor {
   std::uint64_t lastChangeFrame_ = 0;
   std::uint64_t changes_ = 0;
   std::uint64_t ignored_ = 0;
-  double lastMedian_ = 0.0;
+  double lastJudged_ = 0.0;
   std::optional<std::size_t> arrivedFrom_;  // the rung left, until this one's first judgement
   bool climbedIntoThisRung_ = false;  // the current rung was reached by a climb not yet judged
   Reason reason_ = Reason::Starting;

@@ -10,6 +10,7 @@
 
 #include "clouds/ecs/cloud_components.h"
 #include "clouds/ecs/cloud_frame.h"
+#include "engine/ecs/frame_time.h"
 #include "engine/ecs/scheduler.h"
 #include "engine/ecs/world.h"
 #include "engine/render/gpu_frame_time.h"
@@ -31,6 +32,10 @@ struct BudgetWorld {
   // What each preset's frame costs on the GPU, milliseconds.
   std::map<Quality, double> cost = {
       {Quality::Low, 9.0}, {Quality::Medium, 12.0}, {Quality::High, 28.0}, {Quality::Ultra, 70.0}};
+  // What each preset's frame takes on the wall clock (the GPU's time, the CPU's and the
+  // present), milliseconds.
+  std::map<Quality, double> wallCost = {
+      {Quality::Low, 20.0}, {Quality::Medium, 30.0}, {Quality::High, 50.0}, {Quality::Ultra, 95.0}};
   std::uint64_t frame = 0;
   std::vector<Quality> rendered;  // the preset of each frame so far
 
@@ -43,9 +48,14 @@ struct BudgetWorld {
   }
   Quality preset() { return world.get<clouds::ecs::CloudQuality>(camera).preset; }
   // Frames whose GPU time is what the camera's preset costs (measured as the renderer does,
-  // two frames late).
+  // two frames late), and whose wall time is its wall cost (measured by the frame loop, one
+  // frame late).
   void run(int frames) {
     for (int i = 0; i < frames; ++i, ++frame) {
+      if (frame >= 1) {
+        world.ctx().emplaceOrReplace<engine::ecs::WallFrameTime>(wallCost.at(rendered[frame - 1]),
+                                                                 frame - 1, true);
+      }
       if (frame >= 2) {
         engine::render::GpuFrameTime time;
         time.milliseconds = cost.at(rendered[frame - 2]);
@@ -70,7 +80,7 @@ TEST(CloudFrameBudget, ChoosesTheDearestPresetThatHoldsTheTarget) {
   EXPECT_TRUE(w.status().active);
   EXPECT_EQ(w.status().preset, Quality::High);
   EXPECT_EQ(w.status().changes, 1u);
-  EXPECT_NEAR(w.status().medianMilliseconds, 28.0, 1e-9);
+  EXPECT_NEAR(w.status().judgedMilliseconds, 28.0, 1e-9);
   EXPECT_STREQ(w.status().reason, "holding");
   // The feature prepares every preset between the floor and the ceiling ahead.
   EXPECT_EQ(governed(w.world),
@@ -80,6 +90,23 @@ TEST(CloudFrameBudget, ChoosesTheDearestPresetThatHoldsTheTarget) {
   w.cost[Quality::High] = 40.0;
   w.run(200);
   EXPECT_EQ(w.preset(), Quality::Medium);
+}
+
+// The same costs judged on the wall clock: High's 50 ms does not fit 33.3, so it holds Medium.
+TEST(CloudFrameBudget, AWallClockBudgetJudgesTheWallTime) {
+  BudgetWorld w;
+  clouds::ecs::CloudFrameBudget budget{33.3};
+  budget.source = clouds::ecs::FrameTimeSource::WallFrame;
+  w.world.emplace<clouds::ecs::CloudFrameBudget>(w.camera, budget);
+  w.run(600);
+  EXPECT_EQ(w.preset(), Quality::Medium);
+  EXPECT_EQ(w.status().changes, 0u);
+  EXPECT_NEAR(w.status().judgedMilliseconds, 30.0, 1e-9);
+
+  // Heavier on the wall clock only: down to Low, though the GPU time would still fit.
+  w.wallCost[Quality::Medium] = 40.0;
+  w.run(200);
+  EXPECT_EQ(w.preset(), Quality::Low);
 }
 
 TEST(CloudFrameBudget, KeepsWithinItsFloorAndCeiling) {
@@ -119,6 +146,12 @@ TEST(CloudFrameBudget, ABudgetOffTheLadderIsRefusedByName) {
       clouds::ecs::CloudFrameBudget{-1.0, Quality::Low, Quality::Ultra};
   w.run(10);
   EXPECT_NE(w.status().error.find("targetMilliseconds"), std::string::npos) << w.status().error;
+
+  clouds::ecs::CloudFrameBudget quantile{33.3};
+  quantile.judgedQuantile = 1.0;
+  w.world.get<clouds::ecs::CloudFrameBudget>(w.camera) = quantile;
+  w.run(10);
+  EXPECT_NE(w.status().error.find("judgedQuantile"), std::string::npos) << w.status().error;
 }
 
 }  // namespace

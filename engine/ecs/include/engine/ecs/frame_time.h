@@ -18,4 +18,13 @@ struct FrameTime {
   }
 };
 
+/// How long the previous frame took on the wall clock, start to start (what a player sees as
+/// the frame rate: the GPU's work, the CPU's and the present together). Set by a frame loop that
+/// measures it, beside FrameTime; systems that adapt to it (a quality governor) read it.
+struct WallFrameTime {
+  double milliseconds = 0.0;     // the frame `frameIndex` took
+  std::uint64_t frameIndex = 0;  // the frame measured
+  bool measured = false;         // false until a frame has been measured
+};
+
 }  // namespace engine::ecs

@@ -25,10 +25,28 @@ struct CloudLayer {
   std::vector<std::shared_ptr<const clouds::NvdfVolume>> heroCloudAssets;
 };
 
+// A preset's march precision knobs tuned by hand (a player's panel, an engine's own tuning):
+// each one set replaces the preset's value. They are the knobs that select no pipeline and
+// keep the temporal history (setting_effects: the march's precision), so a change shows at the
+// next frame without a hitch. Ranges as clouds::Settings documents them.
+struct CloudQualityKnobs {
+  std::optional<std::uint32_t> maxViewSteps;  // view samples a ray at most
+  std::optional<float> viewStepMetres;        // the first view step, metres
+  std::optional<std::uint32_t> lightSteps;    // samples towards the sun per view sample
+  std::optional<float> transmittanceCutoff;   // a ray stops below this transmittance
+
+  bool any() const { return maxViewSteps || viewStepMetres || lightSteps || transmittanceCutoff; }
+  // `settings` with the knobs that are set.
+  clouds::Settings appliedTo(clouds::Settings settings) const;
+  bool operator==(const CloudQualityKnobs&) const = default;
+};
+
 // On a camera entity: the quality preset its clouds render with, settingsFor(preset) over the
-// layer's look. A camera without one renders the layer's settings as they are.
+// layer's look, with its knobs tuned. A camera without one renders the layer's settings as
+// they are.
 struct CloudQuality {
   clouds::Quality preset = clouds::Quality::Medium;
+  CloudQualityKnobs knobs;  // none set: the preset as it is
 };
 
 // Context singleton the clouds module keeps up to date, for HUDs and logs: how the clouds

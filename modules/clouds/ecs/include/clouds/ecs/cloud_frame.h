@@ -36,7 +36,7 @@ struct HostFrame {
 };
 
 // The settings the camera renders the layer with: the layer's look under the camera's
-// CloudQuality preset, or the layer's settings as they are without one.
+// CloudQuality preset and knobs, or the layer's settings as they are without one.
 clouds::Settings cloudSettings(engine::ecs::World& world);
 // The settings the layer's look takes under `preset` (what cloudSettings() gives a camera
 // with that CloudQuality): for preparing a preset before a camera switches to it.
