@@ -47,7 +47,9 @@ ParseResult parseOptions(int argc, char** argv) {
                  "Place this hero cloud (OpenVDB .vdb, world units as metres, or .nvdf) in front "
                  "of the camera's start");
   std::string script;
-  cli.add_option("--script", script, "Frame-indexed input/events script (JSON) for headless runs");
+  cli.add_option("--script", script,
+                 "Frame-indexed input/events script (JSON): a headless run's input, or a "
+                 "window's in place of the player's (tests)");
   cli.add_flag("--describe", options.describe,
                "Print the frame graph's passes and the pipelines created, then exit");
   std::string quality;

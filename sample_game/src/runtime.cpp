@@ -178,7 +178,8 @@ std::filesystem::path frameStem(const std::filesystem::path& dir, const char* pr
   return dir / name;
 }
 
-// One frame's input: the window's (and its keys that act outside the game), or the script's.
+// One frame's input: the window's (and its keys that act outside the game), or the script's
+// (headless, or a window run with --script).
 // Returns false when the window asked to close.
 bool gatherInput(ecs::World& world, platform::Window* window, render::SwapchainTarget* swapchain,
                  const RunPlan& plan, std::uint64_t frame, platform::InputState& scriptInput,
@@ -193,6 +194,13 @@ bool gatherInput(ecs::World& world, platform::Window* window, render::SwapchainT
       window->setMouseCaptured(!window->input().mouseCaptured);
     }
     input = window->input();
+    if (plan.script) {
+      // A scripted window (the windowed smoke test): the script is the player's hands, over
+      // the same swapchain, HUD and present as a player's run.
+      scriptInput.beginFrame();
+      plan.script->apply(frame, scriptInput, world);
+      input = scriptInput;
+    }
     if (input.wasPressed(platform::Key::F12)) {
       world.ctx().get<CaptureRequest>().stem =
           frameStem("screenshots", "screenshot", screenshots++);
