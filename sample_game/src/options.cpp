@@ -85,6 +85,9 @@ ParseResult parseOptions(int argc, char** argv) {
   cli.add_flag("--no-hud", noHud, "Hide the on-screen help and frame rate");
   cli.add_flag("--hud-headless", options.hudHeadless,
                "Draw the HUD in headless runs too (scripts can press F1 and F2; for captures)");
+  cli.add_flag("--hud-as-triangles", options.hudAsTriangles,
+               "Draw the HUD's opaque backgrounds as ImGui's triangles, not as clears (tests: "
+               "both make the same pixels)");
   bool noVsync = false;
   cli.add_flag("--no-vsync", noVsync, "Present without waiting for vertical blank");
   try {

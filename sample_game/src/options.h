@@ -27,9 +27,10 @@ struct Options {
   std::optional<std::filesystem::path> terrain;    // fly over this glTF instead of the scene's
   std::optional<std::filesystem::path> heroCloud;  // a user's cloud (.vdb, .nvdf), ahead
   std::optional<std::filesystem::path> script;     // frame-indexed input and events (headless)
-  bool describe = false;     // print the frame graph's passes and pipelines, exit
-  bool hud = true;           // on-screen help and fps in windowed runs
-  bool hudHeadless = false;  // the HUD (and its panel, F2) in headless runs' frames too
+  bool describe = false;        // print the frame graph's passes and pipelines, exit
+  bool hud = true;              // on-screen help and fps in windowed runs
+  bool hudHeadless = false;     // the HUD (and its panel, F2) in headless runs' frames too
+  bool hudAsTriangles = false;  // the HUD's backgrounds drawn, not cleared (hud_draw_plan.h)
   std::optional<clouds::Quality> cloudQuality;       // overrides the scene camera's preset
   std::optional<double> frameTargetMilliseconds;     // the governor's target; 0: no governor
   std::optional<std::filesystem::path> soakReport;   // resource series of a long run (CSV)

@@ -392,6 +392,7 @@ int run(Options commandLine) {
     rendererOptions.maxExtent = {std::max(options.width, 3840u), std::max(options.height, 2160u)};
     rendererOptions.captureDirectory = options.captureDir.value_or("out");
     rendererOptions.hud = (plan.windowed && options.hud) || options.hudHeadless;
+    rendererOptions.hudClears = !options.hudAsTriangles;
     // Declared after the device: the modules' GPU objects go before it does.
     ecs::App app;
     app.world().ctx().emplace<render::RenderDevice>(

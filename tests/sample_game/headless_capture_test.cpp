@@ -331,6 +331,38 @@ TEST(HeadlessCapture, CloudsShadowTheTerrainInPatches) {
   EXPECT_EQ(e.brighter, 0u) << "a shadow only takes light away";
 }
 
+// The panel's "cloud shadows" switch (the script sets it as the panel does): off, the ground
+// under the clouds is lit as in the scene whose clouds cast none (the module drops its map and
+// the terrain's sunlight map is made lit); back on, the shadows return as the map is made again.
+TEST(HeadlessCapture, TheShadowSwitchTakesTheCloudShadowsAwayAndBringsThemBack) {
+  const fs::path never = freshDir("never_shadowed");
+  const fs::path switched = freshDir("shadows_switched");
+  fs::create_directories(never);
+  fs::create_directories(switched);
+  const std::string common =
+      "--headless --frames 40 --fixed-dt 0.05 --width 160 --height 90 --validation --capture ";
+  const fs::path captures = never / "captures.json";
+  std::ofstream(captures) << R"({"events": [{"frame": 6, "capture": "off"},
+      {"frame": 38, "capture": "on"}]})";
+  const fs::path switches = switched / "switches.json";
+  std::ofstream(switches) << R"({"events": [{"frame": 1, "set": {"clouds.shadows": 0}},
+      {"frame": 6, "capture": "off"}, {"frame": 8, "set": {"clouds.shadows": 1}},
+      {"frame": 38, "capture": "on"}]})";
+  ASSERT_EQ(runSample(common + never.string() + " --scene " + scene("unshadowed_range.json") +
+                      " --script " + captures.string()),
+            0);
+  ASSERT_EQ(runSample(common + switched.string() + " --scene " + scene("shadowed_range.json") +
+                      " --script " + switches.string()),
+            0);
+  const ShadowEffect off = shadowEffect(never / "off.exr", switched / "off.exr", 0.6f);
+  const ShadowEffect on = shadowEffect(never / "on.exr", switched / "on.exr", 0.6f);
+  ASSERT_GT(off.pixels, 0u);
+  std::printf("switched off: %zu of %zu pixels 40%% darker; back on: %zu\n", off.darker, off.pixels,
+              on.darker);
+  EXPECT_LT(off.darker, off.pixels / 200) << "the shadows stayed";
+  EXPECT_GT(on.darker, on.pixels / 20) << "the shadows did not come back";
+}
+
 // Mountains shade the clouds: at sunset the range's long shadows take the sun from the low
 // cumulus behind it (and from the terrain in its lee); nothing gets brighter.
 TEST(HeadlessCapture, MountainsShadeTheCloudsAtSunset) {
@@ -742,6 +774,38 @@ TEST(HeadlessCapture, F2OpensTheSettingsPanelAndTouchesNothingElse) {
   }
   EXPECT_EQ(elsewhere, 0u);
   EXPECT_GT(panelChange / (306.0 * (closed.height - 44) * 3.0), 0.05);  // the panel is there
+}
+
+// The HUD's opaque backgrounds, recorded as clears (hud_draw_plan.h), make the pixels ImGui's
+// triangles make (to the 8-bit step): the panel open, a section opened by a click, both ways.
+TEST(HeadlessCapture, ThePanelsClearsDrawWhatItsTrianglesWould) {
+  const fs::path cleared = freshDir("panel_cleared");
+  const fs::path drawn = freshDir("panel_drawn");
+  fs::create_directories(cleared);
+  const fs::path script = cleared / "panel.json";
+  std::ofstream(script) << R"({"events": [{"frame": 1, "press": ["F2"]},
+      {"frame": 3, "cursor": [500, 199, 1]}, {"frame": 4, "cursor": [500, 199, 0]},
+      {"frame": 6, "capture": "frame"}, {"frame": 6, "exit": true}]})";
+  const std::string common =
+      "--headless --validation --hud-headless --width 640 --height 360 "
+      "--fixed-dt 0.05 --script " +
+      script.string() + " --capture ";
+  ASSERT_EQ(runSample(common + cleared.string()), 0);
+  ASSERT_EQ(runSample(common + drawn.string() + " --hud-as-triangles"), 0);
+  const ImageRgba32f a = engine::assets::readImage(cleared / "frame.png");
+  const ImageRgba32f b = engine::assets::readImage(drawn / "frame.png");
+  ASSERT_EQ(a.pixels.size(), b.pixels.size());
+  // The clear writes the vertices' colour exactly; the triangles interpolate it, in floating
+  // point: a value at an 8-bit rounding boundary may land one step away, never more.
+  float largest = 0.0f;
+  std::size_t differing = 0;
+  for (std::size_t i = 0; i < a.pixels.size(); ++i) {
+    largest = std::max(largest, std::abs(a.pixels[i] - b.pixels[i]));
+    differing += a.pixels[i] != b.pixels[i];
+  }
+  std::printf("%zu of %zu values differ, by at most %.1f/255\n", differing, a.pixels.size(),
+              double(largest) * 255.0);
+  EXPECT_LE(largest, 1.01f / 255.0f);
 }
 
 // The panel driven by the mouse, as a player does (the script's "cursor": the free cursor and

@@ -94,6 +94,14 @@ TEST(LiveSettings, EffectsSwitchWhereTheSceneWasLoadedWithThem) {
   EXPECT_GT(clouds::ecs::cloudSettings(w.world).godRaySamples, 0u);
   EXPECT_TRUE(sample::sceneToSave(w.world).clouds->settings.godRaySamples > 0);
 
+  sample::applyLiveSetting(w.world, "clouds.shadows", 0.0);
+  EXPECT_EQ(w.layer().shadowCascades, 0u);
+  EXPECT_EQ(clouds::ecs::cloudSettings(w.world).shadowCascades, 0u);
+  EXPECT_EQ(sample::sceneToSave(w.world).clouds->settings.shadowCascades, 0u);
+  sample::applyLiveSetting(w.world, "clouds.shadows", 1.0);
+  EXPECT_EQ(w.layer().shadowCascades, w.live().loaded.clouds->settings.shadowCascades);
+  EXPECT_GT(w.layer().shadowCascades, 0u);
+
   sample::applyLiveSetting(w.world, "lightning.strikesPerMinute", 0.0);
   w.world.view<const clouds::ecs::LightningStorm>().each(
       [](const clouds::ecs::LightningStorm& storm) { EXPECT_EQ(storm.strikesPerMinute, 0.0); });
@@ -102,8 +110,11 @@ TEST(LiveSettings, EffectsSwitchWhereTheSceneWasLoadedWithThem) {
   LiveWorld without;
   auto& live = without.world.ctx().get<sample::LiveScene>();
   live.loaded.clouds->settings.godRaySamples = 0;
+  live.loaded.clouds->settings.shadowCascades = 0;
   live.loaded.lightning.reset();
   EXPECT_NE(refusal(without.world, "clouds.godRays", 1.0).find("the scene has nothing it tunes"),
+            std::string::npos);
+  EXPECT_NE(refusal(without.world, "clouds.shadows", 1.0).find("the scene has nothing it tunes"),
             std::string::npos);
   EXPECT_NE(refusal(without.world, "lightning.strikesPerMinute", 3.0)
                 .find("the scene has nothing it tunes"),
@@ -132,6 +143,32 @@ TEST(LiveSettings, TheSceneToSaveHasTheCamerasPresetAndBudget) {
   EXPECT_EQ(sample::sceneToSave(w.world).camera.frameTargetMilliseconds, 0.0) << "fixed";
   w.world.emplace<clouds::ecs::CloudFrameBudget>(w.camera, clouds::ecs::CloudFrameBudget{20.0});
   EXPECT_EQ(sample::sceneToSave(w.world).camera.frameTargetMilliseconds, 20.0);
+}
+
+// "from here": the saved scene starts where the camera is, heading and pitch as the scene's
+// start reads them (the roll levelled), at its airspeed; "save scene" keeps the scene's start.
+TEST(LiveSettings, SavingFromHereStartsTheSceneWhereTheCameraIs) {
+  LiveWorld w;
+  auto& camera = w.world.get<engine::render::Camera>(w.camera);
+  camera.position = glm::dvec3(1200.0, 2400.0, -800.0);
+  const glm::dquat yaw = glm::angleAxis(glm::radians(130.0), glm::dvec3(0, 1, 0));
+  const glm::dquat pitch = glm::angleAxis(glm::radians(-12.0), glm::dvec3(1, 0, 0));
+  const glm::dquat roll = glm::angleAxis(glm::radians(25.0), glm::dvec3(0, 0, 1));
+  camera.orientation = yaw * pitch * roll;
+  w.world.emplace<sample::Aircraft>(w.camera, sample::Aircraft{240.0});
+  const sample::CameraDescription here =
+      sample::sceneToSave(w.world, sample::SavedStart::Here).camera;
+  EXPECT_EQ(here.position, camera.position);
+  EXPECT_NEAR(here.yawDegrees, 130.0, 1e-9);
+  EXPECT_NEAR(here.pitchDegrees, -12.0, 1e-9);
+  EXPECT_EQ(here.speedMetresPerSecond, 240.0);
+  const sample::CameraDescription start = sample::sceneToSave(w.world).camera;
+  EXPECT_EQ(start.position, sample::CameraDescription{}.position);
+  EXPECT_EQ(start.yawDegrees, 0.0);
+
+  // Straight down has no heading: the start is kept within the 89 degrees a scene accepts.
+  camera.orientation = glm::angleAxis(glm::radians(-90.0), glm::dvec3(1, 0, 0));
+  EXPECT_EQ(sample::sceneToSave(w.world, sample::SavedStart::Here).camera.pitchDegrees, -89.0);
 }
 
 // A knob of the cloud preset (the panel's "cloud preset's knobs"): shows the preset's value

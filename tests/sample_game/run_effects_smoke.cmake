@@ -1,7 +1,7 @@
 # Smoke test of the effects benchmark (tools/effects_bench.py): a tiny run must finish and
 # write a table with a row per effect, each saying what the scene without it lacks; the god
 # rays' row names their pipelines and memory, and the terrain shadows' adds no memory; and
-# lightning's cost is summed over the passes it changes.
+# lightning's cost is summed over the passes it changes; the HUD has its table too.
 # Inputs: PYTHON, SCRIPT, SAMPLE (the executable), OUT_DIR.
 file(REMOVE_RECURSE "${OUT_DIR}")
 execute_process(
@@ -38,3 +38,12 @@ set(bolt_row "\\| lightning, a ground strike and its bolt always active \\| [+-]
 if(NOT report MATCHES "${bolt_row}")
   message(FATAL_ERROR "the passes table has no row for the bolt:\n${report}")
 endif()
+# The HUD's table: its line and the panel, each against no HUD, paired.
+file(READ "${OUT_DIR}/hud.md" hud)
+foreach(row "| the HUD's line |" "| the settings panel open |"
+            "| the settings panel open, backgrounds as triangles |")
+  string(FIND "${hud}" "${row}" at)
+  if(at EQUAL -1)
+    message(FATAL_ERROR "hud.md has no row ${row}:\n${hud}")
+  endif()
+endforeach()

@@ -23,18 +23,20 @@ Tonemapper::Tonemapper(gfx::Device& device, VkFormat hdrFormat, VkFormat targetF
 }
 
 TextureHandle addTonemapPass(FrameGraph& graph, const Tonemapper& tonemapper, TextureHandle hdr,
-                             TextureHandle target, const TonemapSettings* settings) {
+                             TextureHandle target, const TonemapSettings* settings,
+                             TonemapOverlay overlay) {
   struct Data {
     TextureHandle hdr;
     TextureHandle target;
   };
+  const char* name = overlay ? "tonemap + overlay" : "tonemap";
   const Data& data = graph.addPass<Data>(
-      "tonemap", PassType::Graphics,
+      name, PassType::Graphics,
       [&](PassBuilder& builder, Data& d) {
         d.hdr = builder.read(hdr, Access::SampledRead);
         d.target = builder.colorAttachment(target, VK_ATTACHMENT_LOAD_OP_DONT_CARE);
       },
-      [&tonemapper, settings](const Data& d, PassContext& context) {
+      [&tonemapper, settings, overlay = std::move(overlay)](const Data& d, PassContext& context) {
         gfx::DescriptorWriter writer;
         writer.combinedImageSampler(shaders::kTonemapHdrBinding, context.view(d.hdr),
                                     tonemapper.sampler());
@@ -43,6 +45,7 @@ TextureHandle addTonemapPass(FrameGraph& graph, const Tonemapper& tonemapper, Te
                                             0.0f, 0.0f};
         gfx::pushConstants(context.cmd(), tonemapper.pipeline(), constants);
         vkCmdDraw(context.cmd(), 3, 1, 0, 0);
+        if (overlay) overlay(context);
       });
   return data.target;
 }

@@ -1,5 +1,6 @@
 #include "game/live_settings.h"
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <string>
@@ -11,6 +12,7 @@
 #include "engine/core/error.h"
 #include "engine/core/log.h"
 #include "engine/render/exposure.h"
+#include "engine/render/scene_components.h"
 #include "game/game_components.h"
 #include "scene/scene_writer.h"
 
@@ -28,6 +30,9 @@ bool always(const LiveScene&) {
 bool loadedWithGodRays(const LiveScene& live) {
   return live.scene.clouds && live.loaded.clouds && live.loaded.clouds->settings.godRaySamples > 0;
 }
+bool loadedWithShadows(const LiveScene& live) {
+  return live.scene.clouds && live.loaded.clouds && live.loaded.clouds->settings.shadowCascades > 0;
+}
 bool loadedWithLightning(const LiveScene& live) {
   return live.scene.lightning && live.loaded.lightning;
 }
@@ -39,6 +44,17 @@ void setGodRays(World& world, SceneDescription& s, double on) {
   s.clouds->settings.godRaySamples = samples;
   world.view<clouds::ecs::CloudLayer>().each(
       [&](clouds::ecs::CloudLayer& layer) { layer.settings.godRaySamples = samples; });
+}
+
+// The clouds' shadow map on or off: its cascades as loaded, or none. Off, the module drops the
+// map and its pass, and the terrain's sunlight map is made lit (terrain_sunlight.h); back on,
+// the map is made again over the next frames (its memory allocated again).
+void setShadows(World& world, SceneDescription& s, double on) {
+  const std::uint32_t cascades =
+      on >= 0.5 ? world.ctx().get<LiveScene>().loaded.clouds->settings.shadowCascades : 0u;
+  s.clouds->settings.shadowCascades = cascades;
+  world.view<clouds::ecs::CloudLayer>().each(
+      [&](clouds::ecs::CloudLayer& layer) { layer.settings.shadowCascades = cascades; });
 }
 
 // The storm's strike rate; 0 turns lightning off (strikes under way fade out as they would).
@@ -119,10 +135,10 @@ void setCompensation(World& world, SceneDescription& s, double ev) {
   world.ctx().get<engine::render::Exposure>().compensationEv = float(ev);
 }
 
-const std::array<LiveSetting, 20>& table() {
+const std::array<LiveSetting, 21>& table() {
   using S = clouds::Settings;
   using K = clouds::ecs::CloudQualityKnobs;
-  static const std::array<LiveSetting, 20> kSettings = {
+  static const std::array<LiveSetting, 21> kSettings = {
       cloudSetting<&S::coverage>("clouds.coverage", "coverage", 0.0, 1.0),
       cloudSetting<&S::cloudType>("clouds.cloudType", "cloud type", 0.0, 1.0),
       cloudSetting<&S::densityMultiplier>("clouds.densityMultiplier", "density", 0.0, 5.0),
@@ -143,6 +159,11 @@ const std::array<LiveSetting, 20>& table() {
                     return s.clouds->settings.godRaySamples > 0 ? 1.0 : 0.0;
                   },
                   setGodRays, true},
+      LiveSetting{"clouds.shadows", "cloud shadows", 0.0, 1.0, loadedWithShadows,
+                  [](const SceneDescription& s) {
+                    return s.clouds->settings.shadowCascades > 0 ? 1.0 : 0.0;
+                  },
+                  setShadows, true},
       LiveSetting{"lightning.strikesPerMinute", "strikes/min (0: off)", 0.0, 60.0,
                   loadedWithLightning,
                   [](const SceneDescription& s) { return s.lightning->storm.strikesPerMinute; },
@@ -208,15 +229,29 @@ void syncLiveScene(World& world) {
       });
 }
 
-SceneDescription sceneToSave(World& world) {
+SceneDescription sceneToSave(World& world, SavedStart start) {
   syncLiveScene(world);
-  return world.ctx().get<LiveScene>().scene;
+  SceneDescription scene = world.ctx().get<LiveScene>().scene;
+  if (start == SavedStart::Here) {
+    world.view<const engine::render::Camera, const Aircraft>().each(
+        [&](const engine::render::Camera& camera, const Aircraft& aircraft) {
+          // The inverse of the scene's start (yaw about +y, then pitch; 0 looks along -z).
+          const glm::dvec3 forward = engine::render::forwardOf(camera);
+          scene.camera.position = camera.position;
+          scene.camera.yawDegrees = glm::degrees(std::atan2(-forward.x, -forward.z));
+          // A scene starts within 89 degrees of level (straight up or down has no heading).
+          scene.camera.pitchDegrees =
+              std::clamp(glm::degrees(std::asin(std::clamp(forward.y, -1.0, 1.0))), -89.0, 89.0);
+          scene.camera.speedMetresPerSecond = aircraft.speedMetresPerSecond;
+        });
+  }
+  return scene;
 }
 
-bool saveLiveScene(World& world) {
+bool saveLiveScene(World& world, SavedStart start) {
   auto& live = world.ctx().get<LiveScene>();
   try {
-    writeSceneFile(sceneToSave(world), live.saveTo);
+    writeSceneFile(sceneToSave(world, start), live.saveTo);
     live.lastSave = "saved " + live.saveTo.string();
     engine::log::info(live.lastSave);
     return true;

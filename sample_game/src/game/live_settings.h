@@ -52,10 +52,13 @@ void applyLiveSetting(engine::ecs::World& world, std::string_view name, double v
 // cloud preset, its knobs and its frame budget (none when it has none; the governor and the
 // number keys change them). The panel calls it before it shows the values.
 void syncLiveScene(engine::ecs::World& world);
+// Where a saved scene starts its flight: where the scene did, or where the camera is now (its
+// position, heading, pitch and airspeed; the roll levelled, as a scene's start has none).
+enum class SavedStart { SceneStart, Here };
 // The scene to save: LiveScene's, synchronised (syncLiveScene()).
-SceneDescription sceneToSave(engine::ecs::World& world);
+SceneDescription sceneToSave(engine::ecs::World& world, SavedStart start = SavedStart::SceneStart);
 // Writes sceneToSave() to LiveScene::saveTo and records the outcome in LiveScene::lastSave.
 // Returns false (nothing thrown) when it cannot be written.
-bool saveLiveScene(engine::ecs::World& world);
+bool saveLiveScene(engine::ecs::World& world, SavedStart start = SavedStart::SceneStart);
 
 }  // namespace sample

@@ -12,6 +12,7 @@
 #include "engine/gfx/descriptors.h"
 #include "engine/gfx/upload.h"
 #include "engine/platform/input.h"
+#include "render/hud_draw_plan.h"
 #include "render/hud_layout.h"
 #include "render/settings_panel.h"
 #include "sample_shaders/hud.frag.spv.h"
@@ -33,15 +34,16 @@ struct HudConstants {
 
 }  // namespace
 
-Hud::Hud(gfx::Device& device, VkFormat targetFormat)
+Hud::Hud(gfx::Device& device, VkFormat targetFormat, bool clearRectangles)
     : device_(device),
-      sampler_(device,
-               gfx::SamplerDesc{VK_FILTER_LINEAR, VK_SAMPLER_MIPMAP_MODE_NEAREST,
-                                VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE, "hud font sampler"}) {
+      sampler_(device, gfx::SamplerDesc{VK_FILTER_LINEAR, VK_SAMPLER_MIPMAP_MODE_NEAREST,
+                                        VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE, "hud font sampler"}),
+      clearRectangles_(clearRectangles) {
   context_ = ImGui::CreateContext();
   ImGui::SetCurrentContext(context_);
   ImGuiIO& io = ImGui::GetIO();
   io.IniFilename = nullptr;  // no imgui.ini next to the binary
+  flattenOverWindows(ImGui::GetStyle());
   unsigned char* pixels = nullptr;
   int width = 0;
   int height = 0;
@@ -123,13 +125,16 @@ void Hud::prepare(ecs::World& world, VkExtent2D extent, std::span<const gfx::Tim
     const ImDrawList* list = draw->CmdLists[i];
     const VkDeviceSize vb = VkDeviceSize(list->VtxBuffer.Size) * sizeof(ImDrawVert);
     const VkDeviceSize ib = VkDeviceSize(list->IdxBuffer.Size) * sizeof(ImDrawIdx);
-    if (vertexOffset + vb > kVertexBytes || indexOffset + ib > kIndexBytes)
-      break;  // text only: never
+    if (vertexOffset + vb > kVertexBytes || indexOffset + ib > kIndexBytes) {
+      plan_ = {};  // more than the buffers hold (the panel takes a tenth): nothing drawn
+      return;
+    }
     std::memcpy(vertices + vertexOffset, list->VtxBuffer.Data, vb);
     std::memcpy(indices + indexOffset, list->IdxBuffer.Data, ib);
     vertexOffset += vb;
     indexOffset += ib;
   }
+  plan_ = planHudDraws(*draw, io.Fonts->TexUvWhitePixel, extent, clearRectangles_);
 }
 
 void Hud::record(VkCommandBuffer cmd, gfx::DescriptorArena& descriptors,
@@ -137,6 +142,12 @@ void Hud::record(VkCommandBuffer cmd, gfx::DescriptorArena& descriptors,
   ImGui::SetCurrentContext(context_);
   const ImDrawData* draw = ImGui::GetDrawData();
   if (draw == nullptr || draw->TotalVtxCount == 0) return;
+  for (const HudClear& clear : plan_.clears) {
+    VkClearAttachment attachment{VK_IMAGE_ASPECT_COLOR_BIT, 0, {}};
+    attachment.clearValue.color = {{clear.color.r, clear.color.g, clear.color.b, clear.color.a}};
+    const VkClearRect rect{clear.rect, 0, 1};
+    vkCmdClearAttachments(cmd, 1, &attachment, 1, &rect);
+  }
   gfx::DescriptorWriter writer;
   writer.combinedImageSampler(shaders::kHudFontBinding, font_.view(), sampler_.vk());
   gfx::bindPipeline(device, cmd, pipeline_, descriptors, writer);
@@ -148,41 +159,10 @@ void Hud::record(VkCommandBuffer cmd, gfx::DescriptorArena& descriptors,
   vkCmdBindVertexBuffers(cmd, 0, 1, &vertexBuffer, &zero);
   vkCmdBindIndexBuffer(cmd, buffers_[slot_].indices.vk(), 0,
                        sizeof(ImDrawIdx) == 2 ? VK_INDEX_TYPE_UINT16 : VK_INDEX_TYPE_UINT32);
-  std::uint32_t firstIndex = 0;
-  std::int32_t firstVertex = 0;
-  for (int i = 0; i < draw->CmdListsCount; ++i) {
-    const ImDrawList* list = draw->CmdLists[i];
-    for (const ImDrawCmd& c : list->CmdBuffer) {
-      const float x0 = std::max(c.ClipRect.x, 0.0f);
-      const float y0 = std::max(c.ClipRect.y, 0.0f);
-      const float x1 = std::min(c.ClipRect.z, float(extent_.width));
-      const float y1 = std::min(c.ClipRect.w, float(extent_.height));
-      if (x1 <= x0 || y1 <= y0) continue;
-      const VkRect2D scissor{{std::int32_t(x0), std::int32_t(y0)},
-                             {std::uint32_t(x1 - x0), std::uint32_t(y1 - y0)}};
-      vkCmdSetScissor(cmd, 0, 1, &scissor);
-      vkCmdDrawIndexed(cmd, c.ElemCount, 1, firstIndex + c.IdxOffset,
-                       firstVertex + std::int32_t(c.VtxOffset), 0);
-    }
-    firstIndex += std::uint32_t(list->IdxBuffer.Size);
-    firstVertex += list->VtxBuffer.Size;
+  for (const HudDraw& d : plan_.draws) {
+    vkCmdSetScissor(cmd, 0, 1, &d.scissor);
+    vkCmdDrawIndexed(cmd, d.indexCount, 1, d.firstIndex, d.vertexOffset, 0);
   }
-}
-
-render::TextureHandle addHudPass(render::FrameGraph& graph, const Hud& hud,
-                                 render::TextureHandle display) {
-  struct Data {
-    render::TextureHandle display;
-  };
-  const Data& data = graph.addPass<Data>(
-      "hud", render::PassType::Graphics,
-      [&](render::PassBuilder& builder, Data& d) {
-        d.display = builder.colorAttachment(display, VK_ATTACHMENT_LOAD_OP_LOAD);
-      },
-      [&hud](const Data&, render::PassContext& context) {
-        hud.record(context.cmd(), context.descriptors(), context.device());
-      });
-  return data.display;
 }
 
 }  // namespace sample

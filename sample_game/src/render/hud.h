@@ -1,7 +1,9 @@
 #pragma once
-// On-screen frame rate and help for windowed runs: Dear ImGui (Debian's libimgui) lays out the
-// text (hud_layout.h); this draws its vertices with one small pipeline of our own in a graphics
-// pass after tonemapping (ImGui's own Vulkan backend in that version needs a render pass object).
+// On-screen frame rate, help and the settings panel: Dear ImGui (Debian's libimgui) lays them
+// out (hud_layout.h, settings_panel.h); this records them with one small pipeline of our own
+// (ImGui's own Vulkan backend in that version needs a render pass object) into the tonemap
+// pass, after its draw (render::TonemapOverlay): a render pass of its own cost ~0.2 ms more
+// on lavapipe. Opaque backgrounds are clears (hud_draw_plan.h).
 #include <array>
 #include <memory>
 #include <span>
@@ -12,6 +14,7 @@
 #include "engine/gfx/pipelines.h"
 #include "engine/gfx/resources.h"
 #include "engine/render/frame_graph.h"
+#include "render/hud_draw_plan.h"
 
 struct ImGuiContext;
 
@@ -19,7 +22,8 @@ namespace sample {
 
 class Hud {
  public:
-  Hud(engine::gfx::Device& device, VkFormat targetFormat);
+  // `clearRectangles`: the opaque backgrounds as clears (hud_draw_plan.h); false, as triangles.
+  Hud(engine::gfx::Device& device, VkFormat targetFormat, bool clearRectangles = true);
   ~Hud();
 
   const engine::gfx::Pipeline& pipeline() const { return pipeline_; }
@@ -44,14 +48,13 @@ class Hud {
     engine::gfx::Buffer indices;
   };
   std::array<SlotBuffers, engine::gfx::FrameRing::kFramesInFlight> buffers_;
+  HudDrawPlan plan_;  // this frame's clears and draws
+  bool clearRectangles_;
   std::uint32_t slot_ = 0;
   VkExtent2D extent_{0, 0};
   bool full_ = false;
   bool panelOpen_ = false;  // F2: the settings panel
   double smoothedFrameSeconds_ = 0.0;
 };
-
-engine::render::TextureHandle addHudPass(engine::render::FrameGraph& graph, const Hud& hud,
-                                         engine::render::TextureHandle display);
 
 }  // namespace sample

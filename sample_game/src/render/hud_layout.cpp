@@ -70,7 +70,6 @@ void fullText(ecs::World& world, std::span<const gfx::TimedScope> gpuTimings) {
 glm::vec2 layOutHud(ecs::World& world, std::span<const gfx::TimedScope> gpuTimings,
                     double frameSeconds, bool full) {
   ImGui::SetNextWindowPos(ImVec2(6, 6));
-  ImGui::SetNextWindowBgAlpha(0.45f);
   ImGui::Begin("hud", nullptr,
                ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_AlwaysAutoResize |
                    ImGuiWindowFlags_NoInputs | ImGuiWindowFlags_NoSavedSettings);

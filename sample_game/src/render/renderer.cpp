@@ -73,7 +73,7 @@ Renderer::Renderer(gfx::Device& device, render::PresentTarget& target, ecs::Worl
     }
   }
   if (options.hud) {
-    hud_ = std::make_unique<Hud>(device, target.format());
+    hud_ = std::make_unique<Hud>(device, target.format(), options.hudClears);
     pipelines.push_back(&hud_->pipeline());
   }
   const auto start = std::chrono::steady_clock::now();
@@ -175,9 +175,14 @@ void Renderer::rebuildGraph(VkExtent2D extent) {
   }
   for (render::RenderFeature* feature : features_) scene = feature->addPasses(graph, scene);
   const render::TextureHandle hdr = scene.hdr;
+  render::TonemapOverlay overlay;
+  if (hud_) {
+    overlay = [hud = hud_.get()](render::PassContext& context) {
+      hud->record(context.cmd(), context.descriptors(), context.device());
+    };
+  }
   render::TextureHandle display =
-      render::addTonemapPass(graph, tonemapper_, hdr, targetHandle_, &tonemap_);
-  if (hud_) display = addHudPass(graph, *hud_, display);
+      render::addTonemapPass(graph, tonemapper_, hdr, targetHandle_, &tonemap_, std::move(overlay));
   capture_.addToGraph(graph, hdr, display);
   graph.compile();
   graphExtent_ = extent;
@@ -266,6 +271,7 @@ void Renderer::renderFrame(ecs::World& world) {
   bool rebuild =
       !graph_ || extent.width != graphExtent_.width || extent.height != graphExtent_.height;
   for (render::RenderFeature* feature : features_) rebuild |= feature->prepare(extent, frame.index);
+  rebuild |= sunlight_ && sunlight_->spentPass();
   if (rebuild) rebuildGraph(extent);
   graph_->updateImportedTexture(targetHandle_, target_.image(), target_.view());
   updateFrameConstants(world, extent);

@@ -39,6 +39,7 @@ struct RendererOptions {
   VkExtent2D maxExtent{3840, 2160};                // largest output size the clouds allocate for
   std::filesystem::path captureDirectory = "out";  // where named (script) captures go
   bool hud = false;                                // on-screen help and frame rate (windowed runs)
+  bool hudClears = true;  // the HUD's opaque backgrounds as clears (hud_draw_plan.h)
 };
 
 class Renderer {

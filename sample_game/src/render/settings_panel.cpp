@@ -101,7 +101,6 @@ glm::vec2 layOutSettingsPanel(World& world, VkExtent2D extent, bool allOpen) {
   ImGui::SetNextWindowSizeConstraints(
       ImVec2(kPanelWidth, 0.0f),
       ImVec2(kPanelWidth, float(extent.height) - kSettingsPanelTop - kMargin));
-  ImGui::SetNextWindowBgAlpha(0.7f);
   ImGui::Begin("settings (F2)", nullptr,
                ImGuiWindowFlags_NoMove | ImGuiWindowFlags_AlwaysAutoResize |
                    ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoCollapse);
@@ -114,7 +113,8 @@ glm::vec2 layOutSettingsPanel(World& world, VkExtent2D extent, bool allOpen) {
   auto& live = world.ctx().get<LiveScene>();
   if (ImGui::Button("save scene")) saveLiveScene(world);
   ImGui::SameLine();
-  ImGui::TextUnformatted(live.saveTo.filename().string().c_str());
+  if (ImGui::Button("from here")) saveLiveScene(world, SavedStart::Here);
+  ImGui::Text("to %s", live.saveTo.filename().string().c_str());
   if (!live.lastSave.empty()) ImGui::TextWrapped("%s", live.lastSave.c_str());
   if (!live.lastRefusal.empty()) ImGui::TextWrapped("%s", live.lastRefusal.c_str());
   if (!live.reloadStatus.empty()) ImGui::TextWrapped("%s", live.reloadStatus.c_str());

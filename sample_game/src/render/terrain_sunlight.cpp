@@ -82,6 +82,28 @@ glm::vec4 TerrainSunlight::placementFor(const glm::dvec3& cameraPosition) const 
   return glm::vec4(glm::vec2(uv), glm::vec2(reciprocal));
 }
 
+render::TextureHandle TerrainSunlight::addLitPass(render::FrameGraph& graph,
+                                                  render::TextureHandle map) {
+  struct Data {
+    render::TextureHandle map;
+  };
+  litPassInGraph_ = true;
+  const Data& data = graph.addPass<Data>(
+      "terrain sunlight lit", render::PassType::Transfer,
+      [&](render::PassBuilder& builder, Data& d) {
+        d.map = builder.write(map, render::Access::TransferDst);
+      },
+      [this](const Data& d, render::PassContext& context) {
+        if (lit_) return;
+        const VkClearColorValue fullSun{{1.0f, 1.0f, 1.0f, 1.0f}};
+        const VkImageSubresourceRange all{VK_IMAGE_ASPECT_COLOR_BIT, 0, 1, 0, 1};
+        vkCmdClearColorImage(context.cmd(), context.image(d.map),
+                             VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, &fullSun, 1, &all);
+        lit_ = true;
+      });
+  return data.map;
+}
+
 TerrainSunlightSchedule::TerrainSunlightSchedule(std::uint32_t rows, std::uint32_t frames)
     : rows_(rows),
       rowsPerBand_((rows + std::max(frames, 1u) - 1) / std::max(frames, 1u)),
@@ -108,9 +130,14 @@ render::TextureHandle TerrainSunlight::addPass(render::FrameGraph& graph,
   imported.initial = kReadByTheScene;
   imported.final = kReadByTheScene;
   const render::TextureHandle map = graph.importTexture("terrain sunlight", imported);
-  // No shadow map this frame: the map keeps what it holds.
   const auto* cloudShadow = graph.blackboard().find<fxcontracts::ecs::CloudShadow>();
-  if (cloudShadow == nullptr) return map;
+  litPassInGraph_ = false;
+  if (cloudShadow == nullptr) return lit_ ? map : addLitPass(graph, map);
+  if (lit_) {
+    // Shadows again: the whole map at the first refresh.
+    schedule_ = TerrainSunlightSchedule(resolution_, kRefreshFrames);
+    lit_ = false;
+  }
   struct Data {
     render::TextureHandle cloudShadow;
     render::TextureHandle map;

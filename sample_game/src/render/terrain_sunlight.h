@@ -65,18 +65,26 @@ class TerrainSunlight {
 
   // Imports the map and adds the pass that refreshes the rows due (reading the blackboard's
   // fxcontracts::ecs::CloudShadow, its parameters when the pass executes, as `cameraPosition`);
-  // returns the map for the scene to read. Without a cloud shadow map in the frame there is no
-  // pass: the map keeps what it holds.
+  // returns the map for the scene to read. Without a cloud shadow map in the frame (the
+  // player turned the clouds' shadows off) the map is made lit once, by a pass that then has
+  // nothing to do: the graph is rebuilt without it (see spentPass()).
   engine::render::TextureHandle addPass(engine::render::FrameGraph& graph,
                                         const glm::dvec3* cameraPosition);
+  // The graph holds a pass that has done its work and records nothing more.
+  bool spentPass() const { return litPassInGraph_ && lit_; }
 
  private:
+  engine::render::TextureHandle addLitPass(engine::render::FrameGraph& graph,
+                                           engine::render::TextureHandle map);
+
   engine::render::TerrainHeightfield heightfield_;
   std::uint32_t resolution_;
   engine::gfx::Image image_;
   engine::gfx::Sampler sampler_;
   engine::gfx::Pipeline pipeline_;
   TerrainSunlightSchedule schedule_;
+  bool lit_ = true;  // the map holds full sun everywhere
+  bool litPassInGraph_ = false;
 };
 
 }  // namespace sample

@@ -81,6 +81,7 @@ struct GovernorState {
   clouds::Quality floor{};
   clouds::Quality ceiling{};
   double judgedQuantile = 0.5;
+  FrameTimeSource source = FrameTimeSource::GpuFrame;
   std::optional<std::uint64_t> lastMeasuredFrame;
   std::string refused;  // the budget last refused (logged once)
 
@@ -93,8 +94,9 @@ struct GovernorState {
       return;
     }
     const CloudFrameBudget& budget = *camera.budget;
+    // A new range, quantile or clock: the frames judged so far are another budget's.
     if (!governor || budget.floor != floor || budget.ceiling != ceiling ||
-        budget.judgedQuantile != judgedQuantile) {
+        budget.judgedQuantile != judgedQuantile || budget.source != source) {
       if (!start(budget, camera.quality->preset, status)) return;
     }
     if (budget.targetMilliseconds != governor->config().targetMilliseconds &&
@@ -145,6 +147,8 @@ struct GovernorState {
     floor = budget.floor;
     ceiling = budget.ceiling;
     judgedQuantile = budget.judgedQuantile;
+    source = budget.source;
+    lastMeasuredFrame.reset();  // the two clocks count frames differently
     return true;
   }
 

@@ -109,6 +109,22 @@ TEST(CloudFrameBudget, AWallClockBudgetJudgesTheWallTime) {
   EXPECT_EQ(w.preset(), Quality::Low);
 }
 
+// A budget switched to the other clock starts again: what it judged on the GPU's time is not
+// the wall clock's. (High holds 33.3 ms on the GPU; on the wall clock it takes 50.)
+TEST(CloudFrameBudget, ABudgetThatChangesClocksStartsAgain) {
+  BudgetWorld w;
+  w.world.emplace<clouds::ecs::CloudFrameBudget>(w.camera, clouds::ecs::CloudFrameBudget{33.3});
+  w.run(600);
+  ASSERT_EQ(w.preset(), Quality::High);
+  ASSERT_EQ(w.status().changes, 1u);
+  w.world.get<clouds::ecs::CloudFrameBudget>(w.camera).source =
+      clouds::ecs::FrameTimeSource::WallFrame;
+  w.run(300);
+  EXPECT_EQ(w.preset(), Quality::Medium);
+  EXPECT_EQ(w.status().changes, 1u) << "counted from the switch: High to Medium";
+  EXPECT_NEAR(w.status().judgedMilliseconds, 30.0, 1e-9);
+}
+
 TEST(CloudFrameBudget, KeepsWithinItsFloorAndCeiling) {
   BudgetWorld w;
   w.world.emplace<clouds::ecs::CloudFrameBudget>(
