@@ -236,7 +236,8 @@ SceneDescription sceneToSave(World& world, SavedStart start) {
     world.view<const engine::render::Camera, const Aircraft>().each(
         [&](const engine::render::Camera& camera, const Aircraft& aircraft) {
           // The inverse of the scene's start (yaw about +y, then pitch; 0 looks along -z).
-          const glm::dvec3 forward = engine::render::forwardOf(camera);
+          // engine::render::forwardOf()'s, without its library (the fuzzed readers link this).
+          const glm::dvec3 forward = camera.orientation * glm::dvec3(0.0, 0.0, -1.0);
           scene.camera.position = camera.position;
           scene.camera.yawDegrees = glm::degrees(std::atan2(-forward.x, -forward.z));
           // A scene starts within 89 degrees of level (straight up or down has no heading).
