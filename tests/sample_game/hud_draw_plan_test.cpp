@@ -3,6 +3,7 @@
 // rectangle over something drawn before it stays drawn. (That the clears and the triangles make
 // the same image on the device: HeadlessCapture.ThePanelsClearsDrawWhatItsTrianglesWould.)
 #include "render/hud_draw_plan.h"
+#include "render/hud_layout.h"
 
 #include <gtest/gtest.h>
 #include <imgui.h>
@@ -20,15 +21,8 @@ constexpr VkExtent2D kDisplay{320, 180};
 // One ImGui frame whose background draw list gets what `draw` adds; its plan.
 HudDrawPlan planOf(const std::function<void(ImDrawList&)>& draw, bool clears = true,
                    int* totalIndices = nullptr) {
-  ImGuiContext* context = ImGui::CreateContext();
-  ImGuiIO& io = ImGui::GetIO();
-  io.IniFilename = nullptr;
-  unsigned char* pixels = nullptr;
-  int width = 0;
-  int height = 0;
-  io.Fonts->GetTexDataAsRGBA32(&pixels, &width, &height);
-  io.DisplaySize = ImVec2(float(kDisplay.width), float(kDisplay.height));
-  io.DeltaTime = 1.0f / 60.0f;
+  ImGuiContext* context = sample::createLayoutContext(kDisplay);
+  const ImGuiIO& io = ImGui::GetIO();
   ImGui::NewFrame();
   draw(*ImGui::GetBackgroundDrawList());
   ImGui::Render();

@@ -78,15 +78,8 @@ TEST(Hud, TheSettingsPanelFitsTheWindow) {
 TEST(Hud, MostOfThePanelIsClearedNotBlended) {
   HudWorld w;
   const VkExtent2D window{640, 360};
-  ImGuiContext* context = ImGui::CreateContext();
-  ImGuiIO& io = ImGui::GetIO();
-  io.IniFilename = nullptr;
-  unsigned char* pixels = nullptr;
-  int width = 0;
-  int height = 0;
-  io.Fonts->GetTexDataAsRGBA32(&pixels, &width, &height);
-  io.DisplaySize = ImVec2(640.0f, 360.0f);
-  io.DeltaTime = 1.0f / 60.0f;
+  ImGuiContext* context = sample::createLayoutContext(window);
+  const ImGuiIO& io = ImGui::GetIO();
   sample::flattenOverWindows(ImGui::GetStyle());
   glm::vec2 line{0.0f};
   glm::vec2 panel{0.0f};

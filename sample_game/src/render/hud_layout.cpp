@@ -86,9 +86,7 @@ glm::vec2 layOutHud(ecs::World& world, std::span<const gfx::TimedScope> gpuTimin
   return {size.x, size.y};
 }
 
-glm::vec2 measureHud(ecs::World& world, std::span<const gfx::TimedScope> gpuTimings,
-                     VkExtent2D extent, bool full, bool panel) {
-  ImGuiContext* previous = ImGui::GetCurrentContext();
+ImGuiContext* createLayoutContext(VkExtent2D extent) {
   ImGuiContext* context = ImGui::CreateContext();
   ImGui::SetCurrentContext(context);
   ImGuiIO& io = ImGui::GetIO();
@@ -99,6 +97,13 @@ glm::vec2 measureHud(ecs::World& world, std::span<const gfx::TimedScope> gpuTimi
   io.Fonts->GetTexDataAsRGBA32(&pixels, &width, &height);
   io.DisplaySize = ImVec2(float(extent.width), float(extent.height));
   io.DeltaTime = 1.0f / 60.0f;
+  return context;
+}
+
+glm::vec2 measureHud(ecs::World& world, std::span<const gfx::TimedScope> gpuTimings,
+                     VkExtent2D extent, bool full, bool panel) {
+  ImGuiContext* previous = ImGui::GetCurrentContext();
+  ImGuiContext* context = createLayoutContext(extent);
   // An auto-resizing window takes its size from its contents a frame late: lay it out twice.
   glm::vec2 size{0.0f};
   for (int frame = 0; frame < 2; ++frame) {
