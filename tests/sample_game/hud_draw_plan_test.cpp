@@ -55,12 +55,11 @@ TEST(HudDrawPlan, PixelsAreThoseWhoseCentresTheEdgesEnclose) {
 }
 
 TEST(HudDrawPlan, AnOpaqueRectangleIsCleared) {
+  const auto oneRectangle = [](ImDrawList& l) {
+    l.AddRectFilled({10.2f, 20.0f}, {50.7f, 30.5f}, kOpaqueBlue);
+  };
   int indices = 0;
-  const HudDrawPlan plan = planOf(
-      [](ImDrawList& l) {
-        l.AddRectFilled({10.2f, 20.0f}, {50.7f, 30.5f}, kOpaqueBlue);
-      },
-      true, &indices);
+  const HudDrawPlan plan = planOf(oneRectangle, true, &indices);
   ASSERT_EQ(plan.clears.size(), 1u);
   EXPECT_EQ(plan.clears[0].rect.offset.x, 10);
   EXPECT_EQ(plan.clears[0].rect.offset.y, 20);
@@ -73,11 +72,7 @@ TEST(HudDrawPlan, AnOpaqueRectangleIsCleared) {
   EXPECT_EQ(drawnIndices(plan), std::uint32_t(indices - 6));
 
   // Asked for triangles only, it is drawn.
-  const HudDrawPlan drawn = planOf(
-      [](ImDrawList& l) {
-        l.AddRectFilled({10.2f, 20.0f}, {50.7f, 30.5f}, kOpaqueBlue);
-      },
-      false, &indices);
+  const HudDrawPlan drawn = planOf(oneRectangle, false, &indices);
   EXPECT_TRUE(drawn.clears.empty());
   EXPECT_EQ(drawnIndices(drawn), std::uint32_t(indices));
 }
