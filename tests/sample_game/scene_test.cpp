@@ -115,6 +115,13 @@ TEST(Scenes, EveryShippedSceneWrittenBackLoadsTheSame) {
       EXPECT_EQ(loaded.atmosphere->parameters.mieScaleHeightMetres,
                 original.atmosphere->parameters.mieScaleHeightMetres);
     }
+    if (original.weather) {
+      ASSERT_TRUE(loaded.weather);
+      ASSERT_EQ(loaded.weather->schedule.size(), original.weather->schedule.size());
+      for (std::size_t i = 0; i < original.weather->schedule.size(); ++i) {
+        EXPECT_EQ(loaded.weather->schedule[i].state, original.weather->schedule[i].state);
+      }
+    }
     if (original.lightning) {
       ASSERT_TRUE(loaded.lightning);
       ASSERT_EQ(loaded.lightning->storm.cells.size(), original.lightning->storm.cells.size());
@@ -203,6 +210,38 @@ TEST(Scenes, AStormsCellsComeFromTheWeatherOrTheScene) {
     "lightning": {"cells": [{"position": [1, 2000, 3], "radiusMetres": 700}]}})"));
   ASSERT_EQ(given.lightning->storm.cells.size(), 1u);
   EXPECT_EQ(given.lightning->storm.cells[0].positionMetres, glm::dvec3(1, 2000, 3));
+}
+
+// A weather schedule: built-in states blow the layer's way, the scene's own start from the
+// layer's look (or a built-in state's) with the fields they give; a storm's cells are found
+// under the state that strikes most, though the layer itself is fair.
+TEST(Scenes, AWeatherScheduleArrivesInTheDescription) {
+  const sample::SceneDescription s = loadSceneDescription(writeScene("weather.json", R"({
+    "name": "w", "camera": {"position": [5000, 1100, -10000]},
+    "clouds": {"coverage": 0.3, "cloudType": 0.5, "noiseSeed": 12, "wind": {"directionDegrees": 90}},
+    "weather": {
+      "states": {"grey": {"coverage": 0.8}, "squall": {"like": "stormy", "wind": {"speedMetresPerSecond": 30}}},
+      "schedule": [{"state": "sparse", "holdSeconds": 5, "transitionSeconds": 7},
+                   {"state": "grey"}, {"state": "squall", "transitionSeconds": 3}],
+      "repeat": false},
+    "lightning": {"cellsFromWeather": {"count": 1, "withinMetres": 14000}}})"));
+  ASSERT_TRUE(s.weather.has_value());
+  const sample::WeatherDescription& w = *s.weather;
+  ASSERT_EQ(w.schedule.size(), 3u);
+  EXPECT_FALSE(w.repeat);
+  EXPECT_EQ(w.schedule[0].holdSeconds, 5.0);
+  EXPECT_EQ(w.schedule[0].transitionSeconds, 7.0);
+  EXPECT_EQ(w.schedule[1].holdSeconds, clouds::WeatherKey{}.holdSeconds);
+  const clouds::WeatherState sparse = clouds::weatherPreset(clouds::WeatherPreset::Sparse);
+  EXPECT_EQ(w.schedule[0].state.coverage, sparse.coverage);
+  EXPECT_NEAR(w.schedule[0].state.windDirection.y, -1.0f, 1e-6f) << "the layer's 90 degrees";
+  EXPECT_EQ(w.schedule[1].state.coverage, 0.8f);
+  EXPECT_EQ(w.schedule[1].state.cloudType, 0.5f) << "the layer's own look otherwise";
+  EXPECT_EQ(w.schedule[2].state.anvilBias, 1.0f) << "like stormy";
+  EXPECT_EQ(w.schedule[2].state.windSpeedMetresPerSecond, 30.0f);
+  EXPECT_TRUE(w.strikes());
+  ASSERT_EQ(s.lightning->storm.cells.size(), 1u) << "found under the squall, not the fair layer";
+  EXPECT_EQ(w.timeline().stateAt(1e6), w.schedule[2].state);
 }
 
 TEST(Scenes, HeroCloudsArriveInTheDescription) {
@@ -324,6 +363,47 @@ TEST(Scenes, MalformedScenesNameFilePathAndReason) {
        R"({"name": "x", "camera": {"position": [0, 1, 0]}, "clouds": {"cloudType": 0.3},
            "lightning": {"cellsFromWeather": {}}})",
        "lightning.cellsFromWeather: no cumulonimbus within"},
+      {"weather_unknown.json",
+       R"({"name": "x", "camera": {"position": [0, 1, 0]}, "clouds": {},
+           "weather": {"schedule": [{"state": "drizzle"}]}})",
+       "weather.schedule[0].state: unknown state \"drizzle\""},
+      {"weather_shadow.json",
+       R"({"name": "x", "camera": {"position": [0, 1, 0]}, "clouds": {},
+           "weather": {"states": {"Stormy": {}}, "schedule": [{"state": "Stormy"}]}})",
+       "weather.states.Stormy: a built-in state's name"},
+      {"weather_like.json",
+       R"({"name": "x", "camera": {"position": [0, 1, 0]}, "clouds": {},
+           "weather": {"states": {"grey": {"like": "foggy"}}, "schedule": [{"state": "grey"}]}})",
+       "weather.states.grey.like: a built-in state"},
+      {"weather_field.json",
+       R"({"name": "x", "camera": {"position": [0, 1, 0]}, "clouds": {},
+           "weather": {"states": {"grey": {"coverage": 2}}, "schedule": [{"state": "grey"}]}})",
+       "weather.states.grey.coverage: must be in [0, 1], got 2"},
+      {"weather_hold.json",
+       R"({"name": "x", "camera": {"position": [0, 1, 0]}, "clouds": {},
+           "weather": {"schedule": [{"state": "sparse", "holdSeconds": -1}]}})",
+       "weather.schedule[0].holdSeconds: must be in [0, 1e+07], got -1"},
+      {"weather_empty.json",
+       R"({"name": "x", "camera": {"position": [0, 1, 0]}, "clouds": {},
+           "weather": {"schedule": []}})",
+       "weather.schedule: at least one state"},
+      {"weather_instant.json",
+       R"({"name": "x", "camera": {"position": [0, 1, 0]}, "clouds": {},
+           "weather": {"schedule": [{"state": "sparse", "holdSeconds": 0, "transitionSeconds": 0}]}})",
+       "weather.schedule: a repeating weather schedule must last some time"},
+      {"weather_no_clouds.json",
+       R"({"name": "x", "camera": {"position": [0, 1, 0]},
+           "weather": {"schedule": [{"state": "sparse"}]}})",
+       "weather: weather is the clouds'"},
+      {"weather_no_storm.json",
+       R"({"name": "x", "camera": {"position": [0, 1, 0]}, "clouds": {},
+           "weather": {"schedule": [{"state": "stormy"}]}})",
+       "weather: a state strikes lightning: the scene needs a \"lightning\" storm"},
+      {"weather_rate.json",
+       R"({"name": "x", "camera": {"position": [0, 1, 0]}, "clouds": {},
+           "weather": {"schedule": [{"state": "stormy"}]},
+           "lightning": {"cells": [{"position": [0, 2000, 0]}], "strikesPerMinute": 3}})",
+       "lightning.strikesPerMinute: the weather's states set the rate"},
       {"lightning_ground.json",
        R"({"name": "x", "camera": {"position": [0, 1, 0]}, "clouds": {},
            "lightning": {"cells": [{"position": [0, 2000, 0]}], "groundAltitudeMetres": 1e6}})",

@@ -86,6 +86,10 @@ std::string checkSharedInputs(const FrameInputs& in) {
   if (!std::isfinite(in.timeSeconds) || in.timeSeconds < 0.0) {
     return "FrameInputs.timeSeconds = " + std::to_string(in.timeSeconds) + ": must be >= 0";
   }
+  if (in.windDisplacementMetres && !(std::isfinite(in.windDisplacementMetres->x) &&
+                                     std::isfinite(in.windDisplacementMetres->y))) {
+    return "FrameInputs.windDisplacementMetres: must be finite";
+  }
   return {};
 }
 

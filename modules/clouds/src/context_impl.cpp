@@ -9,6 +9,7 @@
 #include "descriptor_sets.h"
 #include "lightning_bolts.h"
 #include "pipeline_variants.h"
+#include "wind_displacement.h"
 
 namespace clouds {
 
@@ -355,8 +356,8 @@ void Context::Impl::dispatchShadowMap(const FrameInputs& inputs, const Settings&
   shadowCascades_.commit(plan, inputs, settings);
   for (const detail::CascadeJob& job : plan.jobs) shadowCascadesMade_ |= 1u << job.cascade;
   if (plan.slice && plan.slice->last) shadowCascadesMade_ |= 1u << plan.slice->job.cascade;
-  shadowParameters_ =
-      shadowCascades_.parameters(inputs.cameraPosition, inputs.timeSeconds, settings);
+  shadowParameters_ = shadowCascades_.parameters(
+      inputs.cameraPosition, detail::windDisplacementOf(inputs, settings), settings);
   shadowFrame_ = inputs.frameIndex;
   report_.shadowCascadesMade = shadowCascadesMade_;
   device_.endLabel(cmd);
@@ -384,7 +385,8 @@ void Context::Impl::dispatch(const FrameInputs& inputs, const Settings& settings
       temporal_.plan(inputs, settings, traceExtent, inHeroCloud, nearHeroCloud);
   const detail::UniformContext uniformContext{info_.reversedZ, inputs.depthView != VK_NULL_HANDLE,
                                               traceExtent, inputs.renderExtent, temporal};
-  lastUniforms_ = detail::buildUniforms(inputs, settings, uniformContext);
+  lastUniforms_ =
+      detail::buildUniforms(inputs, temporal_.marchedSettings(settings, temporal), uniformContext);
   lastUniforms_.flags |= debugFlags_;
   // Hero clouds lit by their light volume: each instance's slot, and those to sweep first.
   const bool heroLightVolume = heroClouds && settings.heroLight == HeroLight::Volume;

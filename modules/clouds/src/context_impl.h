@@ -87,6 +87,8 @@ class Context::Impl {
   std::uint64_t weatherUpdates() const { return weatherUpdates_; }
   // Test-only uniform flags (e.g. shader::kFlagHomogeneous) ORed into every frame.
   void setDebugFlags(std::uint32_t flags) { debugFlags_ = flags; }
+  // Tests: a changing look marched as it is (TemporalState::marchedSettings()).
+  void leadTheLook(bool on) { temporal_.leadTheLook(on); }
 
  private:
   // What one frame-in-flight slot owns: its uniforms, counters and descriptor sets (rewritten

@@ -7,34 +7,45 @@
 namespace clouds::detail {
 namespace {
 
-bool differByOnePercent(float x, float y) {
-  return std::abs(x - y) > 0.01f * std::max(std::abs(x), std::abs(y)) + 1e-6f;
+// A float differs by more than 1% of the larger of the two values, or of `scale`, the field's
+// natural size, where that is larger: a weather field easing out of 0 (anvilBias from 0 to 1)
+// then keeps the history as one easing between large values does.
+bool differByOnePercent(float x, float y, float scale) {
+  return std::abs(x - y) > 0.01f * std::max({std::abs(x), std::abs(y), scale}) + 1e-6f;
 }
-bool differByOnePercent(const glm::vec2& x, const glm::vec2& y) {
-  return differByOnePercent(x.x, y.x) || differByOnePercent(x.y, y.y);
+// A direction (any length) turned by more than 1% of a radian.
+bool differByOnePercent(const glm::vec2& x, const glm::vec2& y, float) {
+  const float lx = glm::length(x);
+  const float ly = glm::length(y);
+  if (!(lx > 0.0f && ly > 0.0f)) return !(x == y);
+  const float cosine = std::clamp(glm::dot(x / lx, y / ly), -1.0f, 1.0f);
+  return std::acos(cosine) > 0.01f;
 }
 // Counts, switches and choices: any change is a change.
 template <typename T>
-bool differByOnePercent(const T& x, const T& y) {
+bool differByOnePercent(const T& x, const T& y, float) {
   return !(x == y);
 }
 
-template <auto Field>
+template <auto Field, float Scale>
 bool looksDifferent(const Settings& a, const Settings& b) {
-  return differByOnePercent(a.*Field, b.*Field);
+  return differByOnePercent(a.*Field, b.*Field, Scale);
 }
 template <auto Field>
 bool differs(const Settings& a, const Settings& b) {
   return !(a.*Field == b.*Field);
 }
 
-template <auto Field>
+template <auto Field, float Scale = 0.0f>
 constexpr SettingEffect row(const char* name, std::uint8_t effects, const char* whyKept) {
-  return {name, effects, &looksDifferent<Field>, &differs<Field>, whyKept};
+  return {name, effects, &looksDifferent<Field, Scale>, &differs<Field>, whyKept};
 }
 
 // One row; the field's name is written once.
 #define CLOUDS_SETTING(name, effects, whyKept) row<&Settings::name>(#name, effects, whyKept)
+// A row whose floats' 1% is at least 1% of `scale` (a weather state's field: clouds/weather.h).
+#define CLOUDS_WEATHER_SETTING(name, effects, scale) \
+  row<&Settings::name, scale>(#name, effects, kNoReason)
 
 constexpr std::uint8_t kLook = kResetsHistory;
 constexpr std::uint8_t kShadow = kRemakesShadows;
@@ -47,8 +58,8 @@ constexpr SettingEffect kEffects[] = {
     CLOUDS_SETTING(layerBottomMetres, kLook | kShadow, kNoReason),
     CLOUDS_SETTING(layerTopMetres, kLook | kShadow, kNoReason),
     CLOUDS_SETTING(planetRadiusMetres, kLook, kNoReason),
-    CLOUDS_SETTING(coverage, kLook, kNoReason),
-    CLOUDS_SETTING(cloudType, kLook, kNoReason),
+    CLOUDS_WEATHER_SETTING(coverage, kLook, 1.0f),
+    CLOUDS_WEATHER_SETTING(cloudType, kLook, 1.0f),
     CLOUDS_SETTING(typeVariation, kLook, kNoReason),
     CLOUDS_SETTING(densityVariation, kLook, kNoReason),
     CLOUDS_SETTING(weatherTileMetres, kLook, kNoReason),
@@ -57,18 +68,18 @@ constexpr SettingEffect kEffects[] = {
     CLOUDS_SETTING(weatherUpdateSeconds, kKeepsState,
                    "a new period's map blends in over the period: the history follows it"),
     // Density and shape.
-    CLOUDS_SETTING(densityMultiplier, kLook, kNoReason),
+    CLOUDS_WEATHER_SETTING(densityMultiplier, kLook, 1.0f),
     CLOUDS_SETTING(extinctionPerMetre, kLook, kNoReason),
-    CLOUDS_SETTING(anvilBias, kLook, kNoReason),
+    CLOUDS_WEATHER_SETTING(anvilBias, kLook, 1.0f),
     CLOUDS_SETTING(shapeTileMetres, kLook, kNoReason),
     CLOUDS_SETTING(detailTileMetres, kLook, kNoReason),
-    CLOUDS_SETTING(detailErosion, kLook, kNoReason),
+    CLOUDS_WEATHER_SETTING(detailErosion, kLook, 1.0f),
     CLOUDS_SETTING(detailDistanceMetres, kLook, kNoReason),
     CLOUDS_SETTING(curlTileMetres, kLook, kNoReason),
     CLOUDS_SETTING(curlStrengthMetres, kLook, kNoReason),
-    CLOUDS_SETTING(windDirection, kLook, kNoReason),
-    CLOUDS_SETTING(windSpeedMetresPerSecond, kLook, kNoReason),
-    CLOUDS_SETTING(skewMetres, kLook, kNoReason),
+    CLOUDS_WEATHER_SETTING(windDirection, kLook, 0.0f),
+    CLOUDS_WEATHER_SETTING(windSpeedMetresPerSecond, kLook, 10.0f),
+    CLOUDS_WEATHER_SETTING(skewMetres, kLook, 100.0f),
     // Lighting.
     CLOUDS_SETTING(albedo, kLook, kNoReason),
     CLOUDS_SETTING(phaseForwardG, kLook, kNoReason),
@@ -164,6 +175,7 @@ constexpr SettingEffect kEffects[] = {
 };
 
 #undef CLOUDS_SETTING
+#undef CLOUDS_WEATHER_SETTING
 
 }  // namespace
 
@@ -176,6 +188,12 @@ bool settingsDifferIn(std::uint8_t effect, const Settings& a, const Settings& b)
   return std::any_of(std::begin(kEffects), std::end(kEffects), [&](const SettingEffect& row) {
     if ((row.effects & effect) == 0) return false;
     return effect == kResetsHistory ? row.looksDifferent(a, b) : row.differs(a, b);
+  });
+}
+
+bool settingsChangedIn(std::uint8_t effect, const Settings& a, const Settings& b) {
+  return std::any_of(std::begin(kEffects), std::end(kEffects), [&](const SettingEffect& row) {
+    return (row.effects & effect) != 0 && row.differs(a, b);
   });
 }
 

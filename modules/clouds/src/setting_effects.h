@@ -17,7 +17,9 @@ namespace clouds::detail {
 // Bits of SettingEffect::effects.
 inline constexpr std::uint8_t kKeepsState = 0;
 // The clouds look different: the history is dropped. Floats compare with a 1% tolerance (a
-// host easing a value over frames keeps its history), everything else exactly.
+// host easing a value over frames keeps its history): 1% of the value, or for a weather
+// state's fields of their natural size where that is larger (0.01 of coverage), and the wind's
+// direction 0.01 rad; everything else exactly.
 inline constexpr std::uint8_t kResetsHistory = 1;
 // The shadow map is made differently: its cascades are remade (any change at all).
 inline constexpr std::uint8_t kRemakesShadows = 2;
@@ -37,5 +39,7 @@ std::span<const SettingEffect> settingEffects();
 
 // Any field whose row has `effect` changed (kResetsHistory: beyond its tolerance).
 bool settingsDifferIn(std::uint8_t effect, const Settings& a, const Settings& b);
+// Any field whose row has `effect` changed at all (kResetsHistory: within its tolerance too).
+bool settingsChangedIn(std::uint8_t effect, const Settings& a, const Settings& b);
 
 }  // namespace clouds::detail

@@ -7,6 +7,7 @@
 #include "cloud_shadow_march.h"
 #include "setting_effects.h"
 #include "temporal_state.h"
+#include "wind_displacement.h"
 
 namespace clouds::detail {
 namespace {
@@ -25,12 +26,6 @@ bool sameTerrain(const FrameInputs::Terrain& a, const FrameInputs::Terrain& b) {
   return a.heightView == b.heightView && a.originMetres == b.originMetres &&
          a.sizeMetres == b.sizeMetres && a.minAltitudeMetres == b.minAltitudeMetres &&
          a.maxAltitudeMetres == b.maxAltitudeMetres;
-}
-
-glm::dvec3 windDrift(const Settings& s, double seconds) {
-  const glm::dvec2 wind = glm::normalize(glm::dvec2(s.windDirection)) *
-                          (static_cast<double>(s.windSpeedMetresPerSecond) * seconds);
-  return {wind.x, 0.0, wind.y};
 }
 
 }  // namespace
@@ -153,8 +148,12 @@ CascadeSlice ShadowCascades::nextSlice(const FrameInputs& in, const Settings& s,
   // Go on with the cascade in the making while it would still be made now, as it was begun.
   if (building_) {
     const CascadeSlice& first = building_->first;
-    const Made begun{true, first.job.basis, first.job.cornerTexel, first.job.texelMetres,
-                     building_->timeSeconds};
+    const Made begun{true,
+                     first.job.basis,
+                     first.job.cornerTexel,
+                     first.job.texelMetres,
+                     building_->timeSeconds,
+                     building_->windDisplacement};
     if (!stale(begun, placement(first.job.cascade, in, s), in, s) &&
         first.rowCount == rowsPerSlice) {
       CascadeSlice slice = first;
@@ -181,19 +180,25 @@ CascadeSlice ShadowCascades::nextSlice(const FrameInputs& in, const Settings& s,
 
 void ShadowCascades::commit(const ShadowPlan& plan, const FrameInputs& in, const Settings& s) {
   const bool terrain = in.terrain.heightView != VK_NULL_HANDLE;
+  const glm::dvec2 wind = windDisplacementOf(in, s);
   for (const CascadeJob& job : plan.jobs) {
-    made_[job.cascade] = Made{true, job.basis, job.cornerTexel, job.texelMetres, in.timeSeconds};
+    made_[job.cascade] =
+        Made{true, job.basis, job.cornerTexel, job.texelMetres, in.timeSeconds, wind};
     hasTerrain_[job.cascade] = terrain;
   }
   if (plan.abandonSlices) building_.reset();
   if (plan.slice) {
     const CascadeSlice& slice = *plan.slice;
-    if (slice.first) building_ = Building{slice, 0, in.timeSeconds};
+    if (slice.first) building_ = Building{slice, 0, in.timeSeconds, wind};
     building_->rowsDone = slice.firstRow + slice.rowCount;
     if (slice.last) {
       const CascadeJob& job = slice.job;
-      made_[job.cascade] =
-          Made{true, job.basis, job.cornerTexel, job.texelMetres, building_->timeSeconds};
+      made_[job.cascade] = Made{true,
+                                job.basis,
+                                job.cornerTexel,
+                                job.texelMetres,
+                                building_->timeSeconds,
+                                building_->windDisplacement};
       hasTerrain_[job.cascade] = terrain;
       building_.reset();
     }
@@ -208,7 +213,8 @@ void ShadowCascades::commit(const ShadowPlan& plan, const FrameInputs& in, const
   terrain_ = in.terrain;
 }
 
-ShadowMapParameters ShadowCascades::parameters(const glm::dvec3& camera, double timeSeconds,
+ShadowMapParameters ShadowCascades::parameters(const glm::dvec3& camera,
+                                               const glm::dvec2& windDisplacementMetres,
                                                const Settings& s) const {
   ShadowMapParameters p;
   std::uint32_t cascades = 0;
@@ -216,7 +222,8 @@ ShadowMapParameters ShadowCascades::parameters(const glm::dvec3& camera, double 
     const Made& m = made_[c];
     // Between refreshes the clouds drifted with the wind: a receiver now is shadowed by the
     // cloud that was upwind of it when the cascade was made.
-    const glm::dvec3 drift = windDrift(s, timeSeconds - m.timeSeconds);
+    const glm::dvec2 wind = windDisplacementMetres - m.windDisplacement;
+    const glm::dvec3 drift(wind.x, 0.0, wind.y);
     const double side = m.texelMetres * s.shadowMapResolution;
     const auto edge = [&](const glm::dvec3& axis, std::int64_t corner) {
       return static_cast<float>(static_cast<double>(corner) * m.texelMetres -

@@ -99,8 +99,10 @@ class ShadowCascades {
     building_.reset();
   }
 
-  // The lookup parameters relative to the camera at `cameraPosition` at `timeSeconds`.
-  ShadowMapParameters parameters(const glm::dvec3& cameraPosition, double timeSeconds,
+  // The lookup parameters relative to the camera at `cameraPosition`, the wind having carried
+  // the clouds to `windDisplacementMetres` (wind_displacement.h).
+  ShadowMapParameters parameters(const glm::dvec3& cameraPosition,
+                                 const glm::dvec2& windDisplacementMetres,
                                  const Settings& settings) const;
 
  private:
@@ -110,6 +112,7 @@ class ShadowCascades {
     glm::i64vec2 cornerTexel{0, 0};
     double texelMetres = 0.0;
     double timeSeconds = 0.0;
+    glm::dvec2 windDisplacement{0.0};  // of the clouds it holds (x, z m)
   };
   CascadeJob placement(std::uint32_t c, const FrameInputs& inputs, const Settings& settings) const;
   bool stale(const Made& made, const CascadeJob& now, const FrameInputs& inputs,
@@ -123,6 +126,7 @@ class ShadowCascades {
     CascadeSlice first;  // its first slice (the job, the camera)
     std::uint32_t rowsDone = 0;
     double timeSeconds = 0.0;  // of the first slice: the clouds it holds
+    glm::dvec2 windDisplacement{0.0};
   };
 
   std::array<Made, fxcontracts::shader::kCloudShadowMaxCascades> made_{};

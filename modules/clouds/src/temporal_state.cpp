@@ -1,6 +1,7 @@
 #include "temporal_state.h"
 
 #include "setting_effects.h"
+#include "wind_displacement.h"
 
 #include <algorithm>
 #include <cmath>
@@ -66,6 +67,11 @@ TemporalFrame TemporalState::plan(const FrameInputs& in, const Settings& s, VkEx
     frame.resetReason = "resize";
   } else if (glm::length(in.cameraPosition - cameraPosition_) > s.historyResetDistanceMetres) {
     frame.resetReason = "camera jump";
+  } else if (glm::length(windDisplacementOf(in, s) - windDisplacement_) >
+             s.historyResetDistanceMetres) {
+    // The host's wind displacement jumped (a new clock, or a wind changed without its
+    // integral): the noise moved against the weather map, and the history holds other clouds.
+    frame.resetReason = "wind jump";
   } else if (angleDegrees(forwardOf(in.view), forwardOf(view_)) > s.historyResetAngleDegrees) {
     frame.resetReason = "camera turn";
   } else if (angleDegrees(in.sunDirection, sunDirection_) > s.relightResetDegrees ||
@@ -113,18 +119,40 @@ TemporalFrame TemporalState::plan(const FrameInputs& in, const Settings& s, VkEx
   frame.upsampleTemporally = upsamplesTemporally(s);
   frame.useOutputHistory = frame.upsampleTemporally && frame.useHistory && wroteOutputHistory_;
   frame.cameraDelta = havePrevious_ ? in.cameraPosition - cameraPosition_ : glm::dvec3(0.0);
-  frame.deltaSeconds = havePrevious_ ? std::max(in.timeSeconds - timeSeconds_, 0.0) : 0.0;
-  const bool noDrift = frame.deltaSeconds == 0.0 || s.windSpeedMetresPerSecond == 0.0f;
+  frame.windDrift = havePrevious_ ? windDisplacementOf(in, s) - windDisplacement_ : glm::dvec2(0.0);
+  const bool noDrift = frame.windDrift == glm::dvec2(0.0);
   frame.previousView = havePrevious_ ? view_ : in.view;
   frame.previousProjection = havePrevious_ ? projection_ : in.projection;
+  frame.cloudsChanging = frame.useHistory && settingsChangedIn(kResetsHistory, s, settings_);
+  if (frame.cloudsChanging && leadTheLook_) {
+    const float area = static_cast<float>(frame.tileSize * frame.tileSize);
+    const float w = std::clamp(s.temporalFreshWeight, 0.05f, 1.0f);
+    frame.lookLeadFrames = (1.0f - w) / w * area + 0.5f * (area - 1.0f);
+  }
   frame.still = havePrevious_ && frame.cameraDelta == glm::dvec3(0.0) && noDrift &&
-                in.view == view_ && in.projection == projection_;
+                !frame.cloudsChanging && in.view == view_ && in.projection == projection_;
   // While nothing moves, a pixel's history stays where it is and changes only where a fresh
   // sample lands (1 in 16 of the trace's pixels, 1 in 64 of the output's at High): the passes
   // update it in place and store only those pixels. Otherwise they write the other image.
   frame.readHistory = latestHistory_;
   frame.writeHistory = frame.still && frame.useHistory ? latestHistory_ : 1u - latestHistory_;
   return frame;
+}
+
+Settings TemporalState::marchedSettings(const Settings& s, const TemporalFrame& frame) const {
+  if (frame.lookLeadFrames == 0.0f) return s;
+  Settings led = s;
+  const auto lead = [&](float Settings::*field, float lo, float hi) {
+    const float change = s.*field - settings_.*field;
+    led.*field = std::clamp(s.*field + frame.lookLeadFrames * change, lo, hi);
+  };
+  lead(&Settings::coverage, 0.0f, 1.0f);
+  lead(&Settings::cloudType, 0.0f, 1.0f);
+  lead(&Settings::densityMultiplier, 0.0f, 1e6f);
+  lead(&Settings::anvilBias, 0.0f, 1.0f);
+  lead(&Settings::detailErosion, 0.0f, 1.0f);
+  lead(&Settings::skewMetres, 0.0f, 20000.0f);
+  return led;
 }
 
 void TemporalState::commit(const TemporalFrame& frame, const FrameInputs& in,
@@ -141,7 +169,7 @@ void TemporalState::commit(const TemporalFrame& frame, const FrameInputs& in,
   projection_ = in.projection;
   sunDirection_ = in.sunDirection;
   sunIlluminance_ = in.sunIlluminance;
-  timeSeconds_ = in.timeSeconds;
+  windDisplacement_ = windDisplacementOf(in, settings);
   settings_ = settings;
   weatherView_ = in.weatherView;
 }

@@ -1,6 +1,7 @@
 #include "uniforms.h"
 
 #include "temporal_state.h"
+#include "wind_displacement.h"
 
 #include <algorithm>
 #include <cmath>
@@ -70,8 +71,7 @@ void setNoisePlacement(shader::CloudUniforms& u, const FrameInputs& in, const Se
   const glm::dvec2 wind = windDirectionOf(s);
   const glm::dvec2 camera(in.cameraPosition.x, in.cameraPosition.z);
   // The noise moves with the wind; the weather map (coverage) stays where it is.
-  const glm::dvec2 scrolled =
-      camera + wind * (static_cast<double>(s.windSpeedMetresPerSecond) * in.timeSeconds);
+  const glm::dvec2 scrolled = camera + windDisplacementOf(in, s);
   const glm::vec2 shape = offsetInTile(scrolled, s.shapeTileMetres);
   const glm::vec2 detail = offsetInTile(scrolled, s.detailTileMetres);
   u.shapeOffsetMetres = glm::vec3(shape.x, 0.0f, shape.y);
@@ -179,12 +179,11 @@ void setTiles(shader::CloudUniforms& u, const UniformContext& context) {
 // Folded here once per frame so that the passes take one matrix product per pixel: a view
 // direction goes straight to the history's clip space, and the camera offset is a constant.
 // Reads u.viewToWorld (setCamera()).
-void setReprojection(shader::CloudUniforms& u, const Settings& s, const TemporalFrame& temporal) {
+void setReprojection(shader::CloudUniforms& u, const TemporalFrame& temporal) {
   const glm::mat4 previousViewProjection =
       temporal.previousProjection * glm::mat4(glm::mat3(temporal.previousView));
   u.previousClipFromView = previousViewProjection * u.viewToWorld;
-  const glm::dvec2 drift = windDirectionOf(s) * (static_cast<double>(s.windSpeedMetresPerSecond) *
-                                                 temporal.deltaSeconds);
+  const glm::dvec2 drift = temporal.windDrift;
   const glm::dvec3 moved = temporal.cameraDelta - glm::dvec3(drift.x, 0.0, drift.y);
   u.previousClipOrigin = previousViewProjection * glm::vec4(glm::vec3(moved), 1.0f);
   u.cameraMovedMetres = static_cast<float>(glm::length(moved));
@@ -298,7 +297,7 @@ shader::CloudUniforms buildUniforms(const FrameInputs& in, const Settings& s,
   u.nearFieldMetres = context.temporal.nearField ? s.nearFieldMetres : 0.0f;
   const VkExtent2D nearField = nearFieldExtentFor(context.traceExtent);
   u.nearFieldExtent = glm::uvec2(nearField.width, nearField.height);
-  setReprojection(u, s, context.temporal);
+  setReprojection(u, context.temporal);
   setHistoryBlend(u, s, context.temporal);
   const RefreshRound round = refreshRound(s, context.temporal);
   setRayPlacement(u, s, context.temporal, round);

@@ -6,6 +6,7 @@
 
 #include "clouds/ecs/cloud_components.h"
 #include "clouds/ecs/frame_budget.h"
+#include "engine/ecs/frame_time.h"
 #include "engine/render/scene_components.h"
 #include "game/game_components.h"
 #include "render/settings_panel.h"
@@ -53,6 +54,19 @@ void fullText(ecs::World& world, std::span<const gfx::TimedScope> gpuTimings) {
     ImGui::Text("governor: %s, judged %.1f ms, %llu changes", governor->reason,
                 governor->judgedMilliseconds, static_cast<unsigned long long>(governor->changes));
   }
+  world.view<const clouds::ecs::CloudWeather>().each([&](const clouds::ecs::CloudWeather& w) {
+    const clouds::WeatherPhase phase =
+        w.timeline.phaseAt(world.ctx().get<ecs::FrameTime>().elapsedSeconds);
+    const auto name = [&](std::size_t key) {
+      return key < w.keyNames.size() ? w.keyNames[key].c_str() : "?";
+    };
+    if (phase.from == phase.to) {
+      ImGui::Text("weather: %s", name(phase.from));
+    } else {
+      ImGui::Text("weather: %s -> %s (%.0f%%)", name(phase.from), name(phase.to),
+                  100.0 * double(phase.blend));
+    }
+  });
   world.view<const TimeOfDay>().each([&](const TimeOfDay& t) {
     const int minutes = int(std::fmod(t.hours, 24.0) * 60.0);
     ImGui::Text("time of day %02d:%02d%s", minutes / 60, minutes % 60,

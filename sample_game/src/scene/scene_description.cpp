@@ -234,7 +234,10 @@ ExposureDescription readExposure(const JsonReader& r) {
 
 // A storm in `clouds`: its cells given, or found where the clouds' weather holds the most
 // cumulonimbus around the camera.
+// With changing weather the storm strikes at its states' rates, and its cells are found under
+// the state that strikes most.
 LightningDescription readLightning(const JsonReader& r, const CloudDescription& clouds,
+                                   const std::optional<WeatherDescription>& weather,
                                    const CameraDescription& camera) {
   LightningDescription l;
   clouds::ecs::LightningStorm& s = l.storm;
@@ -260,13 +263,18 @@ LightningDescription readLightning(const JsonReader& r, const CloudDescription& 
       r.fail("cellsFromWeather", "found in the procedural weather only, not a painted map");
     }
     const glm::dvec2 centre(camera.position.x, camera.position.z);
-    s.cells = clouds::ecs::stormCellsFromWeather(clouds.settings, clouds.noiseSeed, centre, within,
-                                                 count, radius);
+    const clouds::Settings stormy =
+        weather ? clouds::withWeather(clouds.settings, weather->stormiest()) : clouds.settings;
+    s.cells =
+        clouds::ecs::stormCellsFromWeather(stormy, clouds.noiseSeed, centre, within, count, radius);
     if (s.cells.empty()) {
       r.fail("cellsFromWeather",
              "no cumulonimbus within " + std::to_string(within) +
                  " m of the camera (type >= 0.75, coverage >= 0.5): raise cloudType or coverage");
     }
+  }
+  if (weather && r.has("strikesPerMinute")) {
+    r.fail("strikesPerMinute", "the weather's states set the rate (lightningStrikesPerMinute)");
   }
   s.strikesPerMinute = r.number("strikesPerMinute", 0.0, 600.0, s.strikesPerMinute);
   s.seed = static_cast<std::uint32_t>(r.integer("seed", 0, 0xffffffffLL, s.seed));
@@ -291,9 +299,18 @@ SceneDescription loadSceneDescription(const std::filesystem::path& file) {
   if (root.has("sun")) scene.sun = readSun(root.object("sun"));
   if (root.has("terrain")) scene.terrain = readTerrain(root.object("terrain"), dir);
   if (root.has("clouds")) scene.clouds = readClouds(root.object("clouds"), dir);
+  if (root.has("weather")) {
+    if (!scene.clouds) root.fail("weather", "weather is the clouds': the scene has none");
+    scene.weather = readWeather(root.object("weather"), scene.clouds->settings,
+                                scene.clouds->windDirectionDegrees);
+    if (scene.weather->strikes() && !root.has("lightning")) {
+      root.fail("weather", "a state strikes lightning: the scene needs a \"lightning\" storm");
+    }
+  }
   if (root.has("lightning")) {
     if (!scene.clouds) root.fail("lightning", "lightning glows in clouds: the scene has none");
-    scene.lightning = readLightning(root.object("lightning"), *scene.clouds, scene.camera);
+    scene.lightning =
+        readLightning(root.object("lightning"), *scene.clouds, scene.weather, scene.camera);
   }
   if (root.has("atmosphere")) scene.atmosphere = readAtmosphere(root.object("atmosphere"));
   if (root.has("fog")) scene.fog = readFog(root.object("fog"));

@@ -13,6 +13,7 @@
 #include "clouds/ecs/cloud_components.h"
 #include "clouds/ecs/lightning.h"
 #include "clouds/hero_cloud_life.h"
+#include "scene/weather_description.h"
 
 namespace sample {
 
@@ -118,6 +119,7 @@ struct SceneDescription {
   SunDescription sun;
   std::optional<TerrainDescription> terrain;
   std::optional<CloudDescription> clouds;
+  std::optional<WeatherDescription> weather;        // with clouds only
   std::optional<LightningDescription> lightning;    // with clouds only
   std::optional<AtmosphereDescription> atmosphere;  // exclusive with fog
   std::optional<FogDescription> fog;

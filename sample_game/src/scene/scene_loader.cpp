@@ -217,6 +217,12 @@ void populateScene(ecs::App& app, const SceneDescription& scene,
     world.emplace<clouds::ecs::CloudLayer>(
         layer, clouds::ecs::CloudLayer{scene.clouds->settings, scene.clouds->noiseSeed,
                                        scene.clouds->weatherMap, heroClouds.assets});
+    // Changing weather, as data: the layer's look follows its timeline on the game clock.
+    if (scene.weather) {
+      world.emplace<clouds::ecs::CloudWeather>(
+          layer,
+          clouds::ecs::CloudWeather{scene.weather->timeline(), scene.weather->scheduleStates});
+    }
     // Hero clouds, as data: each an entity placing one of the layer's assets.
     for (const PlacedHeroCloud& placed : heroClouds.placements) {
       const ecs::Entity entity = world.create();

@@ -127,19 +127,21 @@ json cloudsJson(const CloudDescription& c) {
   return j;
 }
 
-json lightningJson(const LightningDescription& l) {
+// With changing weather the states set the rate: the storm does not say one.
+json lightningJson(const LightningDescription& l, bool weather) {
   const clouds::ecs::LightningStorm& s = l.storm;
   json cells = json::array();
   for (const clouds::ecs::LightningCell& cell : s.cells) {
     cells.push_back(
         {{"position", vec3(cell.positionMetres)}, {"radiusMetres", double(cell.radiusMetres)}});
   }
-  return {{"cells", cells},
-          {"strikesPerMinute", s.strikesPerMinute},
-          {"seed", s.seed},
-          {"groundFraction", s.groundFraction},
-          {"radiance", double(s.radiance)},
-          {"groundAltitudeMetres", s.groundAltitudeMetres}};
+  json j = {{"cells", cells},
+            {"seed", s.seed},
+            {"groundFraction", s.groundFraction},
+            {"radiance", double(s.radiance)},
+            {"groundAltitudeMetres", s.groundAltitudeMetres}};
+  if (!weather) j["strikesPerMinute"] = s.strikesPerMinute;
+  return j;
 }
 
 json atmosphereJson(const AtmosphereDescription& a) {
@@ -170,7 +172,8 @@ std::string sceneJson(const SceneDescription& scene) {
       {"name", scene.name}, {"camera", cameraJson(scene.camera)}, {"sun", sunJson(scene.sun)}};
   if (scene.terrain) j["terrain"] = terrainJson(*scene.terrain);
   if (scene.clouds) j["clouds"] = cloudsJson(*scene.clouds);
-  if (scene.lightning) j["lightning"] = lightningJson(*scene.lightning);
+  if (scene.weather) j["weather"] = weatherJson(*scene.weather);
+  if (scene.lightning) j["lightning"] = lightningJson(*scene.lightning, scene.weather.has_value());
   if (scene.atmosphere) j["atmosphere"] = atmosphereJson(*scene.atmosphere);
   if (scene.fog) j["fog"] = {{"densityPerMetre", scene.fog->densityPerMetre}};
   j["exposure"] = exposureJson(scene.exposure);

@@ -172,6 +172,7 @@ clouds::FrameInputs CloudHarness::makeInputs(const CloudView& view, VkExtent2D e
   in.ambientBottom = view.ambientBottom;
   in.groundAlbedo = view.groundAlbedo;
   in.timeSeconds = view.timeSeconds;
+  in.windDisplacementMetres = view.windDisplacementMetres;
   in.weatherView = view.weatherView;
   in.skyView = view.skyView;
   in.aerialPerspective = view.aerialPerspective;

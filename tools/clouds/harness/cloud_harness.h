@@ -47,6 +47,9 @@ struct CloudView {
   // extent rendered must match.
   std::vector<float> hostDepth;
   double timeSeconds = 0.0;
+  // Where the wind has carried the clouds (FrameInputs::windDisplacementMetres); none: the
+  // time x the settings' wind.
+  std::optional<glm::dvec2> windDisplacementMetres;
   // Optional host images (sampled, SHADER_READ_ONLY_OPTIMAL): painted weather, sky radiance.
   VkImageView weatherView = VK_NULL_HANDLE;
   VkImageView skyView = VK_NULL_HANDLE;

@@ -14,10 +14,19 @@ using namespace engine;
 
 namespace {
 
-// The layer's settings as they are, with room for a storm's flashes (and so the glow's code).
+double clockSeconds(engine::ecs::World& world) {
+  const auto* time = world.ctx().tryGet<engine::ecs::FrameTime>();
+  return time ? time->elapsedSeconds : 0.0;
+}
+
+// The layer's settings under the weather now, with room for a storm's flashes (and so the
+// glow's code).
 clouds::Settings layerSettings(engine::ecs::World& world) {
   clouds::Settings settings;
   world.view<const CloudLayer>().each([&](const CloudLayer& layer) { settings = layer.settings; });
+  if (const std::optional<clouds::WeatherState> weather = currentWeather(world)) {
+    settings = clouds::withWeather(settings, *weather);
+  }
   world.view<const LightningStorm>().each([&](const LightningStorm&) {
     settings.lightningFlashes = kLightningFlashes;
     settings.lightningBoltSegments = kLightningBoltSegments;
@@ -26,6 +35,14 @@ clouds::Settings layerSettings(engine::ecs::World& world) {
 }
 
 }  // namespace
+
+std::optional<clouds::WeatherState> currentWeather(engine::ecs::World& world) {
+  std::optional<clouds::WeatherState> weather;
+  const double now = clockSeconds(world);
+  world.view<const CloudLayer, const CloudWeather>().each(
+      [&](const CloudLayer&, const CloudWeather& w) { weather = w.timeline.stateAt(now); });
+  return weather;
+}
 
 clouds::Settings CloudQualityKnobs::appliedTo(clouds::Settings settings) const {
   if (maxViewSteps) settings.maxViewSteps = *maxViewSteps;
@@ -169,6 +186,11 @@ clouds::FrameInputs cloudFrameInputs(engine::ecs::World& world, const HostFrame&
   if (const auto* time = world.ctx().tryGet<engine::ecs::FrameTime>()) {
     in.timeSeconds = time->elapsedSeconds;
   }
+  // Changing weather: the clouds drift as far as its wind, blended, has carried them.
+  world.view<const CloudLayer, const CloudWeather>().each(
+      [&](const CloudLayer&, const CloudWeather& w) {
+        in.windDisplacementMetres = w.timeline.windDisplacementAt(in.timeSeconds);
+      });
   // The ground, when the scene's terrain casts shadows: mountains shade the clouds (and the
   // terrain itself, through the shadow map).
   if (const auto* ground = world.ctx().tryGet<render::TerrainHeightfield>()) {

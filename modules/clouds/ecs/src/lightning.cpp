@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "clouds/ecs/cloud_components.h"
 #include "engine/ecs/events.h"
 #include "engine/ecs/frame_time.h"
 
@@ -29,18 +30,25 @@ double uniform(std::uint64_t key, std::uint64_t stream) {
 }  // namespace
 
 std::vector<LightningStrike> strikesBetween(const LightningStorm& storm, double fromSeconds,
-                                            double toSeconds) {
+                                            double toSeconds,
+                                            const clouds::WeatherTimeline* weather) {
   std::vector<LightningStrike> strikes;
   if (!(toSeconds > fromSeconds) || !std::isfinite(fromSeconds) || !std::isfinite(toSeconds)) {
     return strikes;
   }
-  const double perSlot = std::clamp(storm.strikesPerMinute / 60.0 * kSlotSeconds, 0.0, 1.0);
+  const auto chance = [](double perMinute) {
+    return std::clamp(perMinute / 60.0 * kSlotSeconds, 0.0, 1.0);
+  };
+  const double stormChance = chance(storm.strikesPerMinute);
   const auto first = static_cast<std::int64_t>(std::floor(fromSeconds / kSlotSeconds));
   const auto last = static_cast<std::int64_t>(std::floor(toSeconds / kSlotSeconds));
   for (std::size_t c = 0; c < storm.cells.size(); ++c) {
     for (std::int64_t slot = first; slot <= last; ++slot) {
       const std::uint64_t key =
           mix(mix(storm.seed) ^ mix(std::uint64_t(c) + 1)) ^ std::uint64_t(slot);
+      const double perSlot =
+          weather ? chance(weather->stateAt(double(slot) * kSlotSeconds).lightningStrikesPerMinute)
+                  : stormChance;
       if (uniform(key, 0) >= perSlot) continue;
       LightningStrike s;
       s.startSeconds = (double(slot) + uniform(key, 1)) * kSlotSeconds;
@@ -216,8 +224,12 @@ bool installLightning(engine::ecs::World& world, engine::ecs::Scheduler& schedul
         auto& active = lightning.strikes;
         auto& sent = w.events<LightningStrike>();
         std::vector<LightningStrike> started;
+        // Changing weather sets the rate: storms start and stop striking with it.
+        const clouds::WeatherTimeline* weather = nullptr;
+        w.view<const CloudLayer, const CloudWeather>().each(
+            [&](const CloudLayer&, const CloudWeather& cw) { weather = &cw.timeline; });
         w.view<const LightningStorm>().each([&](const LightningStorm& s) {
-          const std::vector<LightningStrike> due = strikesBetween(s, from, now);
+          const std::vector<LightningStrike> due = strikesBetween(s, from, now, weather);
           started.insert(started.end(), due.begin(), due.end());
           for (const TriggerLightning& t : reader.read(w.events<TriggerLightning>())) {
             if (s.cells.empty()) continue;

@@ -577,6 +577,11 @@ struct FrameInputs {
   std::span<const HeroCloud> heroClouds;
 
   double timeSeconds = 0.0;  // >= 0; drives wind and weather evolution
+  // Where the wind has carried the clouds' noise by now (x, z metres, finite). None: timeSeconds
+  // x the settings' wind, which moves the noise by kilometres when a long-running host changes
+  // the wind; a host whose wind changes passes the integral of its wind instead
+  // (clouds/weather.h: WeatherTimeline::windDisplacementAt).
+  std::optional<glm::dvec2> windDisplacementMetres;
   // The host's frame number, increasing by one per frame: picks the per-frame slot
   // (frameIndex % maxFramesInFlight) and tells when replaced images may be freed.
   std::uint64_t frameIndex = 0;

@@ -160,6 +160,31 @@ TEST(CloudsEcsAdapter, TheInputsComeFromTheWorldAndTheHostFrame) {
       << "a teleport is a camera cut";
 }
 
+// Changing weather (CloudWeather) decides the layer's look at the clock, over the layer's other
+// settings, and the clouds drift as far as its wind has carried them.
+TEST(CloudsEcsAdapter, TheWeatherAtTheClockDecidesTheLook) {
+  AdapterWorld w;
+  const clouds::WeatherKey keys[] = {
+      {clouds::weatherPreset(clouds::WeatherPreset::Sparse), 10.0, 20.0},
+      {clouds::weatherPreset(clouds::WeatherPreset::Overcast), 60.0, 0.0}};
+  const clouds::WeatherTimeline weather = *clouds::WeatherTimeline::schedule(keys, false, nullptr);
+  w.world.view<clouds::ecs::CloudLayer>().each(
+      [&](engine::ecs::Entity layer, clouds::ecs::CloudLayer&) {
+        w.world.emplace<clouds::ecs::CloudWeather>(layer, clouds::ecs::CloudWeather{weather});
+      });
+  auto& time = w.world.ctx().get<engine::ecs::FrameTime>();
+  time.elapsedSeconds = 20.0;
+  const clouds::Settings settings = clouds::ecs::cloudSettings(w.world);
+  EXPECT_EQ(settings.coverage, weather.stateAt(20.0).coverage);
+  EXPECT_EQ(settings.skewMetres, weather.stateAt(20.0).skewMetres);
+  EXPECT_NE(settings.coverage, w.look.coverage);
+  EXPECT_EQ(settings.typeVariation, w.look.typeVariation) << "not a weather field: the layer's";
+  ASSERT_TRUE(clouds::ecs::currentWeather(w.world));
+  const clouds::FrameInputs in = clouds::ecs::cloudFrameInputs(w.world, hostFrame());
+  ASSERT_TRUE(in.windDisplacementMetres);
+  EXPECT_EQ(*in.windDisplacementMetres, weather.windDisplacementAt(20.0));
+}
+
 TEST(CloudsEcsAdapter, TheSunReachesTheLayerThroughTheAirAndTheHostsHazeIsPassedOn) {
   AdapterWorld w;
   engine::render::Sun s;

@@ -151,6 +151,48 @@ TEST(Lightning, TheSystemSendsEachStrikeOnceAtAnyStepAndUptime) {
   }
 }
 
+// Changing weather sets the rate: a storm strikes only while the state strikes (Sparse for a
+// minute, then 20 s into Stormy), as deterministically at any frame rate; the system follows it.
+TEST(Lightning, AStormStrikesWithTheWeather) {
+  const clouds::WeatherKey keys[] = {
+      {clouds::weatherPreset(clouds::WeatherPreset::Sparse), 60.0, 20.0},
+      {clouds::weatherPreset(clouds::WeatherPreset::Stormy), 120.0, 20.0}};
+  const clouds::WeatherTimeline weather = *clouds::WeatherTimeline::schedule(keys, true, nullptr);
+  const LightningStorm s = storm();
+  const auto strikes = clouds::ecs::strikesBetween(s, 0.0, 440.0, &weather);
+  ASSERT_GT(strikes.size(), 10u);
+  for (const LightningStrike& strike : strikes) {
+    const double inCycle = std::fmod(strike.startSeconds, 220.0);
+    EXPECT_GT(inCycle, 60.0) << "no strike while it is sparse";
+    EXPECT_LT(inCycle, 220.0);
+  }
+  std::vector<LightningStrike> framed;
+  for (double t = 0.0; t < 440.0; t += 1.0 / 30.0) {
+    const auto part = clouds::ecs::strikesBetween(s, t, std::min(t + 1.0 / 30.0, 440.0), &weather);
+    framed.insert(framed.end(), part.begin(), part.end());
+  }
+  ASSERT_EQ(framed.size(), strikes.size());
+  // The system takes the layer's weather.
+  StormWorld w;
+  w.world.view<clouds::ecs::CloudLayer>().each(
+      [&](engine::ecs::Entity layer, clouds::ecs::CloudLayer&) {
+        w.world.emplace<clouds::ecs::CloudWeather>(layer, clouds::ecs::CloudWeather{weather});
+      });
+  ASSERT_TRUE(clouds::ecs::installLightning(w.world, w.scheduler));
+  w.firstFrame(0.0);
+  std::size_t sent = w.sent().size();
+  for (int i = 0; i < 30 * 60; ++i) {
+    w.frame(1.0 / 30.0);
+    sent += w.sent().size();
+  }
+  EXPECT_EQ(sent, 0u) << "a minute of sparse weather";
+  for (int i = 0; i < 30 * 60; ++i) {
+    w.frame(1.0 / 30.0);
+    sent += w.sent().size();
+  }
+  EXPECT_GT(sent, 20u) << "two cells at the storm's 12 a minute";
+}
+
 // A paused clock (steps of 0) sends no strike, not even one starting at that very moment (once
 // it runs again, that one is sent once), and holds the strikes in progress and their flashes.
 TEST(Lightning, APausedClockHoldsTheStrikesAndTheirFlashes) {

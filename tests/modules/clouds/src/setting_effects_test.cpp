@@ -4,6 +4,7 @@
 // exactly when its row says so.
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <map>
 #include <regex>
 #include <set>
@@ -74,7 +75,8 @@ TEST(SettingEffects, ChangingANumericFieldResetsWhatItsRowSays) {
   for (const SettingEffect& row : settingEffects()) effects[row.field] = row.effects;
   std::size_t checked = 0;
   for (const clouds::Quality preset : {clouds::Quality::Low, clouds::Quality::High}) {
-    const clouds::Settings base = clouds::settingsFor(preset);
+    clouds::Settings base = clouds::settingsFor(preset);
+    base.windDirection = {1.0f, 1.0f};  // so that a change of one component turns it
     for (const SettingRange& range : settingRanges()) {
       const std::string field = range.field;
       const auto row = effects.find(field.substr(0, field.find('.')));  // windDirection.x
@@ -105,6 +107,35 @@ TEST(SettingEffects, AStepUnderOnePercentKeepsTheHistory) {
   EXPECT_TRUE(settingsDifferIn(kRemakesShadows, base, eased)) << "the layer moved: remade";
   eased.coverage *= 1.02f;
   EXPECT_TRUE(cloudsLookDifferent(base, eased));
+}
+
+// A weather state's field easing out of 0 (a storm's anvils growing) keeps the history as one
+// easing between large values does: its 1% is of its natural size (0.01 of a [0, 1] field).
+// The wind's direction is a direction: turning it counts, its length does not.
+TEST(SettingEffects, AWeatherFieldEasedOutOfZeroKeepsTheHistory) {
+  clouds::Settings base;
+  base.anvilBias = 0.0f;
+  clouds::Settings eased = base;
+  eased.anvilBias = 0.005f;
+  EXPECT_FALSE(cloudsLookDifferent(base, eased));
+  eased.anvilBias = 0.02f;
+  EXPECT_TRUE(cloudsLookDifferent(base, eased));
+  eased = base;
+  eased.layerBottomMetres = 1.0f;  // not a weather field: 1% of its value, as before
+  base.layerBottomMetres = 0.0f;
+  EXPECT_TRUE(cloudsLookDifferent(base, eased));
+  const auto turned = [&](float degrees) {
+    clouds::Settings t = base;
+    const float r = glm::radians(degrees);
+    t.windDirection = {std::cos(r), std::sin(r)};
+    return t;
+  };
+  base.windDirection = {1.0f, 0.0f};
+  EXPECT_FALSE(cloudsLookDifferent(base, turned(0.5f)));
+  EXPECT_TRUE(cloudsLookDifferent(base, turned(1.0f)));
+  clouds::Settings longer = base;
+  longer.windDirection = {3.0f, 0.0f};
+  EXPECT_FALSE(cloudsLookDifferent(base, longer)) << "the same direction";
 }
 
 TEST(SettingEffects, SwitchesAndChoicesResetOnAnyChange) {

@@ -8,11 +8,13 @@
 
 #include "cloud_shadow_march.h"
 #include "shadow_cascades.h"
+#include "wind_displacement.h"
 
 namespace {
 
 using clouds::detail::cascadeForTurn;
 using clouds::detail::ShadowCascades;
+using clouds::detail::windDisplacementOf;
 
 clouds::FrameInputs camera() {
   clouds::FrameInputs in;
@@ -203,11 +205,12 @@ TEST(ShadowCascades, SlicesKeepTheirFirstFramesPlacementUntilDone) {
   in.cameraPosition.x += 320.0;
   in.timeSeconds += 1.0 / 30.0;
   const clouds::ShadowMapParameters before =
-      cascades.parameters(in.cameraPosition, in.timeSeconds, s);
+      cascades.parameters(in.cameraPosition, windDisplacementOf(in, s), s);
   const clouds::detail::ShadowPlan first = cascades.plan(in, s);
   ASSERT_TRUE(first.slice && first.slice->first && first.slice->job.cascade == 0u);
   cascades.commit(first, in, s);
-  EXPECT_EQ(cascades.parameters(in.cameraPosition, in.timeSeconds, s).cascade[0], before.cascade[0])
+  EXPECT_EQ(cascades.parameters(in.cameraPosition, windDisplacementOf(in, s), s).cascade[0],
+            before.cascade[0])
       << "half a cascade is not seen";
 
   clouds::FrameInputs later = in;
@@ -225,8 +228,8 @@ TEST(ShadowCascades, SlicesKeepTheirFirstFramesPlacementUntilDone) {
   once.shadowFramesPerCascade = 1;
   once.shadowCascadesPerFrame = 4;
   frame(whole, in, once);
-  const auto made = cascades.parameters(in.cameraPosition, in.timeSeconds, s);
-  const auto expected = whole.parameters(in.cameraPosition, in.timeSeconds, once);
+  const auto made = cascades.parameters(in.cameraPosition, windDisplacementOf(in, s), s);
+  const auto expected = whole.parameters(in.cameraPosition, windDisplacementOf(in, once), once);
   for (int row = 0; row < 3; ++row) EXPECT_EQ(made.cascade[row], expected.cascade[row]);
   EXPECT_NE(made.cascade[0], before.cascade[0]) << "the finest cascade moved with the camera";
 }
@@ -305,8 +308,9 @@ TEST(ShadowCascades, ParametersCarryTheWindsDriftSinceACascadeWasMade) {
   s.windSpeedMetresPerSecond = 20.0f;
   clouds::FrameInputs in = camera();
   frame(cascades, in, s);
-  const clouds::ShadowMapParameters now = cascades.parameters(in.cameraPosition, 10.0, s);
-  const clouds::ShadowMapParameters later = cascades.parameters(in.cameraPosition, 12.0, s);
+  // The clouds carried 200 m and then 240 m along +x since time 0, when the map was made.
+  const clouds::ShadowMapParameters now = cascades.parameters(in.cameraPosition, {200.0, 0.0}, s);
+  const clouds::ShadowMapParameters later = cascades.parameters(in.cameraPosition, {240.0, 0.0}, s);
   for (int c = 0; c < 4; ++c) {
     const glm::vec4 u = now.cascade[3 * c];
     // 40 m of drift along +x, seen along U.

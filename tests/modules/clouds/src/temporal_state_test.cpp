@@ -381,11 +381,40 @@ TEST(TemporalState, AFrameIsStillOnlyWhenNothingMoved) {
   EXPECT_FALSE(run(state, later, s).still) << "the clouds drifted with the wind";
   clouds::Settings calm = s;
   calm.windSpeedMetresPerSecond = 0.0f;
+  EXPECT_FALSE(run(state, later, calm).still) << "the noise went back to where it was at 0 s";
   later.timeSeconds += 1.0 / 30.0;
   EXPECT_TRUE(run(state, later, calm).still) << "time passed, but nothing drifts";
   clouds::FrameInputs turned = later;
   turned.view = glm::rotate(in.view, 0.01f, glm::vec3(0.0f, 1.0f, 0.0f));
   EXPECT_FALSE(run(state, turned, calm).still) << "the view turned";
+}
+
+TEST(TemporalState, TheHistoryDriftsAsFarAsTheHostsWindCarriedTheClouds) {
+  // A host whose wind changes passes the integral of its wind (clouds/weather.h): the history
+  // drifts by its change, whatever the settings' wind and the time say.
+  const clouds::Settings s;  // wind 10 m/s along +x
+  clouds::FrameInputs in = groundCamera();
+  in.windDisplacementMetres = glm::dvec2(100.0, 0.0);
+  TemporalState state;
+  run(state, in, s);
+  in.timeSeconds += 1.0;
+  in.windDisplacementMetres = glm::dvec2(103.0, 4.0);
+  const TemporalFrame frame = run(state, in, s);
+  EXPECT_TRUE(frame.useHistory) << frame.resetReason;
+  EXPECT_EQ(frame.windDrift, glm::dvec2(3.0, 4.0));
+  // Time passes, the displacement stays: nothing drifted, whatever the wind's speed.
+  in.timeSeconds += 1.0;
+  const TemporalFrame calm = run(state, in, s);
+  EXPECT_EQ(calm.windDrift, glm::dvec2(0.0));
+  EXPECT_TRUE(calm.still);
+  // Without a displacement, the settings' wind times the time: at 3 s, 30 m along +x (a jump
+  // back from (103, 4) m, within the reset distance), then 5 m more in half a second.
+  clouds::FrameInputs legacy = in;
+  legacy.windDisplacementMetres.reset();
+  legacy.timeSeconds += 1.0;
+  EXPECT_EQ(run(state, legacy, s).windDrift, glm::dvec2(30.0 - 103.0, -4.0));
+  legacy.timeSeconds += 0.5;
+  EXPECT_EQ(run(state, legacy, s).windDrift, glm::dvec2(5.0, 0.0));
 }
 
 TEST(TemporalState, ThePreviousCameraIsTheOneTheHistoryWasMadeWith) {
@@ -443,6 +472,10 @@ TEST(TemporalState, EachReasonToDropTheHistoryIsDetected) {
        }},
       {"relighting",  // a lightning flash: the illuminance triples for a frame
        [](clouds::FrameInputs& in, VkExtent2D&) { in.sunIlluminance *= 3.0f; }},
+      {"wind jump",  // the host's wind displacement 5 km on in a frame: other clouds
+       [](clouds::FrameInputs& in, VkExtent2D&) {
+         in.windDisplacementMetres = {5000.0, 0.0};
+       }},
   };
   const clouds::Settings s;
   for (const Case& c : cases) {

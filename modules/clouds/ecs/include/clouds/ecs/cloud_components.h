@@ -11,6 +11,7 @@
 #include "clouds/clouds.h"
 #include "clouds/hero_cloud_life.h"
 #include "clouds/nvdf.h"
+#include "clouds/weather.h"
 
 namespace clouds::ecs {
 
@@ -23,6 +24,15 @@ struct CloudLayer {
   // clouds::HeroCloudLifecycle beside it makes one come and go; each frame draws the
   // kMaxHeroClouds nearest the camera. None: the module loads no atlas and runs no hero march.
   std::vector<std::shared_ptr<const clouds::NvdfVolume>> heroCloudAssets;
+};
+
+// Beside a CloudLayer: weather that changes on FrameTime's clock (clouds/weather.h). Each
+// frame the layer renders the timeline's state over its settings (coverage, type, density,
+// anvils, erosion, wind and skew), the clouds drift as far as its wind has carried them, and a
+// LightningStorm strikes at the state's rate. Without one the weather is the layer's settings.
+struct CloudWeather {
+  clouds::WeatherTimeline timeline;
+  std::vector<std::string> keyNames;  // what each of its keys is called, for HUDs and logs
 };
 
 // A preset's march precision knobs tuned by hand (a player's panel, an engine's own tuning):

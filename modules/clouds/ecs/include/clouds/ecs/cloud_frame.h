@@ -7,10 +7,12 @@
 #include <vulkan/vulkan.h>
 
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "clouds/clouds.h"
+#include "clouds/weather.h"
 #include "engine/ecs/world.h"
 
 namespace clouds::ecs {
@@ -34,6 +36,9 @@ struct HostFrame {
   float hazeMiePhaseG = 0.8f;
   std::uint64_t frameIndex = 0;
 };
+
+// The weather now: the CloudWeather's state at FrameTime's clock, if the layer has one.
+std::optional<clouds::WeatherState> currentWeather(engine::ecs::World& world);
 
 // The settings the camera renders the layer with: the layer's look under the camera's
 // CloudQuality preset and knobs, or the layer's settings as they are without one.

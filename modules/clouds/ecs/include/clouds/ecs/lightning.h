@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "clouds/clouds.h"
+#include "clouds/weather.h"
 #include "engine/ecs/scheduler.h"
 #include "engine/ecs/world.h"
 
@@ -78,9 +79,12 @@ struct ActiveLightning {
 // function of the storm (its seed) and the interval, so reruns and any frame rate give the
 // same strikes. Each cell's clock is cut into 0.1 s slots; a hash of (seed, cell, slot)
 // decides whether a strike starts in the slot (with the rate's probability) and when, how
-// strong, which kind and how many strokes.
+// strong, which kind and how many strokes. With `weather` (changing weather: CloudWeather) the
+// rate in each slot is its state's at the slot's start instead of the storm's, so a storm
+// starts and stops striking with the weather, as deterministically.
 std::vector<LightningStrike> strikesBetween(const LightningStorm& storm, double fromSeconds,
-                                            double toSeconds);
+                                            double toSeconds,
+                                            const clouds::WeatherTimeline* weather = nullptr);
 
 // A strike's brightness at `seconds` in [0, 1]: its return strokes, each a sharp rise and a
 // 25 ms decay, 50 ms apart, the later ones weaker; 0 before it starts and after it ends.
