@@ -2,7 +2,8 @@
 // over mountains, terrain hiding clouds, a cloud in front of a mountain, above the layer,
 // inside a cloud, noon, sunset, cumulus overhead, towards the sun, an overcast stratus deck,
 // a ridge shading clouds at sunset, cloud shadows on the plains at noon, flying inside the
-// layer at High and Medium, hero clouds outside, inside, at sunset and in a storm: the review
+// layer at High and Medium, hero clouds outside, inside, at sunset and in a storm, the default
+// view under each built-in weather state: the review
 // set's views among them) and each is compared with its
 // committed golden image by the tolerance tree in golden_compare.h. Every run writes the actual
 // images to build/golden_output/ (what tools/promote_goldens.sh copies into tests/goldens/); a
@@ -58,6 +59,9 @@ std::vector<GoldenRun> goldenRuns() {
       // Hero clouds (the voxel clouds): outside at noon, inside one, at sunset, and the
       // cumulonimbus at dusk, calm and lit by a scripted strike.
       {tests / "scenes/hero_golden.json", tests / "scripts/golden_hero_views.json"},
+      // The default view under each built-in weather state (the storm's between strikes),
+      // switched at once, 23 frames each.
+      {tests / "scenes/weather_states.json", tests / "scripts/golden_weather_views.json"},
       // Flying inside a tall layer over the ground, at High and Medium: frames rebuilt from
       // their own rays, without a pattern of them.
       {tests / "scenes/inside_layer_over_terrain.json",

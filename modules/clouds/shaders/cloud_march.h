@@ -159,9 +159,10 @@ struct FieldSample {
 
 FX_INLINE vec3 noisePosition(vec3 flatOffset, float altitude, float heightFraction,
                              IN(CloudUniforms) u) {
-  // Skew the shape downwind with height (Nubis: clouds lean with the wind as they rise).
+  // Skew the shape downwind with height (Nubis: clouds lean with the wind as they rise): the
+  // noise a base shows at p, a top shows downwind of it, so the top reads it from upwind.
   const vec2 skew = u.windDirection * (u.skewMetres * saturate(heightFraction));
-  return vec3(flatOffset.x + skew.x, altitude, flatOffset.z + skew.y);
+  return vec3(flatOffset.x - skew.x, altitude, flatOffset.z - skew.y);
 }
 
 // The layer's field (the vertical-profile model, cloud_density.h) at a camera-relative (x, z)

@@ -70,8 +70,9 @@ void setLight(shader::CloudUniforms& u, const FrameInputs& in, const Settings& s
 void setNoisePlacement(shader::CloudUniforms& u, const FrameInputs& in, const Settings& s) {
   const glm::dvec2 wind = windDirectionOf(s);
   const glm::dvec2 camera(in.cameraPosition.x, in.cameraPosition.z);
-  // The noise moves with the wind; the weather map (coverage) stays where it is.
-  const glm::dvec2 scrolled = camera + windDisplacementOf(in, s);
+  // The noise moves with the wind (a feature read at camera + offset + p lies at p: it is
+  // carried downwind as the offset falls); the weather map (coverage) stays where it is.
+  const glm::dvec2 scrolled = camera - windDisplacementOf(in, s);
   const glm::vec2 shape = offsetInTile(scrolled, s.shapeTileMetres);
   const glm::vec2 detail = offsetInTile(scrolled, s.detailTileMetres);
   u.shapeOffsetMetres = glm::vec3(shape.x, 0.0f, shape.y);

@@ -44,8 +44,8 @@ WeatherState makeState(float coverage, float type, float density, float anvil, f
 // cumulus and stratocumulus sky; a low, grey stratus deck with little relief; towering
 // cumulonimbus with anvils, dense enough to go dark, sheared by a stronger wind, striking.
 const Preset kPresets[] = {
-    {WeatherPreset::Sparse, "sparse", makeState(0.45f, 0.9f, 1.0f, 0.0f, 0.5f, 8.0f, 400.0f, 0)},
-    {WeatherPreset::Cloudy, "cloudy", makeState(0.58f, 0.7f, 1.0f, 0.0f, 0.45f, 12.0f, 500.0f, 0)},
+    {WeatherPreset::Sparse, "sparse", makeState(0.5f, 0.9f, 1.0f, 0.0f, 0.5f, 8.0f, 400.0f, 0)},
+    {WeatherPreset::Cloudy, "cloudy", makeState(0.6f, 0.7f, 1.0f, 0.0f, 0.45f, 12.0f, 500.0f, 0)},
     {WeatherPreset::Overcast, "overcast",
      makeState(0.9f, 0.15f, 1.5f, 0.0f, 0.3f, 15.0f, 300.0f, 0)},
     {WeatherPreset::Stormy, "stormy",

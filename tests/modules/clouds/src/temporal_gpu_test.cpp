@@ -416,7 +416,10 @@ TEST_F(CloudTemporal, MovingInsideTheLayerTheHistoryIsReprojected) {
 // through dense layer (coverage 0.7) 42.9 dB against 41.6 (42.6 without the resolve's history,
 // each frame's near field alone; 39.6 with the near field marched but not laid over); through
 // sparse layer (0.5), next to no cloud within 200 m, 33.9 against 33.9 (33.2 with the far part
-// starting at the split with a coarse step). The march is pinned to High's when this was
+// starting at the split with a coarse step). Since the wind carries the noise downwind (it used
+// to carry it upwind, against the reprojection) other clouds stand along the flight: 51.2
+// against 50.0 dense, 33.7 against 34.2 sparse, so "as accurate" is held to 0.5 dB there. The
+// march is pinned to High's when this was
 // measured (60 m steps growing 0.2% of the distance, 96 of them): with the ladder's finer High
 // (35 m, 0.15%, 168) one march is more accurate and the near field gains 0.96 dB (42.66
 // against 41.70).
@@ -468,14 +471,16 @@ TEST_F(CloudTemporal, FlyingThroughTheLayerTheNearFieldIsMarchedApart) {
   const Flight dense = fly(0.7f);
   EXPECT_GT(dense.splitPsnr, dense.wholePsnr + 1.0);
   const Flight sparse = fly(0.5f);
-  EXPECT_GT(sparse.splitPsnr, sparse.wholePsnr - 0.2);
+  EXPECT_GT(sparse.splitPsnr, sparse.wholePsnr - 0.5);
 }
 
 // A turning camera (0.13 degrees a frame, a sixth of a trace pixel at 160x90) reads its history
 // a fraction of a pixel off at every frame, up to 16 times between refreshes: it loses some
 // accuracy against a camera held still (whose history averages more rays), but resampled
 // bilinearly it also blurred. Measured: 4.7 dB below the held camera with Catmull-Rom
-// (catmullRomWeights), 5.3 dB with bilinear weights. Without edge rays, which sharpen the
+// (catmullRomWeights), 5.3 dB with bilinear weights; 5.2 with Catmull-Rom since the wind carries
+// the noise downwind, the way the history is reprojected (other clouds in view, 37.2 against a
+// held camera's 42.4), so the bound is 5.5 dB. Without edge rays, which sharpen the
 // held camera's silhouettes more than the turning one's (their own samples are resampled with
 // the history): this measures the history's resampling.
 TEST_F(CloudTemporal, ATurningCameraKeepsItsHistorySharp) {
@@ -497,7 +502,7 @@ TEST_F(CloudTemporal, ATurningCameraKeepsItsHistorySharp) {
   const double turnedPsnr = psnrAgainst(turned, reference, view);
   const double stillPsnr = psnrAgainst(still, reference, view);
   std::printf("turning: %.2f dB, held still: %.2f dB\n", turnedPsnr, stillPsnr);
-  EXPECT_GT(turnedPsnr, stillPsnr - 5.0);
+  EXPECT_GT(turnedPsnr, stillPsnr - 5.5);
 }
 
 }  // namespace
