@@ -27,23 +27,24 @@ bool differByOnePercent(const T& x, const T& y, float) {
   return !(x == y);
 }
 
-template <auto Field, float Scale>
+template <auto Field, int Scale>
 bool looksDifferent(const Settings& a, const Settings& b) {
-  return differByOnePercent(a.*Field, b.*Field, Scale);
+  return differByOnePercent(a.*Field, b.*Field, static_cast<float>(Scale));
 }
 template <auto Field>
 bool differs(const Settings& a, const Settings& b) {
   return !(a.*Field == b.*Field);
 }
 
-template <auto Field, float Scale = 0.0f>
+template <auto Field, int Scale = 0>
 constexpr SettingEffect row(const char* name, std::uint8_t effects, const char* whyKept) {
   return {name, effects, &looksDifferent<Field, Scale>, &differs<Field>, whyKept};
 }
 
 // One row; the field's name is written once.
 #define CLOUDS_SETTING(name, effects, whyKept) row<&Settings::name>(#name, effects, whyKept)
-// A row whose floats' 1% is at least 1% of `scale` (a weather state's field: clouds/weather.h).
+// A row whose floats' 1% is at least 1% of `scale`, a whole number in the field's unit (a
+// weather state's field: clouds/weather.h).
 #define CLOUDS_WEATHER_SETTING(name, effects, scale) \
   row<&Settings::name, scale>(#name, effects, kNoReason)
 
@@ -58,8 +59,8 @@ constexpr SettingEffect kEffects[] = {
     CLOUDS_SETTING(layerBottomMetres, kLook | kShadow, kNoReason),
     CLOUDS_SETTING(layerTopMetres, kLook | kShadow, kNoReason),
     CLOUDS_SETTING(planetRadiusMetres, kLook, kNoReason),
-    CLOUDS_WEATHER_SETTING(coverage, kLook, 1.0f),
-    CLOUDS_WEATHER_SETTING(cloudType, kLook, 1.0f),
+    CLOUDS_WEATHER_SETTING(coverage, kLook, 1),
+    CLOUDS_WEATHER_SETTING(cloudType, kLook, 1),
     CLOUDS_SETTING(typeVariation, kLook, kNoReason),
     CLOUDS_SETTING(densityVariation, kLook, kNoReason),
     CLOUDS_SETTING(weatherTileMetres, kLook, kNoReason),
@@ -68,18 +69,18 @@ constexpr SettingEffect kEffects[] = {
     CLOUDS_SETTING(weatherUpdateSeconds, kKeepsState,
                    "a new period's map blends in over the period: the history follows it"),
     // Density and shape.
-    CLOUDS_WEATHER_SETTING(densityMultiplier, kLook, 1.0f),
+    CLOUDS_WEATHER_SETTING(densityMultiplier, kLook, 1),
     CLOUDS_SETTING(extinctionPerMetre, kLook, kNoReason),
-    CLOUDS_WEATHER_SETTING(anvilBias, kLook, 1.0f),
+    CLOUDS_WEATHER_SETTING(anvilBias, kLook, 1),
     CLOUDS_SETTING(shapeTileMetres, kLook, kNoReason),
     CLOUDS_SETTING(detailTileMetres, kLook, kNoReason),
-    CLOUDS_WEATHER_SETTING(detailErosion, kLook, 1.0f),
+    CLOUDS_WEATHER_SETTING(detailErosion, kLook, 1),
     CLOUDS_SETTING(detailDistanceMetres, kLook, kNoReason),
     CLOUDS_SETTING(curlTileMetres, kLook, kNoReason),
     CLOUDS_SETTING(curlStrengthMetres, kLook, kNoReason),
-    CLOUDS_WEATHER_SETTING(windDirection, kLook, 0.0f),
-    CLOUDS_WEATHER_SETTING(windSpeedMetresPerSecond, kLook, 10.0f),
-    CLOUDS_WEATHER_SETTING(skewMetres, kLook, 100.0f),
+    CLOUDS_WEATHER_SETTING(windDirection, kLook, 0),
+    CLOUDS_WEATHER_SETTING(windSpeedMetresPerSecond, kLook, 10),
+    CLOUDS_WEATHER_SETTING(skewMetres, kLook, 100),
     // Lighting.
     CLOUDS_SETTING(albedo, kLook, kNoReason),
     CLOUDS_SETTING(phaseForwardG, kLook, kNoReason),
