@@ -57,6 +57,7 @@ TemporalFrame TemporalState::plan(const FrameInputs& in, const Settings& s, VkEx
   frame.nearField =
       nearField > 0.0 && (nearHeroCloud || (altitude > s.layerBottomMetres - nearField &&
                                             altitude < s.layerTopMetres + nearField));
+  const glm::dvec2 windDisplacement = windDisplacementOf(in, s);
   if (!havePrevious_) {
     frame.resetReason = forgotten_;
   } else if (in.reset) {
@@ -67,8 +68,7 @@ TemporalFrame TemporalState::plan(const FrameInputs& in, const Settings& s, VkEx
     frame.resetReason = "resize";
   } else if (glm::length(in.cameraPosition - cameraPosition_) > s.historyResetDistanceMetres) {
     frame.resetReason = "camera jump";
-  } else if (glm::length(windDisplacementOf(in, s) - windDisplacement_) >
-             s.historyResetDistanceMetres) {
+  } else if (glm::length(windDisplacement - windDisplacement_) > s.historyResetDistanceMetres) {
     // The host's wind displacement jumped (a new clock, or a wind changed without its
     // integral): the noise moved against the weather map, and the history holds other clouds.
     frame.resetReason = "wind jump";
@@ -119,7 +119,7 @@ TemporalFrame TemporalState::plan(const FrameInputs& in, const Settings& s, VkEx
   frame.upsampleTemporally = upsamplesTemporally(s);
   frame.useOutputHistory = frame.upsampleTemporally && frame.useHistory && wroteOutputHistory_;
   frame.cameraDelta = havePrevious_ ? in.cameraPosition - cameraPosition_ : glm::dvec3(0.0);
-  frame.windDrift = havePrevious_ ? windDisplacementOf(in, s) - windDisplacement_ : glm::dvec2(0.0);
+  frame.windDrift = havePrevious_ ? windDisplacement - windDisplacement_ : glm::dvec2(0.0);
   const bool noDrift = frame.windDrift == glm::dvec2(0.0);
   frame.previousView = havePrevious_ ? view_ : in.view;
   frame.previousProjection = havePrevious_ ? projection_ : in.projection;

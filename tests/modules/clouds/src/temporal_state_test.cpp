@@ -417,6 +417,37 @@ TEST(TemporalState, TheHistoryDriftsAsFarAsTheHostsWindCarriedTheClouds) {
   EXPECT_EQ(run(state, legacy, s).windDrift, glm::dvec2(5.0, 0.0));
 }
 
+// A look that eases is marched ahead of itself by the frames the history lags it: at Medium
+// (4 x 4 tiles, fresh weight 0.6) 0.4 / 0.6 x 16 + 7.5 = 18.2 frames of its change since the
+// history's frame; the wind is not led (the reprojection follows it); nothing is led without a
+// change, after a reset, or with the lead off.
+TEST(TemporalState, AnEasingLookIsMarchedAheadOfItsHistory) {
+  const clouds::Settings medium = clouds::settingsFor(clouds::Quality::Medium);
+  TemporalState state;
+  run(state, groundCamera(), medium, 3);
+  clouds::Settings eased = medium;
+  eased.coverage += 0.002f;
+  eased.windSpeedMetresPerSecond += 0.05f;
+  const TemporalFrame frame = state.plan(groundCamera(), eased, kTrace);
+  ASSERT_TRUE(frame.useHistory) << frame.resetReason;
+  EXPECT_TRUE(frame.cloudsChanging);
+  EXPECT_NEAR(frame.lookLeadFrames, 0.4f / 0.6f * 16.0f + 7.5f, 1e-4f);
+  const clouds::Settings marched = state.marchedSettings(eased, frame);
+  EXPECT_NEAR(marched.coverage, eased.coverage + frame.lookLeadFrames * 0.002f, 1e-5f);
+  EXPECT_EQ(marched.windSpeedMetresPerSecond, eased.windSpeedMetresPerSecond);
+  EXPECT_EQ(state.marchedSettings(medium, state.plan(groundCamera(), medium, kTrace)).coverage,
+            medium.coverage)
+      << "nothing changed";
+  clouds::Settings jumped = medium;
+  jumped.coverage += 0.2f;
+  EXPECT_EQ(state.marchedSettings(jumped, state.plan(groundCamera(), jumped, kTrace)).coverage,
+            jumped.coverage)
+      << "a change that drops the history is not led";
+  state.leadTheLook(false);
+  EXPECT_EQ(state.marchedSettings(eased, state.plan(groundCamera(), eased, kTrace)).coverage,
+            eased.coverage);
+}
+
 TEST(TemporalState, ThePreviousCameraIsTheOneTheHistoryWasMadeWith) {
   // The host passes only this frame's camera: the history remembers its own.
   const clouds::Settings s;
