@@ -265,7 +265,20 @@ TEST(HeadlessCapture, EachSceneGetsOnlyThePassesAndPipelinesItNeeds) {
     EXPECT_NE(out.find(c.passes), std::string::npos) << c.scene << "\n" << out;
     EXPECT_NE(out.find(c.pipelines), std::string::npos) << c.scene << "\n" << out;
     EXPECT_NE(out.find(c.modules), std::string::npos) << c.scene << "\n" << out;
+    // Only a scene with a schedule has weather to run.
+    EXPECT_NE(out.find(R"("weather": [])"), std::string::npos) << c.scene << "\n" << out;
   }
+  // Changing weather: its schedule, and the default scene's passes, none more.
+  const std::string changing =
+      runSampleOutput("--headless --describe --width 64 --height 36 --scene " +
+                      std::string(SAMPLE_ASSET_DIR) + "/scenes/changing_weather.json");
+  EXPECT_NE(changing.find(R"("weather": ["sparse", "cloudy", "squall", "stormy", "overcast"])"),
+            std::string::npos)
+      << changing;
+  EXPECT_NE(changing.find(R"("passes": ["cloud shadows", "terrain sunlight", "atmosphere", )"
+                          R"("scene", "clouds", "clouds composite", "tonemap", "capture"])"),
+            std::string::npos)
+      << changing;
 }
 
 // What a shadow did to a frame: the pixels of `shadowed` darker than `darkerBelow` times their
