@@ -13,6 +13,7 @@
 #include "cloud_hero.h"
 #include "cloud_noise.h"
 #include "clouds/nvdf.h"
+#include "clouds/procedural_textures.h"
 #include "hero_cloud_scenes.h"
 #include "seam_statistics.h"
 
@@ -97,6 +98,35 @@ TEST_F(HeroNoise, EachLevelIsTheBoxMeanOfTheLevelBelow) {
     }
   }
   EXPECT_LE(worst, 0.5 / 255.0 + 1e-9) << "a level is not the mean of the one below";
+}
+
+// The standalone generator's hero noise (clouds/procedural_textures.h) rounds to the GPU's
+// bytes: within one step, off by one in at most one texel in a thousand (float evaluation order).
+TEST_F(HeroNoise, IsTheStandaloneGeneratorsNoise) {
+  const std::vector<std::uint8_t> chain = generatedNoise(harness());
+  int worst = 0;
+  std::size_t differing = 0;
+  for (int z = 0; z < kN; ++z) {
+    const std::vector<glm::vec4> slice =
+        clouds::heroNoiseSlice(clouds::tools::HarnessOptions{}.noiseSeed, z);
+    for (int y = 0; y < kN; ++y) {
+      for (int x = 0; x < kN; ++x) {
+        const glm::ivec3 p = clouds::shader::heroNoiseTexelAddress(0, {x, y, z});
+        const std::size_t at = (std::size_t(p.z) * kN + std::size_t(p.y)) * kN + std::size_t(p.x);
+        for (int c = 0; c < 4; ++c) {
+          const int steps =
+              std::abs(int(chain[4 * at + std::size_t(c)]) -
+                       int(clouds::storedUnorm8(slice[std::size_t(y) * kN + std::size_t(x)][c])));
+          worst = std::max(worst, steps);
+          differing += steps != 0 ? 1u : 0u;
+        }
+      }
+    }
+  }
+  std::printf("%zu of %d values differ, by at most %d step(s)\n", differing, 4 * kN * kN * kN,
+              worst);
+  EXPECT_LE(worst, 1);
+  EXPECT_LE(double(differing), 1e-3 * 4.0 * kN * kN * kN);
 }
 
 // The seam statistic flags an alligator noise whose lattice does not wrap with the texture.
