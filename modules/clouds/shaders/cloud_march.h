@@ -157,11 +157,31 @@ struct FieldSample {
   float sigmaT;   // extinction (1/m)
 };
 
+// How far downwind the shape at `heightFraction` leans from its base (x, z metres): skewMetres
+// times the integral, from the base up, of the wind's direction, which turns by
+// windShearRadians from the base to the top. So the lean's slope at each height is the wind's
+// direction there, and a top leans the way the upper wind blows (Schneider 2017: anvils skewed
+// by their own wind). R(a), counter-clockwise seen from above, takes d to
+// cos(a) d + sin(a) (d_z, -d_x); over heights [0, h] that integrates to along d + across (d_z,
+// -d_x).
+FX_INLINE vec2 skewLean(float heightFraction, IN(CloudUniforms) u) {
+  const float h = saturate(heightFraction);
+  const float shear = u.windShearRadians;
+  float along = h;                      // no shear: a straight lean
+  float across = 0.5f * shear * h * h;  // a slight one: the series (no 0 / 0)
+  if (abs(shear) > 1e-3f) {
+    along = sin(shear * h) / shear;
+    across = (1.0f - cos(shear * h)) / shear;
+  }
+  const vec2 d = u.windDirection;
+  return u.skewMetres * (along * d + across * vec2(d.y, -d.x));
+}
+
 FX_INLINE vec3 noisePosition(vec3 flatOffset, float altitude, float heightFraction,
                              IN(CloudUniforms) u) {
   // Skew the shape downwind with height (Nubis: clouds lean with the wind as they rise): the
   // noise a base shows at p, a top shows downwind of it, so the top reads it from upwind.
-  const vec2 skew = u.windDirection * (u.skewMetres * saturate(heightFraction));
+  const vec2 skew = skewLean(heightFraction, u);
   return vec3(flatOffset.x - skew.x, altitude, flatOffset.z - skew.y);
 }
 

@@ -358,6 +358,13 @@ struct CloudUniforms {
   // Edge rays: where each sits in its trace pixel (as subpixelOffset for this frame's other
   // rays; xy the first, zw the second).
   vec4 edgeSubpixelOffsets;
+
+  // The wind's turn from the layer's base to its top (radians, counter-clockwise seen from
+  // above; Settings::windShearDegrees): the skew follows it (noisePosition()).
+  float windShearRadians;
+  float padding0;
+  float padding1;
+  float padding2;
 };
 
 // Push constants of sky_ambient.comp: which sources the frame has, and the ground's albedo.
@@ -654,7 +661,8 @@ CLOUDS_ASSERT_OFFSET(CloudUniforms, edgeRayStartOffsets, 600);
 CLOUDS_ASSERT_OFFSET(CloudUniforms, phaseNormaliserInverseLow, 608);
 CLOUDS_ASSERT_OFFSET(CloudUniforms, phaseNormaliserInverseHigh, 624);
 CLOUDS_ASSERT_OFFSET(CloudUniforms, edgeSubpixelOffsets, 640);
-static_assert(sizeof(clouds::shader::CloudUniforms) == 656);
+CLOUDS_ASSERT_OFFSET(CloudUniforms, windShearRadians, 656);
+static_assert(sizeof(clouds::shader::CloudUniforms) == 672);
 static_assert(sizeof(clouds::shader::NoiseConstants) == 16);
 static_assert(sizeof(clouds::shader::NoiseMipConstants) == 16);
 static_assert(sizeof(clouds::shader::AmbientConstants) == 32);

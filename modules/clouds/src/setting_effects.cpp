@@ -81,6 +81,7 @@ constexpr SettingEffect kEffects[] = {
     CLOUDS_WEATHER_SETTING(windDirection, kLook, 0),
     CLOUDS_WEATHER_SETTING(windSpeedMetresPerSecond, kLook, 10),
     CLOUDS_WEATHER_SETTING(skewMetres, kLook, 100),
+    CLOUDS_WEATHER_SETTING(windShearDegrees, kLook, 60),
     // Lighting.
     CLOUDS_SETTING(albedo, kLook, kNoReason),
     CLOUDS_SETTING(phaseForwardG, kLook, kNoReason),

@@ -73,6 +73,7 @@ std::span<const SettingRange> settingRanges() {
       CLOUDS_RANGE(windDirection.y, -1e6, 1e6),
       CLOUDS_RANGE(windSpeedMetresPerSecond, 0.0, 500.0),
       CLOUDS_RANGE(skewMetres, 0.0, 20000.0),
+      CLOUDS_RANGE(windShearDegrees, -180.0, 180.0),
       CLOUDS_RANGE(albedo, 0.0, 1.0),
       CLOUDS_RANGE(phaseForwardG, -1.0, 1.0),
       CLOUDS_RANGE(phaseBackwardG, -1.0, 1.0),

@@ -152,6 +152,7 @@ Settings TemporalState::marchedSettings(const Settings& s, const TemporalFrame& 
   lead(&Settings::anvilBias, 0.0f, 1.0f);
   lead(&Settings::detailErosion, 0.0f, 1.0f);
   lead(&Settings::skewMetres, 0.0f, 20000.0f);
+  lead(&Settings::windShearDegrees, -180.0f, 180.0f);
   return led;
 }
 

@@ -86,6 +86,7 @@ void setNoisePlacement(shader::CloudUniforms& u, const FrameInputs& in, const Se
   u.curlStrengthMetres = s.curlStrengthMetres;
   u.windDirection = glm::vec2(wind);
   u.skewMetres = s.skewMetres;
+  u.windShearRadians = glm::radians(s.windShearDegrees);
 }
 
 // The noise's level of detail: the texel width (m) whose mip level a sample reads, per metre

@@ -27,7 +27,7 @@ struct Preset {
 };
 
 WeatherState makeState(float coverage, float type, float density, float anvil, float erosion,
-                       float windSpeed, float skew, float strikes) {
+                       float windSpeed, float skew, float shear, float strikes) {
   WeatherState s;
   s.coverage = coverage;
   s.cloudType = type;
@@ -36,20 +36,24 @@ WeatherState makeState(float coverage, float type, float density, float anvil, f
   s.detailErosion = erosion;
   s.windSpeedMetresPerSecond = windSpeed;
   s.skewMetres = skew;
+  s.windShearDegrees = shear;
   s.lightningStrikesPerMinute = strikes;
   return s;
 }
 
 // HDRP's four, in Nubis's terms: fair-weather cumulus scattered over a clear sky; a broken
 // cumulus and stratocumulus sky; a low, grey stratus deck with little relief; towering
-// cumulonimbus with anvils, dense enough to go dark, sheared by a stronger wind, striking.
+// cumulonimbus with anvils, dense enough to go dark, leaning in a stronger wind that veers
+// with height (its tops lean the way the upper wind blows), striking.
 const Preset kPresets[] = {
-    {WeatherPreset::Sparse, "sparse", makeState(0.5f, 0.9f, 1.0f, 0.0f, 0.5f, 8.0f, 400.0f, 0)},
-    {WeatherPreset::Cloudy, "cloudy", makeState(0.6f, 0.7f, 1.0f, 0.0f, 0.45f, 12.0f, 500.0f, 0)},
+    {WeatherPreset::Sparse, "sparse",
+     makeState(0.5f, 0.9f, 1.0f, 0.0f, 0.5f, 8.0f, 400.0f, 0.0f, 0)},
+    {WeatherPreset::Cloudy, "cloudy",
+     makeState(0.6f, 0.7f, 1.0f, 0.0f, 0.45f, 12.0f, 500.0f, 0.0f, 0)},
     {WeatherPreset::Overcast, "overcast",
-     makeState(0.9f, 0.15f, 1.5f, 0.0f, 0.3f, 15.0f, 300.0f, 0)},
+     makeState(0.9f, 0.15f, 1.5f, 0.0f, 0.3f, 15.0f, 300.0f, 0.0f, 0)},
     {WeatherPreset::Stormy, "stormy",
-     makeState(0.65f, 1.0f, 4.0f, 1.0f, 0.35f, 18.0f, 1500.0f, 12)},
+     makeState(0.65f, 1.0f, 4.0f, 1.0f, 0.35f, 18.0f, 1500.0f, 40.0f, 12)},
 };
 
 const Preset& presetOf(WeatherPreset preset) {
@@ -100,6 +104,7 @@ WeatherState weatherOf(const Settings& s) {
   w.windDirection = s.windDirection;
   w.windSpeedMetresPerSecond = s.windSpeedMetresPerSecond;
   w.skewMetres = s.skewMetres;
+  w.windShearDegrees = s.windShearDegrees;
   return w;
 }
 
@@ -112,6 +117,7 @@ Settings withWeather(Settings s, const WeatherState& w) {
   s.windDirection = w.windDirection;
   s.windSpeedMetresPerSecond = w.windSpeedMetresPerSecond;
   s.skewMetres = w.skewMetres;
+  s.windShearDegrees = w.windShearDegrees;
   return s;
 }
 
@@ -147,6 +153,7 @@ WeatherState blendWeather(const WeatherState& a, const WeatherState& b, float t)
   w.anvilBias = mix(a.anvilBias, b.anvilBias);
   w.detailErosion = mix(a.detailErosion, b.detailErosion);
   w.skewMetres = mix(a.skewMetres, b.skewMetres);
+  w.windShearDegrees = mix(a.windShearDegrees, b.windShearDegrees);
   w.lightningStrikesPerMinute = mix(a.lightningStrikesPerMinute, b.lightningStrikesPerMinute);
   // The wind as a velocity, so that the displacement (its integral) has a closed form.
   const glm::dvec2 velocity = glm::mix(windVelocity(a), windVelocity(b), double(t));

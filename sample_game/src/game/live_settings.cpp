@@ -135,10 +135,10 @@ void setCompensation(World& world, SceneDescription& s, double ev) {
   world.ctx().get<engine::render::Exposure>().compensationEv = float(ev);
 }
 
-const std::array<LiveSetting, 21>& table() {
+const std::array<LiveSetting, 22>& table() {
   using S = clouds::Settings;
   using K = clouds::ecs::CloudQualityKnobs;
-  static const std::array<LiveSetting, 21> kSettings = {
+  static const std::array<LiveSetting, 22> kSettings = {
       cloudSetting<&S::coverage>("clouds.coverage", "coverage", 0.0, 1.0),
       cloudSetting<&S::cloudType>("clouds.cloudType", "cloud type", 0.0, 1.0),
       cloudSetting<&S::densityMultiplier>("clouds.densityMultiplier", "density", 0.0, 5.0),
@@ -150,6 +150,7 @@ const std::array<LiveSetting, 21>& table() {
                   [](const SceneDescription& s) { return s.clouds->windDirectionDegrees; },
                   setWindDirection},
       cloudSetting<&S::skewMetres>("clouds.wind.skewMetres", "skew (m)", 0.0, 5000.0),
+      cloudSetting<&S::windShearDegrees>("clouds.wind.shearDegrees", "shear (deg)", -180.0, 180.0),
       cloudSetting<&S::sunStrength>("clouds.lighting.sunStrength", "sunlight", 0.0, 5.0),
       cloudSetting<&S::ambientStrength>("clouds.lighting.ambientStrength", "sky light", 0.0, 5.0),
       cloudSetting<&S::silverIntensity>("clouds.lighting.silverIntensity", "silver lining", 0.0,

@@ -138,6 +138,7 @@ CloudDescription readClouds(const JsonReader& r, const std::filesystem::path& sc
     s.windSpeedMetresPerSecond =
         float(wind.number("speedMetresPerSecond", 0.0, 500.0, s.windSpeedMetresPerSecond));
     s.skewMetres = float(wind.number("skewMetres", 0.0, 20000.0, s.skewMetres));
+    s.windShearDegrees = float(wind.number("shearDegrees", -180.0, 180.0, s.windShearDegrees));
     wind.finish();
   }
   if (r.has("lighting")) {

@@ -49,6 +49,7 @@ NamedWeatherState readState(const JsonReader& r, const std::string& name,
     w.windSpeedMetresPerSecond =
         float(wind.number("speedMetresPerSecond", 0.0, 500.0, w.windSpeedMetresPerSecond));
     w.skewMetres = float(wind.number("skewMetres", 0.0, 20000.0, w.skewMetres));
+    w.windShearDegrees = float(wind.number("shearDegrees", -180.0, 180.0, w.windShearDegrees));
     wind.finish();
   }
   w.lightningStrikesPerMinute =
@@ -140,7 +141,8 @@ json weatherJson(const WeatherDescription& weather) {
                           {"wind",
                            {{"directionDegrees", named.windDirectionDegrees},
                             {"speedMetresPerSecond", double(w.windSpeedMetresPerSecond)},
-                            {"skewMetres", double(w.skewMetres)}}},
+                            {"skewMetres", double(w.skewMetres)},
+                            {"shearDegrees", double(w.windShearDegrees)}}},
                           {"lightningStrikesPerMinute", double(w.lightningStrikesPerMinute)}};
   }
   json schedule = json::array();

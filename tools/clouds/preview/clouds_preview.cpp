@@ -1,8 +1,8 @@
 // clouds_preview: renders one view through the clouds module with key=value overrides and
 // writes a preview PNG (development aid; not a test).
 // Usage: clouds_preview OUT.png [width=320 height=180 frames=1 altitude=300 pitch=10 yaw=0
-//        sunElevation=35 sunAzimuth=200 coverage=... extinction=... quality=0..4 reference=0
-//        compare=0 ground=0 ...]
+//        sunElevation=35 sunAzimuth=200 coverage=... extinction=... skew=... shear=... quality=0..4
+//        reference=0 compare=0 ground=0 ...]
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
@@ -71,6 +71,8 @@ int main(int argc, char** argv) {
     s.layerTopMetres = static_cast<float>(get("top", s.layerTopMetres));
     s.viewStepMetres = static_cast<float>(get("step", s.viewStepMetres));
     s.anvilBias = static_cast<float>(get("anvil", s.anvilBias));
+    s.skewMetres = static_cast<float>(get("skew", s.skewMetres));
+    s.windShearDegrees = static_cast<float>(get("shear", s.windShearDegrees));
     if (kv.count("detailDistance")) s.detailDistanceMetres = float(get("detailDistance", 0));
     if (kv.count("cutoff")) s.transmittanceCutoff = float(get("cutoff", 0));
     if (kv.count("maxSteps")) s.maxViewSteps = std::uint32_t(get("maxSteps", 0));

@@ -237,6 +237,9 @@ struct Settings {
   glm::vec2 windDirection{1.0f, 0.0f};     // world (x, z), any non-zero length
   float windSpeedMetresPerSecond = 10.0f;  // [0, 500] noise scroll; coverage stays put
   float skewMetres = 500.0f;               // [0, 20000] downwind lean across the layer
+  // The lean follows the wind as it turns with height, so a storm's top leans the way the
+  // upper wind blows (Schneider 2017: anvils skewed by their own wind).
+  float windShearDegrees = 0.0f;  // [-180, 180] the wind's turn from base to top (ccw from above)
 
   // --- Lighting ----------------------------------------------------------------------------
   float albedo = 0.99f;              // [0, 1] single-scattering albedo

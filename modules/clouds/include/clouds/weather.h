@@ -37,6 +37,7 @@ struct WeatherState {
   glm::vec2 windDirection{1.0f, 0.0f};     // Settings::windDirection
   float windSpeedMetresPerSecond = 10.0f;  // Settings::windSpeedMetresPerSecond
   float skewMetres = 500.0f;               // Settings::skewMetres
+  float windShearDegrees = 0.0f;           // Settings::windShearDegrees
   float lightningStrikesPerMinute = 0.0f;  // [0, 600] a storm cell's mean rate; 0: no strikes
 
   bool operator==(const WeatherState&) const = default;

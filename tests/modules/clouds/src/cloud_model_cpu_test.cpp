@@ -320,3 +320,35 @@ TEST(CloudModelCpu, WhiteFurnaceConservesEnergy) {
 }
 
 }  // namespace
+
+// The skew's lean (skewLean(), cloud_march.h) is the integral of the wind's direction over
+// height: without shear a straight lean of skewMetres x height downwind; with shear, at each
+// height its slope is the wind's direction turned by that height's share of the shear
+// (counter-clockwise seen from above: +x turns towards -z), so the top leans the way the upper
+// wind blows, and the curved column is no longer than the straight one.
+TEST(CloudModelCpu, TheSkewLeansAlongTheWindAsItTurnsWithHeight) {
+  using clouds::shader::skewLean;
+  clouds::shader::CloudUniforms u{};
+  u.windDirection = glm::vec2(1.0f, 0.0f);
+  u.skewMetres = 1000.0f;
+  u.windShearRadians = 0.0f;
+  EXPECT_NEAR(skewLean(0.5f, u).x, 500.0f, 1e-3f);
+  EXPECT_NEAR(skewLean(0.5f, u).y, 0.0f, 1e-3f);
+  EXPECT_NEAR(skewLean(2.0f, u).x, 1000.0f, 1e-3f) << "the lean stops at the layer's top";
+  for (const float shear : {glm::half_pi<float>(), -0.7f, 2e-4f, 3.0f}) {
+    u.windShearRadians = shear;
+    for (const float h : {0.1f, 0.5f, 0.95f}) {
+      const float dh = 1e-3f;
+      const glm::vec2 slope = (skewLean(h + dh, u) - skewLean(h - dh, u)) / (2.0f * dh);
+      const float turned = shear * h;
+      const glm::vec2 wind(std::cos(turned), -std::sin(turned));  // +x turned counter-clockwise
+      EXPECT_NEAR(slope.x, u.skewMetres * wind.x, 0.5f) << "shear " << shear << " at " << h;
+      EXPECT_NEAR(slope.y, u.skewMetres * wind.y, 0.5f) << "shear " << shear << " at " << h;
+      EXPECT_LE(glm::length(skewLean(h, u)), u.skewMetres * h + 1e-2f);
+    }
+  }
+  // A quarter turn: the top sits 2/pi of the skew along the base wind and as far across.
+  u.windShearRadians = glm::half_pi<float>();
+  EXPECT_NEAR(skewLean(1.0f, u).x, 1000.0f * 2.0f / glm::pi<float>(), 0.1f);
+  EXPECT_NEAR(skewLean(1.0f, u).y, -1000.0f * 2.0f / glm::pi<float>(), 0.1f);
+}

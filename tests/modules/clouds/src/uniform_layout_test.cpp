@@ -48,6 +48,7 @@ const std::map<std::string, std::size_t> kCppOffsets = {FIELD(inverseProjection)
                                                         FIELD(curlStrengthMetres),
                                                         FIELD(windDirection),
                                                         FIELD(skewMetres),
+                                                        FIELD(windShearRadians),
                                                         FIELD(nearFieldMetres),
                                                         FIELD(fineCellMetres),
                                                         FIELD(coarseCellMetres),
@@ -103,7 +104,10 @@ const std::map<std::string, std::size_t> kCppOffsets = {FIELD(inverseProjection)
                                                         FIELD(edgeRayStartOffsets),
                                                         FIELD(phaseNormaliserInverseLow),
                                                         FIELD(phaseNormaliserInverseHigh),
-                                                        FIELD(edgeSubpixelOffsets)};
+                                                        FIELD(edgeSubpixelOffsets),
+                                                        FIELD(padding0),
+                                                        FIELD(padding1),
+                                                        FIELD(padding2)};
 #undef FIELD
 
 std::string reflect() {

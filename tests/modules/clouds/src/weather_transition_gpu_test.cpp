@@ -193,7 +193,8 @@ TEST_F(CloudWeatherChange, MarchingAheadOfTheChangeBringsItNearerTheReference) {
 
 // Each field of a state moves the image its way (single frames, every pixel marched): more
 // coverage, density, towering type and anvils more cloud, more erosion less; the skew leans the
-// tops downwind and the wind's displacement carries the clouds downwind (the view looks along
+// tops downwind, the shear turns that lean the way the upper wind blows, and the wind's
+// displacement carries the clouds downwind (the view looks along
 // -z, the wind blows along +x: downwind is to the right). Until this test, both went upwind:
 // the noise was read at camera + displacement, against the history's reprojection and the
 // shadow map's drift, which both carry the clouds downwind.
@@ -264,6 +265,22 @@ TEST_F(CloudWeatherChange, EachFieldOfAStateMovesTheImageItsWay) {
   std::printf("skew 3 km: %d px to the right; 300 m of wind: %d px\n", leaned, carried);
   EXPECT_GT(leaned, 0);
   EXPECT_GT(carried, 0);
+  // The shear turns the lean with height: a wind blowing away from the camera (-z) that veers a
+  // quarter turn to +x (clockwise seen from above, shear -90) leans the tops to the right, one
+  // that backs to -x (shear +90) to the left.
+  WeatherState away = look;
+  away.windDirection = {0.0f, -1.0f};
+  away.skewMetres = 6000.0f;
+  const clouds::tools::CloudFrame straight = frameOf(away);
+  WeatherState veering = away;
+  veering.windShearDegrees = -90.0f;
+  WeatherState backing = away;
+  backing.windShearDegrees = 90.0f;
+  const int right = shiftBetween(straight, frameOf(veering));
+  const int left = shiftBetween(straight, frameOf(backing));
+  std::printf("shear -90: %d px to the right; shear +90: %d px\n", right, left);
+  EXPECT_GT(right, 0);
+  EXPECT_LT(left, 0);
 }
 
 // The issue's target (issue 50): within 1 dB of steady weather at every sample. Not met: the
