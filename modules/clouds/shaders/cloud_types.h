@@ -147,6 +147,7 @@ const uint kGeneratorTarget = 0u;
 // weather_resample.comp: the module's weather map from the host's painted one
 const uint kResampleTarget = 0u;
 const uint kResampleSource = 1u;
+const uint kResampleBlendSource = 2u;
 // weather_max.comp: one level of the maxima from the level below
 const uint kMaximaSource = 0u;
 const uint kMaximaTarget = 1u;
@@ -403,6 +404,14 @@ struct WeatherConstants {
   uint seed;
   uint firstRow;  // the first row this dispatch generates
   uint padding0;
+};
+
+// Push constants of the painted map's resampling: the weight of the second painting.
+struct ResampleConstants {
+  float blend;  // [0, 1]
+  uint padding0;
+  uint padding1;
+  uint padding2;
 };
 
 // Push constants of the weather maxima (one level from the level below).
@@ -667,6 +676,7 @@ static_assert(sizeof(clouds::shader::NoiseConstants) == 16);
 static_assert(sizeof(clouds::shader::NoiseMipConstants) == 16);
 static_assert(sizeof(clouds::shader::AmbientConstants) == 32);
 static_assert(sizeof(clouds::shader::WeatherConstants) == 16);
+static_assert(sizeof(clouds::shader::ResampleConstants) == 16);
 static_assert(sizeof(clouds::shader::MaximaConstants) == 16);
 static_assert(sizeof(clouds::shader::CompositeConstants) == 16);
 static_assert(sizeof(clouds::shader::FrameUniformsIndex) == 4);

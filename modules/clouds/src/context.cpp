@@ -90,6 +90,12 @@ std::string checkSharedInputs(const FrameInputs& in) {
                                      std::isfinite(in.windDisplacementMetres->y))) {
     return "FrameInputs.windDisplacementMetres: must be finite";
   }
+  if (!(in.weatherBlend >= 0.0f && in.weatherBlend <= 1.0f)) {
+    return "FrameInputs.weatherBlend = " + std::to_string(in.weatherBlend) + ": must be in [0, 1]";
+  }
+  if (in.weatherBlendView != VK_NULL_HANDLE && in.weatherView == VK_NULL_HANDLE) {
+    return "FrameInputs.weatherBlendView: needs a weatherView to blend from";
+  }
   return {};
 }
 

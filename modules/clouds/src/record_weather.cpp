@@ -106,18 +106,26 @@ void Context::Impl::recordWeather(VkCommandBuffer cmd, const FrameInputs& inputs
     const auto& fn = device_.fn();
     const std::uint32_t n = detail::groupsFor(static_cast<std::uint32_t>(shader::kWeatherMapSize),
                                               shader::kWorkgroupSize2D);
-    // A painted map: resampled every frame (the host may repaint it at any time).
+    // A painted map: resampled every frame (the host may repaint it at any time), blended
+    // towards a second one when the host asks.
+    const bool blending = inputs.weatherBlendView != VK_NULL_HANDLE;
+    const shader::ResampleConstants constants{blending ? inputs.weatherBlend : 0.0f, 0u, 0u, 0u};
     beginPass(cmd, detail::Pass::Weather, "clouds: weather resample");
     detail::SetWriter(device_, slot.weatherResample)
         .storageImage(shader::kResampleTarget, weatherMap().view())
         .sampledImage(shader::kResampleSource, inputs.weatherView, linearSampler_.get(),
                       inputs.weatherLayout)
+        .sampledImage(shader::kResampleBlendSource,
+                      blending ? inputs.weatherBlendView : inputs.weatherView, linearSampler_.get(),
+                      blending ? inputs.weatherBlendLayout : inputs.weatherLayout)
         .commit();
     detail::memoryBarrier(device_, cmd, kCompute, kStorageRead, kCompute, kStorageWrite);
     const detail::ComputeProgram& resample = programs_[Program::WeatherResample];
     fn.vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, resample.find());
     fn.vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, resample.layout(), 0, 1,
                                &slot.weatherResample, 0, nullptr);
+    fn.vkCmdPushConstants(cmd, resample.layout(), VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof(constants),
+                          &constants);
     fn.vkCmdDispatch(cmd, n, n, 1);
     detail::memoryBarrier(device_, cmd, kCompute, kStorageWrite, kCompute, kStorageRead);
     recordWeatherMaxima(cmd);

@@ -79,7 +79,10 @@ bool ShadowCascades::stale(const Made& made, const CascadeJob& now, const FrameI
   if (settingsDifferIn(kRemakesShadows, settings_, s) || cloudsLookDifferent(settings_, s)) {
     return true;
   }
-  if (in.weatherView != weatherView_ || !sameTerrain(in.terrain, terrain_)) return true;
+  if (paintedWeatherChange(PaintedWeather::of(in), painted_) > kPaintedWeatherTolerance ||
+      !sameTerrain(in.terrain, terrain_)) {
+    return true;
+  }
   if (angleDegrees(made.basis.light, now.basis.light) > double(s.relightResetDegrees)) return true;
   const double age = in.timeSeconds - made.timeSeconds;
   if (age < 0.0 || age > kMaxCascadeAgeSeconds) return true;
@@ -209,7 +212,7 @@ void ShadowCascades::commit(const ShadowPlan& plan, const FrameInputs& in, const
     hasTerrain_[c] = false;
   }
   settings_ = s;
-  weatherView_ = in.weatherView;
+  painted_ = PaintedWeather::of(in);
   terrain_ = in.terrain;
 }
 

@@ -26,6 +26,7 @@
 #include "cloud_types.h"
 #include "clouds/clouds.h"
 #include "fxcontracts/cloud_shadow.h"
+#include "painted_weather.h"
 
 namespace clouds::detail {
 
@@ -136,7 +137,7 @@ class ShadowCascades {
   std::optional<Building> building_;
   std::uint64_t turn_ = 0;
   Settings settings_{};  // those the made cascades were made with
-  VkImageView weatherView_ = VK_NULL_HANDLE;
+  PaintedWeather painted_;
   FrameInputs::Terrain terrain_{};  // the terrain the made cascades were made with
 };
 

@@ -80,9 +80,10 @@ TemporalFrame TemporalState::plan(const FrameInputs& in, const Settings& s, VkEx
     frame.resetReason = "relighting";
   } else if (cloudsLookDifferent(s, settings_)) {
     frame.resetReason = "settings changed";
-  } else if (in.weatherView != weatherView_) {
-    // A different painted map (or back to the procedural one). A host repainting the same
-    // image in place should set FrameInputs::reset.
+  } else if (paintedWeatherChange(PaintedWeather::of(in), painted_) > kPaintedWeatherTolerance) {
+    // A different painted map (or back to the procedural one) at once; a blend into another
+    // over seconds keeps the history. A host repainting the same image in place should set
+    // FrameInputs::reset.
     frame.resetReason = "weather map changed";
   } else if (frame.nearField != nearField_) {
     // The history held the whole ray and now must hold the far part only, or the reverse.
@@ -123,7 +124,9 @@ TemporalFrame TemporalState::plan(const FrameInputs& in, const Settings& s, VkEx
   const bool noDrift = frame.windDrift == glm::dvec2(0.0);
   frame.previousView = havePrevious_ ? view_ : in.view;
   frame.previousProjection = havePrevious_ ? projection_ : in.projection;
-  frame.cloudsChanging = frame.useHistory && settingsChangedIn(kResetsHistory, s, settings_);
+  const bool mapBlending = paintedWeatherChange(PaintedWeather::of(in), painted_) > 0.0f;
+  frame.cloudsChanging =
+      frame.useHistory && (settingsChangedIn(kResetsHistory, s, settings_) || mapBlending);
   if (frame.cloudsChanging && leadTheLook_) {
     const float area = static_cast<float>(frame.tileSize * frame.tileSize);
     const float w = std::clamp(s.temporalFreshWeight, 0.05f, 1.0f);
@@ -172,7 +175,7 @@ void TemporalState::commit(const TemporalFrame& frame, const FrameInputs& in,
   sunIlluminance_ = in.sunIlluminance;
   windDisplacement_ = windDisplacementOf(in, settings);
   settings_ = settings;
-  weatherView_ = in.weatherView;
+  painted_ = PaintedWeather::of(in);
 }
 
 }  // namespace clouds::detail

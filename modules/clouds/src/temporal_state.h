@@ -11,6 +11,7 @@
 #include <cstdint>
 
 #include "clouds/clouds.h"
+#include "painted_weather.h"
 
 namespace clouds::detail {
 
@@ -111,7 +112,7 @@ class TemporalState {
   glm::vec3 sunIlluminance_{0.0f};
   glm::dvec2 windDisplacement_{0.0};
   Settings settings_{};
-  VkImageView weatherView_ = VK_NULL_HANDLE;
+  PaintedWeather painted_;
 };
 
 }  // namespace clouds::detail

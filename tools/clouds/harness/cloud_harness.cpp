@@ -174,6 +174,8 @@ clouds::FrameInputs CloudHarness::makeInputs(const CloudView& view, VkExtent2D e
   in.timeSeconds = view.timeSeconds;
   in.windDisplacementMetres = view.windDisplacementMetres;
   in.weatherView = view.weatherView;
+  in.weatherBlendView = view.weatherBlendView;
+  in.weatherBlend = view.weatherBlend;
   in.skyView = view.skyView;
   in.aerialPerspective = view.aerialPerspective;
   in.terrain = view.terrain;

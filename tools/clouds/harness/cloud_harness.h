@@ -52,6 +52,8 @@ struct CloudView {
   std::optional<glm::dvec2> windDisplacementMetres;
   // Optional host images (sampled, SHADER_READ_ONLY_OPTIMAL): painted weather, sky radiance.
   VkImageView weatherView = VK_NULL_HANDLE;
+  VkImageView weatherBlendView = VK_NULL_HANDLE;  // FrameInputs::weatherBlendView
+  float weatherBlend = 0.0f;                      //   and weatherBlend
   VkImageView skyView = VK_NULL_HANDLE;
   // Optional haze (FrameInputs::aerialPerspective), its view sampled in SHADER_READ_ONLY_OPTIMAL.
   clouds::FrameInputs::AerialPerspective aerialPerspective;

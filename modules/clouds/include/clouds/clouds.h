@@ -569,6 +569,13 @@ struct FrameInputs {
   // bilinear filtering in `weatherLayout`) replacing the procedural one.
   VkImageView weatherView = VK_NULL_HANDLE;
   VkImageLayout weatherLayout = VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL;
+  // Optional second painting the map is blended towards (mix(weatherView, weatherBlendView,
+  // weatherBlend), weatherBlend in [0, 1]; needs weatherView). A host easing weatherBlend from 0
+  // to 1 over seconds, then passing the second painting as weatherView alone, changes the map
+  // without losing the temporal history; swapping weatherView at once drops it.
+  VkImageView weatherBlendView = VK_NULL_HANDLE;
+  VkImageLayout weatherBlendLayout = VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL;
+  float weatherBlend = 0.0f;
 
   // This frame's lightning flashes, at most Settings::lightningFlashes (the span's memory need
   // only last through the call that takes these inputs).

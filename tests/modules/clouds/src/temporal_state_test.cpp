@@ -555,6 +555,60 @@ TEST(TemporalState, NewSettingsOrANewWeatherMapDropTheHistory) {
   }
 }
 
+// A painting blended into another over seconds moves the map a little each frame: the history
+// is kept (and the frame is not still), also when the blend ends with the second painting
+// alone; one that moves more than 1% of the map in a frame drops it.
+TEST(TemporalState, APaintedMapBlendedIntoAnotherKeepsTheHistory) {
+  const clouds::Settings s;
+  const auto first = reinterpret_cast<VkImageView>(std::uintptr_t{0x1234});
+  const auto second = reinterpret_cast<VkImageView>(std::uintptr_t{0x5678});
+  clouds::FrameInputs in = groundCamera();
+  in.weatherView = first;
+  TemporalState state;
+  run(state, in, s, 3);
+  in.weatherBlendView = second;
+  for (int frame = 1; frame <= 200; ++frame) {
+    in.weatherBlend = float(frame) / 200.0f;  // 0.5% a frame
+    const TemporalFrame planned = state.plan(in, s, kTrace);
+    ASSERT_TRUE(planned.useHistory) << "at " << in.weatherBlend << ": " << planned.resetReason;
+    EXPECT_FALSE(planned.still);
+    state.commit(planned, in, s, kTrace);
+  }
+  clouds::FrameInputs after = in;  // the second painting alone: the same map
+  after.weatherView = second;
+  after.weatherBlendView = VK_NULL_HANDLE;
+  after.weatherBlend = 0.0f;
+  const TemporalFrame ended = state.plan(after, s, kTrace);
+  EXPECT_TRUE(ended.useHistory) << ended.resetReason;
+  EXPECT_FALSE(ended.cloudsChanging);
+  state.commit(ended, after, s, kTrace);
+  clouds::FrameInputs jump = after;  // 5% in one frame
+  jump.weatherBlendView = first;
+  jump.weatherBlend = 0.05f;
+  EXPECT_EQ(std::string(state.plan(jump, s, kTrace).resetReason), "weather map changed");
+}
+
+TEST(PaintedWeather, TheChangeIsTheShareOfTheMapThatMoved) {
+  using clouds::detail::PaintedWeather;
+  using clouds::detail::paintedWeatherChange;
+  const auto a = reinterpret_cast<VkImageView>(std::uintptr_t{0x10});
+  const auto b = reinterpret_cast<VkImageView>(std::uintptr_t{0x20});
+  const auto c = reinterpret_cast<VkImageView>(std::uintptr_t{0x30});
+  const PaintedWeather procedural{};
+  const PaintedWeather onlyA{a, VK_NULL_HANDLE, 0.0f};
+  EXPECT_EQ(paintedWeatherChange(onlyA, onlyA), 0.0f);
+  EXPECT_EQ(paintedWeatherChange(procedural, onlyA), 1.0f);
+  EXPECT_EQ(paintedWeatherChange(onlyA, PaintedWeather{b, VK_NULL_HANDLE, 0.0f}), 1.0f);
+  EXPECT_FLOAT_EQ(paintedWeatherChange(onlyA, PaintedWeather{a, b, 0.3f}), 0.3f);
+  EXPECT_FLOAT_EQ(paintedWeatherChange(PaintedWeather{a, b, 0.3f}, PaintedWeather{a, b, 0.35f}),
+                  0.05f);
+  EXPECT_EQ(paintedWeatherChange(PaintedWeather{a, b, 1.0f}, PaintedWeather{b, VK_NULL_HANDLE, 0}),
+            0.0f);
+  EXPECT_EQ(paintedWeatherChange(PaintedWeather{a, a, 0.7f}, onlyA), 0.0f);
+  EXPECT_FLOAT_EQ(paintedWeatherChange(PaintedWeather{a, b, 0.5f}, PaintedWeather{a, c, 0.5f}),
+                  0.5f);
+}
+
 TEST(TemporalState, SmallMovesKeepTheHistory) {
   TemporalState state;
   const clouds::Settings s;
