@@ -34,6 +34,19 @@ std::vector<Value> volumeSlice(int size, int z, Texel texel) {
   return slice;
 }
 
+// The size x size map whose texel at uv holds `texel(uv)`.
+template <typename Value, typename Texel>
+std::vector<Value> mapOf(int size, Texel texel) {
+  std::vector<Value> map(std::size_t(size) * std::size_t(size));
+  for (int y = 0; y < size; ++y) {
+    for (int x = 0; x < size; ++x) {
+      const glm::vec2 uv = (glm::vec2(float(x), float(y)) + 0.5f) / float(size);
+      map[std::size_t(y) * std::size_t(size) + std::size_t(x)] = texel(uv);
+    }
+  }
+  return map;
+}
+
 }  // namespace
 
 std::vector<float> shapeNoiseSlice(std::uint32_t noiseSeed, int z) {
@@ -54,16 +67,9 @@ std::vector<glm::vec4> heroNoiseSlice(std::uint32_t noiseSeed, int z) {
 }
 
 std::vector<glm::vec2> curlNoise(std::uint32_t noiseSeed) {
-  constexpr int n = kCurlNoiseTexels;
-  std::vector<glm::vec2> texels(std::size_t(n) * n);
-  for (int y = 0; y < n; ++y) {
-    for (int x = 0; x < n; ++x) {
-      const glm::vec2 uv = (glm::vec2(float(x), float(y)) + 0.5f) / float(n);
-      texels[std::size_t(y) * n + std::size_t(x)] =
-          shader::curlNoiseTexel(uv, 1.0f / float(n), noiseSeed);
-    }
-  }
-  return texels;
+  return mapOf<glm::vec2>(kCurlNoiseTexels, [&](glm::vec2 uv) {
+    return shader::curlNoiseTexel(uv, 1.0f / float(kCurlNoiseTexels), noiseSeed);
+  });
 }
 
 float proceduralWeatherPhase(const Settings& settings, double timeSeconds) {
@@ -74,16 +80,9 @@ float proceduralWeatherPhase(const Settings& settings, double timeSeconds) {
 }
 
 std::vector<glm::vec4> proceduralWeatherMap(std::uint32_t noiseSeed, float phase) {
-  constexpr int n = kWeatherMapTexels;
-  std::vector<glm::vec4> texels(std::size_t(n) * n);
-  for (int y = 0; y < n; ++y) {
-    for (int x = 0; x < n; ++x) {
-      const glm::vec2 uv = (glm::vec2(float(x), float(y)) + 0.5f) / float(n);
-      texels[std::size_t(y) * n + std::size_t(x)] =
-          shader::proceduralWeatherTexel(uv, phase, noiseSeed);
-    }
-  }
-  return texels;
+  return mapOf<glm::vec4>(kWeatherMapTexels, [&](glm::vec2 uv) {
+    return shader::proceduralWeatherTexel(uv, phase, noiseSeed);
+  });
 }
 
 glm::vec4 weatherAsMarched(glm::vec4 texel, const Settings& settings) {

@@ -58,6 +58,8 @@ TemporalFrame TemporalState::plan(const FrameInputs& in, const Settings& s, VkEx
       nearField > 0.0 && (nearHeroCloud || (altitude > s.layerBottomMetres - nearField &&
                                             altitude < s.layerTopMetres + nearField));
   const glm::dvec2 windDisplacement = windDisplacementOf(in, s);
+  // The share of the painted weather map that moved since the last frame (painted_weather.h).
+  const float mapMoved = paintedWeatherChange(PaintedWeather::of(in), painted_);
   if (!havePrevious_) {
     frame.resetReason = forgotten_;
   } else if (in.reset) {
@@ -80,7 +82,7 @@ TemporalFrame TemporalState::plan(const FrameInputs& in, const Settings& s, VkEx
     frame.resetReason = "relighting";
   } else if (cloudsLookDifferent(s, settings_)) {
     frame.resetReason = "settings changed";
-  } else if (paintedWeatherChange(PaintedWeather::of(in), painted_) > kPaintedWeatherTolerance) {
+  } else if (mapMoved > kPaintedWeatherTolerance) {
     // A different painted map (or back to the procedural one) at once; a blend into another
     // over seconds keeps the history. A host repainting the same image in place should set
     // FrameInputs::reset.
@@ -124,9 +126,8 @@ TemporalFrame TemporalState::plan(const FrameInputs& in, const Settings& s, VkEx
   const bool noDrift = frame.windDrift == glm::dvec2(0.0);
   frame.previousView = havePrevious_ ? view_ : in.view;
   frame.previousProjection = havePrevious_ ? projection_ : in.projection;
-  const bool mapBlending = paintedWeatherChange(PaintedWeather::of(in), painted_) > 0.0f;
   frame.cloudsChanging =
-      frame.useHistory && (settingsChangedIn(kResetsHistory, s, settings_) || mapBlending);
+      frame.useHistory && (settingsChangedIn(kResetsHistory, s, settings_) || mapMoved > 0.0f);
   if (frame.cloudsChanging && leadTheLook_) {
     const float area = static_cast<float>(frame.tileSize * frame.tileSize);
     const float w = std::clamp(s.temporalFreshWeight, 0.05f, 1.0f);
