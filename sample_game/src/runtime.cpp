@@ -278,16 +278,21 @@ std::string timingList(const std::vector<std::pair<std::string, double>>& timing
 void printDescription(ecs::App& app, const Renderer& renderer, const RunPlan& plan) {
   std::vector<std::string> modules;
   for (auto m : app.installedModules()) modules.emplace_back(m);
-  // The weather's schedule, by its states' names: a scene without one has none to run.
+  // The weather's schedule, by its states' names, and its regions: a scene without them has
+  // none to run.
   std::vector<std::string> weather;
-  app.world().view<const clouds::ecs::CloudWeather>().each(
-      [&](const clouds::ecs::CloudWeather& w) { weather = w.keyNames; });
+  std::vector<std::string> regions;
+  app.world().view<const clouds::ecs::CloudWeather>().each([&](const clouds::ecs::CloudWeather& w) {
+    weather = w.keyNames;
+    for (const clouds::ecs::RegionalWeather& r : w.regions) regions.push_back(r.name);
+  });
   std::printf(
       "{\"scene\": \"%s\", \"passes\": [%s], \"pipelines\": [%s], \"modules\": [%s], "
-      "\"shadow casters\": [%s], \"weather\": [%s]}\n",
+      "\"shadow casters\": [%s], \"weather\": [%s], \"weather regions\": [%s]}\n",
       plan.scene.name.c_str(), joined(renderer.passNames(), "\"", ", ").c_str(),
       joined(renderer.pipelineNames(), "\"", ", ").c_str(), joined(modules, "\"", ", ").c_str(),
-      joined(renderer.shadowCasters(), "\"", ", ").c_str(), joined(weather, "\"", ", ").c_str());
+      joined(renderer.shadowCasters(), "\"", ", ").c_str(), joined(weather, "\"", ", ").c_str(),
+      joined(regions, "\"", ", ").c_str());
 }
 
 // "GPU memory: renderer 12.0 MiB, clouds 15.1 MiB (total 27.1 MiB)".

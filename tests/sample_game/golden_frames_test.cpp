@@ -3,7 +3,7 @@
 // inside a cloud, noon, sunset, cumulus overhead, towards the sun, an overcast stratus deck,
 // a ridge shading clouds at sunset, cloud shadows on the plains at noon, flying inside the
 // layer at High and Medium, hero clouds outside, inside, at sunset and in a storm, the default
-// view under each built-in weather state: the review
+// view under each built-in weather state, a storm front over the range: the review
 // set's views among them) and each is compared with its
 // committed golden image by the tolerance tree in golden_compare.h. Every run writes the actual
 // images to build/golden_output/ (what tools/promote_goldens.sh copies into tests/goldens/); a
@@ -62,6 +62,9 @@ std::vector<GoldenRun> goldenRuns() {
       // The default view under each built-in weather state (the storm's between strikes),
       // switched at once, 23 frames each.
       {tests / "scenes/weather_states.json", tests / "scripts/golden_weather_views.json"},
+      // A storm front (a weather region) over the range in fair weather: from the plains, and
+      // under it.
+      {tests / "scenes/weather_front.json", tests / "scripts/golden_front_views.json"},
       // Flying inside a tall layer over the ground, at High and Medium: frames rebuilt from
       // their own rays, without a pattern of them.
       {tests / "scenes/inside_layer_over_terrain.json",

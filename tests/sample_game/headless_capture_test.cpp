@@ -119,9 +119,9 @@ TEST(HeadlessCapture, CaptureAllWritesEveryFrameAndRunsAreDeterministic) {
             engine::assets::readImage(a / "frame_0001.png").pixels);
 }
 
-// Every shipped scene, and a scripted ground strike in the storm, renders the same HDR frames
-// (every frame, to the bit) in a rerun and with lavapipe on 1, 2 or 4 threads: no pass depends
-// on the order its invocations run in.
+// Every shipped scene, a scripted ground strike in the storm, and weather (a region's too)
+// turning, renders the same HDR frames (every frame, to the bit) in a rerun and with lavapipe
+// on 1, 2 or 4 threads: no pass depends on the order its invocations run in.
 TEST(HeadlessCapture, EveryScenesFramesAreTheSameAtAnyThreadCount) {
   struct Run {
     std::string scene;
@@ -133,6 +133,9 @@ TEST(HeadlessCapture, EveryScenesFramesAreTheSameAtAnyThreadCount) {
   }
   runs.push_back({SAMPLE_ASSET_DIR + std::string("/scenes/thunderstorm.json"),
                   std::string(SAMPLE_TEST_DIR) + "/scripts/ground_strikes_every_8_frames.json"});
+  // The weather and a region's in transition from the first frame (the shipped scenes hold
+  // their first state for a while).
+  runs.push_back({std::string(SAMPLE_TEST_DIR) + "/scenes/weather_turning.json", ""});
   ASSERT_GE(runs.size(), 6u);
   constexpr int kFrames = 10;
   for (const Run& run : runs) {
@@ -265,8 +268,9 @@ TEST(HeadlessCapture, EachSceneGetsOnlyThePassesAndPipelinesItNeeds) {
     EXPECT_NE(out.find(c.passes), std::string::npos) << c.scene << "\n" << out;
     EXPECT_NE(out.find(c.pipelines), std::string::npos) << c.scene << "\n" << out;
     EXPECT_NE(out.find(c.modules), std::string::npos) << c.scene << "\n" << out;
-    // Only a scene with a schedule has weather to run.
+    // Only a scene with a schedule has weather to run, and with regions regions.
     EXPECT_NE(out.find(R"("weather": [])"), std::string::npos) << c.scene << "\n" << out;
+    EXPECT_NE(out.find(R"("weather regions": [])"), std::string::npos) << c.scene << "\n" << out;
   }
   // Changing weather: its schedule, and the default scene's passes, none more.
   const std::string changing =
@@ -274,6 +278,8 @@ TEST(HeadlessCapture, EachSceneGetsOnlyThePassesAndPipelinesItNeeds) {
                       std::string(SAMPLE_ASSET_DIR) + "/scenes/changing_weather.json");
   EXPECT_NE(changing.find(R"("weather": ["sparse", "cloudy", "squall", "stormy", "overcast"])"),
             std::string::npos)
+      << changing;
+  EXPECT_NE(changing.find(R"("weather regions": ["the far ridge"])"), std::string::npos)
       << changing;
   EXPECT_NE(changing.find(R"("passes": ["cloud shadows", "terrain sunlight", "atmosphere", )"
                           R"("scene", "clouds", "clouds composite", "tonemap", "capture"])"),

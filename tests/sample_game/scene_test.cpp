@@ -117,9 +117,18 @@ TEST(Scenes, EveryShippedSceneWrittenBackLoadsTheSame) {
     }
     if (original.weather) {
       ASSERT_TRUE(loaded.weather);
-      ASSERT_EQ(loaded.weather->schedule.size(), original.weather->schedule.size());
-      for (std::size_t i = 0; i < original.weather->schedule.size(); ++i) {
-        EXPECT_EQ(loaded.weather->schedule[i].state, original.weather->schedule[i].state);
+      ASSERT_EQ(loaded.weather->schedule.keys.size(), original.weather->schedule.keys.size());
+      for (std::size_t i = 0; i < original.weather->schedule.keys.size(); ++i) {
+        EXPECT_EQ(loaded.weather->schedule.keys[i].state, original.weather->schedule.keys[i].state);
+      }
+      ASSERT_EQ(loaded.weather->regions.size(), original.weather->regions.size());
+      for (std::size_t i = 0; i < original.weather->regions.size(); ++i) {
+        const sample::RegionDescription& a = original.weather->regions[i];
+        const sample::RegionDescription& b = loaded.weather->regions[i];
+        EXPECT_EQ(b.name, a.name);
+        EXPECT_EQ(b.place, a.place);
+        EXPECT_EQ(b.schedule.states, a.schedule.states);
+        EXPECT_EQ(b.schedule.repeat, a.schedule.repeat);
       }
     }
     if (original.lightning) {
@@ -227,21 +236,61 @@ TEST(Scenes, AWeatherScheduleArrivesInTheDescription) {
     "lightning": {"cellsFromWeather": {"count": 1, "withinMetres": 14000}}})"));
   ASSERT_TRUE(s.weather.has_value());
   const sample::WeatherDescription& w = *s.weather;
-  ASSERT_EQ(w.schedule.size(), 3u);
-  EXPECT_FALSE(w.repeat);
-  EXPECT_EQ(w.schedule[0].holdSeconds, 5.0);
-  EXPECT_EQ(w.schedule[0].transitionSeconds, 7.0);
-  EXPECT_EQ(w.schedule[1].holdSeconds, clouds::WeatherKey{}.holdSeconds);
+  ASSERT_EQ(w.schedule.keys.size(), 3u);
+  EXPECT_FALSE(w.schedule.repeat);
+  EXPECT_EQ(w.schedule.keys[0].holdSeconds, 5.0);
+  EXPECT_EQ(w.schedule.keys[0].transitionSeconds, 7.0);
+  EXPECT_EQ(w.schedule.keys[1].holdSeconds, clouds::WeatherKey{}.holdSeconds);
   const clouds::WeatherState sparse = clouds::weatherPreset(clouds::WeatherPreset::Sparse);
-  EXPECT_EQ(w.schedule[0].state.coverage, sparse.coverage);
-  EXPECT_NEAR(w.schedule[0].state.windDirection.y, -1.0f, 1e-6f) << "the layer's 90 degrees";
-  EXPECT_EQ(w.schedule[1].state.coverage, 0.8f);
-  EXPECT_EQ(w.schedule[1].state.cloudType, 0.5f) << "the layer's own look otherwise";
-  EXPECT_EQ(w.schedule[2].state.anvilBias, 1.0f) << "like stormy";
-  EXPECT_EQ(w.schedule[2].state.windSpeedMetresPerSecond, 30.0f);
+  EXPECT_EQ(w.schedule.keys[0].state.coverage, sparse.coverage);
+  EXPECT_NEAR(w.schedule.keys[0].state.windDirection.y, -1.0f, 1e-6f) << "the layer's 90 degrees";
+  EXPECT_EQ(w.schedule.keys[1].state.coverage, 0.8f);
+  EXPECT_EQ(w.schedule.keys[1].state.cloudType, 0.5f) << "the layer's own look otherwise";
+  EXPECT_EQ(w.schedule.keys[2].state.anvilBias, 1.0f) << "like stormy";
+  EXPECT_EQ(w.schedule.keys[2].state.windSpeedMetresPerSecond, 30.0f);
   EXPECT_TRUE(w.strikes());
   ASSERT_EQ(s.lightning->storm.cells.size(), 1u) << "found under the squall, not the fair layer";
-  EXPECT_EQ(w.timeline().stateAt(1e6), w.schedule[2].state);
+  EXPECT_EQ(w.schedule.timeline().stateAt(1e6), w.schedule.keys[2].state);
+}
+
+// Weather regions: a place with one state or a schedule of its own, over the layer's own look
+// when the scene has no schedule; a storm's cells are found under a storm region's stormiest
+// state, where the fair layer has none.
+TEST(Scenes, WeatherRegionsArriveInTheDescription) {
+  const sample::SceneDescription s = loadSceneDescription(writeScene("regions.json", R"({
+    "name": "w", "camera": {"position": [5000, 1100, -10000]},
+    "clouds": {"coverage": 0.3, "cloudType": 0.5, "noiseSeed": 12},
+    "weather": {
+      "regions": [
+        {"name": "front", "centre": [5000, -10000], "halfSides": [20000, 4000],
+         "headingDegrees": 30, "radiusMetres": 1000, "blendMetres": 6000,
+         "schedule": [{"state": "cloudy", "holdSeconds": 30, "transitionSeconds": 10},
+                      {"state": "stormy"}], "repeat": false},
+        {"name": "hole", "centre": [-20000, 3000], "state": "sparse"}]},
+    "lightning": {"cellsFromWeather": {"count": 1, "withinMetres": 14000}}})"));
+  ASSERT_TRUE(s.weather.has_value());
+  const sample::WeatherDescription& w = *s.weather;
+  EXPECT_FALSE(w.ownSchedule);
+  ASSERT_EQ(w.schedule.keys.size(), 1u);
+  EXPECT_EQ(w.schedule.keys[0].state, clouds::weatherOf(s.clouds->settings));
+  ASSERT_EQ(w.regions.size(), 2u);
+  const sample::RegionDescription& front = w.regions[0];
+  EXPECT_EQ(front.name, "front");
+  EXPECT_EQ(front.place.centreMetres, glm::dvec2(5000, -10000));
+  EXPECT_EQ(front.place.halfSidesMetres, glm::vec2(20000, 4000));
+  EXPECT_EQ(front.place.headingDegrees, 30.0f);
+  EXPECT_EQ(front.place.radiusMetres, 1000.0f);
+  EXPECT_EQ(front.place.blendMetres, 6000.0f);
+  EXPECT_FALSE(front.steady);
+  EXPECT_FALSE(front.schedule.repeat);
+  EXPECT_EQ(front.schedule.timeline().stateAt(1e6).anvilBias,
+            clouds::weatherPreset(clouds::WeatherPreset::Stormy).anvilBias);
+  EXPECT_TRUE(w.regions[1].steady);
+  EXPECT_EQ(w.regions[1].place.blendMetres, clouds::WeatherRegion{}.blendMetres);
+  EXPECT_TRUE(w.strikes()) << "the front's storm strikes";
+  ASSERT_EQ(s.lightning->storm.cells.size(), 1u) << "found under the front's storm";
+  const glm::dvec3 cell = s.lightning->storm.cells[0].positionMetres;
+  EXPECT_GT(clouds::weatherRegionStrength(w.stormiestRegions()[0], {cell.x, cell.z}), 0.0f);
 }
 
 TEST(Scenes, HeroCloudsArriveInTheDescription) {
@@ -404,6 +453,46 @@ TEST(Scenes, MalformedScenesNameFilePathAndReason) {
            "weather": {"schedule": [{"state": "stormy"}]},
            "lightning": {"cells": [{"position": [0, 2000, 0]}], "strikesPerMinute": 3}})",
        "lightning.strikesPerMinute: the weather's states set the rate"},
+      {"region_centre.json",
+       R"({"name": "x", "camera": {"position": [0, 1, 0]}, "clouds": {},
+           "weather": {"regions": [{"name": "r", "centre": [0], "state": "cloudy"}]}})",
+       "weather.regions[0].centre: must be an array of 2 numbers"},
+      {"region_blend.json",
+       R"({"name": "x", "camera": {"position": [0, 1, 0]}, "clouds": {},
+           "weather": {"regions": [{"name": "r", "centre": [0, 0], "blendMetres": 5,
+                                    "state": "cloudy"}]}})",
+       "weather.regions[0].blendMetres: must be in [100, 1e+07], got 5"},
+      {"region_sides.json",
+       R"({"name": "x", "camera": {"position": [0, 1, 0]}, "clouds": {},
+           "weather": {"regions": [{"name": "r", "centre": [0, 0], "halfSides": [1, -1],
+                                    "state": "cloudy"}]}})",
+       "weather.regions[0].halfSides: element 1 must be in [0, 1e+07], got -1"},
+      {"region_neither.json",
+       R"({"name": "x", "camera": {"position": [0, 1, 0]}, "clouds": {},
+           "weather": {"regions": [{"name": "r", "centre": [0, 0]}]}})",
+       "weather.regions[0].state: a region needs either a state or a schedule"},
+      {"region_state.json",
+       R"({"name": "x", "camera": {"position": [0, 1, 0]}, "clouds": {},
+           "weather": {"regions": [{"name": "r", "centre": [0, 0], "state": "drizzle"}]}})",
+       "weather.regions[0].state: unknown state \"drizzle\""},
+      {"region_schedule.json",
+       R"({"name": "x", "camera": {"position": [0, 1, 0]}, "clouds": {},
+           "weather": {"regions": [{"name": "r", "centre": [0, 0],
+                                    "schedule": [{"state": "sparse", "holdSeconds": -2}]}]}})",
+       "weather.regions[0].schedule[0].holdSeconds: must be in [0, 1e+07], got -2"},
+      {"region_none.json",
+       R"({"name": "x", "camera": {"position": [0, 1, 0]}, "clouds": {},
+           "weather": {"regions": []}})",
+       "weather.regions: at least one region"},
+      {"region_storm.json",
+       R"({"name": "x", "camera": {"position": [0, 1, 0]}, "clouds": {},
+           "weather": {"regions": [{"name": "r", "centre": [0, 0], "state": "stormy"}]}})",
+       "weather: a state strikes lightning: the scene needs a \"lightning\" storm"},
+      {"region_repeat.json",
+       R"({"name": "x", "camera": {"position": [0, 1, 0]}, "clouds": {},
+           "weather": {"repeat": true,
+                       "regions": [{"name": "r", "centre": [0, 0], "state": "cloudy"}]}})",
+       "weather.repeat: a schedule's: there is none"},
       {"lightning_ground.json",
        R"({"name": "x", "camera": {"position": [0, 1, 0]}, "clouds": {},
            "lightning": {"cells": [{"position": [0, 2000, 0]}], "groundAltitudeMetres": 1e6}})",

@@ -165,14 +165,15 @@ std::string JsonReader::choice(const std::string& key, const std::vector<std::st
   fail(key, "must be one of " + list + ", got \"" + value + "\"");
 }
 
-glm::dvec3 JsonReader::vec3(const std::string& key, double min, double max) const {
+std::vector<double> JsonReader::numbers(const std::string& key, std::size_t count, double min,
+                                        double max) const {
   const nlohmann::json& value = child(key);
-  if (!value.is_array() || value.size() != 3) {
-    fail(key, "must be an array of 3 numbers, got " + describe(value));
+  if (!value.is_array() || value.size() != count) {
+    fail(key, "must be an array of " + std::to_string(count) + " numbers, got " + describe(value));
   }
-  glm::dvec3 v;
-  for (int i = 0; i < 3; ++i) {
-    const auto& e = value[static_cast<std::size_t>(i)];
+  std::vector<double> v(count);
+  for (std::size_t i = 0; i < count; ++i) {
+    const auto& e = value[i];
     if (!e.is_number()) fail(key, "element " + std::to_string(i) + " must be a number");
     v[i] = e.get<double>();
     if (!std::isfinite(v[i]) || v[i] < min || v[i] > max) {
@@ -181,6 +182,16 @@ glm::dvec3 JsonReader::vec3(const std::string& key, double min, double max) cons
     }
   }
   return v;
+}
+
+glm::dvec2 JsonReader::vec2(const std::string& key, double min, double max) const {
+  const std::vector<double> v = numbers(key, 2, min, max);
+  return {v[0], v[1]};
+}
+
+glm::dvec3 JsonReader::vec3(const std::string& key, double min, double max) const {
+  const std::vector<double> v = numbers(key, 3, min, max);
+  return {v[0], v[1], v[2]};
 }
 
 glm::dvec3 JsonReader::vec3(const std::string& key, double min, double max,

@@ -8,13 +8,15 @@
 
 #include "cloud_math.h"
 #include "cloud_types.h"
+#include "cloud_weather_regions.h"
 
 FX_SHADER_BEGIN(clouds::shader)
 
 struct WeatherSample {
   float coverage;  // [0, 1]: fraction of the sky this column can fill
   float type;      // 0 stratus, 0.5 stratocumulus, 1 cumulus
-  float density;   // density scale (wetness), [0, 1]
+  float density;   // density scale (wetness, [0, 1]) times the column's (ColumnWeather)
+  float anvilBias;
 };
 
 // Height-gradient ramps (up start, up end, down start, down end) as fractions of the layer.
@@ -41,13 +43,15 @@ FX_INLINE float layerCoverage(float weatherCoverage, float coverage) {
   return saturate(weatherCoverage + 2.0f * coverage - 1.0f);
 }
 
-// Decodes an RGBA8 weather texel under the global settings: coverage by layerCoverage(), type
-// = settings type moved by the map's variation, density = mix(1, texel density, variation).
-FX_INLINE WeatherSample decodeWeather(vec4 texel, IN(CloudUniforms) u) {
+// Decodes an RGBA8 weather texel under its column's weather: coverage by layerCoverage(), type
+// = the column's type moved by the map's variation, density = mix(1, texel density, variation)
+// times the column's scale.
+FX_INLINE WeatherSample decodeWeather(vec4 texel, IN(ColumnWeather) column, IN(CloudUniforms) u) {
   WeatherSample w;
-  w.coverage = layerCoverage(texel.x, u.coverage);
-  w.type = saturate(u.cloudType + (texel.y - 0.5f) * u.typeVariation);
-  w.density = mix(1.0f, saturate(texel.z), saturate(u.densityVariation));
+  w.coverage = layerCoverage(texel.x, column.coverage);
+  w.type = saturate(column.cloudType + (texel.y - 0.5f) * u.typeVariation);
+  w.density = mix(1.0f, saturate(texel.z), saturate(u.densityVariation)) * column.densityScale;
+  w.anvilBias = column.anvilBias;
   return w;
 }
 
@@ -59,8 +63,7 @@ struct CoarseShape {
 };
 
 // `shapeNoise`: the shape noise's value (shapeNoiseValue()).
-FX_INLINE CoarseShape coarseShape(float shapeNoise, float heightFraction, IN(WeatherSample) w,
-                                  float anvilBias) {
+FX_INLINE CoarseShape coarseShape(float shapeNoise, float heightFraction, IN(WeatherSample) w) {
   CoarseShape shape;
   shape.profile = 0.0f;
   shape.density = 0.0f;
@@ -69,7 +72,7 @@ FX_INLINE CoarseShape coarseShape(float shapeNoise, float heightFraction, IN(Wea
   base *= heightGradient(heightFraction, w.type);
   // Anvil: raise coverage towards the top of the layer.
   const float anvilExponent =
-      remapClamped(heightFraction, 0.7f, 0.8f, 1.0f, mix(1.0f, 0.5f, saturate(anvilBias)));
+      remapClamped(heightFraction, 0.7f, 0.8f, 1.0f, mix(1.0f, 0.5f, saturate(w.anvilBias)));
   const float coverage = pow(saturate(w.coverage), anvilExponent);
   // Coverage as erosion: only noise above (1 - coverage) survives, rescaled.
   shape.profile = saturate(remap(base, 1.0f - coverage, 1.0f, 0.0f, 1.0f));

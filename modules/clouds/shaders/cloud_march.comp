@@ -45,6 +45,8 @@ layout(constant_id = kSpecEdgeRays) const uint kEdgeRays = 0u;
 layout(constant_id = kSpecHeroClouds) const uint kHeroClouds = 0u;
 layout(constant_id = kSpecHeroLight) const uint kHeroLight = kHeroLightVolume;
 layout(constant_id = kSpecNearField) const uint kNearField = 0u;
+layout(constant_id = kSpecWeatherRegions) const uint kWeatherRegions = 0u;
+uint weatherRegionCapacity() { return kWeatherRegions; }
 
 #include "frame_uniforms.glsl"
 layout(binding = kMarchShapeNoise, rgba8) uniform readonly image3D shapeNoise;

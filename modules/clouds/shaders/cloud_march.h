@@ -211,14 +211,15 @@ FX_INLINE FieldSample layerField(vec3 flatOffset, float altitude, float distance
   // Coverage is held still (the weather map is not scrolled); the noise moves with the wind.
   const vec2 weatherUv =
       (u.weatherOffsetMetres + vec2(flatOffset.x, flatOffset.z)) / u.weatherTileMetres;
-  const WeatherSample w = decodeWeather(sampleWeather(weatherUv), u);
+  const vec2 column = vec2(flatOffset.x, flatOffset.z);
+  const WeatherSample w = decodeWeather(sampleWeather(weatherUv), columnWeather(column, u), u);
   const vec3 p = noisePosition(flatOffset, altitude, s.heightFraction, u);
   const vec3 shapeUvw = (u.shapeOffsetMetres + p) / u.shapeTileMetres;
   const float footprint = distance * u.noiseFootprintPerMetre;
   const int shapeLevel = noiseLevel(footprint, u.shapeTileMetres / float(kShapeNoiseSize),
                                     lodDither, kShapeNoiseLevels);
   const CoarseShape shape =
-      coarseShape(sampleShapeNoise(shapeUvw, shapeLevel), s.heightFraction, w, u.anvilBias);
+      coarseShape(sampleShapeNoise(shapeUvw, shapeLevel), s.heightFraction, w);
   s.base = shape.density;
   s.profile = shape.profile;
   s.density = s.base;
@@ -276,19 +277,25 @@ FX_INLINE float cellExitDistance(vec2 p, vec2 d, float cell) {
   return min(exitX, exitZ) + 0.01f;
 }
 
-// True when a weather cell's maxima (R coverage, G type) leave no cloud at `altitude`: zero
-// coverage, or (for a ray whose altitude only grows) above the tallest cloud type's top.
-FX_INLINE bool weatherCellEmpty(vec4 maxima, float altitude, bool ascending, IN(CloudUniforms) u) {
-  const float coverage = layerCoverage(maxima.x, u.coverage);
-  const float type = saturate(u.cloudType + (maxima.y - 0.5f) * u.typeVariation);
+// True when a weather cell's maxima (R coverage, G type) leave no cloud at `altitude` under the
+// largest coverage and type its columns can have (columnWeatherCeiling()): zero coverage, or
+// (for a ray whose altitude only grows) above the tallest cloud type's top.
+FX_INLINE bool weatherCellEmpty(vec4 maxima, vec2 ceiling, float altitude, bool ascending,
+                                IN(CloudUniforms) u) {
+  const float coverage = layerCoverage(maxima.x, ceiling.x);
+  const float type = saturate(ceiling.y + (maxima.y - 0.5f) * u.typeVariation);
   const float top =
       u.layerBottomMetres + typeProfile(type).w * (u.layerTopMetres - u.layerBottomMetres);
   return coverage <= 0.0f || (ascending && altitude > top);
 }
 
-// Empty-space skipping: the distance to jump to from `t` (t itself when the sample's cell may
-// hold cloud), from the coarse then the fine grid of weather maxima, for a ray that starts at
-// the camera-relative flat offset `origin` (x, z).
+// The ceiling of the weather over a `cell`-metre cell of the weather map's grid holding the
+// point `p` (metres in the map's tile space).
+FX_INLINE vec2 cellWeatherCeiling(vec2 p, float cell, IN(CloudUniforms) u) {
+  const vec2 centre = (floor(p / cell) + 0.5f) * cell;
+  return columnWeatherCeiling(centre - u.weatherOffsetMetres, cell * 0.70710678f, u);
+}
+
 FX_INLINE float emptySpaceSkip(vec2 origin, float t, vec3 rayDirection, float altitude,
                                IN(CloudUniforms) u) {
   const vec2 d = vec2(rayDirection.x, rayDirection.z);
@@ -296,12 +303,14 @@ FX_INLINE float emptySpaceSkip(vec2 origin, float t, vec3 rayDirection, float al
   const bool ascending = rayDirection.y >= 0.0f;
   const float coarse = u.coarseCellMetres;
   const ivec2 coarseCell = ivec2(floor(p / coarse)) & (kWeatherMaxCoarseSize - 1);
-  if (weatherCellEmpty(fetchWeatherMaxCoarse(coarseCell), altitude, ascending, u)) {
+  if (weatherCellEmpty(fetchWeatherMaxCoarse(coarseCell), cellWeatherCeiling(p, coarse, u),
+                       altitude, ascending, u)) {
     return t + cellExitDistance(p, d, coarse);
   }
   const float fine = u.fineCellMetres;
   const ivec2 fineCell = ivec2(floor(p / fine)) & (kWeatherMaxFineSize - 1);
-  if (weatherCellEmpty(fetchWeatherMaxFine(fineCell), altitude, ascending, u)) {
+  if (weatherCellEmpty(fetchWeatherMaxFine(fineCell), cellWeatherCeiling(p, fine, u), altitude,
+                       ascending, u)) {
     return t + cellExitDistance(p, d, fine);
   }
   return t;
@@ -372,8 +381,9 @@ FX_INLINE bool layerInLightCone(float altitude, IN(CloudUniforms) u) {
   const float reach = u.lightConeMetres;
   const float lowest = altitude + reach * min(u.sunDirection.y - u.lightConeSpread, 0.0f);
   const float highest = altitude + reach * max(u.sunDirection.y + u.lightConeSpread, 0.0f);
-  const bool holdsCloud = (u.flags & kFlagHomogeneous) != 0u ||
-                          (layerCoverage(1.0f, u.coverage) > 0.0f && u.extinctionPerMetre > 0.0f);
+  const bool holdsCloud =
+      (u.flags & kFlagHomogeneous) != 0u ||
+      (layerCoverage(1.0f, u.fullestCoverage) > 0.0f && u.extinctionPerMetre > 0.0f);
   return holdsCloud && highest >= u.layerBottomMetres && lowest <= u.layerTopMetres;
 }
 

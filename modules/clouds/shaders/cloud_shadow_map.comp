@@ -20,6 +20,8 @@ layout(local_size_x = kWorkgroupSize2D, local_size_y = kWorkgroupSize2D) in;
 
 layout(constant_id = kSpecShadowEmptySpace) const uint kEmptySpace = 1u;
 layout(constant_id = kSpecShadowHeroClouds) const uint kHeroClouds = 0u;
+layout(constant_id = kSpecShadowWeatherRegions) const uint kWeatherRegions = 0u;
+uint weatherRegionCapacity() { return kWeatherRegions; }
 
 // Its push constants (ShadowMapConstants, inside TerrainShadowConstants' 128 bytes) have no
 // spare word for frame_uniforms.glsl's index, so this pass keeps the lane-by-lane loads. Making

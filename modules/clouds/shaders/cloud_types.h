@@ -169,7 +169,9 @@ const uint kSpecHeroClouds = 10u;         // kHeroClouds*: hero clouds (FrameInp
 const uint kSpecHeroLight = 11u;          // kHeroLight*: how hero clouds shadow themselves
 const uint kSpecNearField = 12u;          // 0/1: the near field's pass (every pixel of its
                                           //   image, the ray up to the split)
-const uint kMarchSpecCount = 13u;
+const uint kSpecWeatherRegions = 13u;     // Settings::weatherRegions: the regions a frame may
+                                          //   have (0: no region code)
+const uint kMarchSpecCount = 14u;
 // The variants of kSpecEdgeRays: none; the tiles' march, which lists the edge tiles; the
 // edge rays' march, over that list (an indirect dispatch).
 const uint kEdgeRaysOff = 0u;
@@ -205,9 +207,10 @@ const uint kGodRaySpecCount = 1u;
 const uint kGodRaysMaskHaze = 1u;  // the haze's Mie in-scattering, masked
 const uint kGodRaysGlow = 2u;      // the fallback without a haze: a glow along the clear paths
 // cloud_shadow_map.comp
-const uint kSpecShadowEmptySpace = 0u;  // 0/1: skip empty weather cells
-const uint kSpecShadowHeroClouds = 1u;  // kHeroClouds*: hero clouds cast into the map too
-const uint kShadowSpecCount = 2u;
+const uint kSpecShadowEmptySpace = 0u;      // 0/1: skip empty weather cells
+const uint kSpecShadowHeroClouds = 1u;      // kHeroClouds*: hero clouds cast into the map too
+const uint kSpecShadowWeatherRegions = 2u;  // as the march's kSpecWeatherRegions
+const uint kShadowSpecCount = 3u;
 // The history variants of kSpecHistory and kSpecOutputHistory.
 const uint kHistoryNone = 0u;
 const uint kHistoryInPlace = 1u;
@@ -236,6 +239,16 @@ const uint kCounterNearFieldRays = 6u;  // the near field's rays (not counted as
 const uint kCounterCount = 8u;
 
 // --- The per-frame uniform block --------------------------------------------------------------
+// One weather region (FrameInputs::weatherRegions) as the shaders read it: where it lies,
+// relative to the camera, and the look inside.
+const uint kMaxWeatherRegions = 8u;
+struct WeatherRegionUniform {
+  vec4 placement;  // xy its centre (camera-relative x, z m), zw its core's half sides (m)
+  vec4 shape;      // xy its x axis (world x, z; unit), z the core's rounding radius (m), w the
+                   //   blend distance (m, > 0)
+  vec4 look;       // x coverage, y cloud type, z density scale (as layerDensityScale), w anvils
+};
+
 // Built on the CPU once per frame (src/uniforms.cpp) from the host's inputs and the settings.
 // Positions are camera-relative: the tiling offsets are reduced modulo their tile in double
 // precision on the CPU, so the GPU only sees small numbers.
@@ -363,9 +376,21 @@ struct CloudUniforms {
   // The wind's turn from the layer's base to its top (radians, counter-clockwise seen from
   // above; Settings::windShearDegrees): the skew follows it (noisePosition()).
   float windShearRadians;
-  float padding0;
-  float padding1;
-  float padding2;
+  // Weather regions (FrameInputs::weatherRegions, cloud_weather_regions.h): how many, and the
+  // look around them. The layer's extinction is u.extinctionPerMetre x a column's density
+  // scale: the surrounding weather's is layerDensityScale (1 without regions), a region's its
+  // own; extinctionPerMetre then holds the densest multiplier of them all.
+  uint weatherRegionCount;
+  float layerDensityScale;
+  float fullestCoverage;  // the largest coverage of the surrounding weather and the regions
+#ifdef __cplusplus
+  // The regions themselves: in C++ the struct's last member; in GLSL the frame block's member
+  // after the struct (frame_uniforms.glsl), at the same offset, read in place by
+  // weatherRegion(). Why not in the GLSL struct: the passes copy the struct into a private `u`
+  // and into every function that takes it, and a dynamically indexed array in that copy puts
+  // it in scratch memory: the march took 3.6 times as long on lavapipe, regions or not.
+  WeatherRegionUniform weatherRegions[kMaxWeatherRegions];
+#endif
 };
 
 // Push constants of sky_ambient.comp: which sources the frame has, and the ground's albedo.
@@ -671,7 +696,12 @@ CLOUDS_ASSERT_OFFSET(CloudUniforms, phaseNormaliserInverseLow, 608);
 CLOUDS_ASSERT_OFFSET(CloudUniforms, phaseNormaliserInverseHigh, 624);
 CLOUDS_ASSERT_OFFSET(CloudUniforms, edgeSubpixelOffsets, 640);
 CLOUDS_ASSERT_OFFSET(CloudUniforms, windShearRadians, 656);
-static_assert(sizeof(clouds::shader::CloudUniforms) == 672);
+CLOUDS_ASSERT_OFFSET(CloudUniforms, weatherRegionCount, 660);
+CLOUDS_ASSERT_OFFSET(CloudUniforms, layerDensityScale, 664);
+CLOUDS_ASSERT_OFFSET(CloudUniforms, fullestCoverage, 668);
+CLOUDS_ASSERT_OFFSET(CloudUniforms, weatherRegions, 672);
+static_assert(sizeof(clouds::shader::WeatherRegionUniform) == 48);
+static_assert(sizeof(clouds::shader::CloudUniforms) == 672 + 48 * 8);
 static_assert(sizeof(clouds::shader::NoiseConstants) == 16);
 static_assert(sizeof(clouds::shader::NoiseMipConstants) == 16);
 static_assert(sizeof(clouds::shader::AmbientConstants) == 32);

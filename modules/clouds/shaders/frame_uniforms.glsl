@@ -18,6 +18,8 @@
 
 layout(binding = kBindingUniforms, std140) uniform FrameUniforms {
   CloudUniforms frameUniforms[1];
+  // The C++ struct's last member (cloud_types.h says why it is not the GLSL struct's).
+  WeatherRegionUniform frameWeatherRegions[kMaxWeatherRegions];
 };
 
 #ifndef CLOUDS_FRAME_UNIFORMS_INDEX
@@ -28,5 +30,10 @@ layout(push_constant) uniform FrameUniformsConstants { FrameUniformsIndex frameI
 CloudUniforms u;
 
 void loadFrameUniforms() { u = frameUniforms[CLOUDS_FRAME_UNIFORMS_INDEX]; }
+
+// cloud_weather_regions.h's: read in place, never copied.
+WeatherRegionUniform weatherRegion(CloudUniforms unused, uint index) {
+  return frameWeatherRegions[index];
+}
 
 #endif

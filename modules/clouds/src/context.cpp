@@ -2,6 +2,7 @@
 // Error codes (the API never throws) and forwards to Context::Impl.
 #include <cmath>
 #include <new>
+#include <sstream>
 
 #include "clouds/nvdf.h"
 #include "context_impl.h"
@@ -74,10 +75,51 @@ std::string checkTerrain(const FrameInputs::Terrain& t) {
   return {};
 }
 
+// This frame's weather regions: no more than the settings make room for, each placed finitely,
+// with its sizes and look in range (both dispatch() and dispatchShadowMap() read them).
+std::string checkWeatherRegions(std::span<const WeatherRegion> regions, const Settings& settings) {
+  if (regions.size() > settings.weatherRegions) {
+    return "FrameInputs.weatherRegions: " + std::to_string(regions.size()) +
+           " regions, more than Settings.weatherRegions = " +
+           std::to_string(settings.weatherRegions);
+  }
+  for (std::size_t i = 0; i < regions.size(); ++i) {
+    const WeatherRegion& r = regions[i];
+    const std::string field = "FrameInputs.weatherRegions[" + std::to_string(i) + "]";
+    if (!std::isfinite(r.centreMetres.x) || !std::isfinite(r.centreMetres.y)) {
+      return field + ".centreMetres: must be finite";
+    }
+    if (!std::isfinite(r.headingDegrees)) return field + ".headingDegrees: must be finite";
+    const struct {
+      const char* name;
+      float value;
+      float lo;
+      float hi;
+    } ranged[] = {{"halfSidesMetres.x", r.halfSidesMetres.x, 0.0f, 1e7f},
+                  {"halfSidesMetres.y", r.halfSidesMetres.y, 0.0f, 1e7f},
+                  {"radiusMetres", r.radiusMetres, 0.0f, 1e7f},
+                  {"blendMetres", r.blendMetres, 100.0f, 1e7f},
+                  {"coverage", r.coverage, 0.0f, 1.0f},
+                  {"cloudType", r.cloudType, 0.0f, 1.0f},
+                  {"densityMultiplier", r.densityMultiplier, 0.0f, 1e6f},
+                  {"anvilBias", r.anvilBias, 0.0f, 1.0f}};
+    for (const auto& [name, value, lo, hi] : ranged) {
+      if (!(value >= lo && value <= hi)) {  // NaN fails too
+        std::ostringstream out;
+        out << field << "." << name << " = " << value << ": must be in [" << lo << ", " << hi
+            << "]";
+        return out.str();
+      }
+    }
+  }
+  return {};
+}
+
 // What both dispatch() and dispatchShadowMap() read: the command buffer, camera position, sun,
 // time, terrain.
 std::string checkSharedInputs(const FrameInputs& in) {
   if (std::string problem = checkTerrain(in.terrain); !problem.empty()) return problem;
+
   if (in.commandBuffer == VK_NULL_HANDLE) return "FrameInputs.commandBuffer: must not be null";
   for (double c : {in.cameraPosition.x, in.cameraPosition.y, in.cameraPosition.z}) {
     if (!std::isfinite(c)) return "FrameInputs.cameraPosition: must be finite";
@@ -293,6 +335,10 @@ bool Context::dispatch(const FrameInputs& inputs, const Settings& settings, Erro
   if (std::string problem = checkFlashes(inputs.lightningFlashes, settings); !problem.empty()) {
     return fail(error, ErrorCode::InvalidInputs, problem);
   }
+  if (std::string problem = checkWeatherRegions(inputs.weatherRegions, settings);
+      !problem.empty()) {
+    return fail(error, ErrorCode::InvalidInputs, problem);
+  }
   if (std::string problem = checkBolts(inputs.lightningBolts, settings); !problem.empty()) {
     return fail(error, ErrorCode::InvalidInputs, problem);
   }
@@ -316,6 +362,10 @@ bool Context::dispatchShadowMap(const FrameInputs& inputs, const Settings& setti
   }
   if (std::string problem = validateSettings(settings); !problem.empty()) {
     return fail(error, ErrorCode::InvalidSettings, problem);
+  }
+  if (std::string problem = checkWeatherRegions(inputs.weatherRegions, settings);
+      !problem.empty()) {
+    return fail(error, ErrorCode::InvalidInputs, "dispatchShadowMap: " + problem);
   }
   if (!impl_->shadowPrepared(settings)) {
     return fail(error, ErrorCode::NotPrepared,

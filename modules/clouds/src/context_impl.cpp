@@ -9,6 +9,7 @@
 #include "descriptor_sets.h"
 #include "lightning_bolts.h"
 #include "pipeline_variants.h"
+#include "weather_regions.h"
 #include "wind_displacement.h"
 
 namespace clouds {
@@ -312,10 +313,12 @@ void Context::Impl::bindAndDispatch(VkCommandBuffer cmd, Program program, VkPipe
 namespace {
 
 // Coverage = weather texel + 2 coverage - 1 (cloud_density.h) is at most 2 coverage for the
-// fullest texel: with no coverage, or no extinction, no texel can hold cloud.
-bool skyIsClear(const Settings& s) {
-  const float fullestCoverage = shader::layerCoverage(1.0f, s.coverage);
-  return fullestCoverage <= 0.0f || s.densityMultiplier <= 0.0f || s.extinctionPerMetre <= 0.0f;
+// fullest texel: with no coverage, or no extinction, in the surrounding weather and every
+// region, no texel can hold cloud.
+bool skyIsClear(const FrameInputs& in, const Settings& s) {
+  const float fullest = shader::layerCoverage(1.0f, detail::fullestCoverage(s, in.weatherRegions));
+  return fullest <= 0.0f || detail::densestMultiplier(s, in.weatherRegions) <= 0.0f ||
+         s.extinctionPerMetre <= 0.0f;
 }
 
 }  // namespace
@@ -385,14 +388,16 @@ void Context::Impl::dispatch(const FrameInputs& inputs, const Settings& settings
       temporal_.plan(inputs, settings, traceExtent, inHeroCloud, nearHeroCloud);
   const detail::UniformContext uniformContext{info_.reversedZ, inputs.depthView != VK_NULL_HANDLE,
                                               traceExtent, inputs.renderExtent, temporal};
+  FrameInputs marched = inputs;
+  marched.weatherRegions = temporal_.marchedRegions(inputs, temporal);
   lastUniforms_ =
-      detail::buildUniforms(inputs, temporal_.marchedSettings(settings, temporal), uniformContext);
+      detail::buildUniforms(marched, temporal_.marchedSettings(settings, temporal), uniformContext);
   lastUniforms_.flags |= debugFlags_;
   // Hero clouds lit by their light volume: each instance's slot, and those to sweep first.
   const bool heroLightVolume = heroClouds && settings.heroLight == HeroLight::Volume;
   const std::uint32_t heroSweep =
       heroLightVolume ? heroLight_->assignSlots(lastHeroClouds_, lastUniforms_.sunDirection) : 0u;
-  if (skyIsClear(settings) && !heroClouds) {
+  if (skyIsClear(inputs, settings) && !heroClouds) {
     // Nothing can be marched: the outputs are the empty sky, and the next frame starts afresh.
     recordClearSky(cmd, slot);
     outputsHoldClearSky_ = true;

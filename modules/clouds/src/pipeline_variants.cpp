@@ -33,6 +33,7 @@ SpecializationKey marchKey(const Settings& settings, bool workCounters, bool ter
   key.values[shader::kSpecHeroLight] =
       heroClouds != shader::kHeroCloudsOff ? v.heroLight : shader::kHeroLightCone;
   key.values[shader::kSpecNearField] = nearField ? 1u : 0u;
+  key.values[shader::kSpecWeatherRegions] = settings.weatherRegions;
   key.count = shader::kMarchSpecCount;
   return key;
 }
@@ -95,6 +96,7 @@ SpecializationKey shadowMapKey(const Settings& settings, std::uint32_t heroCloud
   SpecializationKey key;
   key.values[shader::kSpecShadowEmptySpace] = settings.emptySpaceSkipping ? 1u : 0u;
   key.values[shader::kSpecShadowHeroClouds] = heroClouds;
+  key.values[shader::kSpecShadowWeatherRegions] = settings.weatherRegions;
   key.count = shader::kShadowSpecCount;
   return key;
 }

@@ -85,16 +85,6 @@ std::vector<glm::vec4> proceduralWeatherMap(std::uint32_t noiseSeed, float phase
   });
 }
 
-glm::vec4 weatherAsMarched(glm::vec4 texel, const Settings& settings) {
-  shader::CloudUniforms u{};
-  u.coverage = settings.coverage;
-  u.cloudType = settings.cloudType;
-  u.typeVariation = settings.typeVariation;
-  u.densityVariation = settings.densityVariation;
-  const shader::WeatherSample w = shader::decodeWeather(texel, u);
-  return {w.coverage, w.type, w.density, 1.0f};
-}
-
 std::uint8_t storedUnorm8(float value) {
   const float clamped = value > 1.0f ? 1.0f : (value > 0.0f ? value : 0.0f);  // NaN -> 0
   return static_cast<std::uint8_t>(std::lround(clamped * 255.0f));

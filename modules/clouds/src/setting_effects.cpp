@@ -174,6 +174,9 @@ constexpr SettingEffect kEffects[] = {
                    "a capacity: the flashes are this frame's inputs, glowing anew each frame"),
     CLOUDS_SETTING(lightningBoltSegments, kKeepsState,
                    "a capacity: the bolts are drawn anew every frame"),
+    CLOUDS_SETTING(weatherRegions, kKeepsState,
+                   "a capacity: the regions are this frame's inputs (a change of them is "
+                   "weighed apart)"),
 };
 
 #undef CLOUDS_SETTING

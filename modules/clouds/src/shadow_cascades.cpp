@@ -80,6 +80,7 @@ bool ShadowCascades::stale(const Made& made, const CascadeJob& now, const FrameI
     return true;
   }
   if (paintedWeatherChange(PaintedWeather::of(in), painted_) > kPaintedWeatherTolerance ||
+      weatherRegionsChange(in.weatherRegions, regions_) > kWeatherRegionTolerance ||
       !sameTerrain(in.terrain, terrain_)) {
     return true;
   }
@@ -213,6 +214,7 @@ void ShadowCascades::commit(const ShadowPlan& plan, const FrameInputs& in, const
   }
   settings_ = s;
   painted_ = PaintedWeather::of(in);
+  regions_.assign(in.weatherRegions.begin(), in.weatherRegions.end());
   terrain_ = in.terrain;
 }
 

@@ -27,6 +27,7 @@
 #include "clouds/clouds.h"
 #include "fxcontracts/cloud_shadow.h"
 #include "painted_weather.h"
+#include "weather_regions.h"
 
 namespace clouds::detail {
 
@@ -138,6 +139,7 @@ class ShadowCascades {
   std::uint64_t turn_ = 0;
   Settings settings_{};  // those the made cascades were made with
   PaintedWeather painted_;
+  std::vector<WeatherRegion> regions_;
   FrameInputs::Terrain terrain_{};  // the terrain the made cascades were made with
 };
 

@@ -1,6 +1,7 @@
 #include "temporal_state.h"
 
 #include "setting_effects.h"
+#include "weather_regions.h"
 #include "wind_displacement.h"
 
 #include <algorithm>
@@ -60,6 +61,8 @@ TemporalFrame TemporalState::plan(const FrameInputs& in, const Settings& s, VkEx
   const glm::dvec2 windDisplacement = windDisplacementOf(in, s);
   // The share of the painted weather map that moved since the last frame (painted_weather.h).
   const float mapMoved = paintedWeatherChange(PaintedWeather::of(in), painted_);
+  // And how far the weather regions moved (weather_regions.h).
+  const float regionsMoved = weatherRegionsChange(in.weatherRegions, regions_);
   if (!havePrevious_) {
     frame.resetReason = forgotten_;
   } else if (in.reset) {
@@ -87,6 +90,10 @@ TemporalFrame TemporalState::plan(const FrameInputs& in, const Settings& s, VkEx
     // over seconds keeps the history. A host repainting the same image in place should set
     // FrameInputs::reset.
     frame.resetReason = "weather map changed";
+  } else if (regionsMoved > kWeatherRegionTolerance) {
+    // A region appeared, vanished, jumped or changed its look at once; one easing over seconds
+    // keeps the history, as the settings do.
+    frame.resetReason = "weather regions changed";
   } else if (frame.nearField != nearField_) {
     // The history held the whole ray and now must hold the far part only, or the reverse.
     frame.resetReason = frame.nearField ? "near field on" : "near field off";
@@ -126,8 +133,8 @@ TemporalFrame TemporalState::plan(const FrameInputs& in, const Settings& s, VkEx
   const bool noDrift = frame.windDrift == glm::dvec2(0.0);
   frame.previousView = havePrevious_ ? view_ : in.view;
   frame.previousProjection = havePrevious_ ? projection_ : in.projection;
-  frame.cloudsChanging =
-      frame.useHistory && (settingsChangedIn(kResetsHistory, s, settings_) || mapMoved > 0.0f);
+  frame.cloudsChanging = frame.useHistory && (settingsChangedIn(kResetsHistory, s, settings_) ||
+                                              mapMoved > 0.0f || regionsMoved > 0.0f);
   if (frame.cloudsChanging && leadTheLook_) {
     const float area = static_cast<float>(frame.tileSize * frame.tileSize);
     const float w = std::clamp(s.temporalFreshWeight, 0.05f, 1.0f);
@@ -160,6 +167,13 @@ Settings TemporalState::marchedSettings(const Settings& s, const TemporalFrame& 
   return led;
 }
 
+std::span<const WeatherRegion> TemporalState::marchedRegions(const FrameInputs& in,
+                                                             const TemporalFrame& frame) {
+  if (frame.lookLeadFrames == 0.0f) return in.weatherRegions;
+  marchedRegions_ = leadRegions(in.weatherRegions, regions_, frame.lookLeadFrames);
+  return marchedRegions_;
+}
+
 void TemporalState::commit(const TemporalFrame& frame, const FrameInputs& in,
                            const Settings& settings, VkExtent2D traceExtent) {
   havePrevious_ = true;
@@ -177,6 +191,7 @@ void TemporalState::commit(const TemporalFrame& frame, const FrameInputs& in,
   windDisplacement_ = windDisplacementOf(in, settings);
   settings_ = settings;
   painted_ = PaintedWeather::of(in);
+  regions_.assign(in.weatherRegions.begin(), in.weatherRegions.end());
 }
 
 }  // namespace clouds::detail

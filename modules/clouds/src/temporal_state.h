@@ -1,14 +1,16 @@
 #pragma once
 // The temporal reconstruction's bookkeeping, as plain logic (unit-tested without a GPU): per
 // frame it decides whether last frame's result can be reprojected (or why not: reset, resize,
-// a jump or turn of the camera, relighting, new settings or weather map, a jump of the wind's
-// displacement), which pixel of each
-// tile the march refreshes (more of them while the camera moves in or near the cloud layer),
-// and which history image is read and written. It is the one owner of "previous": the camera,
-// sun and time the history was made with, recorded by commit() and used by the next plan().
+// a jump or turn of the camera, relighting, new settings, weather map or regions, a jump of the
+// wind's displacement), which pixel of each tile the march refreshes (more of them while the camera
+// moves in or near the cloud layer), and which history image is read and written. It is the one
+// owner of "previous": the camera, sun and time the history was made with, recorded by commit() and
+// used by the next plan().
 #include <glm/glm.hpp>
 
 #include <cstdint>
+#include <span>
+#include <vector>
 
 #include "clouds/clouds.h"
 #include "painted_weather.h"
@@ -85,6 +87,9 @@ class TemporalState {
   // is the spread of the ages, a quarter of the lag. (Blending the history towards this frame's
   // sparse fresh estimate instead cost 5 to 10 dB: the history's detail is worth more.)
   Settings marchedSettings(const Settings& settings, const TemporalFrame& frame) const;
+  // This frame's weather regions as marched: FrameInputs::weatherRegions with their looks led
+  // as marchedSettings() leads the settings' (valid until the next call).
+  std::span<const WeatherRegion> marchedRegions(const FrameInputs& in, const TemporalFrame& frame);
   // Tests: the look marched as it is, without the lead.
   void leadTheLook(bool on) { leadTheLook_ = on; }
 
@@ -113,6 +118,8 @@ class TemporalState {
   glm::dvec2 windDisplacement_{0.0};
   Settings settings_{};
   PaintedWeather painted_;
+  std::vector<WeatherRegion> regions_;         // the history's frame's
+  std::vector<WeatherRegion> marchedRegions_;  // marchedRegions()'s
 };
 
 }  // namespace clouds::detail

@@ -1,6 +1,7 @@
 #include "uniforms.h"
 
 #include "temporal_state.h"
+#include "weather_regions.h"
 #include "wind_displacement.h"
 
 #include <algorithm>
@@ -109,8 +110,8 @@ void setWeatherCells(shader::CloudUniforms& u, const Settings& s) {
       weatherTexel * float(shader::kWeatherMapSize / shader::kWeatherMaxCoarseSize);
 }
 
-void setDensity(shader::CloudUniforms& u, const Settings& s) {
-  u.extinctionPerMetre = s.extinctionPerMetre * s.densityMultiplier;
+void setDensity(shader::CloudUniforms& u, const FrameInputs& in, const Settings& s) {
+  setWeatherRegions(u, in, s);  // the extinction, and the regions' look about it
   u.coverage = s.coverage;
   u.cloudType = s.cloudType;
   u.typeVariation = s.typeVariation;
@@ -292,7 +293,7 @@ shader::CloudUniforms buildUniforms(const FrameInputs& in, const Settings& s,
   setNoisePlacement(u, in, s);
   u.noiseFootprintPerMetre = noiseFootprintPerMetre(in, s, context.fullExtent);
   setWeatherCells(u, s);
-  setDensity(u, s);
+  setDensity(u, in, s);
   setScattering(u, s);
   setMarch(u, s, context);
   setTiles(u, context);

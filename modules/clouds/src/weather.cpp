@@ -6,6 +6,9 @@
 #include <iterator>
 #include <sstream>
 
+#include "cloud_weather_regions.h"
+#include "weather_regions.h"
+
 namespace clouds {
 namespace {
 
@@ -119,6 +122,35 @@ Settings withWeather(Settings s, const WeatherState& w) {
   s.skewMetres = w.skewMetres;
   s.windShearDegrees = w.windShearDegrees;
   return s;
+}
+
+float weatherRegionStrength(const WeatherRegion& region, glm::dvec2 xzMetres) {
+  // The shaders' own function, with the column at the uniforms' origin.
+  FrameInputs at;
+  at.cameraPosition = glm::dvec3(xzMetres.x, 0.0, xzMetres.y);
+  at.weatherRegions = std::span(&region, 1);
+  shader::CloudUniforms u{};
+  detail::setWeatherRegions(u, at, Settings{});
+  const shader::WeatherRegionUniform& r = u.weatherRegions[0];
+  return shader::regionStrength(shader::regionCoreDistance(glm::vec2(0.0f), r), r);
+}
+
+WeatherState weatherAt(const WeatherState& surrounding, std::span<const WeatherRegion> regions,
+                       std::span<const WeatherState> states, glm::dvec2 xzMetres) {
+  WeatherState weather = surrounding;
+  for (std::size_t i = 0; i < std::min(regions.size(), states.size()); ++i) {
+    const float strength = weatherRegionStrength(regions[i], xzMetres);
+    if (strength > 0.0f) weather = blendWeather(weather, states[i], strength);
+  }
+  return weather;
+}
+
+WeatherRegion withWeather(WeatherRegion region, const WeatherState& state) {
+  region.coverage = state.coverage;
+  region.cloudType = state.cloudType;
+  region.densityMultiplier = state.densityMultiplier;
+  region.anvilBias = state.anvilBias;
+  return region;
 }
 
 std::string validateWeatherState(const WeatherState& w) {

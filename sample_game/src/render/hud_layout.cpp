@@ -3,6 +3,7 @@
 #include <imgui.h>
 
 #include <cmath>
+#include <optional>
 
 #include "clouds/ecs/cloud_components.h"
 #include "clouds/ecs/frame_budget.h"
@@ -54,17 +55,34 @@ void fullText(ecs::World& world, std::span<const gfx::TimedScope> gpuTimings) {
     ImGui::Text("governor: %s, judged %.1f ms, %llu changes", governor->reason,
                 governor->judgedMilliseconds, static_cast<unsigned long long>(governor->changes));
   }
-  world.view<const clouds::ecs::CloudWeather>().each([&](const clouds::ecs::CloudWeather& w) {
-    const clouds::WeatherPhase phase =
-        w.timeline.phaseAt(world.ctx().get<ecs::FrameTime>().elapsedSeconds);
+  // The weather's state now (and each region's, with how much of it holds at the camera).
+  const auto* time = world.ctx().tryGet<ecs::FrameTime>();
+  const double now = time ? time->elapsedSeconds : 0.0;
+  const auto showPhase = [&](const std::string& label, const clouds::WeatherTimeline& timeline,
+                             const std::vector<std::string>& names, const char* suffix) {
+    const clouds::WeatherPhase phase = timeline.phaseAt(now);
     const auto name = [&](std::size_t key) {
-      return key < w.keyNames.size() ? w.keyNames[key].c_str() : "?";
+      return key < names.size() ? names[key].c_str() : "?";
     };
     if (phase.from == phase.to) {
-      ImGui::Text("weather: %s", name(phase.from));
+      ImGui::Text("%s: %s%s", label.c_str(), name(phase.from), suffix);
     } else {
-      ImGui::Text("weather: %s -> %s (%.0f%%)", name(phase.from), name(phase.to),
-                  100.0 * double(phase.blend));
+      ImGui::Text("%s: %s -> %s (%.0f%%)%s", label.c_str(), name(phase.from), name(phase.to),
+                  100.0 * double(phase.blend), suffix);
+    }
+  };
+  std::optional<glm::dvec3> camera;
+  world.view<const render::Camera>().each([&](const render::Camera& c) { camera = c.position; });
+  world.view<const clouds::ecs::CloudWeather>().each([&](const clouds::ecs::CloudWeather& w) {
+    showPhase("weather", w.timeline, w.keyNames, "");
+    for (const clouds::ecs::RegionalWeather& r : w.regions) {
+      char here[32] = "";
+      if (camera) {
+        std::snprintf(here, sizeof(here), ", %.0f%% here",
+                      100.0 * double(clouds::weatherRegionStrength(
+                                  r.place, glm::dvec2(camera->x, camera->z))));
+      }
+      showPhase("  " + r.name, r.timeline, r.keyNames, here);
     }
   });
   world.view<const TimeOfDay>().each([&](const TimeOfDay& t) {

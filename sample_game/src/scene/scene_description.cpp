@@ -236,7 +236,7 @@ ExposureDescription readExposure(const JsonReader& r) {
 // A storm in `clouds`: its cells given, or found where the clouds' weather holds the most
 // cumulonimbus around the camera.
 // With changing weather the storm strikes at its states' rates, and its cells are found under
-// the state that strikes most.
+// the states that strike most (the regions' too).
 LightningDescription readLightning(const JsonReader& r, const CloudDescription& clouds,
                                    const std::optional<WeatherDescription>& weather,
                                    const CameraDescription& camera) {
@@ -265,9 +265,12 @@ LightningDescription readLightning(const JsonReader& r, const CloudDescription& 
     }
     const glm::dvec2 centre(camera.position.x, camera.position.z);
     const clouds::Settings stormy =
-        weather ? clouds::withWeather(clouds.settings, weather->stormiest()) : clouds.settings;
-    s.cells =
-        clouds::ecs::stormCellsFromWeather(stormy, clouds.noiseSeed, centre, within, count, radius);
+        weather ? clouds::withWeather(clouds.settings, weather->schedule.stormiest())
+                : clouds.settings;
+    const std::vector<clouds::WeatherRegion> regions =
+        weather ? weather->stormiestRegions() : std::vector<clouds::WeatherRegion>{};
+    s.cells = clouds::ecs::stormCellsFromWeather(stormy, clouds.noiseSeed, centre, within, count,
+                                                 radius, regions);
     if (s.cells.empty()) {
       r.fail("cellsFromWeather",
              "no cumulonimbus within " + std::to_string(within) +

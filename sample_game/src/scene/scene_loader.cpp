@@ -219,9 +219,12 @@ void populateScene(ecs::App& app, const SceneDescription& scene,
                                        scene.clouds->weatherMap, heroClouds.assets});
     // Changing weather, as data: the layer's look follows its timeline on the game clock.
     if (scene.weather) {
-      world.emplace<clouds::ecs::CloudWeather>(
-          layer,
-          clouds::ecs::CloudWeather{scene.weather->timeline(), scene.weather->scheduleStates});
+      clouds::ecs::CloudWeather weather{
+          scene.weather->schedule.timeline(), scene.weather->schedule.states, {}};
+      for (const RegionDescription& r : scene.weather->regions) {
+        weather.regions.push_back({r.name, r.place, r.schedule.timeline(), r.schedule.states});
+      }
+      world.emplace<clouds::ecs::CloudWeather>(layer, std::move(weather));
     }
     // Hero clouds, as data: each an entity placing one of the layer's assets.
     for (const PlacedHeroCloud& placed : heroClouds.placements) {

@@ -58,29 +58,107 @@ NamedWeatherState readState(const JsonReader& r, const std::string& name,
   return named;
 }
 
+// The state a key or region names: one of the scene's `states`, or a built-in one.
+clouds::WeatherState namedState(const JsonReader& r, const char* field, const std::string& name,
+                                const std::vector<NamedWeatherState>& states,
+                                double layerWindDegrees) {
+  const auto own = std::find_if(states.begin(), states.end(),
+                                [&](const NamedWeatherState& s) { return s.name == name; });
+  if (own != states.end()) return own->state;
+  clouds::WeatherPreset preset{};
+  if (!clouds::parseWeatherPreset(name, &preset)) {
+    r.fail(field, "unknown state \"" + name +
+                      "\": a built-in one (sparse, cloudy, overcast, stormy) or one of "
+                      "\"states\"");
+  }
+  return builtIn(preset, layerWindDegrees);
+}
+
+// The keys of a "schedule" in `r` (and its "repeat"), each naming a built-in state or one of
+// `states`.
+ScheduleDescription readSchedule(const JsonReader& r, const std::vector<NamedWeatherState>& states,
+                                 double layerWindDegrees) {
+  ScheduleDescription d;
+  const std::vector<JsonReader> keys = r.objects("schedule");
+  if (keys.empty()) r.fail("schedule", "at least one state");
+  for (const JsonReader& key : keys) {
+    const std::string name = key.string("state");
+    clouds::WeatherKey k;
+    k.state = namedState(key, "state", name, states, layerWindDegrees);
+    k.holdSeconds = key.number("holdSeconds", 0.0, 1e7, k.holdSeconds);
+    k.transitionSeconds = key.number("transitionSeconds", 0.0, 1e7, k.transitionSeconds);
+    key.finish();
+    d.states.push_back(name);
+    d.keys.push_back(k);
+  }
+  d.repeat = r.boolean("repeat", d.repeat);
+  std::string error;
+  if (!clouds::WeatherTimeline::schedule(d.keys, d.repeat, &error)) r.fail("schedule", error);
+  return d;
+}
+
+RegionDescription readRegion(const JsonReader& r, const std::vector<NamedWeatherState>& states,
+                             double layerWindDegrees) {
+  RegionDescription d;
+  d.name = r.string("name");
+  clouds::WeatherRegion& p = d.place;
+  const glm::dvec2 centre = r.vec2("centre", -1e7, 1e7);
+  p.centreMetres = centre;
+  if (r.has("halfSides")) p.halfSidesMetres = glm::vec2(r.vec2("halfSides", 0.0, 1e7));
+  p.headingDegrees = float(r.number("headingDegrees", -360.0, 360.0, p.headingDegrees));
+  p.radiusMetres = float(r.number("radiusMetres", 0.0, 1e7, p.radiusMetres));
+  p.blendMetres = float(r.number("blendMetres", 100.0, 1e7, p.blendMetres));
+  if (r.has("state") == r.has("schedule")) {
+    r.fail("state", "a region needs either a state or a schedule");
+  }
+  if (r.has("state")) {
+    const std::string name = r.string("state");
+    d.schedule.states = {name};
+    d.schedule.keys = {
+        clouds::WeatherKey{namedState(r, "state", name, states, layerWindDegrees), 60.0, 0.0}};
+    d.schedule.repeat = false;
+    d.steady = true;
+  } else {
+    d.schedule = readSchedule(r, states, layerWindDegrees);
+  }
+  r.finish();
+  return d;
+}
+
 }  // namespace
 
-clouds::WeatherTimeline WeatherDescription::timeline() const {
+clouds::WeatherTimeline ScheduleDescription::timeline() const {
   std::string error;
   const std::optional<clouds::WeatherTimeline> t =
-      clouds::WeatherTimeline::schedule(schedule, repeat, &error);
+      clouds::WeatherTimeline::schedule(keys, repeat, &error);
   if (!t) throw engine::Error("weather: " + error);
   return *t;
 }
 
-bool WeatherDescription::strikes() const {
-  return std::any_of(schedule.begin(), schedule.end(), [](const clouds::WeatherKey& key) {
-    return key.state.lightningStrikesPerMinute > 0.0f;
-  });
-}
-
-clouds::WeatherState WeatherDescription::stormiest() const {
-  return std::max_element(schedule.begin(), schedule.end(),
+clouds::WeatherState ScheduleDescription::stormiest() const {
+  return std::max_element(keys.begin(), keys.end(),
                           [](const clouds::WeatherKey& a, const clouds::WeatherKey& b) {
                             return a.state.lightningStrikesPerMinute <
                                    b.state.lightningStrikesPerMinute;
                           })
       ->state;
+}
+
+bool WeatherDescription::strikes() const {
+  const auto strikes = [](const ScheduleDescription& s) {
+    return s.stormiest().lightningStrikesPerMinute > 0.0f;
+  };
+  return strikes(schedule) ||
+         std::any_of(regions.begin(), regions.end(),
+                     [&](const RegionDescription& r) { return strikes(r.schedule); });
+}
+
+std::vector<clouds::WeatherRegion> WeatherDescription::stormiestRegions() const {
+  std::vector<clouds::WeatherRegion> places;
+  for (const RegionDescription& r : regions) {
+    places.push_back(clouds::withWeather(r.place, r.schedule.stormiest()));
+  }
+  return places;
 }
 
 WeatherDescription readWeather(const JsonReader& r, const clouds::Settings& layer,
@@ -97,37 +175,43 @@ WeatherDescription readWeather(const JsonReader& r, const clouds::Settings& laye
     }
     states.finish();
   }
-  const std::vector<JsonReader> keys = r.objects("schedule");
-  if (keys.empty()) r.fail("schedule", "at least one state");
-  for (const JsonReader& key : keys) {
-    const std::string name = key.string("state");
-    clouds::WeatherKey k;
-    clouds::WeatherPreset preset{};
-    const auto own = std::find_if(d.states.begin(), d.states.end(),
-                                  [&](const NamedWeatherState& s) { return s.name == name; });
-    if (own != d.states.end()) {
-      k.state = own->state;
-    } else if (clouds::parseWeatherPreset(name, &preset)) {
-      k.state = builtIn(preset, layerWindDegrees);
-    } else {
-      key.fail("state", "unknown state \"" + name +
-                            "\": a built-in one (sparse, cloudy, overcast, stormy) or one of "
-                            "\"states\"");
+  if (r.has("regions")) {
+    const std::vector<JsonReader> regions = r.objects("regions");
+    if (regions.empty()) r.fail("regions", "at least one region, or no \"regions\"");
+    if (regions.size() > clouds::kMaxWeatherRegions) {
+      r.fail("regions", "at most " + std::to_string(clouds::kMaxWeatherRegions) + " regions");
     }
-    k.holdSeconds = key.number("holdSeconds", 0.0, 1e7, k.holdSeconds);
-    k.transitionSeconds = key.number("transitionSeconds", 0.0, 1e7, k.transitionSeconds);
-    key.finish();
-    d.scheduleStates.push_back(name);
-    d.schedule.push_back(k);
+    for (const JsonReader& region : regions) {
+      d.regions.push_back(readRegion(region, d.states, layerWindDegrees));
+    }
   }
-  d.repeat = r.boolean("repeat", d.repeat);
+  d.ownSchedule = r.has("schedule") || d.regions.empty();
+  if (d.ownSchedule) {
+    d.schedule = readSchedule(r, d.states, layerWindDegrees);
+  } else {
+    d.schedule.keys = {clouds::WeatherKey{clouds::weatherOf(layer), 60.0, 0.0}};
+    d.schedule.states = {"the layer's"};
+    d.schedule.repeat = false;
+    if (r.has("repeat")) r.fail("repeat", "a schedule's: there is none");
+  }
   r.finish();
-  std::string error;
-  if (!clouds::WeatherTimeline::schedule(d.schedule, d.repeat, &error)) {
-    r.fail("schedule", error);
-  }
   return d;
 }
+
+namespace {
+
+void addSchedule(json& j, const ScheduleDescription& s) {
+  json keys = json::array();
+  for (std::size_t i = 0; i < s.keys.size(); ++i) {
+    keys.push_back({{"state", s.states[i]},
+                    {"holdSeconds", s.keys[i].holdSeconds},
+                    {"transitionSeconds", s.keys[i].transitionSeconds}});
+  }
+  j["schedule"] = keys;
+  j["repeat"] = s.repeat;
+}
+
+}  // namespace
 
 json weatherJson(const WeatherDescription& weather) {
   json states = json::object();
@@ -145,14 +229,28 @@ json weatherJson(const WeatherDescription& weather) {
                             {"shearDegrees", double(w.windShearDegrees)}}},
                           {"lightningStrikesPerMinute", double(w.lightningStrikesPerMinute)}};
   }
-  json schedule = json::array();
-  for (std::size_t i = 0; i < weather.schedule.size(); ++i) {
-    schedule.push_back({{"state", weather.scheduleStates[i]},
-                        {"holdSeconds", weather.schedule[i].holdSeconds},
-                        {"transitionSeconds", weather.schedule[i].transitionSeconds}});
-  }
-  json j = {{"schedule", schedule}, {"repeat", weather.repeat}};
+  json j = json::object();
+  if (weather.ownSchedule) addSchedule(j, weather.schedule);
   if (!weather.states.empty()) j["states"] = states;
+  if (!weather.regions.empty()) {
+    json regions = json::array();
+    for (const RegionDescription& r : weather.regions) {
+      const clouds::WeatherRegion& p = r.place;
+      json region = {{"name", r.name},
+                     {"centre", {p.centreMetres.x, p.centreMetres.y}},
+                     {"halfSides", {double(p.halfSidesMetres.x), double(p.halfSidesMetres.y)}},
+                     {"headingDegrees", double(p.headingDegrees)},
+                     {"radiusMetres", double(p.radiusMetres)},
+                     {"blendMetres", double(p.blendMetres)}};
+      if (r.steady) {
+        region["state"] = r.schedule.states.front();
+      } else {
+        addSchedule(region, r.schedule);
+      }
+      regions.push_back(region);
+    }
+    j["regions"] = regions;
+  }
   return j;
 }
 

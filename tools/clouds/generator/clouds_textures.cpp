@@ -5,20 +5,28 @@
 // "weatherMap").
 //
 // Usage: clouds_textures --out DIR [--seed N] [--time SECONDS] [--state NAME]...
+//                        [--around NAME] [--region NAME,X,Z,RADIUS,BLEND]...
 //   --seed   the module's CreateInfo::noiseSeed (default 1)
 //   --time   the clock of the weather map (FrameInputs::timeSeconds, default 0)
 //   --state  a built-in weather state to write the marched weather of (sparse, cloudy,
 //            overcast, stormy; repeatable; default all four)
+//   --region a weather region (clouds::WeatherRegion, a disc) of a built-in state centred at
+//            world (X, Z) m, its look held within RADIUS m and blended out over BLEND m more
+//            (repeatable, applied in order, at most clouds::kMaxWeatherRegions)
+//   --around the built-in state around the regions (default: the module's default look)
 // Writes into DIR: shape_noise, detail_noise, hero_noise (volumes as atlases of z slices, left
-// to right then top to bottom), curl_noise, weather_map (what to paint over) and
-// weather_<state> (the map as the march reads it under the state), each .png and .exr, and
-// textures.json describing them.
+// to right then top to bottom), curl_noise, weather_map (what to paint over),
+// weather_<state> (the map as the march reads it under the state) and, with regions,
+// weather_regions (the tile at the world's origin as the march reads it under them), each .png
+// and .exr, and textures.json describing them.
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <functional>
+#include <optional>
 #include <string>
 #include <thread>
 #include <vector>
@@ -39,12 +47,52 @@ struct Options {
   std::uint32_t seed = 1;
   double timeSeconds = 0.0;
   std::vector<clouds::WeatherPreset> states;
+  std::optional<clouds::WeatherPreset> around;
+  std::vector<clouds::WeatherRegion> regions;
 };
 
 [[noreturn]] void usageError(const std::string& message) {
   throw engine::Error("clouds_textures: " + message +
                       "\nusage: clouds_textures --out DIR [--seed N] [--time SECONDS] "
-                      "[--state sparse|cloudy|overcast|stormy]...");
+                      "[--state sparse|cloudy|overcast|stormy]... [--around STATE] "
+                      "[--region STATE,X,Z,RADIUS,BLEND]...");
+}
+
+clouds::WeatherPreset statePreset(const std::string& flag, const std::string& name) {
+  clouds::WeatherPreset preset{};
+  if (!clouds::parseWeatherPreset(name, &preset)) {
+    usageError(flag + " " + name + ": not sparse, cloudy, overcast or stormy");
+  }
+  return preset;
+}
+
+// "STATE,X,Z,RADIUS,BLEND": a disc of a built-in state's look.
+clouds::WeatherRegion parseRegion(const std::string& value) {
+  const std::size_t comma = value.find(',');
+  const std::string name = value.substr(0, comma);
+  double numbers[4] = {};
+  std::size_t at = comma;
+  for (double& number : numbers) {
+    if (at == std::string::npos) usageError("--region " + value + ": not STATE,X,Z,RADIUS,BLEND");
+    const char* start = value.c_str() + at + 1;
+    char* end = nullptr;
+    number = std::strtod(start, &end);
+    if (end == start || !std::isfinite(number) || (*end != ',' && *end != '\0')) {
+      usageError("--region " + value + ": not STATE,X,Z,RADIUS,BLEND");
+    }
+    at = *end == ',' ? std::size_t(end - value.c_str()) : std::string::npos;
+  }
+  if (at != std::string::npos) usageError("--region " + value + ": not STATE,X,Z,RADIUS,BLEND");
+  clouds::WeatherRegion region;
+  region.centreMetres = {numbers[0], numbers[1]};
+  region.radiusMetres = float(numbers[2]);
+  region.blendMetres = float(numbers[3]);
+  if (!(numbers[2] >= 0.0 && numbers[2] <= 1e7) || !(numbers[3] >= 100.0 && numbers[3] <= 1e7) ||
+      std::abs(numbers[0]) > 1e7 || std::abs(numbers[1]) > 1e7) {
+    usageError("--region " + value +
+               ": X and Z within 1e7 m, RADIUS in [0, 1e7] m, BLEND in [100, 1e7] m");
+  }
+  return clouds::withWeather(region, clouds::weatherPreset(statePreset("--region", name)));
 }
 
 Options parseOptions(int argc, char** argv) {
@@ -69,16 +117,20 @@ Options parseOptions(int argc, char** argv) {
         usageError("--time " + value + ": not a number of seconds in [0, 1e9]");
       }
     } else if (flag == "--state") {
-      clouds::WeatherPreset preset{};
-      if (!clouds::parseWeatherPreset(value, &preset)) {
-        usageError("--state " + value + ": not sparse, cloudy, overcast or stormy");
+      options.states.push_back(statePreset(flag, value));
+    } else if (flag == "--around") {
+      options.around = statePreset(flag, value);
+    } else if (flag == "--region") {
+      if (options.regions.size() == clouds::kMaxWeatherRegions) {
+        usageError("--region: at most " + std::to_string(clouds::kMaxWeatherRegions) + " regions");
       }
-      options.states.push_back(preset);
+      options.regions.push_back(parseRegion(value));
     } else {
       usageError("unknown option " + flag);
     }
   }
   if (options.out.empty()) usageError("--out DIR is required");
+  if (options.around && options.regions.empty()) usageError("--around: around no --region");
   if (options.states.empty()) {
     options.states.assign(std::begin(clouds::kWeatherPresets), std::end(clouds::kWeatherPresets));
   }
@@ -187,21 +239,36 @@ void generate(const Options& options) {
     }).write(out / ("weather_" + name));
     stateList += (stateList.empty() ? "\"" : ", \"") + name + "\"";
   }
+  if (!options.regions.empty()) {
+    const clouds::Settings around =
+        options.around ? clouds::withWeather(defaults, clouds::weatherPreset(*options.around))
+                       : defaults;
+    // Texel centres of the tile whose corner is the world's origin, x along u, z along v.
+    const double texelMetres = double(defaults.weatherTileMetres) / clouds::kWeatherMapTexels;
+    squareMap(clouds::kWeatherMapTexels, [&](std::size_t i) {
+      const glm::dvec2 xz(double(i % clouds::kWeatherMapTexels) + 0.5,
+                          double(i / clouds::kWeatherMapTexels) + 0.5);
+      return clouds::weatherAsMarched(weather[i], around, options.regions, xz * texelMetres);
+    }).write(out / "weather_regions");
+  }
 
   std::ofstream manifest(out / "textures.json");
-  manifest << "{\n  \"seed\": " << seed << ",\n  \"timeSeconds\": " << options.timeSeconds
-           << ",\n  \"weatherPhase\": " << phase << ",\n"
-           << "  \"shape_noise\": {\"size\": 128, \"atlasColumns\": 16, \"channels\": "
-              "\"RGB the shape value\"},\n"
-           << "  \"detail_noise\": {\"size\": 32, \"atlasColumns\": 8, \"channels\": "
-              "\"RGB the detail value\"},\n"
-           << "  \"hero_noise\": {\"size\": 128, \"atlasColumns\": 16, \"channels\": "
-              "\"RG curly alligator low/high, BA alligator low/high\"},\n"
-           << "  \"curl_noise\": {\"size\": 128, \"channels\": \"RG 0.5 + 0.5 curl\"},\n"
-           << "  \"weather_map\": {\"size\": 512, \"channels\": \"R coverage, G type, B density "
-              "(raw: what the module generates and a painted map holds)\"},\n"
-           << "  \"weather_states\": [" << stateList
-           << "],\n  \"weather_state_channels\": \"R coverage, G type, B density as marched\"\n}\n";
+  manifest
+      << "{\n  \"seed\": " << seed << ",\n  \"timeSeconds\": " << options.timeSeconds
+      << ",\n  \"weatherPhase\": " << phase << ",\n"
+      << "  \"shape_noise\": {\"size\": 128, \"atlasColumns\": 16, \"channels\": "
+         "\"RGB the shape value\"},\n"
+      << "  \"detail_noise\": {\"size\": 32, \"atlasColumns\": 8, \"channels\": "
+         "\"RGB the detail value\"},\n"
+      << "  \"hero_noise\": {\"size\": 128, \"atlasColumns\": 16, \"channels\": "
+         "\"RG curly alligator low/high, BA alligator low/high\"},\n"
+      << "  \"curl_noise\": {\"size\": 128, \"channels\": \"RG 0.5 + 0.5 curl\"},\n"
+      << "  \"weather_map\": {\"size\": 512, \"channels\": \"R coverage, G type, B density "
+         "(raw: what the module generates and a painted map holds)\"},\n"
+      << "  \"weather_states\": [" << stateList
+      << "],\n  \"weather_state_channels\": \"R coverage, G type, B density as marched\",\n"
+      << "  \"weather_regions\": " << options.regions.size()
+      << ",\n  \"weather_regions_tile\": \"x along u, z along v, from the world's origin\"\n}\n";
   if (!manifest) throw engine::Error(out.string() + "/textures.json: cannot write");
 }
 

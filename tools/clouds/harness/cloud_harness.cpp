@@ -176,6 +176,7 @@ clouds::FrameInputs CloudHarness::makeInputs(const CloudView& view, VkExtent2D e
   in.weatherView = view.weatherView;
   in.weatherBlendView = view.weatherBlendView;
   in.weatherBlend = view.weatherBlend;
+  in.weatherRegions = view.weatherRegions;
   in.skyView = view.skyView;
   in.aerialPerspective = view.aerialPerspective;
   in.terrain = view.terrain;

@@ -67,6 +67,8 @@ struct CloudView {
   // This frame's hero clouds (FrameInputs::heroClouds), of the assets given to the harness's
   // context (Context::setHeroCloudAssets()).
   std::vector<clouds::HeroCloud> heroClouds;
+  // This frame's weather regions (FrameInputs::weatherRegions).
+  std::vector<clouds::WeatherRegion> weatherRegions;
 };
 
 glm::vec3 sunDirection(const CloudView& view);

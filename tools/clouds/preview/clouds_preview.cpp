@@ -2,7 +2,9 @@
 // writes a preview PNG (development aid; not a test).
 // Usage: clouds_preview OUT.png [width=320 height=180 frames=1 altitude=300 pitch=10 yaw=0
 //        sunElevation=35 sunAzimuth=200 coverage=... extinction=... skew=... shear=... quality=0..4
-//        reference=0 compare=0 ground=0 ...]
+//        reference=0 compare=0 ground=0 regions=0..8 ...]
+// regions=N: N weather regions, Stormy discs of 3 km (blended over 3 km more) 8 km apart in a
+// row across the view 10 km ahead (the first straight ahead), the rest of the sky as set.
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
@@ -12,6 +14,7 @@
 #include <vector>
 
 #include "cloud_harness.h"
+#include "clouds/weather.h"
 #include "engine/core/error.h"
 #include "engine/gfx/instance.h"
 
@@ -89,6 +92,19 @@ int main(int argc, char** argv) {
       if (kv.count("referenceLightSteps"))
         s.lightSteps = std::uint32_t(get("referenceLightSteps", 24));
     }
+    const glm::vec3 ahead = clouds::tools::forwardDirection(view);
+    const glm::dvec2 forward = glm::normalize(glm::dvec2(ahead.x, ahead.z));
+    for (int i = 0; i < int(get("regions", 0)); ++i) {
+      clouds::WeatherRegion region;
+      const double across = 8000.0 * ((i + 1) / 2) * (i % 2 ? 1.0 : -1.0);
+      region.centreMetres = glm::dvec2(view.position.x, view.position.z) + 10000.0 * forward +
+                            across * glm::dvec2(-forward.y, forward.x);
+      region.radiusMetres = 3000.0f;
+      region.blendMetres = 3000.0f;
+      view.weatherRegions.push_back(
+          clouds::withWeather(region, clouds::weatherPreset(clouds::WeatherPreset::Stormy)));
+    }
+    s.weatherRegions = static_cast<std::uint32_t>(view.weatherRegions.size());
     const auto start = std::chrono::steady_clock::now();
     // average=N: the mean of N frames after a cut (the Reference's supersampling), else the
     // last of `frames` frames.

@@ -189,6 +189,11 @@ void CloudFeature::placeHeroClouds(clouds::FrameInputs& inputs) {
   inputs.heroClouds = heroClouds_;
 }
 
+void CloudFeature::placeWeatherRegions(clouds::FrameInputs& inputs) {
+  weatherRegions_ = currentWeatherRegions(world_);
+  inputs.weatherRegions = weatherRegions_;
+}
+
 void CloudFeature::dispatch(const HostFrame& host) {
   HostFrame frame = host;
   frame.weatherView = weatherMap_ ? weatherMap_->view() : VK_NULL_HANDLE;
@@ -199,6 +204,7 @@ void CloudFeature::dispatch(const HostFrame& host) {
   bolts_ = lightningBolts(world_, settings_.lightningBoltSegments);
   inputs.lightningBolts = bolts_;
   placeHeroClouds(inputs);
+  placeWeatherRegions(inputs);
   dispatched_ = context_->dispatch(inputs, settings_, &error);
   if (dispatched_) {
     world_.ctx().get<CloudStatus>().lastError.clear();
@@ -237,6 +243,7 @@ void CloudFeature::dispatchShadowMap(const HostFrame& host, fxcontracts::ecs::Cl
   clouds::Error error;
   clouds::FrameInputs inputs = cloudFrameInputs(world_, frame);
   placeHeroClouds(inputs);
+  placeWeatherRegions(inputs);
   if (context_->dispatchShadowMap(inputs, settings_, &error)) {
     const clouds::ShadowMapParameters& p = context_->outputs().shadowParameters;
     static_assert(sizeof(p) == sizeof(shadow.parameters));

@@ -55,6 +55,8 @@ class CloudFeature final : public engine::render::RenderFeature {
  private:
   // This frame's hero clouds into `inputs` (kept in heroClouds_, which the span points at).
   void placeHeroClouds(clouds::FrameInputs& inputs);
+  // This frame's weather regions into `inputs` (kept in weatherRegions_).
+  void placeWeatherRegions(clouds::FrameInputs& inputs);
   void dispatch(const HostFrame& host);
   // Fills `shadow`'s per-frame values.
   void dispatchShadowMap(const HostFrame& host, fxcontracts::ecs::CloudShadow& shadow);
@@ -71,13 +73,14 @@ class CloudFeature final : public engine::render::RenderFeature {
   std::uint32_t framesInFlight_;
   std::unique_ptr<engine::gfx::Image> weatherMap_;  // the layer's painted map, if any
   std::unique_ptr<clouds::Context> context_;
-  clouds::Settings settings_;                        // this frame's, decided in prepare()
-  std::vector<clouds::Quality> preparedAhead_;       // the governed presets prepared
-  VkExtent2D preparedAheadExtent_{0, 0};             // at this extent
-  std::vector<clouds::LightningFlash> flashes_;      // this frame's (FrameInputs points at them)
-  std::vector<clouds::LightningBoltSegment> bolts_;  // likewise
-  std::vector<clouds::HeroCloud> heroClouds_;        // likewise
-  std::optional<std::uint64_t> heroFrame_;           // the frame heroClouds_ were chosen for
+  clouds::Settings settings_;                          // this frame's, decided in prepare()
+  std::vector<clouds::Quality> preparedAhead_;         // the governed presets prepared
+  VkExtent2D preparedAheadExtent_{0, 0};               // at this extent
+  std::vector<clouds::LightningFlash> flashes_;        // this frame's (FrameInputs points at them)
+  std::vector<clouds::LightningBoltSegment> bolts_;    // likewise
+  std::vector<clouds::HeroCloud> heroClouds_;          // likewise
+  std::vector<clouds::WeatherRegion> weatherRegions_;  // likewise
+  std::optional<std::uint64_t> heroFrame_;             // the frame heroClouds_ were chosen for
   bool hasHeroClouds_ = false;  // the layer has hero cloud assets (loaded into the context)
   bool lifecycleProblemLogged_ = false;  // a bad HeroCloudLifecycle is worth seeing once
   clouds::Outputs imported_;             // the outputs the graph imported

@@ -20,7 +20,7 @@ double clockSeconds(engine::ecs::World& world) {
 }
 
 // The layer's settings under the weather now, with room for a storm's flashes (and so the
-// glow's code).
+// glow's code) and the weather's regions.
 clouds::Settings layerSettings(engine::ecs::World& world) {
   clouds::Settings settings;
   world.view<const CloudLayer>().each([&](const CloudLayer& layer) { settings = layer.settings; });
@@ -31,6 +31,11 @@ clouds::Settings layerSettings(engine::ecs::World& world) {
     settings.lightningFlashes = kLightningFlashes;
     settings.lightningBoltSegments = kLightningBoltSegments;
   });
+  // Room for the weather's regions (and so their code) only in a scene that has some.
+  world.view<const CloudLayer, const CloudWeather>().each(
+      [&](const CloudLayer&, const CloudWeather& w) {
+        settings.weatherRegions = static_cast<std::uint32_t>(w.regions.size());
+      });
   return settings;
 }
 
@@ -42,6 +47,14 @@ std::optional<clouds::WeatherState> currentWeather(engine::ecs::World& world) {
   world.view<const CloudLayer, const CloudWeather>().each(
       [&](const CloudLayer&, const CloudWeather& w) { weather = w.timeline.stateAt(now); });
   return weather;
+}
+
+std::vector<clouds::WeatherRegion> currentWeatherRegions(engine::ecs::World& world) {
+  std::vector<clouds::WeatherRegion> regions;
+  const double now = clockSeconds(world);
+  world.view<const CloudLayer, const CloudWeather>().each(
+      [&](const CloudLayer&, const CloudWeather& w) { regions = w.regionsAt(now); });
+  return regions;
 }
 
 clouds::Settings CloudQualityKnobs::appliedTo(clouds::Settings settings) const {

@@ -30,8 +30,7 @@ double uniform(std::uint64_t key, std::uint64_t stream) {
 }  // namespace
 
 std::vector<LightningStrike> strikesBetween(const LightningStorm& storm, double fromSeconds,
-                                            double toSeconds,
-                                            const clouds::WeatherTimeline* weather) {
+                                            double toSeconds, const CloudWeather* weather) {
   std::vector<LightningStrike> strikes;
   if (!(toSeconds > fromSeconds) || !std::isfinite(fromSeconds) || !std::isfinite(toSeconds)) {
     return strikes;
@@ -43,12 +42,15 @@ std::vector<LightningStrike> strikesBetween(const LightningStorm& storm, double 
   const auto first = static_cast<std::int64_t>(std::floor(fromSeconds / kSlotSeconds));
   const auto last = static_cast<std::int64_t>(std::floor(toSeconds / kSlotSeconds));
   for (std::size_t c = 0; c < storm.cells.size(); ++c) {
+    const glm::dvec2 column(storm.cells[c].positionMetres.x, storm.cells[c].positionMetres.z);
     for (std::int64_t slot = first; slot <= last; ++slot) {
       const std::uint64_t key =
           mix(mix(storm.seed) ^ mix(std::uint64_t(c) + 1)) ^ std::uint64_t(slot);
       const double perSlot =
-          weather ? chance(weather->stateAt(double(slot) * kSlotSeconds).lightningStrikesPerMinute)
-                  : stormChance;
+          weather
+              ? chance(
+                    weather->stateAt(double(slot) * kSlotSeconds, column).lightningStrikesPerMinute)
+              : stormChance;
       if (uniform(key, 0) >= perSlot) continue;
       LightningStrike s;
       s.startSeconds = (double(slot) + uniform(key, 1)) * kSlotSeconds;
@@ -171,7 +173,8 @@ std::vector<clouds::LightningBoltSegment> boltSegments(const LightningStrike& st
 std::vector<LightningCell> stormCellsFromWeather(const clouds::Settings& settings,
                                                  std::uint32_t noiseSeed, glm::dvec2 centreMetres,
                                                  double withinMetres, std::uint32_t count,
-                                                 float radiusMetres) {
+                                                 float radiusMetres,
+                                                 std::span<const clouds::WeatherRegion> regions) {
   struct Column {
     glm::dvec2 xz;
     double strength;
@@ -183,7 +186,8 @@ std::vector<LightningCell> stormCellsFromWeather(const clouds::Settings& setting
   for (int j = 0; j <= kSteps; ++j) {
     for (int i = 0; i <= kSteps; ++i) {
       const glm::dvec2 xz = centreMetres + withinMetres * (glm::dvec2(i, j) * (2.0 / kSteps) - 1.0);
-      const clouds::WeatherColumn w = clouds::proceduralWeatherAt(settings, noiseSeed, xz, 0.0);
+      const clouds::WeatherColumn w =
+          clouds::proceduralWeatherAt(settings, noiseSeed, xz, 0.0, regions);
       if (w.type < 0.75f || w.coverage < 0.5f) continue;
       columns.push_back({xz, double(w.coverage) * w.density * (w.type - 0.5)});
     }
@@ -225,9 +229,9 @@ bool installLightning(engine::ecs::World& world, engine::ecs::Scheduler& schedul
         auto& sent = w.events<LightningStrike>();
         std::vector<LightningStrike> started;
         // Changing weather sets the rate: storms start and stop striking with it.
-        const clouds::WeatherTimeline* weather = nullptr;
+        const CloudWeather* weather = nullptr;
         w.view<const CloudLayer, const CloudWeather>().each(
-            [&](const CloudLayer&, const CloudWeather& cw) { weather = &cw.timeline; });
+            [&](const CloudLayer&, const CloudWeather& cw) { weather = &cw; });
         w.view<const LightningStorm>().each([&](const LightningStorm& s) {
           const std::vector<LightningStrike> due = strikesBetween(s, from, now, weather);
           started.insert(started.end(), due.begin(), due.end());

@@ -409,6 +409,11 @@ struct Settings {
   // How many straight segments of lightning bolts (FrameInputs::lightningBolts) the output can
   // draw at once. 0: no bolt pipeline, pass or buffer; a frame's bolts must then be none.
   std::uint32_t lightningBoltSegments = 0;  // [0, 256]
+
+  // --- Weather regions (FrameInputs::weatherRegions) ------------------------------------------
+  // How many regions a frame may have. 0: no region code in any pipeline; a frame's regions
+  // must then be none. Each one compiled in costs every sample a little (regions or not).
+  std::uint32_t weatherRegions = 0;  // [0, 8]
 };
 
 // Quality presets, cheapest first; Reference is referenceSettings().
@@ -432,17 +437,44 @@ std::string validateSettings(const Settings& settings);
 // worth mentioning. Ground truth for accuracy-versus-cost.
 Settings referenceSettings(const Settings& base);
 
+// A place on the ground whose weather differs from the surrounding weather the Settings hold
+// (Schneider 2022's regional influence): a storm front over the mountains, fair skies over the
+// plains. The region's core is a rectangle (half sides 0: a point) grown by a rounding radius;
+// within it the region's look holds, and it eases (smoothstep) into the surrounding weather
+// over the blend distance beyond. Regions apply in the order given, each over what the ones
+// before it made. A region sets the look of the clouds over it (coverage, type, density,
+// anvils); the wind, skew, shear and erosion are the Settings' everywhere (the noise moves as
+// one field). clouds/weather.h's withWeather() sets a region's look from a WeatherState.
+struct WeatherRegion {
+  glm::dvec2 centreMetres{0.0};     // world (x, z), finite
+  glm::vec2 halfSidesMetres{0.0f};  // [0, 1e7] the core rectangle's half sides along its axes
+  float headingDegrees = 0.0f;      // finite: the rectangle's first axis, turned from world +x
+                                    //   towards -z (counter-clockwise seen from above)
+  float radiusMetres = 0.0f;        // [0, 1e7] the core: the rectangle grown by this
+  float blendMetres = 10000.0f;     // [100, 1e7] from the look at the core to the surroundings'
+  float coverage = 0.5f;            // Settings::coverage inside
+  float cloudType = 0.75f;          // Settings::cloudType inside
+  float densityMultiplier = 1.0f;   // Settings::densityMultiplier inside
+  float anvilBias = 0.0f;           // Settings::anvilBias inside
+
+  bool operator==(const WeatherRegion&) const = default;
+};
+inline constexpr std::uint32_t kMaxWeatherRegions = 8;  // FrameInputs::weatherRegions per frame
+
 // The weather over a world column as the march reads it from the procedural weather map (not
-// from a painted one), under `settings`: for hosts that place things by the weather (storm
-// cells where cumulonimbus is dense, ...). A pure function of its arguments; it evaluates the
-// map's function where the march filters its 512^2 texels, so it is as exact as a texel.
+// from a painted one), under `settings` and the frame's weather regions: for hosts that place
+// things by the weather (storm cells where cumulonimbus is dense, ...). A pure function of its
+// arguments; it evaluates the map's function where the march filters its 512^2 texels, so it
+// is as exact as a texel.
 struct WeatherColumn {
-  float coverage = 0.0f;  // [0, 1] the sky this column can fill (global coverage applied)
+  float coverage = 0.0f;  // [0, 1] the sky this column can fill (its coverage applied)
   float type = 0.0f;      // [0, 1] 0 stratus, 0.5 stratocumulus, 1 cumulus and cumulonimbus
-  float density = 0.0f;   // [0, 1] density scale
+  float density = 0.0f;   // [0, 1] the map's density scale
+  float densityMultiplier = 0.0f;  // the column's (Settings::densityMultiplier, or a region's)
 };
 WeatherColumn proceduralWeatherAt(const Settings& settings, std::uint32_t noiseSeed,
-                                  glm::dvec2 xzMetres, double timeSeconds);
+                                  glm::dvec2 xzMetres, double timeSeconds,
+                                  std::span<const WeatherRegion> regions = {});
 
 // A lightning flash the clouds glow with this frame (Nubis Evolved's glow term): the cloud
 // within `radiusMetres` of it glows with `radiance` times pow(1 - d / radius, 12) at distance
@@ -576,6 +608,11 @@ struct FrameInputs {
   VkImageView weatherBlendView = VK_NULL_HANDLE;
   VkImageLayout weatherBlendLayout = VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL;
   float weatherBlend = 0.0f;
+  // This frame's weather regions, at most kMaxWeatherRegions (the span's memory need only last
+  // through the call that takes these inputs). A region whose look eases over seconds, or that
+  // the camera flies into, keeps the temporal history; one that appears, vanishes or jumps
+  // drops it. None: the surrounding weather everywhere, and the march reads no region.
+  std::span<const WeatherRegion> weatherRegions;
 
   // This frame's lightning flashes, at most Settings::lightningFlashes (the span's memory need
   // only last through the call that takes these inputs).

@@ -9,6 +9,7 @@
 // Plain CPU code: no Vulkan, no threads. Each call makes one slice or one map, so a caller can
 // spread a volume over its own threads.
 #include <cstdint>
+#include <span>
 #include <vector>
 
 #include <glm/glm.hpp>
@@ -39,8 +40,10 @@ float proceduralWeatherPhase(const Settings& settings, double timeSeconds);
 // at v = 0 (world z = 0 of the tile): the map as the module generates it.
 std::vector<glm::vec4> proceduralWeatherMap(std::uint32_t noiseSeed, float phase);
 // A weather texel as the march reads it under `settings` (the weather state's coverage, type
-// and density applied): R coverage, G type, B density, A 1, each in [0, 1].
-glm::vec4 weatherAsMarched(glm::vec4 texel, const Settings& settings);
+// and density applied) and the regions over its world column `xzMetres`: R coverage, G type,
+// B the map's density (the column's multiplier aside: WeatherColumn), A 1, each in [0, 1].
+glm::vec4 weatherAsMarched(glm::vec4 texel, const Settings& settings,
+                           std::span<const WeatherRegion> regions = {}, glm::dvec2 xzMetres = {});
 
 // The byte an RGBA8 UNORM image stores for `value` (clamped to [0, 1], rounded to nearest).
 std::uint8_t storedUnorm8(float value);

@@ -56,6 +56,20 @@ bool parseWeatherPreset(std::string_view name, WeatherPreset* preset);
 WeatherState weatherOf(const Settings& settings);
 Settings withWeather(Settings settings, const WeatherState& state);
 
+// `region` with `state`'s look (coverage, type, density, anvils: what a region sets).
+WeatherRegion withWeather(WeatherRegion region, const WeatherState& state);
+
+// How much a region holds over a world column (x, z metres), [0, 1]: 1 in its core, eased to
+// 0 over its blend distance, as the march weighs it.
+float weatherRegionStrength(const WeatherRegion& region, glm::dvec2 xzMetres);
+
+// The weather over a world column: `surrounding`, with each region's state (states[i] for
+// regions[i]) blended over it in order by its strength there (blendWeather()), as the march
+// composes their looks. For a host's own uses of the whole state (a storm's strike rate where
+// its cells are); the module renders only the look fields of a region (clouds.h).
+WeatherState weatherAt(const WeatherState& surrounding, std::span<const WeatherRegion> regions,
+                       std::span<const WeatherState> states, glm::dvec2 xzMetres);
+
 // "" when every field is in range, else "WeatherState.<field> = <value>: <reason>" for the
 // first field at fault.
 std::string validateWeatherState(const WeatherState& state);

@@ -185,6 +185,31 @@ TEST(CloudsEcsAdapter, TheWeatherAtTheClockDecidesTheLook) {
   EXPECT_EQ(*in.windDisplacementMetres, weather.windDisplacementAt(20.0));
 }
 
+// The weather's regions at the clock: each place with its own timeline's look now.
+TEST(CloudsEcsAdapter, TheRegionsAtTheClockCarryTheirOwnWeather) {
+  AdapterWorld w;
+  EXPECT_TRUE(clouds::ecs::currentWeatherRegions(w.world).empty()) << "no weather, no regions";
+  const clouds::WeatherKey keys[] = {
+      {clouds::weatherPreset(clouds::WeatherPreset::Cloudy), 10.0, 20.0},
+      {clouds::weatherPreset(clouds::WeatherPreset::Stormy), 60.0, 0.0}};
+  clouds::WeatherRegion place;
+  place.centreMetres = {-3000.0, 12000.0};
+  place.halfSidesMetres = {9000.0f, 1000.0f};
+  clouds::ecs::CloudWeather weather{clouds::WeatherTimeline{}};
+  weather.regions.push_back(
+      {"front", place, *clouds::WeatherTimeline::schedule(keys, false, nullptr)});
+  w.world.view<clouds::ecs::CloudLayer>().each(
+      [&](engine::ecs::Entity layer, clouds::ecs::CloudLayer&) {
+        w.world.emplace<clouds::ecs::CloudWeather>(layer, weather);
+      });
+  w.world.ctx().get<engine::ecs::FrameTime>().elapsedSeconds = 20.0;
+  const std::vector<clouds::WeatherRegion> regions = clouds::ecs::currentWeatherRegions(w.world);
+  ASSERT_EQ(regions.size(), 1u);
+  EXPECT_EQ(regions[0], clouds::withWeather(place, weather.regions[0].timeline.stateAt(20.0)));
+  EXPECT_NE(regions[0].coverage, clouds::weatherPreset(clouds::WeatherPreset::Cloudy).coverage)
+      << "halfway into the storm";
+}
+
 TEST(CloudsEcsAdapter, TheSunReachesTheLayerThroughTheAirAndTheHostsHazeIsPassedOn) {
   AdapterWorld w;
   engine::render::Sun s;

@@ -153,11 +153,38 @@ TEST(Lightning, TheSystemSendsEachStrikeOnceAtAnyStepAndUptime) {
 
 // Changing weather sets the rate: a storm strikes only while the state strikes (Sparse for a
 // minute, then 20 s into Stormy), as deterministically at any frame rate; the system follows it.
+// A region of stormy weather strikes where it lies: of two cells 8 km apart under fair skies,
+// only the one in the region strikes, and it starts when the region's own schedule turns stormy.
+TEST(Lightning, OnlyTheCellsInAStormRegionStrike) {
+  const clouds::WeatherKey fair[] = {
+      {clouds::weatherPreset(clouds::WeatherPreset::Sparse), 60.0, 0.0}};
+  const clouds::WeatherKey building[] = {
+      {clouds::weatherPreset(clouds::WeatherPreset::Cloudy), 100.0, 20.0},
+      {clouds::weatherPreset(clouds::WeatherPreset::Stormy), 600.0, 0.0}};
+  clouds::WeatherRegion place;
+  place.centreMetres = {8000.0, 0.0};  // over the second cell
+  place.radiusMetres = 2000.0f;
+  place.blendMetres = 3000.0f;
+  clouds::ecs::CloudWeather weather{*clouds::WeatherTimeline::schedule(fair, false, nullptr)};
+  weather.regions.push_back(
+      {"front", place, *clouds::WeatherTimeline::schedule(building, false, nullptr)});
+  const auto strikes = clouds::ecs::strikesBetween(storm(), 0.0, 600.0, &weather);
+  ASSERT_GT(strikes.size(), 10u);
+  for (const LightningStrike& strike : strikes) {
+    EXPECT_EQ(strike.positionMetres.x, 8000.0) << "a strike under fair skies";
+    EXPECT_GT(strike.startSeconds, 100.0) << "a strike before the region's storm";
+  }
+  // Its state over each cell: the region's over the second, the fair sky's over the first.
+  EXPECT_EQ(weather.stateAt(200.0, {8000.0, 0.0}).lightningStrikesPerMinute,
+            clouds::weatherPreset(clouds::WeatherPreset::Stormy).lightningStrikesPerMinute);
+  EXPECT_EQ(weather.stateAt(200.0, {0.0, 0.0}), weather.timeline.stateAt(200.0));
+}
+
 TEST(Lightning, AStormStrikesWithTheWeather) {
   const clouds::WeatherKey keys[] = {
       {clouds::weatherPreset(clouds::WeatherPreset::Sparse), 60.0, 20.0},
       {clouds::weatherPreset(clouds::WeatherPreset::Stormy), 120.0, 20.0}};
-  const clouds::WeatherTimeline weather = *clouds::WeatherTimeline::schedule(keys, true, nullptr);
+  const clouds::ecs::CloudWeather weather{*clouds::WeatherTimeline::schedule(keys, true, nullptr)};
   const LightningStorm s = storm();
   const auto strikes = clouds::ecs::strikesBetween(s, 0.0, 440.0, &weather);
   ASSERT_GT(strikes.size(), 10u);
@@ -176,7 +203,7 @@ TEST(Lightning, AStormStrikesWithTheWeather) {
   StormWorld w;
   w.world.view<clouds::ecs::CloudLayer>().each(
       [&](engine::ecs::Entity layer, clouds::ecs::CloudLayer&) {
-        w.world.emplace<clouds::ecs::CloudWeather>(layer, clouds::ecs::CloudWeather{weather});
+        w.world.emplace<clouds::ecs::CloudWeather>(layer, weather);
       });
   ASSERT_TRUE(clouds::ecs::installLightning(w.world, w.scheduler));
   w.firstFrame(0.0);

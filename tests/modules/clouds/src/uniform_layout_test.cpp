@@ -105,9 +105,9 @@ const std::map<std::string, std::size_t> kCppOffsets = {FIELD(inverseProjection)
                                                         FIELD(phaseNormaliserInverseLow),
                                                         FIELD(phaseNormaliserInverseHigh),
                                                         FIELD(edgeSubpixelOffsets),
-                                                        FIELD(padding0),
-                                                        FIELD(padding1),
-                                                        FIELD(padding2)};
+                                                        FIELD(weatherRegionCount),
+                                                        FIELD(layerDensityScale),
+                                                        FIELD(fullestCoverage)};
 #undef FIELD
 
 std::string reflect() {
@@ -134,6 +134,26 @@ TEST(UniformLayout, GlslAndCppAgreeOnEveryFieldOfTheBlock) {
     glsl[(*it)[1]] = std::stoul((*it)[2]);
   }
   ASSERT_FALSE(glsl.empty()) << reflection;
+  // The weather regions' array (the block's member after the GLSL struct, the C++ struct's
+  // last), member by member of each element.
+  using clouds::shader::WeatherRegionUniform;
+  const std::map<std::string, std::size_t> regionMembers = {
+      {"placement", offsetof(WeatherRegionUniform, placement)},
+      {"shape", offsetof(WeatherRegionUniform, shape)},
+      {"look", offsetof(WeatherRegionUniform, look)}};
+  const std::regex regionMember(R"(frameWeatherRegions\[(\d+)\]\.(\w+): offset (\d+))");
+  std::size_t regionFields = 0;
+  for (auto it = std::sregex_iterator(reflection.begin(), reflection.end(), regionMember);
+       it != std::sregex_iterator(); ++it, ++regionFields) {
+    const std::size_t index = std::stoul((*it)[1]);
+    const auto cpp = regionMembers.find((*it)[2]);
+    ASSERT_NE(cpp, regionMembers.end()) << (*it)[2] << " is not in the C++ list";
+    EXPECT_EQ(offsetof(CloudUniforms, weatherRegions) + index * sizeof(WeatherRegionUniform) +
+                  cpp->second,
+              std::stoul((*it)[3]))
+        << "weatherRegions[" << index << "]." << (*it)[2];
+  }
+  EXPECT_EQ(regionFields, regionMembers.size() * clouds::shader::kMaxWeatherRegions);
   EXPECT_EQ(glsl.size(), kCppOffsets.size()) << "a field is missing from one side's list";
   for (const auto& [name, offset] : glsl) {
     const auto cpp = kCppOffsets.find(name);

@@ -78,13 +78,15 @@ TEST_F(CloudWeather, TheWeatherAHostReadsIsTheMapsTexel) {
   u.cloudType = settings.cloudType;
   u.typeVariation = settings.typeVariation;
   u.densityVariation = settings.densityVariation;
+  u.layerDensityScale = 1.0f;
   double worst = 0.0;
   std::size_t covered = 0;
   for (std::uint32_t y = 0; y < size; y += 8) {
     for (std::uint32_t x = 0; x < size; x += 8) {
       const std::uint8_t* t = &map[(std::size_t{y} * size + x) * 4];
       const glm::vec4 texel(t[0] / 255.0f, t[1] / 255.0f, t[2] / 255.0f, t[3] / 255.0f);
-      const clouds::shader::WeatherSample gpu = clouds::shader::decodeWeather(texel, u);
+      const clouds::shader::WeatherSample gpu =
+          clouds::shader::decodeWeather(texel, clouds::shader::surroundingWeather(u), u);
       // A column a whole number of tiles away: the map repeats.
       const glm::dvec2 column =
           (glm::dvec2(x, y) + 0.5) / double(size) * double(settings.weatherTileMetres) -

@@ -45,6 +45,7 @@ class JsonReader {
   // One of `allowed`.
   std::string choice(const std::string& key, const std::vector<std::string>& allowed,
                      const std::string& fallback) const;
+  glm::dvec2 vec2(const std::string& key, double min, double max) const;
   glm::dvec3 vec3(const std::string& key, double min, double max) const;
   glm::dvec3 vec3(const std::string& key, double min, double max, const glm::dvec3& fallback) const;
   std::vector<std::string> strings(const std::string& key) const;
@@ -58,6 +59,9 @@ class JsonReader {
 
  private:
   const nlohmann::json& child(const std::string& key) const;
+  // An array of `count` finite numbers in [min, max].
+  std::vector<double> numbers(const std::string& key, std::size_t count, double min,
+                              double max) const;
 
   const nlohmann::json* value_;
   std::string file_;

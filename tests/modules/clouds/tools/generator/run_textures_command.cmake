@@ -3,7 +3,7 @@ file(REMOVE_RECURSE ${OUT_DIR})
 
 function(generate dir)
   execute_process(COMMAND ${GENERATOR} --out ${dir} --seed 7 --time 1000 --state stormy
-                          --state sparse
+                          --state sparse --around sparse --region stormy,25000,20000,4000,3000
                   RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
   if(NOT rc EQUAL 0)
     message(FATAL_ERROR "clouds_textures failed (${rc}): ${out}${err}")
@@ -24,7 +24,8 @@ endfunction()
 generate(${OUT_DIR}/first)
 # name, width, height: volumes as atlases of their slices.
 set(expected shape_noise 2048 1024 detail_noise 256 128 hero_noise 2048 1024 curl_noise 128 128
-             weather_map 512 512 weather_stormy 512 512 weather_sparse 512 512)
+             weather_map 512 512 weather_stormy 512 512 weather_sparse 512 512
+             weather_regions 512 512)
 list(LENGTH expected count)
 math(EXPR last "${count} - 1")
 foreach(i RANGE 0 ${last} 3)
@@ -50,13 +51,16 @@ file(READ ${OUT_DIR}/first/textures.json manifest)
 string(JSON seed GET ${manifest} seed)
 string(JSON phase GET ${manifest} weatherPhase)
 string(JSON states GET ${manifest} weather_states)
-if(NOT seed EQUAL 7 OR NOT phase EQUAL 0.5 OR NOT states STREQUAL "[ \"stormy\", \"sparse\" ]")
-  message(FATAL_ERROR "textures.json: seed ${seed}, phase ${phase}, states ${states}")
+string(JSON regions GET ${manifest} weather_regions)
+if(NOT seed EQUAL 7 OR NOT phase EQUAL 0.5 OR NOT states STREQUAL "[ \"stormy\", \"sparse\" ]"
+   OR NOT regions EQUAL 1)
+  message(FATAL_ERROR "textures.json: seed ${seed}, phase ${phase}, states ${states}, "
+                      "regions ${regions}")
 endif()
 
 # The same options, the same bytes (the volumes are computed slice by slice on any threads).
 generate(${OUT_DIR}/second)
-foreach(name shape_noise hero_noise weather_map weather_stormy)
+foreach(name shape_noise hero_noise weather_map weather_stormy weather_regions)
   file(SHA256 ${OUT_DIR}/first/${name}.png a)
   file(SHA256 ${OUT_DIR}/second/${name}.png b)
   if(NOT a STREQUAL b)
@@ -67,7 +71,11 @@ endforeach()
 # Bad options: refused, naming the option.
 foreach(case "--seed;-3;--seed" "--seed;x;--seed" "--time;-1;--time" "--time;nan;--time"
              "--state;sunny;--state sunny" "--colour;red;unknown option --colour"
-             "--seed;5;--out DIR is required" "--out;needs a value")
+             "--seed;5;--out DIR is required" "--out;needs a value"
+             "--region;stormy,1,2,3;--region stormy,1,2,3: not STATE,X,Z,RADIUS,BLEND"
+             "--region;hail,1,2,3,400;--region hail"
+             "--region;stormy,1,2,3,50;BLEND in [100, 1e7]"
+             "--out;x;--around;sparse;--around: around no --region")
   list(GET case -1 expected_message)
   list(REMOVE_AT case -1)
   execute_process(COMMAND ${GENERATOR} ${case} RESULT_VARIABLE rc OUTPUT_VARIABLE out

@@ -26,13 +26,30 @@ struct CloudLayer {
   std::vector<std::shared_ptr<const clouds::NvdfVolume>> heroCloudAssets;
 };
 
+// A place on the map with weather of its own (clouds::WeatherRegion), on a timeline of its own:
+// a storm front over the range that builds and clears while the plains stay fair.
+struct RegionalWeather {
+  std::string name;             // for HUDs and logs
+  clouds::WeatherRegion place;  // where; its look is the timeline's state's at the clock
+  clouds::WeatherTimeline timeline;
+  std::vector<std::string> keyNames;  // what each of its timeline's keys is called
+};
+
 // Beside a CloudLayer: weather that changes on FrameTime's clock (clouds/weather.h). Each
 // frame the layer renders the timeline's state over its settings (coverage, type, density,
-// anvils, erosion, wind and skew), the clouds drift as far as its wind has carried them, and a
-// LightningStorm strikes at the state's rate. Without one the weather is the layer's settings.
+// anvils, erosion, wind and skew), its regions' states over the places they hold, the clouds
+// drift as far as the timeline's wind has carried them, and a LightningStorm's cells strike at
+// the rate of the weather over each. Without one the weather is the layer's settings.
 struct CloudWeather {
   clouds::WeatherTimeline timeline;
-  std::vector<std::string> keyNames;  // what each of its keys is called, for HUDs and logs
+  std::vector<std::string> keyNames;     // what each of its keys is called, for HUDs and logs
+  std::vector<RegionalWeather> regions;  // at most clouds::kMaxWeatherRegions, applied in order
+
+  // The weather over a world column (x, z metres) at `seconds`: the timeline's with the
+  // regions' blended over it (clouds::weatherAt()).
+  clouds::WeatherState stateAt(double seconds, glm::dvec2 xzMetres) const;
+  // The regions at `seconds`, each with its timeline's look (FrameInputs::weatherRegions).
+  std::vector<clouds::WeatherRegion> regionsAt(double seconds) const;
 };
 
 // A preset's march precision knobs tuned by hand (a player's panel, an engine's own tuning):

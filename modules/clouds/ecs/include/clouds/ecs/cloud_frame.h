@@ -39,6 +39,8 @@ struct HostFrame {
 
 // The weather now: the CloudWeather's state at FrameTime's clock, if the layer has one.
 std::optional<clouds::WeatherState> currentWeather(engine::ecs::World& world);
+// The CloudWeather's regions at FrameTime's clock, each with its look now (none without one).
+std::vector<clouds::WeatherRegion> currentWeatherRegions(engine::ecs::World& world);
 
 // The settings the camera renders the layer with: the layer's look under the camera's
 // CloudQuality preset and knobs, or the layer's settings as they are without one.

@@ -8,9 +8,11 @@
 #include <cstdint>
 #include <glm/glm.hpp>
 #include <optional>
+#include <span>
 #include <vector>
 
 #include "clouds/clouds.h"
+#include "clouds/ecs/cloud_components.h"
 #include "clouds/weather.h"
 #include "engine/ecs/scheduler.h"
 #include "engine/ecs/world.h"
@@ -37,11 +39,12 @@ struct LightningStorm {
 // cumulonimbus (coverage times density times how far the type is towards 1, among columns of
 // type 0.75 or more and coverage 0.5 or more), each at least `radiusMetres` from the others,
 // strongest first; each cell a third of the way up the layer, reaching `radiusMetres`. Fewer
-// (or none) where the weather has fewer. A pure function (clouds::proceduralWeatherAt at time 0).
-std::vector<LightningCell> stormCellsFromWeather(const clouds::Settings& settings,
-                                                 std::uint32_t noiseSeed, glm::dvec2 centreMetres,
-                                                 double withinMetres, std::uint32_t count,
-                                                 float radiusMetres);
+// (or none) where the weather has fewer. A pure function (clouds::proceduralWeatherAt at time 0,
+// under `regions`).
+std::vector<LightningCell> stormCellsFromWeather(
+    const clouds::Settings& settings, std::uint32_t noiseSeed, glm::dvec2 centreMetres,
+    double withinMetres, std::uint32_t count, float radiusMetres,
+    std::span<const clouds::WeatherRegion> regions = {});
 
 enum class StrikeKind : std::uint32_t { IntraCloud, Ground };
 
@@ -79,12 +82,13 @@ struct ActiveLightning {
 // function of the storm (its seed) and the interval, so reruns and any frame rate give the
 // same strikes. Each cell's clock is cut into 0.1 s slots; a hash of (seed, cell, slot)
 // decides whether a strike starts in the slot (with the rate's probability) and when, how
-// strong, which kind and how many strokes. With `weather` (changing weather: CloudWeather) the
-// rate in each slot is its state's at the slot's start instead of the storm's, so a storm
-// starts and stops striking with the weather, as deterministically.
+// strong, which kind and how many strokes. With `weather` (changing weather) the rate of a
+// cell in each slot is that of the weather over the cell at the slot's start instead of the
+// storm's, so a storm starts and stops striking with the weather, and only where a region's
+// weather strikes, as deterministically.
 std::vector<LightningStrike> strikesBetween(const LightningStorm& storm, double fromSeconds,
                                             double toSeconds,
-                                            const clouds::WeatherTimeline* weather = nullptr);
+                                            const CloudWeather* weather = nullptr);
 
 // A strike's brightness at `seconds` in [0, 1]: its return strokes, each a sharp rise and a
 // 25 ms decay, 50 ms apart, the later ones weaker; 0 before it starts and after it ends.

@@ -1,0 +1,23 @@
+// CloudWeather's regions at the clock: what the clouds render over each place, and the whole
+// state over a column for a storm's strike rate.
+#include "clouds/ecs/cloud_components.h"
+
+namespace clouds::ecs {
+
+std::vector<clouds::WeatherRegion> CloudWeather::regionsAt(double seconds) const {
+  std::vector<clouds::WeatherRegion> places;
+  places.reserve(regions.size());
+  for (const RegionalWeather& r : regions) {
+    places.push_back(clouds::withWeather(r.place, r.timeline.stateAt(seconds)));
+  }
+  return places;
+}
+
+clouds::WeatherState CloudWeather::stateAt(double seconds, glm::dvec2 xzMetres) const {
+  std::vector<clouds::WeatherState> states;
+  states.reserve(regions.size());
+  for (const RegionalWeather& r : regions) states.push_back(r.timeline.stateAt(seconds));
+  return clouds::weatherAt(timeline.stateAt(seconds), regionsAt(seconds), states, xzMetres);
+}
+
+}  // namespace clouds::ecs
