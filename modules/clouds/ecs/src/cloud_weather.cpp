@@ -14,10 +14,16 @@ std::vector<clouds::WeatherRegion> CloudWeather::regionsAt(double seconds) const
 }
 
 clouds::WeatherState CloudWeather::stateAt(double seconds, glm::dvec2 xzMetres) const {
+  // weatherAt() weighs each region by its place alone: each timeline is read once, here.
+  std::vector<clouds::WeatherRegion> places;
   std::vector<clouds::WeatherState> states;
+  places.reserve(regions.size());
   states.reserve(regions.size());
-  for (const RegionalWeather& r : regions) states.push_back(r.timeline.stateAt(seconds));
-  return clouds::weatherAt(timeline.stateAt(seconds), regionsAt(seconds), states, xzMetres);
+  for (const RegionalWeather& r : regions) {
+    places.push_back(r.place);
+    states.push_back(r.timeline.stateAt(seconds));
+  }
+  return clouds::weatherAt(timeline.stateAt(seconds), places, states, xzMetres);
 }
 
 }  // namespace clouds::ecs
