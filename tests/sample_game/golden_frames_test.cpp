@@ -65,6 +65,9 @@ std::vector<GoldenRun> goldenRuns() {
       // A storm front (a weather region) over the range in fair weather: from the plains, and
       // under it.
       {tests / "scenes/weather_front.json", tests / "scripts/golden_front_views.json"},
+      // A superstorm (a weather region with a vortex) over the range: from outside its eye
+      // wall, and from above its bands.
+      {tests / "scenes/superstorm.json", tests / "scripts/golden_superstorm_views.json"},
       // Flying inside a tall layer over the ground, at High and Medium: frames rebuilt from
       // their own rays, without a pattern of them.
       {tests / "scenes/inside_layer_over_terrain.json",

@@ -293,6 +293,34 @@ TEST(Scenes, WeatherRegionsArriveInTheDescription) {
   EXPECT_GT(clouds::weatherRegionStrength(w.stormiestRegions()[0], {cell.x, cell.z}), 0.0f);
 }
 
+// A superstorm: a region with a vortex, read, written back the same, and its cells found in it.
+TEST(Scenes, ASuperstormArrivesInTheDescription) {
+  const sample::SceneDescription s = loadSceneDescription(writeScene("superstorm.json", R"({
+    "name": "w", "camera": {"position": [0, 1100, 20000]},
+    "clouds": {"coverage": 0.3, "cloudType": 0.4},
+    "weather": {"regions": [
+      {"name": "eye", "centre": [1000, -2000], "radiusMetres": 20000, "blendMetres": 6000,
+       "vortex": {"eyeRadiusMetres": 3500, "eyeWallMetres": 4000,
+                  "wallSpeedMetresPerSecond": -50, "spiralArms": 2},
+       "state": "stormy"}]},
+    "lightning": {"cellsFromWeather": {"count": 2, "withinMetres": 20000, "radiusMetres": 3000}}})"));
+  ASSERT_TRUE(s.weather.has_value());
+  const clouds::WeatherRegion::Vortex& v = s.weather->regions[0].place.vortex;
+  EXPECT_EQ(v.eyeRadiusMetres, 3500.0f);
+  EXPECT_EQ(v.eyeWallMetres, 4000.0f);
+  EXPECT_EQ(v.wallSpeedMetresPerSecond, -50.0f);
+  EXPECT_EQ(v.spiralArms, 2.0f);
+  const nlohmann::json back = sample::weatherJson(*s.weather);
+  EXPECT_EQ(back["regions"][0]["vortex"]["wallSpeedMetresPerSecond"], -50.0);
+  ASSERT_EQ(s.lightning->storm.cells.size(), 2u) << "found in the storm's wall and bands";
+  for (const auto& cell : s.lightning->storm.cells) {
+    const double fromEye =
+        std::hypot(cell.positionMetres.x - 1000.0, cell.positionMetres.z + 2000.0);
+    EXPECT_GT(fromEye, 0.7 * 3500.0);
+    EXPECT_LT(fromEye, 26000.0);
+  }
+}
+
 TEST(Scenes, HeroCloudsArriveInTheDescription) {
   const sample::SceneDescription s = loadSceneDescription(writeScene("hero.json", R"({
     "name": "x", "camera": {"position": [0, 1, 0]},
@@ -467,6 +495,24 @@ TEST(Scenes, MalformedScenesNameFilePathAndReason) {
            "weather": {"regions": [{"name": "r", "centre": [0, 0], "halfSides": [1, -1],
                                     "state": "cloudy"}]}})",
        "weather.regions[0].halfSides: element 1 must be in [0, 1e+07], got -1"},
+      {"vortex_sides.json",
+       R"({"name": "x", "camera": {"position": [0, 1, 0]}, "clouds": {},
+           "weather": {"regions": [{"name": "r", "centre": [0, 0], "halfSides": [10, 10],
+                                    "vortex": {"eyeRadiusMetres": 3000}, "state": "stormy"}]}})",
+       "weather.regions[0].halfSides: a superstorm's region is a disc"},
+      {"vortex_speed.json",
+       R"({"name": "x", "camera": {"position": [0, 1, 0]}, "clouds": {},
+           "weather": {"regions": [{"name": "r", "centre": [0, 0], "state": "stormy",
+                                    "vortex": {"eyeRadiusMetres": 3000,
+                                               "wallSpeedMetresPerSecond": 900}}]}})",
+       "weather.regions[0].vortex.wallSpeedMetresPerSecond: must be in [-200, 200], got 900"},
+      {"vortex_two.json",
+       R"({"name": "x", "camera": {"position": [0, 1, 0]}, "clouds": {},
+           "weather": {"regions": [
+             {"name": "a", "centre": [0, 0], "state": "stormy", "vortex": {"eyeRadiusMetres": 3000}},
+             {"name": "b", "centre": [9, 0], "state": "stormy", "vortex": {"eyeRadiusMetres": 3000}}
+           ]}})",
+       "weather.regions: at most one superstorm"},
       {"region_neither.json",
        R"({"name": "x", "camera": {"position": [0, 1, 0]}, "clouds": {},
            "weather": {"regions": [{"name": "r", "centre": [0, 0]}]}})",

@@ -47,6 +47,8 @@ layout(constant_id = kSpecHeroLight) const uint kHeroLight = kHeroLightVolume;
 layout(constant_id = kSpecNearField) const uint kNearField = 0u;
 layout(constant_id = kSpecWeatherRegions) const uint kWeatherRegions = 0u;
 uint weatherRegionCapacity() { return kWeatherRegions; }
+layout(constant_id = kSpecVortex) const uint kVortex = 0u;
+bool vortexCompiledIn() { return kVortex != 0u; }
 
 #include "frame_uniforms.glsl"
 layout(binding = kMarchShapeNoise, rgba8) uniform readonly image3D shapeNoise;

@@ -185,10 +185,60 @@ FX_INLINE vec3 noisePosition(vec3 flatOffset, float altitude, float heightFracti
   return vec3(flatOffset.x - skew.x, altitude, flatOffset.z - skew.y);
 }
 
-// The layer's field (the vertical-profile model, cloud_density.h) at a camera-relative (x, z)
-// and an altitude on the curved shell. `distance` (m) from the camera sets the noise's level of
-// detail (noiseLevel(): the pixel's footprint there, u.noiseFootprintPerMetre x distance),
-// `lodDither` in [0, 1) rounds it.
+// The detail noise at the noise position `p` (noisePosition()), its curl displacement
+// (strongest at the base) applied.
+FX_INLINE float layerDetailNoise(vec3 p, float heightFraction, int level, IN(CloudUniforms) u) {
+  const vec2 curlUv = (u.curlOffsetMetres + vec2(p.x, p.z)) / u.curlTileMetres;
+  const vec2 curl = sampleCurl(curlUv) * (u.curlStrengthMetres * (1.0f - heightFraction));
+  const vec3 uvw = (u.detailOffsetMetres + p + vec3(curl.x, 0.0f, curl.y)) / u.detailTileMetres;
+  return sampleDetailNoise(uvw, level);
+}
+
+// The layer's still field (the vertical-profile model, cloud_density.h): the weather over the
+// column `column` (camera-relative x, z), the noise read at `p` (noisePosition()). `distance`
+// (m) from the camera sets the noise's level of detail (noiseLevel(): the pixel's footprint
+// there, u.noiseFootprintPerMetre x distance), `lodDither` in [0, 1) rounds it.
+FX_INLINE FieldSample stillLayerField(vec2 column, vec3 p, float heightFraction, float distance,
+                                      float lodDither, uint wantDetail, IN(CloudUniforms) u) {
+  FieldSample s;
+  s.heightFraction = heightFraction;
+  // Coverage is held still (the weather map is not scrolled); the noise moves with the wind.
+  const vec2 weatherUv = (u.weatherOffsetMetres + column) / u.weatherTileMetres;
+  const WeatherSample w = decodeWeather(sampleWeather(weatherUv), columnWeather(column, u), u);
+  const float footprint = distance * u.noiseFootprintPerMetre;
+  const int shapeLevel = noiseLevel(footprint, u.shapeTileMetres / float(kShapeNoiseSize),
+                                    lodDither, kShapeNoiseLevels);
+  const float shapeNoise =
+      sampleShapeNoise((u.shapeOffsetMetres + p) / u.shapeTileMetres, shapeLevel);
+  const CoarseShape shape = coarseShape(shapeNoise, heightFraction, w);
+  s.base = shape.density;
+  s.profile = shape.profile;
+  s.density = s.base;
+  // Detail only where there is a base shape and the sample is near enough to show it.
+  CLOUDS_WHEN(wantDetail != 0u && s.base > 0.0f && distance < u.detailDistanceMetres) {
+    const int detailLevel = noiseLevel(footprint, u.detailTileMetres / float(kDetailNoiseSize),
+                                       lodDither, kDetailNoiseLevels);
+    s.density = erodeDensity(s.base, layerDetailNoise(p, heightFraction, detailLevel, u),
+                             heightFraction, u.detailErosion);
+  }
+  s.sigmaT = s.density * w.density * u.extinctionPerMetre;
+  return s;
+}
+
+FX_INLINE FieldSample mixFields(IN(FieldSample) a, IN(FieldSample) b, float t) {
+  FieldSample s;
+  s.heightFraction = a.heightFraction;
+  s.base = mix(a.base, b.base, t);
+  s.profile = mix(a.profile, b.profile, t);
+  s.density = mix(a.density, b.density, t);
+  s.sigmaT = mix(a.sigmaT, b.sigmaT, t);
+  return s;
+}
+
+// The layer's field at a camera-relative (x, z) and an altitude on the curved shell: the still
+// field, which a superstorm turns (cloud_vortex.h): there it is read where the point was before
+// the storm turned it, once per flow phase, weather and noise alike, so that all of the storm's
+// cloud (its bands included) moves with its turn and the history can follow it.
 FX_INLINE FieldSample layerField(vec3 flatOffset, float altitude, float distance, float lodDither,
                                  uint wantDetail, IN(CloudUniforms) u) {
   FieldSample s;
@@ -208,33 +258,30 @@ FX_INLINE FieldSample layerField(vec3 flatOffset, float altitude, float distance
     s.sigmaT = u.extinctionPerMetre;
     return s;
   }
-  // Coverage is held still (the weather map is not scrolled); the noise moves with the wind.
-  const vec2 weatherUv =
-      (u.weatherOffsetMetres + vec2(flatOffset.x, flatOffset.z)) / u.weatherTileMetres;
-  const vec2 column = vec2(flatOffset.x, flatOffset.z);
-  const WeatherSample w = decodeWeather(sampleWeather(weatherUv), columnWeather(column, u), u);
-  const vec3 p = noisePosition(flatOffset, altitude, s.heightFraction, u);
-  const vec3 shapeUvw = (u.shapeOffsetMetres + p) / u.shapeTileMetres;
-  const float footprint = distance * u.noiseFootprintPerMetre;
-  const int shapeLevel = noiseLevel(footprint, u.shapeTileMetres / float(kShapeNoiseSize),
-                                    lodDither, kShapeNoiseLevels);
-  const CoarseShape shape =
-      coarseShape(sampleShapeNoise(shapeUvw, shapeLevel), s.heightFraction, w);
-  s.base = shape.density;
-  s.profile = shape.profile;
-  s.density = s.base;
-  // Detail only where there is a base shape and the sample is near enough to show it.
-  CLOUDS_WHEN(wantDetail != 0u && s.base > 0.0f && distance < u.detailDistanceMetres) {
-    const vec2 curlUv = (u.curlOffsetMetres + vec2(p.x, p.z)) / u.curlTileMetres;
-    const vec2 curl = sampleCurl(curlUv) * (u.curlStrengthMetres * (1.0f - s.heightFraction));
-    const vec3 detailUvw =
-        (u.detailOffsetMetres + p + vec3(curl.x, 0.0f, curl.y)) / u.detailTileMetres;
-    const int detailLevel = noiseLevel(footprint, u.detailTileMetres / float(kDetailNoiseSize),
-                                       lodDither, kDetailNoiseLevels);
-    s.density = erodeDensity(s.base, sampleDetailNoise(detailUvw, detailLevel), s.heightFraction,
-                             u.detailErosion);
+  vec2 column = vec2(flatOffset.x, flatOffset.z);
+  vec3 p = noisePosition(flatOffset, altitude, s.heightFraction, u);
+  vec2 columnB = column;
+  vec3 pB = p;
+  float weightA = 1.0f;
+  if (hasVortex(u)) {
+    const WeatherRegionUniform storm = weatherRegion(u, u.vortexRegion);
+    const vec2 eye = vec2(storm.placement.x, storm.placement.y);
+    const float rate = vortexTurnRate(length(column - eye), storm);
+    const vec2 columnA = eye + turnedCounterClockwise(column - eye, -rate * u.vortexClock.x);
+    const vec2 pA = eye + turnedCounterClockwise(vec2(p.x, p.z) - eye, -rate * u.vortexClock.x);
+    columnB = eye + turnedCounterClockwise(column - eye, -rate * u.vortexClock.y);
+    const vec2 b = eye + turnedCounterClockwise(vec2(p.x, p.z) - eye, -rate * u.vortexClock.y);
+    pB = vec3(b.x, p.y, b.y);
+    column = columnA;
+    p = vec3(pA.x, p.y, pA.y);
+    weightA = rate != 0.0f ? u.vortexClock.z : 1.0f;
   }
-  s.sigmaT = s.density * w.density * u.extinctionPerMetre;
+  s = stillLayerField(column, p, s.heightFraction, distance, lodDither, wantDetail, u);
+  CLOUDS_WHEN(weightA < 1.0f) {
+    s = mixFields(
+        stillLayerField(columnB, pB, s.heightFraction, distance, lodDither, wantDetail, u), s,
+        weightA);
+  }
   return s;
 }
 
@@ -299,6 +346,14 @@ FX_INLINE vec2 cellWeatherCeiling(vec2 p, float cell, IN(CloudUniforms) u) {
 FX_INLINE float emptySpaceSkip(vec2 origin, float t, vec3 rayDirection, float altitude,
                                IN(CloudUniforms) u) {
   const vec2 d = vec2(rayDirection.x, rayDirection.z);
+  // A superstorm reads its weather where its turn brought it from (layerField()), which no
+  // cell's maxima bound: no cell it reaches is skipped.
+  if (hasVortex(u)) {
+    const WeatherRegionUniform storm = weatherRegion(u, u.vortexRegion);
+    const vec2 eye = vec2(storm.placement.x, storm.placement.y);
+    const float reach = storm.shape.z + storm.shape.w + u.coarseCellMetres;
+    if (length(origin + d * t - eye) < reach) return t;
+  }
   const vec2 p = u.weatherOffsetMetres + origin + d * t;
   const bool ascending = rayDirection.y >= 0.0f;
   const float coarse = u.coarseCellMetres;

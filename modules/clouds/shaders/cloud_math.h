@@ -9,8 +9,12 @@
 
 // Runs the following statement or block only when `condition` holds, as a loop of 0 or 1 trips:
 // lavapipe executes the body of an `if` whenever it is reached, even when no lane takes it.
-#define CLOUDS_WHEN(condition) \
-  for (int whenOnce_ = 0; whenOnce_ < ((condition) ? 1 : 0); ++whenOnce_)
+// Its counter is named after the line, so that one may nest in another.
+#define CLOUDS_WHEN_JOIN_(a, b) a##b
+#define CLOUDS_WHEN_NAME_(line) CLOUDS_WHEN_JOIN_(whenOnce_, line)
+#define CLOUDS_WHEN(condition)                                                                   \
+  for (int CLOUDS_WHEN_NAME_(__LINE__) = 0; CLOUDS_WHEN_NAME_(__LINE__) < ((condition) ? 1 : 0); \
+       ++CLOUDS_WHEN_NAME_(__LINE__))
 
 FX_SHADER_BEGIN(clouds::shader)
 

@@ -22,6 +22,8 @@ layout(constant_id = kSpecShadowEmptySpace) const uint kEmptySpace = 1u;
 layout(constant_id = kSpecShadowHeroClouds) const uint kHeroClouds = 0u;
 layout(constant_id = kSpecShadowWeatherRegions) const uint kWeatherRegions = 0u;
 uint weatherRegionCapacity() { return kWeatherRegions; }
+layout(constant_id = kSpecShadowVortex) const uint kVortex = 0u;
+bool vortexCompiledIn() { return kVortex != 0u; }
 
 // Its push constants (ShadowMapConstants, inside TerrainShadowConstants' 128 bytes) have no
 // spare word for frame_uniforms.glsl's index, so this pass keeps the lane-by-lane loads. Making

@@ -8,6 +8,7 @@
 
 #include "cloud_math.h"
 #include "cloud_types.h"
+#include "cloud_vortex.h"
 
 FX_SHADER_BEGIN(clouds::shader)
 
@@ -176,6 +177,7 @@ FX_INLINE uint ownSampleCount(uvec2 texel) {
 struct PreviousRay {
   vec4 along;   // last frame's clip-space image of the unit view direction (w = 0)
   vec4 origin;  // and of the camera offset (w = 1)
+  vec3 world;   // the unit view direction in the world's axes
 };
 
 // `viewDirection`: the pixel's unit ray direction in this frame's view space.
@@ -183,22 +185,40 @@ FX_INLINE PreviousRay previousRay(vec3 viewDirection, IN(CloudUniforms) u) {
   PreviousRay r;
   r.along = u.previousClipFromView * vec4(viewDirection, 0.0f);
   r.origin = u.previousClipOrigin;
+  r.world = vec3(u.viewToWorld * vec4(viewDirection, 0.0f));
   return r;
 }
 
+// In a superstorm, how far the cloud at the point `distance` metres along the ray moved since
+// the history's frame, in last frame's clip space (w = 0): the storm turned it about the eye
+// (cloud_vortex.h), so its previous place is the point turned back by the interval's turn.
+// Zero elsewhere, without a storm, or with Settings::vortexReprojection off.
+FX_INLINE vec4 vortexClipShift(PreviousRay ray, float distance, IN(CloudUniforms) u) {
+  vec4 shift = vec4(0.0f);
+  CLOUDS_WHEN(hasVortex(u) && u.vortexHistorySeconds != 0.0f) {
+    const vec2 here = vec2(ray.world.x, ray.world.z) * distance;
+    const vec2 before =
+        vortexTurnedBack(here, u.vortexHistorySeconds, weatherRegion(u, u.vortexRegion));
+    shift = u.previousClipFromWorld * vec4(before.x - here.x, 0.0f, before.y - here.y, 0.0f);
+  }
+  return shift;
+}
+
 // Image position (pixels of an image of `extent`) of the point `distance` metres along the
-// ray last frame; far off-screen when it was behind last frame's camera.
-FX_INLINE vec2 previousPosition(PreviousRay ray, float distance, vec2 extent) {
-  const vec4 clip = ray.along * distance + ray.origin;
+// ray last frame, moved by `shift` (clip space, w = 0: the cloud's own motion besides the
+// wind's); far off-screen when it was behind last frame's camera.
+FX_INLINE vec2 previousPosition(PreviousRay ray, float distance, vec4 shift, vec2 extent) {
+  const vec4 clip = ray.along * distance + ray.origin + shift;
   if (clip.w <= 0.0f) return vec2(-1e6f);
   return (vec2(clip) / clip.w * 0.5f + 0.5f) * extent;
 }
 
 // Where a pixel's cloud was on last frame's image (pixels of an image of `extent`): through
 // its weighted depth, or, without cloud, the far distance (empty sky reprojects like the
-// horizon). `spread`: how far apart (pixels) its nearest cloud front and the far distance
-// reproject, i.e. how much the answer depends on the depth: zero for a still or only turning
-// camera (exact), pixels when the camera moves past near cloud (parallax, disocclusion).
+// horizon), moved back by a superstorm's turn there. `spread`: how far apart (pixels) its
+// nearest cloud front and the far distance reproject under the same motion, i.e. how much the
+// answer depends on the depth: zero for a still or only turning camera (exact), pixels when the
+// camera moves past near cloud (parallax, disocclusion).
 struct Reprojection {
   vec2 position;
   float spread;
@@ -212,9 +232,12 @@ FX_INLINE Reprojection reprojectPixel(vec3 viewDirection, vec2 cloudDepth, vec2 
   const PreviousRay ray = previousRay(viewDirection, u);
   const float far = u.maxDistanceMetres;
   Reprojection r;
-  r.position = previousPosition(ray, cloudDepth.y > 0.0f ? cloudDepth.y : far, extent);
+  const float weighted = cloudDepth.y > 0.0f ? cloudDepth.y : far;
+  const vec4 shift = vortexClipShift(ray, weighted, u);
+  r.position = previousPosition(ray, weighted, shift, extent);
   const float nearest = cloudDepth.x > 0.0f ? cloudDepth.x : far;
-  r.spread = length(previousPosition(ray, nearest, extent) - previousPosition(ray, far, extent));
+  r.spread = length(previousPosition(ray, nearest, shift, extent) -
+                    previousPosition(ray, far, shift, extent));
   r.onScreen = all(greaterThanEqual(r.position, vec2(0.0f))) && all(lessThan(r.position, extent));
   return r;
 }

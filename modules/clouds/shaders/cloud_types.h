@@ -171,7 +171,8 @@ const uint kSpecNearField = 12u;          // 0/1: the near field's pass (every p
                                           //   image, the ray up to the split)
 const uint kSpecWeatherRegions = 13u;     // Settings::weatherRegions: the regions a frame may
                                           //   have (0: no region code)
-const uint kMarchSpecCount = 14u;
+const uint kSpecVortex = 14u;             // Settings::superstorms: 0/1, the vortex code
+const uint kMarchSpecCount = 15u;
 // The variants of kSpecEdgeRays: none; the tiles' march, which lists the edge tiles; the
 // edge rays' march, over that list (an indirect dispatch).
 const uint kEdgeRaysOff = 0u;
@@ -210,7 +211,8 @@ const uint kGodRaysGlow = 2u;      // the fallback without a haze: a glow along 
 const uint kSpecShadowEmptySpace = 0u;      // 0/1: skip empty weather cells
 const uint kSpecShadowHeroClouds = 1u;      // kHeroClouds*: hero clouds cast into the map too
 const uint kSpecShadowWeatherRegions = 2u;  // as the march's kSpecWeatherRegions
-const uint kShadowSpecCount = 3u;
+const uint kSpecShadowVortex = 3u;          // as the march's kSpecVortex
+const uint kShadowSpecCount = 4u;
 // The history variants of kSpecHistory and kSpecOutputHistory.
 const uint kHistoryNone = 0u;
 const uint kHistoryInPlace = 1u;
@@ -247,7 +249,12 @@ struct WeatherRegionUniform {
   vec4 shape;      // xy its x axis (world x, z; unit), z the core's rounding radius (m), w the
                    //   blend distance (m, > 0)
   vec4 look;       // x coverage, y cloud type, z density scale (as layerDensityScale), w anvils
+  vec4 vortex;     // a superstorm's (cloud_vortex.h): x the eye's radius (m; 0: none), y the
+                   //   eye wall's width (m), z the turn's rate at the wall's middle (rad/s,
+                   //   counter-clockwise seen from above), w spiral arms
 };
+// CloudUniforms.vortexRegion without a superstorm.
+const uint kNoVortex = 0xffffffffu;
 
 // Built on the CPU once per frame (src/uniforms.cpp) from the host's inputs and the settings.
 // Positions are camera-relative: the tiling offsets are reduced modulo their tile in double
@@ -383,6 +390,18 @@ struct CloudUniforms {
   uint weatherRegionCount;
   float layerDensityScale;
   float fullestCoverage;  // the largest coverage of the surrounding weather and the regions
+  // A camera-relative world offset (w = 0) -> last frame's clip space: the history's
+  // view-projection (its rotation only). The superstorm's reprojection moves a point by the
+  // storm's turn with it (cloud_temporal.h).
+  mat4 previousClipFromWorld;
+  // The superstorm (cloud_vortex.h): its flow phases' clocks (x, y: seconds since each phase
+  // restarted, each under the period), z the first phase's weight (the second's is 1 - z), w
+  // unused; the region it is (kNoVortex: none); and how long ago (s) the history's frame was,
+  // by which its reprojection turns a point back (0: plain).
+  vec4 vortexClock;
+  uint vortexRegion;
+  float vortexHistorySeconds;
+  vec2 vortexPadding;
 #ifdef __cplusplus
   // The regions themselves: in C++ the struct's last member; in GLSL the frame block's member
   // after the struct (frame_uniforms.glsl), at the same offset, read in place by
@@ -699,9 +718,13 @@ CLOUDS_ASSERT_OFFSET(CloudUniforms, windShearRadians, 656);
 CLOUDS_ASSERT_OFFSET(CloudUniforms, weatherRegionCount, 660);
 CLOUDS_ASSERT_OFFSET(CloudUniforms, layerDensityScale, 664);
 CLOUDS_ASSERT_OFFSET(CloudUniforms, fullestCoverage, 668);
-CLOUDS_ASSERT_OFFSET(CloudUniforms, weatherRegions, 672);
-static_assert(sizeof(clouds::shader::WeatherRegionUniform) == 48);
-static_assert(sizeof(clouds::shader::CloudUniforms) == 672 + 48 * 8);
+CLOUDS_ASSERT_OFFSET(CloudUniforms, previousClipFromWorld, 672);
+CLOUDS_ASSERT_OFFSET(CloudUniforms, vortexClock, 736);
+CLOUDS_ASSERT_OFFSET(CloudUniforms, vortexRegion, 752);
+CLOUDS_ASSERT_OFFSET(CloudUniforms, vortexHistorySeconds, 756);
+CLOUDS_ASSERT_OFFSET(CloudUniforms, weatherRegions, 768);
+static_assert(sizeof(clouds::shader::WeatherRegionUniform) == 64);
+static_assert(sizeof(clouds::shader::CloudUniforms) == 768 + 64 * 8);
 static_assert(sizeof(clouds::shader::NoiseConstants) == 16);
 static_assert(sizeof(clouds::shader::NoiseMipConstants) == 16);
 static_assert(sizeof(clouds::shader::AmbientConstants) == 32);

@@ -11,27 +11,9 @@
 #ifndef CLOUDS_CLOUD_WEATHER_REGIONS_H
 #define CLOUDS_CLOUD_WEATHER_REGIONS_H
 
-#include "cloud_types.h"
+#include "cloud_vortex.h"
 
 FX_SHADER_BEGIN(clouds::shader)
-
-// Region `index` (< u.weatherRegionCount) of the frame's: the C++ struct's member; the
-// shaders' frame block's, read in place (frame_uniforms.glsl; cloud_types.h says why).
-// The regions a frame may have (Settings::weatherRegions): the shaders' specialization
-// constant, so that the loops below unroll over constant indices and a pipeline without
-// regions has no region code (a loop over the uniform count, even of no trips, doubled the
-// march's time on lavapipe).
-#ifdef __cplusplus
-FX_INLINE WeatherRegionUniform weatherRegion(IN(CloudUniforms) u, uint index) {
-  return u.weatherRegions[index];
-}
-FX_INLINE uint weatherRegionCapacity() {
-  return kMaxWeatherRegions;
-}
-#else
-WeatherRegionUniform weatherRegion(IN(CloudUniforms) u, uint index);
-uint weatherRegionCapacity();
-#endif
 
 // The look of the weather over one column of the layer (Settings' meanings).
 struct ColumnWeather {
@@ -40,19 +22,6 @@ struct ColumnWeather {
   float densityScale;  // times u.extinctionPerMetre
   float anvilBias;
 };
-
-// Distance (m) from a camera-relative point (x, z) to a region's core rectangle; 0 inside.
-FX_INLINE float regionCoreDistance(vec2 relative, IN(WeatherRegionUniform) r) {
-  const vec2 d = relative - vec2(r.placement.x, r.placement.y);
-  const vec2 local = vec2(dot(d, vec2(r.shape.x, r.shape.y)), dot(d, vec2(-r.shape.y, r.shape.x)));
-  return length(max(abs(local) - vec2(r.placement.z, r.placement.w), vec2(0.0f)));
-}
-
-// A region's strength at a distance from its core: 1 within the rounding radius, eased to 0
-// over the blend distance.
-FX_INLINE float regionStrength(float coreDistance, IN(WeatherRegionUniform) r) {
-  return 1.0f - smoothstep(r.shape.z, r.shape.z + r.shape.w, coreDistance);
-}
 
 FX_INLINE ColumnWeather surroundingWeather(IN(CloudUniforms) u) {
   ColumnWeather c;
@@ -70,7 +39,12 @@ FX_INLINE ColumnWeather columnWeather(vec2 relative, IN(CloudUniforms) u) {
     if (i >= u.weatherRegionCount) break;
     const WeatherRegionUniform region = weatherRegion(u, i);
     const float strength = regionStrength(regionCoreDistance(relative, region), region);
-    const vec4 look = region.look;
+    vec4 look = region.look;
+    if (hasVortex(u) && i == u.vortexRegion) {
+      const vec2 storm = vortexLook(relative, region, vec2(look.x, look.y));
+      look.x = storm.x;
+      look.y = storm.y;
+    }
     c.coverage = mix(c.coverage, look.x, strength);
     c.cloudType = mix(c.cloudType, look.y, strength);
     c.densityScale = mix(c.densityScale, look.z, strength);
@@ -92,7 +66,9 @@ FX_INLINE vec2 columnWeatherCeiling(vec2 relative, float radius, IN(CloudUniform
     const float distance = regionCoreDistance(relative, region);
     const float strongest = regionStrength(max(distance - radius, 0.0f), region);
     const float weakest = regionStrength(distance + radius, region);
-    const vec2 look = vec2(region.look.x, region.look.y);
+    // A superstorm's wall is full cumulonimbus (vortexLook()).
+    const vec2 look =
+        hasVortex(u) && i == u.vortexRegion ? vec2(1.0f) : vec2(region.look.x, region.look.y);
     ceiling = max(mix(ceiling, look, strongest), mix(ceiling, look, weakest));
   }
   return ceiling;

@@ -20,6 +20,9 @@ layout(local_size_x = kWorkgroupSize2D, local_size_y = kWorkgroupSize2D) in;
 // history (cut, resize, the near field just turned on...).
 layout(constant_id = kSpecNearHistory) const uint kHistory = 1u;
 #include "frame_uniforms.glsl"
+// The superstorm's reprojection (cloud_temporal.h) runs when the frame has one (a 0-trip loop
+// otherwise: CLOUDS_WHEN).
+bool vortexCompiledIn() { return true; }
 layout(binding = kNearResolveFresh, rgba32ui) uniform readonly uimage2D fresh;
 layout(binding = kNearResolveHistory, rgba32ui) uniform readonly uimage2D history;
 layout(binding = kNearResolveOut, rgba32ui) uniform writeonly uimage2D resolved;

@@ -33,6 +33,9 @@ layout(constant_id = kSpecHistory) const uint kHistory = 2u;
 // 1: lightning: the glow with this frame's flashes is written too.
 layout(constant_id = kSpecReconstructLightning) const uint kLightning = 0u;
 #include "frame_uniforms.glsl"
+// The superstorm's reprojection (cloud_temporal.h) runs when the frame has one (a 0-trip loop
+// otherwise: CLOUDS_WHEN).
+bool vortexCompiledIn() { return true; }
 layout(binding = kReconstructFresh, rgba32ui) uniform readonly uimage2D freshSamples;
 layout(binding = kReconstructHistory, rgba32ui) uniform readonly uimage2D history;
 layout(binding = kReconstructOut, rgba32ui) uniform writeonly uimage2D outSamples;

@@ -56,6 +56,9 @@ layout(constant_id = kSpecUpsampleDepthOutput) const uint kDepthOutput = 1u;
 // 1: the near field was marched apart this frame (kSpecUpsampleNearField).
 layout(constant_id = kSpecUpsampleNearField) const uint kNearField = 0u;
 #include "frame_uniforms.glsl"
+// The superstorm's reprojection (cloud_temporal.h) runs when the frame has one (a 0-trip loop
+// otherwise: CLOUDS_WHEN).
+bool vortexCompiledIn() { return true; }
 layout(binding = kUpsampleTraceSamples, rgba32ui) uniform readonly uimage2D traceSamples;
 layout(binding = kUpsampleHostDepth) uniform sampler2D hostDepth;
 layout(binding = kUpsampleRadianceOut, rgba16f) uniform writeonly image2D outRadiance;

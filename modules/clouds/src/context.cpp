@@ -95,20 +95,39 @@ std::string checkWeatherRegions(std::span<const WeatherRegion> regions, const Se
       float value;
       float lo;
       float hi;
-    } ranged[] = {{"halfSidesMetres.x", r.halfSidesMetres.x, 0.0f, 1e7f},
-                  {"halfSidesMetres.y", r.halfSidesMetres.y, 0.0f, 1e7f},
-                  {"radiusMetres", r.radiusMetres, 0.0f, 1e7f},
-                  {"blendMetres", r.blendMetres, 100.0f, 1e7f},
-                  {"coverage", r.coverage, 0.0f, 1.0f},
-                  {"cloudType", r.cloudType, 0.0f, 1.0f},
-                  {"densityMultiplier", r.densityMultiplier, 0.0f, 1e6f},
-                  {"anvilBias", r.anvilBias, 0.0f, 1.0f}};
+    } ranged[] = {
+        {"halfSidesMetres.x", r.halfSidesMetres.x, 0.0f, 1e7f},
+        {"halfSidesMetres.y", r.halfSidesMetres.y, 0.0f, 1e7f},
+        {"radiusMetres", r.radiusMetres, 0.0f, 1e7f},
+        {"blendMetres", r.blendMetres, 100.0f, 1e7f},
+        {"coverage", r.coverage, 0.0f, 1.0f},
+        {"cloudType", r.cloudType, 0.0f, 1.0f},
+        {"densityMultiplier", r.densityMultiplier, 0.0f, 1e6f},
+        {"anvilBias", r.anvilBias, 0.0f, 1.0f},
+        {"vortex.eyeRadiusMetres", r.vortex.eyeRadiusMetres, 0.0f, 1e6f},
+        {"vortex.eyeWallMetres", r.vortex.eyeWallMetres, 100.0f, 1e6f},
+        {"vortex.wallSpeedMetresPerSecond", r.vortex.wallSpeedMetresPerSecond, -200.0f, 200.0f},
+        {"vortex.spiralArms", r.vortex.spiralArms, 0.0f, 8.0f}};
     for (const auto& [name, value, lo, hi] : ranged) {
       if (!(value >= lo && value <= hi)) {  // NaN fails too
         std::ostringstream out;
         out << field << "." << name << " = " << value << ": must be in [" << lo << ", " << hi
             << "]";
         return out.str();
+      }
+    }
+    if (r.vortex.eyeRadiusMetres > 0.0f) {
+      if (settings.superstorms == 0) {
+        return field + ".vortex: a superstorm needs Settings.superstorms = 1";
+      }
+      if (r.halfSidesMetres != glm::vec2(0.0f)) {
+        return field + ".halfSidesMetres: a superstorm's region is a disc (half sides 0)";
+      }
+      for (std::size_t j = 0; j < i; ++j) {
+        if (regions[j].vortex.eyeRadiusMetres > 0.0f) {
+          return field + ".vortex: one superstorm per frame (weatherRegions[" + std::to_string(j) +
+                 "] is one)";
+        }
       }
     }
   }

@@ -34,6 +34,7 @@ SpecializationKey marchKey(const Settings& settings, bool workCounters, bool ter
       heroClouds != shader::kHeroCloudsOff ? v.heroLight : shader::kHeroLightCone;
   key.values[shader::kSpecNearField] = nearField ? 1u : 0u;
   key.values[shader::kSpecWeatherRegions] = settings.weatherRegions;
+  key.values[shader::kSpecVortex] = settings.superstorms;
   key.count = shader::kMarchSpecCount;
   return key;
 }
@@ -97,6 +98,7 @@ SpecializationKey shadowMapKey(const Settings& settings, std::uint32_t heroCloud
   key.values[shader::kSpecShadowEmptySpace] = settings.emptySpaceSkipping ? 1u : 0u;
   key.values[shader::kSpecShadowHeroClouds] = heroClouds;
   key.values[shader::kSpecShadowWeatherRegions] = settings.weatherRegions;
+  key.values[shader::kSpecShadowVortex] = settings.superstorms;
   key.count = shader::kShadowSpecCount;
   return key;
 }

@@ -177,6 +177,9 @@ constexpr SettingEffect kEffects[] = {
     CLOUDS_SETTING(weatherRegions, kKeepsState,
                    "a capacity: the regions are this frame's inputs (a change of them is "
                    "weighed apart)"),
+    CLOUDS_SETTING(superstorms, kKeepsState,
+                   "a capacity: the storm is one of this frame's regions"),
+    CLOUDS_SETTING(vortexReprojection, kKeepsState, "how the history is found, not what it holds"),
 };
 
 #undef CLOUDS_SETTING

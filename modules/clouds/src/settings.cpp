@@ -102,6 +102,7 @@ std::span<const SettingRange> settingRanges() {
       CLOUDS_RANGE(upsamplingMaxSamples, 1, 15),
       CLOUDS_RANGE(edgeRays, 0, shader::kMaxEdgeRaysPerTile),
       CLOUDS_RANGE(weatherRegions, 0, shader::kMaxWeatherRegions),
+      CLOUDS_RANGE(superstorms, 0, 1),
       CLOUDS_RANGE(temporalFreshWeight, 0.05, 1.0),
       CLOUDS_RANGE(temporalStillFreshWeight, 0.05, 1.0),
       CLOUDS_RANGE(historyClampMargin, 0.0, 1.0),

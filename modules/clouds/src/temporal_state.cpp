@@ -130,7 +130,10 @@ TemporalFrame TemporalState::plan(const FrameInputs& in, const Settings& s, VkEx
   frame.useOutputHistory = frame.upsampleTemporally && frame.useHistory && wroteOutputHistory_;
   frame.cameraDelta = havePrevious_ ? in.cameraPosition - cameraPosition_ : glm::dvec3(0.0);
   frame.windDrift = havePrevious_ ? windDisplacement - windDisplacement_ : glm::dvec2(0.0);
-  const bool noDrift = frame.windDrift == glm::dvec2(0.0);
+  frame.secondsSinceHistory = havePrevious_ ? in.timeSeconds - timeSeconds_ : 0.0;
+  // A superstorm turns its clouds whenever the clock runs: nothing stands still then.
+  const bool noDrift = frame.windDrift == glm::dvec2(0.0) &&
+                       !(frame.secondsSinceHistory != 0.0 && hasVortex(in.weatherRegions));
   frame.previousView = havePrevious_ ? view_ : in.view;
   frame.previousProjection = havePrevious_ ? projection_ : in.projection;
   frame.cloudsChanging = frame.useHistory && (settingsChangedIn(kResetsHistory, s, settings_) ||
@@ -189,6 +192,7 @@ void TemporalState::commit(const TemporalFrame& frame, const FrameInputs& in,
   sunDirection_ = in.sunDirection;
   sunIlluminance_ = in.sunIlluminance;
   windDisplacement_ = windDisplacementOf(in, settings);
+  timeSeconds_ = in.timeSeconds;
   settings_ = settings;
   painted_ = PaintedWeather::of(in);
   regions_.assign(in.weatherRegions.begin(), in.weatherRegions.end());

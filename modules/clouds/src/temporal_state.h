@@ -45,6 +45,9 @@ struct TemporalFrame {
   float lookLeadFrames = 0.0f;
   glm::dvec3 cameraDelta{0.0};  // camera position now minus the history's (m)
   glm::dvec2 windDrift{0.0};    // how far the wind carried the clouds since (x, z m)
+  // How long ago (s of FrameInputs::timeSeconds) the history's frame was: a superstorm turned
+  // its clouds through this much since (cloud_vortex.h).
+  double secondsSinceHistory = 0.0;
   // The view and projection the history was made with (this frame's when there is none).
   glm::mat4 previousView{1.0f};
   glm::mat4 previousProjection{1.0f};
@@ -116,6 +119,7 @@ class TemporalState {
   glm::vec3 sunDirection_{0.0f, 1.0f, 0.0f};
   glm::vec3 sunIlluminance_{0.0f};
   glm::dvec2 windDisplacement_{0.0};
+  double timeSeconds_ = 0.0;  // FrameInputs::timeSeconds of the history's frame
   Settings settings_{};
   PaintedWeather painted_;
   std::vector<WeatherRegion> regions_;         // the history's frame's

@@ -182,10 +182,15 @@ void setTiles(shader::CloudUniforms& u, const UniformContext& context) {
 // Folded here once per frame so that the passes take one matrix product per pixel: a view
 // direction goes straight to the history's clip space, and the camera offset is a constant.
 // Reads u.viewToWorld (setCamera()).
-void setReprojection(shader::CloudUniforms& u, const TemporalFrame& temporal) {
+// A superstorm's turn since the history's frame moves each point further (cloud_temporal.h):
+// its interval, and the history's view-projection for the move.
+void setReprojection(shader::CloudUniforms& u, const Settings& s, const TemporalFrame& temporal) {
   const glm::mat4 previousViewProjection =
       temporal.previousProjection * glm::mat4(glm::mat3(temporal.previousView));
   u.previousClipFromView = previousViewProjection * u.viewToWorld;
+  u.previousClipFromWorld = previousViewProjection;
+  u.vortexHistorySeconds =
+      s.vortexReprojection ? static_cast<float>(temporal.secondsSinceHistory) : 0.0f;
   const glm::dvec2 drift = temporal.windDrift;
   const glm::dvec3 moved = temporal.cameraDelta - glm::dvec3(drift.x, 0.0, drift.y);
   u.previousClipOrigin = previousViewProjection * glm::vec4(glm::vec3(moved), 1.0f);
@@ -300,7 +305,7 @@ shader::CloudUniforms buildUniforms(const FrameInputs& in, const Settings& s,
   u.nearFieldMetres = context.temporal.nearField ? s.nearFieldMetres : 0.0f;
   const VkExtent2D nearField = nearFieldExtentFor(context.traceExtent);
   u.nearFieldExtent = glm::uvec2(nearField.width, nearField.height);
-  setReprojection(u, context.temporal);
+  setReprojection(u, s, context.temporal);
   setHistoryBlend(u, s, context.temporal);
   const RefreshRound round = refreshRound(s, context.temporal);
   setRayPlacement(u, s, context.temporal, round);

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include <glm/gtc/constants.hpp>
+
 namespace clouds::detail {
 namespace {
 
@@ -17,6 +19,22 @@ constexpr LookField kLookFields[] = {{&WeatherRegion::coverage, 0.0f, 1.0f, fals
                                      {&WeatherRegion::cloudType, 0.0f, 1.0f, false},
                                      {&WeatherRegion::densityMultiplier, 0.0f, 1e6f, true},
                                      {&WeatherRegion::anvilBias, 0.0f, 1.0f, false}};
+
+// How far a superstorm changed: its eye and wall (in blend distances), its speed and arms
+// (relative); 1 when one of the two has none.
+float vortexChange(const WeatherRegion& a, const WeatherRegion& b) {
+  const WeatherRegion::Vortex& va = a.vortex;
+  const WeatherRegion::Vortex& vb = b.vortex;
+  if ((va.eyeRadiusMetres > 0.0f) != (vb.eyeRadiusMetres > 0.0f)) return 1.0f;
+  const float blend = std::max(std::min(a.blendMetres, b.blendMetres), 1.0f);
+  const float size = std::abs(va.eyeRadiusMetres - vb.eyeRadiusMetres) +
+                     std::abs(va.eyeWallMetres - vb.eyeWallMetres);
+  const float speed = std::abs(va.wallSpeedMetresPerSecond - vb.wallSpeedMetresPerSecond) /
+                      std::max({std::abs(va.wallSpeedMetresPerSecond),
+                                std::abs(vb.wallSpeedMetresPerSecond), 1.0f});
+  const float arms = std::abs(va.spiralArms - vb.spiralArms) / 8.0f;
+  return std::max({size / blend, speed, arms});
+}
 
 float lookChange(const WeatherRegion& a, const WeatherRegion& b) {
   float change = 0.0f;
@@ -45,8 +63,25 @@ float placeChange(const WeatherRegion& a, const WeatherRegion& b) {
 
 }  // namespace
 
+bool hasVortex(std::span<const WeatherRegion> regions) {
+  return std::any_of(regions.begin(), regions.end(),
+                     [](const WeatherRegion& r) { return r.vortex.eyeRadiusMetres > 0.0f; });
+}
+
+glm::vec4 vortexClock(const WeatherRegion& storm, double seconds) {
+  const WeatherRegion::Vortex& v = storm.vortex;
+  const double wall = double(v.eyeRadiusMetres) + 0.5 * double(v.eyeWallMetres);
+  const double rate = double(v.wallSpeedMetresPerSecond) / std::max(wall, 1.0);  // rad/s
+  const double period =
+      std::clamp(0.5 * glm::pi<double>() / std::max(std::abs(rate), 1e-9), 10.0, 3600.0);
+  const double a = seconds / period - std::floor(seconds / period);  // [0, 1)
+  const double b = a < 0.5 ? a + 0.5 : a - 0.5;
+  return {float(a * period), float(b * period), float(1.0 - std::abs(2.0 * a - 1.0)), 0.0f};
+}
+
 float fullestCoverage(const Settings& s, std::span<const WeatherRegion> regions) {
-  float fullest = s.coverage;
+  // A superstorm's wall is full (vortexLook()).
+  float fullest = hasVortex(regions) ? 1.0f : s.coverage;
   for (const WeatherRegion& r : regions) fullest = std::max(fullest, r.coverage);
   return fullest;
 }
@@ -70,6 +105,7 @@ void setWeatherRegions(shader::CloudUniforms& u, const FrameInputs& in, const Se
   u.layerDensityScale = scale(s.densityMultiplier);
   u.fullestCoverage = fullestCoverage(s, regions);
   u.weatherRegionCount = static_cast<std::uint32_t>(regions.size());
+  u.vortexRegion = shader::kNoVortex;
   const glm::dvec2 camera(in.cameraPosition.x, in.cameraPosition.z);
   for (std::size_t i = 0; i < regions.size(); ++i) {
     const WeatherRegion& r = regions[i];
@@ -81,6 +117,15 @@ void setWeatherRegions(shader::CloudUniforms& u, const FrameInputs& in, const Se
     out.shape = glm::vec4(static_cast<float>(std::cos(heading)),
                           static_cast<float>(-std::sin(heading)), r.radiusMetres, r.blendMetres);
     out.look = glm::vec4(r.coverage, r.cloudType, scale(r.densityMultiplier), r.anvilBias);
+    const WeatherRegion::Vortex& v = r.vortex;
+    out.vortex = glm::vec4(0.0f);
+    if (v.eyeRadiusMetres > 0.0f) {
+      const float wall = v.eyeRadiusMetres + 0.5f * v.eyeWallMetres;
+      out.vortex = glm::vec4(v.eyeRadiusMetres, v.eyeWallMetres, v.wallSpeedMetresPerSecond / wall,
+                             v.spiralArms);
+      u.vortexRegion = static_cast<std::uint32_t>(i);
+      u.vortexClock = vortexClock(r, in.timeSeconds);
+    }
   }
 }
 
@@ -88,7 +133,8 @@ float weatherRegionsChange(std::span<const WeatherRegion> a, std::span<const Wea
   if (a.size() != b.size()) return 1.0f;
   float change = 0.0f;
   for (std::size_t i = 0; i < a.size(); ++i) {
-    change = std::max({change, lookChange(a[i], b[i]), placeChange(a[i], b[i])});
+    change = std::max(
+        {change, lookChange(a[i], b[i]), placeChange(a[i], b[i]), vortexChange(a[i], b[i])});
   }
   return change;
 }

@@ -15,6 +15,15 @@ namespace clouds::detail {
 // look field's range, or of the region's blend distance for its place and size).
 inline constexpr float kWeatherRegionTolerance = 0.01f;
 
+// Whether one of the regions is a superstorm (WeatherRegion::vortex).
+bool hasVortex(std::span<const WeatherRegion> regions);
+
+// A superstorm's flow phases at `seconds` (CloudUniforms.vortexClock; cloud_vortex.h): each
+// phase's clock restarts every period (a quarter of the wall's turn, in [10, 3600] s), the two
+// half a period apart, each weighted by a triangle that is 0 at its restart. In double
+// precision, so after any uptime the shaders see clocks under the period.
+glm::vec4 vortexClock(const WeatherRegion& storm, double seconds);
+
 // Over the surrounding weather and the regions: the largest coverage, and the largest density
 // multiplier.
 float fullestCoverage(const Settings& s, std::span<const WeatherRegion> regions);
@@ -30,9 +39,11 @@ void setWeatherRegions(shader::CloudUniforms& u, const FrameInputs& in, const Se
 float weatherRegionsChange(std::span<const WeatherRegion> a, std::span<const WeatherRegion> b);
 
 // A weather texel as the march decodes it over the world column `xzMetres` under `settings`
-// and `regions` (proceduralWeatherAt(), weatherAsMarched()).
+// and `regions` (proceduralWeatherAt(), weatherAsMarched()) at `seconds` (a superstorm's bands
+// turn).
 WeatherColumn marchedColumn(glm::vec4 texel, const Settings& settings,
-                            std::span<const WeatherRegion> regions, glm::dvec2 xzMetres);
+                            std::span<const WeatherRegion> regions, glm::dvec2 xzMetres,
+                            double seconds);
 
 // `now` with each region's look led by `frames` of its change since `before` (as
 // TemporalState::marchedSettings leads the settings), within the fields' ranges; `now` as it is

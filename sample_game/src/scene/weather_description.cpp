@@ -108,6 +108,19 @@ RegionDescription readRegion(const JsonReader& r, const std::vector<NamedWeather
   p.headingDegrees = float(r.number("headingDegrees", -360.0, 360.0, p.headingDegrees));
   p.radiusMetres = float(r.number("radiusMetres", 0.0, 1e7, p.radiusMetres));
   p.blendMetres = float(r.number("blendMetres", 100.0, 1e7, p.blendMetres));
+  if (r.has("vortex")) {
+    const JsonReader v = r.object("vortex");
+    clouds::WeatherRegion::Vortex& vortex = p.vortex;
+    vortex.eyeRadiusMetres = float(v.number("eyeRadiusMetres", 1.0, 1e6));
+    vortex.eyeWallMetres = float(v.number("eyeWallMetres", 100.0, 1e6, vortex.eyeWallMetres));
+    vortex.wallSpeedMetresPerSecond =
+        float(v.number("wallSpeedMetresPerSecond", -200.0, 200.0, vortex.wallSpeedMetresPerSecond));
+    vortex.spiralArms = float(v.number("spiralArms", 0.0, 8.0, vortex.spiralArms));
+    v.finish();
+    if (p.halfSidesMetres != glm::vec2(0.0f)) {
+      r.fail("halfSides", "a superstorm's region is a disc: no halfSides with a vortex");
+    }
+  }
   if (r.has("state") == r.has("schedule")) {
     r.fail("state", "a region needs either a state or a schedule");
   }
@@ -184,6 +197,12 @@ WeatherDescription readWeather(const JsonReader& r, const clouds::Settings& laye
     for (const JsonReader& region : regions) {
       d.regions.push_back(readRegion(region, d.states, layerWindDegrees));
     }
+    const auto storm = [](const RegionDescription& region) {
+      return region.place.vortex.eyeRadiusMetres > 0.0f;
+    };
+    if (std::count_if(d.regions.begin(), d.regions.end(), storm) > 1) {
+      r.fail("regions", "at most one superstorm (a region with a vortex)");
+    }
   }
   d.ownSchedule = r.has("schedule") || d.regions.empty();
   if (d.ownSchedule) {
@@ -242,6 +261,13 @@ json weatherJson(const WeatherDescription& weather) {
                      {"headingDegrees", double(p.headingDegrees)},
                      {"radiusMetres", double(p.radiusMetres)},
                      {"blendMetres", double(p.blendMetres)}};
+      if (p.vortex.eyeRadiusMetres > 0.0f) {
+        const clouds::WeatherRegion::Vortex& v = p.vortex;
+        region["vortex"] = {{"eyeRadiusMetres", double(v.eyeRadiusMetres)},
+                            {"eyeWallMetres", double(v.eyeWallMetres)},
+                            {"wallSpeedMetresPerSecond", double(v.wallSpeedMetresPerSecond)},
+                            {"spiralArms", double(v.spiralArms)}};
+      }
       if (r.steady) {
         region["state"] = r.schedule.states.front();
       } else {

@@ -19,7 +19,9 @@
 // Without a schedule the layer's own look holds (a scene may change only its regions').
 // A region (clouds::WeatherRegion: a rectangle of half sides `halfSides` (m) turned by
 // `headingDegrees` as the wind's, grown by `radiusMetres`, eased into the weather around it
-// over `blendMetres`) has one "state" or a "schedule" (and "repeat") of its own.
+// over `blendMetres`) has one "state" or a "schedule" (and "repeat") of its own. A region with
+// a "vortex" {eyeRadiusMetres, eyeWallMetres, wallSpeedMetresPerSecond, spiralArms} is a
+// superstorm (clouds::WeatherRegion::Vortex; a disc: no halfSides), at most one per scene.
 #include <nlohmann/json.hpp>
 #include <string>
 #include <vector>

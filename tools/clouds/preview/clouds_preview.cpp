@@ -2,9 +2,11 @@
 // writes a preview PNG (development aid; not a test).
 // Usage: clouds_preview OUT.png [width=320 height=180 frames=1 altitude=300 pitch=10 yaw=0
 //        sunElevation=35 sunAzimuth=200 coverage=... extinction=... skew=... shear=... quality=0..4
-//        reference=0 compare=0 ground=0 regions=0..8 ...]
+//        reference=0 compare=0 ground=0 regions=0..8 storm=0|1 stormSeconds=0 ...]
 // regions=N: N weather regions, Stormy discs of 3 km (blended over 3 km more) 8 km apart in a
 // row across the view 10 km ahead (the first straight ahead), the rest of the sky as set.
+// storm=1: a Stormy superstorm centred 20 km ahead (eye 4 km, wall 4.5 km, 24 km eased out over
+// 8 km, 45 m/s at the wall, 3 arms) as the first region, at stormSeconds on its clock.
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
@@ -94,6 +96,19 @@ int main(int argc, char** argv) {
     }
     const glm::vec3 ahead = clouds::tools::forwardDirection(view);
     const glm::dvec2 forward = glm::normalize(glm::dvec2(ahead.x, ahead.z));
+    if (get("storm", 0) != 0) {
+      clouds::WeatherRegion storm;
+      storm.centreMetres = glm::dvec2(view.position.x, view.position.z) + 20000.0 * forward;
+      storm.radiusMetres = 24000.0f;
+      storm.blendMetres = 8000.0f;
+      storm = clouds::withWeather(storm, clouds::weatherPreset(clouds::WeatherPreset::Stormy));
+      storm.vortex.eyeRadiusMetres = 4000.0f;
+      storm.vortex.eyeWallMetres = 4500.0f;
+      storm.vortex.wallSpeedMetresPerSecond = 45.0f;
+      view.weatherRegions.push_back(storm);
+      view.timeSeconds = get("stormSeconds", 0.0);
+      s.superstorms = 1;
+    }
     for (int i = 0; i < int(get("regions", 0)); ++i) {
       clouds::WeatherRegion region;
       const double across = 8000.0 * ((i + 1) / 2) * (i % 2 ? 1.0 : -1.0);

@@ -35,6 +35,10 @@ clouds::Settings layerSettings(engine::ecs::World& world) {
   world.view<const CloudLayer, const CloudWeather>().each(
       [&](const CloudLayer&, const CloudWeather& w) {
         settings.weatherRegions = static_cast<std::uint32_t>(w.regions.size());
+        const bool storm = std::any_of(w.regions.begin(), w.regions.end(), [](const auto& r) {
+          return r.place.vortex.eyeRadiusMetres > 0.0f;
+        });
+        settings.superstorms = storm ? 1u : 0u;
       });
   return settings;
 }

@@ -414,6 +414,13 @@ struct Settings {
   // How many regions a frame may have. 0: no region code in any pipeline; a frame's regions
   // must then be none. Each one compiled in costs every sample a little (regions or not).
   std::uint32_t weatherRegions = 0;  // [0, 8]
+  // Whether a frame's regions may hold a superstorm (one region with WeatherRegion::vortex, so
+  // with weatherRegions >= 1). 0: no vortex code in any pipeline.
+  std::uint32_t superstorms = 0;  // [0, 1]
+  // The history follows the storm's turn (a point's previous place is turned back about the
+  // eye by the frame's rotation); off: plain reprojection (camera and wind only), for the
+  // benchmark's comparison.
+  bool vortexReprojection = true;
 };
 
 // Quality presets, cheapest first; Reference is referenceSettings().
@@ -456,6 +463,25 @@ struct WeatherRegion {
   float cloudType = 0.75f;          // Settings::cloudType inside
   float densityMultiplier = 1.0f;   // Settings::densityMultiplier inside
   float anvilBias = 0.0f;           // Settings::anvilBias inside
+
+  // A superstorm (Schneider 2022, seed 001: the "M.D.R. vortex field"): the region's cloud
+  // field turns about its centre, fastest at the eye wall, and its look is an eye without cloud
+  // ringed by a wall of cumulonimbus (cloud type 1, coverage 1) with spiral rain bands of the
+  // region's coverage beyond. A vortex region is a disc (halfSidesMetres 0): the eye wall and
+  // the bands lie within radiusMetres, and the turn fades with the region over blendMetres.
+  // The noise is read turned back by the angle the field has turned through; two reads half a
+  // period apart, cross-faded, keep the differential turn from winding the noise without bound
+  // (a flow map's two phases). At most one per frame, with Settings::superstorms.
+  struct Vortex {
+    float eyeRadiusMetres = 0.0f;            // [0, 1e6] 0: no vortex
+    float eyeWallMetres = 4000.0f;           // [100, 1e6] the wall's width beyond the eye
+    float wallSpeedMetresPerSecond = 30.0f;  // [-200, 200] the cloud's speed at the wall's
+                                             //   middle, counter-clockwise seen from above
+                                             //   (negative: clockwise)
+    float spiralArms = 3.0f;                 // [0, 8] rain bands (0: a plain ring)
+    bool operator==(const Vortex&) const = default;
+  };
+  Vortex vortex;
 
   bool operator==(const WeatherRegion&) const = default;
 };

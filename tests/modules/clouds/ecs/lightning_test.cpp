@@ -463,4 +463,36 @@ TEST(Lightning, StormCellsSitWhereTheWeatherHoldsCumulonimbus) {
   EXPECT_TRUE(clouds::ecs::stormCellsFromWeather(s, 12, centre, 14000.0, 3, 5000.0f).empty());
 }
 
+// A superstorm's lightning is its own: in fair weather, the cells the weather holds lie in its
+// wall and bands, none in its clear eye, and its stormy state strikes there.
+TEST(Lightning, ASuperstormsCellsLieInItsWallAndBandsNotItsEye) {
+  clouds::Settings s =
+      clouds::withWeather(clouds::Settings{}, clouds::weatherPreset(clouds::WeatherPreset::Sparse));
+  s.cloudType = 0.3f;  // no cumulonimbus around the storm
+  s.weatherRegions = 1;
+  s.superstorms = 1;
+  clouds::WeatherRegion superstorm;
+  superstorm.centreMetres = {-3000.0, 4000.0};
+  superstorm.radiusMetres = 20000.0f;
+  superstorm.blendMetres = 6000.0f;
+  superstorm =
+      clouds::withWeather(superstorm, clouds::weatherPreset(clouds::WeatherPreset::Stormy));
+  superstorm.vortex.eyeRadiusMetres = 4000.0f;
+  superstorm.vortex.eyeWallMetres = 4500.0f;
+  const std::vector<clouds::WeatherRegion> regions = {superstorm};
+  EXPECT_TRUE(
+      clouds::ecs::stormCellsFromWeather(s, 12, superstorm.centreMetres, 20000.0, 3, 3000.0f)
+          .empty())
+      << "fair weather alone holds no cumulonimbus";
+  const auto cells = clouds::ecs::stormCellsFromWeather(s, 12, superstorm.centreMetres, 20000.0, 3,
+                                                        3000.0f, regions);
+  ASSERT_EQ(cells.size(), 3u);
+  for (const clouds::ecs::LightningCell& cell : cells) {
+    const double fromEye = std::hypot(cell.positionMetres.x - superstorm.centreMetres.x,
+                                      cell.positionMetres.z - superstorm.centreMetres.y);
+    EXPECT_GT(fromEye, 0.7 * 4000.0) << "a cell in the clear eye";
+    EXPECT_LT(fromEye, 26000.0) << "a cell beyond the storm";
+  }
+}
+
 }  // namespace
