@@ -1,12 +1,11 @@
 // The superstorm as plain logic (cloud_vortex.h, WeatherRegion::vortex): the rate it turns at
 // over distance, the direction of the turn, the flow phases' clocks after any uptime, its look
-// (a clear eye, a full wall, bands), the cell ceiling empty-space skipping trusts over it, and
+// (a clear eye, a full wall, bands; the cell ceiling over it: weather_regions_test.cpp), and
 // the history (nothing stands still in a turning storm; a storm appearing drops the history).
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <cmath>
-#include <random>
 
 #include <glm/gtc/matrix_transform.hpp>
 
@@ -158,25 +157,6 @@ TEST(Vortex, ItsEyeIsClearItsWallFullAndItsBandsWindAround) {
     return clouds::proceduralWeatherAt(s, 1, {12000.0, 0.0}, seconds, regions).coverage;
   };
   EXPECT_NE(queried(0.0), queried(120.0));
-}
-
-TEST(Vortex, TheCellCeilingBoundsEveryColumnOfTheStorm) {
-  std::mt19937 random(11);
-  std::uniform_real_distribution<float> unit(0.0f, 1.0f);
-  const shader::CloudUniforms u = uniformsWith({storm()}, 777.0);
-  for (int trial = 0; trial < 100; ++trial) {
-    const glm::vec2 centre((unit(random) - 0.5f) * 60000.0f, (unit(random) - 0.5f) * 60000.0f);
-    const float radius = 100.0f + unit(random) * 3000.0f;
-    const glm::vec2 ceiling = shader::columnWeatherCeiling(centre, radius, u);
-    for (int k = 0; k < 200; ++k) {
-      const float angle = unit(random) * 6.2831853f;
-      const glm::vec2 p =
-          centre + radius * std::sqrt(unit(random)) * glm::vec2(std::cos(angle), std::sin(angle));
-      const shader::ColumnWeather c = shader::columnWeather(p, u);
-      ASSERT_LE(c.coverage, ceiling.x + 1e-5f) << "trial " << trial;
-      ASSERT_LE(c.cloudType, ceiling.y + 1e-5f) << "trial " << trial;
-    }
-  }
 }
 
 TEST(Vortex, ATurningStormNeverStandsStillAndOneAppearingDropsTheHistory) {

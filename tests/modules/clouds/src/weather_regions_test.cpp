@@ -106,6 +106,25 @@ TEST(WeatherRegions, LaterRegionsApplyOverEarlierOnes) {
   EXPECT_FLOAT_EQ(inFirst.anvilBias, 0.7f);
 }
 
+// Columns at random in the disc of `radius` about `centre` all lie under the cell's ceiling
+// (columnWeatherCeiling()); returns the highest coverage and type among them.
+glm::vec2 highestUnderTheCeiling(const shader::CloudUniforms& u, glm::vec2 centre, float radius,
+                                 int samples, std::mt19937& random) {
+  std::uniform_real_distribution<float> unit(0.0f, 1.0f);
+  const glm::vec2 ceiling = shader::columnWeatherCeiling(centre, radius, u);
+  glm::vec2 highest(0.0f);
+  for (int k = 0; k < samples; ++k) {
+    const float angle = unit(random) * 6.2831853f;
+    const glm::vec2 p =
+        centre + radius * std::sqrt(unit(random)) * glm::vec2(std::cos(angle), std::sin(angle));
+    const shader::ColumnWeather c = shader::columnWeather(p, u);
+    EXPECT_LE(c.coverage, ceiling.x + 1e-5f) << p.x << ", " << p.y;
+    EXPECT_LE(c.cloudType, ceiling.y + 1e-5f) << p.x << ", " << p.y;
+    highest = glm::max(highest, glm::vec2(c.coverage, c.cloudType));
+  }
+  return highest;
+}
+
 TEST(WeatherRegions, TheCellCeilingBoundsEveryColumnInTheCell) {
   std::mt19937 random(7);
   std::uniform_real_distribution<float> unit(0.0f, 1.0f);
@@ -127,16 +146,8 @@ TEST(WeatherRegions, TheCellCeilingBoundsEveryColumnInTheCell) {
     const glm::vec2 centre((unit(random) - 0.5f) * 20000.0f, (unit(random) - 0.5f) * 20000.0f);
     const float radius = 100.0f + unit(random) * 3000.0f;
     const glm::vec2 ceiling = shader::columnWeatherCeiling(centre, radius, u);
-    glm::vec2 highest(0.0f);
-    for (int k = 0; k < 400; ++k) {
-      const float angle = unit(random) * 6.2831853f;
-      const glm::vec2 p =
-          centre + radius * std::sqrt(unit(random)) * glm::vec2(std::cos(angle), std::sin(angle));
-      const shader::ColumnWeather c = shader::columnWeather(p, u);
-      ASSERT_LE(c.coverage, ceiling.x + 1e-5f) << "trial " << trial;
-      ASSERT_LE(c.cloudType, ceiling.y + 1e-5f) << "trial " << trial;
-      highest = glm::max(highest, glm::vec2(c.coverage, c.cloudType));
-    }
+    const glm::vec2 highest = highestUnderTheCeiling(u, centre, radius, 400, random);
+    ASSERT_FALSE(HasFailure()) << "trial " << trial;
     tight += ceiling.x - highest.x < 0.05f;
   }
   EXPECT_GT(tight, 100) << "the ceiling is so loose it would skip nothing";
@@ -144,6 +155,23 @@ TEST(WeatherRegions, TheCellCeilingBoundsEveryColumnInTheCell) {
   const shader::CloudUniforms u = uniformsWith({disc({0.0, 0.0}, 100.0f, 1000.0f, 0.8f)});
   EXPECT_FLOAT_EQ(shader::columnWeatherCeiling(glm::vec2(600.0f, 0.0f), 0.0f, u).x,
                   shader::columnWeather(glm::vec2(600.0f, 0.0f), u).coverage);
+}
+
+// A superstorm's look (a clear eye, a full wall, bands) under the ceiling too.
+TEST(WeatherRegions, TheCellCeilingBoundsASuperstormsColumns) {
+  WeatherRegion storm = disc({0.0, 0.0}, 30000.0f, 10000.0f, 0.6f);
+  storm.vortex.eyeRadiusMetres = 3000.0f;
+  clouds::Settings s;
+  s.weatherRegions = 1;
+  s.superstorms = 1;
+  const shader::CloudUniforms u = uniformsWith({storm}, s);
+  ASSERT_EQ(u.vortexRegion, 0u);
+  std::mt19937 random(11);
+  std::uniform_real_distribution<float> unit(0.0f, 1.0f);
+  for (int trial = 0; trial < 100 && !HasFailure(); ++trial) {
+    const glm::vec2 centre((unit(random) - 0.5f) * 60000.0f, (unit(random) - 0.5f) * 60000.0f);
+    highestUnderTheCeiling(u, centre, 100.0f + unit(random) * 3000.0f, 200, random);
+  }
 }
 
 TEST(WeatherRegions, WithoutRegionsTheUniformsAreTheSkysAlone) {
