@@ -281,6 +281,18 @@ TEST(HeadlessCapture, EachSceneGetsOnlyThePassesAndPipelinesItNeeds) {
       << changing;
   EXPECT_NE(changing.find(R"("weather regions": ["the far ridge"])"), std::string::npos)
       << changing;
+  EXPECT_NE(changing.find(R"x(, weather regions)")x"), std::string::npos) << changing;
+  // A superstorm: its region, and the vortex code in the clouds module's pipelines (the scenes
+  // above, the changing weather's included, have none).
+  const std::string superstorm =
+      runSampleOutput("--headless --describe --width 64 --height 36 --scene " +
+                      std::string(SAMPLE_ASSET_DIR) + "/scenes/superstorm.json");
+  EXPECT_NE(superstorm.find(R"("weather regions": ["the superstorm"])"), std::string::npos)
+      << superstorm;
+  EXPECT_NE(superstorm.find(R"x(lightning bolts, weather regions, superstorm)")x"),
+            std::string::npos)
+      << superstorm;
+  EXPECT_EQ(changing.find("superstorm"), std::string::npos) << changing;
   EXPECT_NE(changing.find(R"("passes": ["cloud shadows", "terrain sunlight", "atmosphere", )"
                           R"("scene", "clouds", "clouds composite", "tonemap", "capture"])"),
             std::string::npos)

@@ -225,6 +225,8 @@ std::vector<std::string> CloudFeature::effects() const {
   if (settings_.lightningFlashes > 0) names.emplace_back("lightning");
   if (settings_.lightningBoltSegments > 0) names.emplace_back("lightning bolts");
   if (hasHeroClouds_) names.emplace_back("hero clouds");
+  if (settings_.weatherRegions > 0) names.emplace_back("weather regions");
+  if (settings_.superstorms > 0) names.emplace_back("superstorm");
   return names;
 }
 
