@@ -107,7 +107,12 @@ const std::map<std::string, std::size_t> kCppOffsets = {FIELD(inverseProjection)
                                                         FIELD(edgeSubpixelOffsets),
                                                         FIELD(weatherRegionCount),
                                                         FIELD(layerDensityScale),
-                                                        FIELD(fullestCoverage)};
+                                                        FIELD(fullestCoverage),
+                                                        FIELD(previousClipFromWorld),
+                                                        FIELD(vortexClock),
+                                                        FIELD(vortexRegion),
+                                                        FIELD(vortexHistorySeconds),
+                                                        FIELD(vortexPadding)};
 #undef FIELD
 
 std::string reflect() {
@@ -140,7 +145,8 @@ TEST(UniformLayout, GlslAndCppAgreeOnEveryFieldOfTheBlock) {
   const std::map<std::string, std::size_t> regionMembers = {
       {"placement", offsetof(WeatherRegionUniform, placement)},
       {"shape", offsetof(WeatherRegionUniform, shape)},
-      {"look", offsetof(WeatherRegionUniform, look)}};
+      {"look", offsetof(WeatherRegionUniform, look)},
+      {"vortex", offsetof(WeatherRegionUniform, vortex)}};
   const std::regex regionMember(R"(frameWeatherRegions\[(\d+)\]\.(\w+): offset (\d+))");
   std::size_t regionFields = 0;
   for (auto it = std::sregex_iterator(reflection.begin(), reflection.end(), regionMember);
