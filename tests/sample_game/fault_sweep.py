@@ -19,8 +19,8 @@ every submission. A first run without a fault counts the calls.
 With --windowed the sample opens a window (run it under Xvfb) and the faults are the window's:
 the swapchain's creations, and the first and last-but-one acquire and present reporting each of
 out-of-date and suboptimal (the run must rebuild the swapchain and go on: a second
-"swapchain:" line, exit 0), surface-lost and out-of-memory (a clear error), besides the spread
-of creations and the submission faults.
+"swapchain:" line, exit 0), surface-lost and out-of-memory (a clear error), besides a shorter
+spread of creations and the first and last submissions' faults.
 
 usage: fault_sweep.py [--windowed] SAMPLE LAYER_DATA_HOME OUT_DIR
 (CLOUDSCAPE_FAULT_SWEEP_ALL=1 fails every creation in turn instead, for a longer search.)
@@ -50,6 +50,7 @@ RESULT_NAMES = {"out-of-date": "VK_ERROR_OUT_OF_DATE_KHR", "suboptimal": "VK_SUB
                 "surface-lost": "VK_ERROR_SURFACE_LOST_KHR",
                 "out-of-memory": "VK_ERROR_OUT_OF_DEVICE_MEMORY"}
 SPREAD_POINTS = 16
+WINDOWED_SPREAD_POINTS = 6
 
 
 def run_sample(sample, data_home, out_dir, fault, name, windowed):
@@ -89,8 +90,12 @@ def faults_to_try(calls, windowed):
     creations = calls["create"]
     if os.environ.get("CLOUDSCAPE_FAULT_SWEEP_ALL"):  # every creation (about 8 minutes)
         return [f"create:{n}" for n in range(1, creations + 1)]
+    # In a window, fewer points of the spread and the first and last submissions only: the
+    # headless sweep fails the spread's every point and every submission, and a windowed run
+    # (about 10 s: it compiles the pipelines each time) is there for the window's own faults.
+    points = WINDOWED_SPREAD_POINTS if windowed else SPREAD_POINTS
     spread = sorted({1, 2, 3, 4, 5, creations} |
-                    {1 + (creations - 1) * i // (SPREAD_POINTS - 1) for i in range(SPREAD_POINTS)})
+                    {1 + (creations - 1) * i // (points - 1) for i in range(points)})
     faults = [f"create:{n}" for n in spread]
     for kind in WINDOW_CREATION_KINDS if windowed else CREATION_KINDS:
         faults += [f"{kind}:{n}" for n in first_and_last(calls, kind)]
@@ -100,8 +105,9 @@ def faults_to_try(calls, windowed):
             count = calls.get(kind, 0)
             faults += [f"{kind}:{n}:{result}" for n in sorted({1, max(count - 1, 1)})
                        for result in PRESENTATION_RESULTS]
-    faults += [f"vkQueueSubmit:{n}" for n in range(1, calls["submit"] + 1)]
-    faults += [f"device-lost:{n}" for n in range(1, calls["submit"] + 1)]
+    submissions = sorted({1, calls["submit"]}) if windowed else range(1, calls["submit"] + 1)
+    faults += [f"vkQueueSubmit:{n}" for n in submissions]
+    faults += [f"device-lost:{n}" for n in submissions]
     return faults
 
 
