@@ -14,6 +14,7 @@
 #include <filesystem>
 #include <fstream>
 #include <memory>
+#include <ostream>
 #include <string>
 #include <utility>
 #include <vector>
@@ -119,86 +120,114 @@ TEST(HeadlessCapture, CaptureAllWritesEveryFrameAndRunsAreDeterministic) {
             engine::assets::readImage(a / "frame_0001.png").pixels);
 }
 
-// Every shipped scene, a scripted ground strike in the storm, and weather (a region's too)
-// turning, renders the same HDR frames (every frame, to the bit) in a rerun and with lavapipe
-// on 1, 2 or 4 threads: no pass depends on the order its invocations run in.
-TEST(HeadlessCapture, EveryScenesFramesAreTheSameAtAnyThreadCount) {
-  struct Run {
-    std::string scene;
-    std::string script;
-  };
-  std::vector<Run> runs;
+// A run of the sample: a scene, and a script or none.
+struct SceneRun {
+  std::string name;  // the test's name: letters, digits and underscores
+  std::string scene;
+  std::string script;
+};
+
+std::vector<SceneRun> shippedScenes() {
+  std::vector<SceneRun> runs;
   for (const auto& entry : fs::directory_iterator(fs::path(SAMPLE_ASSET_DIR) / "scenes")) {
-    if (entry.path().extension() == ".json") runs.push_back({entry.path().string(), ""});
+    if (entry.path().extension() == ".json")
+      runs.push_back({entry.path().stem().string(), entry.path().string(), ""});
   }
-  runs.push_back({SAMPLE_ASSET_DIR + std::string("/scenes/thunderstorm.json"),
+  std::sort(runs.begin(), runs.end(),
+            [](const SceneRun& a, const SceneRun& b) { return a.name < b.name; });
+  return runs;
+}
+
+// Every shipped scene, a scripted ground strike in the storm, and weather (a region's too)
+// turning from the first frame (the shipped scenes hold their first state for a while).
+std::vector<SceneRun> scenesAndChanges() {
+  std::vector<SceneRun> runs = shippedScenes();
+  runs.push_back({"thunderstorm_striking",
+                  SAMPLE_ASSET_DIR + std::string("/scenes/thunderstorm.json"),
                   std::string(SAMPLE_TEST_DIR) + "/scripts/ground_strikes_every_8_frames.json"});
-  // The weather and a region's in transition from the first frame (the shipped scenes hold
-  // their first state for a while).
-  runs.push_back({std::string(SAMPLE_TEST_DIR) + "/scenes/weather_turning.json", ""});
-  ASSERT_GE(runs.size(), 6u);
+  runs.push_back(
+      {"weather_turning", std::string(SAMPLE_TEST_DIR) + "/scenes/weather_turning.json", ""});
+  return runs;
+}
+
+void PrintTo(const SceneRun& run, std::ostream* out) {
+  *out << run.scene << (run.script.empty() ? "" : " with ") << run.script;
+}
+
+std::string sceneRunName(const testing::TestParamInfo<SceneRun>& info) {
+  return info.param.name;
+}
+
+// One test per scene, so the shards share them out (each run compiles its scene's pipelines).
+class EveryScene : public testing::TestWithParam<SceneRun> {};
+class EverySceneAndChange : public testing::TestWithParam<SceneRun> {};
+
+// Renders the same HDR frames (every frame, to the bit) with lavapipe on 1 and on 4 threads: no
+// pass depends on the order its invocations run in (two runs, so a rerun's differences would
+// show too).
+TEST_P(EverySceneAndChange, FramesAreTheSameAtAnyThreadCount) {
+  const SceneRun& run = GetParam();
   constexpr int kFrames = 10;
-  for (const Run& run : runs) {
-    std::vector<std::vector<ImageRgba32f>> captures;
-    for (const char* threads : {"2", "2", "1", "4"}) {
-      const fs::path dir = freshDir((std::string("threads_") + threads).c_str());
-      const std::string script = run.script.empty() ? "" : " --script " + run.script;
-      ASSERT_EQ(std::system((std::string("LP_NUM_THREADS=") + threads + " " + SAMPLE_GAME_EXE +
-                             " --headless --frames " + std::to_string(kFrames) +
-                             " --fixed-dt 0.0333 --width 160 --height 90 --capture-all --capture " +
-                             dir.string() + " --scene " + run.scene + script + " >/dev/null")
-                                .c_str()),
-                0)
-          << run.scene;
-      std::vector<ImageRgba32f> frames;
-      for (int f = 0; f < kFrames; ++f) {
-        char name[32];
-        std::snprintf(name, sizeof(name), "frame_%04d.exr", f);
-        frames.push_back(engine::assets::readImage(dir / name));
-      }
-      captures.push_back(std::move(frames));
+  std::vector<std::vector<ImageRgba32f>> captures;
+  for (const char* threads : {"1", "4"}) {
+    const fs::path dir = freshDir(("threads_" + std::string(threads) + "_" + run.name).c_str());
+    const std::string script = run.script.empty() ? "" : " --script " + run.script;
+    ASSERT_EQ(std::system((std::string("LP_NUM_THREADS=") + threads + " " + SAMPLE_GAME_EXE +
+                           " --headless --frames " + std::to_string(kFrames) +
+                           " --fixed-dt 0.0333 --width 160 --height 90 --capture-all --capture " +
+                           dir.string() + " --scene " + run.scene + script + " >/dev/null")
+                              .c_str()),
+              0);
+    std::vector<ImageRgba32f> frames;
+    for (int f = 0; f < kFrames; ++f) {
+      char name[32];
+      std::snprintf(name, sizeof(name), "frame_%04d.exr", f);
+      frames.push_back(engine::assets::readImage(dir / name));
     }
-    for (std::size_t run_index = 1; run_index < captures.size(); ++run_index) {
-      for (int f = 0; f < kFrames; ++f) {
-        ASSERT_EQ(captures[run_index][std::size_t(f)].pixels, captures[0][std::size_t(f)].pixels)
-            << run.scene << " frame " << f << ": "
-            << (run_index == 1 ? "a rerun differs" : "another thread count differs");
-      }
-    }
+    captures.push_back(std::move(frames));
+  }
+  for (int f = 0; f < kFrames; ++f) {
+    ASSERT_EQ(captures[1][std::size_t(f)].pixels, captures[0][std::size_t(f)].pixels)
+        << "frame " << f << " differs between 1 and 4 threads";
   }
 }
 
-// Every shipped scene, paused (a step of 0) and stepped by a microsecond, ten seconds and an
-// hour a frame (the clouds' wind, weather and lightning, the time of day and the flight all
-// advance by it), and after an uptime of 1e6 s, stays finite, not negative and no brighter than
-// the sun's disc (1.6e9 cd/m^2 at noon), under validation.
-TEST(HeadlessCapture, EveryScenesFramesStayFiniteAtExtremeTimeStepsAndUptime) {
-  std::vector<fs::path> scenes;
-  for (const auto& entry : fs::directory_iterator(fs::path(SAMPLE_ASSET_DIR) / "scenes")) {
-    if (entry.path().extension() == ".json") scenes.push_back(entry.path());
-  }
-  ASSERT_GE(scenes.size(), 5u);
-  for (const fs::path& scene : scenes) {
-    for (const char* dt : {"--fixed-dt 0", "--fixed-dt 0.000001", "--fixed-dt 10",
-                           "--fixed-dt 3600", "--fixed-dt 0.0333 --start-time 1000000"}) {
-      const fs::path dir = freshDir("extreme_time_step");
-      ASSERT_EQ(runSample("--headless --validation --frames 4 " + std::string(dt) +
-                          " --width 96 --height 54 --capture " + dir.string() + " --scene " +
-                          scene.string() + " >/dev/null 2>&1"),
-                0)
-          << scene.filename() << " " << dt;
-      const ImageRgba32f frame = engine::assets::readImage(dir / "frame_0003.exr");
-      double sum = 0.0;
-      float largest = 0.0f;
-      for (float v : frame.pixels) {
-        ASSERT_TRUE(std::isfinite(v) && v >= 0.0f) << scene.filename() << " " << dt << ": " << v;
-        sum += v;
-        largest = std::max(largest, v);
-      }
-      EXPECT_LT(largest, 1e10f) << scene.filename() << " " << dt;
-      EXPECT_GT(sum, 0.0) << scene.filename() << " " << dt << ": a black frame";
+INSTANTIATE_TEST_SUITE_P(HeadlessCapture, EverySceneAndChange,
+                         testing::ValuesIn(scenesAndChanges()), sceneRunName);
+
+// Paused (a step of 0) and stepped by a microsecond, ten seconds and an hour a frame (the
+// clouds' wind, weather and lightning, the time of day and the flight all advance by it), and
+// after an uptime of 1e6 s, the scene stays finite, not negative and no brighter than the sun's
+// disc (1.6e9 cd/m^2 at noon), under validation.
+TEST_P(EveryScene, FramesStayFiniteAtExtremeTimeStepsAndUptime) {
+  const SceneRun& run = GetParam();
+  for (const char* dt : {"--fixed-dt 0", "--fixed-dt 0.000001", "--fixed-dt 10", "--fixed-dt 3600",
+                         "--fixed-dt 0.0333 --start-time 1000000"}) {
+    const fs::path dir = freshDir(("extreme_time_step_" + run.name).c_str());
+    ASSERT_EQ(runSample("--headless --validation --frames 4 " + std::string(dt) +
+                        " --width 96 --height 54 --capture " + dir.string() + " --scene " +
+                        run.scene + " >/dev/null 2>&1"),
+              0)
+        << dt;
+    const ImageRgba32f frame = engine::assets::readImage(dir / "frame_0003.exr");
+    double sum = 0.0;
+    float largest = 0.0f;
+    for (float v : frame.pixels) {
+      ASSERT_TRUE(std::isfinite(v) && v >= 0.0f) << dt << ": " << v;
+      sum += v;
+      largest = std::max(largest, v);
     }
+    EXPECT_LT(largest, 1e10f) << dt;
+    EXPECT_GT(sum, 0.0) << dt << ": a black frame";
   }
+}
+
+INSTANTIATE_TEST_SUITE_P(HeadlessCapture, EveryScene, testing::ValuesIn(shippedScenes()),
+                         sceneRunName);
+
+// The two suites above see the scenes (an empty folder would make them vacuous).
+TEST(HeadlessCapture, TheShippedScenesAreFound) {
+  ASSERT_GE(shippedScenes().size(), 9u);
 }
 
 TEST(HeadlessCapture, EachSceneGetsOnlyThePassesAndPipelinesItNeeds) {

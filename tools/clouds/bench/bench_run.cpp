@@ -11,10 +11,6 @@
 namespace bench {
 namespace {
 
-bool selected(const std::vector<std::string>& only, const std::string& name) {
-  return only.empty() || std::find(only.begin(), only.end(), name) != only.end();
-}
-
 double median(std::vector<double> values) {
   if (values.empty()) return 0.0;
   std::sort(values.begin(), values.end());
@@ -241,7 +237,7 @@ BenchResults runBenchmark(engine::gfx::Device& device, const RunOptions& options
   }
 
   // --- The cloud shadow map's knobs (its own views and error; none with --view elsewhere). ----
-  results.shadows = runShadowBenchmark(device, options.onlyViews, progress);
+  results.shadows = runShadowBenchmark(device, options.onlyViews, options.onlyConfigs, progress);
 
   // --- Hero clouds: seed 002's optimisation ladder (its own views and Reference). ------------
   results.voxels = runVoxelLadder(device, options.extent, options.timedFrames,

@@ -137,6 +137,10 @@ std::string number(double value) {
   return text;
 }
 
+bool selected(const std::vector<std::string>& only, const std::string& name) {
+  return only.empty() || std::find(only.begin(), only.end(), name) != only.end();
+}
+
 std::vector<BenchConfig> presetConfigs() {
   std::vector<BenchConfig> configs;
   for (clouds::Quality q : {clouds::Quality::Low, clouds::Quality::Medium, clouds::Quality::High,

@@ -72,4 +72,7 @@ std::vector<Sweep> sweepsOf(const std::vector<BenchConfig>& configs, clouds::Qua
 // A knob's value as the tables and plots show it ("%g").
 std::string number(double value);
 
+// Whether `name` is in a --view or --config selection (an empty one selects everything).
+bool selected(const std::vector<std::string>& only, const std::string& name);
+
 }  // namespace bench

@@ -118,14 +118,15 @@ std::vector<Sweep> shadowSweeps(const std::vector<BenchConfig>& configs) {
 
 ShadowResults runShadowBenchmark(engine::gfx::Device& device,
                                  const std::vector<std::string>& onlyViews,
+                                 const std::vector<std::string>& onlyConfigs,
                                  void (*progress)(const std::string& line)) {
   ShadowResults results;
-  results.configs = shadowConfigs();
+  for (const BenchConfig& config : shadowConfigs()) {
+    if (selected(onlyConfigs, config.name)) results.configs.push_back(config);
+  }
+  if (results.configs.empty()) return results;
   for (const ShadowView& view : shadowViews()) {
-    if (!onlyViews.empty() &&
-        std::find(onlyViews.begin(), onlyViews.end(), view.name) == onlyViews.end()) {
-      continue;
-    }
+    if (!selected(onlyViews, view.name)) continue;
     results.views.push_back(view.name);
     // Every configuration has its own module (its own cascades); frames are interleaved across
     // them, one frame of each in turn.

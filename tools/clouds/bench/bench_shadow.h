@@ -41,9 +41,12 @@ struct ShadowResults {
 std::vector<BenchConfig> shadowConfigs();
 std::vector<Sweep> shadowSweeps(const std::vector<BenchConfig>& configs);
 
-// `onlyViews`: when not empty, only these views run (as the rest of the benchmark's --view).
+// `onlyViews`, `onlyConfigs`: when not empty, only these views and configurations (by name, as
+// in shadowConfigs()) run, as the rest of the benchmark's --view and --config; a selection
+// that leaves no configuration leaves the section empty.
 ShadowResults runShadowBenchmark(engine::gfx::Device& device,
                                  const std::vector<std::string>& onlyViews,
+                                 const std::vector<std::string>& onlyConfigs,
                                  void (*progress)(const std::string& line));
 
 }  // namespace bench

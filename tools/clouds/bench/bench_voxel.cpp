@@ -5,6 +5,7 @@
 #include <memory>
 
 #include "bench_reference.h"
+#include "bench_setup.h"
 #include "cloud_harness.h"
 #include "clouds/nvdf.h"
 #include "engine/core/error.h"
@@ -126,10 +127,7 @@ VoxelResults runVoxelLadder(engine::gfx::Device& device, VkExtent2D extent,
   }
   std::vector<double> sweeps;
   for (const VoxelView& view : voxelViews()) {
-    if (!onlyViews.empty() &&
-        std::find(onlyViews.begin(), onlyViews.end(), view.name) == onlyViews.end()) {
-      continue;
-    }
+    if (!selected(onlyViews, view.name)) continue;
     results.views.push_back(view.name);
     progress(view.name + ": Reference");
     const Reference truth =
