@@ -308,11 +308,13 @@ TEST(HeadlessCapture, EachSceneGetsOnlyThePassesAndPipelinesItNeeds) {
   EXPECT_NE(changing.find(R"("weather": ["sparse", "cloudy", "squall", "stormy", "overcast"])"),
             std::string::npos)
       << changing;
-  EXPECT_NE(changing.find(R"("weather regions": ["the far ridge"])"), std::string::npos)
+  EXPECT_NE(changing.find(R"("weather regions": ["the far ridge", "the superstorm out west"])"),
+            std::string::npos)
       << changing;
-  EXPECT_NE(changing.find(R"x(, weather regions)")x"), std::string::npos) << changing;
-  // A superstorm: its region, and the vortex code in the clouds module's pipelines (the scenes
-  // above, the changing weather's included, have none).
+  EXPECT_NE(changing.find(R"x(lightning bolts, weather regions, superstorm)")x"), std::string::npos)
+      << changing;
+  // A superstorm: its region, and the vortex code in the clouds module's pipelines; a scene with
+  // plain regions has the regions' code and no vortex code (nor have the scenes above).
   const std::string superstorm =
       runSampleOutput("--headless --describe --width 64 --height 36 --scene " +
                       std::string(SAMPLE_ASSET_DIR) + "/scenes/superstorm.json");
@@ -321,7 +323,13 @@ TEST(HeadlessCapture, EachSceneGetsOnlyThePassesAndPipelinesItNeeds) {
   EXPECT_NE(superstorm.find(R"x(lightning bolts, weather regions, superstorm)")x"),
             std::string::npos)
       << superstorm;
-  EXPECT_EQ(changing.find("superstorm"), std::string::npos) << changing;
+  const std::string front =
+      runSampleOutput("--headless --describe --width 64 --height 36 --scene " +
+                      std::string(SAMPLE_ASSET_DIR) + "/scenes/storm_front.json");
+  EXPECT_NE(front.find(R"("weather regions": ["front over the range"])"), std::string::npos)
+      << front;
+  EXPECT_NE(front.find(R"x(, weather regions)")x"), std::string::npos) << front;
+  EXPECT_EQ(front.find("superstorm"), std::string::npos) << front;
   EXPECT_NE(changing.find(R"("passes": ["cloud shadows", "terrain sunlight", "atmosphere", )"
                           R"("scene", "clouds", "clouds composite", "tonemap", "capture"])"),
             std::string::npos)

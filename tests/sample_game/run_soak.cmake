@@ -1,6 +1,7 @@
 # The soak: 10,000 frames of the changing weather scene at 160x90 (time of day, wind, a weather
-# schedule through every built-in state and lightning all running, 0.06 s a frame: ten simulated
-# minutes, the schedule's 320 s cycle twice) under the validation layer (any message fails the
+# schedule through every built-in state, regions on schedules of their own, a superstorm among
+# them, and lightning all running, 0.06 s a frame: ten simulated minutes, the schedule's 320 s
+# cycle twice) under the validation layer (any message fails the
 # run) with --soak-report, then the series checked: GPU memory and pipelines the same in every row, host memory grown by less than
 # 4 MiB after the first 1,000 frames. The series is printed (frame time is reported, not held:
 # a timed assertion would flake).
