@@ -231,6 +231,9 @@ TEST(HeadlessCapture, TheShippedScenesAreFound) {
 }
 
 TEST(HeadlessCapture, EachSceneGetsOnlyThePassesAndPipelinesItNeeds) {
+  const auto describe = [](const std::string& scenePath) {
+    return runSampleOutput("--headless --describe --width 64 --height 36 --scene " + scenePath);
+  };
   struct Case {
     std::string scene;
     std::string passes;
@@ -292,8 +295,7 @@ TEST(HeadlessCapture, EachSceneGetsOnlyThePassesAndPipelinesItNeeds) {
        R"("modules": ["clouds"], "shadow casters": [])"},
   };
   for (const Case& c : cases) {
-    const std::string out =
-        runSampleOutput("--headless --describe --width 64 --height 36 --scene " + c.scene);
+    const std::string out = describe(c.scene);
     EXPECT_NE(out.find(c.passes), std::string::npos) << c.scene << "\n" << out;
     EXPECT_NE(out.find(c.pipelines), std::string::npos) << c.scene << "\n" << out;
     EXPECT_NE(out.find(c.modules), std::string::npos) << c.scene << "\n" << out;
@@ -303,8 +305,7 @@ TEST(HeadlessCapture, EachSceneGetsOnlyThePassesAndPipelinesItNeeds) {
   }
   // Changing weather: its schedule, and the default scene's passes, none more.
   const std::string changing =
-      runSampleOutput("--headless --describe --width 64 --height 36 --scene " +
-                      std::string(SAMPLE_ASSET_DIR) + "/scenes/changing_weather.json");
+      describe(std::string(SAMPLE_ASSET_DIR) + "/scenes/changing_weather.json");
   EXPECT_NE(changing.find(R"("weather": ["sparse", "cloudy", "squall", "stormy", "overcast"])"),
             std::string::npos)
       << changing;
@@ -316,16 +317,13 @@ TEST(HeadlessCapture, EachSceneGetsOnlyThePassesAndPipelinesItNeeds) {
   // A superstorm: its region, and the vortex code in the clouds module's pipelines; a scene with
   // plain regions has the regions' code and no vortex code (nor have the scenes above).
   const std::string superstorm =
-      runSampleOutput("--headless --describe --width 64 --height 36 --scene " +
-                      std::string(SAMPLE_ASSET_DIR) + "/scenes/superstorm.json");
+      describe(std::string(SAMPLE_ASSET_DIR) + "/scenes/superstorm.json");
   EXPECT_NE(superstorm.find(R"("weather regions": ["the superstorm"])"), std::string::npos)
       << superstorm;
   EXPECT_NE(superstorm.find(R"x(lightning bolts, weather regions, superstorm)")x"),
             std::string::npos)
       << superstorm;
-  const std::string front =
-      runSampleOutput("--headless --describe --width 64 --height 36 --scene " +
-                      std::string(SAMPLE_ASSET_DIR) + "/scenes/storm_front.json");
+  const std::string front = describe(std::string(SAMPLE_ASSET_DIR) + "/scenes/storm_front.json");
   EXPECT_NE(front.find(R"("weather regions": ["front over the range"])"), std::string::npos)
       << front;
   EXPECT_NE(front.find(R"x(, weather regions)")x"), std::string::npos) << front;
