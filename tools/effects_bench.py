@@ -9,6 +9,9 @@ GPU-timestamp medians the sample prints), the effect's cost as the median of the
 differences, and what the scene without it lacks exactly: frame-graph passes, pipelines (as
 --describe lists them) and GPU memory (as the sample reports it at exit).
 
+Weather is measured the same way: the storm front's regions against the same scene without
+them, and a change of weather against the same weather held steady at the change's midpoint.
+
 The HUD and the settings panel are measured the same way (OUT_DIR/hud.md): the tonemap pass
 they are drawn in, with and without them.
 
@@ -65,9 +68,27 @@ FLASH_EFFECT = "lightning, a flash always active"
 GROUND_STRIKES_SCRIPT = os.path.join(ROOT, "tests", "sample_game", "scripts",
                                      "ground_strikes_every_8_frames.json")
 BOLT_EFFECT = "lightning, a ground strike and its bolt always active"
+# Weather regions: the storm front (one region over the range, its own schedule) against the
+# same scene without its regions.
+FRONT_SCENE = os.path.join(ROOT, "assets_src", "scenes", "storm_front.json")
+REGIONS_EFFECT = "weather regions (the storm front)"
+# A change of weather against the same weather held: the default scene changing from FAIR to
+# TOWERING over CHANGE_SECONDS, measured over the frames from CHANGE_START_SECONDS on (the middle
+# of the change), against the state halfway held (the look of the change's middle frame). The
+# two states blow with the same wind, so the clouds drift to the same places in both runs and
+# only the look differs: what a change can cost more is the module's work to follow it (the
+# history's tolerance, the shadow map's remakes, the led look), not other clouds.
+FAIR = {"coverage": 0.5, "cloudType": 0.6, "densityMultiplier": 1.0, "anvilBias": 0.0,
+        "detailErosion": 0.45}
+TOWERING = {"coverage": 0.75, "cloudType": 0.9, "densityMultiplier": 1.5, "anvilBias": 0.5,
+            "detailErosion": 0.3}
+CHANGE_SECONDS = 20.0
+CHANGE_START_SECONDS = 8.0  # 120 frames at 30 fps: 8 to 12 s, eased from 35% to 65% of it
+CHANGE_EFFECT = "a change of weather (its middle, against that weather held)"
 # Extra comparisons: (effect, the scene with it, its script, the scene without it).
 EXTRA = [(SUN_EFFECT, "sun in view"), (STORM_EFFECT, "storm"), (FLASH_EFFECT, "flashing"),
-         (BOLT_EFFECT, "bolting")]
+         (BOLT_EFFECT, "bolting"), (REGIONS_EFFECT, "storm front"),
+         (CHANGE_EFFECT, "weather changing")]
 # Lightning's budget (1 ms a frame while flashes are active) is smaller than the frame sum's
 # noise (other passes swing by more between runs: the cloud shadows' is bimodal), so its cost is
 # also summed over the passes it changes only: the frame graph's scene pass (the terrain's
@@ -81,8 +102,14 @@ WITH_SCENES = {
     "storm": "the thunderstorm scene, everything",
     "flashing": "the calm storm, a strike every 8 frames",
     "bolting": "the calm storm, a ground strike every 8 frames",
+    "storm front": "the storm front, everything",
+    "weather changing": "the default scene as its weather changes",
+    CHANGE_EFFECT: "the default scene, the change's midpoint held",
 }
 LIGHTNING_EFFECTS = [STORM_EFFECT, FLASH_EFFECT, BOLT_EFFECT]
+# Weather's cost in the passes it may change: the cloud shadow map's cascades and the march.
+WEATHER_EFFECTS = [REGIONS_EFFECT, CHANGE_EFFECT]
+WEATHER_PASSES = ["frame: cloud shadows", "frame: clouds", "clouds: march"]
 LIGHTNING_PASSES = ["frame: scene", "clouds: lightning", "clouds: reconstruct",
                     "clouds: upsample", "clouds: lightning bolts"]
 
@@ -106,13 +133,15 @@ OPTIONS = {"sample": SAMPLE, "width": 640, "height": 360}
 
 
 SCRIPTS = {}  # scene path -> the script it runs with
+RUN_ARGS = {}  # scene path -> the sample's options it runs with (its clock)
 
 
 def run(scene_path, frames, extra=()):
     script = ("--script", SCRIPTS[scene_path]) if scene_path in SCRIPTS else ()
+    clock = RUN_ARGS.get(scene_path, ())
     command = [OPTIONS["sample"], "--headless", "--width", str(OPTIONS["width"]), "--height",
                str(OPTIONS["height"]), "--quality", "medium", "--frames", str(frames), "--scene",
-               scene_path, *script, *extra]
+               scene_path, *script, *clock, *extra]
     env = dict(os.environ, LP_NUM_THREADS=os.environ.get("LP_NUM_THREADS", "2"))
     result = subprocess.run(command, capture_output=True, text=True, env=env, check=False)
     if result.returncode != 0:
@@ -201,6 +230,25 @@ def hud_lines(rows, rounds, frames, width, height):
     return lines
 
 
+def changing_weather(scene):
+    """The default scene changing from FAIR to TOWERING (a scene edit)."""
+    scene["weather"] = {
+        "states": {"fair": FAIR, "towering": TOWERING},
+        "schedule": [{"state": "fair", "holdSeconds": 0, "transitionSeconds": CHANGE_SECONDS},
+                     {"state": "towering", "holdSeconds": 1e6, "transitionSeconds": 0}],
+        "repeat": False}
+
+
+def midway_weather(scene):
+    """The default scene holding the state halfway from FAIR to TOWERING (every field is
+    blended linearly; the schedule eases, so its middle is at half the change's time)."""
+    midway = {k: (FAIR[k] + TOWERING[k]) / 2 for k in FAIR}
+    scene["weather"] = {"states": {"midway": midway},
+                        "schedule": [{"state": "midway", "holdSeconds": 1e6,
+                                      "transitionSeconds": 0}],
+                        "repeat": False}
+
+
 def describe(scene_path):
     out = run(scene_path, 1, ("--describe",))
     line = next(l for l in out.splitlines() if l.startswith("{"))
@@ -237,6 +285,7 @@ def main():
             with open(path) as f:
                 return json.load(f)
         sun, storm, calm = load(SUN_SCENE), load(STORM_SCENE), load(CALM_STORM_SCENE)
+        front = load(FRONT_SCENE)
         variants = [("everything", base, lambda s: None)]
         variants += [(name, base, edit) for name, edit in EFFECTS]
         variants += [("sun in view", sun, lambda s: None),
@@ -246,15 +295,24 @@ def main():
                      ("flashing", calm, lambda s: None),
                      (FLASH_EFFECT, calm, without("lightning")),
                      ("bolting", calm, lambda s: None),
-                     (BOLT_EFFECT, calm, without("lightning"))]
+                     (BOLT_EFFECT, calm, without("lightning")),
+                     ("storm front", front, lambda s: None),
+                     (REGIONS_EFFECT, front, lambda s: s["weather"].pop("regions")),
+                     ("weather changing", base, changing_weather),
+                     (CHANGE_EFFECT, base, midway_weather)]
         for name, source, edit in variants:
             scene = copy.deepcopy(source)
             edit(scene)
-            paths[name] = os.path.join(scenes, name.replace(" ", "_").replace(",", "") + ".json")
+            paths[name] = os.path.join(scenes, re.sub(r"[^a-z]+", "_", name) + ".json")
             with open(paths[name], "w") as f:
                 json.dump(scene, f)
         SCRIPTS[paths["flashing"]] = STRIKES_SCRIPT
         SCRIPTS[paths["bolting"]] = GROUND_STRIKES_SCRIPT
+        # The weather's clock at a 30 fps game's pace (headless runs otherwise step by the
+        # wall clock, 0.1 to 0.25 s a frame here), from the change's middle on.
+        for name in ("weather changing", CHANGE_EFFECT):
+            RUN_ARGS[paths[name]] = ("--fixed-dt", str(1 / 30), "--start-time",
+                                     str(CHANGE_START_SECONDS))
         described = {name: describe(path) for name, path in paths.items()}
         times = {name: [] for name in paths}
         pass_times = {name: [] for name in paths}
@@ -279,8 +337,9 @@ def main():
         f"Generated by `tools/effects_bench.py` ({args.rounds} rounds of {args.frames} frames, "
         f"headless, {args.width}x{args.height}, Medium, `LP_NUM_THREADS=2`, on this project's "
         "machine; one uncounted run first). Each round "
-        "renders the default scene with every effect and once without each, and the scenes "
-        "below with and without god rays or lightning, interleaved. GPU "
+        "renders the default scene with every effect and once without each, the scenes "
+        "below with and without god rays, lightning or weather regions, and a change of "
+        "weather and its midpoint held, interleaved. GPU "
         "time is the frame's: the sum of the per-pass GPU-timestamp medians the sample prints; "
         "the cost is the median of the paired differences (the range in brackets). What the "
         "scene without the effect lacks is exact: its frame-graph passes, pipelines (as "
@@ -307,24 +366,42 @@ def main():
             f"| {name} | {with_ms:.2f} | {without_ms:.2f} | {statistics.median(diffs):+.2f} "
             f"({min(diffs):+.2f} to {max(diffs):+.2f}) | {', '.join(passes) or '-'} | "
             f"{', '.join(pipelines) or '-'} | {mib:.2f} |")
+    def pass_table(effects, passes):
+        """Rows of each effect's paired cost in each of `passes`, and in all of them."""
+        rows = ["| effect | " + " | ".join(passes) + " | all of them |",
+                "|---|" + "---|" * (len(passes) + 1)]
+        for name in effects:
+            full = extra_full[name]
+            def paired(keys):
+                diffs = [sum(a.get(k, 0.0) - b.get(k, 0.0) for k in keys)
+                         for a, b in zip(pass_times[full], pass_times[name])]
+                return (f"{statistics.median(diffs):+.2f} ({min(diffs):+.2f} to "
+                        f"{max(diffs):+.2f})")
+            rows.append(f"| {name} | " + " | ".join(paired([k]) for k in passes) +
+                        f" | {paired(passes)} |")
+        return rows
+
     lines += [
         "",
         "Lightning in the passes it changes (ms; the median of the paired differences, the range "
         "in brackets; a pass a scene does not run counts 0). Its budget: 1 ms a frame while "
         "flashes are active.",
         "",
-        "| effect | " + " | ".join(LIGHTNING_PASSES) + " | all of them |",
-        "|---|" + "---|" * (len(LIGHTNING_PASSES) + 1),
+        *pass_table(LIGHTNING_EFFECTS, LIGHTNING_PASSES),
+        "",
+        "Weather in the clouds' passes (as above). A change of weather is measured in its middle "
+        f"(the default scene's look eased over {CHANGE_SECONDS:.0f} s from coverage "
+        f"{FAIR['coverage']} to {TOWERING['coverage']}, type {FAIR['cloudType']} to "
+        f"{TOWERING['cloudType']}, density x{FAIR['densityMultiplier']} to "
+        f"x{TOWERING['densityMultiplier']}, anvils {FAIR['anvilBias']} to "
+        f"{TOWERING['anvilBias']}; the frames from {CHANGE_START_SECONDS:.0f} s on at 30 fps) "
+        "against the look of its midpoint held, under the same wind: what the change costs "
+        "more is the module following it (the cloud shadow map's cascades remade as the look "
+        "moves, the march led ahead of the history), not other clouds. Its budget: what steady "
+        "weather costs, within the runs' noise.",
+        "",
+        *pass_table(WEATHER_EFFECTS, WEATHER_PASSES),
     ]
-    for name in LIGHTNING_EFFECTS:
-        full = extra_full[name]
-        def paired(keys):
-            diffs = [sum(a.get(k, 0.0) - b.get(k, 0.0) for k in keys)
-                     for a, b in zip(pass_times[full], pass_times[name])]
-            return (f"{statistics.median(diffs):+.2f} ({min(diffs):+.2f} to "
-                    f"{max(diffs):+.2f})")
-        cells = [paired([k]) for k in LIGHTNING_PASSES]
-        lines.append(f"| {name} | " + " | ".join(cells) + f" | {paired(LIGHTNING_PASSES)} |")
     lines += [
         "",
         "God rays and lightning are also measured where they work: looking into the sun (the "
@@ -333,7 +410,9 @@ def main():
         "every 8 frames; then ground strikes, each drawing its bolt) in a calm storm seen from "
         "low over the plains (`tests/sample_game/scenes/storm_calm.json`: the ground fills the "
         "lower half of the view, the terrain's flash light's worst case), each against the same "
-        "scene without the effect.",
+        "scene without the effect. Weather regions are measured in the storm front "
+        "(`assets_src/scenes/storm_front.json`: one region over the range, on a schedule of its "
+        "own) against it without its regions.",
         "",
         "An effect a scene leaves out costs it nothing it can be charged with: the passes and "
         "pipelines above are absent from the scene without it (an effect inside a module, such "

@@ -1,6 +1,8 @@
 #include "frame_series.h"
 
+#include <algorithm>
 #include <cstdio>
+#include <string>
 
 #include "clouds/ecs/cloud_components.h"
 #include "clouds/ecs/frame_budget.h"
@@ -12,7 +14,7 @@ namespace sample {
 
 FrameSeries::FrameSeries(const std::filesystem::path& file) : out_(file) {
   if (!out_) throw engine::Error(file.string() + ": cannot write the frame series");
-  out_ << "frame,seconds,wall_ms,gpu_ms,cloud_preset,governor,target_ms\n";
+  out_ << "frame,seconds,wall_ms,gpu_ms,cloud_preset,governor,target_ms,clouds_history\n";
 }
 
 void FrameSeries::afterFrame(std::uint64_t frame, double wallMilliseconds,
@@ -23,13 +25,19 @@ void FrameSeries::afterFrame(std::uint64_t frame, double wallMilliseconds,
       [&](const clouds::ecs::CloudQuality& q) { preset = clouds::qualityName(q.preset); });
   const auto* governor = world.ctx().tryGet<clouds::ecs::CloudGovernorStatus>();
   const bool governed = governor != nullptr && governor->active;
+  // The clouds' history this frame: "reprojected", or why it was not (commas made safe).
+  std::string history = "none";
+  if (const auto* clouds = world.ctx().tryGet<clouds::ecs::CloudStatus>()) {
+    history = clouds->report.historyUsed ? "reprojected" : clouds->report.resetReason;
+    std::replace(history.begin(), history.end(), ',', ';');
+  }
   char row[192];
-  std::snprintf(row, sizeof(row), "%llu,%.4f,%.3f,%.3f,%s,%s,%.3f\n",
+  std::snprintf(row, sizeof(row), "%llu,%.4f,%.3f,%.3f,%s,%s,%.3f,",
                 static_cast<unsigned long long>(frame),
                 world.ctx().get<engine::ecs::FrameTime>().elapsedSeconds, wallMilliseconds,
                 gpu != nullptr && gpu->measured ? gpu->milliseconds : 0.0, preset,
                 governed ? governor->reason : "off", governed ? governor->targetMilliseconds : 0.0);
-  out_ << row;
+  out_ << row << history << "\n";
 }
 
 }  // namespace sample

@@ -600,6 +600,95 @@ TEST(HeadlessCapture, AScriptedStrikeGlowsAndLeavesNoGhost) {
       << "no glow left behind";
 }
 
+// Painted weather on the schedule: a fair map held for 1 s, blended over 6 s into an overcast
+// one, which then holds. The clouds keep their history every frame of it (the map moves by
+// less than the history's 1% a frame: a frame that moved it more would have dropped it), the
+// frames before and after are those of the fair and the overcast map alone, and the frame
+// halfway is neither.
+TEST(HeadlessCapture, APaintedMapBlendsIntoTheNextOnTheWeatherSchedule) {
+  const fs::path dir = freshDir("painted_schedule");
+  fs::create_directories(dir);
+  // R coverage, G type, B density, everywhere the same: the noise makes the clouds.
+  const auto paint = [&](const char* name, std::uint8_t coverage) {
+    engine::assets::ImageRgba8 map{32, 32, {}};
+    for (std::size_t i = 0; i < 32 * 32; ++i) {
+      map.pixels.insert(map.pixels.end(), {coverage, 128, 255, 255});
+    }
+    engine::assets::writePng(dir / name, map);
+  };
+  paint("fair.png", 140);
+  paint("overcast.png", 250);
+  const std::string start = R"({
+    "name": "painted", "camera": {"position": [0, 300, 0], "pitchDegrees": 25},
+    "sun": {"timeOfDayHours": 14},
+    "exposure": {"mode": "manual", "ev100": 14},)";
+  const auto writeScene = [&](const char* name, const std::string& body) {
+    std::ofstream(dir / name) << start << body << "}";
+    return (dir / name).string();
+  };
+  const std::string scheduled = writeScene("scheduled.json", R"(
+    "clouds": {"weatherMap": "fair.png"},
+    "weather": {"states": {"the layer's": {}}, "repeat": false, "schedule": [
+      {"state": "the layer's", "holdSeconds": 1, "transitionSeconds": 6},
+      {"state": "the layer's", "holdSeconds": 1000, "weatherMap": "overcast.png"}]})");
+  const std::string fair = writeScene("fair.json", R"("clouds": {"weatherMap": "fair.png"})");
+  const std::string overcast =
+      writeScene("overcast.json", R"("clouds": {"weatherMap": "overcast.png"})");
+  // Frames at 30 fps: 25 in the fair hold, 120 halfway through the blend, 239 after it.
+  std::ofstream(dir / "views.json") << R"({"events": [{"frame": 25, "capture": "before"},
+    {"frame": 120, "capture": "middle"}, {"frame": 239, "capture": "after"},
+    {"frame": 240, "exit": true}]})";
+  const auto run = [&](const std::string& scenePath, const char* out, const char* series) {
+    return runSample(
+        "--headless --fixed-dt 0.0333333 --width 160 --height 90 --validation "
+        "--scene " +
+        scenePath + " --script " + (dir / "views.json").string() + " --capture " +
+        (dir / out).string() + " --frame-series " + (dir / series).string());
+  };
+  ASSERT_EQ(run(scheduled, "scheduled", "scheduled.csv"), 0);
+  ASSERT_EQ(run(fair, "fair", "fair.csv"), 0);
+  ASSERT_EQ(run(overcast, "overcast", "overcast.csv"), 0);
+
+  // The history, frame by frame (the first frame has none to keep).
+  std::ifstream series(dir / "scheduled.csv");
+  std::string line;
+  std::getline(series, line);
+  ASSERT_EQ(line.substr(line.rfind(',') + 1), "clouds_history");
+  std::size_t frames = 0;
+  while (std::getline(series, line)) {
+    const std::string history = line.substr(line.rfind(',') + 1);
+    if (frames++ > 0) {
+      EXPECT_EQ(history, "reprojected") << "frame " << frames - 1;
+    }
+  }
+  EXPECT_GE(frames, 240u);
+
+  // How far apart two captures are: the mean |difference| of their luminances over the mean.
+  const auto apart = [&](const fs::path& a, const fs::path& b) {
+    double difference = 0.0, sum = 0.0;
+    for (const auto& [la, lb] : luminances(a, b)) {
+      difference += std::abs(double(la) - lb);
+      sum += la;
+    }
+    return difference / std::max(sum, 1e-9);
+  };
+  const double maps = apart(dir / "fair" / "after.exr", dir / "overcast" / "after.exr");
+  const double before = apart(dir / "scheduled" / "before.exr", dir / "fair" / "before.exr");
+  const double after = apart(dir / "scheduled" / "after.exr", dir / "overcast" / "after.exr");
+  const double fromFair = apart(dir / "scheduled" / "middle.exr", dir / "fair" / "middle.exr");
+  const double fromOvercast =
+      apart(dir / "scheduled" / "middle.exr", dir / "overcast" / "middle.exr");
+  std::printf(
+      "painted schedule: the maps' frames %.3f apart; before %.4f from fair, after %.4f "
+      "from overcast; halfway %.3f from fair, %.3f from overcast\n",
+      maps, before, after, fromFair, fromOvercast);
+  EXPECT_GT(maps, 0.1) << "the two maps make other skies";
+  EXPECT_LT(before, 0.01 * maps) << "before the blend: the fair map's frame";
+  EXPECT_LT(after, 0.1 * maps) << "after it: the overcast map's";
+  EXPECT_GT(fromFair, 0.2 * maps) << "halfway: no longer the fair map's sky";
+  EXPECT_GT(fromOvercast, 0.2 * maps) << "halfway: not yet the overcast map's";
+}
+
 // How much a pattern of `period` px stands out of an image region: the spread of the means
 // over the pixels at each place in the period (content that does not repeat with it averages
 // out), over the region's mean.

@@ -1,7 +1,8 @@
 # Smoke test of the effects benchmark (tools/effects_bench.py): a tiny run must finish and
 # write a table with a row per effect, each saying what the scene without it lacks; the god
 # rays' row names their pipelines and memory, and the terrain shadows' adds no memory; and
-# lightning's cost is summed over the passes it changes; the HUD has its table too.
+# lightning's cost is summed over the passes it changes; weather regions and a change of weather
+# have their rows; the HUD has its table too.
 # Inputs: PYTHON, SCRIPT, SAMPLE (the executable), OUT_DIR.
 file(REMOVE_RECURSE "${OUT_DIR}")
 execute_process(
@@ -14,7 +15,8 @@ endif()
 file(READ "${OUT_DIR}/results.md" report)
 foreach(row "| terrain |" "| clouds |" "| atmosphere |" "| cloud shadows |"
             "| terrain shadows |" "| god rays |" "| god rays, sun in view |" "| lightning |"
-            "| lightning, a flash always active |")
+            "| lightning, a flash always active |" "| weather regions (the storm front) |"
+            "| a change of weather (its middle, against that weather held) |")
   string(FIND "${report}" "${row}" at)
   if(at EQUAL -1)
     message(FATAL_ERROR "results.md has no row ${row}")
@@ -25,6 +27,14 @@ if(NOT report MATCHES "\\| god rays \\|[^\n]*\\| clouds module: god rays \\| 0\\
 endif()
 if(NOT report MATCHES "\\| lightning, a flash always active \\|[^\n]*clouds module: lightning")
   message(FATAL_ERROR "the lightning's row does not name its pipelines:\n${report}")
+endif()
+# The regions' code is in their own pipeline variant; a change of weather adds no pass or
+# pipeline to the weather held.
+if(NOT report MATCHES "\\| weather regions \\(the storm front\\) \\|[^\n]*clouds module: weather regions")
+  message(FATAL_ERROR "the weather regions' row does not name their pipelines:\n${report}")
+endif()
+if(NOT report MATCHES "\\| a change of weather [^|]*\\|[^|]*\\|[^|]*\\|[^|]*\\| - \\| - \\|")
+  message(FATAL_ERROR "a change of weather adds passes or pipelines:\n${report}")
 endif()
 if(NOT report MATCHES "\\| terrain shadows \\|[^\n]*\\| 0\\.00 \\|")
   message(FATAL_ERROR "the terrain shadows' row adds memory:\n${report}")

@@ -253,6 +253,36 @@ TEST(Scenes, AWeatherScheduleArrivesInTheDescription) {
   EXPECT_EQ(w.schedule.timeline().stateAt(1e6), w.schedule.keys[2].state);
 }
 
+// Painted weather on the schedule: each key's map, its own or the layer's; written back, the
+// same maps.
+TEST(Scenes, PaintedMapsOnTheWeatherScheduleArriveInTheDescription) {
+  // Any existing files stand for the maps: only the game reads them.
+  const fs::path first = writeScene("front_a.png", "");
+  const fs::path second = writeScene("front_b.png", "");
+  const fs::path layer = writeScene("fair.png", "");
+  const sample::SceneDescription s = loadSceneDescription(writeScene("painted.json", R"({
+    "name": "p", "camera": {"position": [0, 1100, 0]},
+    "clouds": {"weatherMap": "fair.png"},
+    "weather": {"schedule": [{"state": "sparse", "weatherMap": "front_a.png"},
+                             {"state": "cloudy"},
+                             {"state": "overcast", "weatherMap": "front_b.png"}]}})"));
+  ASSERT_TRUE(s.weather.has_value());
+  const std::vector<fs::path> maps =
+      sample::scheduledWeatherMaps(s.weather->schedule, s.clouds->weatherMap);
+  ASSERT_EQ(maps.size(), 3u);
+  EXPECT_EQ(fs::canonical(maps[0]), fs::canonical(first));
+  EXPECT_EQ(fs::canonical(maps[1]), fs::canonical(layer)) << "the layer's map for a key without";
+  EXPECT_EQ(fs::canonical(maps[2]), fs::canonical(second));
+  // A schedule that paints nothing keeps the layer's map (or the procedural weather).
+  sample::ScheduleDescription plain = s.weather->schedule;
+  plain.weatherMaps.assign(plain.keys.size(), std::nullopt);
+  EXPECT_TRUE(sample::scheduledWeatherMaps(plain, s.clouds->weatherMap).empty());
+  // Written back (absolute paths) and read again: the same maps.
+  const fs::path back = writeScene("painted_back.json", sample::sceneJson(s));
+  const sample::SceneDescription again = loadSceneDescription(back);
+  EXPECT_EQ(sample::scheduledWeatherMaps(again.weather->schedule, again.clouds->weatherMap), maps);
+}
+
 // Weather regions: a place with one state or a schedule of its own, over the layer's own look
 // when the scene has no schedule; a storm's cells are found under a storm region's stormiest
 // state, where the fair layer has none.
@@ -539,6 +569,26 @@ TEST(Scenes, MalformedScenesNameFilePathAndReason) {
            "weather": {"repeat": true,
                        "regions": [{"name": "r", "centre": [0, 0], "state": "cloudy"}]}})",
        "weather.repeat: a schedule's: there is none"},
+      {"weather_map_missing.json",
+       R"({"name": "x", "camera": {"position": [0, 1, 0]}, "clouds": {},
+           "weather": {"schedule": [{"state": "sparse", "weatherMap": "nowhere.png"}]}})",
+       "weather.schedule[0].weatherMap: file not found"},
+      // (A file that exists stands for a painted map: the scene is refused before any is read.)
+      {"weather_map_partial.json",
+       R"({"name": "x", "camera": {"position": [0, 1, 0]}, "clouds": {},
+           "weather": {"schedule": [{"state": "sparse", "weatherMap": "weather_map_partial.json"},
+                                    {"state": "cloudy"}]}})",
+       "weather.schedule: key 1 (\"cloudy\") has no weatherMap and the layer none"},
+      {"weather_map_region.json",
+       R"({"name": "x", "camera": {"position": [0, 1, 0]}, "clouds": {},
+           "weather": {"regions": [{"name": "r", "centre": [0, 0], "schedule": [
+             {"state": "cloudy", "weatherMap": "weather_map_region.json"}]}]}})",
+       "weather.regions[0].schedule[0].weatherMap: a region sets a look over the layer's map"},
+      {"weather_map_cells.json",
+       R"({"name": "x", "camera": {"position": [0, 1, 0]}, "clouds": {},
+           "weather": {"schedule": [{"state": "stormy", "weatherMap": "weather_map_cells.json"}]},
+           "lightning": {"cellsFromWeather": {}}})",
+       "lightning.cellsFromWeather: found in the procedural weather only, not a painted map"},
       {"lightning_ground.json",
        R"({"name": "x", "camera": {"position": [0, 1, 0]}, "clouds": {},
            "lightning": {"cells": [{"position": [0, 2000, 0]}], "groundAltitudeMetres": 1e6}})",

@@ -153,6 +153,13 @@ std::string JsonReader::string(const std::string& key, const std::string& fallba
   return has(key) ? string(key) : fallback;
 }
 
+std::filesystem::path JsonReader::existingFile(const std::string& key,
+                                               const std::filesystem::path& directory) const {
+  const std::filesystem::path path = directory / string(key);
+  if (!std::filesystem::is_regular_file(path)) fail(key, "file not found: " + path.string());
+  return path;
+}
+
 std::string JsonReader::choice(const std::string& key, const std::vector<std::string>& allowed,
                                const std::string& fallback) const {
   if (!has(key)) return fallback;

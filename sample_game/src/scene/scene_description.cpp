@@ -57,19 +57,10 @@ SunDescription readSun(const JsonReader& r) {
   return s;
 }
 
-std::filesystem::path resolveFile(const JsonReader& r, const std::string& key,
-                                  const std::filesystem::path& sceneDir) {
-  const std::filesystem::path path = sceneDir / r.string(key);
-  if (!std::filesystem::is_regular_file(path)) {
-    r.fail(key, "file not found: " + path.string());
-  }
-  return path;
-}
-
 TerrainDescription readTerrain(const JsonReader& r, const std::filesystem::path& sceneDir) {
   TerrainDescription t;
   const std::string gltf = r.string("gltf");
-  t.gltf = gltf == "default" ? std::filesystem::path("default") : resolveFile(r, "gltf", sceneDir);
+  t.gltf = gltf == "default" ? std::filesystem::path("default") : r.existingFile("gltf", sceneDir);
   t.castsShadows = r.boolean("castsShadows", true);
   if (r.has("snowlineMetres")) t.snowlineMetres = r.number("snowlineMetres", -1000.0, 20000.0, 0.0);
   r.finish();
@@ -95,7 +86,7 @@ HeroCloudDescription readHeroCloud(const JsonReader& r, const std::filesystem::p
     if (asset == name) h.shipped = asset;
   }
   if (h.shipped.empty()) {
-    h.file = resolveFile(r, "asset", sceneDir);
+    h.file = r.existingFile("asset", sceneDir);
     const std::string extension = h.file.extension().string();
     if (extension != ".nvdf" && extension != ".vdb") {
       r.fail("asset",
@@ -164,7 +155,7 @@ CloudDescription readClouds(const JsonReader& r, const std::filesystem::path& sc
   // no pass, mask or pipeline. The quality preset picks the samples.
   if (r.boolean("godRays", false)) s.godRaySamples = kSceneGodRaySamples;
   c.noiseSeed = static_cast<std::uint32_t>(r.integer("noiseSeed", 0, 0xffffffffLL, c.noiseSeed));
-  if (r.has("weatherMap")) c.weatherMap = resolveFile(r, "weatherMap", sceneDir);
+  if (r.has("weatherMap")) c.weatherMap = r.existingFile("weatherMap", sceneDir);
   if (r.has("heroClouds")) {
     for (const JsonReader& hero : r.objects("heroClouds")) {
       c.heroClouds.push_back(readHeroCloud(hero, sceneDir));
@@ -260,7 +251,8 @@ LightningDescription readLightning(const JsonReader& r, const CloudDescription& 
     const double within = found.number("withinMetres", 1000.0, 1e6, 20000.0);
     const auto radius = float(found.number("radiusMetres", 10.0, 1e5, 4000.0));
     found.finish();
-    if (clouds.weatherMap) {
+    if (clouds.weatherMap ||
+        (weather && !scheduledWeatherMaps(weather->schedule, clouds.weatherMap).empty())) {
       r.fail("cellsFromWeather", "found in the procedural weather only, not a painted map");
     }
     const glm::dvec2 centre(camera.position.x, camera.position.z);
@@ -306,7 +298,7 @@ SceneDescription loadSceneDescription(const std::filesystem::path& file) {
   if (root.has("weather")) {
     if (!scene.clouds) root.fail("weather", "weather is the clouds': the scene has none");
     scene.weather = readWeather(root.object("weather"), scene.clouds->settings,
-                                scene.clouds->windDirectionDegrees);
+                                scene.clouds->windDirectionDegrees, scene.clouds->weatherMap, dir);
     if (scene.weather->strikes() && !root.has("lightning")) {
       root.fail("weather", "a state strikes lightning: the scene needs a \"lightning\" storm");
     }

@@ -220,7 +220,10 @@ void populateScene(ecs::App& app, const SceneDescription& scene,
     // Changing weather, as data: the layer's look follows its timeline on the game clock.
     if (scene.weather) {
       clouds::ecs::CloudWeather weather{
-          scene.weather->schedule.timeline(), scene.weather->schedule.states, {}};
+          scene.weather->schedule.timeline(),
+          scene.weather->schedule.states,
+          {},
+          scheduledWeatherMaps(scene.weather->schedule, scene.clouds->weatherMap)};
       for (const RegionDescription& r : scene.weather->regions) {
         weather.regions.push_back({r.name, r.place, r.schedule.timeline(), r.schedule.states});
       }

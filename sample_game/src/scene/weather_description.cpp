@@ -75,9 +75,10 @@ clouds::WeatherState namedState(const JsonReader& r, const char* field, const st
 }
 
 // The keys of a "schedule" in `r` (and its "repeat"), each naming a built-in state or one of
-// `states`.
+// `states`, and (with a `sceneDir`: the layer's schedule) a painted map.
 ScheduleDescription readSchedule(const JsonReader& r, const std::vector<NamedWeatherState>& states,
-                                 double layerWindDegrees) {
+                                 double layerWindDegrees,
+                                 const std::filesystem::path* sceneDir = nullptr) {
   ScheduleDescription d;
   const std::vector<JsonReader> keys = r.objects("schedule");
   if (keys.empty()) r.fail("schedule", "at least one state");
@@ -87,6 +88,14 @@ ScheduleDescription readSchedule(const JsonReader& r, const std::vector<NamedWea
     k.state = namedState(key, "state", name, states, layerWindDegrees);
     k.holdSeconds = key.number("holdSeconds", 0.0, 1e7, k.holdSeconds);
     k.transitionSeconds = key.number("transitionSeconds", 0.0, 1e7, k.transitionSeconds);
+    if (key.has("weatherMap") && sceneDir == nullptr) {
+      key.fail("weatherMap",
+               "a region sets a look over the layer's map: only the layer's "
+               "schedule paints maps");
+    }
+    d.weatherMaps.push_back(key.has("weatherMap")
+                                ? std::optional(key.existingFile("weatherMap", *sceneDir))
+                                : std::nullopt);
     key.finish();
     d.states.push_back(name);
     d.keys.push_back(k);
@@ -175,7 +184,9 @@ std::vector<clouds::WeatherRegion> WeatherDescription::stormiestRegions() const 
 }
 
 WeatherDescription readWeather(const JsonReader& r, const clouds::Settings& layer,
-                               double layerWindDegrees) {
+                               double layerWindDegrees,
+                               const std::optional<std::filesystem::path>& layerMap,
+                               const std::filesystem::path& sceneDir) {
   WeatherDescription d;
   if (r.has("states")) {
     const JsonReader states = r.object("states");
@@ -206,15 +217,36 @@ WeatherDescription readWeather(const JsonReader& r, const clouds::Settings& laye
   }
   d.ownSchedule = r.has("schedule") || d.regions.empty();
   if (d.ownSchedule) {
-    d.schedule = readSchedule(r, d.states, layerWindDegrees);
+    d.schedule = readSchedule(r, d.states, layerWindDegrees, &sceneDir);
+    const std::vector<std::optional<std::filesystem::path>>& maps = d.schedule.weatherMaps;
+    const bool painted = std::any_of(maps.begin(), maps.end(), [](const auto& m) { return m; });
+    for (std::size_t i = 0; painted && !layerMap && i < maps.size(); ++i) {
+      if (!maps[i]) {
+        r.fail("schedule", "key " + std::to_string(i) + " (\"" + d.schedule.states[i] +
+                               "\") has no weatherMap and the layer none: with painted maps "
+                               "every key needs one, its own or clouds.weatherMap");
+      }
+    }
   } else {
     d.schedule.keys = {clouds::WeatherKey{clouds::weatherOf(layer), 60.0, 0.0}};
     d.schedule.states = {"the layer's"};
+    d.schedule.weatherMaps = {std::nullopt};
     d.schedule.repeat = false;
     if (r.has("repeat")) r.fail("repeat", "a schedule's: there is none");
   }
   r.finish();
   return d;
+}
+
+std::vector<std::filesystem::path> scheduledWeatherMaps(
+    const ScheduleDescription& schedule, const std::optional<std::filesystem::path>& layerMap) {
+  const auto& own = schedule.weatherMaps;
+  if (std::none_of(own.begin(), own.end(), [](const auto& m) { return m.has_value(); })) {
+    return {};
+  }
+  std::vector<std::filesystem::path> maps;
+  for (const auto& map : own) maps.push_back(map ? *map : layerMap.value());
+  return maps;
 }
 
 namespace {
@@ -225,6 +257,10 @@ void addSchedule(json& j, const ScheduleDescription& s) {
     keys.push_back({{"state", s.states[i]},
                     {"holdSeconds", s.keys[i].holdSeconds},
                     {"transitionSeconds", s.keys[i].transitionSeconds}});
+    if (i < s.weatherMaps.size() && s.weatherMaps[i]) {
+      keys.back()["weatherMap"] =
+          std::filesystem::absolute(*s.weatherMaps[i]).lexically_normal().string();
+    }
   }
   j["schedule"] = keys;
   j["repeat"] = s.repeat;

@@ -17,12 +17,17 @@
 // state's) with any of coverage, cloudType, densityMultiplier, anvilBias, detailErosion, wind
 // {directionDegrees, speedMetresPerSecond, skewMetres} and lightningStrikesPerMinute changed.
 // Without a schedule the layer's own look holds (a scene may change only its regions').
+// A key of the layer's schedule may name a painted "weatherMap" (PNG, relative to the scene):
+// the map blends into the next key's as its state does. Then every key has a map, its own or
+// the layer's clouds.weatherMap; a region's keys have none (a region sets a look over the map).
 // A region (clouds::WeatherRegion: a rectangle of half sides `halfSides` (m) turned by
 // `headingDegrees` as the wind's, grown by `radiusMetres`, eased into the weather around it
 // over `blendMetres`) has one "state" or a "schedule" (and "repeat") of its own. A region with
 // a "vortex" {eyeRadiusMetres, eyeWallMetres, wallSpeedMetresPerSecond, spiralArms} is a
 // superstorm (clouds::WeatherRegion::Vortex; a disc: no halfSides), at most one per scene.
+#include <filesystem>
 #include <nlohmann/json.hpp>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -42,6 +47,9 @@ struct ScheduleDescription {
   std::vector<std::string> states;  // each key's state, as the schedule names it
   std::vector<clouds::WeatherKey> keys;
   bool repeat = true;
+  // Each key's painted weather map, as the schedule gives it (empty: the layer's map, or the
+  // procedural weather when it has none).
+  std::vector<std::optional<std::filesystem::path>> weatherMaps;
 
   clouds::WeatherTimeline timeline() const;
   // The state that strikes most (where a storm's cells are looked for).
@@ -69,10 +77,17 @@ struct WeatherDescription {
 };
 
 // Reads the section; `layer` is the scene's cloud settings (a state's defaults, the built-in
-// states' wind direction) and `layerWindDegrees` its wind's heading. Throws engine::Error naming
-// the file and field on a bad section.
+// states' wind direction), `layerWindDegrees` its wind's heading, `layerMap` its painted map
+// and `sceneDir` where the scene's files are. Throws engine::Error naming the file and field on
+// a bad section.
 WeatherDescription readWeather(const engine::JsonReader& r, const clouds::Settings& layer,
-                               double layerWindDegrees);
+                               double layerWindDegrees,
+                               const std::optional<std::filesystem::path>& layerMap,
+                               const std::filesystem::path& sceneDir);
+// Each key's painted map for the layer's schedule (its own, else `layerMap`), or none when no
+// key of the schedule names one.
+std::vector<std::filesystem::path> scheduledWeatherMaps(
+    const ScheduleDescription& schedule, const std::optional<std::filesystem::path>& layerMap);
 nlohmann::json weatherJson(const WeatherDescription& weather);
 
 }  // namespace sample

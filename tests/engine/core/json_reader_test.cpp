@@ -1,5 +1,8 @@
 #include <gtest/gtest.h>
 
+#include <filesystem>
+#include <fstream>
+
 #include "engine/core/error.h"
 #include "engine/core/json_reader.h"
 
@@ -51,6 +54,19 @@ TEST(JsonReader, ErrorsNameFilePathAndReason) {
             }),
             "scene.json: clouds.typo: unknown key");
   EXPECT_EQ(errorOf([&] { r.choice("missing", {"a"}, "a"); }), "");
+}
+
+// A file a scene names, relative to the scene's folder: found, or refused naming the key.
+TEST(JsonReader, ExistingFilesAreFoundRelativeToAFolder) {
+  const std::filesystem::path dir =
+      std::filesystem::temp_directory_path() / "cloudscape_json_reader_test";
+  std::filesystem::create_directories(dir);
+  std::ofstream(dir / "map.png") << "";
+  const auto json = nlohmann::json::parse(R"({"here": "map.png", "gone": "none.png"})");
+  const JsonReader r(json, "scene.json");
+  EXPECT_EQ(r.existingFile("here", dir), dir / "map.png");
+  EXPECT_EQ(errorOf([&] { r.existingFile("gone", dir); }),
+            "scene.json: gone: file not found: " + (dir / "none.png").string());
 }
 
 TEST(JsonReader, HugeUnsignedIntegersAreOutOfRangeNotWrapped) {

@@ -60,12 +60,15 @@ std::vector<LadderStep> ladderSteps(const BenchResults& results) {
 GovernedFlight readGovernedFlight(const std::filesystem::path& file) {
   std::ifstream in(file);
   if (!in) throw engine::Error(file.string() + ": cannot read the frame series");
+  // Series written before the clouds' history was a column have one field fewer.
   const std::string expected = "frame,seconds,wall_ms,gpu_ms,cloud_preset,governor,target_ms";
+  const std::string withHistory = expected + ",clouds_history";
   std::string line;
-  if (!std::getline(in, line) || line != expected) {
-    throw engine::Error(file.string() + ":1: the header is not '" + expected +
+  if (!std::getline(in, line) || (line != expected && line != withHistory)) {
+    throw engine::Error(file.string() + ":1: the header is not '" + withHistory +
                         "' (sample_game --frame-series writes it)");
   }
+  const std::size_t fields = line == expected ? 7 : 8;
   GovernedFlight flight;
   std::vector<double> wall;
   std::vector<double> stretch;
@@ -74,9 +77,10 @@ GovernedFlight readGovernedFlight(const std::filesystem::path& file) {
   std::size_t lastChange = 0;
   for (std::size_t lineNumber = 2; std::getline(in, line); ++lineNumber) {
     const std::vector<std::string> f = splitCsv(line);
-    if (f.size() != 7) {
-      throw engine::Error(file.string() + ":" + std::to_string(lineNumber) +
-                          ": 7 fields expected, " + std::to_string(f.size()) + " found");
+    if (f.size() != fields) {
+      throw engine::Error(file.string() + ":" + std::to_string(lineNumber) + ": " +
+                          std::to_string(fields) + " fields expected, " + std::to_string(f.size()) +
+                          " found");
     }
     const double seconds = number(f[1], file, lineNumber, "seconds");
     const double wallMs = number(f[2], file, lineNumber, "wall_ms");

@@ -40,7 +40,8 @@ struct GovernedFlight {
   std::vector<std::pair<std::string, std::size_t>> framesPerPreset;  // in order of first use
 };
 
-// Reads a frame series CSV (frame,seconds,wall_ms,gpu_ms,cloud_preset,governor,target_ms).
+// Reads a frame series CSV (frame,seconds,wall_ms,gpu_ms,cloud_preset,governor,target_ms and,
+// in series written since, clouds_history).
 // Throws engine::Error naming the file, and the line where one is wrong, when it cannot be
 // read, has another header, or no governed frame.
 GovernedFlight readGovernedFlight(const std::filesystem::path& file);

@@ -75,6 +75,18 @@ CloudFeature::CloudFeature(engine::ecs::World& world, const RenderDevice& device
     throw engine::ecs::ModuleUnsupported("the clouds composite needs an RGBA16F scene colour");
   }
   if (layer.weatherMap) weatherMap_ = loadWeatherMap(device_, *layer.weatherMap);
+  world_.view<const CloudLayer, const CloudWeather>().each(
+      [&](const CloudLayer&, const CloudWeather& weather) {
+        std::vector<std::filesystem::path> files;
+        for (const std::filesystem::path& file : weather.keyWeatherMaps) {
+          const auto known = std::find(files.begin(), files.end(), file);
+          keyMap_.push_back(static_cast<std::size_t>(known - files.begin()));
+          if (known == files.end()) {
+            files.push_back(file);
+            scheduledMaps_.push_back(loadWeatherMap(device_, file));
+          }
+        }
+      });
   castsShadow_ = layer.settings.shadowCascades > 0;
   clouds::CreateInfo info;
   engine::render::describeDevice(device_, info);
@@ -194,9 +206,22 @@ void CloudFeature::placeWeatherRegions(clouds::FrameInputs& inputs) {
   inputs.weatherRegions = weatherRegions_;
 }
 
+void CloudFeature::choosePaintedWeather(HostFrame& frame) const {
+  frame.weatherView = weatherMap_ ? weatherMap_->view() : VK_NULL_HANDLE;
+  const std::optional<clouds::WeatherPhase> phase = paintedWeatherPhase(world_);
+  if (!phase || phase->from >= keyMap_.size() || phase->to >= keyMap_.size()) return;
+  const std::size_t from = keyMap_[phase->from];
+  const std::size_t to = keyMap_[phase->to];
+  frame.weatherView = scheduledMaps_[from]->view();
+  if (to != from && phase->blend > 0.0f) {
+    frame.weatherBlendView = scheduledMaps_[to]->view();
+    frame.weatherBlend = phase->blend;
+  }
+}
+
 void CloudFeature::dispatch(const HostFrame& host) {
   HostFrame frame = host;
-  frame.weatherView = weatherMap_ ? weatherMap_->view() : VK_NULL_HANDLE;
+  choosePaintedWeather(frame);
   clouds::Error error;
   clouds::FrameInputs inputs = cloudFrameInputs(world_, frame);
   flashes_ = lightningFlashes(world_, settings_.lightningFlashes);
@@ -207,7 +232,10 @@ void CloudFeature::dispatch(const HostFrame& host) {
   placeWeatherRegions(inputs);
   dispatched_ = context_->dispatch(inputs, settings_, &error);
   if (dispatched_) {
-    world_.ctx().get<CloudStatus>().lastError.clear();
+    auto& status = world_.ctx().get<CloudStatus>();
+    status.lastError.clear();
+    status.report = context_->lastFrameReport();  // this frame's, for what reads it after
+
   } else {
     reportError(error);
   }
@@ -241,7 +269,7 @@ bool CloudFeature::readsEntry(std::type_index entry) const {
 
 void CloudFeature::dispatchShadowMap(const HostFrame& host, fxcontracts::ecs::CloudShadow& shadow) {
   HostFrame frame = host;
-  frame.weatherView = weatherMap_ ? weatherMap_->view() : VK_NULL_HANDLE;
+  choosePaintedWeather(frame);
   clouds::Error error;
   clouds::FrameInputs inputs = cloudFrameInputs(world_, frame);
   placeHeroClouds(inputs);

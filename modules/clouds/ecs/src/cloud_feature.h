@@ -1,8 +1,8 @@
 #pragma once
 // The clouds module as a render feature of the engine: it owns a clouds::Context on the
-// engine's device (and the layer's painted weather map, when it has one), prepares it outside
-// the frame, and adds its passes to the renderer's frame graph: first, when the layer casts
-// shadows,
+// engine's device (and the painted weather maps, when the layer or its weather has some),
+// prepares it outside the frame, and adds its passes to the renderer's frame graph: first, when
+// the layer casts shadows,
 //   "cloud shadows"     records Context::dispatchShadowMap (the cascades due this frame) and
 //                       hands the map and its parameters to the passes after it (the haze,
 //                       the terrain) as the blackboard's fxcontracts::ecs::CloudShadow, when
@@ -33,7 +33,8 @@ struct HostFrame;
 class CloudFeature final : public engine::render::RenderFeature {
  public:
   // Throws engine::ecs::ModuleUnsupported when the module cannot be created on this device,
-  // engine::Error when the painted weather map cannot be read.
+  // engine::Error when a painted weather map (the layer's, the weather timeline's) cannot be
+  // read.
   CloudFeature(engine::ecs::World& world, const engine::render::RenderDevice& device,
                const CloudLayer& layer);
   ~CloudFeature() override;
@@ -57,6 +58,9 @@ class CloudFeature final : public engine::render::RenderFeature {
   void placeHeroClouds(clouds::FrameInputs& inputs);
   // This frame's weather regions into `inputs` (kept in weatherRegions_).
   void placeWeatherRegions(clouds::FrameInputs& inputs);
+  // This frame's painted weather into `frame`: the layer's map, or the weather timeline's key's
+  // blending into the next one's.
+  void choosePaintedWeather(HostFrame& frame) const;
   void dispatch(const HostFrame& host);
   // Fills `shadow`'s per-frame values.
   void dispatchShadowMap(const HostFrame& host, fxcontracts::ecs::CloudShadow& shadow);
@@ -72,6 +76,10 @@ class CloudFeature final : public engine::render::RenderFeature {
   engine::gfx::Device& device_;
   std::uint32_t framesInFlight_;
   std::unique_ptr<engine::gfx::Image> weatherMap_;  // the layer's painted map, if any
+  // The weather timeline's painted maps (CloudWeather::keyWeatherMaps), each file read once,
+  // and which of them each timeline key shows.
+  std::vector<std::unique_ptr<engine::gfx::Image>> scheduledMaps_;
+  std::vector<std::size_t> keyMap_;
   std::unique_ptr<clouds::Context> context_;
   clouds::Settings settings_;                          // this frame's, decided in prepare()
   std::vector<clouds::Quality> preparedAhead_;         // the governed presets prepared

@@ -61,6 +61,16 @@ std::vector<clouds::WeatherRegion> currentWeatherRegions(engine::ecs::World& wor
   return regions;
 }
 
+std::optional<clouds::WeatherPhase> paintedWeatherPhase(engine::ecs::World& world) {
+  std::optional<clouds::WeatherPhase> phase;
+  const double now = clockSeconds(world);
+  world.view<const CloudLayer, const CloudWeather>().each(
+      [&](const CloudLayer&, const CloudWeather& w) {
+        if (!w.keyWeatherMaps.empty()) phase = w.timeline.phaseAt(now);
+      });
+  return phase;
+}
+
 clouds::Settings CloudQualityKnobs::appliedTo(clouds::Settings settings) const {
   if (maxViewSteps) settings.maxViewSteps = *maxViewSteps;
   if (viewStepMetres) settings.viewStepMetres = *viewStepMetres;
@@ -165,6 +175,9 @@ clouds::FrameInputs cloudFrameInputs(engine::ecs::World& world, const HostFrame&
   in.depthLayout = host.depthLayout;
   in.weatherView = host.weatherView;
   in.weatherLayout = VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL;
+  in.weatherBlendView = host.weatherBlendView;
+  in.weatherBlendLayout = VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL;
+  in.weatherBlend = host.weatherBlend;
   in.frameIndex = host.frameIndex;
   const float aspect = float(host.extent.width) / float(std::max(host.extent.height, 1u));
   world.view<const render::Camera>().each([&](const render::Camera& camera) {

@@ -91,6 +91,29 @@ TEST(BenchLadder, AGovernedFlightIsSummarisedAfterItsWarmUp) {
   EXPECT_DOUBLE_EQ(flight.tenSecondMedians[1], 30.0);
 }
 
+// The sample's series since the clouds' history became a column read the same (older ones have
+// none).
+TEST(BenchLadder, ASeriesWithTheCloudsHistoryReadsTheSame) {
+  std::string csv = "frame,seconds,wall_ms,gpu_ms,cloud_preset,governor,target_ms,clouds_history\n";
+  for (int i = 1; i <= 40; ++i) {
+    csv += std::to_string(i) + "," + std::to_string(0.05 * i) +
+           ",30.0,20.0,Medium,holding,33.3,reprojected\n";
+  }
+  const bench::GovernedFlight flight = bench::readGovernedFlight(writeSeries("history.csv", csv));
+  EXPECT_EQ(flight.frames, 40u);
+  EXPECT_DOUBLE_EQ(flight.targetMs, 33.3);
+  const std::string shortRow =
+      "frame,seconds,wall_ms,gpu_ms,cloud_preset,governor,target_ms,"
+      "clouds_history\n0,0.0,30.0,1,Low,holding,33\n";
+  try {
+    bench::readGovernedFlight(writeSeries("history_short.csv", shortRow));
+    ADD_FAILURE() << "a row without the history column was read";
+  } catch (const engine::Error& e) {
+    EXPECT_NE(std::string(e.what()).find("history_short.csv:2: 8 fields"), std::string::npos)
+        << e.what();
+  }
+}
+
 TEST(BenchLadder, AMalformedSeriesIsRefusedNamingFileAndLine) {
   const auto message = [](const std::filesystem::path& file) {
     try {

@@ -49,6 +49,9 @@ class JsonReader {
   glm::dvec3 vec3(const std::string& key, double min, double max) const;
   glm::dvec3 vec3(const std::string& key, double min, double max, const glm::dvec3& fallback) const;
   std::vector<std::string> strings(const std::string& key) const;
+  // A path relative to `directory` (a scene's folder) naming a file that exists.
+  std::filesystem::path existingFile(const std::string& key,
+                                     const std::filesystem::path& directory) const;
 
   // Throws when the object has a key none of the accessors above asked for.
   void finish() const;

@@ -44,6 +44,12 @@ struct CloudWeather {
   clouds::WeatherTimeline timeline;
   std::vector<std::string> keyNames;     // what each of its keys is called, for HUDs and logs
   std::vector<RegionalWeather> regions;  // at most clouds::kMaxWeatherRegions, applied in order
+  // Painted weather on the timeline: each key's map (PNG: R coverage, G type, B density), one
+  // per key, read when the clouds module installs. Each frame the module renders the map of
+  // the key the timeline holds, blended into the next key's as the state is
+  // (FrameInputs::weatherBlendView), so the history survives the change. Empty: the layer's
+  // weatherMap (or the procedural weather) throughout.
+  std::vector<std::filesystem::path> keyWeatherMaps;
 
   // The weather over a world column (x, z metres) at `seconds`: the timeline's with the
   // regions' blended over it (clouds::weatherAt()).

@@ -24,6 +24,9 @@ struct HostFrame {
   VkImageView depthView = VK_NULL_HANDLE;  // none when the scene has no geometry
   VkImageLayout depthLayout = VK_IMAGE_LAYOUT_DEPTH_READ_ONLY_OPTIMAL;
   VkImageView weatherView = VK_NULL_HANDLE;  // the layer's painted weather map, if it has one
+  // A second painted map weatherView blends towards, by weatherBlend in [0, 1] (none: no blend).
+  VkImageView weatherBlendView = VK_NULL_HANDLE;
+  float weatherBlend = 0.0f;
   // What a feature that draws the sky provides (contracts/ecs/frame_entries.h), if one does:
   // the sky's radiance for the clouds' ambient, and the haze for their radiance. Both GENERAL.
   VkImageView skyRadianceView = VK_NULL_HANDLE;
@@ -41,6 +44,9 @@ struct HostFrame {
 std::optional<clouds::WeatherState> currentWeather(engine::ecs::World& world);
 // The CloudWeather's regions at FrameTime's clock, each with its look now (none without one).
 std::vector<clouds::WeatherRegion> currentWeatherRegions(engine::ecs::World& world);
+// Where the CloudWeather's timeline is at FrameTime's clock, when its keys paint weather maps
+// (CloudWeather::keyWeatherMaps): the key whose map shows and the one it blends into.
+std::optional<clouds::WeatherPhase> paintedWeatherPhase(engine::ecs::World& world);
 
 // The settings the camera renders the layer with: the layer's look under the camera's
 // CloudQuality preset and knobs, or the layer's settings as they are without one.
