@@ -39,7 +39,7 @@ layout(constant_id = kSpecMultipleScattering) const uint kMultipleScattering = 1
 layout(constant_id = kSpecLightSteps) const uint kLightSteps = 6u;
 layout(constant_id = kSpecCounters) const uint kCounters = 0u;
 layout(constant_id = kSpecEmptySpace) const uint kEmptySpace = 1u;
-layout(constant_id = kSpecTerrainShadow) const uint kTerrainShadow = 0u;
+layout(constant_id = kSpecShadowMapRead) const uint kShadowMapRead = 0u;
 layout(constant_id = kSpecLightReuse) const uint kLightReuse = 1u;
 layout(constant_id = kSpecEdgeRays) const uint kEdgeRays = 0u;
 layout(constant_id = kSpecHeroClouds) const uint kHeroClouds = 0u;
@@ -78,26 +78,50 @@ vec4 fetchWeatherMaxCoarse(ivec2 texel) { return imageLoad(weatherMaxCoarse, tex
 #define CLOUD_SHADOW_MAP_BINDING kMarchCloudShadow
 #include "fxcontracts/cloud_shadow_sampled.glsl"
 // Indexed like frame_uniforms.glsl's block, for the same reason.
-layout(binding = kMarchCloudShadowParameters, std140) uniform TerrainShadow {
-  MarchTerrainShadow terrainShadow[1];
+layout(binding = kMarchCloudShadowParameters, std140) uniform ShadowMap {
+  MarchShadowMap shadowMap[1];
 };
 
 // The share of the sun that a sample at a camera-relative (x, z) and an altitude gets past the
 // terrain: read from the shadow map's terrain channel when the host gave its terrain.
 float terrainSunLight(vec3 flatOffset, float altitude) {
-  if (kTerrainShadow == 0u) return 1.0f;
+  if (kShadowMapRead == 0u) return 1.0f;
   const uint slot = CLOUDS_FRAME_UNIFORMS_INDEX;
   float light = 1.0f;
   // Only below the highest terrain (a loop of 0 or 1 trips: most cloud is above it).
-  for (int i = 0; i < (altitude < terrainShadow[slot].terrainTopMetres ? 1 : 0); ++i) {
+  for (int i = 0; i < (altitude < shadowMap[slot].terrainTopMetres ? 1 : 0); ++i) {
     const vec3 relative = vec3(flatOffset.x, altitude - u.cameraAltitudeMetres, flatOffset.z);
     vec4 uv01;
     vec4 uv23;
-    CLOUD_SHADOW_COORDINATES(terrainShadow[slot].map, relative, uv01, uv23);
-    light = cloudShadowAt(terrainShadow[slot].map.info, uv01, uv23, altitude, kCloudShadowTerrain)
-                .y;
+    CLOUD_SHADOW_COORDINATES(shadowMap[slot].map, relative, uv01, uv23);
+    light = cloudShadowAt(shadowMap[slot].map.info, uv01, uv23, altitude, kCloudShadowTerrain).y;
   }
   return light;
+}
+
+// The optical depth of the clouds between the end of a sample's light cone and the sun: the
+// shadow map's cloud channel where the cone ends, lightConeMetres towards the sun (Schneider
+// 2022: long-distance shadows inside the clouds' own direct light). The map holds the whole
+// sun ray through that point and the altitudes of its highest and lowest cloud; what it counts
+// above the cone's end is the cloud beyond it, which the cone did not sample.
+float farCloudOpticalDepth(vec3 flatOffset, float altitude) {
+  if (kShadowMapRead == 0u) return 0.0f;
+  const uint slot = CLOUDS_FRAME_UNIFORMS_INDEX;
+  float depth = 0.0f;
+  // A loop of 0 or 1 trips: a uniform choice, compiled once.
+  for (int i = 0; i < (shadowMap[slot].cloudsOnClouds > 0.0f ? 1 : 0); ++i) {
+    const vec3 coneEnd = vec3(flatOffset.x, altitude - u.cameraAltitudeMetres, flatOffset.z) +
+                         u.sunDirection * u.lightConeMetres;
+    vec4 uv01;
+    vec4 uv23;
+    CLOUD_SHADOW_COORDINATES(shadowMap[slot].map, coneEnd, uv01, uv23);
+    const float transmittance =
+        cloudShadowAt(shadowMap[slot].map.info, uv01, uv23,
+                      coneEnd.y + u.cameraAltitudeMetres, kCloudShadowClouds)
+            .x;
+    depth = -log(max(transmittance, 1e-30f));
+  }
+  return depth;
 }
 
 // Hero clouds: the atlas and this frame's instances (read only by the kSpecHeroClouds variant;

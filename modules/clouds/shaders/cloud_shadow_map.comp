@@ -48,6 +48,7 @@ vec4 fetchWeatherMaxCoarse(ivec2 texel) { return imageLoad(weatherMaxCoarse, tex
 vec4 fetchDetailNoise(ivec3 texel) { return vec4(0.0f); }
 vec4 fetchCurl(ivec2 texel) { return vec4(0.5f); }
 float terrainSunLight(vec3 flatOffset, float altitude) { return 1.0f; }
+float farCloudOpticalDepth(vec3 flatOffset, float altitude) { return 0.0f; }
 // Hero clouds (read only by the kSpecShadowHeroClouds variant), indexed as the uniforms are.
 layout(binding = kShadowHeroAtlas, rgba8) uniform readonly image3D heroAtlas;
 layout(binding = kShadowHeroClouds, std140) uniform HeroClouds { HeroCloudUniforms heroClouds[1]; };

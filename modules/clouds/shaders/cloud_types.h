@@ -59,7 +59,7 @@ const uint kMarchSamplesOut = 6u;
 const uint kMarchWeatherMaxFine = 7u;
 const uint kMarchWeatherMaxCoarse = 8u;
 const uint kMarchCounters = 9u;
-const uint kMarchCloudShadow = 10u;            // the shadow map (terrain channel), sampled
+const uint kMarchCloudShadow = 10u;            // the shadow map, sampled (kSpecShadowMapRead)
 const uint kMarchCloudShadowParameters = 11u;  // its CloudShadowParameters (uniform block)
 const uint kMarchTraceHistory = 12u;  // last frame's reconstruction (edge rays: kSpecEdgeRays)
 const uint kMarchEdgeRayList = 13u;   // the edge rays' tiles and dispatch (kSpecEdgeRays)
@@ -162,7 +162,8 @@ const uint kSpecMultipleScattering = 3u;  // 0/1: octave multiple-scattering app
 const uint kSpecLightSteps = 4u;          // light samples per view sample (>= 0)
 const uint kSpecCounters = 5u;            // 0/1: accumulate work counters (benchmarks, tests)
 const uint kSpecEmptySpace = 6u;          // 0/1: skip empty weather cells
-const uint kSpecTerrainShadow = 7u;       // 0/1: the terrain's shadow takes the sun from clouds
+const uint kSpecShadowMapRead = 7u;       // 0/1: this frame's shadow map takes the sun from
+                                          //   clouds: the terrain's channel, the clouds' own
 const uint kSpecLightReuse = 8u;          // 0/1: the sun's optical depth on every other step
 const uint kSpecEdgeRays = 9u;            // kEdgeRays*: more rays for tiles on silhouettes
 const uint kSpecHeroClouds = 10u;         // kHeroClouds*: hero clouds (FrameInputs::heroClouds)
@@ -486,16 +487,18 @@ struct ShadowMapConstants {
 const uint kShadowTexelKeepTerrain = 1u;
 const uint kShadowTexelToSpare = 2u;
 
-// The march's uniform block for the terrain's shadow on the clouds (kMarchCloudShadowParameters):
-// the shadow map's lookup parameters, and the terrain's highest altitude (no sample above it can
-// be in the terrain's shadow: the march does not look).
+// The march's uniform block for the shadow map it reads (kMarchCloudShadowParameters): the map's
+// lookup parameters; the terrain's highest altitude (no sample above it can be in the terrain's
+// shadow: the march does not look; kNoTerrainInShadowMap without terrain); whether the clouds'
+// own channel shadows the march beyond its light cone (1) or not (0).
 #ifdef __cplusplus
 using fxcontracts::shader::CloudShadowParameters;
 #endif
-struct MarchTerrainShadow {
+const float kNoTerrainInShadowMap = -1e30f;
+struct MarchShadowMap {
   CloudShadowParameters map;
   float terrainTopMetres;
-  float padding0;
+  float cloudsOnClouds;
   float padding1;
   float padding2;
 };
@@ -747,7 +750,7 @@ static_assert(clouds::shader::kMaxHeroClouds <= 1u << clouds::shader::kHeroLight
               clouds::shader::kMaxHeroClouds * clouds::shader::kHeroLightSlotBits <= 32u);
 static_assert(sizeof(clouds::shader::ShadowMapConstants) == 80);
 static_assert(sizeof(clouds::shader::TerrainShadowConstants) == 128);
-static_assert(sizeof(clouds::shader::MarchTerrainShadow) == 14 * 16);
+static_assert(sizeof(clouds::shader::MarchShadowMap) == 14 * 16);
 #undef CLOUDS_ASSERT_OFFSET
 #endif
 

@@ -91,7 +91,7 @@ Context::Impl::Impl(const CreateInfo& info, const detail::VulkanFunctions& funct
                                        "shadow uniforms " + std::to_string(i));
     slot.shadowMap = allocateSet(Program::ShadowMap);
     slot.terrainShadow = allocateSet(Program::TerrainShadow);
-    slot.shadowParameters = uniformBlock(device_, sizeof(shader::MarchTerrainShadow),
+    slot.shadowParameters = uniformBlock(device_, sizeof(shader::MarchShadowMap),
                                          "shadow parameters " + std::to_string(i));
     slot.godRayOcclusion = allocateSet(Program::GodRayOcclusion);
     slot.godRays = allocateSet(Program::GodRays);
@@ -412,15 +412,20 @@ void Context::Impl::dispatch(const FrameInputs& inputs, const Settings& settings
     const bool shadowMapMade =
         settings.shadowCascades > 0 && images_.shadowMap && shadowFrame_ == inputs.frameIndex;
     // The terrain's shadow reaches the clouds through the shadow map's terrain channel, so only
-    // with a map made with the terrain.
+    // with a map made with the terrain; the clouds' own, beyond the light cone, through its
+    // cloud channel.
     const bool terrainShadow = inputs.terrain.heightView != VK_NULL_HANDLE && shadowMapMade;
-    shader::MarchTerrainShadow shadow{};
-    if (terrainShadow) {
+    const bool cloudsOnClouds = settings.cloudShadowsOnClouds && shadowMapMade;
+    const bool readsShadowMap = terrainShadow || cloudsOnClouds;
+    shader::MarchShadowMap shadow{};
+    if (readsShadowMap) {
       // This frame's dispatchShadowMap() placed them for this frame's camera.
       std::memcpy(&shadow.map, &shadowParameters_, sizeof(shadowParameters_));
-      shadow.terrainTopMetres = inputs.terrain.maxAltitudeMetres;
+      shadow.terrainTopMetres =
+          terrainShadow ? inputs.terrain.maxAltitudeMetres : shader::kNoTerrainInShadowMap;
+      shadow.cloudsOnClouds = cloudsOnClouds ? 1.0f : 0.0f;
     }
-    recordUniforms(cmd, slot, lastUniforms_, terrainShadow ? &shadow : nullptr,
+    recordUniforms(cmd, slot, lastUniforms_, readsShadowMap ? &shadow : nullptr,
                    heroClouds ? &lastHeroClouds_ : nullptr);
     if (heroLightVolume) recordHeroLight(cmd, heroSweep, slot);
     if (inputs.skyView != VK_NULL_HANDLE || inputs.groundAlbedo) {
@@ -428,7 +433,7 @@ void Context::Impl::dispatch(const FrameInputs& inputs, const Settings& settings
     }
     const std::uint32_t heroVariant =
         heroClouds ? detail::heroCloudVariant(lastHeroClouds_) : shader::kHeroCloudsOff;
-    recordTrace(cmd, inputs, settings, temporal, traceExtent, terrainShadow, heroVariant, slot);
+    recordTrace(cmd, inputs, settings, temporal, traceExtent, readsShadowMap, heroVariant, slot);
     outputsHoldClearSky_ = false;
     temporal_.commit(temporal, inputs, settings, traceExtent);
     report_ = FrameReport{traceExtent,          temporal.tileSize,    temporal.useHistory,

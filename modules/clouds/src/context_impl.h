@@ -107,7 +107,7 @@ class Context::Impl {
     detail::OwnedBuffer shadowUniforms;  // the CloudUniforms the shadow map is made with
     VkDescriptorSet shadowMap = VK_NULL_HANDLE;
     VkDescriptorSet terrainShadow = VK_NULL_HANDLE;
-    detail::OwnedBuffer shadowParameters;  // the march's MarchTerrainShadow
+    detail::OwnedBuffer shadowParameters;  // the march's MarchShadowMap
     VkDescriptorSet godRayOcclusion = VK_NULL_HANDLE;
     VkDescriptorSet godRays = VK_NULL_HANDLE;
     detail::OwnedBuffer godRayLight;  // god_rays.comp's GodRayLightUniforms
@@ -160,7 +160,7 @@ class Context::Impl {
   // `shadow`: the march's terrain-shadow block, when this frame's march reads it; `heroes`:
   // its hero clouds, when it draws any.
   void recordUniforms(VkCommandBuffer cmd, Slot& slot, const shader::CloudUniforms& uniforms,
-                      const shader::MarchTerrainShadow* shadow,
+                      const shader::MarchShadowMap* shadow,
                       const shader::HeroCloudUniforms* heroes);
   void recordSkyAmbient(VkCommandBuffer cmd, const FrameInputs& inputs, const Settings& settings,
                         bool shadowMapMade, Slot& slot);
@@ -185,17 +185,17 @@ class Context::Impl {
   // (recordUniforms() wrote them), kHeroCloudsOff for none.
   void recordTrace(VkCommandBuffer cmd, const FrameInputs& inputs, const Settings& settings,
                    const detail::TemporalFrame& temporal, VkExtent2D traceExtent,
-                   bool terrainShadow, std::uint32_t heroClouds, Slot& slot);
+                   bool readsShadowMap, std::uint32_t heroClouds, Slot& slot);
   // recordTrace()'s passes, in their order, each over the set recordTrace() wrote for it.
   void recordSceneDistance(VkCommandBuffer cmd, VkExtent2D traceExtent, Slot& slot);
   // `edgeRays`: detail::marchesEdgeRays(), which adds the edge tiles' dispatch.
   void recordMarch(VkCommandBuffer cmd, const Settings& settings, std::uint32_t tileSize,
-                   VkExtent2D traceExtent, bool terrainShadow, bool edgeRays,
+                   VkExtent2D traceExtent, bool readsShadowMap, bool edgeRays,
                    std::uint32_t heroClouds, Slot& slot);
   // The near field's pass (TemporalFrame::nearField): every near-field pixel's ray to the split,
   // and their resolve with last frame's (`history`: it is usable).
   void recordNearField(VkCommandBuffer cmd, const Settings& settings, VkExtent2D traceExtent,
-                       bool terrainShadow, std::uint32_t heroClouds, bool history, Slot& slot);
+                       bool readsShadowMap, std::uint32_t heroClouds, bool history, Slot& slot);
   // `lightning`: recordLightning() wrote flashes, whose glow is reconstructed too.
   void recordReconstruct(VkCommandBuffer cmd, const detail::TemporalFrame& temporal,
                          VkExtent2D traceExtent, bool lightning, Slot& slot);

@@ -13,7 +13,7 @@ static_assert(shader::kMarchSpecCount <= kKeyCapacity && shader::kUpsampleSpecCo
               "a program has more specialization constants than a key holds");
 }  // namespace
 
-SpecializationKey marchKey(const Settings& settings, bool workCounters, bool terrainShadow,
+SpecializationKey marchKey(const Settings& settings, bool workCounters, bool readsShadowMap,
                            std::uint32_t edgeRays, std::uint32_t heroClouds, bool nearField) {
   const MarchVariant v = marchVariant(settings);
   SpecializationKey key;
@@ -24,7 +24,7 @@ SpecializationKey marchKey(const Settings& settings, bool workCounters, bool ter
   key.values[shader::kSpecLightSteps] = v.lightSteps;
   key.values[shader::kSpecCounters] = workCounters ? 1u : 0u;
   key.values[shader::kSpecEmptySpace] = v.emptySpace;
-  key.values[shader::kSpecTerrainShadow] = terrainShadow ? 1u : 0u;
+  key.values[shader::kSpecShadowMapRead] = readsShadowMap ? 1u : 0u;
   key.values[shader::kSpecLightReuse] = v.lightReuse;
   key.values[shader::kSpecEdgeRays] =
       v.edgeRays != 0u && !nearField ? edgeRays : shader::kEdgeRaysOff;
@@ -112,17 +112,17 @@ std::vector<std::pair<Program, SpecializationKey>> variantsFor(const Settings& s
   // without them, with them as authored and with living ones.
   const std::uint32_t heroVariants[] = {shader::kHeroCloudsOff, shader::kHeroCloudsAuthored,
                                         shader::kHeroCloudsLiving};
-  const auto addMarch = [&](bool terrainShadow) {
+  const auto addMarch = [&](bool readsShadowMap) {
     for (std::uint32_t heroes : heroVariants) {
       if (heroes != shader::kHeroCloudsOff && !heroClouds) continue;
-      variants.emplace_back(Program::March, marchKey(settings, workCounters, terrainShadow,
+      variants.emplace_back(Program::March, marchKey(settings, workCounters, readsShadowMap,
                                                      shader::kEdgeRaysFind, heroes));
       if (settings.nearFieldMetres > 0.0f) {
-        variants.emplace_back(Program::March, marchKey(settings, workCounters, terrainShadow,
+        variants.emplace_back(Program::March, marchKey(settings, workCounters, readsShadowMap,
                                                        shader::kEdgeRaysFind, heroes, true));
       }
       if (marchVariant(settings).edgeRays == 0u) continue;
-      variants.emplace_back(Program::March, marchKey(settings, workCounters, terrainShadow,
+      variants.emplace_back(Program::March, marchKey(settings, workCounters, readsShadowMap,
                                                      shader::kEdgeRaysMarch, heroes));
     }
   };

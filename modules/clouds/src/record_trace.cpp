@@ -45,8 +45,8 @@ struct TraceFrame {
   const detail::OwnedImage& historyOut;
   VkImageView outputHistoryIn = VK_NULL_HANDLE;
   VkImageView outputHistoryOut = VK_NULL_HANDLE;
-  bool terrainShadow = false;  // the march reads the terrain's shadow from the shadow map
-  bool edgeRays = false;       // detail::marchesEdgeRays()
+  bool readsShadowMap = false;  // the march reads this frame's shadow map (marchKey())
+  bool edgeRays = false;        // detail::marchesEdgeRays()
   // The hero clouds' atlas and block. Without them, stand-ins the march's variant never reads:
   // the shape noise (RGBA8 3D) and the frame's uniforms.
   VkImageView heroAtlas = VK_NULL_HANDLE;
@@ -73,7 +73,7 @@ struct HeroBindings {
 
 TraceFrame traceFrame(const detail::ModuleImages& im, const TraceSamplers& samplers,
                       VkBuffer uniforms, const FrameInputs& inputs, const Settings& settings,
-                      const detail::TemporalFrame& temporal, bool terrainShadow,
+                      const detail::TemporalFrame& temporal, bool readsShadowMap,
                       const HeroBindings& heroes) {
   const bool hasDepth = inputs.depthView != VK_NULL_HANDLE;
   const FrameInputs::AerialPerspective& haze = inputs.aerialPerspective;
@@ -97,7 +97,7 @@ TraceFrame traceFrame(const detail::ModuleImages& im, const TraceSamplers& sampl
           upsampling ? im.outputHistory[temporal.readHistory].view() : noOutputHistory,
       .outputHistoryOut =
           upsampling ? im.outputHistory[temporal.writeHistory].view() : noOutputHistory,
-      .terrainShadow = terrainShadow,
+      .readsShadowMap = readsShadowMap,
       .edgeRays = detail::marchesEdgeRays(settings, temporal),
       .heroAtlas = heroes.atlas != VK_NULL_HANDLE ? heroes.atlas : im.shapeNoise.view(),
       .heroBlock = heroes.atlas != VK_NULL_HANDLE ? heroes.block : uniforms,
@@ -128,7 +128,7 @@ void writeSceneDistanceSet(const detail::DeviceContext& device, VkDescriptorSet 
 void writeMarchSet(const detail::DeviceContext& device, VkDescriptorSet set,
                    const TraceFrame& frame, const detail::OwnedImage& weatherMap,
                    const detail::OwnedBuffer& counters,
-                   const detail::OwnedBuffer& terrainShadowParameters,
+                   const detail::OwnedBuffer& shadowMapParameters,
                    const detail::OwnedBuffer& edgeRayList) {
   using namespace shader;
   const detail::ModuleImages& im = frame.images;
@@ -144,11 +144,12 @@ void writeMarchSet(const detail::DeviceContext& device, VkDescriptorSet set,
       .storageImage(kMarchWeatherMaxCoarse, im.weatherMaxCoarse.view())
       .storageBuffer(kMarchCounters, counters.buffer(), counters.size())
       .sampledImage(
-          kMarchCloudShadow, frame.terrainShadow ? im.shadowMap.view() : im.depthPlaceholder.view(),
+          kMarchCloudShadow,
+          frame.readsShadowMap ? im.shadowMap.view() : im.depthPlaceholder.view(),
           frame.samplers.clampedLinear,
-          frame.terrainShadow ? VK_IMAGE_LAYOUT_GENERAL : VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL)
-      .uniformBuffer(kMarchCloudShadowParameters, terrainShadowParameters.buffer(),
-                     sizeof(MarchTerrainShadow))
+          frame.readsShadowMap ? VK_IMAGE_LAYOUT_GENERAL : VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL)
+      .uniformBuffer(kMarchCloudShadowParameters, shadowMapParameters.buffer(),
+                     sizeof(MarchShadowMap))
       // Read only by frames that march edge rays (kFlagEdgeRays), which have a history; the
       // variants without edge rays never touch the list, for which the counters stand in.
       .storageImage(kMarchTraceHistory, frame.historyIn.view())
@@ -276,14 +277,14 @@ void makeOutputsVisible(const detail::DeviceContext& device, VkCommandBuffer cmd
 
 void Context::Impl::recordUniforms(VkCommandBuffer cmd, Slot& slot,
                                    const shader::CloudUniforms& uniforms,
-                                   const shader::MarchTerrainShadow* shadow,
+                                   const shader::MarchShadowMap* shadow,
                                    const shader::HeroCloudUniforms* heroes) {
   // The previous frame of this slot has completed (host contract), but earlier commands in
   // this queue may still read it: order the update after them.
   detail::memoryBarrier(device_, cmd, kCompute, VK_ACCESS_2_UNIFORM_READ_BIT | kStorageRead,
                         VK_PIPELINE_STAGE_2_TRANSFER_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT);
   device_.fn().vkCmdUpdateBuffer(cmd, slot.uniforms.buffer(), 0, sizeof(uniforms), &uniforms);
-  // Only the march's terrain variant reads it.
+  // Only the march's variant that reads the shadow map reads it.
   if (shadow != nullptr) {
     device_.fn().vkCmdUpdateBuffer(cmd, slot.shadowParameters.buffer(), 0, sizeof(*shadow), shadow);
   }
@@ -335,7 +336,7 @@ void Context::Impl::recordSkyAmbient(VkCommandBuffer cmd, const FrameInputs& inp
 
 void Context::Impl::recordTrace(VkCommandBuffer cmd, const FrameInputs& inputs,
                                 const Settings& settings, const detail::TemporalFrame& temporal,
-                                VkExtent2D traceExtent, bool terrainShadow,
+                                VkExtent2D traceExtent, bool readsShadowMap,
                                 std::uint32_t heroClouds, Slot& slot) {
   const TraceSamplers samplers{nearestSampler_.get(), linearSampler_.get(),
                                clampedLinearSampler_.get()};
@@ -348,7 +349,7 @@ void Context::Impl::recordTrace(VkCommandBuffer cmd, const FrameInputs& inputs,
         heroNoiseView()};
   }
   const TraceFrame frame = traceFrame(images_, samplers, slot.uniforms.buffer(), inputs, settings,
-                                      temporal, terrainShadow, heroBindings);
+                                      temporal, readsShadowMap, heroBindings);
   writeSceneDistanceSet(device_, slot.sceneDistance, frame);
   writeMarchSet(device_, slot.march, frame, weatherMap(), slot.counters, slot.shadowParameters,
                 slot.edgeRayList);
@@ -362,11 +363,11 @@ void Context::Impl::recordTrace(VkCommandBuffer cmd, const FrameInputs& inputs,
   if (info_.workCounters) resetWorkCounters(device_, cmd, slot.counters);
 
   recordSceneDistance(cmd, traceExtent, slot);
-  recordMarch(cmd, settings, temporal.tileSize, traceExtent, terrainShadow, frame.edgeRays,
+  recordMarch(cmd, settings, temporal.tileSize, traceExtent, readsShadowMap, frame.edgeRays,
               heroClouds, slot);
   if (frame.nearField) {
     writeNearResolveSet(device_, slot.nearResolve, frame);
-    recordNearField(cmd, settings, traceExtent, terrainShadow, heroClouds, frame.nearHistoryUsable,
+    recordNearField(cmd, settings, traceExtent, readsShadowMap, heroClouds, frame.nearHistoryUsable,
                     slot);
   }
   const bool lightning = recordLightning(cmd, inputs, slot);
@@ -407,7 +408,7 @@ void Context::Impl::recordSceneDistance(VkCommandBuffer cmd, VkExtent2D traceExt
 }
 
 void Context::Impl::recordMarch(VkCommandBuffer cmd, const Settings& settings,
-                                std::uint32_t tileSize, VkExtent2D traceExtent, bool terrainShadow,
+                                std::uint32_t tileSize, VkExtent2D traceExtent, bool readsShadowMap,
                                 bool edgeRays, std::uint32_t heroClouds, Slot& slot) {
   const std::uint32_t k = tileSize;
   if (edgeRays) recordEdgeRayListReset(cmd, slot);
@@ -415,14 +416,15 @@ void Context::Impl::recordMarch(VkCommandBuffer cmd, const Settings& settings,
   // One invocation per tile: only the pixels marched this frame.
   const detail::ComputeProgram& march = programs_[Program::March];
   bindAndDispatch(cmd, Program::March,
-                  march.find(detail::marchKey(settings, info_.workCounters, terrainShadow,
+                  march.find(detail::marchKey(settings, info_.workCounters, readsShadowMap,
                                               shader::kEdgeRaysFind, heroClouds)),
                   slot.march, (traceExtent.width + k - 1) / k, (traceExtent.height + k - 1) / k);
   if (edgeRays) {
-    dispatchListedEdgeTiles(device_, cmd,
-                            march.find(detail::marchKey(settings, info_.workCounters, terrainShadow,
-                                                        shader::kEdgeRaysMarch, heroClouds)),
-                            slot.edgeRayList);
+    dispatchListedEdgeTiles(
+        device_, cmd,
+        march.find(detail::marchKey(settings, info_.workCounters, readsShadowMap,
+                                    shader::kEdgeRaysMarch, heroClouds)),
+        slot.edgeRayList);
   }
   detail::memoryBarrier(device_, cmd, kCompute, kStorageWrite, kCompute, kStorageRead);
   endPass(cmd, detail::Pass::March);
@@ -430,12 +432,12 @@ void Context::Impl::recordMarch(VkCommandBuffer cmd, const Settings& settings,
 }
 
 void Context::Impl::recordNearField(VkCommandBuffer cmd, const Settings& settings,
-                                    VkExtent2D traceExtent, bool terrainShadow,
+                                    VkExtent2D traceExtent, bool readsShadowMap,
                                     std::uint32_t heroClouds, bool history, Slot& slot) {
   beginPass(cmd, detail::Pass::NearField, "clouds: near field");
   // One invocation per near-field pixel, every frame; then their resolve with the history.
   const VkPipeline nearField = programs_[Program::March].find(detail::marchKey(
-      settings, info_.workCounters, terrainShadow, shader::kEdgeRaysFind, heroClouds, true));
+      settings, info_.workCounters, readsShadowMap, shader::kEdgeRaysFind, heroClouds, true));
   const VkExtent2D extent = detail::nearFieldExtentFor(traceExtent);
   bindAndDispatch(cmd, Program::March, nearField, slot.march, extent.width, extent.height);
   detail::memoryBarrier(device_, cmd, kCompute, kStorageWrite, kCompute, kStorageRead);

@@ -165,6 +165,9 @@ constexpr SettingEffect kEffects[] = {
     CLOUDS_SETTING(terrainShadowSteps, kKeepsState,
                    "a precision knob: each cascade's next turn marches with it (a remake of all "
                    "at once is a hitch)"),
+    CLOUDS_SETTING(cloudShadowsOnClouds, kKeepsState,
+                   "a march precision knob: the light cone's integral carried to the sun; the "
+                   "refresh replaces the history's light"),
     // God rays and lightning: made anew every frame.
     CLOUDS_SETTING(godRaySamples, kKeepsState, "the god-ray mask is made anew every frame"),
     CLOUDS_SETTING(godRayLength, kKeepsState, "the god-ray mask is made anew every frame"),

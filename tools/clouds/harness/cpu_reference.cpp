@@ -120,9 +120,12 @@ void sweepHeroLight(vec3 sunDirection) {
   }
 }
 
-// The reference marches without the host's terrain.
+// The reference marches without the host's terrain, and without a shadow map (its cone only).
 float terrainSunLight(vec3, float) {
   return 1.0f;
+}
+float farCloudOpticalDepth(vec3, float) {
+  return 0.0f;
 }
 
 // The heightfield cpuTerrainShadowTexel() walks over (one thread).

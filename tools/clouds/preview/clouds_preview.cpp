@@ -2,7 +2,10 @@
 // writes a preview PNG (development aid; not a test).
 // Usage: clouds_preview OUT.png [width=320 height=180 frames=1 altitude=300 pitch=10 yaw=0
 //        sunElevation=35 sunAzimuth=200 coverage=... extinction=... skew=... shear=... quality=0..4
-//        reference=0 compare=0 ground=0 regions=0..8 storm=0|1 stormSeconds=0 ...]
+//        reference=0 compare=0 ground=0 regions=0..8 storm=0|1 stormSeconds=0 groundAlbedo=a
+//        cloudsOnClouds=0|1 ...]
+// groundAlbedo=a: a grey ground of that albedo under the bases, and the shadow map made before
+// each frame (which the march then reads: cloudsOnClouds=0 reads only the cone).
 // regions=N: N weather regions, Stormy discs of 3 km (blended over 3 km more) 8 km apart in a
 // row across the view 10 km ahead (the first straight ahead), the rest of the sky as set.
 // storm=1: a Stormy superstorm centred 20 km ahead (eye 4 km, wall 4.5 km, 24 km eased out over
@@ -50,6 +53,7 @@ int main(int argc, char** argv) {
     view.sunElevationDegrees = get("sunElevation", 35);
     view.sunAzimuthDegrees = get("sunAzimuth", 200);
     view.groundDepth = get("ground", 0) != 0;
+    if (kv.count("groundAlbedo")) view.groundAlbedo = glm::vec3(float(get("groundAlbedo", 0.1)));
     view.timeSeconds = get("time", 0);
     // The preset first (quality=0..3), then every key given overrides its field.
     clouds::Settings s;
@@ -89,6 +93,7 @@ int main(int argc, char** argv) {
     if (kv.count("traceScale")) s.traceScale = float(get("traceScale", 0.5));
     if (kv.count("interval")) s.updateInterval = std::uint32_t(get("interval", 16));
     if (kv.count("growth")) s.viewStepGrowth = float(get("growth", 0.004));
+    if (kv.count("cloudsOnClouds")) s.cloudShadowsOnClouds = get("cloudsOnClouds", 1) != 0;
     if (get("reference", 0) != 0) {
       s = clouds::referenceSettings(s);
       if (kv.count("referenceLightSteps"))
