@@ -7,9 +7,10 @@
 // images; reconstruct.comp turns them into a full picture.
 // Inputs: binding 0 CloudUniforms; 1-4 shape noise, detail noise, weather map, curl noise
 // (RGBA8, imageLoad); 5 scene distance (R32F, trace res); 7-8 weather maxima (empty-space
-// skipping); with the terrain's shadow, 10-11 the cloud shadow map and its parameters (its
-// terrain channel, fxcontracts/cloud_shadow.h). Outputs: 6 the marched samples (radiance,
-// transmittance, front and weighted depth in metres; packed, cloud_temporal.h); 9 work
+// skipping); with this frame's shadow map (kSpecShadowMapRead), 10-11 the map and its
+// parameters (its terrain channel, its clouds' beyond the light cone;
+// fxcontracts/cloud_shadow.h). Outputs: 6 the marched samples (radiance, transmittance, front
+// and weighted depth in metres; packed, cloud_temporal.h); 9 work
 // counters; with hero clouds (kSpecHeroClouds), 14-15 their atlas and instances (cloud_hero.h),
 // 16 their light volume (cloud_hero_light.h) and 17 their detail noise.
 // Feature toggles are specialization constants.
@@ -85,7 +86,7 @@ layout(binding = kMarchCloudShadowParameters, std140) uniform ShadowMap {
 // The share of the sun that a sample at a camera-relative (x, z) and an altitude gets past the
 // terrain: read from the shadow map's terrain channel when the host gave its terrain.
 float terrainSunLight(vec3 flatOffset, float altitude) {
-  if (kShadowMapRead == 0u) return 1.0f;
+  if ((kShadowMapRead & kShadowMapReadsTerrain) == 0u) return 1.0f;
   const uint slot = CLOUDS_FRAME_UNIFORMS_INDEX;
   float light = 1.0f;
   // Only below the highest terrain (a loop of 0 or 1 trips: most cloud is above it).
@@ -105,23 +106,17 @@ float terrainSunLight(vec3 flatOffset, float altitude) {
 // sun ray through that point and the altitudes of its highest and lowest cloud; what it counts
 // above the cone's end is the cloud beyond it, which the cone did not sample.
 float farCloudOpticalDepth(vec3 flatOffset, float altitude) {
-  if (kShadowMapRead == 0u) return 0.0f;
+  if ((kShadowMapRead & kShadowMapReadsClouds) == 0u) return 0.0f;
   const uint slot = CLOUDS_FRAME_UNIFORMS_INDEX;
-  float depth = 0.0f;
-  // A loop of 0 or 1 trips: a uniform choice, compiled once.
-  for (int i = 0; i < (shadowMap[slot].cloudsOnClouds > 0.0f ? 1 : 0); ++i) {
-    const vec3 coneEnd = vec3(flatOffset.x, altitude - u.cameraAltitudeMetres, flatOffset.z) +
-                         u.sunDirection * u.lightConeMetres;
-    vec4 uv01;
-    vec4 uv23;
-    CLOUD_SHADOW_COORDINATES(shadowMap[slot].map, coneEnd, uv01, uv23);
-    const float transmittance =
-        cloudShadowAt(shadowMap[slot].map.info, uv01, uv23,
-                      coneEnd.y + u.cameraAltitudeMetres, kCloudShadowClouds)
-            .x;
-    depth = -log(max(transmittance, 1e-30f));
-  }
-  return depth;
+  const vec3 coneEnd = vec3(flatOffset.x, altitude - u.cameraAltitudeMetres, flatOffset.z) +
+                       u.sunDirection * u.lightConeMetres;
+  vec4 uv01;
+  vec4 uv23;
+  CLOUD_SHADOW_COORDINATES(shadowMap[slot].map, coneEnd, uv01, uv23);
+  const float transmittance = cloudShadowAt(shadowMap[slot].map.info, uv01, uv23,
+                                            coneEnd.y + u.cameraAltitudeMetres, kCloudShadowClouds)
+                                  .x;
+  return -log(max(transmittance, 1e-30f));
 }
 
 // Hero clouds: the atlas and this frame's instances (read only by the kSpecHeroClouds variant;

@@ -497,14 +497,15 @@ FX_INLINE float rayJitter(uvec2 pixel, float startOffset, uint tileSize, bool sp
 // their light volume (heroLightMode() kHeroLightVolume or kHeroLightMarched): the clouds whose
 // boxes hold the sample give their own (heroSunward()); the cone takes what else lies sunwards,
 // when anything else can (Nubis³'s saving: a sample in a lone hero cloud above the layer marches no
-// light).
+// light). A sample in no box takes `farOpticalDepth` beyond the cone too, as on any other ray (in
+// a box, the map would count that hero cloud a second time).
 FX_INLINE float heroLitSun(vec3 flatOffset, float altitude, float distance, float lodDither,
-                           vec3 lightRandom, IN(CloudUniforms) u, IN(MarchOptions) o,
-                           INOUT(float) samples) {
+                           vec3 lightRandom, float farOpticalDepth, IN(CloudUniforms) u,
+                           IN(MarchOptions) o, INOUT(float) samples) {
   const HeroSunward hero = heroSunward(flatOffset, u, heroLightMode());
   const bool coneNeeded = hero.covered == 0u || heroCloudCount() > uint(bitCount(hero.covered)) ||
                           layerInLightCone(altitude, u);
-  float tau = hero.opticalDepth;
+  float tau = hero.opticalDepth + (hero.covered == 0u ? farOpticalDepth : 0.0f);
   // A loop of 0 or 1 trips around the cone, whose own trip count stays the constant
   // o.lightSteps (a count chosen per sample would keep the compiler from unrolling it).
   for (int cone = 0; cone < (coneNeeded ? 1 : 0); ++cone) {
@@ -572,12 +573,11 @@ FX_INLINE MarchResult marchClouds(vec3 rayDirection, float sceneDistance, float 
   // The optical depth towards the sun of the last cloudy sample, while the ray is in cloud.
   float sunOpticalDepth = 0.0f;
   bool inCloud = false;
-  // The shadow map's optical depth beyond the light cone (farCloudOpticalDepth()), read at the
-  // ray's first cloudy sample and then every kFarShadowEvery-th step: the map holds the
-  // low-frequency shape at tens to hundreds of metres a texel, and a read at every sample took
-  // the march at Medium from 9 to 15 ms on lavapipe.
+  // The shadow map's optical depth beyond the light cone (farCloudOpticalDepth()), read where
+  // the ray enters cloud and then every kFarShadowEvery-th step: the map holds the
+  // low-frequency shape at tens to hundreds of metres a texel (what reading it less often saves
+  // on lavapipe: docs/measurements.md, "The clouds' shadow on themselves").
   float farOpticalDepth = 0.0f;
-  bool farRead = false;
   // Jumps over empty cells do not spend the sample budget (a long ray over clear sky must
   // still reach the clouds behind it); kMaxSkips bounds them. Nor do the near steps.
   const int iterations = maxSteps + kMaxSkips + kMaxNearSteps + (heroHit ? kMaxHeroSteps : 0);
@@ -664,11 +664,10 @@ FX_INLINE MarchResult marchClouds(vec3 rayDirection, float sceneDistance, float 
     // own optical depth from it where a sample lies in their boxes (heroLitSun()); every other
     // ray marches the cone as it always did (a variant without hero clouds compiles only that).
     const bool heroLit = heroLightMode() != kHeroLightCone && heroHit;
-    // The iteration's place (not the ray's count of cloudy samples) decides, so that the lanes
-    // of a group read the map together, as with light reuse.
-    CLOUDS_WHEN(field.sigmaT > 0.0f && !heroLit && (!farRead || (i % kFarShadowEvery) == 0)) {
+    // Past the entry, the iteration's place (not the ray's count of cloudy samples) decides, so
+    // that the lanes of a group read the map together, as with light reuse.
+    CLOUDS_WHEN(field.sigmaT > 0.0f && (!inCloud || (i % kFarShadowEvery) == 0)) {
       farOpticalDepth = farCloudOpticalDepth(flatOffset, sampleAltitude);
-      farRead = true;
     }
     CLOUDS_WHEN(field.sigmaT > 0.0f && !reuse && !heroLit) {
       // The cone up to its length, the shadow map beyond it.
@@ -679,7 +678,7 @@ FX_INLINE MarchResult marchClouds(vec3 rayDirection, float sceneDistance, float 
     if (heroLightMode() != kHeroLightCone) {  // kHeroCompiledOut
       CLOUDS_WHEN(field.sigmaT > 0.0f && !reuse && heroLit) {
         sunOpticalDepth = heroLitSun(flatOffset, sampleAltitude, sampleDistance, jitter,
-                                     lightRandom, u, o, r.lightSamples);
+                                     lightRandom, farOpticalDepth, u, o, r.lightSamples);
       }
     }
     inCloud = field.sigmaT > 0.0f;

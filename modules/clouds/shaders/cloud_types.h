@@ -162,8 +162,8 @@ const uint kSpecMultipleScattering = 3u;  // 0/1: octave multiple-scattering app
 const uint kSpecLightSteps = 4u;          // light samples per view sample (>= 0)
 const uint kSpecCounters = 5u;            // 0/1: accumulate work counters (benchmarks, tests)
 const uint kSpecEmptySpace = 6u;          // 0/1: skip empty weather cells
-const uint kSpecShadowMapRead = 7u;       // 0/1: this frame's shadow map takes the sun from
-                                          //   clouds: the terrain's channel, the clouds' own
+const uint kSpecShadowMapRead = 7u;       // kShadowMapReads* bits: what of this frame's shadow
+                                          //   map takes the sun from clouds
 const uint kSpecLightReuse = 8u;          // 0/1: the sun's optical depth on every other step
 const uint kSpecEdgeRays = 9u;            // kEdgeRays*: more rays for tiles on silhouettes
 const uint kSpecHeroClouds = 10u;         // kHeroClouds*: hero clouds (FrameInputs::heroClouds)
@@ -174,6 +174,10 @@ const uint kSpecWeatherRegions = 13u;     // Settings::weatherRegions: the regio
                                           //   have (0: no region code)
 const uint kSpecVortex = 14u;             // Settings::superstorms: 0/1, the vortex code
 const uint kMarchSpecCount = 15u;
+// The bits of kSpecShadowMapRead: the terrain's channel (the terrain's shadow on the clouds),
+// the clouds' own beyond the light cone (Settings::cloudShadowsOnClouds).
+const uint kShadowMapReadsTerrain = 1u;
+const uint kShadowMapReadsClouds = 2u;
 // The variants of kSpecEdgeRays: none; the tiles' march, which lists the edge tiles; the
 // edge rays' march, over that list (an indirect dispatch).
 const uint kEdgeRaysOff = 0u;
@@ -488,17 +492,15 @@ const uint kShadowTexelKeepTerrain = 1u;
 const uint kShadowTexelToSpare = 2u;
 
 // The march's uniform block for the shadow map it reads (kMarchCloudShadowParameters): the map's
-// lookup parameters; the terrain's highest altitude (no sample above it can be in the terrain's
-// shadow: the march does not look; kNoTerrainInShadowMap without terrain); whether the clouds'
-// own channel shadows the march beyond its light cone (1) or not (0).
+// lookup parameters, and the terrain's highest altitude (no sample above it can be in the
+// terrain's shadow: the march does not look).
 #ifdef __cplusplus
 using fxcontracts::shader::CloudShadowParameters;
 #endif
-const float kNoTerrainInShadowMap = -1e30f;
 struct MarchShadowMap {
   CloudShadowParameters map;
   float terrainTopMetres;
-  float cloudsOnClouds;
+  float padding0;
   float padding1;
   float padding2;
 };

@@ -416,16 +416,15 @@ void Context::Impl::dispatch(const FrameInputs& inputs, const Settings& settings
     // cloud channel.
     const bool terrainShadow = inputs.terrain.heightView != VK_NULL_HANDLE && shadowMapMade;
     const bool cloudsOnClouds = settings.cloudShadowsOnClouds && shadowMapMade;
-    const bool readsShadowMap = terrainShadow || cloudsOnClouds;
+    const std::uint32_t shadowMapReads = (terrainShadow ? shader::kShadowMapReadsTerrain : 0u) |
+                                         (cloudsOnClouds ? shader::kShadowMapReadsClouds : 0u);
     shader::MarchShadowMap shadow{};
-    if (readsShadowMap) {
+    if (shadowMapReads != 0u) {
       // This frame's dispatchShadowMap() placed them for this frame's camera.
       std::memcpy(&shadow.map, &shadowParameters_, sizeof(shadowParameters_));
-      shadow.terrainTopMetres =
-          terrainShadow ? inputs.terrain.maxAltitudeMetres : shader::kNoTerrainInShadowMap;
-      shadow.cloudsOnClouds = cloudsOnClouds ? 1.0f : 0.0f;
+      shadow.terrainTopMetres = inputs.terrain.maxAltitudeMetres;
     }
-    recordUniforms(cmd, slot, lastUniforms_, readsShadowMap ? &shadow : nullptr,
+    recordUniforms(cmd, slot, lastUniforms_, shadowMapReads != 0u ? &shadow : nullptr,
                    heroClouds ? &lastHeroClouds_ : nullptr);
     if (heroLightVolume) recordHeroLight(cmd, heroSweep, slot);
     if (inputs.skyView != VK_NULL_HANDLE || inputs.groundAlbedo) {
@@ -433,7 +432,7 @@ void Context::Impl::dispatch(const FrameInputs& inputs, const Settings& settings
     }
     const std::uint32_t heroVariant =
         heroClouds ? detail::heroCloudVariant(lastHeroClouds_) : shader::kHeroCloudsOff;
-    recordTrace(cmd, inputs, settings, temporal, traceExtent, readsShadowMap, heroVariant, slot);
+    recordTrace(cmd, inputs, settings, temporal, traceExtent, shadowMapReads, heroVariant, slot);
     outputsHoldClearSky_ = false;
     temporal_.commit(temporal, inputs, settings, traceExtent);
     report_ = FrameReport{traceExtent,          temporal.tileSize,    temporal.useHistory,

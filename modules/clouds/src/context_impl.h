@@ -157,7 +157,7 @@ class Context::Impl {
                      Slot& slot);
 
   // record_trace.cpp
-  // `shadow`: the march's terrain-shadow block, when this frame's march reads it; `heroes`:
+  // `shadow`: the march's shadow-map block, when this frame's march reads the map; `heroes`:
   // its hero clouds, when it draws any.
   void recordUniforms(VkCommandBuffer cmd, Slot& slot, const shader::CloudUniforms& uniforms,
                       const shader::MarchShadowMap* shadow,
@@ -185,17 +185,18 @@ class Context::Impl {
   // (recordUniforms() wrote them), kHeroCloudsOff for none.
   void recordTrace(VkCommandBuffer cmd, const FrameInputs& inputs, const Settings& settings,
                    const detail::TemporalFrame& temporal, VkExtent2D traceExtent,
-                   bool readsShadowMap, std::uint32_t heroClouds, Slot& slot);
+                   std::uint32_t shadowMapReads, std::uint32_t heroClouds, Slot& slot);
   // recordTrace()'s passes, in their order, each over the set recordTrace() wrote for it.
   void recordSceneDistance(VkCommandBuffer cmd, VkExtent2D traceExtent, Slot& slot);
   // `edgeRays`: detail::marchesEdgeRays(), which adds the edge tiles' dispatch.
   void recordMarch(VkCommandBuffer cmd, const Settings& settings, std::uint32_t tileSize,
-                   VkExtent2D traceExtent, bool readsShadowMap, bool edgeRays,
+                   VkExtent2D traceExtent, std::uint32_t shadowMapReads, bool edgeRays,
                    std::uint32_t heroClouds, Slot& slot);
   // The near field's pass (TemporalFrame::nearField): every near-field pixel's ray to the split,
   // and their resolve with last frame's (`history`: it is usable).
   void recordNearField(VkCommandBuffer cmd, const Settings& settings, VkExtent2D traceExtent,
-                       bool readsShadowMap, std::uint32_t heroClouds, bool history, Slot& slot);
+                       std::uint32_t shadowMapReads, std::uint32_t heroClouds, bool history,
+                       Slot& slot);
   // `lightning`: recordLightning() wrote flashes, whose glow is reconstructed too.
   void recordReconstruct(VkCommandBuffer cmd, const detail::TemporalFrame& temporal,
                          VkExtent2D traceExtent, bool lightning, Slot& slot);

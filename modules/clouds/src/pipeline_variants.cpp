@@ -13,8 +13,9 @@ static_assert(shader::kMarchSpecCount <= kKeyCapacity && shader::kUpsampleSpecCo
               "a program has more specialization constants than a key holds");
 }  // namespace
 
-SpecializationKey marchKey(const Settings& settings, bool workCounters, bool readsShadowMap,
-                           std::uint32_t edgeRays, std::uint32_t heroClouds, bool nearField) {
+SpecializationKey marchKey(const Settings& settings, bool workCounters,
+                           std::uint32_t shadowMapReads, std::uint32_t edgeRays,
+                           std::uint32_t heroClouds, bool nearField) {
   const MarchVariant v = marchVariant(settings);
   SpecializationKey key;
   key.values[shader::kSpecJitter] = v.jitter;
@@ -24,7 +25,7 @@ SpecializationKey marchKey(const Settings& settings, bool workCounters, bool rea
   key.values[shader::kSpecLightSteps] = v.lightSteps;
   key.values[shader::kSpecCounters] = workCounters ? 1u : 0u;
   key.values[shader::kSpecEmptySpace] = v.emptySpace;
-  key.values[shader::kSpecShadowMapRead] = readsShadowMap ? 1u : 0u;
+  key.values[shader::kSpecShadowMapRead] = shadowMapReads;
   key.values[shader::kSpecLightReuse] = v.lightReuse;
   key.values[shader::kSpecEdgeRays] =
       v.edgeRays != 0u && !nearField ? edgeRays : shader::kEdgeRaysOff;
@@ -112,21 +113,21 @@ std::vector<std::pair<Program, SpecializationKey>> variantsFor(const Settings& s
   // without them, with them as authored and with living ones.
   const std::uint32_t heroVariants[] = {shader::kHeroCloudsOff, shader::kHeroCloudsAuthored,
                                         shader::kHeroCloudsLiving};
-  const auto addMarch = [&](bool readsShadowMap) {
+  const auto addMarch = [&](std::uint32_t shadowMapReads) {
     for (std::uint32_t heroes : heroVariants) {
       if (heroes != shader::kHeroCloudsOff && !heroClouds) continue;
-      variants.emplace_back(Program::March, marchKey(settings, workCounters, readsShadowMap,
+      variants.emplace_back(Program::March, marchKey(settings, workCounters, shadowMapReads,
                                                      shader::kEdgeRaysFind, heroes));
       if (settings.nearFieldMetres > 0.0f) {
-        variants.emplace_back(Program::March, marchKey(settings, workCounters, readsShadowMap,
+        variants.emplace_back(Program::March, marchKey(settings, workCounters, shadowMapReads,
                                                        shader::kEdgeRaysFind, heroes, true));
       }
       if (marchVariant(settings).edgeRays == 0u) continue;
-      variants.emplace_back(Program::March, marchKey(settings, workCounters, readsShadowMap,
+      variants.emplace_back(Program::March, marchKey(settings, workCounters, shadowMapReads,
                                                      shader::kEdgeRaysMarch, heroes));
     }
   };
-  addMarch(false);
+  addMarch(0u);
   // With lightning, frames without a flash write no glow.
   for (std::uint32_t history : histories) {
     for (bool lightning : {false, true}) {
@@ -178,7 +179,11 @@ std::vector<std::pair<Program, SpecializationKey>> variantsFor(const Settings& s
       variants.emplace_back(Program::ShadowMap, shadowMapKey(settings, shader::kHeroCloudsLiving));
     }
     variants.emplace_back(Program::TerrainShadow, SpecializationKey{});
-    addMarch(true);
+    // A frame with a map reads the terrain's channel when the host gave its terrain, and the
+    // clouds' with cloudShadowsOnClouds.
+    const std::uint32_t clouds = settings.cloudShadowsOnClouds ? shader::kShadowMapReadsClouds : 0u;
+    addMarch(shader::kShadowMapReadsTerrain | clouds);
+    if (clouds != 0u) addMarch(clouds);
   }
   // No room for bolts, no bolt pipelines.
   if (settings.lightningBoltSegments > 0) {

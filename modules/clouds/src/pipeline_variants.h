@@ -13,14 +13,15 @@
 
 namespace clouds::detail {
 
-// `readsShadowMap`: the march reads this frame's cloud shadow map (made before it): the
-// terrain's shadow on the clouds (FrameInputs::terrain) and the clouds' own shadow beyond the
-// light cone (Settings::cloudShadowsOnClouds). `edgeRays`: the tiles' march (shader::kEdgeRaysFind,
-// which lists the edge tiles when the settings have edge rays) or the edge rays' (kEdgeRaysMarch).
-// `heroClouds`: the variant for this frame's hero clouds (shader::kHeroClouds*,
-// heroCloudVariant()). `nearField`: the near field's pass (Settings::nearFieldMetres; it marches no
-// edge rays).
-SpecializationKey marchKey(const Settings& settings, bool workCounters, bool readsShadowMap,
+// `shadowMapReads` (shader::kShadowMapReads*): what the march reads of this frame's cloud
+// shadow map (made before it): the terrain's shadow on the clouds (FrameInputs::terrain), the
+// clouds' own beyond the light cone (Settings::cloudShadowsOnClouds); each compiled in alone.
+// `edgeRays`: the tiles' march (shader::kEdgeRaysFind, which lists the edge tiles when the settings
+// have edge rays) or the edge rays' (kEdgeRaysMarch). `heroClouds`: the variant for this frame's
+// hero clouds (shader::kHeroClouds*, heroCloudVariant()). `nearField`: the near field's pass
+// (Settings::nearFieldMetres; it marches no edge rays).
+SpecializationKey marchKey(const Settings& settings, bool workCounters,
+                           std::uint32_t shadowMapReads,
                            std::uint32_t edgeRays = shader::kEdgeRaysFind,
                            std::uint32_t heroClouds = shader::kHeroCloudsOff,
                            bool nearField = false);

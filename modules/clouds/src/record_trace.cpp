@@ -45,8 +45,9 @@ struct TraceFrame {
   const detail::OwnedImage& historyOut;
   VkImageView outputHistoryIn = VK_NULL_HANDLE;
   VkImageView outputHistoryOut = VK_NULL_HANDLE;
-  bool readsShadowMap = false;  // the march reads this frame's shadow map (marchKey())
-  bool edgeRays = false;        // detail::marchesEdgeRays()
+  std::uint32_t shadowMapReads = 0;  // shader::kShadowMapReads*: what the march reads of this
+                                     // frame's shadow map (marchKey())
+  bool edgeRays = false;             // detail::marchesEdgeRays()
   // The hero clouds' atlas and block. Without them, stand-ins the march's variant never reads:
   // the shape noise (RGBA8 3D) and the frame's uniforms.
   VkImageView heroAtlas = VK_NULL_HANDLE;
@@ -73,7 +74,7 @@ struct HeroBindings {
 
 TraceFrame traceFrame(const detail::ModuleImages& im, const TraceSamplers& samplers,
                       VkBuffer uniforms, const FrameInputs& inputs, const Settings& settings,
-                      const detail::TemporalFrame& temporal, bool readsShadowMap,
+                      const detail::TemporalFrame& temporal, std::uint32_t shadowMapReads,
                       const HeroBindings& heroes) {
   const bool hasDepth = inputs.depthView != VK_NULL_HANDLE;
   const FrameInputs::AerialPerspective& haze = inputs.aerialPerspective;
@@ -97,7 +98,7 @@ TraceFrame traceFrame(const detail::ModuleImages& im, const TraceSamplers& sampl
           upsampling ? im.outputHistory[temporal.readHistory].view() : noOutputHistory,
       .outputHistoryOut =
           upsampling ? im.outputHistory[temporal.writeHistory].view() : noOutputHistory,
-      .readsShadowMap = readsShadowMap,
+      .shadowMapReads = shadowMapReads,
       .edgeRays = detail::marchesEdgeRays(settings, temporal),
       .heroAtlas = heroes.atlas != VK_NULL_HANDLE ? heroes.atlas : im.shapeNoise.view(),
       .heroBlock = heroes.atlas != VK_NULL_HANDLE ? heroes.block : uniforms,
@@ -143,11 +144,11 @@ void writeMarchSet(const detail::DeviceContext& device, VkDescriptorSet set,
       .storageImage(kMarchWeatherMaxFine, im.weatherMaxFine.view())
       .storageImage(kMarchWeatherMaxCoarse, im.weatherMaxCoarse.view())
       .storageBuffer(kMarchCounters, counters.buffer(), counters.size())
-      .sampledImage(
-          kMarchCloudShadow,
-          frame.readsShadowMap ? im.shadowMap.view() : im.depthPlaceholder.view(),
-          frame.samplers.clampedLinear,
-          frame.readsShadowMap ? VK_IMAGE_LAYOUT_GENERAL : VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL)
+      .sampledImage(kMarchCloudShadow,
+                    frame.shadowMapReads != 0u ? im.shadowMap.view() : im.depthPlaceholder.view(),
+                    frame.samplers.clampedLinear,
+                    frame.shadowMapReads != 0u ? VK_IMAGE_LAYOUT_GENERAL
+                                               : VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL)
       .uniformBuffer(kMarchCloudShadowParameters, shadowMapParameters.buffer(),
                      sizeof(MarchShadowMap))
       // Read only by frames that march edge rays (kFlagEdgeRays), which have a history; the
@@ -336,7 +337,7 @@ void Context::Impl::recordSkyAmbient(VkCommandBuffer cmd, const FrameInputs& inp
 
 void Context::Impl::recordTrace(VkCommandBuffer cmd, const FrameInputs& inputs,
                                 const Settings& settings, const detail::TemporalFrame& temporal,
-                                VkExtent2D traceExtent, bool readsShadowMap,
+                                VkExtent2D traceExtent, std::uint32_t shadowMapReads,
                                 std::uint32_t heroClouds, Slot& slot) {
   const TraceSamplers samplers{nearestSampler_.get(), linearSampler_.get(),
                                clampedLinearSampler_.get()};
@@ -349,7 +350,7 @@ void Context::Impl::recordTrace(VkCommandBuffer cmd, const FrameInputs& inputs,
         heroNoiseView()};
   }
   const TraceFrame frame = traceFrame(images_, samplers, slot.uniforms.buffer(), inputs, settings,
-                                      temporal, readsShadowMap, heroBindings);
+                                      temporal, shadowMapReads, heroBindings);
   writeSceneDistanceSet(device_, slot.sceneDistance, frame);
   writeMarchSet(device_, slot.march, frame, weatherMap(), slot.counters, slot.shadowParameters,
                 slot.edgeRayList);
@@ -363,11 +364,11 @@ void Context::Impl::recordTrace(VkCommandBuffer cmd, const FrameInputs& inputs,
   if (info_.workCounters) resetWorkCounters(device_, cmd, slot.counters);
 
   recordSceneDistance(cmd, traceExtent, slot);
-  recordMarch(cmd, settings, temporal.tileSize, traceExtent, readsShadowMap, frame.edgeRays,
+  recordMarch(cmd, settings, temporal.tileSize, traceExtent, shadowMapReads, frame.edgeRays,
               heroClouds, slot);
   if (frame.nearField) {
     writeNearResolveSet(device_, slot.nearResolve, frame);
-    recordNearField(cmd, settings, traceExtent, readsShadowMap, heroClouds, frame.nearHistoryUsable,
+    recordNearField(cmd, settings, traceExtent, shadowMapReads, heroClouds, frame.nearHistoryUsable,
                     slot);
   }
   const bool lightning = recordLightning(cmd, inputs, slot);
@@ -408,21 +409,22 @@ void Context::Impl::recordSceneDistance(VkCommandBuffer cmd, VkExtent2D traceExt
 }
 
 void Context::Impl::recordMarch(VkCommandBuffer cmd, const Settings& settings,
-                                std::uint32_t tileSize, VkExtent2D traceExtent, bool readsShadowMap,
-                                bool edgeRays, std::uint32_t heroClouds, Slot& slot) {
+                                std::uint32_t tileSize, VkExtent2D traceExtent,
+                                std::uint32_t shadowMapReads, bool edgeRays,
+                                std::uint32_t heroClouds, Slot& slot) {
   const std::uint32_t k = tileSize;
   if (edgeRays) recordEdgeRayListReset(cmd, slot);
   beginPass(cmd, detail::Pass::March, "clouds: march");
   // One invocation per tile: only the pixels marched this frame.
   const detail::ComputeProgram& march = programs_[Program::March];
   bindAndDispatch(cmd, Program::March,
-                  march.find(detail::marchKey(settings, info_.workCounters, readsShadowMap,
+                  march.find(detail::marchKey(settings, info_.workCounters, shadowMapReads,
                                               shader::kEdgeRaysFind, heroClouds)),
                   slot.march, (traceExtent.width + k - 1) / k, (traceExtent.height + k - 1) / k);
   if (edgeRays) {
     dispatchListedEdgeTiles(
         device_, cmd,
-        march.find(detail::marchKey(settings, info_.workCounters, readsShadowMap,
+        march.find(detail::marchKey(settings, info_.workCounters, shadowMapReads,
                                     shader::kEdgeRaysMarch, heroClouds)),
         slot.edgeRayList);
   }
@@ -432,12 +434,12 @@ void Context::Impl::recordMarch(VkCommandBuffer cmd, const Settings& settings,
 }
 
 void Context::Impl::recordNearField(VkCommandBuffer cmd, const Settings& settings,
-                                    VkExtent2D traceExtent, bool readsShadowMap,
+                                    VkExtent2D traceExtent, std::uint32_t shadowMapReads,
                                     std::uint32_t heroClouds, bool history, Slot& slot) {
   beginPass(cmd, detail::Pass::NearField, "clouds: near field");
   // One invocation per near-field pixel, every frame; then their resolve with the history.
   const VkPipeline nearField = programs_[Program::March].find(detail::marchKey(
-      settings, info_.workCounters, readsShadowMap, shader::kEdgeRaysFind, heroClouds, true));
+      settings, info_.workCounters, shadowMapReads, shader::kEdgeRaysFind, heroClouds, true));
   const VkExtent2D extent = detail::nearFieldExtentFor(traceExtent);
   bindAndDispatch(cmd, Program::March, nearField, slot.march, extent.width, extent.height);
   detail::memoryBarrier(device_, cmd, kCompute, kStorageWrite, kCompute, kStorageRead);

@@ -255,9 +255,9 @@ Settings settingsFor(Quality quality, const Settings& base) {
   // Medium keeps one march: inside a cloud the near field's every-pixel march doubles its time.
   constexpr float kNearFieldMetres = 200.0f;
   s.nearFieldMetres = 0.0f;
-  // The clouds' shadow on themselves beyond the light cone is High's and Ultra's: the march that
-  // reads the shadow map took 8 to 13 ms at Medium, 640x360 on lavapipe, against 6.5 to 8 ms
-  // without the map (clouds_preview, 2026-12-01; docs/measurements.md).
+  // The clouds' shadow on themselves beyond the light cone is High's and Ultra's: at Medium it
+  // took the march from 6.5-8 to 12-15 ms on lavapipe (docs/measurements.md, "The clouds'
+  // shadow on themselves").
   s.cloudShadowsOnClouds = quality == Quality::High || quality == Quality::Ultra;
   // The ladder (issue 53): each rung at most 0.6x the next one's time and at least 2 dB less
   // accurate (docs/benchmark/results.md, "Targets"). Low traces a quarter of the resolution

@@ -227,8 +227,9 @@ std::string CloudHarness::tryRender(const CloudView& view, const clouds::Setting
   device_.immediateSubmit([&](VkCommandBuffer cmd) {
     lastInputs_ = makeInputs(view, extent, cmd);
     const std::uint32_t scope = timer_->begin(cmd, "clouds");
-    // The terrain's shadow reaches the clouds through this frame's shadow map, and so does the
-    // clouds' shade on the ground that lights their bases.
+    // The terrain's shadow reaches the clouds through this frame's shadow map, and so do the
+    // clouds' own shadow beyond the light cone and their shade on the ground that lights their
+    // bases.
     if (view.terrain.heightView != VK_NULL_HANDLE || view.groundAlbedo) {
       ok = context_->dispatchShadowMap(lastInputs_, settings, &error);
     }

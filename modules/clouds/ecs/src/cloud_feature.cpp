@@ -74,7 +74,6 @@ CloudFeature::CloudFeature(engine::ecs::World& world, const RenderDevice& device
   if (device.hdrFormat != kCompositeFormat) {
     throw engine::ecs::ModuleUnsupported("the clouds composite needs an RGBA16F scene colour");
   }
-  if (layer.weatherMap) weatherMap_ = loadWeatherMap(device_, *layer.weatherMap);
   world_.view<const CloudLayer, const CloudWeather>().each(
       [&](const CloudLayer&, const CloudWeather& weather) {
         std::vector<std::filesystem::path> files;
@@ -87,6 +86,11 @@ CloudFeature::CloudFeature(engine::ecs::World& world, const RenderDevice& device
           }
         }
       });
+  // The layer's own map, unless the schedule paints every key (it then holds the layer's map
+  // where a key has none of its own).
+  if (layer.weatherMap && scheduledMaps_.empty()) {
+    weatherMap_ = loadWeatherMap(device_, *layer.weatherMap);
+  }
   castsShadow_ = layer.settings.shadowCascades > 0;
   clouds::CreateInfo info;
   engine::render::describeDevice(device_, info);
@@ -235,7 +239,6 @@ void CloudFeature::dispatch(const HostFrame& host) {
     auto& status = world_.ctx().get<CloudStatus>();
     status.lastError.clear();
     status.report = context_->lastFrameReport();  // this frame's, for what reads it after
-
   } else {
     reportError(error);
   }
@@ -349,8 +352,9 @@ SceneTextures CloudFeature::addPasses(FrameGraph& graph, const SceneTextures& sc
         if (haze != nullptr) {
           d.aerialPerspective = builder.read(haze->volume, Access::SampledReadGeneral);
         }
-        // The march reads the map's terrain channel (mountains shade the clouds), the ambient
-        // pass its mean (the clouds' shade on the ground that lights their bases).
+        // The march reads the map (mountains shade the clouds; at High and Ultra the clouds
+        // shade themselves beyond the light cone), the ambient pass its mean (the clouds' shade
+        // on the ground that lights their bases).
         if (shadow != nullptr) builder.read(shadow->map, Access::SampledReadGeneral);
         d.radiance = builder.write(radiance, Access::StorageWrite);
         if (depth.valid()) d.depth = builder.write(depth, Access::StorageWrite);

@@ -392,9 +392,9 @@ struct Settings {
   // themselves over kilometres: beyond its light cone (lightConeMetres) a sample's sun is dimmed
   // by the map's optical depth of the clouds from the cone's end on (Schneider 2022), so a
   // cumulus under an anvil or deep in an overcast is darker where kilometres of cloud lie
-  // towards the sun. Read at a ray's first cloudy sample and every 4th step after; the
-  // presets: High, Ultra and the Reference (at Medium on lavapipe it costs about a third of the
-  // march). false: the cone alone (as without a map).
+  // towards the sun. Read where a ray enters cloud and every 4th step after; on in the presets
+  // High, Ultra and the Reference (its cost: docs/measurements.md). false: the cone alone (as
+  // without a map); a march variant of its own, so a false costs nothing.
   bool cloudShadowsOnClouds = true;
 
   // --- God rays (Outputs::godRayMask, fxcontracts/god_rays.h)
@@ -763,9 +763,9 @@ class Context {
   // Records this frame's work (its first frame also records the noise generation). Creates
   // and allocates nothing. Returns false and fills `error` (InvalidInputs, InvalidSettings,
   // NotPrepared), naming the field; nothing is recorded then. After this frame's
-  // dispatchShadowMap() it samples Outputs::shadowMap too (the terrain's shadow, the ground's
-  // shade): a host that takes the map out of GENERAL in between returns it there with its
-  // transition visible to compute-shader sampled reads.
+  // dispatchShadowMap() it samples Outputs::shadowMap too (the terrain's shadow, the clouds' own
+  // beyond the light cone, the ground's shade): a host that takes the map out of GENERAL in between
+  // returns it there with its transition visible to compute-shader sampled reads.
   bool dispatch(const FrameInputs& inputs, const Settings& settings, Error* error);
 
   // Records this frame's cloud shadow map (Settings::shadowCascades > 0; with 0 it records
