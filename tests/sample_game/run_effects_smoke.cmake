@@ -13,6 +13,12 @@ if(NOT result EQUAL 0)
   message(FATAL_ERROR "effects_bench.py exited with ${result}")
 endif()
 file(READ "${OUT_DIR}/results.md" report)
+# Fails naming `what` (and showing the report) unless the report matches `pattern`.
+function(expect_in_report pattern what)
+  if(NOT report MATCHES "${pattern}")
+    message(FATAL_ERROR "${what}:\n${report}")
+  endif()
+endfunction()
 foreach(row "| terrain |" "| clouds |" "| atmosphere |" "| cloud shadows |"
             "| terrain shadows |" "| god rays |" "| god rays, sun in view |" "| lightning |"
             "| lightning, a flash always active |" "| weather regions (the storm front) |"
@@ -22,32 +28,23 @@ foreach(row "| terrain |" "| clouds |" "| atmosphere |" "| cloud shadows |"
     message(FATAL_ERROR "results.md has no row ${row}")
   endif()
 endforeach()
-if(NOT report MATCHES "\\| god rays \\|[^\n]*\\| clouds module: god rays \\| 0\\.[0-9]+ \\|")
-  message(FATAL_ERROR "the god rays' row does not name their pipelines and memory:\n${report}")
-endif()
-if(NOT report MATCHES "\\| lightning, a flash always active \\|[^\n]*clouds module: lightning")
-  message(FATAL_ERROR "the lightning's row does not name its pipelines:\n${report}")
-endif()
+expect_in_report("\\| god rays \\|[^\n]*\\| clouds module: god rays \\| 0\\.[0-9]+ \\|"
+                 "the god rays' row does not name their pipelines and memory")
+expect_in_report("\\| lightning, a flash always active \\|[^\n]*clouds module: lightning"
+                 "the lightning's row does not name its pipelines")
 # The regions' code is in their own pipeline variant; a change of weather adds no pass or
 # pipeline to the weather held.
-if(NOT report MATCHES "\\| weather regions \\(the storm front\\) \\|[^\n]*clouds module: weather regions")
-  message(FATAL_ERROR "the weather regions' row does not name their pipelines:\n${report}")
-endif()
-if(NOT report MATCHES "\\| a change of weather [^|]*\\|[^|]*\\|[^|]*\\|[^|]*\\| - \\| - \\|")
-  message(FATAL_ERROR "a change of weather adds passes or pipelines:\n${report}")
-endif()
-if(NOT report MATCHES "\\| terrain shadows \\|[^\n]*\\| 0\\.00 \\|")
-  message(FATAL_ERROR "the terrain shadows' row adds memory:\n${report}")
-endif()
+expect_in_report("\\| weather regions \\(the storm front\\) \\|[^\n]*clouds module: weather regions"
+                 "the weather regions' row does not name their pipelines")
+expect_in_report("\\| a change of weather [^|]*\\|[^|]*\\|[^|]*\\|[^|]*\\| - \\| - \\|"
+                 "a change of weather adds passes or pipelines")
+expect_in_report("\\| terrain shadows \\|[^\n]*\\| 0\\.00 \\|"
+                 "the terrain shadows' row adds memory")
 # Lightning's cost in the passes it changes: a row per lightning comparison, with the bolts' pass.
-set(header "\\| effect \\| frame: scene \\|[^\n]*clouds: lightning bolts \\| all of them \\|")
-if(NOT report MATCHES "${header}")
-  message(FATAL_ERROR "no table of lightning's cost in the passes it changes:\n${report}")
-endif()
-set(bolt_row "\\| lightning, a ground strike and its bolt always active \\| [+-][0-9.]+ \\(")
-if(NOT report MATCHES "${bolt_row}")
-  message(FATAL_ERROR "the passes table has no row for the bolt:\n${report}")
-endif()
+expect_in_report("\\| effect \\| frame: scene \\|[^\n]*clouds: lightning bolts \\| all of them \\|"
+                 "no table of lightning's cost in the passes it changes")
+expect_in_report("\\| lightning, a ground strike and its bolt always active \\| [+-][0-9.]+ \\("
+                 "the passes table has no row for the bolt")
 # The HUD's table: its line and the panel, each against no HUD, paired.
 file(READ "${OUT_DIR}/hud.md" hud)
 foreach(row "| the HUD's line |" "| the settings panel open |"
