@@ -90,6 +90,17 @@ FX_INLINE float inScatterProbability(float core, float heightFraction, float cos
 // sees the horizon's haze instead. 1 - sin(10 degrees).
 const float kGroundShareOfLowerHemisphere = 0.82635182f;
 
+// The radiance of a Lambertian ground of `groundAlbedo` lit by the sun (illuminance
+// `sunIlluminance` at `sunUp`, the sine of its elevation, a share `groundSunlit` of the ground
+// out of the clouds' shadow) and the sky (irradiance pi `skyTop`, `skyTop` the cosine-weighted
+// mean radiance of the upper hemisphere).
+FX_INLINE vec3 groundRadiance(vec3 skyTop, vec3 groundAlbedo, vec3 sunIlluminance, float sunUp,
+                              float groundSunlit) {
+  const vec3 irradiance =
+      sunIlluminance * (max(sunUp, 0.0f) * saturate(groundSunlit)) + kPi * skyTop;
+  return groundAlbedo * irradiance / kPi;
+}
+
 // The radiance that lights cloud bases from below (ambientBottom) when the ground is known: the
 // ground's, a Lambertian surface of `groundAlbedo` lit by the sun (illuminance `sunIlluminance`
 // at `sunUp`, the sine of its elevation, a share `groundSunlit` of the ground out of the
@@ -98,9 +109,7 @@ const float kGroundShareOfLowerHemisphere = 0.82635182f;
 // radiance over the rest.
 FX_INLINE vec3 groundLitBaseRadiance(vec3 horizon, vec3 skyTop, vec3 groundAlbedo,
                                      vec3 sunIlluminance, float sunUp, float groundSunlit) {
-  const vec3 groundIrradiance =
-      sunIlluminance * (max(sunUp, 0.0f) * saturate(groundSunlit)) + kPi * skyTop;
-  const vec3 ground = groundAlbedo * groundIrradiance / kPi;
+  const vec3 ground = groundRadiance(skyTop, groundAlbedo, sunIlluminance, sunUp, groundSunlit);
   return mix(horizon, ground, kGroundShareOfLowerHemisphere);
 }
 

@@ -26,6 +26,8 @@
 // dispatch marches every pixel of the near field's image (CloudUniforms.nearFieldExtent, half
 // the trace's resolution) up to CloudUniforms.nearFieldMetres (18), while the tiles march from
 // there on; near_field_resolve.comp and upsample.comp lay the one over the other.
+// The sky light (kSpecSkyLight; Settings::skyLight): a fourth dispatch marches the rays of the
+// sky-light map's upper half due this frame into 19, for sky_light.comp.
 // References: Schneider & Vos 2017 (Nubis); Schneider 2022 (Nubis Evolved); Hillaire 2016.
 #extension GL_GOOGLE_include_directive : require
 
@@ -50,6 +52,7 @@ layout(constant_id = kSpecWeatherRegions) const uint kWeatherRegions = 0u;
 uint weatherRegionCapacity() { return kWeatherRegions; }
 layout(constant_id = kSpecVortex) const uint kVortex = 0u;
 bool vortexCompiledIn() { return kVortex != 0u; }
+layout(constant_id = kSpecSkyLight) const uint kSkyLight = 0u;
 
 #include "frame_uniforms.glsl"
 layout(binding = kMarchShapeNoise, rgba8) uniform readonly image3D shapeNoise;
@@ -59,6 +62,7 @@ layout(binding = kMarchCurlNoise, rgba8) uniform readonly image2D curlNoise;
 layout(binding = kMarchSceneDistance, r32f) uniform readonly image2D sceneDistance;
 layout(binding = kMarchSamplesOut, rgba32ui) uniform writeonly uimage2D outSamples;
 layout(binding = kMarchNearFieldOut, rgba32ui) uniform writeonly uimage2D nearFieldOut;
+layout(binding = kMarchSkyLightOut, rgba16f) uniform writeonly image2D skyLightOut;
 layout(binding = kMarchWeatherMaxFine, rgba8) uniform readonly image2D weatherMaxFine;
 layout(binding = kMarchWeatherMaxCoarse, rgba8) uniform readonly image2D weatherMaxCoarse;
 layout(binding = kMarchCounters, std430) buffer Counters { uint counters[]; };
@@ -234,6 +238,27 @@ void marchNearField() {
   countWork(result, kCounterNearFieldRays);
 }
 
+// The sky light's pass: the rays of the sky-light map's upper half due this frame
+// (u.skyLightRefresh), one per invocation, from under the camera (skyLightAltitude()) through
+// the whole layer (no scene stops them), with the frame's lighting. sky_light.comp lays them
+// over the host's sky. Each refresh of a texel starts its steps elsewhere (the golden ratio),
+// so the map's texels, seen together, average the steps' noise.
+void marchSkyLight() {
+  const uvec2 id = gl_GlobalInvocationID.xy;
+  const bool everyTexel = u.skyLightRefresh == kSkyLightEveryTexel;
+  const uvec2 texel =
+      everyTexel ? id : id * 2u + uvec2(u.skyLightRefresh & 1u, u.skyLightRefresh >> 1u);
+  if (any(greaterThanEqual(texel, uvec2(kSkyLightWidth, kSkyLightHeight / 2u)))) return;
+  const vec3 direction = skyLightDirection(texel);
+  const float jitter = skyLightJitter(texel, u.temporalIndex, kJitterMode);
+  MarchOptions options = marchOptions();
+  options.nearField = kMarchWholeRay;
+  u.cameraAltitudeMetres = skyLightAltitude(u);  // the frame's own copy (frame_uniforms.glsl)
+  const MarchResult result = marchClouds(direction, kInfiniteDistance, jitter,
+                                         lightJitter(u.lightRound, kJitterMode), u, options);
+  imageStore(skyLightOut, ivec2(texel), vec4(result.radiance, result.transmittance));
+}
+
 // Invocations in a workgroup: the second dispatch's groups are counted in these.
 const uint kGroupInvocations = kWorkgroupSize2D * kWorkgroupSize2D;
 
@@ -257,6 +282,10 @@ void main() {
     gHeroNoiseMean = fetchHeroNoise(heroNoiseTexelAddress(kHeroNoiseLevels - 1, ivec3(0)));
   if (kNearField != 0u) {
     marchNearField();
+    return;
+  }
+  if (kSkyLight != 0u) {
+    marchSkyLight();
     return;
   }
   if (kEdgeRays == kEdgeRaysMarch) {

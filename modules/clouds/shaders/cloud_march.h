@@ -60,10 +60,14 @@ struct MarchOptions {
   uint lightSteps;          // samples towards the sun per cloudy view sample
   uint emptySpace;          // jump over weather cells without cloud
   uint lightReuse;          // the sun's optical depth on every other step (lightOpticalDepth())
-  // The near/far split (u.nearFieldMetres; 0 there: none): 1 marches the ray up to it (the near
-  // field's pass), 0 from it on (the tiles' march, and the CPU reference's whole rays).
+  // The near/far split (u.nearFieldMetres; 0 there: none): kMarchNearPart marches the ray up to
+  // it (the near field's pass), kMarchFarPart from it on (the tiles' march, and the CPU
+  // reference's whole rays), kMarchWholeRay all of it whatever the split (the sky light's).
   uint nearField;
 };
+const uint kMarchFarPart = 0u;
+const uint kMarchNearPart = 1u;
+const uint kMarchWholeRay = 2u;
 
 struct MarchResult {
   vec3 radiance;        // in-scattered radiance towards the camera (premultiplied)
@@ -493,6 +497,34 @@ FX_INLINE float rayJitter(uvec2 pixel, float startOffset, uint tileSize, bool sp
   return fract(bayer4x4(pixel) + startOffset + tiles);
 }
 
+// The sky light's rays (Settings::skyLight): the world direction (unit) through the centre of
+// texel `texel` of its equirectangular map (kSkyLightWidth x kSkyLightHeight; u = azimuth
+// from +x towards +z, v = 0 at the zenith, 0.5 at the horizon).
+FX_INLINE vec3 skyLightDirection(uvec2 texel) {
+  const vec2 uv = (vec2(texel) + 0.5f) / vec2(float(kSkyLightWidth), float(kSkyLightHeight));
+  const float azimuth = 2.0f * kPi * uv.x;
+  const float elevation = kPi * (0.5f - uv.y);
+  return vec3(cos(azimuth) * cos(elevation), sin(elevation), sin(azimuth) * cos(elevation));
+}
+
+// The altitude (m) the sky light's rays start from: the camera's, or, for a camera in or above
+// the layer, just below the layer straight under it. The sky light lights the ground (and what
+// lies under the clouds), which sees the layer from below whatever the camera's altitude. The
+// march's flat offsets are the camera's (x, z): only the altitude moves. Hero clouds, placed
+// relative to the camera, are seen from the camera's altitude still.
+FX_INLINE float skyLightAltitude(IN(CloudUniforms) u) {
+  return min(u.cameraAltitudeMetres, u.layerBottomMetres - 10.0f);
+}
+
+// Where a sky-light ray starts in its first step, in [0, 1): a hash of its texel, moved by the
+// golden ratio from one frame to the next, so that each refresh of a texel starts elsewhere and
+// neighbouring texels never together (`mode`: the jitter, 0 none).
+FX_INLINE float skyLightJitter(uvec2 texel, uint temporalIndex, uint mode) {
+  if (mode == 0u) return 0.5f;
+  const float hash = hashCell(ivec3(int(texel.x), int(texel.y), 0), 7919u).x;
+  return fract(hash + 0.6180340f * float(temporalIndex & 0xffffu));
+}
+
 // The optical depth towards the sun of a cloudy sample on a ray through hero clouds lit by
 // their light volume (heroLightMode() kHeroLightVolume or kHeroLightMarched): the clouds whose
 // boxes hold the sample give their own (heroSunward()); the cone takes what else lies sunwards,
@@ -543,9 +575,9 @@ FX_INLINE MarchResult marchClouds(vec3 rayDirection, float sceneDistance, float 
   const bool heroHit = heroSpan.y > heroSpan.x;
   // The part of the ray this march takes (MarchOptions::nearField): the two parts meet at
   // u.nearFieldMetres, and laid one over the other they are the whole ray.
-  const float from = o.nearField != 0u ? 0.0f : u.nearFieldMetres;
-  const float to =
-      min(u.maxDistanceMetres, o.nearField != 0u ? u.nearFieldMetres : kInfiniteDistance);
+  const float from = o.nearField == kMarchFarPart ? u.nearFieldMetres : 0.0f;
+  const float to = min(u.maxDistanceMetres,
+                       o.nearField == kMarchNearPart ? u.nearFieldMetres : kInfiniteDistance);
   const float start =
       max(heroHit ? (layerHit ? min(segment.x, heroSpan.x) : heroSpan.x) : segment.x, from);
   const float layerEnd = min(min(segment.y, sceneDistance), to);

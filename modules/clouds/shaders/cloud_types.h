@@ -42,6 +42,13 @@ const uint kWorkgroupSize2D = 8u;     // 8 x 8 threads for image passes
 const uint kWorkgroupSize3D = 4u;     // 4 x 4 x 4 threads for volume generation
 const uint kSkyAmbientLanes = 64u;    // sky_ambient.comp: one workgroup of this many lanes
 const uint kSkyAmbientSamples = 16u;  // samples of the sky image per lane
+// The sky light (Settings::skyLight): an equirectangular map of the sky with the clouds in it,
+// laid out as the host's sky image (u = azimuth, v = 0 at the zenith, 0.5 at the horizon, 1 at
+// the nadir). The clouds of its upper half are marched one texel in each 2 x 2 block a frame.
+const uint kSkyLightWidth = 64u;
+const uint kSkyLightHeight = 32u;
+const uint kSkyLightLanes = 64u;      // sky_light.comp: one workgroup of this many lanes
+const uint kSkyLightEveryTexel = 4u;  // CloudUniforms.skyLightRefresh: the whole upper half
 
 // --- Descriptor bindings (set 0) --------------------------------------------------------------
 // Binding 0 of every per-frame image pass is the CloudUniforms block (frame_uniforms.glsl).
@@ -75,6 +82,9 @@ const uint kMarchHeroLight = 16u;
 const uint kMarchHeroNoise = 17u;
 // The near field's samples (kSpecNearField's pass writes them; RGBA32UI, nearFieldExtent).
 const uint kMarchNearFieldOut = 18u;
+// The sky light's clouds (kSpecSkyLight's pass writes them; RGBA16F, kSkyLightWidth x
+// kSkyLightHeight / 2: radiance, transmittance).
+const uint kMarchSkyLightOut = 19u;
 // reconstruct.comp
 const uint kReconstructFresh = 1u;
 const uint kReconstructHistory = 2u;
@@ -141,6 +151,12 @@ const uint kGodRayLightOut = 4u;   // RGBA16F: what the composite adds to a sky 
 const uint kSkyAmbientUniforms = 0u;
 const uint kSkyAmbientSky = 1u;        // the host's sky image (a placeholder without one)
 const uint kSkyAmbientShadowMap = 2u;  // the cloud shadow map (a placeholder without one)
+// sky_light.comp (reads the uniforms as a uniform block at kBindingUniforms)
+const uint kSkyLightHostSky = 1u;    // the host's sky image
+const uint kSkyLightClouds = 2u;     // the clouds marched towards the upper half's texels
+const uint kSkyLightShadowMap = 3u;  // the cloud shadow map (a placeholder without one)
+const uint kSkyLightMap = 4u;        // the map made (RGBA16F)
+const uint kSkyLightMeasures = 5u;   // SkyLightMeasures (storage buffer, read by the host)
 // noise_*.comp, hero_noise*.comp and weather_procedural.comp: the texture they generate
 // (noise_mip.comp, hero_noise_mip.comp: the 3D noise whose mip chain they complete)
 const uint kGeneratorTarget = 0u;
@@ -173,7 +189,9 @@ const uint kSpecNearField = 12u;          // 0/1: the near field's pass (every p
 const uint kSpecWeatherRegions = 13u;     // Settings::weatherRegions: the regions a frame may
                                           //   have (0: no region code)
 const uint kSpecVortex = 14u;             // Settings::superstorms: 0/1, the vortex code
-const uint kMarchSpecCount = 15u;
+const uint kSpecSkyLight = 15u;           // 0/1: the sky light's pass (the map's upper half's
+                                          //   rays due this frame, to the layer's far side)
+const uint kMarchSpecCount = 16u;
 // The bits of kSpecShadowMapRead: the terrain's channel (the terrain's shadow on the clouds),
 // the clouds' own beyond the light cone (Settings::cloudShadowsOnClouds).
 const uint kShadowMapReadsTerrain = 1u;
@@ -406,7 +424,10 @@ struct CloudUniforms {
   vec4 vortexClock;
   uint vortexRegion;
   float vortexHistorySeconds;
-  vec2 vortexPadding;
+  // The sky light's texels marched this frame (Settings::skyLight): in each 2 x 2 block of its
+  // upper half the one at (refresh & 1, refresh >> 1), or kSkyLightEveryTexel for all of them.
+  uint skyLightRefresh;
+  float padding0;
 #ifdef __cplusplus
   // The regions themselves: in C++ the struct's last member; in GLSL the frame block's member
   // after the struct (frame_uniforms.glsl), at the same offset, read in place by
@@ -428,6 +449,30 @@ struct AmbientConstants {
   uint shadowTexels;    // texels per cascade side
   uint padding0;
   uint padding1;
+};
+
+// Push constants of sky_light.comp: the frame's sources and the ground's albedo.
+const uint kSkyLightCloudsMarched = 1u;  // the clouds image holds this frame's sky (else clear)
+const uint kSkyLightGround = 2u;         // the ground below is lit from the map (groundAlbedo)
+const uint kSkyLightGroundShadow = 4u;   // ... in the clouds' shadow (the shadow map's mean)
+struct SkyLightConstants {
+  vec3 groundAlbedo;        // Lambertian, [0, 1] per channel
+  uint flags;               // kSkyLight* bits
+  uint shadowCascades;      // cascades side by side in the shadow map (cascade 0 is read)
+  uint shadowTexels;        // texels per cascade side
+  uint frameUniformsIndex;  // always 0 (frame_uniforms.glsl says why)
+  uint padding0;
+};
+
+// What sky_light.comp measures of its map, for the host (Context::skyLighting()): radiances
+// (rgb), the regions' means by solid angle.
+struct SkyLightMeasures {
+  vec4 upperIrradianceOverPi;  // the upper hemisphere weighted by the cosine to the zenith (x pi:
+                               //   a horizontal surface's irradiance); a: its luminance
+  vec4 zenith;                 // above 60 degrees of elevation
+  vec4 horizon;                // from the horizon up to 10 degrees
+  vec4 lower;                  // the lower hemisphere
+  vec4 clearIrradianceOverPi;  // the host's sky alone, as upperIrradianceOverPi
 };
 
 // Push constants of noise_mip.comp: packs level 0 of a 3D noise (one of four passes, by the
@@ -733,6 +778,8 @@ static_assert(sizeof(clouds::shader::CloudUniforms) == 768 + 64 * 8);
 static_assert(sizeof(clouds::shader::NoiseConstants) == 16);
 static_assert(sizeof(clouds::shader::NoiseMipConstants) == 16);
 static_assert(sizeof(clouds::shader::AmbientConstants) == 32);
+static_assert(sizeof(clouds::shader::SkyLightConstants) == 32);
+static_assert(sizeof(clouds::shader::SkyLightMeasures) == 5 * 16);
 static_assert(sizeof(clouds::shader::WeatherConstants) == 16);
 static_assert(sizeof(clouds::shader::ResampleConstants) == 16);
 static_assert(sizeof(clouds::shader::MaximaConstants) == 16);

@@ -18,6 +18,7 @@ layout(binding = kSkyAmbientUniforms, std430) buffer Uniforms { CloudUniforms u;
 layout(binding = kSkyAmbientSky) uniform sampler2D sky;
 #define CLOUD_SHADOW_MAP_BINDING kSkyAmbientShadowMap
 #include "fxcontracts/cloud_shadow_sampled.glsl"
+#include "cloud_ground_sunlit.glsl"
 layout(push_constant) uniform Constants { AmbientConstants constants; };
 
 // Reduced over the lanes: the sky's upper hemisphere (rgb, weight), its horizon band (rgb,
@@ -25,16 +26,6 @@ layout(push_constant) uniform Constants { AmbientConstants constants; };
 shared vec4 topSum[kSkyAmbientLanes];
 shared vec4 bottomSum[kSkyAmbientLanes];
 shared vec2 sunlitSum[kSkyAmbientLanes];
-
-// An altitude below every cloud (m): the ground receives the whole ray's optical depth.
-const float kBelowEveryCloudMetres = -1.0e6f;
-
-// The sun transmittance to the ground at `uv` in the shadow map's finest cascade.
-float groundSunlit(vec2 uv) {
-  const vec4 info = vec4(float(constants.shadowCascades), float(constants.shadowTexels), 0, 0);
-  return exp(
-      -cloudShadowCascadeSample(info, 0.0f, uv, kBelowEveryCloudMetres, kCloudShadowClouds).x);
-}
 
 void main() {
   const uint lane = gl_LocalInvocationID.x;
@@ -57,7 +48,7 @@ void main() {
       bottom += vec4(textureLod(sky, band, 0.0f).rgb, 1.0f);
     }
     if (fromShadow) {
-      sunlit += vec2(groundSunlit(cell), 1.0f);
+      sunlit += vec2(groundSunlit(constants.shadowCascades, constants.shadowTexels, cell), 1.0f);
     }
   }
   topSum[lane] = top;

@@ -354,6 +354,11 @@ bool Context::dispatch(const FrameInputs& inputs, const Settings& settings, Erro
   if (std::string problem = checkFlashes(inputs.lightningFlashes, settings); !problem.empty()) {
     return fail(error, ErrorCode::InvalidInputs, problem);
   }
+  if (settings.skyLight && inputs.skyView == VK_NULL_HANDLE) {
+    return fail(error, ErrorCode::InvalidInputs,
+                "FrameInputs.skyView: Settings.skyLight lays the clouds over the host's sky, "
+                "which it needs");
+  }
   if (std::string problem = checkWeatherRegions(inputs.weatherRegions, settings);
       !problem.empty()) {
     return fail(error, ErrorCode::InvalidInputs, problem);
@@ -431,5 +436,11 @@ WorkCounters Context::workCounters(std::uint64_t frameIndex) const {
 std::vector<PassTiming> Context::passTimings(std::uint64_t frameIndex) const {
   return impl_->passTimings(frameIndex);
 }
+SkyLighting Context::skyLighting(std::uint64_t frameIndex) const {
+  return impl_->skyLighting(frameIndex);
+}
+
+static_assert(kSkyLightExtent.width == shader::kSkyLightWidth &&
+              kSkyLightExtent.height == shader::kSkyLightHeight);
 
 }  // namespace clouds

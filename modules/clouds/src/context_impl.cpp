@@ -97,6 +97,7 @@ Context::Impl::Impl(const CreateInfo& info, const detail::VulkanFunctions& funct
     slot.godRays = allocateSet(Program::GodRays);
     slot.lightningBolts = allocateSet(Program::LightningBolts);
     slot.heroLight = allocateSet(Program::HeroLight);
+    slot.skyLight = allocateSet(Program::SkyLight);
     slot.godRayLight = uniformBlock(device_, sizeof(shader::GodRayLightUniforms),
                                     "god-ray light " + std::to_string(i));
   }
@@ -203,6 +204,16 @@ void Context::Impl::prepare(const Settings& settings, VkExtent2D renderExtent) {
     outputsHoldClearSky_ = false;
   }
   if (images_.fitShadow(shadowExtentFor(settings), lastFrameIndex_)) shadowCascades_.forget();
+  if (images_.fitSkyLight(settings.skyLight, lastFrameIndex_)) skyLightWhole_ = true;
+  // The sky light's measures, only for settings that make it.
+  if (settings.skyLight) {
+    for (std::size_t i = 0; i < slots_.size(); ++i) {
+      if (slots_[i].skyLightMeasures.buffer() != VK_NULL_HANDLE) continue;
+      slots_[i].skyLightMeasures = detail::OwnedBuffer(
+          device_, sizeof(shader::SkyLightMeasures), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT,
+          "sky light measures " + std::to_string(i), /*hostVisible=*/true);
+    }
+  }
   if (heroAtlas_ && settings.heroDetail == HeroDetail::Uprezzed && !heroNoise_) {
     heroNoise_ = std::make_unique<detail::HeroNoise>(device_);
     heroNoiseGenerated_ = false;
@@ -260,7 +271,11 @@ std::string Context::Impl::unprepared(const Settings& settings, VkExtent2D rende
   if (heroAtlas_ && settings.heroDetail == HeroDetail::Uprezzed && !heroNoise_) {
     return "the hero clouds' detail noise";
   }
+  if (settings.skyLight && !images_.skyLightMap) return "the sky light's images";
   for (const Slot& slot : slots_) {
+    if (settings.skyLight && slot.skyLightMeasures.buffer() == VK_NULL_HANDLE) {
+      return "the sky light's measures";
+    }
     if ((settings.lightningFlashes > 0 && slot.lightning.buffer() == VK_NULL_HANDLE) ||
         slot.bolts.size() < detail::boltBufferBytes(settings.lightningBoltSegments)) {
       return "the lightning buffers for these settings";
@@ -397,8 +412,18 @@ void Context::Impl::dispatch(const FrameInputs& inputs, const Settings& settings
   const bool heroLightVolume = heroClouds && settings.heroLight == HeroLight::Volume;
   const std::uint32_t heroSweep =
       heroLightVolume ? heroLight_->assignSlots(lastHeroClouds_, lastUniforms_.sunDirection) : 0u;
+  // The sky light's texels this frame's march refreshes: all of them when its clouds image
+  // does not hold the sky, else the next quarter.
+  lastUniforms_.skyLightRefresh =
+      skyLightWhole_ || inputs.reset ? shader::kSkyLightEveryTexel : skyLightRound_;
   if (skyIsClear(inputs, settings) && !heroClouds) {
     // Nothing can be marched: the outputs are the empty sky, and the next frame starts afresh.
+    if (settings.skyLight) {
+      recordUniforms(cmd, slot, lastUniforms_, nullptr, nullptr);
+      recordSkyLight(cmd, inputs, settings, /*marched=*/false, false, 0u, shader::kHeroCloudsOff,
+                     slot);
+      skyLightWhole_ = true;
+    }
     recordClearSky(cmd, slot);
     outputsHoldClearSky_ = true;
     if (settings.godRaySamples > 0)
@@ -433,6 +458,14 @@ void Context::Impl::dispatch(const FrameInputs& inputs, const Settings& settings
     const std::uint32_t heroVariant =
         heroClouds ? detail::heroCloudVariant(lastHeroClouds_) : shader::kHeroCloudsOff;
     recordTrace(cmd, inputs, settings, temporal, traceExtent, shadowMapReads, heroVariant, slot);
+    if (settings.skyLight) {
+      recordSkyLight(cmd, inputs, settings, /*marched=*/true, shadowMapMade, shadowMapReads,
+                     heroVariant, slot);
+      // After a whole refresh the quarters start again from the first after it.
+      const std::uint32_t refreshed = lastUniforms_.skyLightRefresh;
+      skyLightRound_ = (refreshed == shader::kSkyLightEveryTexel ? 1u : refreshed + 1u) % 4u;
+      skyLightWhole_ = false;
+    }
     outputsHoldClearSky_ = false;
     temporal_.commit(temporal, inputs, settings, traceExtent);
     report_ = FrameReport{traceExtent,          temporal.tileSize,    temporal.useHistory,
@@ -478,6 +511,8 @@ Outputs Context::Impl::outputs() const {
     out.shadowMap = {shadow.image(), shadow.view(), shadow.format()};
     out.shadowParameters = shadowParameters_;
   }
+  const detail::OwnedImage& sky = images_.skyLightMap;
+  if (sky) out.skyLight = {sky.image(), sky.view(), sky.format()};
   const detail::OwnedImage& mask = images_.godRayMask;
   if (mask) {
     out.godRayMask = {mask.image(), mask.view(), mask.format()};
@@ -495,6 +530,7 @@ MemoryUsage Context::Impl::memoryUsage() const {
                          slot.godRayLight.bytes() + slot.edgeRayList.bytes();
     usage.lightningBytes += slot.lightning.bytes() + slot.bolts.bytes();
     usage.heroCloudBytes += slot.heroClouds.bytes() + slot.shadowHeroClouds.bytes();
+    usage.skyLightBytes += slot.skyLightMeasures.bytes();
   }
   if (heroAtlas_) usage.heroCloudBytes += heroAtlas_->bytes();
   if (heroLight_) usage.heroCloudBytes += heroLight_->bytes();
@@ -554,6 +590,21 @@ WorkCounters Context::Impl::workCounters(std::uint64_t frameIndex) const {
   counters.earlyExits = values[shader::kCounterEarlyExits];
   counters.skippedCells = values[shader::kCounterSkippedCells];
   return counters;
+}
+
+SkyLighting Context::Impl::skyLighting(std::uint64_t frameIndex) const {
+  const Slot& slot = slots_[frameIndex % slots_.size()];
+  const auto* measured =
+      static_cast<const shader::SkyLightMeasures*>(slot.skyLightMeasures.mapped());
+  if (measured == nullptr || slot.skyLightFrame != frameIndex) return {};
+  SkyLighting sky;
+  sky.valid = true;
+  sky.upperIrradianceOverPi = glm::vec3(measured->upperIrradianceOverPi);
+  sky.zenith = glm::vec3(measured->zenith);
+  sky.horizon = glm::vec3(measured->horizon);
+  sky.lower = glm::vec3(measured->lower);
+  sky.clearIrradianceOverPi = glm::vec3(measured->clearIrradianceOverPi);
+  return sky;
 }
 
 std::vector<PassTiming> Context::Impl::passTimings(std::uint64_t frameIndex) const {

@@ -63,6 +63,7 @@ class Context::Impl {
   MemoryUsage memoryUsage() const;
   WorkCounters workCounters(std::uint64_t frameIndex) const;
   std::vector<PassTiming> passTimings(std::uint64_t frameIndex) const;
+  SkyLighting skyLighting(std::uint64_t frameIndex) const;
   const CreateInfo& createInfo() const { return info_; }
 
   // --- Internal access (the module's tests and tools) ---------------------------------------
@@ -118,6 +119,9 @@ class Context::Impl {
     detail::OwnedBuffer heroClouds;  // this frame's HeroCloudUniforms (with hero cloud assets)
     detail::OwnedBuffer shadowHeroClouds;        // those the shadow map is made with (likewise)
     VkDescriptorSet heroLight = VK_NULL_HANDLE;  // the light volume's sweep
+    VkDescriptorSet skyLight = VK_NULL_HANDLE;
+    detail::OwnedBuffer skyLightMeasures;        // host-visible SkyLightMeasures (skyLight)
+    std::optional<std::uint64_t> skyLightFrame;  // the frame whose measures it holds
   };
 
   VkDescriptorSet allocateSet(detail::Program program);
@@ -200,6 +204,13 @@ class Context::Impl {
   // `lightning`: recordLightning() wrote flashes, whose glow is reconstructed too.
   void recordReconstruct(VkCommandBuffer cmd, const detail::TemporalFrame& temporal,
                          VkExtent2D traceExtent, bool lightning, Slot& slot);
+  // The sky light (Settings::skyLight), after the frame's other passes: the march's sky-light
+  // pass when `marched` (recordTrace() wrote its set and the uniforms' skyLightRefresh), then
+  // the map and its measures over the host's sky. `shadowMapReads`, `heroClouds`: the frame's
+  // march variant's.
+  void recordSkyLight(VkCommandBuffer cmd, const FrameInputs& inputs, const Settings& settings,
+                      bool marched, bool shadowMapMade, std::uint32_t shadowMapReads,
+                      std::uint32_t heroClouds, Slot& slot);
   // `toBolts`: the bolts' pass follows; else the outputs are left visible to the host.
   void recordUpsample(VkCommandBuffer cmd, VkPipeline pipeline, VkExtent2D renderExtent,
                       bool toBolts, Slot& slot);
@@ -241,6 +252,10 @@ class Context::Impl {
   // (each upsample, bolt and image replacement resets it): a clear sky that stays clear costs
   // no clears after its first frame.
   bool outputsHoldClearSky_ = false;
+  // The sky light's clouds image does not hold the sky (new, or a clear frame or a cut since):
+  // the next frame marches every texel of it, not a quarter.
+  bool skyLightWhole_ = true;
+  std::uint32_t skyLightRound_ = 0;  // the quarter of its texels the next frame marches
   // The hero clouds' assets (setHeroCloudAssets()); none: no atlas, no hero march.
   std::unique_ptr<detail::HeroCloudAtlas> heroAtlas_;
   std::unique_ptr<detail::HeroLightVolume> heroLight_;  // with the atlas (Settings::heroLight)

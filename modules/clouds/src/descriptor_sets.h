@@ -30,7 +30,7 @@ inline constexpr SetsOf kSlotSets[] = {
     {Program::Upsample, 1},        {Program::Composite, 1}, {Program::SkyAmbient, 1},
     {Program::WeatherResample, 1}, {Program::ShadowMap, 1}, {Program::TerrainShadow, 1},
     {Program::GodRayOcclusion, 1}, {Program::GodRays, 1},   {Program::LightningBolts, 1},
-    {Program::HeroLight, 1},
+    {Program::HeroLight, 1},       {Program::SkyLight, 1},
 };
 
 // A pool that holds exactly the sets of the tables for `frames` slots (programs the context

@@ -206,6 +206,23 @@ bool ModuleImages::fitShadow(const ShadowExtents& extents, std::optional<std::ui
   return true;
 }
 
+bool ModuleImages::fitSkyLight(bool wanted, std::optional<std::uint64_t> lastUse) {
+  if (static_cast<bool>(skyLightMap) == wanted) return false;
+  if (!wanted) {
+    replace(skyLightClouds, OwnedImage{}, lastUse);
+    replace(skyLightMap, OwnedImage{}, lastUse);
+    return false;
+  }
+  const std::uint32_t w = shader::kSkyLightWidth;
+  const std::uint32_t h = shader::kSkyLightHeight;
+  replace(skyLightClouds,
+          make(VK_IMAGE_TYPE_2D, kRadianceFormat, {w, h / 2, 1}, kStorage, "sky light clouds"),
+          lastUse);
+  replace(skyLightMap, make(VK_IMAGE_TYPE_2D, kRadianceFormat, {w, h, 1}, kOutput, "sky light"),
+          lastUse);
+  return true;
+}
+
 void ModuleImages::releaseRetired(std::uint64_t frameIndex, std::uint32_t framesInFlight) {
   std::erase_if(retired_, [&](const Retired& r) {
     return !r.lastUse || frameIndex >= *r.lastUse + framesInFlight;
@@ -236,6 +253,7 @@ MemoryUsage ModuleImages::memoryUsage() const {
   m.shadowBytes = shadowMap.bytes() + shadowSpare.bytes();
   m.godRayBytes = godRayOcclusion.bytes() + godRayMask.bytes() + godRayLight.bytes();
   m.lightningBytes = lightningGlow.bytes();
+  m.skyLightBytes = skyLightClouds.bytes() + skyLightMap.bytes();
   m.bufferBytes = depthPlaceholder.bytes() + samplesPlaceholder.bytes() + hazePlaceholder.bytes() +
                   noHeroLight.bytes() + noDepthOutput.bytes();
   for (const Retired& r : retired_) m.retiredBytes += r.image.bytes();

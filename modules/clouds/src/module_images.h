@@ -52,6 +52,9 @@ class ModuleImages {
   // Replaces the shadow map's images by ones of exactly `extents` (none for {0, 0}) unless they
   // fit. Returns true when any was replaced (the map's contents are gone).
   bool fitShadow(const ShadowExtents& extents, std::optional<std::uint64_t> lastUse);
+  // Makes the sky light's images (Settings::skyLight) when `wanted`, frees them when not.
+  // Returns true when they were made (their contents are undefined until a frame writes them).
+  bool fitSkyLight(bool wanted, std::optional<std::uint64_t> lastUse);
   // Frees retired images that no frame in flight can use any more when `frameIndex` records.
   void releaseRetired(std::uint64_t frameIndex, std::uint32_t framesInFlight);
   // Records the first layout transition of every image made since the last call.
@@ -93,6 +96,9 @@ class ModuleImages {
   OwnedImage lightningGlow;  // the clouds' glow per unit of cloud, trace res
   OwnedImage nearSamples;    // the near field marched apart (packed samples), half trace res
   std::array<OwnedImage, 2> nearHistory;  // the near field resolved, ping-pong, half trace res
+  // Fixed sizes, made by fitSkyLight().
+  OwnedImage skyLightClouds;  // the clouds towards the sky light's upper half (radiance, T)
+  OwnedImage skyLightMap;     // the sky light (Outputs::skyLight)
 
  private:
   struct Retired {

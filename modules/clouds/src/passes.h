@@ -22,13 +22,14 @@ enum class Pass : std::uint32_t {
   HeroLight,
   HeroNoise,
   NearField,
+  SkyLight,
   Count
 };
 
 inline constexpr std::array<const char*, static_cast<std::size_t>(Pass::Count)> kPassNames = {
     "noise",           "weather",    "sky ambient", "clear sky",      "scene distance", "march",
     "reconstruct",     "upsample",   "shadow map",  "terrain shadow", "god rays",       "lightning",
-    "lightning bolts", "hero light", "hero noise",  "near field"};
+    "lightning bolts", "hero light", "hero noise",  "near field",     "sky light"};
 
 constexpr std::uint32_t index(Pass pass) {
   return static_cast<std::uint32_t>(pass);

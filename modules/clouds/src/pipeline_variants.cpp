@@ -15,7 +15,7 @@ static_assert(shader::kMarchSpecCount <= kKeyCapacity && shader::kUpsampleSpecCo
 
 SpecializationKey marchKey(const Settings& settings, bool workCounters,
                            std::uint32_t shadowMapReads, std::uint32_t edgeRays,
-                           std::uint32_t heroClouds, bool nearField) {
+                           std::uint32_t heroClouds, bool nearField, bool skyLight) {
   const MarchVariant v = marchVariant(settings);
   SpecializationKey key;
   key.values[shader::kSpecJitter] = v.jitter;
@@ -28,12 +28,13 @@ SpecializationKey marchKey(const Settings& settings, bool workCounters,
   key.values[shader::kSpecShadowMapRead] = shadowMapReads;
   key.values[shader::kSpecLightReuse] = v.lightReuse;
   key.values[shader::kSpecEdgeRays] =
-      v.edgeRays != 0u && !nearField ? edgeRays : shader::kEdgeRaysOff;
+      v.edgeRays != 0u && !nearField && !skyLight ? edgeRays : shader::kEdgeRaysOff;
   key.values[shader::kSpecHeroClouds] = heroClouds;
   // Only a march that draws hero clouds has a use for their lighting's variants.
   key.values[shader::kSpecHeroLight] =
       heroClouds != shader::kHeroCloudsOff ? v.heroLight : shader::kHeroLightCone;
   key.values[shader::kSpecNearField] = nearField ? 1u : 0u;
+  key.values[shader::kSpecSkyLight] = skyLight ? 1u : 0u;
   key.values[shader::kSpecWeatherRegions] = settings.weatherRegions;
   key.values[shader::kSpecVortex] = settings.superstorms;
   key.count = shader::kMarchSpecCount;
@@ -121,6 +122,10 @@ std::vector<std::pair<Program, SpecializationKey>> variantsFor(const Settings& s
       if (settings.nearFieldMetres > 0.0f) {
         variants.emplace_back(Program::March, marchKey(settings, workCounters, shadowMapReads,
                                                        shader::kEdgeRaysFind, heroes, true));
+      }
+      if (settings.skyLight) {
+        variants.emplace_back(Program::March, marchKey(settings, workCounters, shadowMapReads,
+                                                       shader::kEdgeRaysFind, heroes, false, true));
       }
       if (marchVariant(settings).edgeRays == 0u) continue;
       variants.emplace_back(Program::March, marchKey(settings, workCounters, shadowMapReads,

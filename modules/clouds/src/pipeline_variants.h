@@ -19,12 +19,13 @@ namespace clouds::detail {
 // `edgeRays`: the tiles' march (shader::kEdgeRaysFind, which lists the edge tiles when the settings
 // have edge rays) or the edge rays' (kEdgeRaysMarch). `heroClouds`: the variant for this frame's
 // hero clouds (shader::kHeroClouds*, heroCloudVariant()). `nearField`: the near field's pass
-// (Settings::nearFieldMetres; it marches no edge rays).
+// (Settings::nearFieldMetres; it marches no edge rays). `skyLight`: the sky light's pass
+// (Settings::skyLight; no edge rays either).
 SpecializationKey marchKey(const Settings& settings, bool workCounters,
                            std::uint32_t shadowMapReads,
                            std::uint32_t edgeRays = shader::kEdgeRaysFind,
                            std::uint32_t heroClouds = shader::kHeroCloudsOff,
-                           bool nearField = false);
+                           bool nearField = false, bool skyLight = false);
 // `history`: kHistoryNone, kHistoryInPlace or kHistoryReprojected (cloud_types.h).
 // `lightning`: write the glow with this frame's flashes too.
 SpecializationKey reconstructKey(std::uint32_t history, bool lightning);

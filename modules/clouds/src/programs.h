@@ -20,6 +20,7 @@ enum class Program : std::uint32_t {
   WeatherResample,  // weather_resample.comp: the host's painted map into the module's
   WeatherMaxima,    // weather_max.comp: one level of the empty-space-skipping grid
   SkyAmbient,       // sky_ambient.comp: ambient colours from the host's sky image
+  SkyLight,         // sky_light.comp: the sky light's map from the host's sky and the clouds
   SceneDistance,    // depth_downsample.comp: conservative scene distance at trace resolution
   March,            // cloud_march.comp: the ray-march, one pixel per tile
   Reconstruct,      // reconstruct.comp: temporal reconstruction at trace resolution

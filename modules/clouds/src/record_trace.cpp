@@ -161,6 +161,9 @@ void writeMarchSet(const detail::DeviceContext& device, VkDescriptorSet set,
       .storageImage(kMarchHeroLight, frame.heroLight)
       .storageImage(kMarchHeroNoise, frame.heroNoise)
       .storageImage(kMarchNearFieldOut, frame.nearSamples)
+      // Without a sky light, a stand-in of its format the variants without it never touch.
+      .storageImage(kMarchSkyLightOut,
+                    im.skyLightClouds ? im.skyLightClouds.view() : im.radiance.view())
       .commit();
 }
 
@@ -333,6 +336,68 @@ void Context::Impl::recordSkyAmbient(VkCommandBuffer cmd, const FrameInputs& inp
   detail::memoryBarrier(device_, cmd, kCompute, kStorageWrite, kCompute,
                         VK_ACCESS_2_UNIFORM_READ_BIT);
   endPass(cmd, detail::Pass::SkyAmbient);
+}
+
+void Context::Impl::recordSkyLight(VkCommandBuffer cmd, const FrameInputs& inputs,
+                                   const Settings& settings, bool marched, bool shadowMapMade,
+                                   std::uint32_t shadowMapReads, std::uint32_t heroClouds,
+                                   Slot& slot) {
+  const auto& fn = device_.fn();
+  beginPass(cmd, detail::Pass::SkyLight, "clouds: sky light");
+  // The map and the measures may still be read by earlier commands (the host's reads of the
+  // last frame's).
+  detail::memoryBarrier(device_, cmd, kHostReadStages, kHostReadAccess | kStorageRead, kCompute,
+                        kStorageWrite);
+  if (marched) {
+    // The rays due this frame (CloudUniforms::skyLightRefresh): every texel of the upper half,
+    // or one in each 2 x 2 block.
+    const bool every = lastUniforms_.skyLightRefresh == shader::kSkyLightEveryTexel;
+    const std::uint32_t width = shader::kSkyLightWidth / (every ? 1u : 2u);
+    const std::uint32_t height = shader::kSkyLightHeight / 2u / (every ? 1u : 2u);
+    bindAndDispatch(cmd, Program::March,
+                    programs_[Program::March].find(
+                        detail::marchKey(settings, info_.workCounters, shadowMapReads,
+                                         shader::kEdgeRaysFind, heroClouds, false, true)),
+                    slot.march, width, height);
+    detail::memoryBarrier(device_, cmd, kCompute, kStorageWrite, kCompute, kStorageRead);
+  }
+  const bool groundShadow = inputs.groundAlbedo && shadowMapMade;
+  shader::SkyLightConstants constants{};
+  constants.groundAlbedo = inputs.groundAlbedo.value_or(glm::vec3(0.0f));
+  constants.flags = (marched ? shader::kSkyLightCloudsMarched : 0u) |
+                    (inputs.groundAlbedo ? shader::kSkyLightGround : 0u) |
+                    (groundShadow ? shader::kSkyLightGroundShadow : 0u);
+  constants.shadowCascades = settings.shadowCascades;
+  constants.shadowTexels = settings.shadowMapResolution;
+  const VkImageView placeholder = images_.depthPlaceholder.view();
+  detail::SetWriter(device_, slot.skyLight)
+      .uniformBuffer(shader::kBindingUniforms, slot.uniforms.buffer(), kUniformBytes)
+      .sampledImage(shader::kSkyLightHostSky, inputs.skyView, linearSampler_.get(),
+                    inputs.skyLayout)
+      .storageImage(shader::kSkyLightClouds, images_.skyLightClouds.view())
+      .sampledImage(
+          shader::kSkyLightShadowMap, groundShadow ? images_.shadowMap.view() : placeholder,
+          clampedLinearSampler_.get(),
+          groundShadow ? VK_IMAGE_LAYOUT_GENERAL : VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL)
+      .storageImage(shader::kSkyLightMap, images_.skyLightMap.view())
+      .storageBuffer(shader::kSkyLightMeasures, slot.skyLightMeasures.buffer(),
+                     slot.skyLightMeasures.size())
+      .commit();
+  const detail::ComputeProgram& program = programs_[Program::SkyLight];
+  fn.vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, program.find());
+  fn.vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, program.layout(), 0, 1,
+                             &slot.skyLight, 0, nullptr);
+  fn.vkCmdPushConstants(cmd, program.layout(), VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof(constants),
+                        &constants);
+  fn.vkCmdDispatch(cmd, 1, 1, 1);
+  // The map for the host's shaders, the measures for the host once the frame completed.
+  detail::barrier(device_, cmd, images_.skyLightMap.image(), VK_IMAGE_LAYOUT_GENERAL,
+                  VK_IMAGE_LAYOUT_GENERAL, kCompute, kStorageWrite, kHostReadStages,
+                  kHostReadAccess);
+  detail::memoryBarrier(device_, cmd, kCompute, kStorageWrite, VK_PIPELINE_STAGE_2_HOST_BIT,
+                        VK_ACCESS_2_HOST_READ_BIT);
+  endPass(cmd, detail::Pass::SkyLight);
+  slot.skyLightFrame = inputs.frameIndex;
 }
 
 void Context::Impl::recordTrace(VkCommandBuffer cmd, const FrameInputs& inputs,

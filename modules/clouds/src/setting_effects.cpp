@@ -183,6 +183,8 @@ constexpr SettingEffect kEffects[] = {
     CLOUDS_SETTING(superstorms, kKeepsState,
                    "a capacity: the storm is one of this frame's regions"),
     CLOUDS_SETTING(vortexReprojection, kKeepsState, "how the history is found, not what it holds"),
+    CLOUDS_SETTING(skyLight, kKeepsState,
+                   "an output beside the view's: its own map, refreshed a part every frame"),
 };
 
 #undef CLOUDS_SETTING

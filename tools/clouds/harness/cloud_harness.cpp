@@ -343,6 +343,28 @@ ShadowMapImage CloudHarness::readShadowMap() {
   return map;
 }
 
+SkyLightImage CloudHarness::readSkyLight() {
+  const clouds::Outputs out = context_->outputs();
+  SkyLightImage sky;
+  if (out.skyLight.image == VK_NULL_HANDLE || frameIndex_ == 0) return sky;
+  sky.measures = context_->skyLighting(frameIndex_ - 1);
+  const VkExtent3D extent{clouds::kSkyLightExtent.width, clouds::kSkyLightExtent.height, 1};
+  const gfx::ImageState general{VK_IMAGE_LAYOUT_GENERAL, VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT,
+                                VK_ACCESS_2_MEMORY_READ_BIT | VK_ACCESS_2_MEMORY_WRITE_BIT};
+  const std::vector<std::byte> bytes = gfx::readbackImage(
+      device_, out.skyLight.image, VK_FORMAT_R16G16B16A16_SFLOAT, extent, general);
+  sky.width = extent.width;
+  sky.height = extent.height;
+  sky.texels.resize(std::size_t{extent.width} * extent.height);
+  const auto* halves = reinterpret_cast<const std::uint16_t*>(bytes.data());
+  for (std::size_t i = 0; i < sky.texels.size(); ++i) {
+    sky.texels[i] =
+        glm::vec4(glm::unpackHalf1x16(halves[4 * i + 0]), glm::unpackHalf1x16(halves[4 * i + 1]),
+                  glm::unpackHalf1x16(halves[4 * i + 2]), glm::unpackHalf1x16(halves[4 * i + 3]));
+  }
+  return sky;
+}
+
 float GodRayImages::occlusionAt(glm::vec2 uv) const {
   if (width == 0 || height == 0) return 1.0f;
   return sampleLinearClamped(occlusion, width, height, uv);

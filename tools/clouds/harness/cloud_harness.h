@@ -123,6 +123,18 @@ struct GodRayImages {
   float occlusionAt(glm::vec2 uv) const;
 };
 
+// The sky light as read back (Outputs::skyLight): texels (radiance, 1) row-major, v = 0 at the
+// zenith, and the last frame's measures (Context::skyLighting()).
+struct SkyLightImage {
+  std::uint32_t width = 0;
+  std::uint32_t height = 0;
+  std::vector<glm::vec4> texels;
+  clouds::SkyLighting measures;
+  const glm::vec4& at(std::uint32_t x, std::uint32_t y) const {
+    return texels[std::size_t{y} * width + x];
+  }
+};
+
 // `settings` rendered as one self-contained frame: every pixel marched at full resolution, no
 // history. What the CPU reference computes, and what analytic tests compare against.
 clouds::Settings singleFrame(clouds::Settings settings);
@@ -157,6 +169,8 @@ class CloudHarness {
   ShadowMapImage renderShadowMap(const CloudView& view, const clouds::Settings& settings,
                                  std::uint32_t frames = 1);
   ShadowMapImage readShadowMap();
+  // The last dispatch()'s sky light (empty without one).
+  SkyLightImage readSkyLight();
   // The last dispatch()'s god-ray images (empty without god rays).
   GodRayImages readGodRays();
 

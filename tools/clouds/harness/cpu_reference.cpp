@@ -217,6 +217,35 @@ CloudFrame renderCpuReference(const CpuTextures& textures, const CloudUniforms& 
   return frame;
 }
 
+std::vector<glm::vec4> cpuSkyLightClouds(const CpuTextures& textures, const CloudUniforms& frame,
+                                         const clouds::Settings& settings, unsigned threads) {
+  gTextures = &textures;
+  CloudUniforms u = frame;
+  u.cameraAltitudeMetres = skyLightAltitude(frame);
+  const clouds::detail::MarchVariant variant = clouds::detail::marchVariant(settings);
+  MarchOptions options{variant.detail,     variant.cheapSampling, variant.multipleScattering,
+                       variant.lightSteps, variant.emptySpace,    variant.lightReuse,
+                       kMarchWholeRay};
+  gHeroLightMode = variant.heroLight;
+  const uint width = kSkyLightWidth;
+  const std::size_t texels = std::size_t{width} * (kSkyLightHeight / 2u);
+  std::vector<glm::vec4> clouds(texels);
+  auto work = [&](unsigned first) {
+    for (std::size_t i = first; i < texels; i += threads) {
+      const uvec2 texel(static_cast<uint>(i % width), static_cast<uint>(i / width));
+      const MarchResult r = marchClouds(skyLightDirection(texel), kInfiniteDistance,
+                                        skyLightJitter(texel, u.temporalIndex, variant.jitter),
+                                        lightJitter(u.lightRound, variant.jitter), u, options);
+      clouds[i] = vec4(r.radiance, r.transmittance);
+    }
+  };
+  std::vector<std::thread> workers;
+  for (unsigned t = 0; t < threads; ++t) workers.emplace_back(work, t);
+  for (auto& w : workers) w.join();
+  gTextures = nullptr;
+  return clouds;
+}
+
 CpuHeroScope::CpuHeroScope(const CpuTextures& textures, std::optional<glm::vec3> lightSun) {
   gTextures = &textures;
   gHeroLight = &light_;

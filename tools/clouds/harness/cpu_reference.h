@@ -48,6 +48,14 @@ CloudFrame renderCpuReference(const CpuTextures& textures,
                               const clouds::Settings& settings, const std::vector<float>& depth,
                               unsigned threads = 2);
 
+// What the march's sky-light pass (Settings::skyLight) should store for each texel of the sky
+// light's upper half (kSkyLightWidth x kSkyLightHeight / 2, row-major, v = 0 at the zenith): the
+// clouds' radiance and transmittance along its ray, with the uniforms and settings of a GPU
+// frame (its ambient as the GPU's sky ambient pass left it: give the uniforms those values).
+std::vector<glm::vec4> cpuSkyLightClouds(const CpuTextures& textures,
+                                         const clouds::shader::CloudUniforms& uniforms,
+                                         const clouds::Settings& settings, unsigned threads = 2);
+
 // What cloud_shadow_map.comp should store at `texel` of the cascade a dispatch made with
 // `constants` (Context internals: lastShadowUniforms(), lastShadowJobs()), before the RGBA16F
 // rounding: the shared column march on the CPU.

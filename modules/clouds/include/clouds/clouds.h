@@ -112,7 +112,8 @@ struct CreateInfo {
 // same, with FrameInputs::terrain), "sky ambient" (with FrameInputs::skyView or groundAlbedo),
 // then either "clear sky" (nothing to march; then "god rays" too, with godRaySamples > 0) or
 // "scene distance", "march", "lightning" (with this frame's flashes), "reconstruct", "god rays"
-// (godRaySamples > 0), "upsample", "lightning bolts" (with this frame's bolts).
+// (godRaySamples > 0), "upsample", "lightning bolts" (with this frame's bolts); last "sky light"
+// (Settings::skyLight).
 struct PassTiming {
   const char* name = "";  // static storage: valid for the life of the program
   double milliseconds = 0.0;
@@ -162,12 +163,14 @@ struct MemoryUsage {
   std::uint64_t lightningBytes = 0;   // the glow image, the flashes' blocks, the bolts' buffers
   std::uint64_t heroCloudBytes = 0;   // the hero clouds' atlas (setHeroCloudAssets()), its upload
                                       //   buffer until a frame has copied it, their blocks
+  std::uint64_t skyLightBytes = 0;    // the sky light's map, its clouds and measures (skyLight)
   std::uint64_t bufferBytes = 0;      // uniforms, work counters, placeholders
   std::uint64_t retiredBytes = 0;     // images a larger prepare() replaced, freed once the
                                       //   frames in flight that may use them have retired
   std::uint64_t totalBytes() const {
     return noiseBytes + weatherBytes + outputBytes + traceBytes + upsamplingBytes + shadowBytes +
-           godRayBytes + lightningBytes + heroCloudBytes + bufferBytes + retiredBytes;
+           godRayBytes + lightningBytes + heroCloudBytes + skyLightBytes + bufferBytes +
+           retiredBytes;
   }
 };
 
@@ -429,6 +432,32 @@ struct Settings {
   // eye by the frame's rotation); off: plain reprojection (camera and wind only), for the
   // benchmark's comparison.
   bool vortexReprojection = true;
+
+  // --- Sky light (Outputs::skyLight, Context::skyLighting()) ---------------------------------
+  // The host's sky with the clouds in it, for what the host lights with the sky (its ground's
+  // ambient, reflections, an exposure meter): an equirectangular map laid out as
+  // FrameInputs::skyView, whose upper half is that sky seen through the clouds marched towards
+  // each texel (a quarter of them a frame, lit as the view's clouds are), and its measures.
+  // Needs FrameInputs::skyView. false: no pass, no memory.
+  bool skyLight = false;
+};
+
+// The sky light's map (Outputs::skyLight), texels.
+inline constexpr VkExtent2D kSkyLightExtent{64, 32};
+
+// What the sky light's map measures (Context::skyLighting()): RGB radiances in the host's
+// units. Lighting a surface facing up with the sky means pi x upperIrradianceOverPi; the
+// regions are means by solid angle.
+struct SkyLighting {
+  bool valid = false;  // the frame made a sky light
+  // The upper hemisphere weighted by the cosine to the zenith: a horizontal surface's
+  // irradiance / pi.
+  glm::vec3 upperIrradianceOverPi{0};
+  glm::vec3 zenith{0};   // above 60 degrees of elevation
+  glm::vec3 horizon{0};  // from the horizon up to 10 degrees
+  glm::vec3 lower{0};    // the lower hemisphere
+  // FrameInputs::skyView's alone, as upperIrradianceOverPi: the light the clouds took or gave.
+  glm::vec3 clearIrradianceOverPi{0};
 };
 
 // Quality presets, cheapest first; Reference is referenceSettings().
@@ -719,6 +748,10 @@ struct Outputs {
   OutputImage godRayMask;
   glm::vec4 godRaySun{0.0f};
   glm::vec4 godRayBlur{0.0f};
+  // The sky light (Settings::skyLight; else null): RGBA16F, kSkyLightExtent, laid out as
+  // FrameInputs::skyView, in GENERAL with the writes of the last dispatch() visible to compute- and
+  // fragment-shader reads.
+  OutputImage skyLight;
 };
 
 namespace detail {
@@ -792,6 +825,9 @@ class Context {
   // The pass times of frame `frameIndex` (same conditions); empty unless
   // CreateInfo::passTimings and the device has compute timestamps.
   std::vector<PassTiming> passTimings(std::uint64_t frameIndex) const;
+  // The sky light's measures of frame `frameIndex` (same conditions); valid only when that
+  // frame made a sky light (Settings::skyLight).
+  SkyLighting skyLighting(std::uint64_t frameIndex) const;
 
  private:
   friend struct detail::ContextAccess;

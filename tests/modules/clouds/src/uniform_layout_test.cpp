@@ -112,7 +112,8 @@ const std::map<std::string, std::size_t> kCppOffsets = {FIELD(inverseProjection)
                                                         FIELD(vortexClock),
                                                         FIELD(vortexRegion),
                                                         FIELD(vortexHistorySeconds),
-                                                        FIELD(vortexPadding)};
+                                                        FIELD(skyLightRefresh),
+                                                        FIELD(padding0)};
 #undef FIELD
 
 std::string reflect() {
