@@ -258,20 +258,20 @@ TEST(HeadlessCapture, EachSceneGetsOnlyThePassesAndPipelinesItNeeds) {
        R"("passes": ["cloud shadows", "terrain sunlight", "atmosphere", "scene", "clouds", )"
        R"("clouds composite", "tonemap", "capture"])",
        R"x("pipelines": ["tonemap", "terrain (cloud shadows)", "terrain sunlight", )x"
-       R"x("atmosphere module", "clouds module (shadow map, terrain shadow, god rays)"])x",
+       R"x("atmosphere module", "clouds module (shadow map, terrain shadow, god rays, sky light)"])x",
        R"("modules": ["atmosphere", "clouds"], "shadow casters": ["clouds", "terrain"])"},
       // God rays: the clouds module's mask and composite variants, no pass of their own.
       {scene("god_rays_sunset.json"),
        R"("passes": ["cloud shadows", "terrain sunlight", "atmosphere", "scene", "clouds", )"
        R"("clouds composite", "tonemap", "capture"])",
-       R"x("atmosphere module", "clouds module (shadow map, terrain shadow, god rays)"])x",
+       R"x("atmosphere module", "clouds module (shadow map, terrain shadow, god rays, sky light)"])x",
        R"("modules": ["atmosphere", "clouds"])"},
       // A terrain that casts no shadows: the clouds' map alone (the terrain still reads it).
       {scene("ridge_sunset_unshadowing.json"),
        R"("passes": ["cloud shadows", "terrain sunlight", "atmosphere", "scene", "clouds", )"
        R"("clouds composite", "tonemap", "capture"])",
        R"x("pipelines": ["tonemap", "terrain (cloud shadows)", "terrain sunlight", )x"
-       R"x("atmosphere module", "clouds module (shadow map)"])x",
+       R"x("atmosphere module", "clouds module (shadow map, sky light)"])x",
        R"("shadow casters": ["clouds"])"},
       // A storm: the clouds module with its lightning (the glow and the bolts' pass), and the
       // terrain's lightning variant beside its plain one (drawn only while a flash lasts).
@@ -280,13 +280,13 @@ TEST(HeadlessCapture, EachSceneGetsOnlyThePassesAndPipelinesItNeeds) {
        R"("clouds composite", "tonemap", "capture"])",
        R"x("terrain (cloud shadows)", "terrain (cloud shadows) (lightning)", "terrain sunlight", )x"
        R"x("atmosphere module", "clouds module (shadow map, terrain shadow, god rays, lightning, )x"
-       R"x(lightning bolts)"])x",
+       R"x(lightning bolts, sky light)"])x",
        R"("modules": ["atmosphere", "clouds"])"},
       // Hero clouds: the clouds module's hero march (and their atlas), no pass of their own.
       {SAMPLE_ASSET_DIR + std::string("/scenes/hero_clouds.json"),
        R"("passes": ["cloud shadows", "terrain sunlight", "atmosphere", "scene", "clouds", )"
        R"("clouds composite", "tonemap", "capture"])",
-       R"x("atmosphere module", "clouds module (shadow map, terrain shadow, hero clouds)"])x",
+       R"x("atmosphere module", "clouds module (shadow map, terrain shadow, hero clouds, sky light)"])x",
        R"("modules": ["atmosphere", "clouds"])"},
       // A layer that casts no shadows: no shadow pass, the plain terrain.
       {scene("unshadowed_clouds.json"),
@@ -312,7 +312,8 @@ TEST(HeadlessCapture, EachSceneGetsOnlyThePassesAndPipelinesItNeeds) {
   EXPECT_NE(changing.find(R"("weather regions": ["the far ridge", "the superstorm out west"])"),
             std::string::npos)
       << changing;
-  EXPECT_NE(changing.find(R"x(lightning bolts, weather regions, superstorm)")x"), std::string::npos)
+  EXPECT_NE(changing.find(R"x(lightning bolts, weather regions, superstorm, sky light)")x"),
+            std::string::npos)
       << changing;
   // A superstorm: its region, and the vortex code in the clouds module's pipelines; a scene with
   // plain regions has the regions' code and no vortex code (nor have the scenes above).
@@ -320,13 +321,13 @@ TEST(HeadlessCapture, EachSceneGetsOnlyThePassesAndPipelinesItNeeds) {
       describe(std::string(SAMPLE_ASSET_DIR) + "/scenes/superstorm.json");
   EXPECT_NE(superstorm.find(R"("weather regions": ["the superstorm"])"), std::string::npos)
       << superstorm;
-  EXPECT_NE(superstorm.find(R"x(lightning bolts, weather regions, superstorm)")x"),
+  EXPECT_NE(superstorm.find(R"x(lightning bolts, weather regions, superstorm, sky light)")x"),
             std::string::npos)
       << superstorm;
   const std::string front = describe(std::string(SAMPLE_ASSET_DIR) + "/scenes/storm_front.json");
   EXPECT_NE(front.find(R"("weather regions": ["front over the range"])"), std::string::npos)
       << front;
-  EXPECT_NE(front.find(R"x(, weather regions)")x"), std::string::npos) << front;
+  EXPECT_NE(front.find(R"x(, weather regions, sky light)")x"), std::string::npos) << front;
   EXPECT_EQ(front.find("superstorm"), std::string::npos) << front;
   EXPECT_NE(changing.find(R"("passes": ["cloud shadows", "terrain sunlight", "atmosphere", )"
                           R"("scene", "clouds", "clouds composite", "tonemap", "capture"])"),

@@ -193,7 +193,9 @@ void Renderer::updateFrameConstants(ecs::World& world, VkExtent2D extent) {
   world.view<const render::Camera>().each([&](const render::Camera& c) { camera = c; });
   render::Sun sun;
   world.view<const render::Sun>().each([&](const render::Sun& s) { sun = s; });
-  const render::SkyLight sky = world.ctx().get<render::SkyLight>();
+  // The ground's ambient: the sky as its cover (clouds) makes it, when an effect measures that.
+  const auto* covered = world.ctx().tryGet<render::CoveredSkyLight>();
+  const render::SkyLight sky = covered ? covered->light : world.ctx().get<render::SkyLight>();
   const render::Fog fog = world.ctx().get<render::Fog>();
   // The terrain is lit by the sun as it reaches the ground through the scene's air.
   const glm::vec3 sunAtGround =

@@ -132,8 +132,9 @@ bool CloudFeature::prepare(VkExtent2D extent, std::uint64_t frameIndex) {
   status.report = context_->lastFrameReport();
   status.memory = context_->memoryUsage();
   if (frameIndex >= framesInFlight_) {
-    // The slot about to be reused holds the latest completed frame's timestamps.
+    // The slot about to be reused holds the latest completed frame's timestamps and sky light.
     status.passTimings = context_->passTimings(frameIndex - framesInFlight_);
+    publishSkyLight(context_->skyLighting(frameIndex - framesInFlight_));
   }
   settings_ = forTheEngine(cloudSettings(world_));
   clouds::Error error;
@@ -145,21 +146,38 @@ bool CloudFeature::prepare(VkExtent2D extent, std::uint64_t frameIndex) {
   return !sameImages(usableOutputs(), imported_);
 }
 
-clouds::Settings CloudFeature::forTheEngine(clouds::Settings settings) {
+clouds::Settings CloudFeature::forTheEngine(clouds::Settings settings) const {
   // The engine's passes read the clouds' radiance only (addPasses() hands on no depth): the
   // module need not store its depth output (a quarter of its upsample on lavapipe).
   settings.depthOutput = false;
+  // The scene's ambient is lit by the sky with its clouds (CoveredSkyLight) when the frame graph
+  // has a drawn sky to lay them over; a scene without one pays nothing for it.
+  settings.skyLight = skyOnGraph_;
   return settings;
+}
+
+void CloudFeature::publishSkyLight(const clouds::SkyLighting& measured) {
+  if (!measured.valid) {
+    world_.ctx().erase<CoveredSkyLight>();
+    return;
+  }
+  CoveredSkyLight covered;
+  covered.light.zenith = measured.zenith;
+  covered.light.horizon = measured.horizon;
+  covered.light.ground = measured.lower;
+  world_.ctx().emplaceOrReplace<CoveredSkyLight>(covered);
 }
 
 void CloudFeature::prepareGovernedPresets(VkExtent2D extent) {
   const std::span<const clouds::Quality> presets = governedPresets(world_);
   if (std::equal(presets.begin(), presets.end(), preparedAhead_.begin(), preparedAhead_.end()) &&
-      extent.width == preparedAheadExtent_.width && extent.height == preparedAheadExtent_.height) {
+      extent.width == preparedAheadExtent_.width && extent.height == preparedAheadExtent_.height &&
+      skyOnGraph_ == preparedAheadSkyLit_) {
     return;
   }
   preparedAhead_.assign(presets.begin(), presets.end());
   preparedAheadExtent_ = extent;
+  preparedAheadSkyLit_ = skyOnGraph_;
   // Dearest first: its images are the largest, and the others then fit in them.
   for (auto it = presets.rbegin(); it != presets.rend(); ++it) {
     clouds::Error error;
@@ -234,7 +252,10 @@ void CloudFeature::dispatch(const HostFrame& host) {
   inputs.lightningBolts = bolts_;
   placeHeroClouds(inputs);
   placeWeatherRegions(inputs);
-  dispatched_ = context_->dispatch(inputs, settings_, &error);
+  // The sky light lays the clouds over the drawn sky: none without one.
+  clouds::Settings settings = settings_;
+  settings.skyLight = settings.skyLight && inputs.skyView != VK_NULL_HANDLE;
+  dispatched_ = context_->dispatch(inputs, settings, &error);
   if (dispatched_) {
     auto& status = world_.ctx().get<CloudStatus>();
     status.lastError.clear();
@@ -258,6 +279,7 @@ std::vector<std::string> CloudFeature::effects() const {
   if (hasHeroClouds_) names.emplace_back("hero clouds");
   if (settings_.weatherRegions > 0) names.emplace_back("weather regions");
   if (settings_.superstorms > 0) names.emplace_back("superstorm");
+  if (skyOnGraph_) names.emplace_back("sky light");
   return names;
 }
 
@@ -341,6 +363,7 @@ SceneTextures CloudFeature::addPasses(FrameGraph& graph, const SceneTextures& sc
   const auto* sky = graph.blackboard().find<fxcontracts::ecs::SkyRadiance>();
   const auto* haze = graph.blackboard().find<fxcontracts::ecs::AerialPerspective>();
   const auto* shadow = graph.blackboard().find<fxcontracts::ecs::CloudShadow>();
+  skyOnGraph_ = sky != nullptr;
   struct MarchData {
     TextureHandle sceneDepth, skyRadiance, aerialPerspective, radiance, depth;
   };

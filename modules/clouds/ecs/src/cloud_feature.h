@@ -66,14 +66,20 @@ class CloudFeature final : public engine::render::RenderFeature {
   void dispatchShadowMap(const HostFrame& host, fxcontracts::ecs::CloudShadow& shadow);
   void composite(VkCommandBuffer cmd, VkImageView color, VkExtent2D extent);
   void reportError(const clouds::Error& error);
-  // `settings` as the engine uses them (no depth output).
-  static clouds::Settings forTheEngine(clouds::Settings settings);
+  // `settings` as the engine uses them (no depth output; the sky light with a drawn sky).
+  clouds::Settings forTheEngine(clouds::Settings settings) const;
+  // The sky light of a completed frame as the scene's CoveredSkyLight (none when the frame made
+  // none).
+  void publishSkyLight(const clouds::SkyLighting& measured);
   // Prepares every preset a budgeted camera may switch to (frame_budget.h), once per set and
   // extent, so that a switch builds nothing mid-flight.
   void prepareGovernedPresets(VkExtent2D extent);
 
   engine::ecs::World& world_;
   engine::gfx::Device& device_;
+  // The frame graph has a drawn sky (fxcontracts::ecs::SkyRadiance): the clouds make the sky
+  // light over it, from the prepare() after the graph was built.
+  bool skyOnGraph_ = false;
   std::uint32_t framesInFlight_;
   std::unique_ptr<engine::gfx::Image> weatherMap_;  // the layer's painted map, if any
   // The weather timeline's painted maps (CloudWeather::keyWeatherMaps), each file read once,
@@ -84,6 +90,7 @@ class CloudFeature final : public engine::render::RenderFeature {
   clouds::Settings settings_;                          // this frame's, decided in prepare()
   std::vector<clouds::Quality> preparedAhead_;         // the governed presets prepared
   VkExtent2D preparedAheadExtent_{0, 0};               // at this extent
+  bool preparedAheadSkyLit_ = false;                   // with skyOnGraph_ as it was
   std::vector<clouds::LightningFlash> flashes_;        // this frame's (FrameInputs points at them)
   std::vector<clouds::LightningBoltSegment> bolts_;    // likewise
   std::vector<clouds::HeroCloud> heroClouds_;          // likewise

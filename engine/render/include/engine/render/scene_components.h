@@ -69,6 +69,14 @@ struct SkyLight {
   glm::vec3 ground{1.2f, 1.2f, 1.0f};
 };
 
+// Context singleton: the sky light as the scene's weather makes it, the drawn sky with what
+// covers it: the same regions and units as SkyLight, measured by the effect that renders the
+// cover. It lights the scene's ambient in SkyLight's place (SkyLight stays what the sky is
+// drawn with); absent, SkyLight lights it.
+struct CoveredSkyLight {
+  SkyLight light;
+};
+
 // Context singleton: the Lambertian albedo of the scene's ground at large (RGB, [0, 1]), for
 // light bounced off it (e.g. onto what floats above it). An effect that models the air
 // publishes the one its sky is made with; absent, effects do without the ground's light.
