@@ -20,6 +20,29 @@
 namespace {
 // The map whose lookup runs (ShadowMapImage::transmittance, one thread at a time per map).
 thread_local const clouds::tools::ShadowMapImage* tShadowMap = nullptr;
+
+// `count` RGBA16F texels as floats.
+std::vector<glm::vec4> unpackHalfTexels(const void* data, std::size_t count) {
+  const auto* halves = static_cast<const std::uint16_t*>(data);
+  std::vector<glm::vec4> texels(count);
+  for (std::size_t i = 0; i < count; ++i) {
+    texels[i] =
+        glm::vec4(glm::unpackHalf1x16(halves[4 * i + 0]), glm::unpackHalf1x16(halves[4 * i + 1]),
+                  glm::unpackHalf1x16(halves[4 * i + 2]), glm::unpackHalf1x16(halves[4 * i + 3]));
+  }
+  return texels;
+}
+
+// A module output of RGBA16F texels, read back from GENERAL (where it is left).
+std::vector<glm::vec4> readHalfImage(engine::gfx::Device& device, VkImage image,
+                                     VkExtent3D extent) {
+  const engine::gfx::ImageState general{VK_IMAGE_LAYOUT_GENERAL,
+                                        VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT,
+                                        VK_ACCESS_2_MEMORY_READ_BIT | VK_ACCESS_2_MEMORY_WRITE_BIT};
+  const std::vector<std::byte> bytes =
+      engine::gfx::readbackImage(device, image, VK_FORMAT_R16G16B16A16_SFLOAT, extent, general);
+  return unpackHalfTexels(bytes.data(), std::size_t{extent.width} * extent.height);
+}
 }  // namespace
 
 namespace fxcontracts::shader {
@@ -287,13 +310,7 @@ CloudFrame CloudHarness::render(const CloudView& view, const clouds::Settings& s
                          VK_ACCESS_2_HOST_READ_BIT);
     }
   });
-  frame.radiance.resize(pixels);
-  const auto* halves = reinterpret_cast<const std::uint16_t*>(readbacks[0].buffer.mapped());
-  for (std::size_t i = 0; i < pixels; ++i) {
-    frame.radiance[i] =
-        glm::vec4(glm::unpackHalf1x16(halves[4 * i + 0]), glm::unpackHalf1x16(halves[4 * i + 1]),
-                  glm::unpackHalf1x16(halves[4 * i + 2]), glm::unpackHalf1x16(halves[4 * i + 3]));
-  }
+  frame.radiance = unpackHalfTexels(readbacks[0].buffer.mapped(), pixels);
   if (readbacks.size() > 1) {
     frame.depth.resize(pixels);
     std::memcpy(frame.depth.data(), readbacks[1].buffer.mapped(), pixels * 8);
@@ -327,19 +344,9 @@ ShadowMapImage CloudHarness::readShadowMap() {
   map.parameters = out.shadowParameters;
   if (out.shadowMap.image == VK_NULL_HANDLE) return map;
   const VkExtent3D extent = moduleImages().shadowMap.extent();
-  const gfx::ImageState general{VK_IMAGE_LAYOUT_GENERAL, VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT,
-                                VK_ACCESS_2_MEMORY_READ_BIT | VK_ACCESS_2_MEMORY_WRITE_BIT};
-  const std::vector<std::byte> bytes = gfx::readbackImage(
-      device_, out.shadowMap.image, VK_FORMAT_R16G16B16A16_SFLOAT, extent, general);
   map.width = extent.width;
   map.height = extent.height;
-  map.texels.resize(std::size_t{extent.width} * extent.height);
-  const auto* halves = reinterpret_cast<const std::uint16_t*>(bytes.data());
-  for (std::size_t i = 0; i < map.texels.size(); ++i) {
-    map.texels[i] =
-        glm::vec4(glm::unpackHalf1x16(halves[4 * i + 0]), glm::unpackHalf1x16(halves[4 * i + 1]),
-                  glm::unpackHalf1x16(halves[4 * i + 2]), glm::unpackHalf1x16(halves[4 * i + 3]));
-  }
+  map.texels = readHalfImage(device_, out.shadowMap.image, extent);
   return map;
 }
 
@@ -349,19 +356,9 @@ SkyLightImage CloudHarness::readSkyLight() {
   if (out.skyLight.image == VK_NULL_HANDLE || frameIndex_ == 0) return sky;
   sky.measures = context_->skyLighting(frameIndex_ - 1);
   const VkExtent3D extent{clouds::kSkyLightExtent.width, clouds::kSkyLightExtent.height, 1};
-  const gfx::ImageState general{VK_IMAGE_LAYOUT_GENERAL, VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT,
-                                VK_ACCESS_2_MEMORY_READ_BIT | VK_ACCESS_2_MEMORY_WRITE_BIT};
-  const std::vector<std::byte> bytes = gfx::readbackImage(
-      device_, out.skyLight.image, VK_FORMAT_R16G16B16A16_SFLOAT, extent, general);
   sky.width = extent.width;
   sky.height = extent.height;
-  sky.texels.resize(std::size_t{extent.width} * extent.height);
-  const auto* halves = reinterpret_cast<const std::uint16_t*>(bytes.data());
-  for (std::size_t i = 0; i < sky.texels.size(); ++i) {
-    sky.texels[i] =
-        glm::vec4(glm::unpackHalf1x16(halves[4 * i + 0]), glm::unpackHalf1x16(halves[4 * i + 1]),
-                  glm::unpackHalf1x16(halves[4 * i + 2]), glm::unpackHalf1x16(halves[4 * i + 3]));
-  }
+  sky.texels = readHalfImage(device_, out.skyLight.image, extent);
   return sky;
 }
 
