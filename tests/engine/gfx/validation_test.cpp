@@ -107,10 +107,10 @@ std::vector<engine::gfx::ValidationMessage> runProbe(
 // again with no barrier between them, a write-after-write hazard that only sync validation
 // reports. (Two dispatches writing it back to back are not reported by Debian's layer, 1.3.239:
 // tried; a compute write followed by a transfer write is.) It runs where the ctest entry
-// engine_gfx_sync_validation turns sync validation on.
+// engine_gfx_full_validation turns sync validation on.
 TEST_F(Validation, AMissingBarrierIsCaughtBySyncValidation) {
   if (!layerFeatureOn("SYNCHRONIZATION_VALIDATION")) {
-    GTEST_SKIP() << "sync validation is off (engine_gfx_sync_validation runs this)";
+    GTEST_SKIP() << "sync validation is off (engine_gfx_full_validation runs this)";
   }
   const auto messages = runProbe(256, VK_WHOLE_SIZE, [](VkCommandBuffer cmd, VkBuffer b) {
     // (the barrier a correct frame would put here is missing)
@@ -121,10 +121,10 @@ TEST_F(Validation, AMissingBarrierIsCaughtBySyncValidation) {
 
 // GPU-assisted validation's negative control: an indirect dispatch whose group count exceeds
 // maxComputeWorkGroupCount, which only the layer's pre-dispatch check on the GPU can see. It runs
-// where the ctest entry engine_gfx_gpu_assisted_validation turns GPU-AV on.
+// where the ctest entry engine_gfx_full_validation turns GPU-AV on.
 TEST_F(Validation, AnOversizedIndirectDispatchIsCaughtByGpuAssistedValidation) {
   if (!layerFeatureOn("GPU_ASSISTED")) {
-    GTEST_SKIP() << "GPU-assisted validation is off (engine_gfx_gpu_assisted_validation runs it)";
+    GTEST_SKIP() << "GPU-assisted validation is off (engine_gfx_full_validation runs it)";
   }
   engine::gfx::Buffer indirect(
       device(), engine::gfx::BufferDesc{sizeof(VkDispatchIndirectCommand),
