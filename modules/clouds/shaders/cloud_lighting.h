@@ -132,6 +132,15 @@ FX_INLINE vec3 sampleRadiance(float lightOpticalDepth, float sunLight, IN(Octave
   return sun + ambient;
 }
 
+// The altitude (m) the sky light's rays start from: the camera's, or, for a camera in or above
+// the layer, just below the layer straight under it. The sky light lights the ground (and what
+// lies under the clouds), which sees the layer from below whatever the camera's altitude. The
+// march's flat offsets are the camera's (x, z): only the altitude moves. Hero clouds, placed
+// relative to the camera, are seen from the camera's altitude still.
+FX_INLINE float skyLightAltitude(IN(CloudUniforms) u) {
+  return min(u.cameraAltitudeMetres, u.layerBottomMetres - 10.0f);
+}
+
 FX_SHADER_END
 
 #endif

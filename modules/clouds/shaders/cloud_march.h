@@ -507,15 +507,6 @@ FX_INLINE vec3 skyLightDirection(uvec2 texel) {
   return vec3(cos(azimuth) * cos(elevation), sin(elevation), sin(azimuth) * cos(elevation));
 }
 
-// The altitude (m) the sky light's rays start from: the camera's, or, for a camera in or above
-// the layer, just below the layer straight under it. The sky light lights the ground (and what
-// lies under the clouds), which sees the layer from below whatever the camera's altitude. The
-// march's flat offsets are the camera's (x, z): only the altitude moves. Hero clouds, placed
-// relative to the camera, are seen from the camera's altitude still.
-FX_INLINE float skyLightAltitude(IN(CloudUniforms) u) {
-  return min(u.cameraAltitudeMetres, u.layerBottomMetres - 10.0f);
-}
-
 // Where a sky-light ray starts in its first step, in [0, 1): a hash of its texel, moved by the
 // golden ratio from one frame to the next, so that each refresh of a texel starts elsewhere and
 // neighbouring texels never together (`mode`: the jitter, 0 none).

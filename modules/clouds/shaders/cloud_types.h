@@ -157,6 +157,7 @@ const uint kSkyLightClouds = 2u;     // the clouds marched towards the upper hal
 const uint kSkyLightShadowMap = 3u;  // the cloud shadow map (a placeholder without one)
 const uint kSkyLightMap = 4u;        // the map made (RGBA16F)
 const uint kSkyLightMeasures = 5u;   // SkyLightMeasures (storage buffer, read by the host)
+const uint kSkyLightShadowParameters = 6u;  // the shadow map's MarchShadowMap (uniform block)
 // noise_*.comp, hero_noise*.comp and weather_procedural.comp: the texture they generate
 // (noise_mip.comp, hero_noise_mip.comp: the 3D noise whose mip chain they complete)
 const uint kGeneratorTarget = 0u;
@@ -455,6 +456,7 @@ struct AmbientConstants {
 const uint kSkyLightCloudsMarched = 1u;  // the clouds image holds this frame's sky (else clear)
 const uint kSkyLightGround = 2u;         // the ground below is lit from the map (groundAlbedo)
 const uint kSkyLightGroundShadow = 4u;   // ... in the clouds' shadow (the shadow map's mean)
+const uint kSkyLightSunAtCamera = 8u;    // the shadow map is this frame's: read it at the camera
 struct SkyLightConstants {
   vec3 groundAlbedo;        // Lambertian, [0, 1] per channel
   uint flags;               // kSkyLight* bits
@@ -473,6 +475,12 @@ struct SkyLightMeasures {
   vec4 horizon;                // from the horizon up to 10 degrees
   vec4 lower;                  // the lower hemisphere
   vec4 clearIrradianceOverPi;  // the host's sky alone, as upperIrradianceOverPi
+  // Where the map was seen from, for a meter at the camera: x the clouds' transmittance of the
+  // sun at the camera (the shadow map's, 1 without one), y the altitude (m) the upper half was
+  // seen from (skyLightAltitude()), z the altitude above which no layer cloud is (m), w the
+  // share of the ground around the camera in the sun (the shadow map's finest cascade's mean, 1
+  // without one).
+  vec4 viewpoint;
 };
 
 // Push constants of noise_mip.comp: packs level 0 of a 3D noise (one of four passes, by the
@@ -779,7 +787,7 @@ static_assert(sizeof(clouds::shader::NoiseConstants) == 16);
 static_assert(sizeof(clouds::shader::NoiseMipConstants) == 16);
 static_assert(sizeof(clouds::shader::AmbientConstants) == 32);
 static_assert(sizeof(clouds::shader::SkyLightConstants) == 32);
-static_assert(sizeof(clouds::shader::SkyLightMeasures) == 5 * 16);
+static_assert(sizeof(clouds::shader::SkyLightMeasures) == 6 * 16);
 static_assert(sizeof(clouds::shader::WeatherConstants) == 16);
 static_assert(sizeof(clouds::shader::ResampleConstants) == 16);
 static_assert(sizeof(clouds::shader::MaximaConstants) == 16);

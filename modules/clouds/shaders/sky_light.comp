@@ -11,8 +11,11 @@
 //    the share of the ground out of the clouds' shadow: under an overcast the ground is lit by the
 //    clouds, not by the clear sky. Nearer the horizon the air in front of the ground is the
 //    host's.
-// Inputs: the frame's uniforms, the host's sky image, the clouds marched, the shadow map.
-// Outputs: the map (RGBA16F), the measures (a storage buffer the host reads).
+//  - For a meter at the camera (SkyLightMeasures::viewpoint): the sun's transmittance through
+//    the clouds at the camera and the share of the ground around it in the sun, read from the
+//    shadow map, and the altitudes the map holds for.
+// Inputs: the frame's uniforms, the host's sky image, the clouds marched, the shadow map and its
+// parameters. Outputs: the map (RGBA16F), the measures (a storage buffer the host reads).
 #extension GL_GOOGLE_include_directive : require
 #include "cloud_lighting.h"
 #include "cloud_math.h"
@@ -29,6 +32,10 @@ layout(binding = kSkyLightMeasures, std430) buffer Measures { SkyLightMeasures m
 #define CLOUD_SHADOW_MAP_BINDING kSkyLightShadowMap
 #include "fxcontracts/cloud_shadow_sampled.glsl"
 #include "cloud_ground_sunlit.glsl"
+// Indexed like frame_uniforms.glsl's block, for the same reason.
+layout(binding = kSkyLightShadowParameters, std140) uniform ShadowMap {
+  MarchShadowMap shadowMap[1];
+};
 
 // Per lane, then reduced: radiance x weight (rgb) and the weight (a), per region; the ground's
 // sunlit share (sum, count).
@@ -100,8 +107,11 @@ void main() {
     if (elevation >= kPi / 3.0f) zenith += vec4(radiance, 1.0f) * solidAngle;
     if (elevation <= kTenDegreesRadians) horizon += vec4(radiance, 1.0f) * solidAngle;
   }
+  // With this frame's shadow map: the ground's share in the sun, for the ground texels (with its
+  // albedo) and the meter (SkyLightMeasures::viewpoint).
+  const bool mapped = (constants.flags & kSkyLightSunAtCamera) != 0u;
   vec2 sunlit = vec2(0.0f);
-  if (groundShadow) {
+  if (mapped) {
     for (uint k = 0u; k < kSunlitSamples; ++k) {
       const uint index = lane * kSunlitSamples + k;
       const vec2 cell = (vec2(float(index % 32u), float(index / 32u)) + 0.5f) / 32.0f;
@@ -116,9 +126,9 @@ void main() {
   sunlitSum[lane] = sunlit;
   reduce(lane);
   const vec3 skyOverPi = meanOf(upperSum[0]);  // a horizontal surface's irradiance / pi
-  const float sunlitShare = groundShadow ? sunlitSum[0].x / max(sunlitSum[0].y, 1.0f) : 1.0f;
+  const float sunlitShare = mapped ? sunlitSum[0].x / max(sunlitSum[0].y, 1.0f) : 1.0f;
   const vec3 ground = groundRadiance(skyOverPi, constants.groundAlbedo, u.sunIlluminance,
-                                     u.sunDirection.y, sunlitShare);
+                                     u.sunDirection.y, groundShadow ? sunlitShare : 1.0f);
   const bool groundLit = (constants.flags & kSkyLightGround) != 0u;
   barrier();  // every lane has read the sums before they are reused
 
@@ -140,6 +150,18 @@ void main() {
     barrier();
   }
   if (lane != 0u) return;
+  // The clouds between the camera and the sun (not the terrain: the meter reads what the sky's
+  // cover lets through).
+  float sunAtCamera = 1.0f;
+  if (mapped) {
+    vec4 uv01;
+    vec4 uv23;
+    CLOUD_SHADOW_COORDINATES(shadowMap[0].map, vec3(0.0f), uv01, uv23);
+    sunAtCamera = cloudShadowAt(shadowMap[0].map.info, uv01, uv23, u.cameraAltitudeMetres,
+                                kCloudShadowClouds)
+                      .x;
+  }
+  measures.viewpoint = vec4(sunAtCamera, skyLightAltitude(u), u.layerTopMetres, sunlitShare);
   const float luminance = dot(skyOverPi, vec3(0.2126f, 0.7152f, 0.0722f));
   measures.upperIrradianceOverPi = vec4(skyOverPi, luminance);
   measures.zenith = vec4(meanOf(zenithSum[0]), 0.0f);

@@ -443,13 +443,17 @@ void Context::Impl::dispatch(const FrameInputs& inputs, const Settings& settings
     const bool cloudsOnClouds = settings.cloudShadowsOnClouds && shadowMapMade;
     const std::uint32_t shadowMapReads = (terrainShadow ? shader::kShadowMapReadsTerrain : 0u) |
                                          (cloudsOnClouds ? shader::kShadowMapReadsClouds : 0u);
+    // The march's variants that read the shadow map, and the sky light's meter at the camera,
+    // read its parameters.
+    const bool shadowMapParametersRead =
+        shadowMapReads != 0u || (settings.skyLight && shadowMapMade);
     shader::MarchShadowMap shadow{};
-    if (shadowMapReads != 0u) {
+    if (shadowMapParametersRead) {
       // This frame's dispatchShadowMap() placed them for this frame's camera.
       std::memcpy(&shadow.map, &shadowParameters_, sizeof(shadowParameters_));
       shadow.terrainTopMetres = inputs.terrain.maxAltitudeMetres;
     }
-    recordUniforms(cmd, slot, lastUniforms_, shadowMapReads != 0u ? &shadow : nullptr,
+    recordUniforms(cmd, slot, lastUniforms_, shadowMapParametersRead ? &shadow : nullptr,
                    heroClouds ? &lastHeroClouds_ : nullptr);
     if (heroLightVolume) recordHeroLight(cmd, heroSweep, slot);
     if (inputs.skyView != VK_NULL_HANDLE || inputs.groundAlbedo) {
@@ -604,6 +608,10 @@ SkyLighting Context::Impl::skyLighting(std::uint64_t frameIndex) const {
   sky.horizon = glm::vec3(measured->horizon);
   sky.lower = glm::vec3(measured->lower);
   sky.clearIrradianceOverPi = glm::vec3(measured->clearIrradianceOverPi);
+  sky.sunTransmittanceAtCamera = measured->viewpoint.x;
+  sky.seenFromAltitudeMetres = measured->viewpoint.y;
+  sky.coverTopMetres = measured->viewpoint.z;
+  sky.sunlitShareAround = measured->viewpoint.w;
   return sky;
 }
 

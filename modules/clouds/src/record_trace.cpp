@@ -366,7 +366,8 @@ void Context::Impl::recordSkyLight(VkCommandBuffer cmd, const FrameInputs& input
   constants.groundAlbedo = inputs.groundAlbedo.value_or(glm::vec3(0.0f));
   constants.flags = (marched ? shader::kSkyLightCloudsMarched : 0u) |
                     (inputs.groundAlbedo ? shader::kSkyLightGround : 0u) |
-                    (groundShadow ? shader::kSkyLightGroundShadow : 0u);
+                    (groundShadow ? shader::kSkyLightGroundShadow : 0u) |
+                    (shadowMapMade ? shader::kSkyLightSunAtCamera : 0u);
   constants.shadowCascades = settings.shadowCascades;
   constants.shadowTexels = settings.shadowMapResolution;
   const VkImageView placeholder = images_.depthPlaceholder.view();
@@ -376,9 +377,11 @@ void Context::Impl::recordSkyLight(VkCommandBuffer cmd, const FrameInputs& input
                     inputs.skyLayout)
       .storageImage(shader::kSkyLightClouds, images_.skyLightClouds.view())
       .sampledImage(
-          shader::kSkyLightShadowMap, groundShadow ? images_.shadowMap.view() : placeholder,
+          shader::kSkyLightShadowMap, shadowMapMade ? images_.shadowMap.view() : placeholder,
           clampedLinearSampler_.get(),
-          groundShadow ? VK_IMAGE_LAYOUT_GENERAL : VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL)
+          shadowMapMade ? VK_IMAGE_LAYOUT_GENERAL : VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL)
+      .uniformBuffer(shader::kSkyLightShadowParameters, slot.shadowParameters.buffer(),
+                     sizeof(shader::MarchShadowMap))
       .storageImage(shader::kSkyLightMap, images_.skyLightMap.view())
       .storageBuffer(shader::kSkyLightMeasures, slot.skyLightMeasures.buffer(),
                      slot.skyLightMeasures.size())

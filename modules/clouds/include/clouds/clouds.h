@@ -458,6 +458,15 @@ struct SkyLighting {
   glm::vec3 lower{0};    // the lower hemisphere
   // FrameInputs::skyView's alone, as upperIrradianceOverPi: the light the clouds took or gave.
   glm::vec3 clearIrradianceOverPi{0};
+  // For an exposure meter at the camera: the clouds' transmittance of the sun there and the
+  // share of the ground around it in the sun (the mean over the shadow map's finest cascade;
+  // both 1 without a map), the altitude (m) the map's upper half was seen from (the camera's,
+  // or under the layer for a camera in or above it), and the layer's top (m), above which the
+  // host's clear sky holds.
+  float sunTransmittanceAtCamera = 1.0f;
+  float sunlitShareAround = 1.0f;
+  float seenFromAltitudeMetres = 0.0f;
+  float coverTopMetres = 0.0f;
 };
 
 // Quality presets, cheapest first; Reference is referenceSettings().

@@ -4,8 +4,9 @@
 // clouds the CPU reference marches towards each texel, and its irradiance (pi x
 // upperIrradianceOverPi) the CPU's integral of that, greyer than the clear sky's and, without the
 // sun, darker than the clear sky and the sun together; the ground below is lit by it; each frame
-// marches a quarter of its clouds; hard cases stay finite; without the host's sky it is refused by
-// name, and off it costs no pass and no memory. Validation-clean.
+// marches a quarter of its clouds; for an exposure meter, the sun at the camera is the shadow
+// map's there; hard cases stay finite; without the host's sky it is refused by name, and off it
+// costs no pass and no memory. Validation-clean.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -338,6 +339,66 @@ TEST_F(SkyLight, AboveTheLayerItIsTheSkyBelowIt) {
       continue;
     }
     expectClose(sky, glm::dvec3(below), 1e-4, "the sky from under the layer");
+  }
+}
+
+// For an exposure meter at the camera: the sun's transmittance there is the shadow map's (the
+// lookup every receiver makes), nothing under a clear sky, above the layer or without a map; the
+// ground around is in the overcast's shade; and the altitudes the map holds for are where its
+// rays start and the layer's top.
+TEST_F(SkyLight, TheSunAtTheCameraIsTheShadowMapsThere) {
+  const HostSky host(device(), uniformSky());
+  const clouds::Settings cloudy = overcast();
+  ASSERT_GT(cloudy.shadowCascades, 0u);
+  std::vector<float> atCamera;
+  std::vector<double> altitudes = {300.0};
+  for (std::size_t run = 0; run < 3; ++run) {
+    const double altitude = altitudes[run];
+    CloudView view = groundView(host.view());
+    view.groundAlbedo = glm::vec3(0.3f);  // the harness makes the shadow map for the ground's light
+    view.position.y = altitude;
+    harness().cut();
+    harness().render(view, cloudy, kExtent);
+    const clouds::SkyLighting measures = harness().readSkyLight().measures;
+    const clouds::tools::ShadowMapImage map = harness().readShadowMap();
+    ASSERT_FALSE(map.texels.empty());
+    const float expected = map.transmittance(glm::vec3(0.0f));
+    std::printf("camera at %.0f m: sun at the camera %.5f (the shadow map's %.5f)\n", altitude,
+                measures.sunTransmittanceAtCamera, expected);
+    EXPECT_NEAR(measures.sunTransmittanceAtCamera, expected, 2e-3) << altitude;
+    // The ground around: the mean of the finest cascade, as the ground texels' share (tested
+    // with them in TheGroundBelowIsLitByTheSkyAbove): all of it in the overcast's shade.
+    EXPECT_LT(measures.sunlitShareAround, 0.05f) << altitude;
+    atCamera.push_back(measures.sunTransmittanceAtCamera);
+    if (run == 0) {
+      // Next, inside the clouds where the sun is half hidden (the map's lookup, up from here),
+      // then above the layer.
+      double up = 0.0;
+      while (up < 8000.0 && map.transmittance(glm::vec3(0.0f, float(up), 0.0f)) < 0.5f) up += 20.0;
+      altitudes.push_back(altitude + up);
+      altitudes.push_back(9000.0);
+    }
+    EXPECT_FLOAT_EQ(measures.seenFromAltitudeMetres,
+                    float(std::min(altitude, cloudy.layerBottomMetres - 10.0)));
+    EXPECT_FLOAT_EQ(measures.coverTopMetres, float(cloudy.layerTopMetres));
+  }
+  EXPECT_LT(atCamera[0], 0.05f) << "under the overcast, in its shade";
+  EXPECT_GT(atCamera[1], atCamera[0]) << "in the clouds, some of them towards the sun";
+  EXPECT_LT(atCamera[1], atCamera[2]);
+  EXPECT_NEAR(atCamera[2], 1.0f, 1e-3f) << "above the layer, in the sun";
+  clouds::Settings clear = cloudy;
+  clear.coverage = 0.0f;
+  clouds::Settings unmapped = cloudy;
+  unmapped.shadowCascades = 0;
+  for (const clouds::Settings& s : {clear, unmapped}) {
+    CloudView view = groundView(host.view());
+    view.groundAlbedo = glm::vec3(0.3f);
+    harness().cut();
+    harness().render(view, s, kExtent);
+    const clouds::SkyLighting measures = harness().readSkyLight().measures;
+    EXPECT_EQ(measures.sunTransmittanceAtCamera, 1.0f)
+        << (s.coverage == 0.0f ? "a clear sky" : "no shadow map");
+    EXPECT_EQ(measures.sunlitShareAround, 1.0f);
   }
 }
 
