@@ -8,13 +8,16 @@
 #include "clouds/ecs/frame_budget.h"
 #include "engine/core/error.h"
 #include "engine/ecs/frame_time.h"
+#include "engine/render/exposure.h"
 #include "engine/render/gpu_frame_time.h"
+#include "game/exposure_control.h"
 
 namespace sample {
 
 FrameSeries::FrameSeries(const std::filesystem::path& file) : out_(file) {
   if (!out_) throw engine::Error(file.string() + ": cannot write the frame series");
-  out_ << "frame,seconds,wall_ms,gpu_ms,cloud_preset,governor,target_ms,clouds_history\n";
+  out_ << "frame,seconds,wall_ms,gpu_ms,cloud_preset,governor,target_ms,clouds_history,ev100,"
+          "metered_ev100\n";
 }
 
 void FrameSeries::afterFrame(std::uint64_t frame, double wallMilliseconds,
@@ -37,7 +40,11 @@ void FrameSeries::afterFrame(std::uint64_t frame, double wallMilliseconds,
                 world.ctx().get<engine::ecs::FrameTime>().elapsedSeconds, wallMilliseconds,
                 gpu != nullptr && gpu->measured ? gpu->milliseconds : 0.0, preset,
                 governed ? governor->reason : "off", governed ? governor->targetMilliseconds : 0.0);
-  out_ << row << history << "\n";
+  // The exposure the frame was shown with and what the meter read (exposure_control.h).
+  const float ev100 = world.ctx().get<engine::render::Exposure>().ev100;
+  char exposure[48];
+  std::snprintf(exposure, sizeof(exposure), ",%.4f,%.4f\n", ev100, meteredEv100(world));
+  out_ << row << history << exposure;
 }
 
 }  // namespace sample

@@ -13,8 +13,11 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
+#include <map>
 #include <memory>
 #include <ostream>
+#include <sstream>
 #include <string>
 #include <utility>
 #include <vector>
@@ -63,6 +66,33 @@ fs::path freshDir(const char* name) {
 
 std::string scene(const char* name) {
   return std::string(SAMPLE_TEST_DIR) + "/scenes/" + name;
+}
+
+// The frame series (--frame-series) by column name: each row's field, as written.
+std::map<std::string, std::vector<std::string>> readFrameSeries(const fs::path& file) {
+  const auto split = [](const std::string& line) {
+    std::vector<std::string> fields;
+    std::stringstream in(line);
+    for (std::string field; std::getline(in, field, ',');) fields.push_back(field);
+    return fields;
+  };
+  std::ifstream in(file);
+  std::string line;
+  std::map<std::string, std::vector<std::string>> columns;
+  if (!std::getline(in, line)) return columns;
+  const std::vector<std::string> names = split(line);
+  while (std::getline(in, line)) {
+    const std::vector<std::string> fields = split(line);
+    for (std::size_t i = 0; i < names.size(); ++i)
+      columns[names[i]].push_back(i < fields.size() ? fields[i] : "");
+  }
+  return columns;
+}
+
+std::vector<double> numbers(const std::vector<std::string>& fields) {
+  std::vector<double> values;
+  for (const std::string& f : fields) values.push_back(std::stod(f));
+  return values;
 }
 
 TEST(HeadlessCapture, WritesPngAndExrOfTheLastFrame) {
@@ -651,18 +681,11 @@ TEST(HeadlessCapture, APaintedMapBlendsIntoTheNextOnTheWeatherSchedule) {
   ASSERT_EQ(run(overcast, "overcast", "overcast.csv"), 0);
 
   // The history, frame by frame (the first frame has none to keep).
-  std::ifstream series(dir / "scheduled.csv");
-  std::string line;
-  std::getline(series, line);
-  ASSERT_EQ(line.substr(line.rfind(',') + 1), "clouds_history");
-  std::size_t frames = 0;
-  while (std::getline(series, line)) {
-    const std::string history = line.substr(line.rfind(',') + 1);
-    if (frames++ > 0) {
-      EXPECT_EQ(history, "reprojected") << "frame " << frames - 1;
-    }
+  const std::vector<std::string> history = readFrameSeries(dir / "scheduled.csv")["clouds_history"];
+  for (std::size_t frame = 1; frame < history.size(); ++frame) {
+    EXPECT_EQ(history[frame], "reprojected") << "frame " << frame;
   }
-  EXPECT_GE(frames, 240u);
+  EXPECT_GE(history.size(), 240u);
 
   // How far apart two captures are: the mean |difference| of their luminances over the mean.
   const auto apart = [&](const fs::path& a, const fs::path& b) {
@@ -1131,6 +1154,93 @@ TEST(HeadlessCapture, ShowsAUserSuppliedVdbCloudAhead) {
   EXPECT_NE(runSampleErrors("--headless --frames 1 --cloud " + broken.string())
                 .find(broken.string() + ": not a readable OpenVDB file"),
             std::string::npos);
+}
+
+// Runs a shipped scene (assets_src/scenes) at 30 fps, 160 x 90, with its frame series, and
+// returns the series' exposure columns: what the meter read and what the frame was shown with.
+struct ExposureSeries {
+  std::vector<double> metered;
+  std::vector<double> shown;
+};
+ExposureSeries flyForExposure(const fs::path& dir, const std::string& scenePath,
+                              const std::string& extra) {
+  fs::create_directories(dir);
+  const fs::path series = dir / "series.csv";
+  EXPECT_EQ(runSample("--headless --fixed-dt 0.0333333 --width 160 --height 90 --scene " +
+                      scenePath + " --frame-series " + series.string() + " " + extra),
+            0);
+  auto columns = readFrameSeries(series);
+  return {numbers(columns["metered_ev100"]), numbers(columns["ev100"])};
+}
+
+// Exposure that meters the clouds (game/exposure_control.h): the overcast scene, which was once
+// hand-exposed a stop brighter than the clear sky's meter read, needs no compensation. Its first
+// frame is metered before the clouds measured their sky, as the clear sky's meter reads it; from
+// then on the meter reads the overcast (the sky light under it and the sun through it at the
+// camera) and the exposure settles on that. Both readings are those of the photographers'
+// sunny-16 rule, EV100 = log2(N^2 x 100) at f/N: f/16 in sun (14.64), f/8 under an overcast
+// (12.64), each within 1 EV; the clear sky's meter is over 2 EV from the overcast's.
+TEST(HeadlessCapture, AnOvercastIsExposedForItsCloudsWithoutCompensation) {
+  const double sunny16 = std::log2(16.0 * 16.0 * 100.0);
+  const double overcastF8 = std::log2(8.0 * 8.0 * 100.0);
+  const std::string overcast = std::string(SAMPLE_ASSET_DIR) + "/scenes/overcast_stratus.json";
+  const ExposureSeries ev = flyForExposure(freshDir("overcast_exposure"), overcast, "--frames 90");
+  ASSERT_EQ(ev.metered.size(), 90u);
+  const double clearReading = ev.metered.front();
+  std::printf(
+      "overcast: the clear sky meters EV100 %.2f (sunny 16: %.2f), the clouds %.2f "
+      "(overcast, f/8: %.2f); shown at %.2f after 3 s\n",
+      clearReading, sunny16, ev.metered.back(), overcastF8, ev.shown.back());
+  EXPECT_NEAR(clearReading, sunny16, 1.0) << "the clear sky's meter, before the clouds' sky";
+  EXPECT_NEAR(ev.metered.back(), overcastF8, 1.0) << "the meter reads the overcast";
+  EXPECT_GT(std::abs(clearReading - overcastF8), 2.0) << "which the clear sky's meter does not";
+  EXPECT_NEAR(ev.shown.back(), ev.metered.back(), 0.2) << "the exposure follows the meter";
+}
+
+// Under broken cloud the meter reads the sun through the clouds at the camera, so a flight in
+// and out of their shadows moves the exposure, and the adaptation's time constant (0.5 s) keeps
+// it from flickering: over 10 s at 30 fps, flying at 300 m/s through the noon cumulus' shadows,
+// the meter swings by over a stop, and the exposure moves by no more than kMaxStepEv from one
+// frame to the next (1.5 EV a second: a third of a stop, a step the eye sees, takes at least 7
+// frames). The same flight adapted at once (time constant 0) steps by more: the bound can fail.
+TEST(HeadlessCapture, ExposureFollowsCloudShadowsWithoutFlicker) {
+  constexpr double kMaxStepEv = 0.05;
+  const fs::path dir = freshDir("exposure_flight");
+  fs::create_directories(dir);
+  std::ifstream in(std::string(SAMPLE_ASSET_DIR) + "/scenes/cumulus_noon.json");
+  const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  const std::string at = R"("mode": "auto")";
+  ASSERT_NE(text.find(at), std::string::npos);
+  for (const double tau : {0.5, 0.0}) {
+    std::string edited = text;
+    edited.replace(edited.find(at), at.size(),
+                   at + ", \"adaptationSeconds\": " + std::to_string(tau));
+    const fs::path scenePath = dir / ("cumulus_tau" + std::to_string(int(tau * 10)) + ".json");
+    std::ofstream(scenePath) << edited;
+    const ExposureSeries ev = flyForExposure(
+        dir / scenePath.stem(), scenePath.string(),
+        "--frames 300 --script " + std::string(SAMPLE_TEST_DIR) + "/scripts/shadow_flight.json");
+    ASSERT_EQ(ev.shown.size(), 300u);
+    // After the clouds' first measured sky (it comes from a completed frame, the third here; the
+    // meter's first readings, the clear sky's and then the first with the clouds, are each taken
+    // at once).
+    double lowest = 1e9, highest = -1e9, largestStep = 0.0;
+    for (std::size_t frame = 5; frame < ev.shown.size(); ++frame) {
+      lowest = std::min(lowest, ev.metered[frame]);
+      highest = std::max(highest, ev.metered[frame]);
+      largestStep = std::max(largestStep, std::abs(ev.shown[frame] - ev.shown[frame - 1]));
+    }
+    std::printf(
+        "time constant %.1f s: the meter read EV100 %.2f to %.2f, the largest step a frame "
+        "%.3f EV\n",
+        tau, lowest, highest, largestStep);
+    EXPECT_GT(highest - lowest, 1.0) << "the flight crossed the clouds' shadows";
+    if (tau > 0.0) {
+      EXPECT_LE(largestStep, kMaxStepEv) << "no flicker";
+    } else {
+      EXPECT_GT(largestStep, kMaxStepEv) << "the negative control: adapted at once, it steps";
+    }
+  }
 }
 
 TEST(HeadlessCapture, BadArgumentsAndScenesFailWithAMessage) {

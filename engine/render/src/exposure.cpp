@@ -28,12 +28,32 @@ float exposureScale(float ev100) {
 
 double horizontalIlluminanceKilolux(const glm::vec3& sunKilolux, double sunDirectionY,
                                     const SkyLight& sky) {
+  return horizontalIlluminanceKilolux(sunKilolux, sunDirectionY, sky, nullptr, 0.0);
+}
+
+double horizontalIlluminanceKilolux(const glm::vec3& sunKilolux, double sunDirectionY,
+                                    const SkyLight& clear, const CoveredSkyLight* covered,
+                                    double altitudeMetres) {
   // The sky's cosine-weighted mean radiance, times pi. For a sky mixed from horizon to zenith
   // by sqrt(sin(elevation)), as the sample's gradient sky is, that mean is exactly
   // 0.8 zenith + 0.2 horizon; for a measured sky it is an estimate from two of its regions.
-  const glm::dvec3 skyRadiance = 0.8 * glm::dvec3(sky.zenith) + 0.2 * glm::dvec3(sky.horizon);
+  glm::dvec3 skyOverPi = 0.8 * glm::dvec3(clear.zenith) + 0.2 * glm::dvec3(clear.horizon);
+  double sunShare = 1.0;
+  if (covered != nullptr) {
+    // Inside the cover the meter sees some of it above and some below: a linear blend by
+    // altitude, an approximation (the cover's own light around the meter is not measured).
+    const double span = std::max(covered->clearAboveMetres - covered->seenFromMetres, 1.0);
+    const double clearShare =
+        std::clamp((altitudeMetres - covered->seenFromMetres) / span, 0.0, 1.0);
+    skyOverPi = glm::mix(glm::dvec3(covered->irradianceOverPi), skyOverPi, clearShare);
+    // Under the cover, centre-weighted with the land around; above it, what the camera sees is
+    // lit as the camera is.
+    const double atCamera = std::clamp(double(covered->sunAtCamera), 0.0, 1.0);
+    const double around = std::clamp(double(covered->sunAround), 0.0, 1.0);
+    sunShare = std::lerp(0.5 * (atCamera + around), atCamera, clearShare);
+  }
   const glm::dvec3 total =
-      glm::dvec3(sunKilolux) * std::max(sunDirectionY, 0.0) + kPi * skyRadiance;
+      glm::dvec3(sunKilolux) * (std::max(sunDirectionY, 0.0) * sunShare) + kPi * skyOverPi;
   return luminance(total);
 }
 

@@ -21,8 +21,10 @@ float meteredEv100(ecs::World& world) {
     sun = render::sunIlluminanceAt(s, transmittance, altitude);
     sunUp = s.direction.y;
   });
+  // The sky as drawn, and as its cover makes it at the camera when an effect measures that.
   const render::SkyLight sky = world.ctx().get<render::SkyLight>();
-  const double kilolux = render::horizontalIlluminanceKilolux(sun, sunUp, sky);
+  const auto* covered = world.ctx().tryGet<render::CoveredSkyLight>();
+  const double kilolux = render::horizontalIlluminanceKilolux(sun, sunUp, sky, covered, altitude);
   return render::ev100FromIlluminance(kilolux * 1000.0);
 }
 
@@ -36,10 +38,12 @@ void installExposureControl(ecs::Scheduler& scheduler) {
         std::clamp(metered - exposure.compensationEv - render::dimLightCompensationEv(metered),
                    exposure.minEv100, exposure.maxEv100);
     const double dt = world.ctx().get<ecs::FrameTime>().deltaSeconds;
-    exposure.ev100 = exposure.adapted ? render::adaptEv100(exposure.ev100, target, dt,
-                                                           exposure.adaptationSeconds)
-                                      : target;
+    const bool covered = world.ctx().tryGet<render::CoveredSkyLight>() != nullptr;
+    const bool atOnce = !exposure.adapted || (covered && !exposure.meteredCovered);
+    exposure.ev100 =
+        atOnce ? target : render::adaptEv100(exposure.ev100, target, dt, exposure.adaptationSeconds);
     exposure.adapted = true;
+    exposure.meteredCovered = covered;
   });
 }
 

@@ -60,6 +60,42 @@ TEST(Exposure, HorizontalIlluminanceIsTheSunsCosineAndTheSkysMean) {
   EXPECT_NEAR(horizontalIlluminanceKilolux(glm::vec3(0.0f), 1.0, sky), integral, 1e-3);
 }
 
+// Under a cover (CoveredSkyLight): the sun through it at the camera and around it (their mean),
+// its measured sky below it, the clear sky above it and a linear blend by altitude inside it.
+TEST(Exposure, ACoveredSkyIsMeteredThroughItsCoverAndBlendsIntoTheClearSkyAboveIt) {
+  SkyLight clear;
+  clear.zenith = clear.horizon = glm::vec3(4.0f);  // pi x 4 = 12.57 klx from the sky
+  const glm::vec3 sun(100.0f);
+  const double clearKilolux = horizontalIlluminanceKilolux(sun, 1.0, clear);
+  ASSERT_NEAR(clearKilolux, 100.0 + 4.0 * 3.14159265358979, 1e-3);
+  CoveredSkyLight covered;
+  covered.irradianceOverPi = glm::vec3(1.0f);
+  covered.sunAtCamera = 0.1f;  // centre-weighted with the land around: a quarter of the sun
+  covered.sunAround = 0.4f;
+  covered.seenFromMetres = 1000.0;
+  covered.clearAboveMetres = 3000.0;
+  const double pi = 3.14159265358979;
+  EXPECT_NEAR(horizontalIlluminanceKilolux(sun, 1.0, clear, nullptr, 500.0), clearKilolux, 1e-9)
+      << "no cover: the clear sky's";
+  EXPECT_NEAR(horizontalIlluminanceKilolux(sun, 1.0, clear, &covered, 500.0), 25.0 + pi, 1e-3)
+      << "below the cover: the sun through it and the covered sky's measured irradiance";
+  EXPECT_NEAR(horizontalIlluminanceKilolux(sun, 1.0, clear, &covered, 1000.0), 25.0 + pi, 1e-3);
+  EXPECT_NEAR(horizontalIlluminanceKilolux(sun, 1.0, clear, &covered, 2000.0),
+              100.0 * (0.25 + 0.1) / 2.0 + 2.5 * pi, 1e-3)
+      << "halfway up the cover: halfway between its sky and the clear sky, and between the sun "
+         "centre-weighted and at the camera";
+  EXPECT_NEAR(horizontalIlluminanceKilolux(sun, 1.0, clear, &covered, 5000.0), 10.0 + 4.0 * pi,
+              1e-3)
+      << "above the cover: the clear sky and the sun as the cover lets it through at the camera";
+  covered.sunAtCamera = 1.0f;
+  covered.sunAround = 1.0f;
+  EXPECT_NEAR(horizontalIlluminanceKilolux(sun, 1.0, clear, &covered, 5000.0), clearKilolux, 1e-3);
+  covered.sunAtCamera = 7.0f;  // out of range: clamped to [0, 1]
+  EXPECT_NEAR(horizontalIlluminanceKilolux(sun, 1.0, clear, &covered, 5000.0), clearKilolux, 1e-3);
+  covered.clearAboveMetres = covered.seenFromMetres;  // no thickness: a step, not a division by 0
+  EXPECT_TRUE(std::isfinite(horizontalIlluminanceKilolux(sun, 1.0, clear, &covered, 1000.0)));
+}
+
 TEST(Exposure, AdaptationIsExponentialAndTakesZeroTimeConstantAtOnce) {
   EXPECT_FLOAT_EQ(adaptEv100(10.0f, 15.0f, 0.1, 0.0), 15.0f);
   EXPECT_NEAR(adaptEv100(10.0f, 15.0f, 0.5, 0.5), 15.0f - 5.0f * std::exp(-1.0f), 1e-5f);

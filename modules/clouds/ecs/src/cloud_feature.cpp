@@ -165,6 +165,11 @@ void CloudFeature::publishSkyLight(const clouds::SkyLighting& measured) {
   covered.light.zenith = measured.zenith;
   covered.light.horizon = measured.horizon;
   covered.light.ground = measured.lower;
+  covered.irradianceOverPi = measured.upperIrradianceOverPi;
+  covered.sunAtCamera = measured.sunTransmittanceAtCamera;
+  covered.sunAround = measured.sunlitShareAround;
+  covered.seenFromMetres = measured.seenFromAltitudeMetres;
+  covered.clearAboveMetres = measured.coverTopMetres;
   world_.ctx().emplaceOrReplace<CoveredSkyLight>(covered);
 }
 

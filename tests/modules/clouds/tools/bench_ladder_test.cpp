@@ -92,7 +92,7 @@ TEST(BenchLadder, AGovernedFlightIsSummarisedAfterItsWarmUp) {
 }
 
 // The sample's series since the clouds' history became a column read the same (older ones have
-// none).
+// none), and so do those with the exposure after it; a header of something else is refused.
 TEST(BenchLadder, ASeriesWithTheCloudsHistoryReadsTheSame) {
   std::string csv = "frame,seconds,wall_ms,gpu_ms,cloud_preset,governor,target_ms,clouds_history\n";
   for (int i = 1; i <= 40; ++i) {
@@ -111,6 +111,25 @@ TEST(BenchLadder, ASeriesWithTheCloudsHistoryReadsTheSame) {
   } catch (const engine::Error& e) {
     EXPECT_NE(std::string(e.what()).find("history_short.csv:2: 8 fields"), std::string::npos)
         << e.what();
+  }
+  std::string withExposure =
+      "frame,seconds,wall_ms,gpu_ms,cloud_preset,governor,target_ms,clouds_history,ev100,"
+      "metered_ev100\n";
+  for (int i = 1; i <= 40; ++i) {
+    withExposure += std::to_string(i) + "," + std::to_string(0.05 * i) +
+                    ",30.0,20.0,Medium,holding,33.3,reprojected,14.1,14.3\n";
+  }
+  EXPECT_EQ(bench::readGovernedFlight(writeSeries("exposure.csv", withExposure)).frames, 40u);
+  for (const char* header : {"frame,seconds,wall_ms,gpu_ms,cloud_preset,governor,target_msx\n",
+                             "wall_ms,frame,seconds\n"}) {
+    try {
+      bench::readGovernedFlight(writeSeries("other_header.csv", header));
+      ADD_FAILURE() << "read a series whose header is " << header;
+    } catch (const engine::Error& e) {
+      EXPECT_NE(std::string(e.what()).find("other_header.csv:1: the header does not start with"),
+                std::string::npos)
+          << e.what();
+    }
   }
 }
 

@@ -8,8 +8,10 @@
 // Auto-exposure meters as an incident-light meter held at the camera, facing up: it reads the
 // illuminance the sun (through the air) and the sky put on a horizontal surface and sets
 // EV100 = log2(E * 100 / C) with the meter calibration C = 250 lx s (ISO 2720), plus the
-// compensation. Noon sunlight (about 100 klx) meters EV100 15, the photographers' "sunny 16";
-// an overcast scene meters what its sky and sun give; what hides the sun locally is unseen.
+// compensation. Noon sunlight (about 100 klx) meters EV100 15, the photographers' "sunny 16".
+// With a CoveredSkyLight (an effect's cover over the sky) the meter reads the covered sky and
+// the sun through the cover at the camera: under an overcast it reads the overcast, and in the
+// cover's shadow the shade; without one, the clear sky and the sun through the air alone.
 // Below daylight the meter is trusted less and less (dimLightCompensationEv): an incident
 // reading of a twilight sky alone would expose it to near white, where the eye (and a
 // photographer) sees dusk as dusk. The result adapts towards the metered value exponentially,
@@ -19,6 +21,7 @@
 namespace engine::render {
 
 struct SkyLight;
+struct CoveredSkyLight;
 
 // Context singleton: the exposure the tonemap applies.
 struct Exposure {
@@ -30,6 +33,10 @@ struct Exposure {
   float minEv100 = -2.0f;          // Auto: the metered value is clamped to these
   float maxEv100 = 17.0f;
   bool adapted = false;  // Auto: false until the first metered value, which is taken at once
+  // Auto: the last value was metered under a CoveredSkyLight. The cover is measured from
+  // completed frames, so it arrives a frame or two after the first: its first reading is taken
+  // at once too, and the first frames of a scene are not seen adapting from the clear sky's.
+  bool meteredCovered = false;
 };
 
 // EV100 an incident-light meter (C = 250) reads under `lux`; lux <= 0 reads as 1e-3 lx.
@@ -46,6 +53,16 @@ float exposureScale(float ev100);
 // the luminance of the RGB sum.
 double horizontalIlluminanceKilolux(const glm::vec3& sunKilolux, double sunDirectionY,
                                     const SkyLight& sky);
+// The same at `altitudeMetres` under a covered sky: below the cover the sun is centre-weighted,
+// times the mean of the cover's sunAtCamera and sunAround (a meter in a cloud's shadow, with the
+// land in view sunlit, reads half way: the camera's spot alone would expose the view for the
+// shade and wash out all it sees in the sun), and the sky is its measured irradianceOverPi;
+// both blend linearly by altitude into sunAtCamera alone and `clear`'s sky at clearAboveMetres
+// and above (what a camera above the cover sees is lit as it is). `covered` null: the clear
+// sky's.
+double horizontalIlluminanceKilolux(const glm::vec3& sunKilolux, double sunDirectionY,
+                                    const SkyLight& clear, const CoveredSkyLight* covered,
+                                    double altitudeMetres);
 // `current` moved towards `target` over `dtSeconds` with time constant `tauSeconds`.
 float adaptEv100(float current, float target, double dtSeconds, double tauSeconds);
 

@@ -72,9 +72,20 @@ struct SkyLight {
 // Context singleton: the sky light as the scene's weather makes it, the drawn sky with what
 // covers it: the same regions and units as SkyLight, measured by the effect that renders the
 // cover. It lights the scene's ambient in SkyLight's place (SkyLight stays what the sky is
-// drawn with); absent, SkyLight lights it.
+// drawn with); absent, SkyLight lights it. Seen from under the cover: a viewer above it sees
+// SkyLight's clear sky, and one inside it something between (an exposure meter blends them by
+// altitude, exposure.h).
 struct CoveredSkyLight {
   SkyLight light;
+  // A horizontal surface's irradiance / pi under the cover (kcd/m^2, RGB): the cosine-weighted
+  // mean of the covered sky, measured whole, not estimated from its regions.
+  glm::vec3 irradianceOverPi{0.0f};
+  // The share of the sun's light, past the air (SunTransmittance), that the cover lets through
+  // to the camera, and the share of the ground around the camera in the sun, in [0, 1].
+  float sunAtCamera = 1.0f;
+  float sunAround = 1.0f;
+  double seenFromMetres = 0.0;    // the altitude the covered sky was seen from
+  double clearAboveMetres = 0.0;  // above this altitude nothing covers the sky
 };
 
 // Context singleton: the Lambertian albedo of the scene's ground at large (RGB, [0, 1]), for
