@@ -152,11 +152,11 @@ const uint kSkyAmbientUniforms = 0u;
 const uint kSkyAmbientSky = 1u;        // the host's sky image (a placeholder without one)
 const uint kSkyAmbientShadowMap = 2u;  // the cloud shadow map (a placeholder without one)
 // sky_light.comp (reads the uniforms as a uniform block at kBindingUniforms)
-const uint kSkyLightHostSky = 1u;    // the host's sky image
-const uint kSkyLightClouds = 2u;     // the clouds marched towards the upper half's texels
-const uint kSkyLightShadowMap = 3u;  // the cloud shadow map (a placeholder without one)
-const uint kSkyLightMap = 4u;        // the map made (RGBA16F)
-const uint kSkyLightMeasures = 5u;   // SkyLightMeasures (storage buffer, read by the host)
+const uint kSkyLightHostSky = 1u;           // the host's sky image
+const uint kSkyLightClouds = 2u;            // the clouds marched towards the upper half's texels
+const uint kSkyLightShadowMap = 3u;         // the cloud shadow map (a placeholder without one)
+const uint kSkyLightMap = 4u;               // the map made (RGBA16F)
+const uint kSkyLightMeasures = 5u;          // SkyLightMeasures (storage buffer, read by the host)
 const uint kSkyLightShadowParameters = 6u;  // the shadow map's MarchShadowMap (uniform block)
 // noise_*.comp, hero_noise*.comp and weather_procedural.comp: the texture they generate
 // (noise_mip.comp, hero_noise_mip.comp: the 3D noise whose mip chain they complete)

@@ -41,7 +41,8 @@ void installExposureControl(ecs::Scheduler& scheduler) {
     const bool covered = world.ctx().tryGet<render::CoveredSkyLight>() != nullptr;
     const bool atOnce = !exposure.adapted || (covered && !exposure.meteredCovered);
     exposure.ev100 =
-        atOnce ? target : render::adaptEv100(exposure.ev100, target, dt, exposure.adaptationSeconds);
+        atOnce ? target
+               : render::adaptEv100(exposure.ev100, target, dt, exposure.adaptationSeconds);
     exposure.adapted = true;
     exposure.meteredCovered = covered;
   });

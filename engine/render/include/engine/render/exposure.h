@@ -54,7 +54,7 @@ float exposureScale(float ev100);
 double horizontalIlluminanceKilolux(const glm::vec3& sunKilolux, double sunDirectionY,
                                     const SkyLight& sky);
 // The same at `altitudeMetres` under a covered sky: below the cover the sun is centre-weighted,
-// times the mean of the cover's sunAtCamera and sunAround (a meter in a cloud's shadow, with the
+// times the mean of the cover's sunAtCamera and sunAround (a meter in the cover's shadow, with the
 // land in view sunlit, reads half way: the camera's spot alone would expose the view for the
 // shade and wash out all it sees in the sun), and the sky is its measured irradianceOverPi;
 // both blend linearly by altitude into sunAtCamera alone and `clear`'s sky at clearAboveMetres
