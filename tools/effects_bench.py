@@ -1,10 +1,10 @@
 #!/usr/bin/env python3
 """What each effect of the sample's default scene costs, through the real frame graph.
 
-For each effect (terrain, clouds, atmosphere, cloud shadows, terrain shadows, god rays) the
-default scene is rendered with everything and without that effect, headless at 640x360 and
-Medium, runs interleaved round by round so that drift of the machine's speed spreads over all
-of them. Reported per effect: the frame's GPU time with and without (sums of the per-pass
+For each effect (terrain, clouds, atmosphere, cloud shadows, terrain shadows, god rays, the
+clouds' sky light that lights the ambient and the exposure meter) the default scene is
+rendered with everything and without that effect, headless at 640x360 and Medium, runs
+interleaved round by round so that drift of the machine's speed spreads over all of them. Reported per effect: the frame's GPU time with and without (sums of the per-pass
 GPU-timestamp medians the sample prints), the effect's cost as the median of the paired
 differences, and what the scene without it lacks exactly: frame-graph passes, pipelines (as
 --describe lists them) and GPU memory (as the sample reports it at exit).
@@ -51,6 +51,7 @@ EFFECTS = [
     ("cloud shadows", without("clouds", "shadows", False)),
     ("terrain shadows", without("terrain", "castsShadows", False)),
     ("god rays", without("clouds", "godRays", False)),
+    ("cloud sky light", without("clouds", "skyLight", False)),
 ]
 # The default scene's opening flight looks away from the sun, where god rays cost only a clear:
 # also measured looking into the sun through broken cumulus (the sample's god-ray test scene).

@@ -20,7 +20,8 @@ function(expect_in_report pattern what)
   endif()
 endfunction()
 foreach(row "| terrain |" "| clouds |" "| atmosphere |" "| cloud shadows |"
-            "| terrain shadows |" "| god rays |" "| god rays, sun in view |" "| lightning |"
+            "| terrain shadows |" "| god rays |" "| god rays, sun in view |" "| cloud sky light |"
+            "| lightning |"
             "| lightning, a flash always active |" "| weather regions (the storm front) |"
             "| a change of weather (its middle, against that weather held) |")
   string(FIND "${report}" "${row}" at)
@@ -30,6 +31,8 @@ foreach(row "| terrain |" "| clouds |" "| atmosphere |" "| cloud shadows |"
 endforeach()
 expect_in_report("\\| god rays \\|[^\n]*\\| clouds module: god rays \\| 0\\.[0-9]+ \\|"
                  "the god rays' row does not name their pipelines and memory")
+expect_in_report("\\| cloud sky light \\|[^\n]*clouds module: sky light[^\n]*\\| 0\\.[0-9]+ \\|"
+                 "the sky light's row does not name its pipeline and memory")
 expect_in_report("\\| lightning, a flash always active \\|[^\n]*clouds module: lightning"
                  "the lightning's row does not name its pipelines")
 # The regions' code is in their own pipeline variant; a change of weather adds no pass or

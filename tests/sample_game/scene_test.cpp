@@ -62,6 +62,10 @@ TEST(Scenes, ValuesArriveInTheDescription) {
   EXPECT_FLOAT_EQ(s.clouds->settings.coverage, 0.3f);
   EXPECT_FLOAT_EQ(s.clouds->settings.windSpeedMetresPerSecond, 20.0f);
   EXPECT_NEAR(s.clouds->settings.windDirection.y, -1.0f, 1e-6f);  // 90 degrees: towards -Z
+  EXPECT_TRUE(s.clouds->settings.skyLight) << "the clouds light the world's ambient by default";
+  const sample::SceneDescription unlit = loadSceneDescription(writeScene("unlit.json", R"({
+    "name": "u", "camera": {"position": [0, 10, 0]}, "clouds": {"skyLight": false}})"));
+  EXPECT_FALSE(unlit.clouds->settings.skyLight);
   EXPECT_FALSE(s.terrain.has_value());
   EXPECT_EQ(s.camera.cloudQuality, clouds::Quality::Medium) << "the default preset";
   const sample::SceneDescription ultra = loadSceneDescription(writeScene("quality.json", R"({
@@ -106,6 +110,7 @@ TEST(Scenes, EveryShippedSceneWrittenBackLoadsTheSame) {
       EXPECT_EQ(loaded.clouds->settings.windDirection, original.clouds->settings.windDirection);
       EXPECT_EQ(loaded.clouds->settings.shadowCascades, original.clouds->settings.shadowCascades);
       EXPECT_EQ(loaded.clouds->settings.godRaySamples, original.clouds->settings.godRaySamples);
+      EXPECT_EQ(loaded.clouds->settings.skyLight, original.clouds->settings.skyLight);
       EXPECT_EQ(loaded.clouds->heroClouds.size(), original.clouds->heroClouds.size());
     }
     if (original.atmosphere) {

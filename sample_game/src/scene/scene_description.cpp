@@ -154,6 +154,9 @@ CloudDescription readClouds(const JsonReader& r, const std::filesystem::path& sc
   // Whether the layer makes god rays (its mask, and the composite's shafts in the haze): off,
   // no pass, mask or pipeline. The quality preset picks the samples.
   if (r.boolean("godRays", false)) s.godRaySamples = kSceneGodRaySamples;
+  // Whether the world's ambient and exposure meter see the sky with the layer in it (the sky
+  // light, with an atmosphere's sky): off, no pass, map or pipeline, and the clear sky lights.
+  s.skyLight = r.boolean("skyLight", true);
   c.noiseSeed = static_cast<std::uint32_t>(r.integer("noiseSeed", 0, 0xffffffffLL, c.noiseSeed));
   if (r.has("weatherMap")) c.weatherMap = r.existingFile("weatherMap", sceneDir);
   if (r.has("heroClouds")) {

@@ -117,6 +117,7 @@ json cloudsJson(const CloudDescription& c) {
               {"sunStrength", double(s.sunStrength)}}},
             {"shadows", s.shadowCascades > 0},
             {"godRays", s.godRaySamples > 0},
+            {"skyLight", s.skyLight},
             {"noiseSeed", c.noiseSeed},
             {"heroDetail", s.heroDetail == clouds::HeroDetail::Off ? "off" : "uprezzed"}};
   if (c.weatherMap) j["weatherMap"] = absolutePath(*c.weatherMap);

@@ -150,9 +150,10 @@ clouds::Settings CloudFeature::forTheEngine(clouds::Settings settings) const {
   // The engine's passes read the clouds' radiance only (addPasses() hands on no depth): the
   // module need not store its depth output (a quarter of its upsample on lavapipe).
   settings.depthOutput = false;
-  // The scene's ambient is lit by the sky with its clouds (CoveredSkyLight) when the frame graph
-  // has a drawn sky to lay them over; a scene without one pays nothing for it.
-  settings.skyLight = skyOnGraph_;
+  // The scene's ambient is lit by the sky with its clouds (CoveredSkyLight) when the layer asks
+  // for it and the frame graph has a drawn sky to lay them over; a scene without one pays
+  // nothing for it.
+  settings.skyLight = settings.skyLight && skyOnGraph_;
   return settings;
 }
 
@@ -284,7 +285,9 @@ std::vector<std::string> CloudFeature::effects() const {
   if (hasHeroClouds_) names.emplace_back("hero clouds");
   if (settings_.weatherRegions > 0) names.emplace_back("weather regions");
   if (settings_.superstorms > 0) names.emplace_back("superstorm");
-  if (skyOnGraph_) names.emplace_back("sky light");
+  // As forTheEngine() decides it (settings_ is the last prepared frame's: none yet before the
+  // first frame, when a description is printed).
+  if (skyOnGraph_ && cloudSettings(world_).skyLight) names.emplace_back("sky light");
   return names;
 }
 
