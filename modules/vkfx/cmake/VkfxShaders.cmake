@@ -13,7 +13,7 @@
 # and glslangValidator prints it as `ERROR: <file>:<line>: <message>`. No .spv is committed.
 # Included headers are tracked through glslangValidator's depfile.
 #
-# Between the compiler and the header, spirv-opt optimises the SPIR-V (VKFX_SPIRV_PASSES: its -O recipe less
+# Between the compiler and the header, spirv-opt optimises the SPIR-V (its -O recipe less
 # merge-blocks; no fast-math, so results are unchanged). Drivers that optimise each pipeline
 # from scratch pay for unoptimised SPIR-V at every pipeline creation: on Mesa 22.3's lavapipe the
 # clouds' march variant took 1.8 s to create from glslang's plain output and 0.33 s from the
@@ -26,21 +26,6 @@ endif()
 if(NOT SPIRV_OPT)
   find_program(SPIRV_OPT spirv-opt REQUIRED)
 endif()
-set(VKFX_SPIRV_PASSES
-    --wrap-opkill --eliminate-dead-branches --merge-return --inline-entry-points-exhaustive
-    --eliminate-dead-functions --eliminate-dead-code-aggressive --private-to-local
-    --eliminate-local-single-block --eliminate-local-single-store --eliminate-dead-code-aggressive
-    --scalar-replacement --convert-local-access-chains --eliminate-local-single-block
-    --eliminate-local-single-store --eliminate-dead-code-aggressive --ssa-rewrite
-    --eliminate-dead-code-aggressive --ccp --eliminate-dead-code-aggressive --loop-unroll
-    --eliminate-dead-branches --redundancy-elimination --combine-access-chains
-    --simplify-instructions --scalar-replacement --convert-local-access-chains
-    --eliminate-local-single-block --eliminate-local-single-store --eliminate-dead-code-aggressive
-    --ssa-rewrite --eliminate-dead-code-aggressive --vector-dce --eliminate-dead-inserts
-    --eliminate-dead-branches --simplify-instructions --if-conversion --copy-propagate-arrays
-    --reduce-load-size --eliminate-dead-code-aggressive --redundancy-elimination
-    --eliminate-dead-branches --simplify-instructions
-    CACHE STRING "spirv-opt's passes over the effect modules' shaders")
 
 function(vkfx_embed_shaders target)
   cmake_parse_arguments(ARG "" "NAMESPACE;TARGET_ENV" "SOURCES;INCLUDE_DIRS" ${ARGN})
@@ -52,6 +37,21 @@ function(vkfx_embed_shaders target)
   endif()
   set(out_root ${CMAKE_CURRENT_BINARY_DIR}/shaders)
   set(embed_script ${CMAKE_CURRENT_FUNCTION_LIST_DIR}/VkfxEmbedSpirv.cmake)
+  # spirv-opt's -O recipe (SPIRV-Tools 2023.1) less merge-blocks: see the top of this file.
+  set(spirv_passes
+      --wrap-opkill --eliminate-dead-branches --merge-return --inline-entry-points-exhaustive
+      --eliminate-dead-functions --eliminate-dead-code-aggressive --private-to-local
+      --eliminate-local-single-block --eliminate-local-single-store --eliminate-dead-code-aggressive
+      --scalar-replacement --convert-local-access-chains --eliminate-local-single-block
+      --eliminate-local-single-store --eliminate-dead-code-aggressive --ssa-rewrite
+      --eliminate-dead-code-aggressive --ccp --eliminate-dead-code-aggressive --loop-unroll
+      --eliminate-dead-branches --redundancy-elimination --combine-access-chains
+      --simplify-instructions --scalar-replacement --convert-local-access-chains
+      --eliminate-local-single-block --eliminate-local-single-store --eliminate-dead-code-aggressive
+      --ssa-rewrite --eliminate-dead-code-aggressive --vector-dce --eliminate-dead-inserts
+      --eliminate-dead-branches --simplify-instructions --if-conversion --copy-propagate-arrays
+      --reduce-load-size --eliminate-dead-code-aggressive --redundancy-elimination
+      --eliminate-dead-branches --simplify-instructions)
   set(out_dir ${out_root}/${ARG_NAMESPACE})
   file(MAKE_DIRECTORY ${out_dir})
   # The contracts' headers (fxcontracts/shader_interop.h and the host-facing contracts),
@@ -86,7 +86,7 @@ function(vkfx_embed_shaders target)
       VERBATIM)
     add_custom_command(
       OUTPUT ${words}
-      COMMAND ${SPIRV_OPT} ${VKFX_SPIRV_PASSES} --target-env=${ARG_TARGET_ENV} ${plain}
+      COMMAND ${SPIRV_OPT} ${spirv_passes} --target-env=${ARG_TARGET_ENV} ${plain}
               -o ${optimised}
       COMMAND ${CMAKE_COMMAND} -DSPIRV=${optimised} -DOUTPUT=${words} -DSYMBOL=${symbol}
               -P ${embed_script}
