@@ -68,6 +68,12 @@ std::string scene(const char* name) {
   return std::string(SAMPLE_TEST_DIR) + "/scenes/" + name;
 }
 
+// The text of a shipped scene (assets_src/scenes/<name>), for a test to edit.
+std::string shippedSceneText(const char* name) {
+  std::ifstream in(fs::path(SAMPLE_ASSET_DIR) / "scenes" / name);
+  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+}
+
 // The frame series (--frame-series) by column name: each row's field, as written.
 std::map<std::string, std::vector<std::string>> readFrameSeries(const fs::path& file) {
   const auto split = [](const std::string& line) {
@@ -1034,11 +1040,7 @@ TEST(HeadlessCapture, EditingTheSceneFileWhileItRunsAppliesIt) {
   const fs::path dir = freshDir("hot_reload");
   fs::create_directories(dir);
   const fs::path scene = dir / "scene.json";
-  std::string text;
-  {
-    std::ifstream in(fs::path(SAMPLE_ASSET_DIR) / "scenes" / "default.json");
-    text.assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
-  }
+  std::string text = shippedSceneText("default.json");
   std::ofstream(scene) << text;
   const auto rewrite = [&](const std::string& content) {
     std::ofstream(dir / "next.json") << content;
@@ -1209,8 +1211,7 @@ TEST(HeadlessCapture, UnderAClearSkyTheCloudsSkyLightIsTheClearSkys) {
   constexpr double kMaxPixelDifference = 0.01;  // relative, in the scene-referred capture
   const fs::path dir = freshDir("clear_sky_light");
   fs::create_directories(dir);
-  std::ifstream in(std::string(SAMPLE_ASSET_DIR) + "/scenes/default.json");
-  const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  const std::string text = shippedSceneText("default.json");
   const std::string coverage = R"("coverage": 0.6)";
   ASSERT_NE(text.find(coverage), std::string::npos);
   std::map<bool, ExposureSeries> series;
@@ -1253,8 +1254,7 @@ TEST(HeadlessCapture, ExposureFollowsCloudShadowsWithoutFlicker) {
   constexpr double kMaxStepEv = 0.05;
   const fs::path dir = freshDir("exposure_flight");
   fs::create_directories(dir);
-  std::ifstream in(std::string(SAMPLE_ASSET_DIR) + "/scenes/cumulus_noon.json");
-  const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  const std::string text = shippedSceneText("cumulus_noon.json");
   const std::string at = R"("mode": "auto")";
   ASSERT_NE(text.find(at), std::string::npos);
   for (const double tau : {0.5, 0.0}) {
