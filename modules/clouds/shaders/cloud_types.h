@@ -149,8 +149,9 @@ const uint kGodRayUniforms = 3u;   // GodRayLightUniforms (uniform block)
 const uint kGodRayLightOut = 4u;   // RGBA16F: what the composite adds to a sky pixel
 // sky_ambient.comp (reads and writes the uniforms as a storage buffer)
 const uint kSkyAmbientUniforms = 0u;
-const uint kSkyAmbientSky = 1u;        // the host's sky image (a placeholder without one)
-const uint kSkyAmbientShadowMap = 2u;  // the cloud shadow map (a placeholder without one)
+const uint kSkyAmbientSky = 1u;           // the host's sky image (a placeholder without one)
+const uint kSkyAmbientShadowMap = 2u;     // the cloud shadow map (a placeholder without one)
+const uint kSkyAmbientLastSkyLight = 3u;  // the last frame's SkyLightMeasures, or a placeholder
 // sky_light.comp (reads the uniforms as a uniform block at kBindingUniforms)
 const uint kSkyLightHostSky = 1u;           // the host's sky image
 const uint kSkyLightClouds = 2u;            // the clouds marched towards the upper half's texels
@@ -443,6 +444,7 @@ struct CloudUniforms {
 const uint kAmbientFromSkyImage = 1u;  // the sky image replaces ambientTop and ambientBottom
 const uint kAmbientGroundLight = 2u;   // bases see the ground (groundAlbedo)
 const uint kAmbientGroundShadow = 4u;  // ... in the clouds' shadow (the shadow map's mean)
+const uint kAmbientFromSkyLight = 8u;  // bases see the last frame's sky light (the clouds in it)
 struct AmbientConstants {
   vec3 groundAlbedo;    // Lambertian, [0, 1] per channel
   uint flags;           // kAmbient* bits

@@ -20,6 +20,9 @@ layout(binding = kSkyAmbientSky) uniform sampler2D sky;
 #include "fxcontracts/cloud_shadow_sampled.glsl"
 #include "cloud_ground_sunlit.glsl"
 layout(push_constant) uniform Constants { AmbientConstants constants; };
+layout(binding = kSkyAmbientLastSkyLight, std430) readonly buffer LastSkyLight {
+  SkyLightMeasures lastSkyLight;
+};
 
 // Reduced over the lanes: the sky's upper hemisphere (rgb, weight), its horizon band (rgb,
 // count) and the ground's sunlit share (sum in x, count in y).
@@ -36,6 +39,9 @@ void main() {
   vec2 sunlit = vec2(0.0f);
   // kSkyAmbientLanes x kSkyAmbientSamples (64 x 16): a stratified 32 x 32 grid over azimuth
   // and elevation, and over the shadow map's finest cascade.
+  // The horizon band reads no lower than the upper half's last row of texels: the linear filter
+  // would blend the ground's first row into the band's lowest samples.
+  const float lowestSkyV = 0.5f - 0.5f / float(textureSize(sky, 0).y);
   for (uint k = 0u; k < kSkyAmbientSamples; ++k) {
     const uint index = lane * kSkyAmbientSamples + k;
     const vec2 cell = (vec2(float(index % 32u), float(index / 32u)) + 0.5f) / 32.0f;
@@ -44,7 +50,7 @@ void main() {
       const float weight = sin(elevation) * cos(elevation);  // cos(zenith) dOmega
       const vec3 radiance = textureLod(sky, vec2(cell.x, 0.5f - elevation / kPi), 0.0f).rgb;
       top += vec4(radiance * weight, weight);
-      const vec2 band = vec2(cell.x, 0.5f - (cell.y * 10.0f / 180.0f));
+      const vec2 band = vec2(cell.x, min(0.5f - (cell.y * 10.0f / 180.0f), lowestSkyV));
       bottom += vec4(textureLod(sky, band, 0.0f).rgb, 1.0f);
     }
     if (fromShadow) {
@@ -68,10 +74,16 @@ void main() {
     u.ambientTop = topSum[0].rgb / max(topSum[0].w, 1e-6f);
     u.ambientBottom = bottomSum[0].rgb / max(bottomSum[0].w, 1e-6f);
   }
+  // What lights the ground under the clouds, and the horizon band above it.
+  vec3 groundSky = u.ambientTop;
+  if ((constants.flags & kAmbientFromSkyLight) != 0u) {
+    groundSky = lastSkyLight.upperIrradianceOverPi.rgb;
+    u.ambientBottom = lastSkyLight.horizon.rgb;
+  }
   if ((constants.flags & kAmbientGroundLight) != 0u) {
     // Without the shadow map the ground is taken as all sunlit.
     const float sunlitShare = fromShadow ? sunlitSum[0].x / max(sunlitSum[0].y, 1.0f) : 1.0f;
-    u.ambientBottom = groundLitBaseRadiance(u.ambientBottom, u.ambientTop, constants.groundAlbedo,
+    u.ambientBottom = groundLitBaseRadiance(u.ambientBottom, groundSky, constants.groundAlbedo,
                                             u.sunIlluminance, u.sunDirection.y, sunlitShare);
   }
 }

@@ -306,17 +306,29 @@ void Context::Impl::recordSkyAmbient(VkCommandBuffer cmd, const FrameInputs& inp
   const auto& fn = device_.fn();
   const bool hasSky = inputs.skyView != VK_NULL_HANDLE;
   const bool groundShadow = inputs.groundAlbedo && shadowMapMade;
+  // The last frame's sky light lights what cloud bases see, unless the camera cut since (it saw
+  // another place) or the last frame made none.
+  const Slot& last = slots_[(inputs.frameIndex + slots_.size() - 1) % slots_.size()];
+  const bool fromSkyLight = settings.skyLight && !inputs.reset && inputs.frameIndex > 0 &&
+                            last.skyLightFrame == inputs.frameIndex - 1;
   shader::AmbientConstants constants{};
   constants.groundAlbedo = inputs.groundAlbedo.value_or(glm::vec3(0.0f));
   constants.flags = (hasSky ? shader::kAmbientFromSkyImage : 0u) |
                     (inputs.groundAlbedo ? shader::kAmbientGroundLight : 0u) |
-                    (groundShadow ? shader::kAmbientGroundShadow : 0u);
+                    (groundShadow ? shader::kAmbientGroundShadow : 0u) |
+                    (fromSkyLight ? shader::kAmbientFromSkyLight : 0u);
   constants.shadowCascades = settings.shadowCascades;
   constants.shadowTexels = settings.shadowMapResolution;
   // Without a sky image or a shadow map, a placeholder fills the binding the shader skips.
   const VkImageView placeholder = images_.depthPlaceholder.view();
   constexpr VkImageLayout kPlaceholderLayout = VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL;
   beginPass(cmd, detail::Pass::SkyAmbient, "clouds: sky ambient");
+  // The last frame's measures were written by its sky light pass, earlier on the queue.
+  if (fromSkyLight) {
+    detail::memoryBarrier(device_, cmd, kCompute, kStorageWrite, kCompute, kStorageRead);
+  }
+  const VkBuffer lastMeasures =
+      fromSkyLight ? last.skyLightMeasures.buffer() : slot.uniforms.buffer();
   detail::SetWriter(device_, slot.skyAmbient)
       .storageBuffer(shader::kSkyAmbientUniforms, slot.uniforms.buffer(),
                      sizeof(shader::CloudUniforms))
@@ -325,6 +337,8 @@ void Context::Impl::recordSkyAmbient(VkCommandBuffer cmd, const FrameInputs& inp
       .sampledImage(
           shader::kSkyAmbientShadowMap, groundShadow ? images_.shadowMap.view() : placeholder,
           clampedLinearSampler_.get(), groundShadow ? VK_IMAGE_LAYOUT_GENERAL : kPlaceholderLayout)
+      .storageBuffer(shader::kSkyAmbientLastSkyLight, lastMeasures,
+                     sizeof(shader::SkyLightMeasures))
       .commit();
   const detail::ComputeProgram& program = programs_[Program::SkyAmbient];
   fn.vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, program.find());

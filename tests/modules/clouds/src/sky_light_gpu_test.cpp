@@ -4,9 +4,10 @@
 // clouds the CPU reference marches towards each texel, and its irradiance (pi x
 // upperIrradianceOverPi) the CPU's integral of that, greyer than the clear sky's and, without the
 // sun, darker than the clear sky and the sun together; the ground below is lit by it; each frame
-// marches a quarter of its clouds; for an exposure meter, the sun at the camera is the shadow
-// map's there; hard cases stay finite; without the host's sky it is refused by name, and off it
-// costs no pass and no memory. Validation-clean.
+// marches a quarter of its clouds; what cloud bases see below them is lit by the last frame's
+// map (darker under an overcast, as before under a clear sky); for an exposure meter, the sun
+// at the camera is the shadow map's there; hard cases stay finite; without the host's sky it is
+// refused by name, and off it costs no pass and no memory. Validation-clean.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -17,6 +18,7 @@
 
 #include "cloud_gpu_fixture.h"
 #include "cloud_harness.h"
+#include "cloud_lighting.h"
 #include "cpu_reference.h"
 #include "engine/gfx/upload.h"
 #include "gpu_test.h"
@@ -400,6 +402,93 @@ TEST_F(SkyLight, TheSunAtTheCameraIsTheShadowMapsThere) {
         << (s.coverage == 0.0f ? "a clear sky" : "no shadow map");
     EXPECT_EQ(measures.sunlitShareAround, 1.0f);
   }
+}
+
+// What cloud bases see below them (ambientBottom): with the sky light, the ground lit by the
+// last frame's map (its irradiance, and the sun on the share of the ground in it) and the map's
+// horizon band, in place of the clear sky's. `first`: the last frame's map; `now`: this frame's
+// (the share in the sun is this frame's).
+glm::vec3 bottomLitBy(const glm::vec3& horizon, const glm::vec3& sky, const glm::vec3& albedo,
+                      const clouds::shader::CloudUniforms& u, const SkyLightImage& now) {
+  return clouds::shader::groundLitBaseRadiance(horizon, sky, albedo, u.sunIlluminance,
+                                               u.sunDirection.y, now.measures.sunlitShareAround);
+}
+
+// Under an overcast, the ground is lit by the overcast, not by the clear sky above it: the next
+// frame's march is the CPU reference's with its bases lit so, and not the CPU's with the clear
+// sky's light (what the clouds had without the sky light). That light is greyer; it need not be
+// darker: a sunlit deck may send more light down than the blue sky it hides (the sun itself is
+// hidden from the ground in both).
+TEST_F(SkyLight, UnderAnOvercastTheBasesSeeTheGroundTheOvercastLights) {
+  const HostSky host(device(), uniformSky());
+  const glm::vec3 albedo(0.3f, 0.25f, 0.2f);
+  CloudView view = groundView(host.view());
+  view.groundAlbedo = albedo;
+  view.pitchDegrees = 35.0;  // the bases fill the view
+  const clouds::Settings s = overcast();
+  harness().cut();
+  harness().render(view, s, kExtent);
+  const SkyLightImage first = harness().readSkyLight();
+  const clouds::tools::CloudFrame gpu = harness().render(view, s, kExtent);
+  const SkyLightImage now = harness().readSkyLight();
+  ASSERT_TRUE(first.measures.valid && now.measures.valid);
+  clouds::shader::CloudUniforms u = impl().lastUniforms();
+  u.ambientTop = kUniformSky;  // the sky ambient's, from the uniform sky
+  const glm::vec3 covered =
+      bottomLitBy(first.measures.horizon, first.measures.upperIrradianceOverPi, albedo, u, now);
+  const glm::vec3 clear = bottomLitBy(kUniformSky, kUniformSky, albedo, u, now);
+  const clouds::tools::CpuTextures textures = clouds::tools::readTextures(harness());
+  const auto cpuWithBases = [&](const glm::vec3& bottom) {
+    clouds::shader::CloudUniforms lit = u;
+    lit.ambientBottom = bottom;
+    return clouds::tools::renderCpuReference(textures, lit, s, harness().lastDepth());
+  };
+  const clouds::tools::CloudFrame cpuCovered = cpuWithBases(covered);
+  const clouds::tools::CloudFrame cpuClear = cpuWithBases(clear);
+  float peak = 1.0f;
+  for (const glm::vec4& p : cpuClear.radiance) peak = std::max({peak, p.r, p.g, p.b});
+  const double psnrCovered = clouds::tools::psnr(gpu.radiance, cpuCovered.radiance, peak);
+  const double psnrClear = clouds::tools::psnr(gpu.radiance, cpuClear.radiance, peak);
+  std::printf(
+      "bases see %.4f %.4f %.4f (clear sky's %.4f %.4f %.4f); against the CPU with them %.1f "
+      "dB, with the clear sky's %.1f dB; opacity %.3f\n",
+      covered.r, covered.g, covered.b, clear.r, clear.g, clear.b, psnrCovered, psnrClear,
+      test::meanOpacity(gpu));
+  ASSERT_GT(test::meanOpacity(gpu), 0.9) << "the view must be overcast";
+  EXPECT_GE(psnrCovered, 40.0) << "the march's bases are lit by the last frame's sky light";
+  EXPECT_LT(psnrClear, psnrCovered - 10.0) << "and not by the clear sky";
+  // Greyer: the overcast's light on the ground is less blue than the clear sky's.
+  EXPECT_LT(covered.b / covered.r, 0.7 * clear.b / clear.r);
+}
+
+// Under a clear sky the last frame's map is the host's sky, and clouds under it look as they did
+// without the sky light: the bases' light differs only in how the host's sky is sampled (the map's
+// texels, the sky ambient's 32 x 32 filtered samples).
+TEST_F(SkyLight, UnderAClearSkyTheCloudsLookAsWithoutIt) {
+  const HostSky host(device(), gradientSky());
+  CloudView view = groundView(host.view());
+  view.groundAlbedo = glm::vec3(0.3f, 0.25f, 0.2f);
+  clouds::Settings clear = skyLit(clouds::tools::singleFrame(clouds::Settings{}));
+  clear.coverage = 0.0f;
+  std::vector<clouds::tools::CloudFrame> frames;
+  for (const bool on : {true, false}) {
+    clouds::Settings s = clear;
+    s.skyLight = on;
+    harness().cut();
+    harness().render(view, s, kExtent);  // a clear sky: the map is the host's
+    s.coverage = 0.55f;
+    frames.push_back(harness().render(view, s, kExtent));
+  }
+  double worst = 0.0;
+  for (std::size_t i = 0; i < frames[0].radiance.size(); ++i) {
+    const glm::dvec3 with(frames[0].radiance[i]);
+    const glm::dvec3 without(frames[1].radiance[i]);
+    worst = std::max(worst, std::abs(luminance(with) - luminance(without)) / luminance(without));
+  }
+  std::printf("clear sky: opacity %.3f, worst pixel %.5f of its luminance without the sky light\n",
+              test::meanOpacity(frames[0]), worst);
+  ASSERT_GT(test::meanOpacity(frames[0]), 0.1) << "the view must show clouds";
+  EXPECT_LT(worst, 0.01);
 }
 
 TEST_F(SkyLight, HardCasesStayFinite) {
