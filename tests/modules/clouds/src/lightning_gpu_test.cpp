@@ -1,14 +1,17 @@
 // The clouds' lightning on lavapipe (FrameInputs::lightningFlashes, lightningBolts): a flash
 // inside an overcast makes the cloud near it glow and lights the cloud beyond its reach with
-// its sky light alone; a bolt is a line of its energy, hidden by nearer geometry and dimmed
-// behind cloud; the frame after a flash equals, to the bit, the frame of a renderer that never
-// saw it (neither glow nor bolt enters the temporal history); hard cases stay finite; without room
-// for flashes or bolts in the settings they are refused by name. Validation-clean.
+// its sky light alone; each pixel's glow is the seeds' formula, its height gradient included
+// (bases glow little, tops much); a bolt is a line of its energy, hidden by nearer geometry and
+// dimmed behind cloud; the frame after a flash equals, to the bit, the frame of a renderer that
+// never saw it (neither glow nor bolt enters the temporal history); hard cases stay finite; without
+// room for flashes or bolts in the settings they are refused by name. Validation-clean.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <functional>
+#include <utility>
 
 #include <glm/gtc/matrix_transform.hpp>
 #include "cloud_gpu_fixture.h"
@@ -127,8 +130,110 @@ TEST_F(Lightning, AFlashMakesTheCloudNearItGlow) {
   std::printf("flash: %zu pixels' clouds within 1 km of it gain %.2f times its sky light\n", near,
               nearGain / nearSkyLight);
   EXPECT_GT(near, 20u);
-  EXPECT_GT(nearGain, 2.0 * nearSkyLight) << "the glow: near the flash, much more than sky light";
+  // The bases seen here lie low in the layer (height fraction 0.13: the glow's height gradient
+  // leaves them an eighth of it), yet near the flash they still gain more than its sky light.
+  // The next test checks the glow per pixel.
+  EXPECT_GT(nearGain, 1.3 * nearSkyLight) << "the glow: near the flash, more than sky light";
   EXPECT_LT(worstSkyLightError, 0.01) << "beyond its reach, the sky light alone";
+}
+
+// Each pixel's light from a flash, against the seeds' formula evaluated on the CPU in double
+// precision from the frame without it (its transmittance and depths): per unit of cloud, L x
+// (pow(1 - d / r, 12) x height gradient x pseudo-attenuation + sky light), at the pixel's cloud
+// (its weighted depth). Near the flash (within 1.2 km, over half cloud): the worst relative error,
+// and the mean height fraction of those clouds in the layer.
+struct GlowAgainstFormula {
+  std::size_t pixels = 0;
+  double worstError = 0.0;
+  double meanHeightFraction = 0.0;
+};
+
+GlowAgainstFormula glowAgainstFormula(clouds::tools::CloudHarness& h,
+                                      const clouds::shader::CloudUniforms& u, const CloudView& view,
+                                      const clouds::LightningFlash& flash,
+                                      const clouds::Settings& s) {
+  h.cut();
+  const CloudFrame before = h.render(view, s, kExtent);
+  CloudView lit = view;
+  lit.lightningFlashes = {flash};
+  h.cut();
+  const CloudFrame after = h.render(lit, s, kExtent);
+  const clouds::tools::PixelRays rays(view, kExtent);
+  const glm::dvec3 charge = flash.positionMetres - view.position;
+  const double radiance = (flash.radiance.r + flash.radiance.g + flash.radiance.b) / 3.0;
+  const double planet = u.planetRadiusMetres;
+  GlowAgainstFormula result;
+  for (std::uint32_t y = 0; y < kExtent.height; ++y) {
+    for (std::uint32_t x = 0; x < kExtent.width; ++x) {
+      const std::size_t i = std::size_t{y} * kExtent.width + x;
+      const glm::vec2 depth(before.depth[i]);
+      const double transmittance = before.radiance[i].a;
+      const glm::dvec3 ray(rays.direction(x, y));
+      const double d = glm::length(ray * double(depth.y) - charge);
+      if (depth.y <= 0.0f || transmittance > 0.5 || d > 1200.0) continue;
+      // The seeds' pseudo-attenuation, of the density the pixel's cloud shows (its optical
+      // depth, at most 1, over twice its weighted depth past the front).
+      const double opticalDepth = std::min(-std::log(std::max(transmittance, 1e-6)), 1.0);
+      const double span = std::max(2.0 * (double(depth.y) - double(depth.x)), 1.0);
+      const double attenuation =
+          1.0 - std::clamp(5.0 * opticalDepth / span / double(u.extinctionPerMetre), 0.0, 1.0);
+      // The height gradient: the cloud's height fraction in the layer, over a round planet.
+      const double r0 = planet + view.position.y;
+      const double t = depth.y;
+      const double altitude = std::sqrt(r0 * r0 + t * t + 2.0 * r0 * t * ray.y) - planet;
+      const double height = std::clamp(
+          (altitude - u.layerBottomMetres) / double(u.layerTopMetres - u.layerBottomMetres), 0.0,
+          1.0);
+      const float distance = static_cast<float>(d);
+      const double expected =
+          radiance * (double(fxcontracts::shader::flashGlow(distance, flash.radiusMetres)) *
+                          height * attenuation +
+                      double(fxcontracts::shader::flashSkyLight(distance, flash.radiusMetres)));
+      const double a = luminance(before.radiance[i]);
+      const double b = luminance(after.radiance[i]);
+      // The output is half floats: each of a and b is off by up to 2^-11 of itself.
+      const double rounding = std::ldexp(std::max(a, b), -11) * 2.0;
+      const double measured = (b - a) / (1.0 - transmittance);
+      result.worstError =
+          std::max(result.worstError,
+                   (std::abs(measured - expected) - rounding / (1.0 - transmittance)) / expected);
+      result.meanHeightFraction += height;
+      ++result.pixels;
+    }
+  }
+  result.meanHeightFraction /= double(std::max<std::size_t>(result.pixels, 1));
+  return result;
+}
+
+TEST_F(Lightning, EachPixelsGlowIsTheSeedsFormulaHeightGradientIncluded) {
+  const clouds::Settings s = clouds::tools::singleFrame(overcast());
+  harness().cut();
+  harness().render(underTheOvercast(), s, kExtent);
+  const clouds::shader::CloudUniforms u = impl().lastUniforms();
+  // From below, the flash just inside the base: the bases it lights glow little.
+  const GlowAgainstFormula below =
+      glowAgainstFormula(harness(), u, underTheOvercast(), flashAhead(), s);
+  // From above, looking down 35 degrees, a flash 300 m under the layer's top ahead: the
+  // towers' upper parts glow.
+  CloudView above = underTheOvercast();
+  above.position.y = u.layerTopMetres + 1500.0;
+  above.pitchDegrees = -35.0;
+  clouds::LightningFlash high = flashAhead();
+  high.positionMetres = {0.0, u.layerTopMetres - 300.0,
+                         -(above.position.y - u.layerTopMetres) / std::tan(glm::radians(35.0))};
+  const GlowAgainstFormula fromAbove = glowAgainstFormula(harness(), u, above, high, s);
+  for (const auto& [name, g] : {std::pair{"below", below}, std::pair{"above", fromAbove}}) {
+    std::printf(
+        "%s: %zu pixels near the flash, their clouds' mean height fraction %.2f, worst "
+        "error against the formula %.4f\n",
+        name, g.pixels, g.meanHeightFraction, g.worstError);
+    EXPECT_GT(g.pixels, 20u) << name;
+    EXPECT_LT(g.worstError, 0.02) << name;
+  }
+  // The two views see clouds low and high in the layer: without the gradient each would be off
+  // the formula by 1 / (height fraction) - 1 (several times over from below).
+  EXPECT_LT(below.meanHeightFraction, 0.2);
+  EXPECT_GT(fromAbove.meanHeightFraction, 2.0 * below.meanHeightFraction);
 }
 
 // The glow is less where the cloud is dense (the seeds' pseudo-attenuation): near the flash,
