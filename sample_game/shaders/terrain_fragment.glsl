@@ -1,5 +1,5 @@
 // The terrain's fragment stage: the surface made finer than the mesh (terrain_material.h:
-// detail normals, rock and snow by slope and altitude), lit by the sun (with
+// detail normals, rock and snow by slope and altitude, finer still close up), lit by the sun (with
 // TERRAIN_CLOUD_SHADOWS through the clouds and past the terrain itself, as the terrain's
 // sunlight map holds it) and the sky, then hazed by the aerial perspective its vertices read
 // (TERRAIN_HAZED: a scene with an atmosphere) or, the cheap alternative, fogged towards the
@@ -38,11 +38,22 @@ float sunVisibility() {
 }
 
 void main() {
-  // The surface finer than the mesh: its detail (world metres), normal and materials.
+  // The surface finer than the mesh: its detail (world metres), normal and materials, and close
+  // up finer still, as far as the pixel's footprint on the ground (m) resolves. Ground seen at a
+  // grazing angle is foreshortened along one side of the pixel: the footprint is the shorter side,
+  // up to half the longer (an octave then has at least two pixels a wavelength along it, as a
+  // 2x anisotropic texture filter would keep), so the ground ahead is not smeared.
   const vec3 world = frame.cameraPosition.xyz + inRelative;
-  const vec3 detail = terrainDetail(vec2(world.x, world.z));
-  const vec3 normal = terrainDetailNormal(inNormal, detail);
-  const vec3 albedo = terrainAlbedo(inColor, normal, world.y, detail, frame.terrain);
+  const vec4 detail = terrainDetail(vec2(world.x, world.z));
+  vec3 normal = terrainDetailNormal(inNormal, detail);
+  const vec2 materials = terrainMaterialWeights(normal, world.y, detail, frame.terrain);
+  const float across = length(dFdx(inRelative));
+  const float down = length(dFdy(inRelative));
+  const float footprint = max(min(across, down), 0.5f * max(across, down));
+  const vec4 close = terrainCloseDetail(world, normal, materials, footprint);
+  if (close.xyz != vec3(0.0f)) normal = normalize(normal + close.xyz);
+  const vec3 albedo = terrainPaint(inColor, materials, frame.terrain) *
+                      terrainDetailTint(detail, close.w, materials, footprint);
   vec3 lit = terrainLit(albedo, normal, sunVisibility());
   if (kLightning) {
     // The brightest lightning flash in progress (its falloff per vertex: terrain_vertex.glsl):

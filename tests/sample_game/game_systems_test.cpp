@@ -289,7 +289,7 @@ TEST(TerrainMaterial, RockOnSteepGroundSnowHighUp) {
   const TerrainMaterials m = sample::terrainMaterialsFor(mesh, std::nullopt);
   EXPECT_NEAR(m.snow.w, 700.0f, 1e-3f);
   const glm::vec3 grass(0.05f, 0.08f, 0.03f);
-  const glm::vec3 calm(0.0f, 0.0f, 0.5f);  // no detail gradient, mid waver
+  const glm::vec4 calm(0.0f, 0.0f, 0.5f, 0.5f);  // no detail gradient, mid waver
   const auto normalAt = [](float degrees) {
     return glm::vec3(std::sin(glm::radians(degrees)), std::cos(glm::radians(degrees)), 0.0f);
   };
@@ -357,6 +357,145 @@ TEST(TerrainMaterial, DetailNormalsAreFinerThanTheMesh) {
   EXPECT_GT(sumNeighbour / n, 1.0) << "no variation at the metre scale";
   EXPECT_LT(std::abs(mean.x), 0.03);
   EXPECT_LT(std::abs(mean.z), 0.03);
+}
+
+// The octaves' values at their middle: no colour from the 60 m and 11 m octaves.
+const glm::vec4 kCalmDetail(0.0f, 0.0f, 0.5f, 0.5f);
+
+// Close up (terrainCloseDetail): where a pixel covers 0.75 m of ground or more the close-up
+// octave is exactly nothing; closer, the ground gains relief and colour at the metre scale, half
+// of it where a pixel covers 0.5625 m.
+TEST(TerrainMaterial, CloseUpDetailFadesOutWithThePixelsFootprint) {
+  using namespace engine::shaders;
+  const glm::vec3 up(0.0f, 1.0f, 0.0f);
+  const glm::vec2 grass(0.0f, 0.0f);
+  // The detail's variation between points 0.75 m apart (degrees of normal, colour factor), and
+  // whether any point had any detail at all.
+  struct Variation {
+    double degrees = 0.0;
+    double tint = 0.0;
+    bool any = false;
+  };
+  const auto variation = [&](float footprint) {
+    Variation v;
+    const int n = 2000;
+    const glm::vec3 step(0.75f, 0.0f, 0.0f);
+    for (int i = 0; i < n; ++i) {
+      const glm::vec3 p(float(i) * 0.75f + 512.3f, 100.0f, float(i % 41) * 2.9f - 300.0f);
+      const glm::vec4 a = terrainCloseDetail(p, up, grass, footprint);
+      const glm::vec4 b = terrainCloseDetail(p + step, up, grass, footprint);
+      const glm::vec3 na = glm::normalize(up + glm::vec3(a));
+      const glm::vec3 nb = glm::normalize(up + glm::vec3(b));
+      v.degrees += glm::degrees(std::acos(std::clamp(double(glm::dot(na, nb)), -1.0, 1.0))) / n;
+      v.tint += std::abs(terrainDetailTint(kCalmDetail, a.w, grass, footprint).g -
+                         terrainDetailTint(kCalmDetail, b.w, grass, footprint).g) /
+                n;
+      v.any = v.any || a != glm::vec4(0.0f);
+    }
+    return v;
+  };
+  const Variation sharp = variation(0.05f);
+  const Variation half = variation(0.5625f);
+  const Variation faded = variation(0.75f);
+  std::printf(
+      "close-up detail 0.75 m apart: %.2f deg and tint %.3f (0.05 m pixels), %.2f deg "
+      "and %.3f (0.5625 m), %s at 0.75 m\n",
+      sharp.degrees, sharp.tint, half.degrees, half.tint, faded.any ? "some" : "none");
+  EXPECT_GT(sharp.degrees, 3.0) << "relief at the metre scale";
+  EXPECT_GT(sharp.tint, 0.03) << "colour at the metre scale";
+  EXPECT_NEAR(half.degrees / sharp.degrees, 0.5, 0.1) << "half of it kept";
+  EXPECT_NEAR(half.tint / sharp.tint, 0.5, 0.1) << "half of it kept";
+  EXPECT_FALSE(faded.any) << "nothing once a pixel covers a quarter of the octave";
+}
+
+// The ground's colour varies at the scales a pixel resolves (terrainDetailTint): where a pixel
+// covers 1 m, with both the 60 m and the 11 m octaves (points 5 m apart differ); at 6 m, with the
+// 60 m one alone (the 11 m one would alias); from 15 m, not at all (the far view as it was).
+TEST(TerrainMaterial, TheGroundsColourVariesAtTheScalesAPixelResolves) {
+  using namespace engine::shaders;
+  const glm::vec2 grass(0.0f, 0.0f);
+  const auto tintAt = [&](glm::vec2 xz, float footprint) {
+    return terrainDetailTint(terrainDetail(xz), 0.0f, grass, footprint).g;
+  };
+  // Mean colour difference between points `apart` metres apart.
+  const auto variation = [&](float footprint, float apart) {
+    double sum = 0.0;
+    const int n = 2000;
+    for (int i = 0; i < n; ++i) {
+      const glm::vec2 xz(float(i) * 7.3f - 4000.0f, float(i % 53) * 31.0f);
+      sum += std::abs(tintAt(xz, footprint) - tintAt(xz + glm::vec2(apart, 0.0f), footprint)) / n;
+    }
+    return sum;
+  };
+  const double near5 = variation(1.0f, 5.0f);
+  const double mid5 = variation(6.0f, 5.0f);
+  const double mid40 = variation(6.0f, 40.0f);
+  std::printf("detail colour: 5 m apart %.4f (1 m pixels), %.4f (6 m); 40 m apart %.4f (6 m)\n",
+              near5, mid5, mid40);
+  EXPECT_GT(near5, 0.02) << "the 11 m octave's colour where a pixel resolves it";
+  EXPECT_LT(mid5, 0.5 * near5) << "the 11 m octave gone at 6 m pixels";
+  EXPECT_GT(mid40, 0.03) << "the 60 m octave's colour still there";
+  for (int i = 0; i < 100; ++i) {
+    const glm::vec2 xz(float(i) * 17.1f, float(i) * -3.7f);
+    ASSERT_EQ(tintAt(xz, 15.0f), 1.0f) << "the far view as it was, to the bit";
+  }
+}
+
+// Close up the colour factor is 1 on average for every material (the ground's mean albedo is
+// what the materials paint, near as far), rock mottled, snow nearly even.
+TEST(TerrainMaterial, CloseUpColourIsUnbiasedAndFollowsTheMaterial) {
+  using namespace engine::shaders;
+  const glm::vec3 up(0.0f, 1.0f, 0.0f);
+  const struct {
+    const char* name;
+    glm::vec2 weights;
+  } materials[] = {{"grass", {0.0f, 0.0f}}, {"rock", {1.0f, 0.0f}}, {"snow", {0.0f, 1.0f}}};
+  double spread[3] = {};
+  for (int m = 0; m < 3; ++m) {
+    glm::dvec3 mean(0.0);
+    double squares = 0.0;
+    const int n = 40000;
+    for (int i = 0; i < n; ++i) {
+      const glm::vec3 p(float(i % 200) * 0.97f, 50.0f, float(i / 200) * 1.03f);
+      const glm::vec4 d = terrainCloseDetail(p, up, materials[m].weights, 0.01f);
+      const glm::dvec3 tint(
+          terrainDetailTint(terrainDetail(glm::vec2(p.x, p.z)), d.w, materials[m].weights, 0.01f));
+      mean += tint / double(n);
+      squares += (tint.r - 1.0) * (tint.r - 1.0) / n;
+    }
+    spread[m] = std::sqrt(squares);
+    std::printf("%s: mean tint %.3f %.3f %.3f, spread %.3f\n", materials[m].name, mean.r, mean.g,
+                mean.b, spread[m]);
+    for (int c = 0; c < 3; ++c) EXPECT_NEAR(mean[c], 1.0, 0.03) << materials[m].name;
+  }
+  EXPECT_GT(spread[1], spread[0]) << "rock more mottled than grass";
+  EXPECT_LT(spread[2], 0.2 * spread[1]) << "snow nearly even";
+}
+
+// On a cliff, rock's detail is projected on the face (triplanar): the normal varies up the
+// face as along it. A plan-view projection (what grass gets) is constant up a vertical face.
+TEST(TerrainMaterial, RockDetailIsProjectedOnTheFace) {
+  using namespace engine::shaders;
+  const glm::vec3 face(1.0f, 0.0f, 0.0f);  // a vertical face looking along +x
+  const auto upTheFace = [&](glm::vec2 weights) {
+    double degrees = 0.0;
+    const int n = 1000;
+    for (int i = 0; i < n; ++i) {
+      const glm::vec3 p(40.0f, float(i) * 0.75f + 20.0f, float(i % 29) * 1.7f);
+      const glm::vec3 a =
+          glm::normalize(face + glm::vec3(terrainCloseDetail(p, face, weights, 0.05f)));
+      const glm::vec3 b =
+          glm::normalize(face + glm::vec3(terrainCloseDetail(p + glm::vec3(0.0f, 0.75f, 0.0f), face,
+                                                             weights, 0.05f)));
+      degrees += glm::degrees(std::acos(std::clamp(double(glm::dot(a, b)), -1.0, 1.0))) / n;
+    }
+    return degrees;
+  };
+  const double rock = upTheFace({1.0f, 0.0f});
+  const double planView = upTheFace({0.0f, 0.0f});
+  std::printf("up a cliff, 0.75 m apart: rock %.2f deg, plan view %.2f deg\n", rock, planView);
+  EXPECT_GT(rock, 3.0);
+  EXPECT_LT(planView, 0.05) << "constant but for float rounding";
 }
 
 // What long shadows are cast from: the surface itself, exact on a planar ramp (linear

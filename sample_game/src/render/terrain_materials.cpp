@@ -16,7 +16,7 @@ engine::shaders::TerrainMaterials terrainMaterialsFor(const engine::assets::Mesh
 
 glm::vec3 meanTerrainAlbedo(const engine::assets::MeshData& mesh,
                             const engine::shaders::TerrainMaterials& materials) {
-  const glm::vec3 calm(0.0f, 0.0f, 0.5f);  // no detail gradient, the waver's middle
+  const glm::vec4 calm(0.0f, 0.0f, 0.5f, 0.5f);  // no detail gradient, the waver's middle
   const auto painted = [&](std::uint32_t v) {
     return engine::shaders::terrainAlbedo(glm::vec3(mesh.colors[v]), mesh.normals[v],
                                           mesh.positions[v].y, calm, materials);
