@@ -9,6 +9,8 @@
 #   overcast                 overcast_stratus.json from its camera
 #   above_the_layer          default.json, 6.5 km up looking down on the layer
 #   inside_a_cloud           default.json, inside a cumulus at 2.6 km
+#   default_flight           default.json from its camera, 4.8 s into its flight (the ground
+#                            ahead as a pilot sees it)
 # into OUT_DIR (default docs/review) as PNG (tonemapped) and EXR (linear HDR, kcd/m^2), and
 # the PNGs side by side into OUT_DIR/contact_sheet.png; and the look in figures (clouds_look:
 # the noon cumulus' flank-to-base ratio and what each lighting term does) into OUT_DIR/look.txt.
@@ -30,10 +32,12 @@ build/bin/sample_game "${common[@]}" --scene assets_src/scenes/cumulus_noon.json
   --script tools/review/cumulus_views.json
 scene_view sunset_stratocumulus.json sunset
 scene_view overcast_stratus.json overcast
+scene_view default.json default_flight
 build/bin/sample_game "${common[@]}" --scene assets_src/scenes/default.json \
   --script tools/review/default_views.json
 
-views=(ground_cumulus cumulus_towards_the_sun sunset overcast above_the_layer inside_a_cloud)
+views=(ground_cumulus cumulus_towards_the_sun sunset overcast above_the_layer inside_a_cloud
+  default_flight)
 sheet_args=()
 for view in "${views[@]}"; do sheet_args+=("${view//_/ }=$out/$view.png"); done
 python="$(sed -n 's/^CLOUDSCAPE_PLOT_PYTHON:[A-Z]*=//p' build/CMakeCache.txt)"
