@@ -3,15 +3,16 @@
 // and has loaded `u`.
 //
 // Nubis Evolved's glow term (Schneider 2022: potential pow(1 - d / r, 12), times the height
-// gradient d2 / height, less where the cloud is dense) and the flash's sky light (fxcontracts/lightning_light.h: the core's inverse square,
-// the light that makes the whole deck flicker), at the clouds' transmittance-weighted depth along
-// the pixel's ray. The local density of the seeds' pseudo-attenuation is that of the cloud the
-// pixel sees into: its optical depth (at most 1: an opaque cloud shows its outer skin) over its
-// depth span (twice the weighted depth past the front), exact for a thin uniform cloud. The
-// height gradient is the cloud's height fraction in the layer (the seed's d2 / height): nothing
-// at the base, all of it at the top, so a storm's flash lights up its towering body while its
-// base only flickers with the flash's sky light. Hero clouds take it by their altitude in the
-// layer too (Nubis' voxel clouds drop it; seen per pixel, a hero cloud is not told apart).
+// gradient d2 / height, less where the cloud is dense) and the flash's sky light
+// (fxcontracts/lightning_light.h: the core's inverse square, the light that makes the whole deck
+// flicker), at the clouds' transmittance-weighted depth along the pixel's ray. The local
+// density of the seeds' pseudo-attenuation is that of the cloud the pixel sees into: its optical
+// depth (at most 1: an opaque cloud shows its outer skin) over its depth span (twice the
+// weighted depth past the front), exact for a thin uniform cloud. The height gradient is the
+// cloud's height fraction in the layer (the seed's d2 / height): nothing at the base, all of it
+// at the top, so a storm's flash lights up its towering body while its base only flickers with
+// the flash's sky light. Hero clouds take it by their altitude in the layer too (Nubis' voxel
+// clouds drop it; seen per pixel, a hero cloud is not told apart).
 #ifndef CLOUDS_CLOUD_LIGHTNING_GLSL
 #define CLOUDS_CLOUD_LIGHTNING_GLSL
 
