@@ -329,6 +329,11 @@ TEST(TerrainMaterial, TheGroundsMeanAlbedoIsWhatItsMaterialsPaintByArea) {
                    glm::vec3(0.25f, 0.0f, 0.75f)));
 }
 
+// The angle between two unit vectors (degrees).
+double degreesBetween(const glm::vec3& a, const glm::vec3& b) {
+  return glm::degrees(std::acos(std::clamp(double(glm::dot(a, b)), -1.0, 1.0)));
+}
+
 // The detail normal: finer than the mesh's 150 m (points 5 m apart differ), a few degrees to a
 // few tens of degrees off the mesh's normal, and unbiased (the mesh's slope stays its slope).
 TEST(TerrainMaterial, DetailNormalsAreFinerThanTheMesh) {
@@ -346,7 +351,7 @@ TEST(TerrainMaterial, DetailNormalsAreFinerThanTheMesh) {
     const double angle = glm::degrees(std::acos(std::clamp(double(a.y), -1.0, 1.0)));
     sumAngle += angle;
     maxAngle = std::max(maxAngle, angle);
-    sumNeighbour += glm::degrees(std::acos(std::clamp(double(glm::dot(a, b)), -1.0, 1.0)));
+    sumNeighbour += degreesBetween(a, b);
     mean += glm::dvec3(a);
   }
   mean /= double(n);
@@ -386,7 +391,7 @@ TEST(TerrainMaterial, CloseUpDetailFadesOutWithThePixelsFootprint) {
       const glm::vec4 b = terrainCloseDetail(p + step, up, grass, footprint);
       const glm::vec3 na = glm::normalize(up + glm::vec3(a));
       const glm::vec3 nb = glm::normalize(up + glm::vec3(b));
-      v.degrees += glm::degrees(std::acos(std::clamp(double(glm::dot(na, nb)), -1.0, 1.0))) / n;
+      v.degrees += degreesBetween(na, nb) / n;
       v.tint += std::abs(terrainDetailTint(kCalmDetail, a.w, grass, footprint).g -
                          terrainDetailTint(kCalmDetail, b.w, grass, footprint).g) /
                 n;
@@ -487,7 +492,7 @@ TEST(TerrainMaterial, RockDetailIsProjectedOnTheFace) {
       const glm::vec3 b =
           glm::normalize(face + glm::vec3(terrainCloseDetail(p + glm::vec3(0.0f, 0.75f, 0.0f), face,
                                                              weights, 0.05f)));
-      degrees += glm::degrees(std::acos(std::clamp(double(glm::dot(a, b)), -1.0, 1.0))) / n;
+      degrees += degreesBetween(a, b) / n;
     }
     return degrees;
   };

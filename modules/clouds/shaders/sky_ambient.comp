@@ -34,6 +34,9 @@ void main() {
   const uint lane = gl_LocalInvocationID.x;
   const bool fromSky = (constants.flags & kAmbientFromSkyImage) != 0u;
   const bool fromShadow = (constants.flags & kAmbientGroundShadow) != 0u;
+  // The last frame's sky light gives the horizon band: the host's is not sampled.
+  const bool fromSkyLight = (constants.flags & kAmbientFromSkyLight) != 0u;
+  const bool horizonFromSky = fromSky && !fromSkyLight;
   vec4 top = vec4(0.0f);
   vec4 bottom = vec4(0.0f);
   vec2 sunlit = vec2(0.0f);
@@ -50,6 +53,8 @@ void main() {
       const float weight = sin(elevation) * cos(elevation);  // cos(zenith) dOmega
       const vec3 radiance = textureLod(sky, vec2(cell.x, 0.5f - elevation / kPi), 0.0f).rgb;
       top += vec4(radiance * weight, weight);
+    }
+    if (horizonFromSky) {
       const vec2 band = vec2(cell.x, min(0.5f - (cell.y * 10.0f / 180.0f), lowestSkyV));
       bottom += vec4(textureLod(sky, band, 0.0f).rgb, 1.0f);
     }
@@ -70,13 +75,11 @@ void main() {
     barrier();
   }
   if (lane != 0u) return;
-  if (fromSky) {
-    u.ambientTop = topSum[0].rgb / max(topSum[0].w, 1e-6f);
-    u.ambientBottom = bottomSum[0].rgb / max(bottomSum[0].w, 1e-6f);
-  }
+  if (fromSky) u.ambientTop = topSum[0].rgb / max(topSum[0].w, 1e-6f);
+  if (horizonFromSky) u.ambientBottom = bottomSum[0].rgb / max(bottomSum[0].w, 1e-6f);
   // What lights the ground under the clouds, and the horizon band above it.
   vec3 groundSky = u.ambientTop;
-  if ((constants.flags & kAmbientFromSkyLight) != 0u) {
+  if (fromSkyLight) {
     groundSky = lastSkyLight.upperIrradianceOverPi.rgb;
     u.ambientBottom = lastSkyLight.horizon.rgb;
   }
