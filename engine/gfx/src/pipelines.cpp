@@ -186,12 +186,18 @@ void Pipeline::create(Device& device, const GraphicsPipelineDesc& desc) {
     blendState.blendEnable = VK_TRUE;
     blendState.srcColorBlendFactor =
         desc.blend == BlendMode::Alpha ? VK_BLEND_FACTOR_SRC_ALPHA : VK_BLEND_FACTOR_ONE;
-    blendState.dstColorBlendFactor = desc.blend == BlendMode::Additive
-                                         ? VK_BLEND_FACTOR_ONE
+    blendState.dstColorBlendFactor = desc.blend == BlendMode::Additive ? VK_BLEND_FACTOR_ONE
+                                     : desc.blend == BlendMode::Transmitted
+                                         ? VK_BLEND_FACTOR_SRC_ALPHA
                                          : VK_BLEND_FACTOR_ONE_MINUS_SRC_ALPHA;
     blendState.colorBlendOp = VK_BLEND_OP_ADD;
     blendState.srcAlphaBlendFactor = VK_BLEND_FACTOR_ONE;
     blendState.dstAlphaBlendFactor = blendState.dstColorBlendFactor;
+    if (desc.blend == BlendMode::Transmitted) {
+      // The alpha is the fragment's transmittance, not coverage: the destination's alpha stays.
+      blendState.srcAlphaBlendFactor = VK_BLEND_FACTOR_ZERO;
+      blendState.dstAlphaBlendFactor = VK_BLEND_FACTOR_ONE;
+    }
     blendState.alphaBlendOp = VK_BLEND_OP_ADD;
   }
   std::vector<VkPipelineColorBlendAttachmentState> blendStates(desc.colorFormats.size(),

@@ -46,7 +46,7 @@ std::unique_ptr<engine::gfx::Image> loadWeatherMap(engine::gfx::Device& device,
 
 bool sameImages(const clouds::Outputs& a, const clouds::Outputs& b) {
   return a.radiance.image == b.radiance.image && a.depth.image == b.depth.image &&
-         a.shadowMap.image == b.shadowMap.image;
+         a.shadowMap.image == b.shadowMap.image && a.skyLight.image == b.skyLight.image;
 }
 
 // The module's outputs are kept in GENERAL between frames, their writes synchronised by the
@@ -292,6 +292,7 @@ std::vector<std::string> CloudFeature::effects() const {
 }
 
 bool CloudFeature::publishesEntry(std::type_index entry) const {
+  if (entry == typeid(fxcontracts::ecs::CoveredSkyRadiance)) return cloudSettings(world_).skyLight;
   return castsShadow_ && entry == typeid(fxcontracts::ecs::CloudShadow);
 }
 
@@ -356,6 +357,17 @@ SceneTextures CloudFeature::addShadowPasses(FrameGraph& graph, const SceneTextur
   return scene;
 }
 
+SceneTextures CloudFeature::addPassesBeforeScene(FrameGraph& graph, const SceneTextures& scene) {
+  imported_ = usableOutputs();
+  skyLightMap_ = {};
+  if (imported_.skyLight.image != VK_NULL_HANDLE) {
+    skyLightMap_ = importOutput(graph, "cloud sky light", imported_.skyLight,
+                                {clouds::kSkyLightExtent.width, clouds::kSkyLightExtent.height, 1});
+    graph.blackboard().put(fxcontracts::ecs::CoveredSkyRadiance{skyLightMap_});
+  }
+  return scene;
+}
+
 SceneTextures CloudFeature::addPasses(FrameGraph& graph, const SceneTextures& scene) {
   imported_ = usableOutputs();
   if (imported_.radiance.image == VK_NULL_HANDLE) return scene;  // prepare() failed
@@ -389,6 +401,8 @@ SceneTextures CloudFeature::addPasses(FrameGraph& graph, const SceneTextures& sc
         if (shadow != nullptr) builder.read(shadow->map, Access::SampledReadGeneral);
         d.radiance = builder.write(radiance, Access::StorageWrite);
         if (depth.valid()) d.depth = builder.write(depth, Access::StorageWrite);
+        // The sky light's map, after the scene's readers (a reflection) of the frames' before.
+        if (skyLightMap_.valid()) builder.write(skyLightMap_, Access::StorageWrite);
       },
       [this](const MarchData& d, PassContext& context) {
         const auto viewOf = [&](TextureHandle h) {

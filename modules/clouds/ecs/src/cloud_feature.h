@@ -45,6 +45,9 @@ class CloudFeature final : public engine::render::RenderFeature {
   bool prepare(VkExtent2D extent, std::uint64_t frameIndex) override;
   engine::render::SceneTextures addShadowPasses(
       engine::render::FrameGraph& graph, const engine::render::SceneTextures& scene) override;
+  // Puts the sky light's map on the blackboard (fxcontracts::ecs::CoveredSkyRadiance).
+  engine::render::SceneTextures addPassesBeforeScene(
+      engine::render::FrameGraph& graph, const engine::render::SceneTextures& scene) override;
   engine::render::SceneTextures addPasses(engine::render::FrameGraph& graph,
                                           const engine::render::SceneTextures& scene) override;
   void finish(std::uint64_t lastFrameIndex) override;
@@ -97,8 +100,9 @@ class CloudFeature final : public engine::render::RenderFeature {
   std::vector<clouds::WeatherRegion> weatherRegions_;  // likewise
   std::optional<std::uint64_t> heroFrame_;             // the frame heroClouds_ were chosen for
   bool hasHeroClouds_ = false;  // the layer has hero cloud assets (loaded into the context)
-  bool lifecycleProblemLogged_ = false;  // a bad HeroCloudLifecycle is worth seeing once
-  clouds::Outputs imported_;             // the outputs the graph imported
+  bool lifecycleProblemLogged_ = false;        // a bad HeroCloudLifecycle is worth seeing once
+  clouds::Outputs imported_;                   // the outputs the graph imported
+  engine::render::TextureHandle skyLightMap_;  // imported before the scene (none: no sky light)
   // The outputs the graph may import: none after a failed prepare(), whose outputs may be
   // missing or not yet in their layout.
   clouds::Outputs usableOutputs() const;

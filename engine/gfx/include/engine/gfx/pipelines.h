@@ -39,7 +39,10 @@ struct ComputePipelineDesc {
   std::string debugName;
 };
 
-enum class BlendMode { Opaque, Alpha, PremultipliedAlpha, Additive };
+// Transmitted: colour + destination x alpha, where alpha is the share of what lies behind that
+// the fragment lets through (a surface that reflects, scatters and partly transmits, such as
+// water over its bed).
+enum class BlendMode { Opaque, Alpha, PremultipliedAlpha, Additive, Transmitted };
 
 struct GraphicsPipelineDesc {
   std::span<const std::uint32_t> vertexSpirv;

@@ -24,6 +24,16 @@ struct SkyRadiance {
   engine::render::TextureHandle texture;
 };
 
+// The sky with its clouds in it (the same layout and units as SkyRadiance): the clouds' sky
+// light, kept in GENERAL. Put before the scene by the clouds' feature when it makes one; its pass
+// refreshes a part of it after the scene each frame, so a reader in the scene (a reflection)
+// sees the sky as the frames before made it. Its texels hold a sky once a frame has made it:
+// read it while the scene's CoveredSkyLight (engine/render/exposure.h) is there, which the
+// feature publishes from completed frames' sky lights.
+struct CoveredSkyRadiance {
+  engine::render::TextureHandle texture;
+};
+
 // The haze between the camera and every distance (fxcontracts/aerial_perspective.glsl), its
 // radiance per unit of the sun's illuminance, kept in GENERAL. Published by the atmosphere's
 // feature, or by a renderer that hazes with a neutral volume of its own.
