@@ -87,10 +87,14 @@ TOWERING = {"coverage": 0.75, "cloudType": 0.9, "densityMultiplier": 1.5, "anvil
 CHANGE_SECONDS = 20.0
 CHANGE_START_SECONDS = 8.0  # 120 frames at 30 fps: 8 to 12 s, eased from 35% to 65% of it
 CHANGE_EFFECT = "a change of weather (its middle, against that weather held)"
+# Water: the lake scene (the default scene's cumulus over a lake in the foothills, most of the
+# view water) against the same view without it (its bed, the terrain, in its place).
+LAKE_SCENE = os.path.join(ROOT, "assets_src", "scenes", "lake.json")
+WATER_EFFECT = "water (the lake scene)"
 # Extra comparisons: (effect, the scene with it, its script, the scene without it).
 EXTRA = [(SUN_EFFECT, "sun in view"), (STORM_EFFECT, "storm"), (FLASH_EFFECT, "flashing"),
          (BOLT_EFFECT, "bolting"), (REGIONS_EFFECT, "storm front"),
-         (CHANGE_EFFECT, "weather changing")]
+         (CHANGE_EFFECT, "weather changing"), (WATER_EFFECT, "lake")]
 # Lightning's budget (1 ms a frame while flashes are active) is smaller than the frame sum's
 # noise (other passes swing by more between runs: the cloud shadows' is bimodal), so its cost is
 # also summed over the passes it changes only: the frame graph's scene pass (the terrain's
@@ -107,6 +111,7 @@ WITH_SCENES = {
     "storm front": "the storm front without lightning, everything",
     "weather changing": "the default scene as its weather changes",
     CHANGE_EFFECT: "the default scene, the change's midpoint held",
+    "lake": "the lake scene, everything",
 }
 LIGHTNING_EFFECTS = [STORM_EFFECT, FLASH_EFFECT, BOLT_EFFECT]
 # Weather's cost in the passes it may change: the cloud shadow map's cascades and the march.
@@ -306,7 +311,7 @@ def main():
             with open(path) as f:
                 return json.load(f)
         sun, storm, calm = load(SUN_SCENE), load(STORM_SCENE), load(CALM_STORM_SCENE)
-        front = load(FRONT_SCENE)
+        front, lake = load(FRONT_SCENE), load(LAKE_SCENE)
         variants = [("everything", base, lambda s: None)]
         variants += [(name, base, edit) for name, edit in EFFECTS]
         variants += [("sun in view", sun, lambda s: None),
@@ -320,7 +325,9 @@ def main():
                      ("storm front", front, calm_front),
                      (REGIONS_EFFECT, front, without_regions),
                      ("weather changing", base, changing_weather),
-                     (CHANGE_EFFECT, base, midway_weather)]
+                     (CHANGE_EFFECT, base, midway_weather),
+                     ("lake", lake, lambda s: None),
+                     (WATER_EFFECT, lake, without("water"))]
         for name, source, edit in variants:
             scene = copy.deepcopy(source)
             edit(scene)
@@ -359,7 +366,7 @@ def main():
         f"headless, {args.width}x{args.height}, Medium, `LP_NUM_THREADS=2`, on this project's "
         "machine; one uncounted run first). Each round "
         "renders the default scene with every effect and once without each, the scenes "
-        "below with and without god rays, lightning or weather regions, and a change of "
+        "below with and without god rays, lightning, weather regions or water, and a change of "
         "weather and its midpoint held, interleaved. GPU "
         "time is the frame's: the sum of the per-pass GPU-timestamp medians the sample prints; "
         "the cost is the median of the paired differences (the range in brackets). What the "

@@ -12,6 +12,12 @@ const uint kTerrainFrameBinding = 0;     // SceneFrame (scene_constants.h)
 const uint kTerrainHazeBinding = 1;      // the aerial perspective (3D), hazed variants only
 const uint kTerrainSunlightBinding = 2;  // the terrain's sunlight map, shadowed variants only
 
+// The water (water.vert, water_fragment.glsl; WaterRenderer, the scene pass).
+const uint kWaterFrameBinding = 0;     // SceneFrame
+const uint kWaterHazeBinding = 1;      // the aerial perspective (3D), hazed variants only
+const uint kWaterSunlightBinding = 2;  // the terrain's sunlight map, shadowed variants only
+const uint kWaterSkyBinding = 3;       // the sky it reflects (equirectangular), hazed variants only
+
 // The terrain's sunlight map (terrain_sunlight.comp; TerrainSunlight).
 const uint kSunlightHeightfieldBinding = 0;       // the terrain's heightfield
 const uint kSunlightCloudShadowBinding = 1;       // the clouds' shadow map

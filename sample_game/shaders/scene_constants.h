@@ -5,6 +5,7 @@
 #include "interop.h"
 #include "terrain_material.h"
 #include "terrain_sunlight_map.h"
+#include "water_surface.h"
 
 SHADER_NAMESPACE_BEGIN
 
@@ -31,8 +32,18 @@ struct SceneFrame {
   // radius (m) of the glowing cloud around it; and that cloud's radiance (rgb; 0: no flash).
   vec4 flash;
   vec4 flashRadiance;
+  // The water (a scene's lake or sea; water_surface.h): x its level (m above sea level), y its
+  // clarity (the share of the bed seen straight down), zw unused; its body's albedo (rgb); where
+  // a bed lies under it (the terrain's extent: xy the lowest x and z, zw the highest; beyond it
+  // the sea is deep and shows none); each ripple's phase at the camera (radians, waves 0 to 3
+  // then 4 to 7: waterPhasesAt(), made on the CPU in double precision).
+  vec4 water;
+  vec4 waterColour;
+  vec4 waterBed;
+  vec4 waterPhases;
+  vec4 waterPhasesHigh;
 };
-SHADER_STATIC_ASSERT(sizeof(SceneFrame) == 64 + 17 * 16);
+SHADER_STATIC_ASSERT(sizeof(SceneFrame) == 64 + 22 * 16);
 
 // Sky radiance along a view direction: a zenith-to-horizon blend, ground below, a sun disc and
 // its glow. Shared so the terrain's fog fades to exactly the sky behind it.

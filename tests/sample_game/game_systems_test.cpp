@@ -22,6 +22,7 @@
 #include "game/terrain_height.h"
 #include "game/terrain_placement.h"
 #include "game/time_of_day.h"
+#include "game/water.h"
 #include "render/terrain_materials.h"
 #include "render/terrain_renderer.h"
 
@@ -134,6 +135,23 @@ TEST(Flight, NeverGoesThroughTheGroundAndCanClimbAboveTheClouds) {
   w.input().release(Key::Up);
   w.step(0.1, 150);
   EXPECT_GT(w.camera().position.y, 5000.0) << "climbs above a 1.5-4 km cloud layer";
+}
+
+// Over a lake the floor is its surface: a diving pilot skims the water, never goes under it.
+TEST(Flight, SkimsTheWaterAndNeverDivesUnderIt) {
+  FlightWorld w({500, 900, 0});  // over the ramp where the ground is at 750 m
+  auto mesh = ramp();
+  w.app.world().ctx().emplace<sample::TerrainHeightField>(mesh, 64u);
+  w.app.world().ctx().emplace<sample::WaterSurface>(sample::WaterSurface{820.0});
+  w.input().press(Key::Up);  // dive
+  w.aircraft().speedMetresPerSecond = 300.0;
+  double lowest = 1e9;
+  for (int i = 0; i < 50; ++i) {
+    w.step(0.05, 1);
+    lowest = std::min(lowest, w.camera().position.y);
+    ASSERT_GE(w.camera().position.y, 820.0 + 4.9) << "under the water at frame " << i;
+  }
+  EXPECT_LT(lowest, 820.0 + 5.1) << "the dive reached the water";
 }
 
 TEST(Flight, TeleportsSetThePoseAndMarkACameraCut) {

@@ -3,7 +3,8 @@
 // inside a cloud, noon, sunset, cumulus overhead, towards the sun, an overcast stratus deck,
 // a ridge shading clouds at sunset, cloud shadows on the plains at noon, flying inside the
 // layer at High and Medium, hero clouds outside, inside, at sunset and in a storm, the default
-// view under each built-in weather state, a storm front over the range: the review
+// view under each built-in weather state, a storm front over the range, a lake and water sorting
+// with clouds: the review
 // set's views among them) and each is compared with its
 // committed golden image by the tolerance tree in golden_compare.h. Every run writes the actual
 // images to build/golden_output/ (what tools/promote_goldens.sh copies into tests/goldens/); a
@@ -68,6 +69,10 @@ std::vector<GoldenRun> goldenRuns() {
       // A superstorm (a weather region with a vortex) over the range: from outside its eye
       // wall, and from above its bands.
       {tests / "scenes/superstorm.json", tests / "scripts/golden_superstorm_views.json"},
+      // Water: the shipped lake reflecting the cloudy sky, and the water sorting with clouds
+      // (a small cloud over a deep lake composited over it, one under its surface hidden).
+      {fs::path(SAMPLE_ASSET_DIR) / "scenes/lake.json", tests / "scripts/golden_lake_views.json"},
+      {tests / "scenes/water_sorting.json", tests / "scripts/golden_water_sorting_views.json"},
       // Flying inside a tall layer over the ground, at High and Medium: frames rebuilt from
       // their own rays, without a pattern of them.
       {tests / "scenes/inside_layer_over_terrain.json",

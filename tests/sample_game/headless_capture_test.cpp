@@ -24,55 +24,14 @@
 
 #include "engine/assets/image_io.h"
 #include "engine/core/json_reader.h"
+#include "sample_runs.h"
 #include "vdb_test_files.h"
 
 namespace {
 
 namespace fs = std::filesystem;
 using engine::assets::ImageRgba32f;
-
-int runSample(const std::string& arguments) {
-  const std::string command = std::string(SAMPLE_GAME_EXE) + " " + arguments;
-  const int status = std::system(command.c_str());
-  return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-}
-
-// What the sample prints where `redirection` sends it to the pipe (e.g. "2>/dev/null": its
-// stdout; "2>&1 >/dev/null": its stderr).
-std::string runSampleCapturing(const std::string& arguments, const char* redirection) {
-  const std::string command = std::string(SAMPLE_GAME_EXE) + " " + arguments + " " + redirection;
-  std::unique_ptr<FILE, int (*)(FILE*)> pipe(popen(command.c_str(), "r"), pclose);
-  std::string out;
-  std::array<char, 512> buffer{};
-  while (pipe && std::fgets(buffer.data(), buffer.size(), pipe.get()) != nullptr)
-    out += buffer.data();
-  return out;
-}
-
-std::string runSampleOutput(const std::string& arguments) {
-  return runSampleCapturing(arguments, "2>/dev/null");
-}
-
-// What the sample writes to stderr (its stdout discarded).
-std::string runSampleErrors(const std::string& arguments) {
-  return runSampleCapturing(arguments, "2>&1 >/dev/null");
-}
-
-fs::path freshDir(const char* name) {
-  const fs::path dir = fs::temp_directory_path() / "cloudscape_sample_tests" / name;
-  fs::remove_all(dir);
-  return dir;
-}
-
-std::string scene(const char* name) {
-  return std::string(SAMPLE_TEST_DIR) + "/scenes/" + name;
-}
-
-// The text of a shipped scene (assets_src/scenes/<name>), for a test to edit.
-std::string shippedSceneText(const char* name) {
-  std::ifstream in(fs::path(SAMPLE_ASSET_DIR) / "scenes" / name);
-  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
-}
+using namespace sample_tests;
 
 // The frame series (--frame-series) by column name: each row's field, as written.
 std::map<std::string, std::vector<std::string>> readFrameSeries(const fs::path& file) {
@@ -263,7 +222,7 @@ INSTANTIATE_TEST_SUITE_P(HeadlessCapture, EveryScene, testing::ValuesIn(shippedS
 
 // The two suites above see the scenes (an empty folder would make them vacuous).
 TEST(HeadlessCapture, TheShippedScenesAreFound) {
-  ASSERT_GE(shippedScenes().size(), 9u);
+  ASSERT_GE(shippedScenes().size(), 10u);
 }
 
 TEST(HeadlessCapture, EachSceneGetsOnlyThePassesAndPipelinesItNeeds) {
@@ -323,6 +282,15 @@ TEST(HeadlessCapture, EachSceneGetsOnlyThePassesAndPipelinesItNeeds) {
        R"("passes": ["cloud shadows", "terrain sunlight", "atmosphere", "scene", "clouds", )"
        R"("clouds composite", "tonemap", "capture"])",
        R"x("atmosphere module", "clouds module (shadow map, terrain shadow, hero clouds, sky light)"])x",
+       R"("modules": ["atmosphere", "clouds"])"},
+      // A lake: the water's pipeline (lit through the terrain's sunlight map), drawn in the
+      // scene pass; no pass of its own. The scenes above have no water pipeline.
+      {SAMPLE_ASSET_DIR + std::string("/scenes/lake.json"),
+       R"("passes": ["cloud shadows", "terrain sunlight", "atmosphere", "scene", "clouds", )"
+       R"("clouds composite", "tonemap", "capture"])",
+       R"x("pipelines": ["tonemap", "terrain (cloud shadows)", "terrain sunlight", )x"
+       R"x("water (cloud shadows)", "atmosphere module", )x"
+       R"x("clouds module (shadow map, terrain shadow, god rays, sky light)"])x",
        R"("modules": ["atmosphere", "clouds"])"},
       // A layer that casts no shadows: no shadow pass, the plain terrain.
       {scene("unshadowed_clouds.json"),

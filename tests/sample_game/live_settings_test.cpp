@@ -3,6 +3,7 @@
 // and the scene to save folds in the camera's preset and budget.
 #include "game/live_settings.h"
 #include "game/scene_hot_reload.h"
+#include "game/water.h"
 
 #include <gtest/gtest.h>
 
@@ -225,6 +226,29 @@ TEST(SceneHotReload, AppliesWhatTheFileChangedAndSaysWhatWaitsForARestart) {
   w.world.view<const sample::TimeOfDay>().each(
       [](const sample::TimeOfDay& t) { EXPECT_EQ(t.hours, 8.0); });
   EXPECT_FALSE(w.scene().terrain.has_value()) << "the running scene has no terrain yet";
+}
+
+// The water's level, colour and clarity apply while flying (the renderer reads them every frame);
+// water brought in or taken away waits for a restart.
+TEST(SceneHotReload, TheWatersLevelAppliesWhileFlying) {
+  LiveWorld w;
+  sample::SceneDescription before = w.scene();
+  before.water = sample::WaterDescription{215.0, glm::dvec3(0.01, 0.03, 0.04), 0.35};
+  w.world.ctx().get<sample::LiveScene>().scene.water = before.water;
+  w.world.ctx().emplace<sample::WaterSurface>(sample::WaterSurface{215.0});
+  sample::SceneDescription next = before;
+  next.water->levelMetres = 240.0;
+  next.water->clarity = 0.1;
+  EXPECT_EQ(sample::applyReloadedScene(w.world, before, next), "applied");
+  EXPECT_EQ(w.world.ctx().get<sample::WaterSurface>().levelMetres, 240.0);
+  EXPECT_FLOAT_EQ(float(w.world.ctx().get<sample::WaterSurface>().clarity), 0.1f);
+  EXPECT_EQ(w.scene().water->levelMetres, 240.0) << "what a save writes";
+
+  before = next;
+  next.water.reset();
+  EXPECT_NE(sample::applyReloadedScene(w.world, before, next).find("water on or off"),
+            std::string::npos);
+  EXPECT_EQ(w.world.ctx().get<sample::WaterSurface>().levelMetres, 240.0) << "until a restart";
 }
 
 }  // namespace

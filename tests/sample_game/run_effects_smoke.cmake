@@ -2,7 +2,7 @@
 # write a table with a row per effect, each saying what the scene without it lacks; the god
 # rays' row names their pipelines and memory, and the terrain shadows' adds no memory; and
 # lightning's cost is summed over the passes it changes; weather regions and a change of weather
-# have their rows; the HUD has its table too.
+# have their rows; the water's row names its pipeline; the HUD has its table too.
 # Inputs: PYTHON, SCRIPT, SAMPLE (the executable), OUT_DIR.
 file(REMOVE_RECURSE "${OUT_DIR}")
 execute_process(
@@ -23,7 +23,8 @@ foreach(row "| terrain |" "| clouds |" "| atmosphere |" "| cloud shadows |"
             "| terrain shadows |" "| god rays |" "| god rays, sun in view |" "| cloud sky light |"
             "| lightning |"
             "| lightning, a flash always active |" "| weather regions (the storm front) |"
-            "| a change of weather (its middle, against that weather held) |")
+            "| a change of weather (its middle, against that weather held) |"
+            "| water (the lake scene) |")
   string(FIND "${report}" "${row}" at)
   if(at EQUAL -1)
     message(FATAL_ERROR "results.md has no row ${row}")
@@ -41,6 +42,9 @@ expect_in_report("\\| weather regions \\(the storm front\\) \\|[^\n]*clouds modu
                  "the weather regions' row does not name their pipelines")
 expect_in_report("\\| a change of weather [^|]*\\|[^|]*\\|[^|]*\\|[^|]*\\| - \\| - \\|"
                  "a change of weather adds passes or pipelines")
+# The water is drawn in the scene pass: its pipeline, no pass of its own.
+expect_in_report("\\| water \\(the lake scene\\) \\|[^|]*\\|[^|]*\\|[^|]*\\| - \\| water \\(cloud shadows\\) \\|"
+                 "the water's row does not name its pipeline alone")
 expect_in_report("\\| terrain shadows \\|[^\n]*\\| 0\\.00 \\|"
                  "the terrain shadows' row adds memory")
 # Lightning's cost in the passes it changes: a row per lightning comparison, with the bolts' pass.

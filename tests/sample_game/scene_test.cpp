@@ -204,6 +204,28 @@ TEST(Scenes, AtmosphereFogAndExposureArriveInTheDescription) {
   EXPECT_FALSE(fogged.atmosphere.has_value());
 }
 
+// A lake: its level, colour and clarity, the defaults where the scene gives none, and all of it
+// written back as read.
+TEST(Scenes, WaterArrivesInTheDescription) {
+  const sample::SceneDescription s = loadSceneDescription(writeScene("water.json", R"({
+    "name": "w", "camera": {"position": [0, 300, 0]},
+    "water": {"levelMetres": 215, "colour": [0.02, 0.04, 0.05], "clarity": 0.6}})"));
+  ASSERT_TRUE(s.water.has_value());
+  EXPECT_DOUBLE_EQ(s.water->levelMetres, 215.0);
+  EXPECT_EQ(s.water->colour, glm::dvec3(0.02, 0.04, 0.05));
+  EXPECT_DOUBLE_EQ(s.water->clarity, 0.6);
+  const std::string written = sample::sceneJson(s);
+  EXPECT_EQ(sample::sceneJson(loadSceneDescription(writeScene("water_back.json", written))),
+            written);
+  const sample::SceneDescription plain = loadSceneDescription(writeScene("water_plain.json", R"({
+    "name": "w", "camera": {"position": [0, 300, 0]}, "water": {"levelMetres": -20}})"));
+  ASSERT_TRUE(plain.water.has_value());
+  EXPECT_DOUBLE_EQ(plain.water->clarity, sample::WaterDescription{}.clarity);
+  EXPECT_FALSE(loadSceneDescription(writeScene("dry.json", R"({
+    "name": "d", "camera": {"position": [0, 300, 0]}})"))
+                   .water.has_value());
+}
+
 // A storm whose cells the weather places: found where it holds cumulonimbus, the ones given
 // otherwise.
 TEST(Scenes, AStormsCellsComeFromTheWeatherOrTheScene) {
@@ -414,6 +436,20 @@ TEST(Scenes, MalformedScenesNameFilePathAndReason) {
        R"({"name": "x", "camera": {"position": [0, 1, 0]}, "terrain": {"gltf": "nowhere.glb"}})",
        "terrain.gltf: file not found"},
       {"syntax.json", R"({"name": "x", )", "not valid JSON"},
+      {"water_level.json",
+       R"({"name": "x", "camera": {"position": [0, 1, 0]}, "water": {"levelMetres": 2e4}})",
+       "water.levelMetres: must be in [-1000, 10000], got 20000"},
+      {"water_level_missing.json",
+       R"({"name": "x", "camera": {"position": [0, 1, 0]}, "water": {"clarity": 0.5}})",
+       "water.levelMetres: is required"},
+      {"water_clarity.json",
+       R"({"name": "x", "camera": {"position": [0, 1, 0]},
+           "water": {"levelMetres": 0, "clarity": 1.5}})",
+       "water.clarity: must be in [0, 1], got 1.5"},
+      {"water_colour.json",
+       R"({"name": "x", "camera": {"position": [0, 1, 0]},
+           "water": {"levelMetres": 0, "colour": [0.1, 0.1]}})",
+       "water.colour: must be an array of 3 numbers"},
       {"root.json", R"([1, 2, 3])", "(root): must be an object"},
       {"altitude.json", R"({"name": "x", "camera": {"position": [0, -5, 0]}})",
        "camera.position: altitude (y) must be in [0, 50000] m"},

@@ -11,6 +11,7 @@
 #include "engine/render/scene_components.h"
 #include "game/game_components.h"
 #include "game/terrain_height.h"
+#include "game/water.h"
 
 namespace sample {
 namespace {
@@ -78,6 +79,7 @@ void installFlight(engine::ecs::Scheduler& scheduler) {
         const double dt = world.ctx().get<engine::ecs::FrameTime>().deltaSeconds;
         const InputState& input = world.ctx().get<InputState>();
         const auto* terrain = world.ctx().tryGet<TerrainHeightField>();
+        const auto* water = world.ctx().tryGet<WaterSurface>();
         auto& poses = world.events<SetCameraPose>();
         world.view<Aircraft, Camera>().each([&](Aircraft& aircraft, Camera& camera) {
           camera.cut = false;
@@ -91,8 +93,10 @@ void installFlight(engine::ecs::Scheduler& scheduler) {
           const double boost = input.isDown(Key::LeftShift) ? 4.0 : 1.0;
           camera.position +=
               engine::render::forwardOf(camera) * (aircraft.speedMetresPerSecond * boost * dt);
-          const double ground =
+          // The floor: the terrain, or the water over it (a pilot skims a lake, never dives).
+          double ground =
               terrain != nullptr ? terrain->heightAt(camera.position.x, camera.position.z) : 0.0;
+          if (water != nullptr) ground = std::max(ground, water->levelMetres);
           camera.position.y = std::clamp(camera.position.y, ground + aircraft.groundClearanceMetres,
                                          aircraft.ceilingMetres);
         });

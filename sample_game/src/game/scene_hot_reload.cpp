@@ -11,6 +11,7 @@
 #include "game/cloud_quality_controls.h"
 #include "game/game_components.h"
 #include "game/live_settings.h"
+#include "game/water.h"
 #include "scene/scene_writer.h"
 
 namespace sample {
@@ -99,6 +100,17 @@ void applyExposureAndFog(World& world, SceneDescription& running, const SceneDes
   }
 }
 
+// The water's level, colour and clarity (water there before and after: the renderer reads them
+// every frame).
+void applyWater(World& world, SceneDescription& running, const SceneDescription& before,
+                const SceneDescription& next) {
+  if (!before.water || !next.water || !running.water) return;
+  const WaterDescription& is = *next.water;
+  world.ctx().emplaceOrReplace<WaterSurface>(
+      WaterSurface{is.levelMetres, glm::vec3(is.colour), is.clarity});
+  running.water = is;
+}
+
 void applyCamera(World& world, SceneDescription& running, const SceneDescription& before,
                  const SceneDescription& next) {
   const bool preset = next.camera.cloudQuality != before.camera.cloudQuality;
@@ -174,6 +186,7 @@ std::string applyReloadedScene(World& world, const SceneDescription& before,
   const bool cloudsApplied = applyClouds(world, running, before, next);
   applySun(world, running, before, next);
   applyExposureAndFog(world, running, before, next);
+  applyWater(world, running, before, next);
   applyCamera(world, running, before, next);
   // The file's other changes: the new file with the sections applied as they were before.
   SceneDescription rest = next;
@@ -181,12 +194,13 @@ std::string applyReloadedScene(World& world, const SceneDescription& before,
   rest.sun = before.sun;
   rest.exposure = before.exposure;
   if (before.fog && next.fog) rest.fog = before.fog;
+  if (before.water && next.water) rest.water = before.water;
   rest.camera.cloudQuality = before.camera.cloudQuality;
   rest.camera.cloudKnobs = before.camera.cloudKnobs;
   rest.camera.frameTargetMilliseconds = before.camera.frameTargetMilliseconds;
   if (sceneJson(rest) == sceneJson(before)) return "applied";
   return "applied; other changes (terrain, atmosphere, storm, hero clouds, the camera's start, "
-         "shadows or god rays on or off) take effect at restart";
+         "shadows, god rays or water on or off) take effect at restart";
 }
 
 void installSceneHotReload(engine::ecs::Scheduler& scheduler, const SceneDescription& scene) {

@@ -4,9 +4,9 @@
 // load is reported (LiveScene::reloadStatus, the settings panel and the log) and the running
 // scene kept. One that loads is applied where it changed and can be while flying: the cloud
 // layer's look (the whole layer, over what the panel changed in it), the sun and its clock,
-// the exposure, the fog, the camera's cloud preset and frame budget.
-// Anything else (terrain, atmosphere, storm, hero clouds, the camera's start, shadows or god
-// rays switched) waits for a restart, and the status says so.
+// the exposure, the fog, the water's level, colour and clarity, the camera's cloud preset and
+// frame budget. Anything else (terrain, atmosphere, storm, hero clouds, the camera's start,
+// shadows, god rays or water switched) waits for a restart, and the status says so.
 #include <cstdint>
 #include <filesystem>
 #include <string>

@@ -19,8 +19,10 @@
 #include "engine/render/exposure.h"
 #include "engine/render/gpu_frame_time.h"
 #include "engine/render/scene_components.h"
+#include "game/water.h"
 #include "render/hud.h"
 #include "render/terrain_renderer.h"
+#include "render/water_renderer.h"
 #include "scene/scene_loader.h"
 
 namespace sample {
@@ -70,6 +72,18 @@ Renderer::Renderer(gfx::Device& device, render::PresentTarget& target, ecs::Worl
         world.ctx().emplaceOrReplace<render::TerrainHeightfield>(heightfield_->description());
         world_ = &world;
       }
+    }
+  }
+  // A lake or sea: hazed and lit like the terrain (through its sunlight map under shadow-casting
+  // clouds), its bed the terrain's extent.
+  if (world.ctx().tryGet<WaterSurface>() != nullptr) {
+    water_ = std::make_unique<WaterRenderer>(device, kHdrFormat, kDepthFormat, featureSky,
+                                             sunlight_ != nullptr);
+    pipelines.push_back(&water_->pipeline());
+    waterBed_ = glm::vec4(1.0f, 1.0f, -1.0f, -1.0f);  // none
+    if (const auto* mesh = world.ctx().tryGet<TerrainMesh>()) {
+      waterBed_ = glm::vec4(mesh->mesh->boundsMin.x, mesh->mesh->boundsMin.z,
+                            mesh->mesh->boundsMax.x, mesh->mesh->boundsMax.z);
     }
   }
   if (options.hud) {
@@ -158,18 +172,20 @@ void Renderer::rebuildGraph(VkExtent2D extent) {
     scene = feature->addPassesBeforeScene(graph, scene);
   }
   if (sky_) scene.hdr = addSkyPass(graph, *sky_, hdrDesc, &sceneFrame_);
-  if (terrain_ && terrain_->hazedByAerialPerspective() &&
-      !graph.blackboard().has<fxcontracts::ecs::AerialPerspective>()) {
+  const bool hazed = (terrain_ && terrain_->hazedByAerialPerspective()) ||
+                     (water_ && water_->hazedByAerialPerspective());
+  if (hazed && !graph.blackboard().has<fxcontracts::ecs::AerialPerspective>()) {
     fxcontracts::ecs::AerialPerspective noHaze;
     noHaze.volume = importNoHaze(graph);
     noHaze.slices = 1;
     noHaze.rangeMetres = 1.0f;
     graph.blackboard().put(noHaze);
   }
-  // The opaque scene, and a feature's sky behind it: a graphics pass whenever either exists.
-  if (terrain_ || !skyDrawers_.empty()) {
-    const SceneTargets targets = addScenePass(graph, terrain_.get(), scene, sunlight, skyDrawers_,
-                                              kHdrFormat, kDepthFormat, &sceneFrame_);
+  // The scene's surfaces, and a feature's sky behind them: a graphics pass whenever one exists.
+  if (terrain_ || water_ || !skyDrawers_.empty()) {
+    const SceneTargets targets =
+        addScenePass(graph, {terrain_.get(), water_.get()}, scene, sunlight, skyDrawers_,
+                     kHdrFormat, kDepthFormat, &sceneFrame_);
     scene.hdr = targets.hdr;
     scene.depth = targets.depth;
   }
@@ -237,6 +253,18 @@ void Renderer::updateFrameConstants(ecs::World& world, VkExtent2D extent) {
     f.flashRadiance = glm::vec4(flashes[0].radiance, 0.0f);
   }
   if (terrain_) terrain_->setFlashing(!flashes.empty());
+  // The water as the scene has it now (a reloaded scene file may move its level).
+  if (const auto* water = water_ ? world.ctx().tryGet<WaterSurface>() : nullptr) {
+    f.water = glm::vec4(float(water->levelMetres), float(water->clarity), 0.0f, 0.0f);
+    f.waterColour = glm::vec4(water->colour, 0.0f);
+    f.waterBed = waterBed_;
+    const shaders::WaterPhases phases =
+        shaders::waterPhasesAt(glm::dvec2(camera.position.x, camera.position.z),
+                               world.ctx().get<ecs::FrameTime>().elapsedSeconds);
+    f.waterPhases = phases.first;
+    f.waterPhasesHigh = phases.second;
+  }
+  sceneFrame_.reflectsCoveredSky = covered != nullptr;
   tonemap_.exposure = render::exposureScale(world.ctx().get<render::Exposure>().ev100);
 
   if (terrain_) terrain_->cull(f.viewProjection, camera.position);
@@ -333,6 +361,7 @@ std::vector<std::string> Renderer::pipelineNames() const {
     for (const gfx::Pipeline* pipeline : terrain_->pipelines()) names.push_back(pipeline->name());
   }
   if (sunlight_) names.push_back(sunlight_->pipeline().name());
+  if (water_) names.push_back(water_->pipeline().name());
   if (hud_) names.push_back(hud_->pipeline().name());
   for (const render::RenderFeature* feature : features_) {
     std::string name = std::string(feature->name()) + " module";

@@ -1,6 +1,6 @@
 #pragma once
 // The sample's renderer. It looks at the world once to decide which passes the scene needs:
-//   [features before the scene: atmosphere, atmosphere sky] or [sky] -> [terrain] ->
+//   [features before the scene: atmosphere, atmosphere sky] or [sky] -> [terrain, water] ->
 //   [features after the scene: clouds, clouds composite] -> tonemap -> [hud] -> capture
 // (its own gradient sky only when no feature draws the sky; the terrain hazed by the sky
 // feature's aerial perspective, else fogged; terrain only with a terrain; the
@@ -33,6 +33,7 @@
 namespace sample {
 
 class TerrainRenderer;
+class WaterRenderer;
 class Hud;
 
 struct RendererOptions {
@@ -87,6 +88,8 @@ class Renderer {
   std::unique_ptr<SkyPass> sky_;  // when no feature draws the sky
   std::unique_ptr<TerrainRenderer> terrain_;
   engine::shaders::TerrainMaterials terrainMaterials_{};  // SceneFrame::terrain
+  std::unique_ptr<WaterRenderer> water_;                  // a scene with water only
+  glm::vec4 waterBed_{0.0f};  // SceneFrame::waterBed: the terrain's extent (x, z), or none
   // Under shadow-casting clouds, the terrain's heightfield (published as
   // engine::render::TerrainHeightfield when the terrain casts shadows: then world_ is set) and
   // the sunlight map made over it.

@@ -7,7 +7,7 @@ namespace sample {
 
 using namespace engine;
 
-SceneTargets addScenePass(render::FrameGraph& graph, const TerrainRenderer* terrain,
+SceneTargets addScenePass(render::FrameGraph& graph, SceneSurfaces surfaces,
                           const render::SceneTextures& scene, render::TextureHandle sunlight,
                           std::span<render::RenderFeature* const> skyDrawers, VkFormat hdrFormat,
                           VkFormat depthFormat, const SceneFrameBinding* frame) {
@@ -15,10 +15,19 @@ SceneTargets addScenePass(render::FrameGraph& graph, const TerrainRenderer* terr
     SceneTargets targets;
     render::TextureHandle haze;
     render::TextureHandle sunlight;
+    render::TextureHandle clearSky;    // the water's reflection: the atmosphere's sky map
+    render::TextureHandle coveredSky;  // or the clouds' sky light, once it holds a sky
   };
+  const TerrainRenderer* terrain = surfaces.terrain;
+  const WaterRenderer* water = surfaces.water;
   const bool featureSky = !skyDrawers.empty();
   const auto* haze = graph.blackboard().find<fxcontracts::ecs::AerialPerspective>();
   const auto* sky = graph.blackboard().find<fxcontracts::ecs::SkyRadiance>();
+  const auto* covered = graph.blackboard().find<fxcontracts::ecs::CoveredSkyRadiance>();
+  const bool hazed = (terrain != nullptr && terrain->hazedByAerialPerspective()) ||
+                     (water != nullptr && water->hazedByAerialPerspective());
+  const bool shadowed = (terrain != nullptr && terrain->shadowedByClouds()) ||
+                        (water != nullptr && water->shadowedByClouds());
   const Data& data = graph.addPass<Data>(
       featureSky ? "scene" : "terrain", render::PassType::Graphics,
       [&](render::PassBuilder& builder, Data& d) {
@@ -32,45 +41,74 @@ SceneTargets addScenePass(render::FrameGraph& graph, const TerrainRenderer* terr
         desc.format = depthFormat;
         d.targets.depth = builder.depthAttachment(builder.createTexture("scene depth", desc),
                                                   VK_ATTACHMENT_LOAD_OP_CLEAR);
-        if (terrain != nullptr && terrain->hazedByAerialPerspective() && haze != nullptr) {
+        if (hazed && haze != nullptr) {
           d.haze = builder.read(haze->volume, render::Access::SampledReadGeneral);
         }
-        if (terrain != nullptr && terrain->shadowedByClouds()) {
-          d.sunlight = builder.read(sunlight, render::Access::SampledReadGeneral);
-        }
+        if (shadowed) d.sunlight = builder.read(sunlight, render::Access::SampledReadGeneral);
         // The sky reads what the feature recorded before the scene (ordered after it; the
         // feature synchronises its own images).
-        if (featureSky && sky != nullptr) {
-          builder.read(sky->texture, render::Access::SampledReadGeneral);
+        const bool reflects = water != nullptr && water->hazedByAerialPerspective();
+        if (sky != nullptr && (featureSky || reflects)) {
+          d.clearSky = builder.read(sky->texture, render::Access::SampledReadGeneral);
+        }
+        if (reflects && covered != nullptr) {
+          d.coveredSky = builder.read(covered->texture, render::Access::SampledReadGeneral);
         }
       },
-      [terrain, frame, skyDrawers](const Data& d, render::PassContext& context) {
-        if (terrain != nullptr) {
-          gfx::ConstantRing::Slice constants = frame->slice;
-          if (d.haze.valid()) {
-            // The haze's reach as its pass (ordered before this one) wrote it this frame.
-            const auto& air = context.blackboard().get<fxcontracts::ecs::AerialPerspective>();
-            shaders::SceneFrame hazed = frame->data;
-            hazed.fog.y = air.rangeMetres;
-            hazed.fog.z = float(air.slices);
-            constants = context.constants().push(hazed);
-          }
+      [surfaces, frame, skyDrawers](const Data& d, render::PassContext& context) {
+        gfx::ConstantRing::Slice constants = frame->slice;
+        if (d.haze.valid()) {
+          // The haze's reach as its pass (ordered before this one) wrote it this frame.
+          const auto& air = context.blackboard().get<fxcontracts::ecs::AerialPerspective>();
+          shaders::SceneFrame hazedFrame = frame->data;
+          hazedFrame.fog.y = air.rangeMetres;
+          hazedFrame.fog.z = float(air.slices);
+          constants = context.constants().push(hazedFrame);
+        }
+        if (const TerrainRenderer* ground = surfaces.terrain) {
           gfx::DescriptorWriter writer;
           writer.uniformBuffer(TerrainRenderer::kFrameBinding, constants.buffer, constants.offset,
                                constants.size);
-          if (d.haze.valid()) {
+          if (ground->hazedByAerialPerspective()) {
             writer.combinedImageSampler(TerrainRenderer::kHazeBinding, context.view(d.haze),
-                                        terrain->linearSampler(), VK_IMAGE_LAYOUT_GENERAL);
+                                        ground->linearSampler(), VK_IMAGE_LAYOUT_GENERAL);
           }
-          if (d.sunlight.valid()) {
+          if (ground->shadowedByClouds()) {
             writer.combinedImageSampler(TerrainRenderer::kSunlightBinding, context.view(d.sunlight),
-                                        terrain->linearSampler(), VK_IMAGE_LAYOUT_GENERAL);
+                                        ground->linearSampler(), VK_IMAGE_LAYOUT_GENERAL);
           }
-          context.bind(terrain->pipeline(), writer);
-          terrain->draw(context.cmd());
+          context.bind(ground->pipeline(), writer);
+          ground->draw(context.cmd());
         }
         for (render::RenderFeature* feature : skyDrawers)
           feature->drawSkyInScenePass(context.cmd());
+        // A hazed water reflects a sky map; in a frame with none (the atmosphere failed to
+        // prepare) it is not drawn.
+        const WaterRenderer* lake = surfaces.water;
+        if (lake != nullptr && lake->hazedByAerialPerspective() && !d.clearSky.valid() &&
+            !d.coveredSky.valid()) {
+          lake = nullptr;
+        }
+        if (lake != nullptr) {
+          gfx::DescriptorWriter writer;
+          writer.uniformBuffer(WaterRenderer::kFrameBinding, constants.buffer, constants.offset,
+                               constants.size);
+          if (lake->hazedByAerialPerspective()) {
+            writer.combinedImageSampler(WaterRenderer::kHazeBinding, context.view(d.haze),
+                                        lake->clampedSampler(), VK_IMAGE_LAYOUT_GENERAL);
+            const bool reflectCovered =
+                d.coveredSky.valid() && (frame->reflectsCoveredSky || !d.clearSky.valid());
+            writer.combinedImageSampler(WaterRenderer::kSkyBinding,
+                                        context.view(reflectCovered ? d.coveredSky : d.clearSky),
+                                        lake->skySampler(), VK_IMAGE_LAYOUT_GENERAL);
+          }
+          if (lake->shadowedByClouds()) {
+            writer.combinedImageSampler(WaterRenderer::kSunlightBinding, context.view(d.sunlight),
+                                        lake->clampedSampler(), VK_IMAGE_LAYOUT_GENERAL);
+          }
+          context.bind(lake->pipeline(), writer);
+          lake->draw(context.cmd());
+        }
       });
   return data.targets;
 }

@@ -13,6 +13,9 @@ namespace sample {
 struct SceneFrameBinding {
   engine::shaders::SceneFrame data{};
   engine::gfx::ConstantRing::Slice slice{};  // valid while the frame records
+  // The water reflects the clouds' sky light this frame (fxcontracts::ecs::CoveredSkyRadiance:
+  // the frames before made it), else the clear sky's map.
+  bool reflectsCoveredSky = false;
 };
 
 class SkyPass {

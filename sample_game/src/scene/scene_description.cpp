@@ -217,6 +217,15 @@ FogDescription readFog(const JsonReader& r) {
   return f;
 }
 
+WaterDescription readWater(const JsonReader& r) {
+  WaterDescription w;
+  w.levelMetres = r.number("levelMetres", -1000.0, 10000.0);
+  w.colour = r.vec3("colour", 0.0, 1.0, w.colour);
+  w.clarity = r.number("clarity", 0.0, 1.0, w.clarity);
+  r.finish();
+  return w;
+}
+
 ExposureDescription readExposure(const JsonReader& r) {
   ExposureDescription e;
   e.automatic = r.choice("mode", {"auto", "manual"}, "auto") == "auto";
@@ -316,6 +325,7 @@ SceneDescription loadSceneDescription(const std::filesystem::path& file) {
   if (scene.atmosphere && scene.fog) {
     root.fail("fog", "a scene has an atmosphere or fog, not both (the atmosphere hazes itself)");
   }
+  if (root.has("water")) scene.water = readWater(root.object("water"));
   if (root.has("exposure")) scene.exposure = readExposure(root.object("exposure"));
   root.finish();
   return scene;

@@ -100,6 +100,14 @@ struct FogDescription {
   double densityPerMetre = 2e-5;
 };
 
+// A lake or sea at one level (the renderer's water: shaders/water_surface.h); the terrain below
+// it is its bed, and beyond the terrain it is deep.
+struct WaterDescription {
+  double levelMetres = 0.0;               // above sea level
+  glm::dvec3 colour{0.012, 0.03, 0.035};  // the water body's albedo
+  double clarity = 0.35;                  // the share of the bed seen straight down
+};
+
 struct ExposureDescription {
   bool automatic = true;        // "auto": metered from the sun and sky; "manual": ev100
   double ev100 = 15.0;          // manual
@@ -123,6 +131,7 @@ struct SceneDescription {
   std::optional<LightningDescription> lightning;    // with clouds only
   std::optional<AtmosphereDescription> atmosphere;  // exclusive with fog
   std::optional<FogDescription> fog;
+  std::optional<WaterDescription> water;
   ExposureDescription exposure;
 };
 

@@ -23,6 +23,7 @@
 #include "game/terrain_height.h"
 #include "game/terrain_placement.h"
 #include "game/time_of_day.h"
+#include "game/water.h"
 #include "render/terrain_materials.h"
 
 namespace sample {
@@ -190,6 +191,12 @@ void populateScene(ecs::App& app, const SceneDescription& scene,
                     scene.terrain ? scene.terrain->snowlineMetres : std::nullopt});
     const ecs::Entity entity = world.create();
     world.emplace<TerrainInstance>(entity, TerrainInstance{terrain->path});
+  }
+
+  // A lake or sea, for the renderer and the flight's floor.
+  if (scene.water) {
+    world.ctx().emplaceOrReplace<WaterSurface>(WaterSurface{
+        scene.water->levelMetres, glm::vec3(scene.water->colour), scene.water->clarity});
   }
 
   // The air, as data; the atmosphere module installs only when this exists.

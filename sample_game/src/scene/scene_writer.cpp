@@ -178,6 +178,12 @@ std::string sceneJson(const SceneDescription& scene) {
   if (scene.lightning) j["lightning"] = lightningJson(*scene.lightning, scene.weather.has_value());
   if (scene.atmosphere) j["atmosphere"] = atmosphereJson(*scene.atmosphere);
   if (scene.fog) j["fog"] = {{"densityPerMetre", scene.fog->densityPerMetre}};
+  if (scene.water) {
+    const glm::dvec3& c = scene.water->colour;
+    j["water"] = {{"levelMetres", scene.water->levelMetres},
+                  {"colour", {c.r, c.g, c.b}},
+                  {"clarity", scene.water->clarity}};
+  }
   j["exposure"] = exposureJson(scene.exposure);
   return j.dump(2) + "\n";
 }

@@ -1,0 +1,59 @@
+#include "render/water_renderer.h"
+
+#include "render/terrain_sunlight.h"
+#include "sample_shaders/water.frag.spv.h"
+#include "sample_shaders/water.vert.spv.h"
+#include "sample_shaders/water_hazed.frag.spv.h"
+#include "sample_shaders/water_hazed_shadowed.frag.spv.h"
+#include "sample_shaders/water_shadowed.frag.spv.h"
+
+namespace sample {
+
+using namespace engine;
+
+WaterRenderer::WaterRenderer(gfx::Device& device, VkFormat hdrFormat, VkFormat depthFormat,
+                             bool aerialPerspective, bool cloudShadows)
+    : aerialPerspective_(aerialPerspective), cloudShadows_(cloudShadows) {
+  using Spirv = std::span<const std::uint32_t>;
+  gfx::GraphicsPipelineDesc desc;
+  desc.vertexSpirv = water_vert_spv;
+  if (aerialPerspective) {
+    desc.fragmentSpirv =
+        cloudShadows ? Spirv(water_hazed_shadowed_frag_spv) : Spirv(water_hazed_frag_spv);
+  } else {
+    desc.fragmentSpirv = cloudShadows ? Spirv(water_shadowed_frag_spv) : Spirv(water_frag_spv);
+  }
+  desc.bindings = {{kFrameBinding, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER}};
+  gfx::SamplerDesc clamped;
+  clamped.debugName = "water linear clamped";
+  clamped_ = gfx::Sampler(device, clamped);
+  if (aerialPerspective) {
+    desc.bindings.push_back({kHazeBinding, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER,
+                             VK_FORMAT_R16G16B16A16_SFLOAT, VK_IMAGE_VIEW_TYPE_3D});
+    desc.bindings.push_back({kSkyBinding, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER,
+                             VK_FORMAT_R16G16B16A16_SFLOAT, VK_IMAGE_VIEW_TYPE_2D, VK_FILTER_LINEAR,
+                             VK_SAMPLER_ADDRESS_MODE_REPEAT});
+    gfx::SamplerDesc repeating;
+    repeating.addressMode = VK_SAMPLER_ADDRESS_MODE_REPEAT;
+    repeating.debugName = "water sky linear repeating";
+    repeating_ = gfx::Sampler(device, repeating);
+  }
+  if (cloudShadows) {
+    desc.bindings.push_back({kSunlightBinding, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER,
+                             TerrainSunlight::kFormat, VK_IMAGE_VIEW_TYPE_2D});
+  }
+  desc.colorFormats = {hdrFormat};
+  desc.depthFormat = depthFormat;
+  desc.depthTest = true;
+  desc.depthWrite = true;  // the clouds stop at the water (water_fragment.glsl)
+  desc.blend = gfx::BlendMode::Transmitted;
+  desc.cullMode = VK_CULL_MODE_NONE;
+  desc.debugName = cloudShadows ? "water (cloud shadows)" : "water";
+  pipeline_ = gfx::Pipeline(device, desc);
+}
+
+void WaterRenderer::draw(VkCommandBuffer cmd) const {
+  vkCmdDraw(cmd, 6, 1, 0, 0);
+}
+
+}  // namespace sample
