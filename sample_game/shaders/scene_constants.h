@@ -33,7 +33,8 @@ struct SceneFrame {
   vec4 flash;
   vec4 flashRadiance;
   // The water (a scene's lake or sea; water_surface.h): x its level (m above sea level), y its
-  // clarity (the share of the bed seen straight down), zw unused; its body's albedo (rgb); where
+  // clarity (the share of the bed seen straight down), z how far from the camera the bed shows
+  // (m: waterBedReachMetres()), w unused; its body's albedo (rgb); where
   // a bed lies under it (the terrain's extent: xy the lowest x and z, zw the highest; beyond it
   // the sea is deep and shows none); each ripple's phase at the camera (radians, waves 0 to 3
   // then 4 to 7: waterPhasesAt(), made on the CPU in double precision).

@@ -125,7 +125,21 @@ SHADER_INLINE float waterGlint(vec3 normal, vec3 toViewer, vec3 toSun, float rou
 // `clarity` is the share seen straight down.
 SHADER_INLINE float waterBedShare(float clarity, float cosine) {
   if (clarity <= 0.0f) return 0.0f;
-  return pow(clarity, 1.0f / max(cosine, 0.05f));
+  return pow(clarity, 1.0f / max(cosine, 1e-4f));
+}
+
+// How far from the camera (m, horizontally) the bed can still show: beyond it the water lets
+// through less than 1/255 of the bed's light (waterBedShare() at the view's cosine there), so
+// the water there can be drawn before the terrain and hide the bed, which then costs no shading.
+// `heightMetres` is the camera's height above the water; at or below it (no view from above),
+// and with clear water (clarity 1), everywhere.
+SHADER_INLINE float waterBedReachMetres(float clarity, float heightMetres) {
+  if (clarity <= 0.0f) return 0.0f;
+  if (clarity >= 1.0f || heightMetres <= 0.0f) return kWaterReachMetres;
+  // clarity^(distance / height) < 1/255 for distance > height log2(255) / -log2(clarity).
+  const float distance = heightMetres * (7.99435f / -log2(clarity));
+  const float horizontal = sqrt(max(distance * distance - heightMetres * heightMetres, 0.0f));
+  return min(horizontal, kWaterReachMetres);
 }
 
 SHADER_NAMESPACE_END

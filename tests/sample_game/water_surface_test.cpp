@@ -100,6 +100,28 @@ TEST(WaterSurface, TheBedFadesAsTheViewGrazes) {
   EXPECT_LT(waterBedShare(0.35f, 0.0f), 1e-9f);
 }
 
+// The bed's reach: there the water lets through 1/255 of the bed's light, nearer more, farther
+// less; so the water beyond it may hide the bed (drawn before the terrain) with an error under
+// one 8-bit step of the bed's light.
+TEST(WaterSurface, BeyondTheBedsReachLessThanAStepOfItShows) {
+  for (const float clarity : {0.1f, 0.35f, 0.8f}) {
+    for (const float height : {2.0f, 85.0f, 3000.0f}) {
+      const float reach = waterBedReachMetres(clarity, height);
+      const auto shareAt = [&](float horizontal) {
+        return waterBedShare(clarity,
+                             height / std::sqrt(height * height + horizontal * horizontal));
+      };
+      EXPECT_NEAR(shareAt(reach), 1.0f / 255.0f, 1e-5f) << clarity << ", " << height << " m";
+      EXPECT_GT(shareAt(0.9f * reach), 1.0f / 255.0f);
+      EXPECT_LT(shareAt(1.1f * reach), 1.0f / 255.0f);
+    }
+  }
+  EXPECT_EQ(waterBedReachMetres(0.0f, 100.0f), 0.0f) << "murky water shows no bed";
+  EXPECT_EQ(waterBedReachMetres(1.0f, 100.0f), kWaterReachMetres) << "clear water all of it";
+  EXPECT_EQ(waterBedReachMetres(0.35f, -5.0f), kWaterReachMetres) << "seen from below";
+  EXPECT_EQ(waterBedReachMetres(0.99f, 5000.0f), kWaterReachMetres) << "clamped to the water";
+}
+
 // The waves run on smoothly after any uptime and anywhere: one frame (1/60 s) later each wave's
 // phase has moved by its angular frequency times the step, at the origin at start-up as well as
 // 10,000 km away after eleven days; and a step along the ground moves the phase by k dx.

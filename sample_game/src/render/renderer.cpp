@@ -255,7 +255,9 @@ void Renderer::updateFrameConstants(ecs::World& world, VkExtent2D extent) {
   if (terrain_) terrain_->setFlashing(!flashes.empty());
   // The water as the scene has it now (a reloaded scene file may move its level).
   if (const auto* water = water_ ? world.ctx().tryGet<WaterSurface>() : nullptr) {
-    f.water = glm::vec4(float(water->levelMetres), float(water->clarity), 0.0f, 0.0f);
+    const float height = float(camera.position.y - water->levelMetres);
+    f.water = glm::vec4(float(water->levelMetres), float(water->clarity),
+                        shaders::waterBedReachMetres(float(water->clarity), height), 0.0f);
     f.waterColour = glm::vec4(water->colour, 0.0f);
     f.waterBed = waterBed_;
     const shaders::WaterPhases phases =

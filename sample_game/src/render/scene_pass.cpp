@@ -65,23 +65,8 @@ SceneTargets addScenePass(render::FrameGraph& graph, SceneSurfaces surfaces,
           hazedFrame.fog.z = float(air.slices);
           constants = context.constants().push(hazedFrame);
         }
-        if (const TerrainRenderer* ground = surfaces.terrain) {
-          gfx::DescriptorWriter writer;
-          writer.uniformBuffer(TerrainRenderer::kFrameBinding, constants.buffer, constants.offset,
-                               constants.size);
-          if (ground->hazedByAerialPerspective()) {
-            writer.combinedImageSampler(TerrainRenderer::kHazeBinding, context.view(d.haze),
-                                        ground->linearSampler(), VK_IMAGE_LAYOUT_GENERAL);
-          }
-          if (ground->shadowedByClouds()) {
-            writer.combinedImageSampler(TerrainRenderer::kSunlightBinding, context.view(d.sunlight),
-                                        ground->linearSampler(), VK_IMAGE_LAYOUT_GENERAL);
-          }
-          context.bind(ground->pipeline(), writer);
-          ground->draw(context.cmd());
-        }
-        for (render::RenderFeature* feature : skyDrawers)
-          feature->drawSkyInScenePass(context.cmd());
+        // The water's part beyond the bed's reach first (it hides the bed there, which then
+        // costs no shading), the terrain, the water over the bed, and the sky where none is.
         // A hazed water reflects a sky map; in a frame with none (the atmosphere failed to
         // prepare) it is not drawn.
         const WaterRenderer* lake = surfaces.water;
@@ -89,7 +74,7 @@ SceneTargets addScenePass(render::FrameGraph& graph, SceneSurfaces surfaces,
             !d.coveredSky.valid()) {
           lake = nullptr;
         }
-        if (lake != nullptr) {
+        const auto bindWater = [&] {
           gfx::DescriptorWriter writer;
           writer.uniformBuffer(WaterRenderer::kFrameBinding, constants.buffer, constants.offset,
                                constants.size);
@@ -107,8 +92,32 @@ SceneTargets addScenePass(render::FrameGraph& graph, SceneSurfaces surfaces,
                                         lake->clampedSampler(), VK_IMAGE_LAYOUT_GENERAL);
           }
           context.bind(lake->pipeline(), writer);
-          lake->draw(context.cmd());
+        };
+        if (lake != nullptr) {
+          bindWater();
+          lake->drawFar(context.cmd());
         }
+        if (const TerrainRenderer* ground = surfaces.terrain) {
+          gfx::DescriptorWriter writer;
+          writer.uniformBuffer(TerrainRenderer::kFrameBinding, constants.buffer, constants.offset,
+                               constants.size);
+          if (ground->hazedByAerialPerspective()) {
+            writer.combinedImageSampler(TerrainRenderer::kHazeBinding, context.view(d.haze),
+                                        ground->linearSampler(), VK_IMAGE_LAYOUT_GENERAL);
+          }
+          if (ground->shadowedByClouds()) {
+            writer.combinedImageSampler(TerrainRenderer::kSunlightBinding, context.view(d.sunlight),
+                                        ground->linearSampler(), VK_IMAGE_LAYOUT_GENERAL);
+          }
+          context.bind(ground->pipeline(), writer);
+          ground->draw(context.cmd());
+        }
+        if (lake != nullptr) {
+          if (surfaces.terrain != nullptr) bindWater();
+          lake->drawNear(context.cmd());
+        }
+        for (render::RenderFeature* feature : skyDrawers)
+          feature->drawSkyInScenePass(context.cmd());
       });
   return data.targets;
 }

@@ -1,9 +1,10 @@
 #pragma once
-// The scene's graphics pass: the terrain into a new reversed-Z depth buffer, then the sky of the
-// features that draw one (the atmosphere) where the depth is still the far plane, so the sky is
-// shaded only where it is seen, then the water over both (blended by what it lets through of
-// the bed, writing depth: the clouds after this pass stop at its surface). Named "scene" when a
-// feature draws the sky into it, and "terrain" when it draws over the renderer's own gradient sky.
+// The scene's graphics pass into a new reversed-Z depth buffer: the water beyond the reach of its
+// bed, the terrain, the water over its bed (blended by what it lets through; the water writes
+// depth, so the clouds after this pass stop at its surface), then the sky of the features that
+// draw one (the atmosphere) where the depth is still the far plane, so the sky is shaded only
+// where it is seen. Named "scene" when a feature draws the sky into it, and "terrain" when it
+// draws over the renderer's own gradient sky.
 #include <span>
 
 #include "engine/render/frame_graph.h"

@@ -52,8 +52,13 @@ WaterRenderer::WaterRenderer(gfx::Device& device, VkFormat hdrFormat, VkFormat d
   pipeline_ = gfx::Pipeline(device, desc);
 }
 
-void WaterRenderer::draw(VkCommandBuffer cmd) const {
+// water.vert's vertices: 0-5 the near square, 6-29 the far ring.
+void WaterRenderer::drawNear(VkCommandBuffer cmd) const {
   vkCmdDraw(cmd, 6, 1, 0, 0);
+}
+
+void WaterRenderer::drawFar(VkCommandBuffer cmd) const {
+  vkCmdDraw(cmd, 24, 1, 6, 0);
 }
 
 }  // namespace sample

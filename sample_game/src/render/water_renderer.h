@@ -1,10 +1,11 @@
 #pragma once
-// The water on the GPU (a scene's lake or sea; shaders/water_surface.h): one square around the
-// camera at the water's level, drawn in the scene pass after the terrain and the sky, blended
-// over the bed by what the water lets through, writing depth so that the clouds are marched to
-// its surface. Variants as the terrain's: hazed by the atmosphere's aerial perspective and
-// reflecting its sky map (the clouds' sky light when they make one), or fogged under the
-// gradient sky; lit through the terrain's sunlight map under cloud shadows.
+// The water on the GPU (a scene's lake or sea; shaders/water_surface.h): a square around the
+// camera at the water's level, drawn in the scene pass in two parts (the far part before the
+// terrain, the near part after it, blended over the bed by what the water lets through), writing
+// depth so that the clouds are marched to its surface. Variants as the terrain's: hazed by the
+// atmosphere's aerial perspective and reflecting its sky map (the clouds' sky light when they make
+// one), or fogged under the gradient sky; lit through the terrain's sunlight map under cloud
+// shadows.
 #include <vector>
 
 #include "bindings.h"
@@ -33,7 +34,12 @@ class WaterRenderer {
   VkSampler clampedSampler() const { return clamped_.vk(); }
   // Linear, repeating: the sky map's (its azimuth wraps).
   VkSampler skySampler() const { return repeating_.vk(); }
-  void draw(VkCommandBuffer cmd) const;
+  // The water where the bed shows through it (within SceneFrame::water.z of the camera): drawn
+  // after the terrain, over its bed.
+  void drawNear(VkCommandBuffer cmd) const;
+  // The rest, out to the horizon: drawn before the terrain, it hides the bed under it (less
+  // than 1/255 of whose light would show), whose shading is then skipped.
+  void drawFar(VkCommandBuffer cmd) const;
 
  private:
   bool aerialPerspective_ = false;
