@@ -11,6 +11,7 @@
 #   inside_a_cloud           default.json, inside a cumulus at 2.6 km
 #   default_flight           default.json from its camera, 4.8 s into its flight (the ground
 #                            ahead as a pilot sees it)
+#   lake                     lake.json from its camera: the lake reflecting the cloudy sky
 # into OUT_DIR (default docs/review) as PNG (tonemapped) and EXR (linear HDR, kcd/m^2), and
 # the PNGs side by side into OUT_DIR/contact_sheet.png; and the look in figures (clouds_look:
 # the noon cumulus' flank-to-base ratio and what each lighting term does) into OUT_DIR/look.txt.
@@ -33,11 +34,12 @@ build/bin/sample_game "${common[@]}" --scene assets_src/scenes/cumulus_noon.json
 scene_view sunset_stratocumulus.json sunset
 scene_view overcast_stratus.json overcast
 scene_view default.json default_flight
+scene_view lake.json lake
 build/bin/sample_game "${common[@]}" --scene assets_src/scenes/default.json \
   --script tools/review/default_views.json
 
 views=(ground_cumulus cumulus_towards_the_sun sunset overcast above_the_layer inside_a_cloud
-  default_flight)
+  default_flight lake)
 sheet_args=()
 for view in "${views[@]}"; do sheet_args+=("${view//_/ }=$out/$view.png"); done
 python="$(sed -n 's/^CLOUDSCAPE_PLOT_PYTHON:[A-Z]*=//p' build/CMakeCache.txt)"
