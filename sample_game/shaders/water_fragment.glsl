@@ -76,8 +76,9 @@ void main() {
 
   // What the ripples reflect: the sky (kept above the horizon: a ripple's reflection that dips
   // below it would see the far water, which reflects the horizon's sky in turn).
+  // (Never the zero vector, whose normalisation would be NaN.)
   vec3 reflected = reflect(-toViewer, normal);
-  reflected.y = max(reflected.y, 0.0f);
+  reflected.y = max(reflected.y, 1e-4f);
   reflected = normalize(reflected);
   const vec3 sky = skyAlong(reflected);
 
