@@ -8,9 +8,10 @@
 SHADER_NAMESPACE_BEGIN
 
 // The terrain (terrain_vertex.glsl, terrain_fragment.glsl; TerrainRenderer, the scene pass).
-const uint kTerrainFrameBinding = 0;     // SceneFrame (scene_constants.h)
-const uint kTerrainHazeBinding = 1;      // the aerial perspective (3D), hazed variants only
-const uint kTerrainSunlightBinding = 2;  // the terrain's sunlight map, shadowed variants only
+const uint kTerrainFrameBinding = 0;       // SceneFrame (scene_constants.h)
+const uint kTerrainHazeBinding = 1;        // the aerial perspective (3D), hazed variants only
+const uint kTerrainSunlightBinding = 2;    // the terrain's sunlight map, shadowed variants only
+const uint kTerrainBaseColourBinding = 3;  // the mesh's base colour texture, or a stand-in
 
 // The water (water.vert, water_fragment.glsl; WaterRenderer, the scene pass).
 const uint kWaterFrameBinding = 0;     // SceneFrame

@@ -1,5 +1,6 @@
 // The terrain's fragment stage: the surface made finer than the mesh (terrain_material.h:
-// detail normals, rock and snow by slope and altitude, finer still close up), lit by the sun (with
+// detail normals, rock and snow by slope and altitude, finer still close up; a user mesh's base
+// colour texture when it has one), lit by the sun (with
 // TERRAIN_CLOUD_SHADOWS through the clouds and past the terrain itself, as the terrain's
 // sunlight map holds it) and the sky, then hazed by the aerial perspective its vertices read
 // (TERRAIN_HAZED: a scene with an atmosphere) or, the cheap alternative, fogged towards the
@@ -14,9 +15,14 @@ layout(location = 0) in vec3 inRelative;
 layout(location = 1) in vec3 inNormal;
 layout(location = 2) in vec3 inColor;
 layout(location = 4) in vec4 inFlashLight;  // terrain_vertex.glsl
+layout(location = 5) in vec2 inUv;
 layout(location = 0) out vec4 outColor;
 // A storm's scene: the brightest flash in progress lights the ground (none: no such code).
 layout(constant_id = 0) const bool kLightning = false;
+// A user's mesh with a base colour texture: it colours the ground (none: a one-texel stand-in is
+// bound and never read).
+layout(constant_id = 1) const bool kTextured = false;
+layout(binding = kTerrainBaseColourBinding) uniform sampler2D baseColour;
 
 #ifdef TERRAIN_HAZED
 layout(location = 3) in vec4 inHaze;
@@ -52,8 +58,11 @@ void main() {
   const float footprint = max(min(across, down), 0.5f * max(across, down));
   const vec4 close = terrainCloseDetail(world, normal, materials, footprint);
   if (close.xyz != vec3(0.0f)) normal = normalize(normal + close.xyz);
-  const vec3 albedo = terrainPaint(inColor, materials, frame.terrain) *
-                      terrainDetailTint(detail, close.w, materials, footprint);
+  // A textured mesh keeps its artist's colours (glTF: the vertex colour times the texture); the
+  // generated terrain is painted rock and snow by slope and altitude. Both get the fine detail.
+  const vec3 paint = kTextured ? inColor * texture(baseColour, inUv).rgb
+                               : terrainPaint(inColor, materials, frame.terrain);
+  const vec3 albedo = paint * terrainDetailTint(detail, close.w, materials, footprint);
   vec3 lit = terrainLit(albedo, normal, sunVisibility());
   if (kLightning) {
     // The brightest lightning flash in progress (its falloff per vertex: terrain_vertex.glsl):

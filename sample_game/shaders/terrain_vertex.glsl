@@ -18,9 +18,11 @@ layout(binding = kTerrainFrameBinding, std140) uniform Frame { SceneFrame frame;
 layout(location = 0) in vec3 inPosition;
 layout(location = 1) in vec3 inNormal;
 layout(location = 2) in vec3 inColor;
+layout(location = 5) in vec2 inUv;
 layout(location = 0) out vec3 outRelative;  // position relative to the camera (m)
 layout(location = 1) out vec3 outNormal;
 layout(location = 2) out vec3 outColor;
+layout(location = 5) out vec2 outUv;  // the base colour texture's
 // The flash's light per unit of its radiance (0 without lightning): xyz the direct light's
 // irradiance on a surface facing it (its direction times its size), w the sky light's.
 layout(location = 4) out vec4 outFlashLight;
@@ -39,6 +41,7 @@ void main() {
   outRelative = relative;
   outNormal = inNormal;
   outColor = inColor;
+  outUv = inUv;
   // A lightning flash lights the ground (fxcontracts/lightning_light.h): directly, the glowing
   // core of the cloud around it as a sphere of its radiance, whose irradiance at distance d is
   // pi L (core / d)^2 (Lambert: albedo / pi of it); and from the whole sky, the cloud the core

@@ -1,6 +1,8 @@
 #include "engine/gfx/upload.h"
 
+#include <algorithm>
 #include <cstring>
+#include <string>
 
 #include "engine/core/error.h"
 #include "engine/gfx/formats.h"
@@ -8,16 +10,24 @@
 namespace engine::gfx {
 namespace {
 
-VkDeviceSize imageBytes(const Image& image) {
+// Mip `level`'s extent: each side halved per level, at least 1.
+VkExtent3D mipExtent(const Image& image, std::uint32_t level) {
   const VkExtent3D e = image.extent();
+  return {std::max(e.width >> level, 1u), std::max(e.height >> level, 1u),
+          std::max(e.depth >> level, 1u)};
+}
+
+VkDeviceSize mipBytes(const Image& image, std::uint32_t level) {
+  const VkExtent3D e = mipExtent(image, level);
   return VkDeviceSize{texelBytes(image.format())} * e.width * e.height * e.depth;
 }
 
-VkBufferImageCopy wholeMip0(const Image& image) {
+VkBufferImageCopy wholeMip(const Image& image, std::uint32_t level, VkDeviceSize bufferOffset) {
   VkBufferImageCopy region{};
+  region.bufferOffset = bufferOffset;
   region.imageSubresource = {
-      aspectMask(image.format()) & ~VkImageAspectFlags{VK_IMAGE_ASPECT_STENCIL_BIT}, 0, 0, 1};
-  region.imageExtent = image.extent();
+      aspectMask(image.format()) & ~VkImageAspectFlags{VK_IMAGE_ASPECT_STENCIL_BIT}, level, 0, 1};
+  region.imageExtent = mipExtent(image, level);
   return region;
 }
 
@@ -65,25 +75,41 @@ void uploadToBuffer(Device& device, const Buffer& destination, std::span<const s
 
 void uploadToImage(Device& device, const Image& destination, std::span<const std::byte> texels,
                    const ImageState& finalState) {
-  const VkDeviceSize bytes = imageBytes(destination);
-  require(texels.size() == bytes, "uploadToImage '" + destination.desc().debugName + "'",
+  uploadMipsToImage(device, destination, texels, 1, finalState);
+}
+
+void uploadMipsToImage(Device& device, const Image& destination, std::span<const std::byte> texels,
+                       std::uint32_t levels, const ImageState& finalState) {
+  const std::string what = "uploadMipsToImage '" + destination.desc().debugName + "'";
+  require(levels >= 1 && levels <= destination.desc().mipLevels, what,
+          std::to_string(levels) + " levels for an image of " +
+              std::to_string(destination.desc().mipLevels));
+  std::vector<VkBufferImageCopy> regions;
+  VkDeviceSize bytes = 0;
+  for (std::uint32_t level = 0; level < levels; ++level) {
+    regions.push_back(wholeMip(destination, level, bytes));
+    bytes += mipBytes(destination, level);
+  }
+  require(texels.size() == bytes, what,
           "expected " + std::to_string(bytes) + " bytes, got " + std::to_string(texels.size()));
   Buffer staging(device, BufferDesc{bytes, VK_BUFFER_USAGE_TRANSFER_SRC_BIT, MemoryUsage::Upload,
                                     "staging image upload"});
   std::memcpy(staging.mapped(), texels.data(), texels.size());
   device.immediateSubmit([&](VkCommandBuffer cmd) {
     imageBarrier(cmd, destination.vk(), destination.fullRange(), kUndefined, kTransferDst);
-    const VkBufferImageCopy region = wholeMip0(destination);
     vkCmdCopyBufferToImage(cmd, staging.vk(), destination.vk(),
-                           VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1, &region);
+                           VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
+                           static_cast<std::uint32_t>(regions.size()), regions.data());
     imageBarrier(cmd, destination.vk(), destination.fullRange(), kTransferDst, finalState);
   });
 }
 
 std::vector<std::byte> readbackImage(Device& device, const Image& source,
-                                     const ImageState& currentState) {
-  const VkBufferImageCopy region = wholeMip0(source);
-  return readback(device, source.vk(), source.fullRange(), region, imageBytes(source),
+                                     const ImageState& currentState, std::uint32_t level) {
+  require(level < source.desc().mipLevels, "readbackImage '" + source.desc().debugName + "'",
+          "mip " + std::to_string(level) + " of " + std::to_string(source.desc().mipLevels));
+  const VkBufferImageCopy region = wholeMip(source, level, 0);
+  return readback(device, source.vk(), source.fullRange(), region, mipBytes(source, level),
                   currentState);
 }
 

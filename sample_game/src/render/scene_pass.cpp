@@ -109,6 +109,9 @@ SceneTargets addScenePass(render::FrameGraph& graph, SceneSurfaces surfaces,
             writer.combinedImageSampler(TerrainRenderer::kSunlightBinding, context.view(d.sunlight),
                                         ground->linearSampler(), VK_IMAGE_LAYOUT_GENERAL);
           }
+          writer.combinedImageSampler(TerrainRenderer::kBaseColourBinding,
+                                      ground->baseColour().view(), ground->baseColour().sampler(),
+                                      VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL);
           context.bind(ground->pipeline(), writer);
           ground->draw(context.cmd());
         }

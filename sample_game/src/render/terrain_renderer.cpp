@@ -26,8 +26,9 @@ struct TerrainVertex {
   glm::vec3 position;
   glm::vec3 normal;
   glm::vec3 color;
+  glm::vec2 uv;  // the base colour texture's (TEXCOORD_0; 0 without one)
 };
-static_assert(sizeof(TerrainVertex) == 36);
+static_assert(sizeof(TerrainVertex) == 44);
 
 }  // namespace
 
@@ -135,10 +136,13 @@ bool boxInFrustum(const glm::mat4& m, const glm::vec3& lo, const glm::vec3& hi) 
 TerrainRenderer::TerrainRenderer(gfx::Device& device, const assets::MeshData& mesh,
                                  VkFormat hdrFormat, VkFormat depthFormat, bool aerialPerspective,
                                  bool cloudShadows, bool lightning)
-    : aerialPerspective_(aerialPerspective), cloudShadows_(cloudShadows) {
+    : aerialPerspective_(aerialPerspective),
+      cloudShadows_(cloudShadows),
+      baseColour_(device, mesh.baseColorTexture) {
   std::vector<TerrainVertex> vertices(mesh.positions.size());
   for (std::size_t i = 0; i < vertices.size(); ++i) {
-    vertices[i] = {mesh.positions[i], mesh.normals[i], glm::vec3(mesh.colors[i])};
+    const glm::vec2 uv = i < mesh.uvs.size() ? mesh.uvs[i] : glm::vec2(0.0f);
+    vertices[i] = {mesh.positions[i], mesh.normals[i], glm::vec3(mesh.colors[i]), uv};
   }
   // Levels of detail from the mesh's own density: clusters of about 2.5 and 6 average edges.
   float edgeSum = 0.0f;
@@ -176,7 +180,10 @@ TerrainRenderer::TerrainRenderer(gfx::Device& device, const assets::MeshData& me
     desc.vertexSpirv = cloudShadows ? Spirv(terrain_shadowed_vert_spv) : Spirv(terrain_vert_spv);
     desc.fragmentSpirv = cloudShadows ? Spirv(terrain_shadowed_frag_spv) : Spirv(terrain_frag_spv);
   }
-  desc.bindings = {{kFrameBinding, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER}};
+  desc.bindings = {
+      {kFrameBinding, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER},
+      {kBaseColourBinding, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, TerrainTexture::kFormat,
+       VK_IMAGE_VIEW_TYPE_2D, VK_FILTER_LINEAR, VK_SAMPLER_ADDRESS_MODE_REPEAT}};
   if (aerialPerspective || cloudShadows) {
     gfx::SamplerDesc clamped;
     clamped.debugName = "terrain linear clamped";
@@ -198,12 +205,14 @@ TerrainRenderer::TerrainRenderer(gfx::Device& device, const assets::MeshData& me
   desc.vertexBindings = {{0, sizeof(TerrainVertex), VK_VERTEX_INPUT_RATE_VERTEX}};
   desc.vertexAttributes = {{0, 0, VK_FORMAT_R32G32B32_SFLOAT, offsetof(TerrainVertex, position)},
                            {1, 0, VK_FORMAT_R32G32B32_SFLOAT, offsetof(TerrainVertex, normal)},
-                           {2, 0, VK_FORMAT_R32G32B32_SFLOAT, offsetof(TerrainVertex, color)}};
-  desc.specialization = {{kLightningConstant, 0u}};
+                           {2, 0, VK_FORMAT_R32G32B32_SFLOAT, offsetof(TerrainVertex, color)},
+                           {5, 0, VK_FORMAT_R32G32_SFLOAT, offsetof(TerrainVertex, uv)}};
+  const std::uint32_t textured = baseColour_.present() ? 1u : 0u;
+  desc.specialization = {{kLightningConstant, 0u}, {kTexturedConstant, textured}};
   desc.debugName = cloudShadows ? "terrain (cloud shadows)" : "terrain";
   pipeline_ = gfx::Pipeline(device, desc);
   if (lightning) {
-    desc.specialization = {{kLightningConstant, 1u}};
+    desc.specialization = {{kLightningConstant, 1u}, {kTexturedConstant, textured}};
     desc.debugName += " (lightning)";
     lightningPipeline_.emplace(device, desc);
   }

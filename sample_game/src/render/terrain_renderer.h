@@ -15,6 +15,7 @@
 #include "engine/gfx/pipelines.h"
 #include "engine/gfx/resources.h"
 #include "render/terrain_materials.h"
+#include "render/terrain_texture.h"
 #include "terrain_material.h"
 
 namespace sample {
@@ -55,8 +56,11 @@ class TerrainRenderer {
   static constexpr std::uint32_t kFrameBinding = engine::shaders::kTerrainFrameBinding;
   static constexpr std::uint32_t kHazeBinding = engine::shaders::kTerrainHazeBinding;
   static constexpr std::uint32_t kSunlightBinding = engine::shaders::kTerrainSunlightBinding;
-  // Specialization constant: 1 lights the terrain with the brightest flash in progress.
+  static constexpr std::uint32_t kBaseColourBinding = engine::shaders::kTerrainBaseColourBinding;
+  // Specialization constants: 1 lights the terrain with the brightest flash in progress; 1
+  // colours it with the mesh's base colour texture (a user's glTF that has one).
   static constexpr std::uint32_t kLightningConstant = 0;
+  static constexpr std::uint32_t kTexturedConstant = 1;
 
   // `aerialPerspective`: hazed by a feature's aerial perspective (else by the fog).
   // `cloudShadows`: lit through the clouds and past the terrain's own shadow as the terrain's
@@ -80,6 +84,8 @@ class TerrainRenderer {
   bool shadowedByClouds() const { return cloudShadows_; }
   // Linear, clamped: the aerial perspective's and the sunlight map's.
   VkSampler linearSampler() const { return sampler_.vk(); }
+  // The mesh's base colour texture (or its one-texel stand-in) and its trilinear sampler.
+  const TerrainTexture& baseColour() const { return baseColour_; }
   // Frustum culling for this frame (camera-relative view-projection and camera position).
   void cull(const glm::mat4& viewProjection, const glm::dvec3& cameraPosition);
   void draw(VkCommandBuffer cmd) const;
@@ -99,6 +105,7 @@ class TerrainRenderer {
   std::size_t visibleCount_ = 0;
   bool aerialPerspective_ = false;
   bool cloudShadows_ = false;
+  TerrainTexture baseColour_;
   engine::gfx::Sampler sampler_;
   engine::gfx::Pipeline pipeline_;
   std::optional<engine::gfx::Pipeline> lightningPipeline_;  // a storm's scene only

@@ -1,7 +1,12 @@
 // The memory allocator and deferred destruction on a real device.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <span>
+
+#include "engine/core/error.h"
 #include "engine/gfx/resources.h"
+#include "engine/gfx/upload.h"
 #include "gpu_test.h"
 
 namespace {
@@ -93,6 +98,43 @@ TEST_F(Memory, ExtraViewsOfOneMipAreValid) {
                                     "mip view"});
     EXPECT_NE(mips.back().vk(), VK_NULL_HANDLE);
   }
+}
+
+// A mip chain goes up in one call, each level where it belongs (5x3, 2x1, 1x1: odd sides round
+// down, none below 1), and comes back level by level; a wrong byte count or too many levels is
+// refused naming the image.
+TEST_F(Memory, AMipChainUploadsEachLevelInPlace) {
+  Image image(device(), ImageDesc{VK_IMAGE_TYPE_2D,
+                                  VK_FORMAT_R8G8B8A8_UNORM,
+                                  {5, 3, 1},
+                                  3,
+                                  1,
+                                  VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT |
+                                      VK_IMAGE_USAGE_TRANSFER_SRC_BIT,
+                                  "mip chain"});
+  const std::size_t texels[3] = {5 * 3, 2 * 1, 1};
+  std::vector<std::byte> bytes;
+  for (std::size_t level = 0; level < 3; ++level) {
+    for (std::size_t i = 0; i < 4 * texels[level]; ++i) {
+      bytes.push_back(std::byte(16 * (level + 1) + i % 16));
+    }
+  }
+  const ImageState sampled{VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL,
+                           VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT,
+                           VK_ACCESS_2_SHADER_SAMPLED_READ_BIT};
+  uploadMipsToImage(device(), image, bytes, 3, sampled);
+  std::size_t offset = 0;
+  for (std::uint32_t level = 0; level < 3; ++level) {
+    const std::vector<std::byte> back = readbackImage(device(), image, sampled, level);
+    ASSERT_EQ(back.size(), 4 * texels[level]) << "mip " << level;
+    EXPECT_TRUE(std::equal(back.begin(), back.end(), bytes.begin() + std::ptrdiff_t(offset)))
+        << "mip " << level;
+    offset += back.size();
+  }
+  EXPECT_THROW(
+      uploadMipsToImage(device(), image, std::span(bytes).first(bytes.size() - 4), 3, sampled),
+      engine::Error);
+  EXPECT_THROW(uploadMipsToImage(device(), image, bytes, 4, sampled), engine::Error);
 }
 
 }  // namespace

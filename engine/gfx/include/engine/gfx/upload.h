@@ -4,6 +4,7 @@
 #include <vulkan/vulkan.h>
 
 #include <cstddef>
+#include <cstdint>
 #include <span>
 #include <vector>
 
@@ -20,11 +21,15 @@ void uploadToBuffer(Device& device, const Buffer& destination, std::span<const s
 // `finalState`.
 void uploadToImage(Device& device, const Image& destination, std::span<const std::byte> texels,
                    const ImageState& finalState);
+// Uploads mips 0 to `levels` - 1 of layer 0: `texels` holds each in turn, tightly packed (a
+// mip's sides are its image's halved per level, at least 1).
+void uploadMipsToImage(Device& device, const Image& destination, std::span<const std::byte> texels,
+                       std::uint32_t levels, const ImageState& finalState);
 
-// Copies mip 0 / layer 0 of `source` (currently in `currentState`) back to the host, tightly
-// packed, and returns the image to `currentState`.
+// Copies mip `level` / layer 0 of `source` (currently in `currentState`) back to the host,
+// tightly packed, and returns the image to `currentState`.
 std::vector<std::byte> readbackImage(Device& device, const Image& source,
-                                     const ImageState& currentState);
+                                     const ImageState& currentState, std::uint32_t level = 0);
 // The same for an image another component owns (a module's output): colour aspect, one layer.
 std::vector<std::byte> readbackImage(Device& device, VkImage source, VkFormat format,
                                      VkExtent3D extent, const ImageState& currentState);
