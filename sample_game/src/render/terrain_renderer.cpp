@@ -1,5 +1,6 @@
 #include "render/terrain_renderer.h"
 
+#include "render/scene_surface.h"
 #include "render/terrain_sunlight.h"
 
 #include <algorithm>
@@ -189,19 +190,9 @@ TerrainRenderer::TerrainRenderer(gfx::Device& device, const assets::MeshData& me
     clamped.debugName = "terrain linear clamped";
     sampler_ = gfx::Sampler(device, clamped);
   }
-  if (aerialPerspective) {
-    desc.bindings.push_back({kHazeBinding, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER,
-                             VK_FORMAT_R16G16B16A16_SFLOAT, VK_IMAGE_VIEW_TYPE_3D});
-  }
-  if (cloudShadows) {
-    desc.bindings.push_back({kSunlightBinding, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER,
-                             TerrainSunlight::kFormat, VK_IMAGE_VIEW_TYPE_2D});
-  }
-  desc.colorFormats = {hdrFormat};
-  desc.depthFormat = depthFormat;
-  desc.depthTest = true;
-  desc.depthWrite = true;
-  desc.cullMode = VK_CULL_MODE_NONE;  // user meshes come with either winding
+  // (Both faces: user meshes come with either winding.)
+  describeSceneSurface(desc, hdrFormat, depthFormat, aerialPerspective, kHazeBinding, cloudShadows,
+                       kSunlightBinding);
   desc.vertexBindings = {{0, sizeof(TerrainVertex), VK_VERTEX_INPUT_RATE_VERTEX}};
   desc.vertexAttributes = {{0, 0, VK_FORMAT_R32G32B32_SFLOAT, offsetof(TerrainVertex, position)},
                            {1, 0, VK_FORMAT_R32G32B32_SFLOAT, offsetof(TerrainVertex, normal)},

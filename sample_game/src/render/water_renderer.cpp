@@ -1,6 +1,6 @@
 #include "render/water_renderer.h"
 
-#include "render/terrain_sunlight.h"
+#include "render/scene_surface.h"
 #include "sample_shaders/water.frag.spv.h"
 #include "sample_shaders/water.vert.spv.h"
 #include "sample_shaders/water_hazed.frag.spv.h"
@@ -28,8 +28,6 @@ WaterRenderer::WaterRenderer(gfx::Device& device, VkFormat hdrFormat, VkFormat d
   clamped.debugName = "water linear clamped";
   clamped_ = gfx::Sampler(device, clamped);
   if (aerialPerspective) {
-    desc.bindings.push_back({kHazeBinding, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER,
-                             VK_FORMAT_R16G16B16A16_SFLOAT, VK_IMAGE_VIEW_TYPE_3D});
     desc.bindings.push_back({kSkyBinding, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER,
                              VK_FORMAT_R16G16B16A16_SFLOAT, VK_IMAGE_VIEW_TYPE_2D, VK_FILTER_LINEAR,
                              VK_SAMPLER_ADDRESS_MODE_REPEAT});
@@ -38,16 +36,10 @@ WaterRenderer::WaterRenderer(gfx::Device& device, VkFormat hdrFormat, VkFormat d
     repeating.debugName = "water sky linear repeating";
     repeating_ = gfx::Sampler(device, repeating);
   }
-  if (cloudShadows) {
-    desc.bindings.push_back({kSunlightBinding, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER,
-                             TerrainSunlight::kFormat, VK_IMAGE_VIEW_TYPE_2D});
-  }
-  desc.colorFormats = {hdrFormat};
-  desc.depthFormat = depthFormat;
-  desc.depthTest = true;
-  desc.depthWrite = true;  // the clouds stop at the water (water_fragment.glsl)
+  // It writes depth: the clouds stop at the water (water_fragment.glsl).
+  describeSceneSurface(desc, hdrFormat, depthFormat, aerialPerspective, kHazeBinding, cloudShadows,
+                       kSunlightBinding);
   desc.blend = gfx::BlendMode::Transmitted;
-  desc.cullMode = VK_CULL_MODE_NONE;
   desc.debugName = cloudShadows ? "water (cloud shadows)" : "water";
   pipeline_ = gfx::Pipeline(device, desc);
 }
