@@ -9,6 +9,7 @@
 #include <span>
 #include <thread>
 
+#include "atmosphere/ecs/atmosphere_components.h"
 #include "clouds/ecs/cloud_components.h"
 #include "clouds/ecs/frame_budget.h"
 #include "engine/core/error.h"
@@ -65,22 +66,38 @@ struct TimingSeries {
     }
     it->second.push_back(ms);
   }
+
+  // Each pass's mean over `frames` frames, not its median: a pass that runs every few frames
+  // costs its share of every frame.
+  std::vector<std::pair<std::string, double>> meansPerFrame(std::uint64_t frames) const {
+    std::vector<std::pair<std::string, double>> means;
+    for (const auto& [name, times] : milliseconds) {
+      means.emplace_back(name, std::accumulate(times.begin(), times.end(), 0.0) /
+                                   double(std::max<std::uint64_t>(frames, 1)));
+    }
+    return means;
+  }
 };
 
 // What the frame loop measured: the frame rate after the warm-up, every frame-graph pass's GPU
 // time in each measured frame (timestamps of the latest completed frame), and the clouds
-// module's own passes in the frames that ran them (some run every few frames).
+// module's and the atmosphere module's own passes in the frames that ran them (some run every
+// few frames).
 struct LoopStats {
   std::uint64_t measuredFrames = 0;
   double measuredSeconds = 0.0;
   TimingSeries passes;
   TimingSeries cloudPasses;
+  TimingSeries atmospherePasses;
 
   void addPassTimes(std::span<const engine::gfx::TimedScope> scopes) {
     for (const auto& scope : scopes) passes.add(scope.name, scope.milliseconds);
   }
   void addCloudPassTimes(std::span<const ::clouds::PassTiming> timings) {
     for (const auto& timing : timings) cloudPasses.add(timing.name, timing.milliseconds);
+  }
+  void addAtmospherePassTimes(std::span<const ::atmosphere::PassTiming> timings) {
+    for (const auto& timing : timings) atmospherePasses.add(timing.name, timing.milliseconds);
   }
 };
 
@@ -251,6 +268,9 @@ LoopStats runFrames(ecs::App& app, const Renderer& renderer, platform::Window* w
       if (const auto* clouds = world.ctx().tryGet<clouds::ecs::CloudStatus>()) {
         stats.addCloudPassTimes(clouds->passTimings);
       }
+      if (const auto* air = world.ctx().tryGet<atmosphere::ecs::AtmosphereStatus>()) {
+        stats.addAtmospherePassTimes(air->passTimings);
+      }
     }
     if (world.ctx().get<ExitRequest>().requested) break;
   }
@@ -345,6 +365,8 @@ void logRun(ecs::World& world, const Renderer& renderer, const LoopStats& stats)
     std::snprintf(sum, sizeof(sum), " (sum %.2f ms)", total);
     log::info("GPU time per pass, median of the measured frames: " + timingList(medians) + sum);
   }
+  const auto air = stats.atmospherePasses.meansPerFrame(stats.measuredFrames);
+  if (!air.empty()) log::info("atmosphere passes, mean per measured frame: " + timingList(air));
   logFrameBudget(world);
   const auto* clouds = world.ctx().tryGet<clouds::ecs::CloudStatus>();
   if (clouds == nullptr) return;
@@ -360,12 +382,7 @@ void logRun(ecs::World& world, const Renderer& renderer, const LoopStats& stats)
   std::vector<std::pair<std::string, double>> passes;
   for (const auto& p : clouds->passTimings) passes.emplace_back(p.name, p.milliseconds);
   if (!passes.empty()) log::info("clouds passes, last frame: " + timingList(passes));
-  // Means, not medians: a pass that runs every few frames costs its share of every frame.
-  std::vector<std::pair<std::string, double>> means;
-  for (const auto& [name, times] : stats.cloudPasses.milliseconds) {
-    means.emplace_back(name, std::accumulate(times.begin(), times.end(), 0.0) /
-                                 double(std::max<std::uint64_t>(stats.measuredFrames, 1)));
-  }
+  const auto means = stats.cloudPasses.meansPerFrame(stats.measuredFrames);
   if (!means.empty()) {
     log::info("clouds passes, mean per measured frame: " + timingList(means));
   }
