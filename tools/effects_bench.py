@@ -2,7 +2,8 @@
 """What each effect of the sample's default scene costs, through the real frame graph.
 
 For each effect (terrain, clouds, atmosphere, cloud shadows, terrain shadows, god rays, the
-clouds' sky light that lights the ambient and the exposure meter) the default scene is
+clouds' sky light that lights the ambient and the exposure meter, the terrain's close-up
+detail) the default scene is
 rendered with everything and without that effect, headless at 640x360 and Medium, runs
 interleaved round by round so that drift of the machine's speed spreads over all of them. Reported per effect: the frame's GPU time with and without (sums of the per-pass
 GPU-timestamp medians the sample prints), the effect's cost as the median of the paired
@@ -52,6 +53,7 @@ EFFECTS = [
     ("terrain shadows", without("terrain", "castsShadows", False)),
     ("god rays", without("clouds", "godRays", False)),
     ("cloud sky light", without("clouds", "skyLight", False)),
+    ("terrain close-up detail", without("terrain", "closeDetail", False)),
 ]
 # The default scene's opening flight looks away from the sun, where god rays cost only a clear:
 # also measured looking into the sun through broken cumulus (the sample's god-ray test scene).

@@ -22,6 +22,9 @@ layout(constant_id = 0) const bool kLightning = false;
 // A user's mesh with a base colour texture: it colours the ground (none: a one-texel stand-in is
 // bound and never read).
 layout(constant_id = 1) const bool kTextured = false;
+// The close-up detail (TerrainDescription::closeDetail; off: compiled out, the ground as a pixel
+// covering 15 m of it sees it).
+layout(constant_id = 2) const bool kCloseDetail = true;
 layout(binding = kTerrainBaseColourBinding) uniform sampler2D baseColour;
 
 #ifdef TERRAIN_HAZED
@@ -56,13 +59,17 @@ void main() {
   const float across = length(dFdx(inRelative));
   const float down = length(dFdy(inRelative));
   const float footprint = max(min(across, down), 0.5f * max(across, down));
-  const vec4 close = terrainCloseDetail(world, normal, materials, footprint);
+  const vec4 close =
+      kCloseDetail ? terrainCloseDetail(world, normal, materials, footprint) : vec4(0.0f);
   if (close.xyz != vec3(0.0f)) normal = normalize(normal + close.xyz);
   // A textured mesh keeps its artist's colours (glTF: the vertex colour times the texture); the
   // generated terrain is painted rock and snow by slope and altitude. Both get the fine detail.
   const vec3 paint = kTextured ? inColor * texture(baseColour, inUv).rgb
                                : terrainPaint(inColor, materials, frame.terrain);
-  const vec3 albedo = paint * terrainDetailTint(detail, close.w, materials, footprint);
+  // (Without the close-up detail: the tint a pixel covering 15 m or more has, 1.)
+  const vec3 tint =
+      kCloseDetail ? terrainDetailTint(detail, close.w, materials, footprint) : vec3(1.0f);
+  const vec3 albedo = paint * tint;
   vec3 lit = terrainLit(albedo, normal, sunVisibility());
   if (kLightning) {
     // The brightest lightning flash in progress (its falloff per vertex: terrain_vertex.glsl):

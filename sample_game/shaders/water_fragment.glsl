@@ -5,14 +5,20 @@
 // with an atmosphere, whose sky map it reflects: the clouds' sky light when they make one), or
 // by the fog towards the gradient sky. It writes depth: the clouds are marched to the water's
 // surface, so clouds in front of it composite over it and none beyond it show through.
+// In a storm's lightning variant (kLightning) the brightest flash in progress lights it as it
+// lights the terrain (fxcontracts/lightning_light.h): the cloud deck its ripples reflect glows
+// with the flash's sky light, and its body takes that and the glowing core's direct light.
 // Blending: colour + destination x alpha (alpha: the share of the bed that shows).
 #extension GL_GOOGLE_include_directive : require
 #include "bindings.h"
 #include "scene_constants.h"
+#include "fxcontracts/lightning_light.h"
 
 layout(binding = kWaterFrameBinding, std140) uniform Frame { SceneFrame frame; };
 layout(location = 0) in vec3 inRelative;
 layout(location = 0) out vec4 outColor;
+// A storm's scene: the brightest flash in progress lights the water (none: no such code).
+layout(constant_id = 0) const bool kLightning = false;
 
 #ifdef WATER_HAZED
 #include "fxcontracts/aerial_perspective.glsl"
@@ -80,15 +86,32 @@ void main() {
   vec3 reflected = reflect(-toViewer, normal);
   reflected.y = max(reflected.y, 1e-4f);
   reflected = normalize(reflected);
-  const vec3 sky = skyAlong(reflected);
+  vec3 sky = skyAlong(reflected);
 
   const vec3 sun = frame.sunDirection.xyz;
   const vec3 sunlight = frame.sunIlluminance.rgb * sunVisibility(relative);
   const float kInvPi = 0.318309886f;
   const vec3 glint = sunlight * waterGlint(normal, toViewer, sun, ripples.z);
   // The water's body: its albedo lit by the sun and by the sky's light from above.
-  const vec3 skyAbove = mix(frame.skyHorizon.rgb, frame.skyZenith.rgb, 0.5f);
-  const vec3 body = frame.waterColour.rgb * (sunlight * max(sun.y, 0.0f) * kInvPi + skyAbove);
+  vec3 skyAbove = mix(frame.skyHorizon.rgb, frame.skyZenith.rgb, 0.5f);
+  vec3 flashDirect = vec3(0.0f);
+  if (kLightning) {
+    // The flash's sky light here glows in the reflected sky and in the sky above the body; its
+    // core lights the body directly, pi L (core / d)^2 on the level surface (Lambert: albedo /
+    // pi of it), as terrain_vertex.glsl gives the ground.
+    const float core = flashCoreMetres(frame.flash.w);
+    const vec3 toFlash = frame.flash.xyz - relative;
+    const float distanceSquared = dot(toFlash, toFlash);
+    const float d2 = max(distanceSquared, core * core);
+    const vec3 flashSky =
+        frame.flashRadiance.rgb * flashSkyLightSquared(distanceSquared, frame.flash.w);
+    sky += flashSky;
+    skyAbove += flashSky;
+    const float cosineOverDistance = max(toFlash.y, 0.0f) * inversesqrt(d2);
+    flashDirect = frame.flashRadiance.rgb * (core * core / d2 * cosineOverDistance);
+  }
+  const vec3 body =
+      frame.waterColour.rgb * (sunlight * max(sun.y, 0.0f) * kInvPi + skyAbove + flashDirect);
 
   // The bed shows through where there is one (the terrain's extent) by the water's clarity,
   // fading out over the last kilometre to its edge, where the sea beyond it is deep.

@@ -67,6 +67,16 @@ TEST(Scenes, ValuesArriveInTheDescription) {
     "name": "u", "camera": {"position": [0, 10, 0]}, "clouds": {"skyLight": false}})"));
   EXPECT_FALSE(unlit.clouds->settings.skyLight);
   EXPECT_FALSE(s.terrain.has_value());
+  const sample::SceneDescription plain = loadSceneDescription(writeScene("plain.json", R"({
+    "name": "p", "camera": {"position": [0, 10, 0]},
+    "terrain": {"gltf": "default", "closeDetail": false}})"));
+  ASSERT_TRUE(plain.terrain.has_value());
+  EXPECT_FALSE(plain.terrain->closeDetail);
+  EXPECT_NE(sample::sceneJson(plain).find("\"closeDetail\": false"), std::string::npos)
+      << "the writer keeps it";
+  const sample::SceneDescription detailed = loadSceneDescription(writeScene("detailed.json", R"({
+    "name": "d", "camera": {"position": [0, 10, 0]}, "terrain": {"gltf": "default"}})"));
+  EXPECT_TRUE(detailed.terrain->closeDetail) << "the ground's close-up detail by default";
   EXPECT_EQ(s.camera.cloudQuality, clouds::Quality::Medium) << "the default preset";
   const sample::SceneDescription ultra = loadSceneDescription(writeScene("quality.json", R"({
     "name": "q", "camera": {"position": [0, 10, 0], "cloudQuality": "ultra"}})"));
@@ -450,6 +460,10 @@ TEST(Scenes, MalformedScenesNameFilePathAndReason) {
        R"({"name": "x", "camera": {"position": [0, 1, 0]},
            "water": {"levelMetres": 0, "colour": [0.1, 0.1]}})",
        "water.colour: must be an array of 3 numbers"},
+      {"close_detail.json",
+       R"({"name": "x", "camera": {"position": [0, 1, 0]},
+           "terrain": {"gltf": "default", "closeDetail": "yes"}})",
+       "terrain.closeDetail: must be"},
       {"root.json", R"([1, 2, 3])", "(root): must be an object"},
       {"altitude.json", R"({"name": "x", "camera": {"position": [0, -5, 0]}})",
        "camera.position: altitude (y) must be in [0, 50000] m"},

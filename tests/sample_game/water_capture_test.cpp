@@ -154,4 +154,48 @@ TEST(WaterCapture, ACloudInFrontOfTheWaterCompositesOverIt) {
   EXPECT_LE(inconsistent, waterPixels / 200);
 }
 
+// A storm's flash lights the water as it lights the terrain (water_fragment.glsl's lightning
+// variant): the scripted strike of the storm scene (HeadlessCapture.AScriptedStrikeGlowsAndLeaves
+// NoGhost) over a lake at 450 m, 50 m under the camera, which fills the lower third of the view.
+// While the flash lasts, nearly all of the water is brighter than in the same frame without it:
+// the deck its ripples reflect glows with the flash's sky light, and its body takes that and the
+// core's direct light.
+TEST(WaterCapture, AStormsFlashLightsTheWater) {
+  const auto run = [](const char* name, bool water, const char* script) {
+    nlohmann::json json = engine::JsonReader::parseFile(scene("storm_calm.json"));
+    if (water) json["water"] = {{"levelMetres", 450.0}};
+    const fs::path dir = freshDir(name);
+    fs::create_directories(dir);
+    const fs::path file = dir / "scene.json";
+    std::ofstream(file) << json.dump(2);
+    const std::string arguments =
+        "--headless --validation --fixed-dt 0.0333 --width 160 --height 90 --no-hud --scene " +
+        file.string() + " --capture " + (dir / "out").string() + " --script " +
+        std::string(SAMPLE_TEST_DIR) + "/scripts/" + script;
+    EXPECT_EQ(runSample(arguments), 0) << arguments;
+    return engine::assets::readImage(dir / "out" / "during.exr");
+  };
+  const ImageRgba32f calm = run("lake_storm_calm", true, "no_strike.json");
+  const ImageRgba32f struck = run("lake_storm_struck", true, "scripted_strike.json");
+  const ImageRgba32f dry = run("lake_storm_dry", false, "no_strike.json");
+  ASSERT_EQ(calm.pixels.size(), struck.pixels.size());
+  ASSERT_EQ(calm.pixels.size(), dry.pixels.size());
+  const std::size_t pixels = std::size_t(calm.width) * calm.height;
+  std::size_t water = 0;
+  std::size_t lit = 0;
+  for (std::size_t i = pixels * 2 / 3; i < pixels; ++i) {
+    const float before = luminance(&calm.pixels[4 * i]);
+    // Water: the lake changes the pixel against the same frame over its bed.
+    if (std::abs(before - luminance(&dry.pixels[4 * i])) < 0.02f * before) continue;
+    ++water;
+    if (luminance(&struck.pixels[4 * i]) > 1.02f * before) ++lit;
+  }
+  const std::size_t lowerThird = pixels - pixels * 2 / 3;
+  std::printf(
+      "a flash over the lake: %zu of %zu water pixels 2%% brighter (%zu in the lower third)\n", lit,
+      water, lowerThird);
+  ASSERT_GT(water, lowerThird / 2) << "the lake fills most of the lower third";
+  EXPECT_GT(lit, water * 9 / 10) << "the flash lights the water";
+}
+
 }  // namespace

@@ -51,13 +51,15 @@ Renderer::Renderer(gfx::Device& device, render::PresentTarget& target, ecs::Worl
   }
   const bool cloudShadows = anyFeature(
       [](const render::RenderFeature* f) { return f->publishes<fxcontracts::ecs::CloudShadow>(); });
+  // A storm's flashes light the ground and the water: their variants with that code (none
+  // without).
+  bool storm = false;
+  world.view<const clouds::ecs::LightningStorm>().each(
+      [&](const clouds::ecs::LightningStorm&) { storm = true; });
   if (const auto* mesh = world.ctx().tryGet<TerrainMesh>()) {
-    // A storm's flashes light the ground: the terrain's variant with that code (none without).
-    bool storm = false;
-    world.view<const clouds::ecs::LightningStorm>().each(
-        [&](const clouds::ecs::LightningStorm&) { storm = true; });
-    terrain_ = std::make_unique<TerrainRenderer>(device, *mesh->mesh, kHdrFormat, kDepthFormat,
-                                                 featureSky, cloudShadows, storm);
+    terrain_ =
+        std::make_unique<TerrainRenderer>(device, *mesh->mesh, kHdrFormat, kDepthFormat, featureSky,
+                                          cloudShadows, storm, mesh->closeDetail);
     terrainMaterials_ = terrainMaterialsFor(*mesh->mesh, mesh->snowlineMetres);
     for (const gfx::Pipeline* pipeline : terrain_->pipelines()) pipelines.push_back(pipeline);
     // Under shadow-casting clouds the terrain is lit through its sunlight map, made over its
@@ -78,8 +80,8 @@ Renderer::Renderer(gfx::Device& device, render::PresentTarget& target, ecs::Worl
   // clouds), its bed the terrain's extent.
   if (world.ctx().tryGet<WaterSurface>() != nullptr) {
     water_ = std::make_unique<WaterRenderer>(device, kHdrFormat, kDepthFormat, featureSky,
-                                             sunlight_ != nullptr);
-    pipelines.push_back(&water_->pipeline());
+                                             sunlight_ != nullptr, storm);
+    for (const gfx::Pipeline* pipeline : water_->pipelines()) pipelines.push_back(pipeline);
     waterBed_ = glm::vec4(1.0f, 1.0f, -1.0f, -1.0f);  // none
     if (const auto* mesh = world.ctx().tryGet<TerrainMesh>()) {
       waterBed_ = glm::vec4(mesh->mesh->boundsMin.x, mesh->mesh->boundsMin.z,
@@ -253,6 +255,7 @@ void Renderer::updateFrameConstants(ecs::World& world, VkExtent2D extent) {
     f.flashRadiance = glm::vec4(flashes[0].radiance, 0.0f);
   }
   if (terrain_) terrain_->setFlashing(!flashes.empty());
+  if (water_) water_->setFlashing(!flashes.empty());
   // The water as the scene has it now (a reloaded scene file may move its level).
   if (const auto* water = water_ ? world.ctx().tryGet<WaterSurface>() : nullptr) {
     const float height = float(camera.position.y - water->levelMetres);
@@ -363,7 +366,9 @@ std::vector<std::string> Renderer::pipelineNames() const {
     for (const gfx::Pipeline* pipeline : terrain_->pipelines()) names.push_back(pipeline->name());
   }
   if (sunlight_) names.push_back(sunlight_->pipeline().name());
-  if (water_) names.push_back(water_->pipeline().name());
+  if (water_) {
+    for (const gfx::Pipeline* pipeline : water_->pipelines()) names.push_back(pipeline->name());
+  }
   if (hud_) names.push_back(hud_->pipeline().name());
   for (const render::RenderFeature* feature : features_) {
     std::string name = std::string(feature->name()) + " module";

@@ -136,7 +136,7 @@ bool boxInFrustum(const glm::mat4& m, const glm::vec3& lo, const glm::vec3& hi) 
 
 TerrainRenderer::TerrainRenderer(gfx::Device& device, const assets::MeshData& mesh,
                                  VkFormat hdrFormat, VkFormat depthFormat, bool aerialPerspective,
-                                 bool cloudShadows, bool lightning)
+                                 bool cloudShadows, bool lightning, bool closeDetail)
     : aerialPerspective_(aerialPerspective),
       cloudShadows_(cloudShadows),
       baseColour_(device, mesh.baseColorTexture) {
@@ -199,11 +199,14 @@ TerrainRenderer::TerrainRenderer(gfx::Device& device, const assets::MeshData& me
                            {2, 0, VK_FORMAT_R32G32B32_SFLOAT, offsetof(TerrainVertex, color)},
                            {5, 0, VK_FORMAT_R32G32_SFLOAT, offsetof(TerrainVertex, uv)}};
   const std::uint32_t textured = baseColour_.present() ? 1u : 0u;
-  desc.specialization = {{kLightningConstant, 0u}, {kTexturedConstant, textured}};
+  const std::uint32_t detailed = closeDetail ? 1u : 0u;
+  desc.specialization = {
+      {kLightningConstant, 0u}, {kTexturedConstant, textured}, {kCloseDetailConstant, detailed}};
   desc.debugName = cloudShadows ? "terrain (cloud shadows)" : "terrain";
   pipeline_ = gfx::Pipeline(device, desc);
   if (lightning) {
-    desc.specialization = {{kLightningConstant, 1u}, {kTexturedConstant, textured}};
+    desc.specialization = {
+        {kLightningConstant, 1u}, {kTexturedConstant, textured}, {kCloseDetailConstant, detailed}};
     desc.debugName += " (lightning)";
     lightningPipeline_.emplace(device, desc);
   }

@@ -58,18 +58,21 @@ class TerrainRenderer {
   static constexpr std::uint32_t kSunlightBinding = engine::shaders::kTerrainSunlightBinding;
   static constexpr std::uint32_t kBaseColourBinding = engine::shaders::kTerrainBaseColourBinding;
   // Specialization constants: 1 lights the terrain with the brightest flash in progress; 1
-  // colours it with the mesh's base colour texture (a user's glTF that has one).
+  // colours it with the mesh's base colour texture (a user's glTF that has one); 1 gives it its
+  // close-up detail (TerrainDescription::closeDetail).
   static constexpr std::uint32_t kLightningConstant = 0;
   static constexpr std::uint32_t kTexturedConstant = 1;
+  static constexpr std::uint32_t kCloseDetailConstant = 2;
 
   // `aerialPerspective`: hazed by a feature's aerial perspective (else by the fog).
   // `cloudShadows`: lit through the clouds and past the terrain's own shadow as the terrain's
   // sunlight map (TerrainSunlight) holds them.
   // `lightning`: a storm's flashes light it (SceneFrame::flash): a second pipeline, the variant
   // with that code, drawn with in the frames with a flash in progress (setFlashing()).
+  // `closeDetail`: the ground's close-up detail (else its code is compiled out).
   TerrainRenderer(engine::gfx::Device& device, const engine::assets::MeshData& mesh,
                   VkFormat hdrFormat, VkFormat depthFormat, bool aerialPerspective,
-                  bool cloudShadows, bool lightning);
+                  bool cloudShadows, bool lightning, bool closeDetail);
 
   // This frame's pipeline: the lightning variant only while a flash is in progress, so that a
   // storm costs the terrain nothing between its flashes.

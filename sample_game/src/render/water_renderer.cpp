@@ -12,7 +12,7 @@ namespace sample {
 using namespace engine;
 
 WaterRenderer::WaterRenderer(gfx::Device& device, VkFormat hdrFormat, VkFormat depthFormat,
-                             bool aerialPerspective, bool cloudShadows)
+                             bool aerialPerspective, bool cloudShadows, bool lightning)
     : aerialPerspective_(aerialPerspective), cloudShadows_(cloudShadows) {
   using Spirv = std::span<const std::uint32_t>;
   gfx::GraphicsPipelineDesc desc;
@@ -40,8 +40,20 @@ WaterRenderer::WaterRenderer(gfx::Device& device, VkFormat hdrFormat, VkFormat d
   describeSceneSurface(desc, hdrFormat, depthFormat, aerialPerspective, kHazeBinding, cloudShadows,
                        kSunlightBinding);
   desc.blend = gfx::BlendMode::Transmitted;
+  desc.specialization = {{kLightningConstant, 0u}};
   desc.debugName = cloudShadows ? "water (cloud shadows)" : "water";
   pipeline_ = gfx::Pipeline(device, desc);
+  if (lightning) {
+    desc.specialization = {{kLightningConstant, 1u}};
+    desc.debugName += " (lightning)";
+    lightningPipeline_.emplace(device, desc);
+  }
+}
+
+std::vector<const gfx::Pipeline*> WaterRenderer::pipelines() const {
+  std::vector<const gfx::Pipeline*> all = {&pipeline_};
+  if (lightningPipeline_) all.push_back(&*lightningPipeline_);
+  return all;
 }
 
 // water.vert's vertices: 0-5 the near square, 6-29 the far ring.

@@ -5,7 +5,8 @@
 // depth so that the clouds are marched to its surface. Variants as the terrain's: hazed by the
 // atmosphere's aerial perspective and reflecting its sky map (the clouds' sky light when they make
 // one), or fogged under the gradient sky; lit through the terrain's sunlight map under cloud
-// shadows.
+// shadows; in a storm's scene, lit by the brightest flash in progress as the terrain is.
+#include <optional>
 #include <vector>
 
 #include "bindings.h"
@@ -20,14 +21,24 @@ class WaterRenderer {
   static constexpr std::uint32_t kHazeBinding = engine::shaders::kWaterHazeBinding;
   static constexpr std::uint32_t kSunlightBinding = engine::shaders::kWaterSunlightBinding;
   static constexpr std::uint32_t kSkyBinding = engine::shaders::kWaterSkyBinding;
+  // Specialization constant: 1 lights the water with the brightest flash in progress.
+  static constexpr std::uint32_t kLightningConstant = 0;
 
   // `aerialPerspective`: hazed by a feature's aerial perspective and reflecting its sky map
   // (else fogged, reflecting the gradient sky). `cloudShadows`: the sun through the terrain's
-  // sunlight map.
+  // sunlight map. `lightning`: a storm's flashes light it (SceneFrame::flash): a second
+  // pipeline, drawn with in the frames with a flash in progress (setFlashing()).
   WaterRenderer(engine::gfx::Device& device, VkFormat hdrFormat, VkFormat depthFormat,
-                bool aerialPerspective, bool cloudShadows);
+                bool aerialPerspective, bool cloudShadows, bool lightning);
 
-  const engine::gfx::Pipeline& pipeline() const { return pipeline_; }
+  // This frame's pipeline: the lightning variant only while a flash is in progress.
+  const engine::gfx::Pipeline& pipeline() const {
+    return flashing_ && lightningPipeline_ ? *lightningPipeline_ : pipeline_;
+  }
+  // Every pipeline it may draw with (to warm up and to describe).
+  std::vector<const engine::gfx::Pipeline*> pipelines() const;
+  // Whether this frame has a flash in progress (SceneFrame::flashRadiance is not 0).
+  void setFlashing(bool flashing) { flashing_ = flashing; }
   bool hazedByAerialPerspective() const { return aerialPerspective_; }
   bool shadowedByClouds() const { return cloudShadows_; }
   // Linear, clamped: the aerial perspective's and the sunlight map's.
@@ -47,6 +58,8 @@ class WaterRenderer {
   engine::gfx::Sampler clamped_;
   engine::gfx::Sampler repeating_;
   engine::gfx::Pipeline pipeline_;
+  std::optional<engine::gfx::Pipeline> lightningPipeline_;  // a storm's scene only
+  bool flashing_ = false;
 };
 
 }  // namespace sample

@@ -63,6 +63,7 @@ TerrainDescription readTerrain(const JsonReader& r, const std::filesystem::path&
   t.gltf = gltf == "default" ? std::filesystem::path("default") : r.existingFile("gltf", sceneDir);
   t.castsShadows = r.boolean("castsShadows", true);
   if (r.has("snowlineMetres")) t.snowlineMetres = r.number("snowlineMetres", -1000.0, 20000.0, 0.0);
+  t.closeDetail = r.boolean("closeDetail", true);
   r.finish();
   return t;
 }

@@ -56,6 +56,10 @@ struct TerrainDescription {
   // Where snow starts to lie (m above sea level); unset: 70% of the way from the mesh's lowest
   // to its highest point.
   std::optional<double> snowlineMetres;
+  // The close-up detail (terrain_material.h: colour by material at the scales a pixel resolves,
+  // and the 3 m octave's relief): off, the ground is what a pixel covering 15 m of it sees
+  // everywhere, and the terrain's fragments pay nothing for it (a scene seen from high up).
+  bool closeDetail = true;
 };
 
 // A hero cloud (the clouds module's voxel clouds) the scene places.

@@ -188,7 +188,8 @@ void populateScene(ecs::App& app, const SceneDescription& scene,
     world.ctx().emplaceOrReplace<TerrainHeightField>(*terrain->mesh);
     world.ctx().emplaceOrReplace<TerrainMesh>(
         TerrainMesh{terrain->mesh, !scene.terrain || scene.terrain->castsShadows,
-                    scene.terrain ? scene.terrain->snowlineMetres : std::nullopt});
+                    scene.terrain ? scene.terrain->snowlineMetres : std::nullopt,
+                    !scene.terrain || scene.terrain->closeDetail});
     const ecs::Entity entity = world.create();
     world.emplace<TerrainInstance>(entity, TerrainInstance{terrain->path});
   }

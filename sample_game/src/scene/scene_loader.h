@@ -24,6 +24,7 @@ struct TerrainMesh {
   std::shared_ptr<const engine::assets::MeshData> mesh;
   bool castsShadows = true;              // TerrainDescription::castsShadows
   std::optional<double> snowlineMetres;  // TerrainDescription::snowlineMetres
+  bool closeDetail = true;               // TerrainDescription::closeDetail
 };
 
 struct LoadedTerrain {

@@ -60,7 +60,8 @@ json sunJson(const SunDescription& s) {
 
 json terrainJson(const TerrainDescription& t) {
   json j = {{"gltf", t.gltf == "default" ? std::string("default") : absolutePath(t.gltf)},
-            {"castsShadows", t.castsShadows}};
+            {"castsShadows", t.castsShadows},
+            {"closeDetail", t.closeDetail}};
   if (t.snowlineMetres) j["snowlineMetres"] = *t.snowlineMetres;
   return j;
 }
