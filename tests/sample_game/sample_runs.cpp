@@ -2,6 +2,8 @@
 
 #include <sys/wait.h>
 
+#include <gtest/gtest.h>
+
 #include <array>
 #include <cstdio>
 #include <cstdlib>
@@ -40,6 +42,21 @@ std::filesystem::path freshDir(const char* name) {
       std::filesystem::temp_directory_path() / "cloudscape_sample_tests" / name;
   std::filesystem::remove_all(dir);
   return dir;
+}
+
+engine::assets::ImageRgba32f renderLastFrame(const std::filesystem::path& dir,
+                                             const std::string& sceneJson, unsigned frames,
+                                             unsigned width, unsigned height) {
+  const std::filesystem::path file = dir / "scene.json";
+  std::ofstream(file) << sceneJson;
+  const std::string arguments = "--headless --validation --frames " + std::to_string(frames) +
+                                " --fixed-dt 0.05 --width " + std::to_string(width) + " --height " +
+                                std::to_string(height) + " --no-hud --scene " + file.string() +
+                                " --capture " + (dir / "out").string();
+  EXPECT_EQ(runSample(arguments), 0) << arguments;
+  char last[32];
+  std::snprintf(last, sizeof(last), "frame_%04u.exr", frames - 1);
+  return engine::assets::readImage(dir / "out" / last);
 }
 
 std::string scene(const char* name) {

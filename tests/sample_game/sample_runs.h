@@ -4,6 +4,8 @@
 #include <filesystem>
 #include <string>
 
+#include "engine/assets/image_io.h"
+
 namespace sample_tests {
 
 // The sample's exit code (-1 when it did not exit normally) with `arguments`.
@@ -16,6 +18,12 @@ std::string runSampleOutput(const std::string& arguments);
 std::string runSampleErrors(const std::string& arguments);
 // An empty folder of that name under the system's temporary folder (not created).
 std::filesystem::path freshDir(const char* name);
+// The scene `sceneJson` written to `dir`/scene.json (an existing folder; the files it names
+// relative to it beside it) and run headless under validation, `frames` frames at a fixed
+// 0.05 s step, `width` x `height`, without the HUD: its last frame (HDR), captured in `dir`/out.
+engine::assets::ImageRgba32f renderLastFrame(const std::filesystem::path& dir,
+                                             const std::string& sceneJson, unsigned frames,
+                                             unsigned width, unsigned height);
 // A test scene's path (tests/sample_game/scenes/<name>).
 std::string scene(const char* name);
 // The text of a shipped scene (assets_src/scenes/<name>), for a test to edit.

@@ -7,7 +7,6 @@
 #include <algorithm>
 #include <cstdio>
 #include <filesystem>
-#include <fstream>
 #include <string>
 
 #include "engine/assets/image_io.h"
@@ -23,18 +22,12 @@ using namespace sample_tests;
 ImageRgba32f render(const char* name, const char* cameraJson, bool closeDetail) {
   const fs::path dir = freshDir(name);
   fs::create_directories(dir);
-  const fs::path sceneFile = dir / "scene.json";
-  std::ofstream(sceneFile) << R"({"name": "the ground up close", "camera": )" << cameraJson
-                           << R"(, "sun": {"timeOfDayHours": 15.5},
-    "terrain": {"gltf": "default", "closeDetail": )"
-                           << (closeDetail ? "true" : "false") << R"(},
+  const std::string sceneJson = std::string(R"({"name": "the ground up close", "camera": )") +
+                                cameraJson + R"(, "sun": {"timeOfDayHours": 15.5},
+    "terrain": {"gltf": "default", "closeDetail": )" +
+                                (closeDetail ? "true" : "false") + R"(},
     "exposure": {"mode": "manual", "ev100": 14}})";
-  const std::string arguments =
-      "--headless --validation --frames 2 --fixed-dt 0.05 --width 160 "
-      "--height 90 --no-hud --scene " +
-      sceneFile.string() + " --capture " + (dir / "out").string();
-  EXPECT_EQ(runSample(arguments), 0) << arguments;
-  return engine::assets::readImage(dir / "out" / "frame_0001.exr");
+  return renderLastFrame(dir, sceneJson, 2, 160, 90);
 }
 
 // The share of pixels whose luminance differs by more than 2% of the larger.

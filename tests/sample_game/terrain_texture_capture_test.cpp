@@ -7,7 +7,6 @@
 #include <algorithm>
 #include <cstdio>
 #include <filesystem>
-#include <fstream>
 #include <string>
 #include <vector>
 
@@ -48,18 +47,12 @@ ImageRgba32f render(const char* name, bool checker) {
   const fs::path dir = freshDir(name);
   fs::create_directories(dir);
   const fs::path terrain = writeTerrain(dir, checker);
-  const fs::path sceneFile = dir / "scene.json";
-  std::ofstream(sceneFile) << R"({"name": "a textured square",
+  const std::string sceneJson = R"({"name": "a textured square",
     "camera": {"position": [0, 1500, 0], "pitchDegrees": -89, "speedMetresPerSecond": 0},
-    "sun": {"timeOfDayHours": 12}, "terrain": {"gltf": ")"
-                           << terrain.filename().string() << R"("},
+    "sun": {"timeOfDayHours": 12}, "terrain": {"gltf": ")" +
+                                terrain.filename().string() + R"("},
     "exposure": {"mode": "manual", "ev100": 14}})";
-  const std::string arguments =
-      "--headless --validation --frames 3 --fixed-dt 0.05 --width 128 "
-      "--height 72 --no-hud --scene " +
-      sceneFile.string() + " --capture " + (dir / "out").string();
-  EXPECT_EQ(runSample(arguments), 0) << arguments;
-  return engine::assets::readImage(dir / "out" / "frame_0002.exr");
+  return renderLastFrame(dir, sceneJson, 3, 128, 72);
 }
 
 std::vector<float> luminances(const ImageRgba32f& image) {

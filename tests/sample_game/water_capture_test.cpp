@@ -52,14 +52,7 @@ ImageRgba32f render(const Variant& variant) {
     clouds = kept;
   const fs::path dir = freshDir(variant.name);
   fs::create_directories(dir);
-  const fs::path file = dir / "scene.json";
-  std::ofstream(file) << json.dump(2);
-  const std::string arguments =
-      "--headless --validation --frames 8 --fixed-dt 0.05 --width 160 "
-      "--height 90 --no-hud --scene " +
-      file.string() + " --capture " + (dir / "out").string();
-  EXPECT_EQ(runSample(arguments), 0) << arguments;
-  return engine::assets::readImage(dir / "out" / "frame_0007.exr");
+  return renderLastFrame(dir, json.dump(2), 8, 160, 90);
 }
 
 float luminance(const float* p) {

@@ -22,4 +22,21 @@ void describeSceneSurface(engine::gfx::GraphicsPipelineDesc& desc, VkFormat hdrF
   desc.cullMode = VK_CULL_MODE_NONE;
 }
 
+FlashVariants::FlashVariants(engine::gfx::Device& device, engine::gfx::GraphicsPipelineDesc desc,
+                             std::uint32_t lightningConstant, bool lightning) {
+  desc.specialization.push_back({lightningConstant, 0u});
+  plain_ = engine::gfx::Pipeline(device, desc);
+  if (lightning) {
+    desc.specialization.back().value = 1u;
+    desc.debugName += " (lightning)";
+    lightning_.emplace(device, desc);
+  }
+}
+
+std::vector<const engine::gfx::Pipeline*> FlashVariants::all() const {
+  std::vector<const engine::gfx::Pipeline*> pipelines = {&plain_};
+  if (lightning_) pipelines.push_back(&*lightning_);
+  return pipelines;
+}
+
 }  // namespace sample

@@ -200,22 +200,9 @@ TerrainRenderer::TerrainRenderer(gfx::Device& device, const assets::MeshData& me
                            {5, 0, VK_FORMAT_R32G32_SFLOAT, offsetof(TerrainVertex, uv)}};
   const std::uint32_t textured = baseColour_.present() ? 1u : 0u;
   const std::uint32_t detailed = closeDetail ? 1u : 0u;
-  desc.specialization = {
-      {kLightningConstant, 0u}, {kTexturedConstant, textured}, {kCloseDetailConstant, detailed}};
+  desc.specialization = {{kTexturedConstant, textured}, {kCloseDetailConstant, detailed}};
   desc.debugName = cloudShadows ? "terrain (cloud shadows)" : "terrain";
-  pipeline_ = gfx::Pipeline(device, desc);
-  if (lightning) {
-    desc.specialization = {
-        {kLightningConstant, 1u}, {kTexturedConstant, textured}, {kCloseDetailConstant, detailed}};
-    desc.debugName += " (lightning)";
-    lightningPipeline_.emplace(device, desc);
-  }
-}
-
-std::vector<const gfx::Pipeline*> TerrainRenderer::pipelines() const {
-  std::vector<const gfx::Pipeline*> all = {&pipeline_};
-  if (lightningPipeline_) all.push_back(&*lightningPipeline_);
-  return all;
+  pipelines_ = FlashVariants(device, desc, kLightningConstant, lightning);
 }
 
 void TerrainRenderer::cull(const glm::mat4& viewProjection, const glm::dvec3& cameraPosition) {

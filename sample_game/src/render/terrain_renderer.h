@@ -5,7 +5,6 @@
 // in scenes whose clouds cast shadows) and sky, and hazed by the atmosphere's aerial
 // perspective, or by distance fog in scenes without one.
 #include <array>
-#include <optional>
 #include <vector>
 
 #include <glm/glm.hpp>
@@ -14,6 +13,7 @@
 #include "engine/assets/gltf_loader.h"
 #include "engine/gfx/pipelines.h"
 #include "engine/gfx/resources.h"
+#include "render/scene_surface.h"
 #include "render/terrain_materials.h"
 #include "render/terrain_texture.h"
 #include "terrain_material.h"
@@ -76,13 +76,11 @@ class TerrainRenderer {
 
   // This frame's pipeline: the lightning variant only while a flash is in progress, so that a
   // storm costs the terrain nothing between its flashes.
-  const engine::gfx::Pipeline& pipeline() const {
-    return flashing_ && lightningPipeline_ ? *lightningPipeline_ : pipeline_;
-  }
+  const engine::gfx::Pipeline& pipeline() const { return pipelines_.current(); }
   // Every pipeline it may draw with (to warm up and to describe).
-  std::vector<const engine::gfx::Pipeline*> pipelines() const;
+  std::vector<const engine::gfx::Pipeline*> pipelines() const { return pipelines_.all(); }
   // Whether this frame has a flash in progress (SceneFrame::flashRadiance is not 0).
-  void setFlashing(bool flashing) { flashing_ = flashing; }
+  void setFlashing(bool flashing) { pipelines_.setFlashing(flashing); }
   bool hazedByAerialPerspective() const { return aerialPerspective_; }
   bool shadowedByClouds() const { return cloudShadows_; }
   // Linear, clamped: the aerial perspective's and the sunlight map's.
@@ -110,9 +108,7 @@ class TerrainRenderer {
   bool cloudShadows_ = false;
   TerrainTexture baseColour_;
   engine::gfx::Sampler sampler_;
-  engine::gfx::Pipeline pipeline_;
-  std::optional<engine::gfx::Pipeline> lightningPipeline_;  // a storm's scene only
-  bool flashing_ = false;
+  FlashVariants pipelines_;
 };
 
 }  // namespace sample

@@ -6,6 +6,7 @@
 #include <span>
 
 #include "engine/gfx/upload.h"
+#include "tonemap_operator.h"
 
 namespace sample {
 
@@ -18,9 +19,9 @@ float srgbToLinear(std::uint8_t value) {
   return c <= 0.04045f ? c / 12.92f : std::pow((c + 0.055f) / 1.055f, 2.4f);
 }
 
-std::uint8_t linearToSrgb(float linear) {
-  const float c = std::clamp(linear, 0.0f, 1.0f);
-  const float s = c <= 0.0031308f ? c * 12.92f : 1.055f * std::pow(c, 1.0f / 2.4f) - 0.055f;
+// The engine's sRGB encoding (the tonemapper's), to 8 bits.
+std::uint8_t linearToSrgb8(float linear) {
+  const float s = shaders::linearToSrgb(std::clamp(linear, 0.0f, 1.0f));
   return static_cast<std::uint8_t>(std::lround(s * 255.0f));
 }
 
@@ -49,7 +50,7 @@ MipChain srgbMipChain(const assets::ImageRgba8& image) {
           }
         }
         std::uint8_t* out = &chain.texels[next + 4 * (std::size_t(y) * nw + x)];
-        for (int c = 0; c < 3; ++c) out[c] = linearToSrgb(sum[std::size_t(c)] / 4.0f);
+        for (int c = 0; c < 3; ++c) out[c] = linearToSrgb8(sum[std::size_t(c)] / 4.0f);
         out[3] = static_cast<std::uint8_t>(std::lround(sum[3] / 4.0f * 255.0f));
       }
     }

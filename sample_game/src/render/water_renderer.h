@@ -6,12 +6,12 @@
 // atmosphere's aerial perspective and reflecting its sky map (the clouds' sky light when they make
 // one), or fogged under the gradient sky; lit through the terrain's sunlight map under cloud
 // shadows; in a storm's scene, lit by the brightest flash in progress as the terrain is.
-#include <optional>
 #include <vector>
 
 #include "bindings.h"
 #include "engine/gfx/pipelines.h"
 #include "engine/gfx/resources.h"
+#include "render/scene_surface.h"
 
 namespace sample {
 
@@ -32,13 +32,11 @@ class WaterRenderer {
                 bool aerialPerspective, bool cloudShadows, bool lightning);
 
   // This frame's pipeline: the lightning variant only while a flash is in progress.
-  const engine::gfx::Pipeline& pipeline() const {
-    return flashing_ && lightningPipeline_ ? *lightningPipeline_ : pipeline_;
-  }
+  const engine::gfx::Pipeline& pipeline() const { return pipelines_.current(); }
   // Every pipeline it may draw with (to warm up and to describe).
-  std::vector<const engine::gfx::Pipeline*> pipelines() const;
+  std::vector<const engine::gfx::Pipeline*> pipelines() const { return pipelines_.all(); }
   // Whether this frame has a flash in progress (SceneFrame::flashRadiance is not 0).
-  void setFlashing(bool flashing) { flashing_ = flashing; }
+  void setFlashing(bool flashing) { pipelines_.setFlashing(flashing); }
   bool hazedByAerialPerspective() const { return aerialPerspective_; }
   bool shadowedByClouds() const { return cloudShadows_; }
   // Linear, clamped: the aerial perspective's and the sunlight map's.
@@ -53,13 +51,15 @@ class WaterRenderer {
   void drawFar(VkCommandBuffer cmd) const;
 
  private:
+  // The plain pipeline's description (FlashVariants makes the lightning one from it).
+  static engine::gfx::GraphicsPipelineDesc describe(bool aerialPerspective, bool cloudShadows,
+                                                    VkFormat hdrFormat, VkFormat depthFormat);
+
   bool aerialPerspective_ = false;
   bool cloudShadows_ = false;
+  FlashVariants pipelines_;
   engine::gfx::Sampler clamped_;
   engine::gfx::Sampler repeating_;
-  engine::gfx::Pipeline pipeline_;
-  std::optional<engine::gfx::Pipeline> lightningPipeline_;  // a storm's scene only
-  bool flashing_ = false;
 };
 
 }  // namespace sample
