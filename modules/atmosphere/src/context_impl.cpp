@@ -153,6 +153,7 @@ void Context::Impl::prepare(const Parameters& parameters, const Settings& s) {
   if (first || old.skyViewWidth != s.skyViewWidth || old.skyViewHeight != s.skyViewHeight) {
     replace(skyView_,
             makeImage(VK_IMAGE_TYPE_2D, extent2(s.skyViewWidth, s.skyViewHeight), "sky-view LUT"));
+    skyViewBuild_.reset();
   }
   if (first || old.aerialPerspectiveWidth != s.aerialPerspectiveWidth ||
       old.aerialPerspectiveHeight != s.aerialPerspectiveHeight ||

@@ -61,6 +61,9 @@ class Context::Impl {
   const detail::OwnedImage& environment() const { return environment_; }
   // How many times the parameter-only LUTs were recorded (tests: not every frame).
   std::uint64_t lutBuilds() const { return lutBuilds_; }
+  // How many times the sky-view LUT was recorded (tests: only when the camera's altitude or the
+  // sun moved).
+  std::uint64_t skyViewBuilds() const { return skyViewBuilds_; }
 
  private:
   static constexpr std::size_t kPrograms = static_cast<std::size_t>(detail::Program::Count);
@@ -86,6 +89,8 @@ class Context::Impl {
   void pushUniformsIndex(VkCommandBuffer cmd, VkPipelineLayout layout);
   void bindAndDispatch(VkCommandBuffer cmd, detail::Program program, const Slot& slot,
                        std::uint32_t x, std::uint32_t y, std::uint32_t z = 1);
+  // Whether the sky-view LUT as last built serves `inputs` (skyViewBuild_).
+  bool skyViewServes(const FrameInputs& inputs, const Settings& settings) const;
   // `shadow`: the frame's cloud shadow (dispatch(); render() passes none and keeps it).
   void writeSets(Slot& slot, VkImageView depth, VkImageLayout depthLayout, VkImageView color,
                  const FrameInputs::CloudShadow* shadow = nullptr);
@@ -114,6 +119,15 @@ class Context::Impl {
   std::optional<Parameters> preparedFor_;  // the parameters the next LUT build uses
   bool lutsDirty_ = true;
   std::uint64_t lutBuilds_ = 0;
+  // What the sky-view LUT was last built for: everything it depends on.
+  struct SkyViewBuild {
+    double altitudeMetres = 0.0;  // the camera's, at least 1 m (uniforms.cpp)
+    float sunHeight = 0.0f;       // the unit sun direction's y: its elevation's sine
+    std::uint32_t samples = 0;    // Settings::skyViewSamples
+    std::uint64_t lutBuilds = 0;  // the transmittance and multiple scattering it read
+  };
+  std::optional<SkyViewBuild> skyViewBuild_;  // none: its image is new (prepare())
+  std::uint64_t skyViewBuilds_ = 0;
   std::optional<std::uint64_t> lastFrameIndex_;
   std::uint32_t lastSlot_ = 0;
   VkExtent2D lastExtent_{0, 0};

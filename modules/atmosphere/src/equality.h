@@ -17,8 +17,8 @@ inline auto fieldsOf(const Parameters& p) {
 inline auto fieldsOf(const Settings& s) {
   return std::tie(s.transmittanceWidth, s.transmittanceHeight, s.transmittanceSamples,
                   s.multiScatteringSize, s.multiScatteringDirections, s.multiScatteringSamples,
-                  s.skyViewWidth, s.skyViewHeight, s.skyViewSamples, s.aerialPerspectiveWidth,
-                  s.aerialPerspectiveHeight, s.aerialPerspectiveSlices,
+                  s.skyViewWidth, s.skyViewHeight, s.skyViewSamples, s.skyViewAltitudeTolerance,
+                  s.aerialPerspectiveWidth, s.aerialPerspectiveHeight, s.aerialPerspectiveSlices,
                   s.aerialPerspectiveSamplesPerSlice, s.aerialPerspectiveRangeMetres);
 }
 

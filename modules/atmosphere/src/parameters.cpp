@@ -74,6 +74,7 @@ std::string validateSettings(const Settings& s) {
   c.range("skyViewWidth", s.skyViewWidth, 4u, 4096u);
   c.range("skyViewHeight", s.skyViewHeight, 4u, 4096u);
   c.range("skyViewSamples", s.skyViewSamples, 1u, 4096u);
+  c.range("skyViewAltitudeTolerance", s.skyViewAltitudeTolerance, 0.0f, 0.1f);
   c.range("aerialPerspectiveWidth", s.aerialPerspectiveWidth, 1u, 512u);
   c.range("aerialPerspectiveHeight", s.aerialPerspectiveHeight, 1u, 512u);
   c.range("aerialPerspectiveSlices", s.aerialPerspectiveSlices, 1u, 512u);
@@ -144,6 +145,7 @@ Settings settingsFor(Quality quality) {
       s.skyViewWidth = 512;
       s.skyViewHeight = 288;
       s.skyViewSamples = 200;
+      s.skyViewAltitudeTolerance = 0.0f;  // converged: rebuilt for every altitude
       s.aerialPerspectiveWidth = 64;
       s.aerialPerspectiveHeight = 64;
       s.aerialPerspectiveSlices = 96;
