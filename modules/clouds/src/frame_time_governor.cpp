@@ -198,7 +198,7 @@ const char* governorReasonName(FrameTimeGovernor::Reason reason) {
 const PresetLadder& presetLadder() {
   // modules/clouds/docs/benchmark/results.md, "Presets": the static views' mean at 640x360.
   static const PresetLadder kLadder{{Quality::Low, Quality::Medium, Quality::High, Quality::Ultra},
-                                    {4.9, 12.5, 21.0, 50.5}};
+                                    {3.5, 7.0, 16.6, 41.9}};
   return kLadder;
 }
 

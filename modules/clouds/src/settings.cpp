@@ -260,11 +260,12 @@ Settings settingsFor(Quality quality, const Settings& base) {
   // shadow on themselves").
   s.cloudShadowsOnClouds = quality == Quality::High || quality == Quality::Ultra;
   // The ladder (issue 53): each rung at most 0.6x the next one's time and at least 2 dB less
-  // accurate (docs/benchmark/results.md, "Targets"). Low traces a quarter of the resolution
-  // per axis; Medium, High and Ultra trace half of it and accumulate each output pixel's own
-  // rays (temporal upsampling), which a quarter-resolution trace cannot show: seen from above
-  // the layer, 24.9 dB at a quarter, 32.9 at half with Medium's march and one edge ray, 34.1
-  // with its two.
+  // accurate (docs/benchmark/results.md, "Targets"); and Medium, the product's default, is
+  // what the sample's 30 fps budget at 640x360 on lavapipe is measured with (issue 52). Low traces
+  // a quarter of the resolution per axis, Medium half of it, upsampled spatially; High and Ultra
+  // trace half of it and accumulate each output pixel's own rays (temporal upsampling), which shows
+  // detail no trace pixel holds: seen from above the layer, 32.9 dB with Medium's march and one
+  // edge ray, 34.1 with two.
   switch (quality) {
     case Quality::Low:
       s.traceScale = 0.25f;
@@ -278,9 +279,10 @@ Settings settingsFor(Quality quality, const Settings& base) {
       // scene's flight (march 8.4 against 8.7 ms, 2026-11-30).
       s.movingInsideUpdateInterval = 16;
       break;
-    // Medium is High's design with a march of half the samples: 90 m steps growing 0.8% of
-    // the distance, four light samples, and High's two edge rays per silhouette tile (+1.2 dB
-    // above the layer against one).
+    // Medium marches half High's samples (90 m steps growing 0.8% of the distance, four light
+    // samples) and upsamples spatially: temporal upsampling with two edge rays took the default
+    // scene's clouds from 13.5 to 18.6 ms a frame at 640x360 (upsample 3.4 -> 7.6 ms, march
+    // 5.8 -> 6.8; 2026-12-03), and the frame from 31.5 to 27 fps headless.
     case Quality::Medium:
       s.traceScale = 0.5f;
       s.updateInterval = 16;
@@ -289,8 +291,8 @@ Settings settingsFor(Quality quality, const Settings& base) {
       s.viewStepGrowth = 0.008f;
       s.coarseStepFactor = 3.3f;
       s.lightSteps = 4;
-      s.temporalUpsampling = true;
-      s.edgeRays = 2;
+      s.temporalUpsampling = false;
+      s.edgeRays = 0;
       // Flying inside the layer it keeps its 4 x 4 refresh: High's 2 x 2 there marches four
       // times the rays, and took the default scene's first 150 frames to 34 ms a frame.
       s.movingInsideUpdateInterval = 16;

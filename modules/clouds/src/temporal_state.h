@@ -85,8 +85,9 @@ class TemporalState {
   // Why: a pixel's value is a fresh sample blended into its history every k x k frames, so a
   // look that eases is shown late, by (1 - w) / w x k^2 frames at a refresh (w the fresh
   // weight) plus the (k^2 - 1) / 2 frames a pixel waits for its next one on average: 18 frames
-  // at Medium, 0.6 s, 5 dB against the Reference halfway through a 20 s change from Sparse to
-  // Stormy. Marched that far ahead, a steady change is shown on time on average; the error left
+  // at High, 0.6 s, 5 dB against the Reference halfway through a 20 s change from Sparse to
+  // Stormy (measured at Medium when it upsampled temporally). Marched that far ahead, a steady
+  // change is shown on time on average; the error left
   // is the spread of the ages, a quarter of the lag. (Blending the history towards this frame's
   // sparse fresh estimate instead cost 5 to 10 dB: the history's detail is worth more.)
   Settings marchedSettings(const Settings& settings, const TemporalFrame& frame) const;

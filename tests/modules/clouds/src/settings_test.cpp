@@ -82,7 +82,7 @@ TEST(CloudPresets, TheFunctionsOutputs) {
   };
   const Row rows[] = {
       {Quality::Low, 0.25f, 16, 64, 120.0f, 3, true, false, true, false},
-      {Quality::Medium, 0.5f, 16, 64, 90.0f, 4, true, false, true, true},
+      {Quality::Medium, 0.5f, 16, 64, 90.0f, 4, true, false, true, false},
       {Quality::High, 0.5f, 16, 168, 35.0f, 4, true, false, true, true},
       {Quality::Ultra, 0.5f, 4, 224, 30.0f, 10, true, false, true, true},
       {Quality::Reference, 1.0f, 1, 8192, 12.0f, 24, false, false, false, false},

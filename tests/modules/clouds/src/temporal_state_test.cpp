@@ -417,15 +417,15 @@ TEST(TemporalState, TheHistoryDriftsAsFarAsTheHostsWindCarriedTheClouds) {
   EXPECT_EQ(run(state, legacy, s).windDrift, glm::dvec2(5.0, 0.0));
 }
 
-// A look that eases is marched ahead of itself by the frames the history lags it: at Medium
+// A look that eases is marched ahead of itself by the frames the history lags it: at High
 // (4 x 4 tiles, fresh weight 0.6) 0.4 / 0.6 x 16 + 7.5 = 18.2 frames of its change since the
 // history's frame; the wind is not led (the reprojection follows it); nothing is led without a
-// change, after a reset, or with the lead off.
+// change, after a reset, with the lead off, or without temporal upsampling (Medium).
 TEST(TemporalState, AnEasingLookIsMarchedAheadOfItsHistory) {
-  const clouds::Settings medium = clouds::settingsFor(clouds::Quality::Medium);
+  const clouds::Settings high = clouds::settingsFor(clouds::Quality::High);
   TemporalState state;
-  run(state, groundCamera(), medium, 3);
-  clouds::Settings eased = medium;
+  run(state, groundCamera(), high, 3);
+  clouds::Settings eased = high;
   eased.coverage += 0.002f;
   eased.windSpeedMetresPerSecond += 0.05f;
   const TemporalFrame frame = state.plan(groundCamera(), eased, kTrace);
@@ -435,10 +435,10 @@ TEST(TemporalState, AnEasingLookIsMarchedAheadOfItsHistory) {
   const clouds::Settings marched = state.marchedSettings(eased, frame);
   EXPECT_NEAR(marched.coverage, eased.coverage + frame.lookLeadFrames * 0.002f, 1e-5f);
   EXPECT_EQ(marched.windSpeedMetresPerSecond, eased.windSpeedMetresPerSecond);
-  EXPECT_EQ(state.marchedSettings(medium, state.plan(groundCamera(), medium, kTrace)).coverage,
-            medium.coverage)
+  EXPECT_EQ(state.marchedSettings(high, state.plan(groundCamera(), high, kTrace)).coverage,
+            high.coverage)
       << "nothing changed";
-  clouds::Settings jumped = medium;
+  clouds::Settings jumped = high;
   jumped.coverage += 0.2f;
   EXPECT_EQ(state.marchedSettings(jumped, state.plan(groundCamera(), jumped, kTrace)).coverage,
             jumped.coverage)
@@ -446,6 +446,17 @@ TEST(TemporalState, AnEasingLookIsMarchedAheadOfItsHistory) {
   state.leadTheLook(false);
   EXPECT_EQ(state.marchedSettings(eased, state.plan(groundCamera(), eased, kTrace)).coverage,
             eased.coverage);
+
+  const clouds::Settings medium = clouds::settingsFor(clouds::Quality::Medium);
+  ASSERT_FALSE(clouds::upsamplesTemporally(medium));
+  TemporalState spatial;
+  run(spatial, groundCamera(), medium, 3);
+  clouds::Settings easedMedium = medium;
+  easedMedium.coverage += 0.002f;
+  const TemporalFrame unled = spatial.plan(groundCamera(), easedMedium, kTrace);
+  EXPECT_TRUE(unled.cloudsChanging);
+  EXPECT_EQ(unled.lookLeadFrames, 0.0f);
+  EXPECT_EQ(spatial.marchedSettings(easedMedium, unled).coverage, easedMedium.coverage);
 }
 
 TEST(TemporalState, ThePreviousCameraIsTheOneTheHistoryWasMadeWith) {

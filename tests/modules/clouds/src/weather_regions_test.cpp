@@ -239,6 +239,7 @@ TEST(WeatherRegions, TheHistoryKeepsAnEasingRegionAndDropsAJump) {
   std::vector<WeatherRegion> regions = {disc({5000.0, 0.0}, 1000.0f, 5000.0f, 0.5f)};
   in.weatherRegions = regions;
   clouds::Settings s;
+  s.temporalUpsampling = true;  // only a temporally upsampled history is led (temporal_state.cpp)
   detail::TemporalState temporal;
   const auto next = [&] {
     const detail::TemporalFrame f = temporal.plan(in, s, {32, 18});

@@ -200,17 +200,20 @@ TEST_F(CloudWeatherChange, RendersTheSameBitsOnARerun) {
 }
 
 // The lead's term: the same change marched with the look as it is lags it, further from the
-// Reference at every sample (0.8 to 3.3 dB when measured).
+// Reference at every sample (0.8 to 3.3 dB when measured at Medium with temporal upsampling;
+// High's figures are printed). Only a preset that upsamples temporally is led (Medium, which
+// does not, is not: temporal_state.cpp).
 TEST_F(CloudWeatherChange, MarchingAheadOfTheChangeBringsItNearerTheReference) {
   const Samples& samples = transitionSamples();
-  const clouds::Settings medium = clouds::settingsFor(clouds::Quality::Medium);
+  const clouds::Settings high = clouds::settingsFor(clouds::Quality::High);
+  ASSERT_TRUE(clouds::upsamplesTemporally(high));
   const WeatherTimeline change = sparseToStormy(kTransitionSeconds);
   const Flight led =
-      fly(*renderer(), change, medium, kHoldSeconds - 2.0, samples.seconds, samples.references);
+      fly(*renderer(), change, high, kHoldSeconds - 2.0, samples.seconds, samples.references);
   auto plain = renderer();
   clouds::detail::ContextAccess::impl(plain->context()).leadTheLook(false);
   const Flight lagging =
-      fly(*plain, change, medium, kHoldSeconds - 2.0, samples.seconds, samples.references);
+      fly(*plain, change, high, kHoldSeconds - 2.0, samples.seconds, samples.references);
   for (std::size_t i = 0; i < samples.seconds.size(); ++i) {
     std::printf("at %4.1f s: %.2f dB led, %.2f dB as it is\n", samples.seconds[i], led.psnr[i],
                 lagging.psnr[i]);
