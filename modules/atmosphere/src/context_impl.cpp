@@ -167,6 +167,8 @@ void Context::Impl::prepare(const Parameters& parameters, const Settings& s) {
       !detail::same(*preparedFor_, parameters)) {
     lutsDirty_ = true;
   }
+  // The sky-view LUT is made from the other two, with its own samples: rebuilt with either.
+  if (lutsDirty_ || old.skyViewSamples != s.skyViewSamples) skyViewBuild_.reset();
   sizedFor_ = s;
   preparedFor_ = parameters;
   // Images no frame has used yet can go now.

@@ -89,8 +89,9 @@ class Context::Impl {
   void pushUniformsIndex(VkCommandBuffer cmd, VkPipelineLayout layout);
   void bindAndDispatch(VkCommandBuffer cmd, detail::Program program, const Slot& slot,
                        std::uint32_t x, std::uint32_t y, std::uint32_t z = 1);
-  // Whether the sky-view LUT as last built serves `inputs` (skyViewBuild_).
-  bool skyViewServes(const FrameInputs& inputs, const Settings& settings) const;
+  // Whether the sky-view LUT as last built serves a camera at `altitudeMetres` under this frame's
+  // sun (skyViewBuild_).
+  bool skyViewServes(double altitudeMetres, const Settings& settings) const;
   // `shadow`: the frame's cloud shadow (dispatch(); render() passes none and keeps it).
   void writeSets(Slot& slot, VkImageView depth, VkImageLayout depthLayout, VkImageView color,
                  const FrameInputs::CloudShadow* shadow = nullptr);
@@ -119,14 +120,13 @@ class Context::Impl {
   std::optional<Parameters> preparedFor_;  // the parameters the next LUT build uses
   bool lutsDirty_ = true;
   std::uint64_t lutBuilds_ = 0;
-  // What the sky-view LUT was last built for: everything it depends on.
+  // What the sky-view LUT was last built for, of what changes from frame to frame; none when
+  // prepare() changed the rest (its image, its samples, the LUTs it reads).
   struct SkyViewBuild {
     double altitudeMetres = 0.0;  // the camera's, at least 1 m (uniforms.cpp)
     float sunHeight = 0.0f;       // the unit sun direction's y: its elevation's sine
-    std::uint32_t samples = 0;    // Settings::skyViewSamples
-    std::uint64_t lutBuilds = 0;  // the transmittance and multiple scattering it read
   };
-  std::optional<SkyViewBuild> skyViewBuild_;  // none: its image is new (prepare())
+  std::optional<SkyViewBuild> skyViewBuild_;
   std::uint64_t skyViewBuilds_ = 0;
   std::optional<std::uint64_t> lastFrameIndex_;
   std::uint32_t lastSlot_ = 0;

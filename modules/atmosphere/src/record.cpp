@@ -96,10 +96,10 @@ void Context::Impl::dispatch(const FrameInputs& inputs, const Parameters& parame
     lutsDirty_ = false;
     ++lutBuilds_;
   }
-  if (!skyViewServes(inputs, settings)) {
+  const double altitude = std::max(inputs.cameraPosition.y, 1.0);  // as the uniforms clamp it
+  if (!skyViewServes(altitude, settings)) {
     lutPass(Program::SkyView, settings.skyViewWidth, settings.skyViewHeight);
-    skyViewBuild_ = SkyViewBuild{std::max(inputs.cameraPosition.y, 1.0),
-                                 lastUniforms_.sunDirection.y, settings.skyViewSamples, lutBuilds_};
+    skyViewBuild_ = SkyViewBuild{altitude, lastUniforms_.sunDirection.y};
     ++skyViewBuilds_;
   }
   lutPass(Program::AerialPerspective, settings.aerialPerspectiveWidth,
@@ -125,13 +125,11 @@ void Context::Impl::dispatch(const FrameInputs& inputs, const Parameters& parame
 // the one it was built at: 0.85 of the atmosphere's 2.5 ms a frame at Medium on lavapipe, in a
 // flight that mostly keeps its height. (Its readers use this frame's horizon dip; the kept
 // LUT's differs by at most half the tolerance of it.)
-bool Context::Impl::skyViewServes(const FrameInputs& inputs, const Settings& settings) const {
+bool Context::Impl::skyViewServes(double altitudeMetres, const Settings& settings) const {
   if (!skyViewBuild_) return false;
   const SkyViewBuild& built = *skyViewBuild_;
-  const double altitude = std::max(inputs.cameraPosition.y, 1.0);
   return built.sunHeight == lastUniforms_.sunDirection.y &&
-         built.samples == settings.skyViewSamples && built.lutBuilds == lutBuilds_ &&
-         std::abs(altitude - built.altitudeMetres) <=
+         std::abs(altitudeMetres - built.altitudeMetres) <=
              double(settings.skyViewAltitudeTolerance) * built.altitudeMetres;
 }
 
