@@ -6,7 +6,7 @@ set -euo pipefail
 packages=(
   cmake ninja-build g++ pkg-config clang-format clang libclang-rt-14-dev
   libvulkan-dev mesa-vulkan-drivers vulkan-validationlayers glslang-tools spirv-tools
-  libglm-dev libglfw3-dev libtinygltf-dev libopenimageio-dev nlohmann-json3-dev libcli11-dev
+  libx11-dev libxext-dev libxrandr-dev libglm-dev libglfw3-dev libtinygltf-dev libopenimageio-dev nlohmann-json3-dev libcli11-dev
   libgtest-dev libgmock-dev libbenchmark-dev libimgui-dev python3-matplotlib
   libopenvdb-dev libopenvdb-tools
   xvfb xauth

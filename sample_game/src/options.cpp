@@ -90,6 +90,11 @@ ParseResult parseOptions(int argc, char** argv) {
                "both make the same pixels)");
   bool noVsync = false;
   cli.add_flag("--no-vsync", noVsync, "Present without waiting for vertical blank");
+  std::string present = "auto";
+  cli.add_option("--present", present,
+                 "How a window's frames reach it: swapchain, shm (read back, put through "
+                 "MIT-SHM), or auto (shm for a software device on a local X server)")
+      ->check(CLI::IsMember({"auto", "swapchain", "shm"}));
   try {
     cli.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
@@ -111,6 +116,9 @@ ParseResult parseOptions(int argc, char** argv) {
     options.cloudQuality = parsed;
   }
   options.vsync = !noVsync;
+  options.present = present == "swapchain" ? PresentPath::Swapchain
+                    : present == "shm"     ? PresentPath::SharedMemory
+                                           : PresentPath::Automatic;
   options.hud = !noHud;
   return ParseResult{options, 0};
 }

@@ -9,6 +9,13 @@
 
 namespace sample {
 
+// How a window's frames reach the screen.
+enum class PresentPath {
+  Automatic,     // shared memory for a software device on a local X server, else the swapchain
+  Swapchain,     // Vulkan's swapchain (the WSI)
+  SharedMemory,  // read back and put through MIT-SHM (engine/render/shm_window_target.h)
+};
+
 struct Options {
   bool headless = false;                            // render offscreen, never touch GLFW
   std::uint32_t frames = 0;                         // frames to render; 0 = until the window closes
@@ -23,6 +30,7 @@ struct Options {
   bool validation = false;    // Vulkan validation layers (also CLOUDSCAPE_VALIDATION=1)
   std::string device;         // "cpu", "gpu" or a device-name substring
   bool vsync = true;
+  PresentPath present = PresentPath::Automatic;
   std::filesystem::path scene;                     // scene JSON; empty: the default scene
   std::optional<std::filesystem::path> terrain;    // fly over this glTF instead of the scene's
   std::optional<std::filesystem::path> heroCloud;  // a user's cloud (.vdb, .nvdf), ahead

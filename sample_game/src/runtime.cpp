@@ -7,6 +7,7 @@
 #include <numeric>
 #include <optional>
 #include <span>
+#include <string>
 #include <thread>
 
 #include "atmosphere/ecs/atmosphere_components.h"
@@ -19,9 +20,11 @@
 #include "engine/gfx/device.h"
 #include "engine/gfx/instance.h"
 #include "engine/platform/input.h"
+#include "engine/platform/shm_blitter.h"
 #include "engine/platform/window.h"
 #include "engine/render/present_target.h"
 #include "engine/render/render_feature.h"
+#include "engine/render/shm_window_target.h"
 #include "frame_series.h"
 #include "game/game_components.h"
 #include "game/input_script.h"
@@ -47,10 +50,11 @@ struct RunPlan {
   LoadedHeroClouds heroClouds;
 };
 
-// The display the run presents to: a window's swapchain, or an offscreen image.
+// The display the run presents to: a window (its swapchain, or shared memory for a software
+// device), or an offscreen image.
 struct Presentation {
   std::unique_ptr<render::PresentTarget> target;
-  render::SwapchainTarget* swapchain = nullptr;  // the target, when windowed
+  render::PresentTarget* window = nullptr;  // the target, when windowed
 };
 
 // Named GPU times, one list per name in order of first use.
@@ -175,16 +179,31 @@ RunPlan planRun(Options options) {
   return plan;
 }
 
-Presentation createPresentation(gfx::Device& device, VkSurfaceKHR surface, const RunPlan& plan) {
+Presentation createPresentation(gfx::Device& device, platform::Window* window, VkSurfaceKHR surface,
+                                const RunPlan& plan) {
   Presentation p;
-  if (surface != VK_NULL_HANDLE) {
-    auto swapchain = std::make_unique<render::SwapchainTarget>(device, surface, plan.options.vsync);
-    p.swapchain = swapchain.get();
-    p.target = std::move(swapchain);
-  } else {
+  if (window == nullptr) {
     p.target = std::make_unique<render::OffscreenTarget>(
         device, VkExtent2D{plan.options.width, plan.options.height});
+    return p;
   }
+  const PresentPath path = plan.options.present;
+  if (path == PresentPath::SharedMemory || (path == PresentPath::Automatic && device.isCpu())) {
+    std::string whyNot;
+    if (auto blitter = platform::ShmBlitter::create(*window, &whyNot)) {
+      log::info("presenting through MIT-SHM (the device is " + device.name() +
+                "; no vertical-blank sync, as in Mesa's software present)");
+      p.target = std::make_unique<render::ShmWindowTarget>(device, std::move(blitter));
+    } else if (path == PresentPath::SharedMemory) {
+      throw Error("--present shm: " + whyNot);
+    } else {
+      log::info("presenting through the swapchain: " + whyNot);
+    }
+  }
+  if (!p.target) {
+    p.target = std::make_unique<render::SwapchainTarget>(device, surface, plan.options.vsync);
+  }
+  p.window = p.target.get();
   return p;
 }
 
@@ -198,14 +217,14 @@ std::filesystem::path frameStem(const std::filesystem::path& dir, const char* pr
 // One frame's input: the window's (and its keys that act outside the game), or the script's
 // (headless, or a window run with --script).
 // Returns false when the window asked to close.
-bool gatherInput(ecs::World& world, platform::Window* window, render::SwapchainTarget* swapchain,
+bool gatherInput(ecs::World& world, platform::Window* window, render::PresentTarget* target,
                  const RunPlan& plan, std::uint64_t frame, platform::InputState& scriptInput,
                  std::uint64_t& screenshots) {
   auto& input = world.ctx().get<platform::InputState>();
   if (window != nullptr) {
     window->pollEvents();
     if (window->shouldClose() || window->input().wasPressed(platform::Key::Escape)) return false;
-    swapchain->resize(window->framebufferExtent());
+    target->resize(window->framebufferExtent());
     if (window->minimized()) std::this_thread::sleep_for(std::chrono::milliseconds(16));
     if (window->input().wasPressed(platform::Key::M)) {
       window->setMouseCaptured(!window->input().mouseCaptured);
@@ -231,7 +250,7 @@ bool gatherInput(ecs::World& world, platform::Window* window, render::SwapchainT
 }
 
 LoopStats runFrames(ecs::App& app, const Renderer& renderer, platform::Window* window,
-                    render::SwapchainTarget* swapchain, const RunPlan& plan) {
+                    render::PresentTarget* windowTarget, const RunPlan& plan) {
   ecs::World& world = app.world();
   const Options& options = plan.options;
   auto& time = world.ctx().get<ecs::FrameTime>();
@@ -245,7 +264,7 @@ LoopStats runFrames(ecs::App& app, const Renderer& renderer, platform::Window* w
   std::optional<FrameSeries> series;
   if (options.frameSeries) series.emplace(*options.frameSeries);
   for (std::uint64_t frame = 0; options.frames == 0 || frame < options.frames; ++frame) {
-    if (!gatherInput(world, window, swapchain, plan, frame, scriptInput, screenshots)) break;
+    if (!gatherInput(world, window, windowTarget, plan, frame, scriptInput, screenshots)) break;
     const auto now = std::chrono::steady_clock::now();
     const double measured = std::chrono::duration<double>(now - last).count();
     last = now;
@@ -412,7 +431,7 @@ int run(Options commandLine) {
       window ? window->createSurface(instance.vk()) : platform::Surface{};
   {
     gfx::Device device(instance, gfx::DeviceDesc{surface.vk(), options.device});
-    Presentation presentation = createPresentation(device, surface.vk(), plan);
+    Presentation presentation = createPresentation(device, window.get(), surface.vk(), plan);
 
     RendererOptions rendererOptions;
     rendererOptions.maxExtent = {std::max(options.width, 3840u), std::max(options.height, 2160u)};
@@ -432,7 +451,7 @@ int run(Options commandLine) {
     app.scheduler().add(ecs::Phase::Render, "render frame",
                         [&renderer](ecs::World& world) { renderer.renderFrame(world); });
 
-    const LoopStats stats = runFrames(app, renderer, window.get(), presentation.swapchain, plan);
+    const LoopStats stats = runFrames(app, renderer, window.get(), presentation.window, plan);
     renderer.finish();
     if (options.saveScene && !saveLiveScene(app.world())) return 4;
     if (options.describe) {

@@ -67,6 +67,8 @@ def run_sample(sample, data_home, out_dir, fault, name, windowed):
         # A fixed preset: the frame-rate governor a window has would compile the other presets'
         # pipelines too (9 s a run on lavapipe) and the sweep is there for the window's faults.
         command += ["--quality", "medium"]
+        # The swapchain's faults: a software device would otherwise present through MIT-SHM.
+        command += ["--present", "swapchain"]
     else:
         command += ["--headless", "--capture", str(out_dir / "capture")]
     try:

@@ -202,6 +202,7 @@ void Renderer::rebuildGraph(VkExtent2D extent) {
   render::TextureHandle display =
       render::addTonemapPass(graph, tonemapper_, hdr, targetHandle_, &tonemap_, std::move(overlay));
   capture_.addToGraph(graph, hdr, display);
+  target_.addToGraph(graph, display);  // last: it reads what the frame drew
   graph.compile();
   graphExtent_ = extent;
 }

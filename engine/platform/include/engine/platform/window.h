@@ -65,6 +65,14 @@ class Window {
   // Hides the cursor and reports relative motion (mouse look); toggled by the game.
   void setMouseCaptured(bool captured);
 
+  // The window's X11 connection (a Display*) and window id when GLFW runs on X11; a null
+  // display otherwise. For presenters that bypass Vulkan's WSI (shm_blitter.h).
+  struct X11Handles {
+    void* display = nullptr;
+    unsigned long window = 0;
+  };
+  X11Handles x11() const;
+
   InputState& input() { return input_; }
   const InputState& input() const { return input_; }
 

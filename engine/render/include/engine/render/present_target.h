@@ -33,6 +33,12 @@ class PresentTarget {
   virtual std::span<const VkSemaphoreSubmitInfo> submitSignals() const = 0;
   // Swapchain: queue present. Offscreen: nothing.
   virtual void present() = 0;
+  // A window's target follows its framebuffer's size (0x0: minimized); an offscreen one keeps
+  // the size it was made with.
+  virtual void resize(VkExtent2D /*framebufferExtent*/) {}
+  // Adds the passes the target needs once the frame's image is drawn (`image`: its handle in
+  // the graph). Call on every graph build, after every pass that draws into the image.
+  virtual void addToGraph(FrameGraph& /*graph*/, TextureHandle /*image*/) {}
 };
 
 class OffscreenTarget final : public PresentTarget {
@@ -58,7 +64,7 @@ class SwapchainTarget final : public PresentTarget {
  public:
   SwapchainTarget(gfx::Device& device, VkSurfaceKHR surface, bool vsync);
   // Call with the window's framebuffer size every frame; a change rebuilds on next acquire.
-  void resize(VkExtent2D framebufferExtent) { swapchain_.resize(framebufferExtent); }
+  void resize(VkExtent2D framebufferExtent) override { swapchain_.resize(framebufferExtent); }
   VkFormat format() const override { return swapchain_.format(); }
   VkExtent2D extent() const override { return swapchain_.extent(); }
   bool acquire(std::uint32_t frameSlot) override;
