@@ -7,6 +7,7 @@
 #include <sys/shm.h>
 
 #include <cstring>
+#include <string>
 #include <utility>
 
 #include "engine/core/error.h"
@@ -60,18 +61,22 @@ std::unique_ptr<ShmBlitter> ShmBlitter::create(Window& window, std::string* whyN
   probe.shmid = shmget(IPC_PRIVATE, 4096, IPC_CREAT | 0600);
   if (probe.shmid < 0) return fail("shmget failed");
   probe.shmaddr = static_cast<char*>(shmat(probe.shmid, nullptr, 0));
-  shmctl(probe.shmid, IPC_RMID, nullptr);  // freed once both sides detach
-  if (probe.shmaddr == reinterpret_cast<char*>(-1)) return fail("shmat failed");
+  if (probe.shmaddr == reinterpret_cast<char*>(-1)) {
+    shmctl(probe.shmid, IPC_RMID, nullptr);
+    return fail("shmat failed");
+  }
   probe.readOnly = True;
   XSync(x11->display, False);
   gAttachFailed = false;
   XErrorHandler previous = XSetErrorHandler(onAttachError);
-  const bool attached = XShmAttach(x11->display, &probe) && (XSync(x11->display, False), true);
+  const bool requested = XShmAttach(x11->display, &probe);
+  XSync(x11->display, False);  // the attach's error, if any, arrives here
   XSetErrorHandler(previous);
-  const bool usable = attached && !gAttachFailed;
+  const bool usable = requested && !gAttachFailed;
   if (usable) XShmDetach(x11->display, &probe);
   XSync(x11->display, False);
   shmdt(probe.shmaddr);
+  shmctl(probe.shmid, IPC_RMID, nullptr);
   if (!usable) return fail("the X server cannot attach this process's memory (remote?)");
   x11->gc = XCreateGC(x11->display, x11->window, 0, nullptr);
   return std::unique_ptr<ShmBlitter>(new ShmBlitter(std::move(x11)));
@@ -102,22 +107,38 @@ std::span<std::byte> ShmBlitter::pixels(VkExtent2D extent) {
   if (extent.width != extent_.width || extent.height != extent_.height) {
     release();
     X11& x = *x11_;
-    x.image = XShmCreateImage(x.display, x.visual, 24, ZPixmap, nullptr, &x.segment, extent.width,
-                              extent.height);
-    require(x.image != nullptr, "ShmBlitter", "XShmCreateImage failed");
-    require(x.image->bits_per_pixel == 32 &&
-                x.image->bytes_per_line == static_cast<int>(extent.width * 4),
-            "ShmBlitter", "the server's image rows are not 4 bytes a pixel, tightly packed");
     const std::size_t bytes = std::size_t{extent.width} * extent.height * 4;
-    x.segment.shmid = shmget(IPC_PRIVATE, bytes, IPC_CREAT | 0600);
-    require(x.segment.shmid >= 0, "ShmBlitter", "shmget failed");
-    x.segment.shmaddr = static_cast<char*>(shmat(x.segment.shmid, nullptr, 0));
-    shmctl(x.segment.shmid, IPC_RMID, nullptr);
-    require(x.segment.shmaddr != reinterpret_cast<char*>(-1), "ShmBlitter", "shmat failed");
-    x.image->data = x.segment.shmaddr;
-    x.segment.readOnly = True;
-    XShmAttach(x.display, &x.segment);
+    // The image keeps a pointer to its segment's info (XShmPutImage reads it): x.segment, which
+    // lives as long as the blitter.
+    XShmSegmentInfo& segment = x.segment;
+    segment = {};
+    segment.shmid = shmget(IPC_PRIVATE, bytes, IPC_CREAT | 0600);
+    if (segment.shmid < 0)
+      throw Error("ShmBlitter: shmget of " + std::to_string(bytes) + " failed");
+    segment.shmaddr = static_cast<char*>(shmat(segment.shmid, nullptr, 0));
+    XImage* image = segment.shmaddr == reinterpret_cast<char*>(-1)
+                        ? nullptr
+                        : XShmCreateImage(x.display, x.visual, 24, ZPixmap, segment.shmaddr,
+                                          &segment, extent.width, extent.height);
+    if (image == nullptr || image->bits_per_pixel != 32 ||
+        image->bytes_per_line != static_cast<int>(extent.width * 4)) {
+      if (image != nullptr) {
+        image->data = nullptr;
+        XDestroyImage(image);
+      }
+      if (segment.shmaddr != reinterpret_cast<char*>(-1)) shmdt(segment.shmaddr);
+      shmctl(segment.shmid, IPC_RMID, nullptr);
+      segment = {};
+      throw Error("ShmBlitter: no 32-bit, tightly packed shared image of " +
+                  std::to_string(extent.width) + "x" + std::to_string(extent.height));
+    }
+    segment.readOnly = True;
+    XShmAttach(x.display, &segment);
     XSync(x.display, False);
+    // Marked for removal once both sides have it attached: it goes when both detach, also if
+    // this process dies.
+    shmctl(segment.shmid, IPC_RMID, nullptr);
+    x.image = image;
     extent_ = extent;
   }
   return {reinterpret_cast<std::byte*>(x11_->segment.shmaddr),

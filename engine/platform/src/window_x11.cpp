@@ -1,6 +1,6 @@
-// Window::x11() apart from window.cpp: the X11 headers (Xlib, and Xrandr through glfw3native.h:
-// libxrandr-dev) define macros (None, Bool, KeyPress)
-// that the rest of the window's code must not see.
+// Window::x11() apart from window.cpp: the X11 headers (Xlib, and Xrandr through
+// glfw3native.h: libxrandr-dev) define macros (None, Bool, KeyPress) that the rest of the
+// window's code must not see.
 #include "engine/platform/window.h"
 
 #include <GLFW/glfw3.h>
