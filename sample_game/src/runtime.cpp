@@ -50,13 +50,6 @@ struct RunPlan {
   LoadedHeroClouds heroClouds;
 };
 
-// The display the run presents to: a window (its swapchain, or shared memory for a software
-// device), or an offscreen image.
-struct Presentation {
-  std::unique_ptr<render::PresentTarget> target;
-  render::PresentTarget* window = nullptr;  // the target, when windowed
-};
-
 // Named GPU times, one list per name in order of first use.
 struct TimingSeries {
   std::vector<std::pair<std::string, std::vector<double>>> milliseconds;
@@ -179,13 +172,15 @@ RunPlan planRun(Options options) {
   return plan;
 }
 
-Presentation createPresentation(gfx::Device& device, platform::Window* window, VkSurfaceKHR surface,
-                                const RunPlan& plan) {
-  Presentation p;
+// The display the run presents to: a window (its swapchain, or shared memory for a software
+// device), or an offscreen image.
+std::unique_ptr<render::PresentTarget> createPresentTarget(gfx::Device& device,
+                                                           platform::Window* window,
+                                                           VkSurfaceKHR surface,
+                                                           const RunPlan& plan) {
   if (window == nullptr) {
-    p.target = std::make_unique<render::OffscreenTarget>(
+    return std::make_unique<render::OffscreenTarget>(
         device, VkExtent2D{plan.options.width, plan.options.height});
-    return p;
   }
   const PresentPath path = plan.options.present;
   if (path == PresentPath::SharedMemory || (path == PresentPath::Automatic && device.isCpu())) {
@@ -193,18 +188,12 @@ Presentation createPresentation(gfx::Device& device, platform::Window* window, V
     if (auto blitter = platform::ShmBlitter::create(*window, &whyNot)) {
       log::info("presenting through MIT-SHM (the device is " + device.name() +
                 "; no vertical-blank sync, as in Mesa's software present)");
-      p.target = std::make_unique<render::ShmWindowTarget>(device, std::move(blitter));
-    } else if (path == PresentPath::SharedMemory) {
-      throw Error("--present shm: " + whyNot);
-    } else {
-      log::info("presenting through the swapchain: " + whyNot);
+      return std::make_unique<render::ShmWindowTarget>(device, std::move(blitter));
     }
+    if (path == PresentPath::SharedMemory) throw Error("--present shm: " + whyNot);
+    log::info("presenting through the swapchain: " + whyNot);
   }
-  if (!p.target) {
-    p.target = std::make_unique<render::SwapchainTarget>(device, surface, plan.options.vsync);
-  }
-  p.window = p.target.get();
-  return p;
+  return std::make_unique<render::SwapchainTarget>(device, surface, plan.options.vsync);
 }
 
 std::filesystem::path frameStem(const std::filesystem::path& dir, const char* prefix,
@@ -217,14 +206,14 @@ std::filesystem::path frameStem(const std::filesystem::path& dir, const char* pr
 // One frame's input: the window's (and its keys that act outside the game), or the script's
 // (headless, or a window run with --script).
 // Returns false when the window asked to close.
-bool gatherInput(ecs::World& world, platform::Window* window, render::PresentTarget* target,
+bool gatherInput(ecs::World& world, platform::Window* window, render::PresentTarget& target,
                  const RunPlan& plan, std::uint64_t frame, platform::InputState& scriptInput,
                  std::uint64_t& screenshots) {
   auto& input = world.ctx().get<platform::InputState>();
   if (window != nullptr) {
     window->pollEvents();
     if (window->shouldClose() || window->input().wasPressed(platform::Key::Escape)) return false;
-    target->resize(window->framebufferExtent());
+    target.resize(window->framebufferExtent());
     if (window->minimized()) std::this_thread::sleep_for(std::chrono::milliseconds(16));
     if (window->input().wasPressed(platform::Key::M)) {
       window->setMouseCaptured(!window->input().mouseCaptured);
@@ -250,7 +239,7 @@ bool gatherInput(ecs::World& world, platform::Window* window, render::PresentTar
 }
 
 LoopStats runFrames(ecs::App& app, const Renderer& renderer, platform::Window* window,
-                    render::PresentTarget* windowTarget, const RunPlan& plan) {
+                    render::PresentTarget& target, const RunPlan& plan) {
   ecs::World& world = app.world();
   const Options& options = plan.options;
   auto& time = world.ctx().get<ecs::FrameTime>();
@@ -264,7 +253,7 @@ LoopStats runFrames(ecs::App& app, const Renderer& renderer, platform::Window* w
   std::optional<FrameSeries> series;
   if (options.frameSeries) series.emplace(*options.frameSeries);
   for (std::uint64_t frame = 0; options.frames == 0 || frame < options.frames; ++frame) {
-    if (!gatherInput(world, window, windowTarget, plan, frame, scriptInput, screenshots)) break;
+    if (!gatherInput(world, window, target, plan, frame, scriptInput, screenshots)) break;
     const auto now = std::chrono::steady_clock::now();
     const double measured = std::chrono::duration<double>(now - last).count();
     last = now;
@@ -431,7 +420,8 @@ int run(Options commandLine) {
       window ? window->createSurface(instance.vk()) : platform::Surface{};
   {
     gfx::Device device(instance, gfx::DeviceDesc{surface.vk(), options.device});
-    Presentation presentation = createPresentation(device, window.get(), surface.vk(), plan);
+    const std::unique_ptr<render::PresentTarget> target =
+        createPresentTarget(device, window.get(), surface.vk(), plan);
 
     RendererOptions rendererOptions;
     rendererOptions.maxExtent = {std::max(options.width, 3840u), std::max(options.height, 2160u)};
@@ -447,11 +437,11 @@ int run(Options commandLine) {
     app.world().ctx().emplace<LiveScene>(LiveScene{
         plan.scene, options.saveScene.value_or("edited_scene.json"), {}, {}, {}, plan.scene});
     installSceneHotReload(app.scheduler(), plan.scene);
-    Renderer renderer(device, *presentation.target, app.world(), rendererOptions);
+    Renderer renderer(device, *target, app.world(), rendererOptions);
     app.scheduler().add(ecs::Phase::Render, "render frame",
                         [&renderer](ecs::World& world) { renderer.renderFrame(world); });
 
-    const LoopStats stats = runFrames(app, renderer, window.get(), presentation.window, plan);
+    const LoopStats stats = runFrames(app, renderer, window.get(), *target, plan);
     renderer.finish();
     if (options.saveScene && !saveLiveScene(app.world())) return 4;
     if (options.describe) {

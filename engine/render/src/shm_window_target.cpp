@@ -3,6 +3,7 @@
 #include <cstring>
 #include <utility>
 
+#include "engine/gfx/formats.h"
 #include "engine/gfx/vk_check.h"
 
 namespace engine::render {
@@ -10,42 +11,21 @@ namespace engine::render {
 ShmWindowTarget::ShmWindowTarget(gfx::Device& device, std::unique_ptr<platform::ShmBlitter> blitter)
     : device_(device), blitter_(std::move(blitter)) {}
 
-VkExtent2D ShmWindowTarget::extent() const {
-  return image_ ? VkExtent2D{image_.extent().width, image_.extent().height} : VkExtent2D{0, 0};
-}
-
 bool ShmWindowTarget::acquire(std::uint32_t) {
   drawn_ = false;
   if (wanted_.width == 0 || wanted_.height == 0) return false;  // minimized
   const VkExtent2D current = extent();
   if (current.width != wanted_.width || current.height != wanted_.height) {
     vkDeviceWaitIdle(device_.vk());  // frames in flight may still read the old image
-    image_ = gfx::Image(
-        device_, gfx::ImageDesc{VK_IMAGE_TYPE_2D,
-                                kFormat,
-                                {wanted_.width, wanted_.height, 1},
-                                1,
-                                1,
-                                VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT |
-                                    VK_IMAGE_USAGE_TRANSFER_SRC_BIT | VK_IMAGE_USAGE_SAMPLED_BIT,
-                                "shm window image"});
-    readback_ =
-        gfx::Buffer(device_, gfx::BufferDesc{VkDeviceSize{wanted_.width} * wanted_.height * 4,
-                                             VK_BUFFER_USAGE_TRANSFER_DST_BIT,
-                                             gfx::MemoryUsage::Readback, "shm window readback"});
+    frame_ = std::make_unique<OffscreenTarget>(device_, wanted_, kFormat);
+    readback_ = gfx::Buffer(
+        device_,
+        gfx::BufferDesc{VkDeviceSize{wanted_.width} * wanted_.height * gfx::texelBytes(kFormat),
+                        VK_BUFFER_USAGE_TRANSFER_DST_BIT, gfx::MemoryUsage::Readback,
+                        "shm window readback"});
   }
   drawn_ = true;
   return true;
-}
-
-ImportedTexture ShmWindowTarget::describe() const {
-  ImportedTexture texture;
-  texture.image = image_.vk();
-  texture.view = image_.view();
-  texture.desc.extent = image_.extent();
-  texture.desc.format = kFormat;
-  texture.initial = ResourceState{};  // every frame overwrites the whole image
-  return texture;
 }
 
 void ShmWindowTarget::addToGraph(FrameGraph& graph, TextureHandle image) {
@@ -67,7 +47,7 @@ void ShmWindowTarget::addToGraph(FrameGraph& graph, TextureHandle image) {
       [this](const Data& d, PassContext& context) {
         VkBufferImageCopy region{};
         region.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
-        region.imageExtent = image_.extent();
+        region.imageExtent = {frame_->extent().width, frame_->extent().height, 1};
         vkCmdCopyImageToBuffer(context.cmd(), context.image(d.image),
                                VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, context.buffer(d.readback), 1,
                                &region);

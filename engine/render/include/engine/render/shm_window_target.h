@@ -21,11 +21,13 @@ class ShmWindowTarget final : public PresentTarget {
  public:
   ShmWindowTarget(gfx::Device& device, std::unique_ptr<platform::ShmBlitter> blitter);
   VkFormat format() const override { return kFormat; }
-  VkExtent2D extent() const override;
+  VkExtent2D extent() const override { return frame_ ? frame_->extent() : VkExtent2D{0, 0}; }
   bool acquire(std::uint32_t frameSlot) override;
-  VkImage image() const override { return image_.vk(); }
-  VkImageView view() const override { return image_.view(); }
-  ImportedTexture describe() const override;
+  VkImage image() const override { return frame_ ? frame_->image() : VK_NULL_HANDLE; }
+  VkImageView view() const override { return frame_ ? frame_->view() : VK_NULL_HANDLE; }
+  ImportedTexture describe() const override {
+    return frame_ ? frame_->describe() : ImportedTexture{};
+  }
   std::span<const VkSemaphoreSubmitInfo> submitWaits() const override { return {}; }
   std::span<const VkSemaphoreSubmitInfo> submitSignals() const override { return {}; }
   void present() override;
@@ -39,8 +41,8 @@ class ShmWindowTarget final : public PresentTarget {
  private:
   gfx::Device& device_;
   std::unique_ptr<platform::ShmBlitter> blitter_;
-  gfx::Image image_;
-  gfx::Buffer readback_;  // the drawn frame, copied by the graph's last pass
+  std::unique_ptr<OffscreenTarget> frame_;  // what the frame graph draws, at the window's size
+  gfx::Buffer readback_;                    // the drawn frame, copied by the graph's last pass
   VkExtent2D wanted_{0, 0};
   bool drawn_ = false;  // a frame was acquired and is waiting for present()
 };
