@@ -30,6 +30,7 @@
 // sky-light map's upper half due this frame into 19, for sky_light.comp.
 // References: Schneider & Vos 2017 (Nubis); Schneider 2022 (Nubis Evolved); Hillaire 2016.
 #extension GL_GOOGLE_include_directive : require
+#include "vkfx/spread_workgroups.h"
 
 #include "cloud_types.h"
 
@@ -215,7 +216,7 @@ void marchRay(uvec2 pixel, vec2 centre, float startOffset, uvec2 slot) {
 // interleaved gradient noise (Jimenez 2014) gives neighbours different starts without the short
 // period a Bayer pattern would show, and the golden ratio moves them from frame to frame.
 void marchNearField() {
-  const uvec2 pixel = gl_GlobalInvocationID.xy;
+  const uvec2 pixel = spreadInvocation(uvec2(kWorkgroupSize2D));
   if (any(greaterThanEqual(pixel, u.nearFieldExtent))) return;
   const vec3 direction = pixelRayDirection(vec2(pixel) + 0.5f, vec2(u.nearFieldExtent), u);
   // The nearest geometry of the 2 x 2 trace pixels it covers (the upsample hides what lies
@@ -244,7 +245,7 @@ void marchNearField() {
 // over the host's sky. Each refresh of a texel starts its steps elsewhere (the golden ratio),
 // so the map's texels, seen together, average the steps' noise.
 void marchSkyLight() {
-  const uvec2 id = gl_GlobalInvocationID.xy;
+  const uvec2 id = spreadInvocation(uvec2(kWorkgroupSize2D));
   const bool everyTexel = u.skyLightRefresh == kSkyLightEveryTexel;
   const uvec2 texel =
       everyTexel ? id : id * 2u + uvec2(u.skyLightRefresh & 1u, u.skyLightRefresh >> 1u);
@@ -292,7 +293,7 @@ void main() {
     marchListedEdgeRay();
     return;
   }
-  const uvec2 tile = gl_GlobalInvocationID.xy;
+  const uvec2 tile = spreadInvocation(uvec2(kWorkgroupSize2D));
   const uvec2 pixel = tile * u.tileSize + u.tilePhase;
   const uvec2 extent = u.traceExtent;
   if (any(greaterThanEqual(pixel, extent))) return;

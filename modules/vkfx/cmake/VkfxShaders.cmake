@@ -58,7 +58,9 @@ function(vkfx_embed_shaders target)
   # wherever the function is called from.
   get_filename_component(kit_include ${CMAKE_CURRENT_FUNCTION_LIST_DIR}/../../fxcontracts/include
                          ABSOLUTE)
-  set(include_flags "-I${kit_include}")
+  # And the kit's own shader helpers (vkfx/spread_workgroups.h).
+  get_filename_component(kit_shaders ${CMAKE_CURRENT_FUNCTION_LIST_DIR}/../shaders ABSOLUTE)
+  set(include_flags "-I${kit_include}" "-I${kit_shaders}")
   foreach(dir IN LISTS ARG_INCLUDE_DIRS)
     list(APPEND include_flags "-I${dir}")
   endforeach()
